@@ -1,1 +1,4 @@
-"""OpenMDAO components of lpc-mdo, one module per discipline model (installed as lpc_mdo.components)."""
+"""OpenMDAO components of lpc-mdo, one module per discipline model.
+
+Installed as ``lpc_mdo.components``.
+"""
