@@ -1,0 +1,1 @@
+"""Acoustics models (installed as lpc_mdo.components.acoustics)."""

@@ -1,0 +1,1 @@
+"""Energy models (installed as lpc_mdo.components.energy)."""

@@ -1,0 +1,1 @@
+"""Motor models (installed as lpc_mdo.components.motor)."""
