@@ -1,0 +1,68 @@
+"""Battery energy capacity and end-of-mission state of charge (paper eqs. 27-28)."""
+
+import openmdao.api as om
+
+
+class BatteryComp(om.ExplicitComponent):
+    """
+    Pack energy capacity from mass and specific energy, and the final state of charge.
+
+    Equations (paper eq. 27-28; reference/models_structures_motor_vehicle.md §8.10; eq. 28 as
+    corrected there):
+
+    - E_total = e_bat m_bat                        (e_bat in J/kg; 400 Wh/kg = 1.44e6 J/kg)
+    - SoC_final = (E_total - E_used) / E_total = 1 - E_used / E_total
+
+    Inputs
+    ------
+    battery_mass : float, scalar, kg
+        Battery pack mass (a design variable).
+    specific_energy : float, scalar, J/kg
+        Pack-level specific energy (default 400 Wh/kg = 1.44e6 J/kg; the paper sweeps 250-450
+        Wh/kg).
+    energy_used : float, scalar, J
+        Energy drawn from the pack over the sizing mission (MissionEnergyComp).
+
+    Outputs
+    -------
+    energy_capacity : float, scalar, J
+        Usable pack energy E_total.
+    state_of_charge : float, scalar
+        End-of-mission state of charge (constrained >= 0.20 in the full problem).
+    """
+
+    def setup(self):
+        self.add_input("battery_mass", 800.0, units="kg", desc="battery pack mass")
+        # Declared in J/kg so that E = e m is in J; set it in any unit, e.g.
+        # prob.set_val('specific_energy', 400.0, units='W*h/kg').
+        self.add_input("specific_energy", 400.0 * 3600.0, units="J/kg",
+                       desc="pack-level specific energy (default 400 Wh/kg)")
+        self.add_input("energy_used", 0.0, units="J", desc="mission energy drawn from the pack")
+        self.add_output("energy_capacity", 1.152e9, units="J", ref=1e9,
+                        desc="usable pack energy")
+        self.add_output("state_of_charge", 1.0, units=None, desc="end-of-mission state of charge")
+        self.declare_partials("energy_capacity", ["battery_mass", "specific_energy"])
+        self.declare_partials("state_of_charge", ["battery_mass", "specific_energy",
+                                                  "energy_used"])
+
+    def compute(self, inputs, outputs):
+        mass = inputs["battery_mass"]
+        density = inputs["specific_energy"]
+        for name, value in (("battery_mass", mass), ("specific_energy", density)):
+            if value.real[0] <= 0.0:
+                raise om.AnalysisError(f"{self.msginfo}: {name} = {value.real[0]}; must be > 0.")
+        capacity = mass * density
+        outputs["energy_capacity"] = capacity
+        outputs["state_of_charge"] = 1.0 - inputs["energy_used"] / capacity
+
+    def compute_partials(self, inputs, partials):
+        mass = inputs["battery_mass"]
+        density = inputs["specific_energy"]
+        used = inputs["energy_used"]
+        capacity = mass * density
+        partials["energy_capacity", "battery_mass"] = density
+        partials["energy_capacity", "specific_energy"] = mass
+        dsoc_dcap = used / capacity**2
+        partials["state_of_charge", "battery_mass"] = dsoc_dcap * density
+        partials["state_of_charge", "specific_energy"] = dsoc_dcap * mass
+        partials["state_of_charge", "energy_used"] = -1.0 / capacity

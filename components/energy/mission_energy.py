@@ -1,0 +1,84 @@
+"""Mission energy bookkeeping: segment energies and the paper's sizing-mission rule."""
+
+import numpy as np
+import openmdao.api as om
+
+
+class MissionEnergyComp(om.ExplicitComponent):
+    """
+    Energy drawn from the battery over the sizing mission, from per-condition electrical power.
+
+    Each design condition i with electrical power P_i and duration t_i contributes
+    E_i = P_i t_i, counted k_i times (option ``energy_multipliers``):
+
+        E_used = sum_i k_i P_i t_i
+
+    The paper's rule (Sec. II and §8.10 of reference/models_structures_motor_vehicle.md): the
+    mission is flown twice plus one reserve cruise, with hover extended to 60 s and the outbound
+    transition energy doubled for the unmodelled inbound transition,
+
+        E_req = 2 (E_hover,60s + 2 E_transition + E_climb + E_cruise + E_descent) + E_cruise,
+
+    i.e. k = 2 (hover, 60 s), 4 (each transition point over its own segment time), 2 (climb),
+    3 (cruise), 2 (descent) and 0 for conditions that are not flown (OEI, +3g, -1g).  The
+    multipliers come from the vehicle file, so another accounting needs no code change.
+
+    Inputs
+    ------
+    electrical_power : float, (num_conditions,), W
+        Battery-side electrical power in each condition (sum of motor input powers).
+    duration : float, (num_conditions,), s
+        Time spent in each condition.
+
+    Outputs
+    -------
+    segment_energy : float, (num_conditions,), J
+        P_i t_i (one pass).
+    energy_used : float, scalar, J
+        sum_i k_i P_i t_i.
+
+    Options
+    -------
+    energy_multipliers : sequence of float
+        k_i >= 0 per condition; its length sets num_conditions.
+    """
+
+    def initialize(self):
+        self.options.declare("energy_multipliers", types=(list, tuple, np.ndarray),
+                             desc="how many times each condition's energy counts (>= 0)")
+
+    def setup(self):
+        k = np.asarray(self.options["energy_multipliers"], dtype=float)
+        if k.ndim != 1 or k.size == 0 or np.any(k < 0.0) or not np.all(np.isfinite(k)):
+            raise ValueError(f"{self.msginfo}: energy_multipliers = {k.tolist()}; must be a "
+                             "non-empty 1-D sequence of finite values >= 0.")
+        self._k = k
+        n = k.size
+        self.add_input("electrical_power", np.zeros(n), units="W",
+                       desc="battery-side electrical power per condition")
+        self.add_input("duration", np.zeros(n), units="s", desc="time in each condition")
+        self.add_output("segment_energy", np.zeros(n), units="J", ref=1e7,
+                        desc="energy of one pass through each condition")
+        self.add_output("energy_used", 0.0, units="J", ref=1e8,
+                        desc="energy drawn over the sizing mission")
+        self.declare_partials("segment_energy", ["electrical_power", "duration"], diagonal=True)
+        cols = np.arange(n)
+        self.declare_partials("energy_used", ["electrical_power", "duration"],
+                              rows=np.zeros(n, dtype=int), cols=cols)
+
+    def compute(self, inputs, outputs):
+        duration = inputs["duration"]
+        if np.any(duration.real < 0.0):
+            raise om.AnalysisError(f"{self.msginfo}: duration = {duration.real} s; must be "
+                                   ">= 0.")
+        energy = inputs["electrical_power"] * duration
+        outputs["segment_energy"] = energy
+        outputs["energy_used"] = np.dot(self._k, energy)
+
+    def compute_partials(self, inputs, partials):
+        power = inputs["electrical_power"]
+        duration = inputs["duration"]
+        partials["segment_energy", "electrical_power"] = duration
+        partials["segment_energy", "duration"] = power
+        partials["energy_used", "electrical_power"] = self._k * duration
+        partials["energy_used", "duration"] = self._k * power
