@@ -1,0 +1,1 @@
+"""Aero models (installed as lpc_mdo.components.aero)."""

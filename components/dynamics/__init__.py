@@ -1,0 +1,1 @@
+"""Dynamics models (installed as lpc_mdo.components.dynamics)."""

@@ -1,0 +1,1 @@
+"""Geometry models (installed as lpc_mdo.components.geometry)."""

@@ -1,0 +1,1 @@
+"""Rotor models (installed as lpc_mdo.components.rotor)."""

@@ -1,0 +1,1 @@
+"""Structures models (installed as lpc_mdo.components.structures)."""

@@ -1,0 +1,1 @@
+"""Weights models (installed as lpc_mdo.components.weights)."""
