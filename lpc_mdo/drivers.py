@@ -383,13 +383,15 @@ class IpoptDriver(Driver):
         return ok
 
     def _objective(self, x):
-        self._evaluate(x)
-        return self._funcs[0]
+        """Objective at x, or None when the model failed there."""
+        return self._funcs[0] if self._evaluate(x) else None
 
     def _constraints(self, x):
-        g_nl = self._funcs[1]
+        """Constraint vector at x (linear ones from their Jacobian), or None on failure."""
+        if not self._evaluate(x):
+            return None
         g_lin = self._lin_g0 + self._lin_jac @ (x - self._x0_lin)
-        return np.concatenate([g_nl, g_lin])
+        return np.concatenate([self._funcs[1], g_lin])
 
     def _gradients(self, x):
         """Objective gradient and nonlinear constraint Jacobian (dense), cached per x."""
@@ -458,12 +460,10 @@ class _IpoptCallbacks:
         return out
 
     def objective(self, x):
-        drv = self._driver
-        return self._guard(lambda x: drv._objective(x) if drv._evaluate(x) else None, x)
+        return self._guard(self._driver._objective, x)
 
     def constraints(self, x):
-        drv = self._driver
-        return self._guard(lambda x: drv._constraints(x) if drv._evaluate(x) else None, x)
+        return self._guard(self._driver._constraints, x)
 
     def gradient(self, x):
         drv = self._driver
