@@ -1,0 +1,146 @@
+"""Lift-rotor hubs on booms that follow the wing, the pusher at the tail, rotor clearance."""
+
+import numpy as np
+import openmdao.api as om
+
+
+class RotorLayoutComp(om.ExplicitComponent):
+    """
+    Rotor hub positions and radii from the planform design variables, and the radius
+    intersection constraint (reference/models_structures_motor_vehicle.md §3.3).
+
+    Each boom is attached to the wing at a fixed fraction of the semispan, eta_i = |y_i| / (b/2)
+    of the reference vehicle. When the span changes, the junction slides along the wing's
+    leading-edge direction (LE sweep Lambda, dihedral Gamma, z down):
+
+        attach_i(b) = attach_i,ref + (eta_i b/2 - |y_i,ref|) (tan Lambda, sign y_i, -tan Gamma)
+
+    and the hub keeps its offset from the junction (front rotors ahead of and below the wing,
+    rear rotors behind and above it). The pusher hub keeps its offset from the fuselage tail:
+    x = -l_fus + (x_ref + l_fus,ref).
+
+    Radius intersection, front and rear (paper Table 6, 2 equality constraints, target 0.20):
+
+    - ``span_fraction`` (default, the public code's form, which the paper's Table 8 satisfies):
+      (R_inner + R_outer) / b
+    - ``clearance`` (literal reading, m): |y_outer - y_inner| - (R_inner + R_outer)
+
+    Inputs
+    ------
+    wing_span : scalar, m
+    fuselage_length : scalar, m
+    rotor_radius : (5,), m
+        Radius per rotor group: lift pairs 0..3 (front outer, rear outer, front inner,
+        rear inner), then the pusher.
+
+    Outputs
+    -------
+    lift_hub_position : (8, 3), m
+        Hub positions of the lift rotors, body frame.
+    pusher_hub_position : (3,), m
+    lift_rotor_radius : (8,), m
+        Radius of each lift rotor (its pair's).
+    radius_intersection : (2,), - or m
+        Front and rear values of the chosen definition.
+
+    Options
+    -------
+    vehicle : lpc_mdo.vehicle.Vehicle
+        Reference layout (hub positions, boom junctions, wing sweep and dihedral, pairs).
+    definition : str
+        'span_fraction' or 'clearance'; default: the vehicle's constraint definition.
+    """
+
+    def initialize(self):
+        self.options.declare("vehicle", desc="lpc_mdo.vehicle.Vehicle with the reference layout")
+        self.options.declare("definition", default=None, allow_none=True,
+                             values=("span_fraction", "clearance", None),
+                             desc="radius-intersection definition; None: the vehicle's")
+
+    def setup(self):
+        vehicle = self.options["vehicle"]
+        rotors = vehicle.lift_rotors
+        wing = vehicle.wing
+        definition = (self.options["definition"]
+                      or vehicle.constraints.radius_intersection_definition)
+        self._definition = definition
+
+        hubs = np.array([r.hub_position for r in rotors])
+        attach = np.array(vehicle.booms.attach_points)
+        self._sign = np.sign(attach[:, 1])
+        half_span_ref = 0.5 * wing.span
+        self._eta = np.abs(attach[:, 1]) / half_span_ref
+        self._direction = np.stack([np.full(8, np.tan(wing.sweep)), self._sign,
+                                    np.full(8, -np.tan(wing.dihedral))], axis=1)
+        # Position at span b: hub_ref + (eta b/2 - |y_ref|) * direction = base + b * slope.
+        self._base = hubs - (np.abs(attach[:, 1]))[:, None] * self._direction
+        self._slope = 0.5 * self._eta[:, None] * self._direction
+        self._pusher_offset = np.array(vehicle.pusher.hub_position) + np.array(
+            [vehicle.fuselage.length, 0.0, 0.0])
+        self._pair = np.array([r.pair for r in rotors])
+        # Front: pairs (2 inner, 0 outer); rear: pairs (3 inner, 1 outer); one rotor each side.
+        self._inner = np.array([2, 3])
+        self._outer = np.array([0, 1])
+        left = self._sign < 0
+        self._rotor_of_pair = np.array([np.flatnonzero(left & (self._pair == p))[0]
+                                        for p in range(4)])
+
+        self.add_input("wing_span", wing.span, units="m", desc="wing span")
+        self.add_input("fuselage_length", vehicle.fuselage.length, units="m",
+                       desc="fuselage length")
+        radius = [rotors[i].radius for i in self._rotor_of_pair] + [vehicle.pusher.radius]
+        self.add_input("rotor_radius", np.array(radius), units="m",
+                       desc="radius per rotor group (4 lift pairs, pusher)")
+        # Lateral gap between the inner and outer left rotors, front and rear: on the left side
+        # y_inner > y_outer, so |y_outer - y_inner| = gap_base + b * gap_slope.
+        inner = self._rotor_of_pair[self._inner]
+        outer = self._rotor_of_pair[self._outer]
+        self._gap_base = self._base[inner, 1] - self._base[outer, 1]
+        self._gap_slope = self._slope[inner, 1] - self._slope[outer, 1]
+
+        self.add_output("lift_hub_position", hubs, units="m", desc="lift-rotor hubs, body frame")
+        self.add_output("pusher_hub_position", np.array(vehicle.pusher.hub_position), units="m",
+                        desc="pusher hub, body frame")
+        self.add_output("lift_rotor_radius", np.full(8, 1.0), units="m",
+                        desc="radius of each lift rotor")
+        self.add_output("radius_intersection", np.zeros(2),
+                        units="m" if definition == "clearance" else None,
+                        desc=f"front and rear radius intersection ({definition})")
+
+        self.declare_partials("lift_hub_position", "wing_span", val=self._slope.ravel())
+        self.declare_partials("pusher_hub_position", "fuselage_length", rows=[0], cols=[0],
+                              val=-1.0)
+        self.declare_partials("lift_rotor_radius", "rotor_radius", rows=np.arange(8),
+                              cols=self._pair, val=1.0)
+        rows = np.array([0, 0, 1, 1])
+        cols = np.array([self._inner[0], self._outer[0], self._inner[1], self._outer[1]])
+        if definition == "span_fraction":
+            self.declare_partials("radius_intersection", "rotor_radius", rows=rows, cols=cols)
+            self.declare_partials("radius_intersection", "wing_span")
+        else:
+            self.declare_partials("radius_intersection", "rotor_radius", rows=rows, cols=cols,
+                                  val=-1.0)
+            self.declare_partials("radius_intersection", "wing_span", val=self._gap_slope)
+
+    def compute(self, inputs, outputs):
+        span = inputs["wing_span"][0]
+        if span.real <= 0.0:
+            raise om.AnalysisError(f"{self.msginfo}: wing_span = {span.real} m; must be > 0.")
+        radius = inputs["rotor_radius"]
+        outputs["lift_hub_position"] = self._base + span * self._slope
+        outputs["pusher_hub_position"] = self._pusher_offset - np.array(
+            [inputs["fuselage_length"][0], 0.0, 0.0])
+        outputs["lift_rotor_radius"] = radius[self._pair]
+        pair_sum = radius[self._inner] + radius[self._outer]
+        if self._definition == "span_fraction":
+            outputs["radius_intersection"] = pair_sum / span
+        else:
+            outputs["radius_intersection"] = self._gap_base + self._gap_slope * span - pair_sum
+
+    def compute_partials(self, inputs, partials):
+        span = inputs["wing_span"][0]
+        radius = inputs["rotor_radius"]
+        if self._definition == "span_fraction":
+            partials["radius_intersection", "rotor_radius"] = np.full(4, 1.0 / span)
+            pair_sum = radius[self._inner] + radius[self._outer]
+            partials["radius_intersection", "wing_span"] = -pair_sum / span**2
