@@ -1,0 +1,222 @@
+"""Mass properties of a set of bodies: total mass, centre of gravity and inertia tensor."""
+
+from dataclasses import dataclass
+
+import numpy as np
+import openmdao.api as om
+
+_EYE = np.eye(3)
+
+
+def transport_inertia(r):
+    """
+    Return the parallel-axis (transport) term P(r) = (r . r) 1 - r r^T and its derivative.
+
+    A point mass m at offset r from a reference point adds m P(r) to the inertia tensor about
+    that point (reference/models_structures_motor_vehicle.md §4.3). Complex-safe.
+
+    Parameters
+    ----------
+    r : ndarray, (..., 3)
+        Offsets.
+
+    Returns
+    -------
+    p : ndarray, (..., 3, 3)
+        P(r).
+    dp_dr : ndarray, (..., 3, 3, 3)
+        dP_ab/dr_l = 2 r_l delta_ab - delta_al r_b - r_a delta_bl.
+    """
+    r = np.asarray(r)
+    rr = np.sum(r * r, axis=-1)
+    p = rr[..., None, None] * _EYE - r[..., :, None] * r[..., None, :]
+    dp = (2.0 * _EYE[:, :, None] * r[..., None, None, :]
+          - _EYE[:, None, :] * r[..., None, :, None]
+          - r[..., :, None, None] * _EYE[None, :, :])
+    return p, dp
+
+
+@dataclass(frozen=True)
+class MassItem:
+    """
+    One kind of body in :class:`MassPropertiesComp`.
+
+    Attributes
+    ----------
+    name : str
+        Prefix of the inputs ``{name}_mass``, ``{name}_cg`` and ``{name}_inertia``; a valid
+        Python identifier.
+    count : int
+        Number of bodies of this kind (>= 1), e.g. 9 motors.
+    own_inertia : bool
+        True if the bodies have an inertia tensor about their own cg (input
+        ``{name}_inertia``); False for point masses.
+    """
+
+    name: str
+    count: int = 1
+    own_inertia: bool = False
+
+    def __post_init__(self):
+        if not (isinstance(self.name, str) and self.name.isidentifier()):
+            raise ValueError(f"MassItem.name = {self.name!r}; must be a Python identifier.")
+        if isinstance(self.count, bool) or not isinstance(self.count, int) or self.count < 1:
+            raise ValueError(f"MassItem '{self.name}': count = {self.count!r}; must be an "
+                             "integer >= 1.")
+        if not isinstance(self.own_inertia, bool):
+            raise ValueError(f"MassItem '{self.name}': own_inertia = {self.own_inertia!r}; "
+                             "must be True or False.")
+
+
+def _check_items(name, value):
+    if not isinstance(value, (list, tuple)) or not value:
+        raise ValueError(f"Option '{name}' = {value!r}; must be a non-empty list of MassItem.")
+    for item in value:
+        if not isinstance(item, MassItem):
+            raise ValueError(f"Option '{name}': {item!r} is not a MassItem.")
+    names = [item.name for item in value]
+    duplicates = sorted({n for n in names if names.count(n) > 1})
+    if duplicates:
+        raise ValueError(f"Option '{name}': duplicate MassItem names {duplicates}; each name "
+                         "must be unique.")
+
+
+class MassPropertiesComp(om.ExplicitComponent):
+    """
+    Total mass, centre of gravity and inertia tensor about the cg of a set of bodies.
+
+    Implements reference/models_structures_motor_vehicle.md §4.3 (paper Sec. II.C, system mass
+    properties with the parallel-axis theorem), vectorized over all N bodies:
+
+    - m = sum_i m_i
+    - cg = sum_i m_i p_i / m
+    - I = sum_i [ I_i + m_i ((r_i . r_i) 1 - r_i r_i^T) ],  r_i = p_i - cg
+
+    I_i is a body's own inertia tensor about its own cg (zero for point masses). Off-diagonal
+    entries are tensor entries, I_xz = -integral(x z dm). Everything is in the body frame (x
+    forward, y right, z down); the result does not depend on the origin.
+
+    The bodies are grouped in kinds (option ``items``, a list of :class:`MassItem`); kind
+    ``name`` with ``count`` c bodies has the inputs below. Outputs and partials are analytic:
+    dcg/dm_i = r_i/m, dcg/dp_i = m_i/m 1, dI/dm_i = P(r_i), dI/dp_i = m_i dP/dr(r_i),
+    dI/dI_i = 1 (the terms through cg cancel because sum_i m_i r_i = 0).
+
+    Inputs
+    ------
+    {name}_mass : float, (c,), kg
+        Masses (>= 0).
+    {name}_cg : float, (c, 3) or (3,) if c = 1, m
+        Centres of gravity, body frame.
+    {name}_inertia : float, (c, 3, 3) or (3, 3) if c = 1, kg*m**2
+        Own inertia tensors about the own cg, body axes; only if ``own_inertia``. Symmetric.
+
+    Outputs
+    -------
+    total_mass : float, (1,), kg
+        m.
+    cg : float, (3,), m
+        Centre of gravity of the set, body frame.
+    inertia : float, (3, 3), kg*m**2
+        Inertia tensor about ``cg``, body axes.
+
+    Options
+    -------
+    items : list of MassItem
+        Kinds of bodies, unique names.
+
+    Raises
+    ------
+    om.AnalysisError
+        In compute, if an input is not finite, a mass is negative, or the total mass is not > 0.
+    """
+
+    def initialize(self):
+        self.options.declare("items", types=(list, tuple), check_valid=_check_items,
+                             desc="kinds of bodies (MassItem: name, count, own_inertia)")
+
+    def setup(self):
+        items = self.options["items"]
+        self._slices = {}
+        start = 0
+        for item in items:
+            c, name = item.count, item.name
+            self._slices[name] = slice(start, start + c)
+            start += c
+            cg_shape = (3,) if c == 1 else (c, 3)
+            inertia_shape = (3, 3) if c == 1 else (c, 3, 3)
+            self.add_input(f"{name}_mass", np.zeros(c), units="kg", desc=f"mass of {name}")
+            self.add_input(f"{name}_cg", np.zeros(cg_shape), units="m",
+                           desc=f"cg of {name}, body frame")
+            if item.own_inertia:
+                self.add_input(f"{name}_inertia", np.zeros(inertia_shape), units="kg*m**2",
+                               desc=f"inertia tensor of {name} about its own cg, body axes")
+        self._num_bodies = start
+
+        self.add_output("total_mass", 1.0, units="kg", desc="total mass")
+        self.add_output("cg", np.zeros(3), units="m", desc="centre of gravity, body frame")
+        self.add_output("inertia", np.eye(3), units="kg*m**2",
+                        desc="inertia tensor about the cg, body axes")
+
+        for item in items:
+            c, name = item.count, item.name
+            self.declare_partials("total_mass", f"{name}_mass", val=np.ones((1, c)))
+            self.declare_partials("cg", f"{name}_mass")
+            self.declare_partials("cg", f"{name}_cg", rows=np.tile(np.arange(3), c),
+                                  cols=np.arange(3 * c))
+            self.declare_partials("inertia", [f"{name}_mass", f"{name}_cg"])
+            if item.own_inertia:
+                self.declare_partials("inertia", f"{name}_inertia",
+                                      rows=np.tile(np.arange(9), c), cols=np.arange(9 * c),
+                                      val=1.0)
+
+    def _gather(self, inputs):
+        """Return masses (N,) and cgs (N, 3) of all bodies, checked."""
+        masses, cgs = [], []
+        for item in self.options["items"]:
+            name = item.name
+            mass = inputs[f"{name}_mass"]
+            cg = inputs[f"{name}_cg"].reshape(item.count, 3)
+            for var, value in ((f"{name}_mass", mass), (f"{name}_cg", cg)):
+                if not np.all(np.isfinite(value)):
+                    raise om.AnalysisError(f"{self.msginfo}: {var} = {value.real.tolist()}; "
+                                           "must be finite.")
+            if np.any(mass.real < 0.0):
+                raise om.AnalysisError(f"{self.msginfo}: {name}_mass = {mass.real.tolist()} "
+                                       "kg; every mass must be >= 0.")
+            masses.append(mass)
+            cgs.append(cg)
+        return np.concatenate(masses), np.concatenate(cgs)
+
+    def compute(self, inputs, outputs):
+        masses, points = self._gather(inputs)
+        total = np.sum(masses)
+        if total.real <= 0.0:
+            raise om.AnalysisError(f"{self.msginfo}: total mass = {total.real} kg; must be > 0.")
+        cg = masses @ points / total
+        p, _ = transport_inertia(points - cg)
+        inertia = np.einsum("i,iab->ab", masses, p)
+        for item in self.options["items"]:
+            if item.own_inertia:
+                own = inputs[f"{item.name}_inertia"]
+                if not np.all(np.isfinite(own)):
+                    raise om.AnalysisError(f"{self.msginfo}: {item.name}_inertia is not finite.")
+                inertia = inertia + own.reshape(item.count, 3, 3).sum(axis=0)
+        outputs["total_mass"] = total
+        outputs["cg"] = cg
+        outputs["inertia"] = inertia
+
+    def compute_partials(self, inputs, partials):
+        masses, points = self._gather(inputs)
+        total = np.sum(masses)
+        cg = masses @ points / total
+        r = points - cg
+        p, dp = transport_inertia(r)
+        for item in self.options["items"]:
+            name, sl = item.name, self._slices[item.name]
+            partials["cg", f"{name}_mass"] = r[sl].T / total
+            partials["cg", f"{name}_cg"] = np.repeat(masses[sl] / total, 3)
+            partials["inertia", f"{name}_mass"] = p[sl].reshape(-1, 9).T
+            # (c, a, b, l) -> rows (a, b), cols (body, l)
+            dinertia = masses[sl, None, None, None] * dp[sl]
+            partials["inertia", f"{name}_cg"] = (
+                dinertia.transpose(1, 2, 0, 3).reshape(9, 3 * item.count))

@@ -1,0 +1,420 @@
+"""Vehicle weights: M4 regressions, gross-mass build-up, mass properties and W_other calibration.
+
+- :class:`WeightsGroup` assembles the fuselage, boom and empennage regressions, the gross-mass
+  build-up (paper eqs. 31-33) and the mass properties of the whole vehicle (total mass, cg,
+  inertia tensor about the cg with the parallel-axis theorem) from a vehicle definition. The
+  wing mass (wing-box beam) and the motor masses (paper eq. 23) are inputs, connected by the
+  assembly.
+- :func:`calibrate_other_mass` finds W_other so that the initial design's gross mass is the
+  vehicle's ``masses.target_gross_mass`` (3723.99 kg, paper Table 8), as the paper did;
+  :func:`calibrate_other_mass_in_problem` does the same in any assembled problem.
+- :func:`mass_breakdown` reads the mass breakdown from a problem or a recorded case, and
+  :func:`format_mass_breakdown` prints it.
+"""
+
+import math
+
+import numpy as np
+import openmdao.api as om
+
+from lpc_mdo.components.weights.gross_weight import BREAKDOWN_LABELS, GrossWeightComp
+from lpc_mdo.components.weights.mass_properties import MassItem, MassPropertiesComp
+from lpc_mdo.components.weights.regressions import (
+    BoomRegressionComp,
+    EmpennageRegressionComp,
+    FuselageRegressionComp,
+    WingRegressionComp,
+    m4_coefficients,
+)
+
+#: Kinds of bodies of the vehicle's mass properties (inputs ``{name}_mass``, ``{name}_cg`` and,
+#: for parts with an own inertia, ``{name}_inertia``). ``motor`` has one row per motor.
+_NUM_MOTORS = 9
+VEHICLE_MASS_ITEMS = (
+    MassItem("wing", own_inertia=True),
+    MassItem("fuselage", own_inertia=True),
+    MassItem("empennage", own_inertia=True),
+    MassItem("boom", own_inertia=True),
+    MassItem("battery"),
+    MassItem("motor", count=_NUM_MOTORS),
+    MassItem("power_electronics"),
+    MassItem("payload"),
+    MassItem("systems"),
+    MassItem("other"),
+)
+
+
+def _vehicle(vehicle):
+    from lpc_mdo.vehicle import reference_vehicle
+
+    return reference_vehicle() if vehicle is None else vehicle
+
+
+def motor_group_indices(vehicle=None):
+    """
+    Return, per motor, the rotor group whose motor design it shares.
+
+    Motors are ordered as ``vehicle.lift_rotors`` (8) then the pusher; groups are the rows of
+    the per-group design variables (lift pairs 0..3, pusher 4). For the reference vehicle:
+    [0, 1, 2, 3, 2, 3, 0, 1, 4]. Use it as ``src_indices`` when a motor model sizes one motor per
+    group: ``model.connect('motors.mass', 'weights.motor_mass', src_indices=...)``.
+    """
+    vehicle = _vehicle(vehicle)
+    return [rotor.pair for rotor in vehicle.lift_rotors] + [vehicle.pusher.pair]
+
+
+def wing_cg_estimate(vehicle=None):
+    """
+    Return a body-frame wing cg estimate (m): the planform centroid on the wing-box beam axis.
+
+    Trapezoidal half wing: spanwise centroid y_c = (b/6)(1 + 2 lambda)/(1 + lambda), chord there =
+    the mean aerodynamic chord; x = x_LE,root - y_c tan(sweep_LE) - beam_axis * MAC,
+    z = z_LE,root - y_c tan(dihedral), y = 0. Used only as the default of the ``wing_cg`` input
+    until the beam model provides its mass centre.
+    """
+    vehicle = _vehicle(vehicle)
+    wing = vehicle.wing
+    lam = wing.taper_ratio
+    y_c = wing.span / 6.0 * (1.0 + 2.0 * lam) / (1.0 + lam)
+    x_le, _, z_le = wing.root_leading_edge
+    x_beam = vehicle.wing_box.beam_axis * wing.mean_aerodynamic_chord
+    return np.array([x_le - y_c * math.tan(wing.sweep) - x_beam, 0.0,
+                     z_le - y_c * math.tan(wing.dihedral)])
+
+
+def placeholder_calibration_inputs(vehicle=None):
+    """
+    Return the wing and motor masses used to calibrate W_other until their models are connected.
+
+    - ``wing_mass`` (kg): the M4 wing regression (ref §5.2, public-code alternative to the beam)
+      at the vehicle's initial planform, battery mass and cruise speed; 283.3605 kg for the
+      reference vehicle.
+    - ``motor_mass`` (kg, 9 values in :func:`motor_group_indices` order): paper eq. 23,
+      m = (pi/2) A_bar B_bar D**2 L/Q_sp with D = L/(L/D), at the initial ``motor_length`` design
+      variables and the vehicle's motor constants; 10.681 kg per lift motor (L = 0.10 m) and
+      36.050 kg for the pusher motor (L = 0.15 m) for the reference vehicle.
+
+    When the beam and motor models land, calibrate with their initial-design outputs instead
+    (:func:`calibrate_other_mass_in_problem` on the assembled model does that).
+    """
+    vehicle = _vehicle(vehicle)
+    coeffs = m4_coefficients()["wing"]["mass"]
+    regressors = [vehicle.wing.area, vehicle.wing.aspect_ratio, vehicle.fuselage.length,
+                  vehicle.battery.mass, vehicle.condition("cruise").speed, 1.0]
+    wing_mass = float(np.dot(coeffs, regressors))
+    motor = vehicle.motor
+    length = np.asarray(vehicle.design_variables["motor_length"].initial, dtype=float)
+    diameter = length / motor.length_to_diameter
+    group_mass = (0.5 * math.pi * motor.electric_loading * motor.magnetic_loading
+                  * diameter**2 * length / motor.torque_density)
+    return {"wing_mass": wing_mass, "motor_mass": group_mass[motor_group_indices(vehicle)]}
+
+
+def _check_wing_model(name, value):
+    if value not in ("input", "regression"):
+        raise ValueError(f"Option '{name}' = {value!r}; allowed values are 'input' (wing mass, "
+                         "cg and inertia from the beam model) and 'regression' (M4 wing "
+                         "regression).")
+
+
+def _check_nonnegative(name, value):
+    if value is not None and (isinstance(value, bool) or not np.isfinite(value) or value < 0.0):
+        raise ValueError(f"Option '{name}' = {value!r} is outside the allowed range [0, inf) "
+                         "(or None).")
+
+
+def _check_positive(name, value):
+    if isinstance(value, bool) or not np.isfinite(value) or value <= 0.0:
+        raise ValueError(f"Option '{name}' = {value!r} is outside the allowed range (0, inf).")
+
+
+class WeightsGroup(om.Group):
+    """
+    Component masses, gross mass (paper eqs. 31-33) and mass properties of the whole vehicle.
+
+    Subsystems (all variables promoted): ``fuselage``, ``booms``, ``empennage``
+    (M4 regressions, ref §5), ``wing`` (only with ``wing_model='regression'``), ``gross_weight``
+    (:class:`GrossWeightComp`) and ``mass_properties`` (:class:`MassPropertiesComp`, ref §4.3)
+    over the bodies of :data:`VEHICLE_MASS_ITEMS`. Input defaults come from the vehicle.
+
+    Inputs (promoted)
+    -----------------
+    wing_area, wing_aspect_ratio, fuselage_length : float, (1,), m**2 / - / m
+        Planform design variables (regressors).
+    htail_area, vtail_area : float, (1,), m**2
+        Tail areas (regressors of the empennage).
+    battery_mass : float, (1,), kg
+        Battery mass (design variable).
+    cruise_speed : float, (1,), m/s
+        Cruise speed, a regressor (default: the vehicle's cruise condition, 57.19 m/s).
+    wing_mass : float, (1,), kg
+        Wing mass of both halves, from the beam (only with ``wing_model='input'``; default: the
+        placeholder of :func:`placeholder_calibration_inputs`).
+    wing_cg : float, (3,), m
+        Wing cg, body frame (``'input'`` only; default :func:`wing_cg_estimate`).
+    wing_inertia : float, (3, 3), kg*m**2
+        Wing inertia about ``wing_cg`` (``'input'`` only; default 0, i.e. a point mass, until the
+        beam provides it, e.g. a MassPropertiesComp over its element masses).
+    motor_mass : float, (9,), kg
+        Mass of each motor (paper eq. 23), lift rotors in ``vehicle.lift_rotors`` order, then
+        the pusher (see :func:`motor_group_indices`; default: the eq. 23 placeholder).
+    motor_cg : float, (9, 3), m
+        Motor cg; default the rotor hubs (assumption: the motor sits at its rotor's hub).
+    battery_cg : float, (3,), m
+        Default ``vehicle.battery.cg``.
+    power_electronics_mass, payload_mass, systems_mass, other_mass : float, (1,), kg
+        Fixed masses, default ``vehicle.masses`` (``other_mass``: the option if given).
+    power_electronics_cg, payload_cg, systems_cg, other_cg : float, (3,), m
+        Their cg, default ``vehicle.masses``.
+
+    Outputs (promoted)
+    ------------------
+    fuselage_mass, boom_mass, empennage_mass : float, (1,), kg
+        Regression masses (and ``wing_mass`` with ``wing_model='regression'``).
+    fuselage_cg, boom_cg, empennage_cg : float, (3,), m
+        Their cg, body frame.
+    fuselage_inertia, boom_inertia, empennage_inertia : float, (3, 3), kg*m**2
+        Their inertia about their own cg.
+    structures_mass, powertrain_mass : float, (1,), kg
+        Eqs. 32 and 33.
+    gross_mass : float, (1,), kg
+        W0, eq. 31 (the objective).
+    mass_breakdown : float, (10,), kg
+        Items of eq. 31 in :data:`BREAKDOWN_LABELS` order (see :func:`mass_breakdown`).
+    total_mass : float, (1,), kg
+        Sum of the body masses (equals ``gross_mass``).
+    cg : float, (3,), m
+        Vehicle cg, body frame.
+    inertia : float, (3, 3), kg*m**2
+        Vehicle inertia tensor about ``cg``, body axes (off-diagonals are tensor entries,
+        I_xz = -integral(x z dm)).
+
+    Options
+    -------
+    vehicle : lpc_mdo.vehicle.Vehicle or None
+        Vehicle definition; None = the reference vehicle.
+    wing_model : str
+        ``'input'`` (default; wing mass, cg and inertia are inputs from the beam) or
+        ``'regression'`` (the M4 wing regression, public-code alternative).
+    regression_mass_factor : float
+        Factor (> 0) on the fuselage, boom and empennage regressions. Default 1.0 (paper);
+        the public run scripts use 1.3.
+    fuselage_cg_x_factor : float
+        k_x (> 0) of the fuselage cg (:class:`FuselageRegressionComp`). Default 0.88, as coded.
+    other_mass : float or None
+        Default of the ``other_mass`` input (>= 0), e.g. from :func:`calibrate_other_mass`;
+        None = ``vehicle.masses.other`` (the uncalibrated initial guess).
+    """
+
+    def initialize(self):
+        self.options.declare("vehicle", default=None, allow_none=True,
+                             desc="lpc_mdo.vehicle.Vehicle; None = reference vehicle")
+        self.options.declare("wing_model", default="input", types=str,
+                             check_valid=_check_wing_model,
+                             desc="'input' (beam mass as input) or 'regression' (M4 wing)")
+        self.options.declare("regression_mass_factor", default=1.0, types=(int, float),
+                             check_valid=_check_positive,
+                             desc="factor on the fuselage, boom and empennage regressions (> 0)")
+        self.options.declare("fuselage_cg_x_factor",
+                             default=m4_coefficients()["fuselage"]["cg_x_factor"],
+                             types=(int, float), check_valid=_check_positive,
+                             desc="k_x of the fuselage cg (> 0); 0.88 as coded")
+        self.options.declare("other_mass", default=None, types=(int, float), allow_none=True,
+                             check_valid=_check_nonnegative,
+                             desc="default of the other_mass input, kg (>= 0); None = vehicle")
+
+    def setup(self):
+        vehicle = _vehicle(self.options["vehicle"])
+        factor = self.options["regression_mass_factor"]
+        wing_model = self.options["wing_model"]
+
+        self.add_subsystem("fuselage", FuselageRegressionComp(
+            mass_factor=factor, cg_x_factor=self.options["fuselage_cg_x_factor"]),
+            promotes=["*"])
+        self.add_subsystem("booms", BoomRegressionComp(mass_factor=factor), promotes=["*"])
+        self.add_subsystem("empennage", EmpennageRegressionComp(mass_factor=factor),
+                           promotes=["*"])
+        if wing_model == "regression":
+            self.add_subsystem("wing", WingRegressionComp(), promotes=["*"])
+        self.add_subsystem("gross_weight", GrossWeightComp(num_motors=_NUM_MOTORS),
+                           promotes=["*"])
+        self.add_subsystem("mass_properties", MassPropertiesComp(items=list(VEHICLE_MASS_ITEMS)),
+                           promotes=["*"])
+
+        masses = vehicle.masses
+        placeholder = placeholder_calibration_inputs(vehicle)
+        other = self.options["other_mass"]
+        defaults = {
+            "wing_area": (vehicle.wing.area, "m**2"),
+            "wing_aspect_ratio": (vehicle.wing.aspect_ratio, None),
+            "fuselage_length": (vehicle.fuselage.length, "m"),
+            "htail_area": (vehicle.horizontal_tail.area, "m**2"),
+            "vtail_area": (vehicle.vertical_tail.area, "m**2"),
+            "battery_mass": (vehicle.battery.mass, "kg"),
+            "cruise_speed": (vehicle.condition("cruise").speed, "m/s"),
+            "battery_cg": (vehicle.battery.cg, "m"),
+            "motor_mass": (placeholder["motor_mass"], "kg"),
+            "motor_cg": ([r.hub_position for r in vehicle.lift_rotors]
+                         + [vehicle.pusher.hub_position], "m"),
+            "power_electronics_mass": (masses.power_electronics, "kg"),
+            "power_electronics_cg": (masses.power_electronics_cg, "m"),
+            "payload_mass": (masses.payload, "kg"),
+            "payload_cg": (masses.payload_cg, "m"),
+            "systems_mass": (masses.systems, "kg"),
+            "systems_cg": (masses.systems_cg, "m"),
+            "other_mass": (masses.other if other is None else other, "kg"),
+            "other_cg": (masses.other_cg, "m"),
+        }
+        if wing_model == "input":
+            defaults["wing_mass"] = (placeholder["wing_mass"], "kg")
+            defaults["wing_cg"] = (wing_cg_estimate(vehicle), "m")
+            defaults["wing_inertia"] = (np.zeros((3, 3)), "kg*m**2")
+        for name, (value, units) in defaults.items():
+            self.set_input_defaults(name, np.atleast_1d(np.asarray(value, dtype=float)),
+                                    units=units)
+
+
+# ------------------------------------------------------------------------------------------------
+# Calibration of W_other and the mass breakdown
+
+
+def calibrate_other_mass_in_problem(prob, *, target_gross_mass=None, gross_mass="gross_mass",
+                                    other_mass="other_mass"):
+    """
+    Set W_other in a set-up problem so that its gross mass equals the target; return W_other.
+
+    The gross mass is affine in W_other with unit slope (paper eq. 31), so one model run gives
+    W_other = W_other,0 + (target - W0), then a second run makes every output consistent. Set
+    the initial design (and the wing and motor models' initial inputs) before calling.
+
+    Parameters
+    ----------
+    prob : om.Problem
+        A set-up problem containing a :class:`WeightsGroup` (alone or in the full model).
+    target_gross_mass : float or None
+        Target W0 in kg; None = the reference vehicle's ``masses.target_gross_mass``
+        (3723.99 kg, paper Table 8).
+    gross_mass, other_mass : str
+        Promoted names of the gross-mass output and the other-mass input, e.g.
+        ``'weights.gross_mass'``.
+
+    Returns
+    -------
+    float
+        The calibrated W_other in kg (also set in ``prob``).
+
+    Raises
+    ------
+    ValueError
+        If the calibrated W_other would be negative (the other masses already exceed the target)
+        or the target is not > 0.
+    """
+    if target_gross_mass is None:
+        target_gross_mass = _vehicle(None).masses.target_gross_mass
+    if not (np.isfinite(target_gross_mass) and target_gross_mass > 0.0):
+        raise ValueError(f"target_gross_mass = {target_gross_mass!r} kg is outside the allowed "
+                         "range (0, inf).")
+    prob.run_model()
+    current = float(prob.get_val(other_mass, units="kg")[0])
+    gross = float(prob.get_val(gross_mass, units="kg")[0])
+    calibrated = current + target_gross_mass - gross
+    if calibrated < 0.0:
+        raise ValueError(f"Calibrated other_mass = {calibrated:.2f} kg is negative: the other "
+                         f"items already weigh {gross - current:.2f} kg, more than the target "
+                         f"gross mass {target_gross_mass} kg.")
+    prob.set_val(other_mass, calibrated, units="kg")
+    prob.run_model()
+    return calibrated
+
+
+def calibrate_other_mass(vehicle=None, *, wing_mass=None, motor_mass=None,
+                         target_gross_mass=None, **options):
+    """
+    Return W_other such that the vehicle's initial design has the target gross mass.
+
+    The paper chose W_other "so that the initial gross weight computed by our computational
+    model matches closely with the NASA reference" (Sec. IV; ref §4.1, §9.3). This builds a
+    :class:`WeightsGroup` of the vehicle at its initial design, with the given wing and motor
+    masses, and solves eq. 31 for W_other. Re-run it whenever the wing or motor model (or any
+    other mass model) changes.
+
+    Parameters
+    ----------
+    vehicle : lpc_mdo.vehicle.Vehicle or None
+        None = the reference vehicle.
+    wing_mass : float or None
+        Initial wing mass of both halves, kg (the beam at the initial thicknesses). None = the
+        placeholder of :func:`placeholder_calibration_inputs` (M4 wing regression).
+    motor_mass : array_like or None
+        Initial motor masses, kg: 9 values (per motor, :func:`motor_group_indices` order) or 5
+        (per group: lift pairs 0..3, pusher). None = the eq. 23 placeholder.
+    target_gross_mass : float or None
+        Target W0, kg; None = ``vehicle.masses.target_gross_mass`` (3723.99 kg).
+    **options
+        Further :class:`WeightsGroup` options (e.g. ``regression_mass_factor``); ``wing_model``
+        is fixed to ``'input'``.
+
+    Returns
+    -------
+    float
+        Calibrated W_other, kg.
+    """
+    vehicle = _vehicle(vehicle)
+    placeholder = placeholder_calibration_inputs(vehicle)
+    wing = placeholder["wing_mass"] if wing_mass is None else wing_mass
+    motors = placeholder["motor_mass"] if motor_mass is None else np.asarray(motor_mass, float)
+    if motors.shape == (5,):
+        motors = motors[motor_group_indices(vehicle)]
+    if motors.shape != (_NUM_MOTORS,):
+        raise ValueError(f"motor_mass has shape {motors.shape}; allowed shapes are (9,) per "
+                         "motor and (5,) per rotor group.")
+    if target_gross_mass is None:
+        target_gross_mass = vehicle.masses.target_gross_mass
+    options.pop("wing_model", None)
+
+    prob = om.Problem(reports=False)
+    prob.model.add_subsystem("weights", WeightsGroup(vehicle=vehicle, **options),
+                             promotes=["*"])
+    prob.setup()
+    prob.set_val("wing_mass", wing, units="kg")
+    prob.set_val("motor_mass", motors, units="kg")
+    return calibrate_other_mass_in_problem(prob, target_gross_mass=target_gross_mass)
+
+
+def mass_breakdown(source, prefix=""):
+    """
+    Return the gross-mass breakdown (kg) of a problem or a recorded case as an ordered dict.
+
+    Reads the outputs ``{prefix}mass_breakdown``, ``{prefix}structures_mass``,
+    ``{prefix}powertrain_mass`` and ``{prefix}gross_mass`` of a :class:`WeightsGroup` (outputs
+    only, so a driver case needs them in the recorder's ``includes``).
+
+    Parameters
+    ----------
+    source : om.Problem or Case
+        Anything with ``get_val(name, units=...)``.
+    prefix : str
+        Path of the WeightsGroup with a trailing dot, e.g. ``'weights.'``; '' when promoted.
+
+    Returns
+    -------
+    dict
+        wing, fuselage, empennage, booms, battery, motors, power_electronics, payload, systems,
+        other, then the totals structures (eq. 32), powertrain (eq. 33) and gross (eq. 31).
+    """
+    values = np.asarray(source.get_val(f"{prefix}mass_breakdown", units="kg"), float).ravel()
+    out = {label: float(v) for label, v in zip(BREAKDOWN_LABELS, values, strict=True)}
+    for key in ("structures", "powertrain", "gross"):
+        out[key] = float(np.asarray(source.get_val(f"{prefix}{key}_mass", units="kg")).ravel()[0])
+    return out
+
+
+def format_mass_breakdown(breakdown):
+    """Return a text table of a :func:`mass_breakdown` dict: item, kg and % of the gross mass."""
+    gross = breakdown["gross"]
+    lines = [f"{'item':<20}{'mass (kg)':>12}{'share':>9}"]
+    for label, value in breakdown.items():
+        if label == "structures":
+            lines.append("-" * 41)
+        lines.append(f"{label.replace('_', ' '):<20}{value:>12.2f}{100.0 * value / gross:>8.1f}%")
+    return "\n".join(lines)
