@@ -1,0 +1,175 @@
+"""Maximum-torque-per-ampere (MTPA) q-axis current of the PMSM (paper eq. 26)."""
+
+import numpy as np
+import openmdao.api as om
+
+from lpc_mdo.components.motor._numerics import check_range, newton_bracketed
+from lpc_mdo.components.motor.parameters import MotorParameters
+
+
+def mtpa_base(flux_linkage, inductance_d, inductance_q, pole_pairs):
+    """
+    Base current and torque of the per-unit MTPA quartic (§7.7; complex-safe).
+
+    I_base = -Psi_F/(L_d - L_q), T_base = 1.5 p Psi_F I_base.
+    """
+    current_base = flux_linkage / (inductance_q - inductance_d)
+    return current_base, 1.5 * pole_pairs * flux_linkage * current_base
+
+
+def mtpa_residual(current_pu, torque_pu):
+    """Per-unit MTPA residual I_q*^4 + T* I_q* - T*^2 (paper eq. 26)."""
+    return current_pu ** 4 + torque_pu * current_pu - torque_pu ** 2
+
+
+def mtpa_current_pu(torque_pu, owner='MTPA'):
+    """
+    Per-unit MTPA q-axis current I_q*(T*): the root of eq. 26 for T* > 0 (vectorized).
+
+    For T* > 0 the residual is increasing and convex in I_q* >= 0 with R(0) = -T*^2 < 0 and
+    R(min(T*, sqrt(T*))) > 0, so the root is unique in that bracket; a safeguarded Newton
+    iteration on it converges to machine precision in a few steps. For a complex ``torque_pu``
+    (complex step) the real root is followed by one complex Newton step, which gives the exact
+    derivative dI_q*/dT* = -(I_q* - 2T*)/(4 I_q*^3 + T*).
+    """
+    torque_pu = np.asarray(torque_pu)
+    t_real = torque_pu.real
+    upper = np.minimum(t_real, np.sqrt(t_real))
+    current_pu = newton_bracketed(
+        lambda x: (mtpa_residual(x, t_real), 4.0 * x ** 3 + t_real),
+        np.zeros_like(t_real), upper, owner=owner, variable='current_q (per unit)')
+    if np.iscomplexobj(torque_pu):
+        current_pu = current_pu - (mtpa_residual(current_pu, torque_pu)
+                                   / (4.0 * current_pu ** 3 + t_real))
+    return current_pu
+
+
+class MTPAComp(om.ImplicitComponent):
+    """
+    Q-axis current of maximum-torque-per-ampere control (implicit; paper eq. 26, §7.7).
+
+    With I_base = -Psi_F/(L_d - L_q) and T_base = 1.5 p Psi_F I_base, the per-unit q-axis current
+    I_q* = I_q/I_base at the per-unit EM torque T* = T_em/T_base solves
+
+        R = I_q*^4 + T* I_q* - T*^2 = 0.
+
+    For T* > 0, R is increasing in I_q* >= 0 (dR/dI_q* = 4 I_q*^3 + T* > 0) with R(0) < 0 and
+    R(min(T*, sqrt(T*))) > 0, so the root is unique; solve_nonlinear solves on that bracket
+    (the reference bisects on [0, 50 I_base], same root) with a safeguarded Newton iteration
+    (:func:`mtpa_current_pu`), vectorized over all motors and nodes, to machine precision.
+    linearize: analytic partials of R (pointwise, sparse). The d-axis current follows as
+    I_d = (T_em/(1.5 p I_q) - Psi_F)/(L_d - L_q) (MotorLossComp).
+
+    Inputs
+    ------
+    em_torque : float, (num_motors, num_nodes), N*m
+        Electromagnetic torque T_em; must be > 0.
+    flux_linkage : float, (num_motors,), Wb
+        Psi_F; must be > 0.
+    inductance_d, inductance_q : float, (num_motors,), H
+        L_d, L_q; MTPA of this form needs saliency L_q > L_d > 0.
+
+    Outputs
+    -------
+    current_q : float, (num_motors, num_nodes), A
+        MTPA q-axis current I_q = I_q* I_base (state).
+
+    Options
+    -------
+    num_motors : int
+        Number of motors (>= 1). Default 1.
+    num_nodes : int
+        Operating points per motor (>= 1). Default 1.
+    parameters : MotorParameters
+        Pole pairs.
+
+    Raises
+    ------
+    om.AnalysisError
+        If em_torque or flux_linkage is not > 0, or L_q <= L_d (no reluctance torque, the
+        per-unit quartic is undefined).
+    """
+
+    def initialize(self):
+        self.options.declare('num_motors', default=1, types=int, lower=1,
+                             desc='Number of motors (different designs) evaluated at once')
+        self.options.declare('num_nodes', default=1, types=int, lower=1,
+                             desc='Number of operating points (nodes) per motor')
+        self.options.declare('parameters', default=MotorParameters(), types=MotorParameters,
+                             desc='Fixed motor parameters')
+
+    def setup(self):
+        nm, nn = self.options['num_motors'], self.options['num_nodes']
+        self.add_input('em_torque', val=100.0 * np.ones((nm, nn)), units='N*m',
+                       desc='Electromagnetic torque T_em')
+        self.add_input('flux_linkage', val=0.3 * np.ones(nm), units='Wb',
+                       desc='Permanent-magnet flux linkage Psi_F')
+        self.add_input('inductance_d', val=7.5e-4 * np.ones(nm), units='H',
+                       desc='D-axis inductance L_d')
+        self.add_input('inductance_q', val=1.0e-3 * np.ones(nm), units='H',
+                       desc='Q-axis inductance L_q')
+        self.add_output('current_q', val=50.0 * np.ones((nm, nn)), units='A', ref=100.0,
+                        desc='MTPA q-axis current I_q')
+
+        rows = np.arange(nm * nn)
+        per_motor = np.repeat(np.arange(nm), nn)
+        self.declare_partials('current_q', ['current_q', 'em_torque'], rows=rows, cols=rows)
+        self.declare_partials('current_q', ['flux_linkage', 'inductance_d', 'inductance_q'],
+                              rows=rows, cols=per_motor)
+
+    def _per_unit(self, inputs, current_q):
+        p = self.options['parameters'].pole_pairs
+        psi, l_d, l_q = (inputs[name][:, np.newaxis]
+                         for name in ('flux_linkage', 'inductance_d', 'inductance_q'))
+        i_base, t_base = mtpa_base(psi, l_d, l_q, p)
+        return current_q / i_base, inputs['em_torque'] / t_base, i_base, t_base
+
+    def _check_values(self, inputs):
+        check_range(self.msginfo, 'em_torque', inputs['em_torque'], 'N*m', lower=0.0)
+        check_range(self.msginfo, 'flux_linkage', inputs['flux_linkage'], 'Wb', lower=0.0)
+        check_range(self.msginfo, 'inductance_d', inputs['inductance_d'], 'H', lower=0.0)
+        saliency = (inputs['inductance_q'] - inputs['inductance_d']).real
+        if np.any(~(saliency > 0.0)):
+            idx = np.flatnonzero(~(saliency > 0.0))
+            raise om.AnalysisError(
+                f'{self.msginfo}: inductance_q - inductance_d = {saliency[idx].tolist()} H for '
+                f'motor(s) {idx.tolist()} is outside the allowed range (0, inf): the MTPA '
+                'quartic needs L_q > L_d.')
+
+    def apply_nonlinear(self, inputs, outputs, residuals):
+        current_pu, torque_pu, _, _ = self._per_unit(inputs, outputs['current_q'])
+        residuals['current_q'] = mtpa_residual(current_pu, torque_pu)
+
+    def solve_nonlinear(self, inputs, outputs):
+        self._check_values(inputs)
+        _, torque_pu, i_base, _ = self._per_unit(inputs, outputs['current_q'])
+        outputs['current_q'] = mtpa_current_pu(torque_pu, owner=self.msginfo) * i_base
+
+    def guess_nonlinear(self, inputs, outputs, residuals):
+        # Only used by a Newton solver above; keep the state positive.
+        current = outputs['current_q']
+        if np.any(current.real <= 0.0):
+            outputs['current_q'] = np.where(current.real > 0.0, current, 1.0)
+
+    def linearize(self, inputs, outputs, partials):
+        p = self.options['parameters'].pole_pairs
+        psi, l_d, l_q = (inputs[name][:, np.newaxis]
+                         for name in ('flux_linkage', 'inductance_d', 'inductance_q'))
+        current_q, torque = outputs['current_q'], inputs['em_torque']
+        current_pu, torque_pu, i_base, t_base = self._per_unit(inputs, current_q)
+        dr_dx = 4.0 * current_pu ** 3 + torque_pu  # dR/dI_q*
+        dr_dt = current_pu - 2.0 * torque_pu  # dR/dT*
+        # d(per-unit)/d(base): x = I_q/I_base, t = T/T_base.
+        dx_dib = -current_q / i_base ** 2
+        dt_dtb = -torque / t_base ** 2
+        saliency = l_q - l_d
+        dib = {'flux_linkage': 1.0 / saliency, 'inductance_q': -psi / saliency ** 2,
+               'inductance_d': psi / saliency ** 2}
+        dtb = {'flux_linkage': 3.0 * p * psi / saliency,
+               'inductance_q': -1.5 * p * psi ** 2 / saliency ** 2,
+               'inductance_d': 1.5 * p * psi ** 2 / saliency ** 2}
+        partials['current_q', 'current_q'] = (dr_dx / i_base).ravel()
+        partials['current_q', 'em_torque'] = (dr_dt / t_base).ravel()
+        for name in ('flux_linkage', 'inductance_d', 'inductance_q'):
+            partials['current_q', name] = (dr_dx * dx_dib * dib[name]
+                                           + dr_dt * dt_dtb * dtb[name]).ravel()
