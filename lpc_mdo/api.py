@@ -1,0 +1,28 @@
+"""The single import surface of lpc-mdo: ``import lpc_mdo.api as lpc``.
+
+Plain functions that wrap the OpenMDAO models for quick studies, and the public classes.
+"""
+
+from lpc_mdo.drivers import IpoptDriver, IpoptMultipliers, make_driver
+from lpc_mdo.groups.flight_conditions import FlightConditionsGroup
+from lpc_mdo.groups.motor import MotorGroup
+from lpc_mdo.groups.motor import motor_analysis as motor
+from lpc_mdo.groups.weights import WeightsGroup, calibrate_other_mass, mass_breakdown
+from lpc_mdo.problems import build_analysis_problem
+from lpc_mdo.vehicle import VehicleSpecError, load_vehicle, reference_vehicle
+
+__all__ = [
+    "FlightConditionsGroup",
+    "IpoptDriver",
+    "IpoptMultipliers",
+    "MotorGroup",
+    "VehicleSpecError",
+    "WeightsGroup",
+    "build_analysis_problem",
+    "calibrate_other_mass",
+    "load_vehicle",
+    "make_driver",
+    "mass_breakdown",
+    "motor",
+    "reference_vehicle",
+]
