@@ -1,0 +1,1 @@
+"""Post-processing from recorder (SQLite case) files only: tables, figures and reports."""
