@@ -1,0 +1,167 @@
+"""Shared constants, option checks and level arithmetic of the acoustics components.
+
+Level arithmetic (reference/models_aero_rotor_acoustics.md §10):
+
+- SPL = 10 log10(p_ms/p_ref**2 + SPL_FLOOR), p_ref = 20 uPa. The tiny relative floor SPL_FLOOR =
+  1e-12 (a -120 dB floor, i.e. a pressure floor of 2e-11 Pa rms) keeps the logarithm finite and
+  smooth when a source is exactly silent (e.g. steady loading noise on the rotor axis, where
+  J_mB(0) = 0). It changes no audible level: a source at 0 dB is altered by 4e-12 dB.
+- Incoherent (energetic) sums: L = 10 log10(sum 10**(L_i/10)).
+"""
+
+import numpy as np
+import openmdao.api as om
+from scipy.special import jv, yv
+
+#: Reference pressure, Pa (20 uPa).
+P_REF = 2.0e-5
+#: Relative mean-square floor added inside every log10 (a -120 dB floor), see module docstring.
+SPL_FLOOR = 1.0e-12
+#: 10/ln(10): d(10 log10 y)/dy = DB_PER_NEPER/y.
+DB_PER_NEPER = 10.0 / np.log(10.0)
+
+# Nominal (preferred) one-third-octave band centre mantissas, IEC 61260-1 / ANSI S1.11.
+_NOMINAL_MANTISSAS = (10.0, 12.5, 16.0, 20.0, 25.0, 31.5, 40.0, 50.0, 63.0, 80.0)
+
+
+def nominal_third_octave_bands(num_bands, lowest=12.5):
+    """
+    Nominal one-third-octave band centre frequencies (Hz), ``num_bands`` bands from ``lowest``.
+
+    The default (38 bands from 12.5 Hz to 63 kHz) is the Gill-Lee band set of
+    reference/models_aero_rotor_acoustics.md §10.3.
+    """
+    table = np.array([m * 10.0**k for k in range(0, 6) for m in _NOMINAL_MANTISSAS])
+    matches = np.flatnonzero(np.isclose(table, lowest, rtol=1e-9))
+    if matches.size != 1:
+        raise ValueError(f"lowest_band_frequency must be a nominal one-third-octave centre "
+                         f"frequency between 10 Hz and 800 kHz (e.g. 12.5, 16, 20, 25, 31.5 ...), "
+                         f"got {lowest}.")
+    start = matches[0]
+    if not 1 <= num_bands <= table.size - start:
+        raise ValueError(f"num_bands must be in [1, {table.size - start}] when starting at "
+                         f"{lowest} Hz, got {num_bands}.")
+    return table[start:start + num_bands].copy()
+
+
+def radial_quadrature(num_radial, radial_stations=None, radial_weights=None,
+                      hub_radius_ratio=0.2):
+    """
+    Non-dimensional radial stations r/R and quadrature weights w (fractions of R).
+
+    Integrals over the blade are R * sum_i w_i f(r_i). Defaults: stations at the centres of
+    ``num_radial`` equal elements on [hub_radius_ratio, 1] (the BEM element centres of
+    reference/models_aero_rotor_acoustics.md §8.1) and, for any stations, weights equal to the
+    width of each station's cell, whose edges are the mid-points between stations and the hub
+    and tip (the midpoint rule for element centres; sum w = 1 - hub_radius_ratio).
+
+    Raises ValueError naming the option if stations are not strictly increasing inside
+    (hub_radius_ratio, 1], or weights are not positive or of the wrong length.
+    """
+    if not 0.0 <= hub_radius_ratio < 1.0:
+        raise ValueError(f"hub_radius_ratio must be in [0, 1), got {hub_radius_ratio}.")
+    if radial_stations is None:
+        stations = hub_radius_ratio + (1.0 - hub_radius_ratio) * (
+            np.arange(num_radial) + 0.5) / num_radial
+    else:
+        stations = np.asarray(radial_stations, dtype=float).ravel()
+        if stations.size != num_radial:
+            raise ValueError(f"radial_stations must have num_radial = {num_radial} entries, "
+                             f"got {stations.size}.")
+        if (np.any(np.diff(stations) <= 0.0) or stations[0] <= hub_radius_ratio
+                or stations[-1] > 1.0):
+            raise ValueError(f"radial_stations must be strictly increasing in "
+                             f"(hub_radius_ratio = {hub_radius_ratio}, 1], got "
+                             f"{stations.tolist()}.")
+    if radial_weights is None:
+        edges = np.concatenate(([hub_radius_ratio], 0.5 * (stations[1:] + stations[:-1]), [1.0]))
+        weights = np.diff(edges)
+    else:
+        weights = np.asarray(radial_weights, dtype=float).ravel()
+        if weights.size != num_radial or np.any(weights <= 0.0):
+            raise ValueError(f"radial_weights must have num_radial = {num_radial} positive "
+                             f"entries, got {weights.tolist()}.")
+    return stations, weights
+
+
+def declare_radial_options(options):
+    """Declare the radial-station options shared by the blade-integrating components."""
+    options.declare('num_radial', default=25, types=int, lower=1,
+                    desc='Number of radial stations')
+    options.declare('radial_stations', default=None, types=(np.ndarray, list, tuple),
+                    allow_none=True, desc='Radial stations r/R (None: equal-element centres)')
+    options.declare('radial_weights', default=None, types=(np.ndarray, list, tuple),
+                    allow_none=True, desc='Radial quadrature weights, fractions of R '
+                                          '(None: cell widths)')
+    options.declare('hub_radius_ratio', default=0.2, types=(int, float),
+                    desc='Hub radius / tip radius (inner edge of the first cell)')
+
+
+def blade_counts(num_blades, num_rotors):
+    """Blade count per rotor as an int array; ``num_blades`` is an int or one int per rotor."""
+    counts = np.atleast_1d(np.asarray(num_blades))
+    if counts.size == 1:
+        counts = np.full(num_rotors, counts[0])
+    if (counts.size != num_rotors or not np.issubdtype(counts.dtype, np.integer)
+            or np.any(counts < 1)):
+        raise ValueError(f"num_blades must be an int >= 1 or a sequence of num_rotors = "
+                         f"{num_rotors} ints >= 1, got {num_blades!r}.")
+    return counts.astype(int)
+
+
+def check_input_range(comp, name, value, lower=None, upper=None, lower_open=True,
+                      upper_open=True):
+    """
+    Raise om.AnalysisError if any entry of input ``name`` is not finite or lies outside the range.
+
+    Only the real part is checked, so the check is complex-step safe.
+    """
+    val = np.asarray(value).real
+    bad = ~np.isfinite(val)
+    if lower is not None:
+        bad |= (val <= lower) if lower_open else (val < lower)
+    if upper is not None:
+        bad |= (val >= upper) if upper_open else (val > upper)
+    if np.any(bad):
+        lo = '(' if lower_open else '['
+        hi = ')' if upper_open else ']'
+        rng = (f"{lo}{'-inf' if lower is None else f'{lower:g}'}, "
+               f"{'inf' if upper is None else f'{upper:g}'}{hi}")
+        idx = np.argwhere(bad)
+        shown = ', '.join(f"{tuple(int(j) for j in i)}: {val[tuple(i)]:g}" for i in idx[:5])
+        raise om.AnalysisError(f"{comp.msginfo}: '{name}' is outside its valid range {rng} "
+                               f"at index {shown}" + (' ...' if len(idx) > 5 else '') + '.')
+
+
+def spl_from_mean_square(mean_square):
+    """SPL in dB re 20 uPa from the mean-square pressure (Pa**2), with the smooth floor."""
+    return 10.0 * np.log10(mean_square / P_REF**2 + SPL_FLOOR)
+
+
+def dspl_dmean_square(mean_square):
+    """Derivative of :func:`spl_from_mean_square` with respect to the mean-square pressure."""
+    return DB_PER_NEPER / (mean_square + SPL_FLOOR * P_REF**2)
+
+
+def _complex_step_safe(func, order, x):
+    """func(order, x) for real x; for complex x = x0 + i h, func(x0) + i h func'(x0).
+
+    scipy's complex Bessel routines (AMOS) return imaginary parts of ~1e-17 for real arguments,
+    which a complex step of 1e-40 would turn into huge derivatives; the first-order Taylor form is
+    exact for complex step. func' = (func_{k-1} - func_{k+1})/2 for J and Y.
+    """
+    if np.iscomplexobj(x):
+        xr = x.real
+        deriv = 0.5 * (func(order - 1, xr) - func(order + 1, xr))
+        return func(order, xr) + 1j * x.imag * deriv
+    return func(order, x)
+
+
+def bessel_j(order, x):
+    """Bessel function of the first kind J_order(x), real x (complex-step safe)."""
+    return _complex_step_safe(jv, order, x)
+
+
+def bessel_y(order, x):
+    """Bessel function of the second kind Y_order(x), real x > 0 (complex-step safe)."""
+    return _complex_step_safe(yv, order, x)

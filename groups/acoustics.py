@@ -1,0 +1,403 @@
+"""Rotor aeroacoustics at an observer: group assembly and plain-function wrappers.
+
+``RotorNoiseGroup`` assembles the acoustic components of ``lpc_mdo.components.acoustics`` for
+``num_rotors`` rotors heard by one observer (paper Sec. III.E; reference/models_aero_rotor_
+acoustics.md §10). ``a_weighting(frequency)`` and ``rotor_noise(...)`` are plain functions for use
+outside an OpenMDAO model.
+"""
+
+import numpy as np
+import openmdao.api as om
+
+from lpc_mdo.components.acoustics.a_weighting import AWeightingComp, a_weighting
+from lpc_mdo.components.acoustics.broadband import GillLeeBroadbandComp
+from lpc_mdo.components.acoustics.common import (
+    blade_counts,
+    nominal_third_octave_bands,
+    radial_quadrature,
+)
+from lpc_mdo.components.acoustics.loads import (
+    HoverLoadDistributionComp,
+    LoadFourierComp,
+    default_load_harmonics,
+    max_load_harmonics,
+)
+from lpc_mdo.components.acoustics.observer import ObserverGeometryComp, ObserverPositionComp
+from lpc_mdo.components.acoustics.thickness import BarryMagliozziThicknessComp
+from lpc_mdo.components.acoustics.tonal import LowsonLoadingNoiseComp, SearsGustLoadsComp
+from lpc_mdo.components.acoustics.total import TotalNoiseComp
+
+__all__ = ['RotorNoiseGroup', 'a_weighting', 'rotor_noise', 'HOVER_NOISE_LIMIT_DBA']
+
+#: Paper hover noise constraint: total A-weighted SPL <= 70 dBA at the observer.
+HOVER_NOISE_LIMIT_DBA = 70.0
+
+
+class RotorNoiseGroup(om.Group):
+    """
+    Tonal, broadband and total A-weighted noise of ``num_rotors`` rotors at one observer.
+
+    Paper Sec. III.E (eqs. 19-22) with reference/models_aero_rotor_acoustics.md §10:
+
+    ``observer_position`` (ObserverPositionComp; only if observer_input = 'relative')
+    -> ``geometry`` (ObserverGeometryComp: S, z, Y, Doppler r1, observer azimuth, speeds)
+    -> [``hover_loads`` (HoverLoadDistributionComp; only if load_input = 'totals')]
+    -> ``fourier`` (LoadFourierComp, eqs. 19-20) -> [``sears`` (SearsGustLoadsComp)]
+    -> ``loading`` (LowsonLoadingNoiseComp, eq. 21) · ``thickness`` (BarryMagliozziThicknessComp)
+    · ``broadband`` (GillLeeBroadbandComp, eq. 22)
+    -> ``tonal_weighting``/``broadband_weighting`` (AWeightingComp, §10.6)
+    -> ``total_a`` and ``total`` (TotalNoiseComp, §10.7).
+
+    All variables are promoted. The hover constraint of the paper is ``total_spl_a`` <= 70 dBA
+    (``HOVER_NOISE_LIMIT_DBA``) with the default observer (100 m from the rotor-hub centroid,
+    45 deg below the rotor plane).
+
+    Inputs
+    ------
+    radius, rpm, thrust : float, (num_rotors,), m, rpm, N
+        Rotor radius, speed and thrust.
+    torque : float, (num_rotors,), N*m
+        Rotor torque (only with load_input = 'totals').
+    thrust_per_span, drag_per_span : float, (num_rotors, num_radial, num_azimuth), N/m
+        Sectional loads of one blade per unit span at the acoustic stations (load_input =
+        'sectional'). From the BEM/Pitt-Peters blade-element outputs (all blades, per element,
+        §8.3): thrust_per_span = dT/(B dr), drag_per_span = dQ/(B r dr).
+    inflow_angle : float, (num_rotors, num_radial, num_azimuth), rad
+        Inflow angle at the stations (Sears gusts; load_input = 'sectional').
+    chord : float, (num_rotors, num_radial), m
+        Blade chord at the acoustic stations.
+    thickness_to_chord : float, (num_rotors, num_radial), unitless
+        Section t/c (default 0.12).
+    hub_position, thrust_direction : float, (num_rotors, 3), m and unitless
+        Hub positions and thrust axes in the body frame (x forward, y right, z down).
+    observer_distance, observer_elevation, observer_azimuth : float, (1,), m, rad, rad
+        Observer about the hub centroid (observer_input = 'relative'); defaults 100 m, 45 deg
+        below the rotor plane, 180 deg (aft).
+    observer_position : float, (3,), m
+        Observer in the body frame (an input when observer_input = 'position').
+    flight_velocity : float, (3,), m/s
+        Vehicle velocity in the body frame (zero in hover).
+    density, speed_of_sound : float, (1,), kg/m**3 and m/s
+        Atmosphere.
+
+    Outputs (main ones; dB re 20 uPa, units=None)
+    -------
+    total_spl_a : (1,) dBA
+        Total A-weighted level of all rotors (the hover constraint).
+    total_spl : (1,) dB
+        Total unweighted level.
+    rotor_spl_a, tonal_spl_a, broadband_oaspl_a : (num_rotors,) dBA
+        Per-rotor total, tonal (loading + thickness) and broadband A-weighted levels.
+    rotor_spl, tonal_spl, broadband_oaspl : (num_rotors,) dB
+        The same, unweighted.
+    loading_spl, thickness_spl, loading_spl_a, thickness_spl_a : (num_rotors, num_harmonics)
+        Tonal levels per blade-passing harmonic; harmonic_frequency (Hz) gives m B rpm/60.
+    broadband_spl, broadband_spl_a : (num_rotors, num_bands)
+        Broadband band levels at ``band_frequencies`` (attribute, Hz).
+
+    Options
+    -------
+    num_rotors, num_radial, num_azimuth, num_harmonics, num_bands : int
+        Array sizes (defaults 1, 25, 1, 3, 38).
+    num_blades : int or sequence of int
+        Blades per rotor (default 2).
+    num_load_harmonics : int or None
+        Azimuthal load harmonics L of eq. 19 (None: min(10, (num_azimuth - 1)//2)).
+    num_gust_harmonics : int
+        Sears gust harmonics (default 10). gust_factor: q (default 0.06).
+    loading_path : str
+        'auto' (smooth Sears/unsteady switch on the in-plane speed), 'sears' or 'unsteady'.
+    load_input : str
+        'sectional' (default) or 'totals' (thrust and torque with an assumed hover load shape).
+    observer_input : str
+        'relative' (default) or 'position'.
+    radial_stations, radial_weights, hub_radius_ratio :
+        Acoustic radial stations (``common.radial_quadrature``).
+    rotation_direction : tuple of int or None
+        +1/-1 per rotor (azimuth convention of the unsteady path).
+    lowest_band_frequency : float
+        First one-third-octave band centre, Hz (default 12.5).
+    edgewise_broadband_correction : bool
+        Gill-Lee edgewise adjustment (default True; zero in hover).
+    """
+
+    def initialize(self):
+        opt = self.options
+        opt.declare('num_rotors', default=1, types=int, lower=1, desc='Number of rotors')
+        opt.declare('num_blades', default=2, types=(int, tuple, list, np.ndarray),
+                    desc='Blades per rotor (int or one per rotor)')
+        opt.declare('num_radial', default=25, types=int, lower=1,
+                    desc='Number of acoustic radial stations')
+        opt.declare('num_azimuth', default=1, types=int, lower=1,
+                    desc='Number of azimuthal stations of the sectional loads')
+        opt.declare('num_harmonics', default=3, types=int, lower=1,
+                    desc='Number of blade-passing harmonics')
+        opt.declare('num_bands', default=38, types=int, lower=1,
+                    desc='Number of one-third-octave bands')
+        opt.declare('lowest_band_frequency', default=12.5, types=(int, float),
+                    desc='Nominal centre of the first band, Hz')
+        opt.declare('num_load_harmonics', default=None, types=int, allow_none=True,
+                    desc='Highest azimuthal load harmonic (None: all resolvable, <= 10)')
+        opt.declare('num_gust_harmonics', default=10, types=int, lower=1,
+                    desc='Highest Sears gust load harmonic')
+        opt.declare('gust_factor', default=0.06, types=(int, float), lower=0.0,
+                    desc='Sears gust amplification factor q')
+        opt.declare('loading_path', default='auto', values=('auto', 'sears', 'unsteady'),
+                    desc='Loading-noise load model')
+        opt.declare('load_input', default='sectional', values=('sectional', 'totals'),
+                    desc="'sectional' loads or rotor 'totals' (thrust, torque)")
+        opt.declare('observer_input', default='relative', values=('relative', 'position'),
+                    desc="Observer given 'relative' to the hub centroid or as a 'position'")
+        opt.declare('radial_stations', default=None, types=(np.ndarray, list, tuple),
+                    allow_none=True, desc='Radial stations r/R')
+        opt.declare('radial_weights', default=None, types=(np.ndarray, list, tuple),
+                    allow_none=True, desc='Radial quadrature weights (fractions of R)')
+        opt.declare('hub_radius_ratio', default=0.2, types=(int, float),
+                    desc='Hub radius / tip radius')
+        opt.declare('rotation_direction', default=None, types=(tuple, list), allow_none=True,
+                    desc='+1/-1 per rotor')
+        opt.declare('edgewise_broadband_correction', default=True, types=bool,
+                    desc='Gill-Lee edgewise adjustment')
+
+    def setup(self):
+        opt = self.options
+        nr, nrad, naz = opt['num_rotors'], opt['num_radial'], opt['num_azimuth']
+        nm, nb = opt['num_harmonics'], opt['num_bands']
+        L = opt['num_load_harmonics']
+        if L is None:
+            L = default_load_harmonics(naz)
+        if not 0 <= L <= max_load_harmonics(naz):
+            raise ValueError(f"{self.msginfo}: option 'num_load_harmonics' must be in "
+                             f"[0, (num_azimuth - 1)//2 = {max_load_harmonics(naz)}], got {L}.")
+        if opt['load_input'] == 'totals' and naz != 1:
+            raise ValueError(f"{self.msginfo}: load_input = 'totals' (assumed hover load shape) "
+                             f"needs num_azimuth = 1, got {naz}.")
+        blades = blade_counts(opt['num_blades'], nr)
+        radial = {'num_radial': nrad, 'radial_stations': opt['radial_stations'],
+                  'radial_weights': opt['radial_weights'],
+                  'hub_radius_ratio': opt['hub_radius_ratio']}
+        radial_quadrature(nrad, opt['radial_stations'], opt['radial_weights'],
+                          opt['hub_radius_ratio'])          # validate once, early
+        self.band_frequencies = nominal_third_octave_bands(nb, float(opt['lowest_band_frequency']))
+        path = opt['loading_path']
+        common = {'num_rotors': nr, 'num_blades': tuple(int(b) for b in blades)}
+
+        if opt['observer_input'] == 'relative':
+            self.add_subsystem('observer_position', ObserverPositionComp(num_rotors=nr),
+                               promotes=['*'])
+        self.add_subsystem('geometry', ObserverGeometryComp(
+            num_rotors=nr, rotation_direction=opt['rotation_direction']), promotes=['*'])
+        if opt['load_input'] == 'totals':
+            self.add_subsystem('hover_loads', HoverLoadDistributionComp(**common, **radial),
+                               promotes=['*'])
+        self.add_subsystem('fourier', LoadFourierComp(num_rotors=nr, num_radial=nrad,
+                                                      num_azimuth=naz, num_load_harmonics=L),
+                           promotes=['*'])
+        if path != 'unsteady':
+            self.add_subsystem('sears', SearsGustLoadsComp(
+                num_rotors=nr, num_azimuth=naz, num_gust_harmonics=opt['num_gust_harmonics'],
+                gust_factor=opt['gust_factor'], **radial), promotes=['*'])
+        self.add_subsystem('loading', LowsonLoadingNoiseComp(
+            **common, num_harmonics=nm, num_load_harmonics=L,
+            num_gust_harmonics=opt['num_gust_harmonics'], loading_path=path, **radial),
+            promotes=['*'])
+        self.add_subsystem('thickness', BarryMagliozziThicknessComp(
+            **common, num_harmonics=nm, **radial), promotes=['*'])
+        self.add_subsystem('broadband', GillLeeBroadbandComp(
+            **common, num_bands=nb, lowest_band_frequency=opt['lowest_band_frequency'],
+            edgewise_correction=opt['edgewise_broadband_correction'], **radial),
+            promotes=['*'])
+        self.add_subsystem('tonal_weighting', AWeightingComp(
+            shape=(nr, nm), names=['loading_spl', 'thickness_spl']),
+            promotes=[('frequency', 'harmonic_frequency'), '*'])
+        self.add_subsystem('broadband_weighting', AWeightingComp(
+            shape=(nr, nb), names=['broadband_spl'], frequencies=self.band_frequencies),
+            promotes=['*'])
+        total_sizes = {'num_rotors': nr, 'num_harmonics': nm, 'num_bands': nb}
+        self.add_subsystem('total_a', TotalNoiseComp(**total_sizes, weighting='A'),
+                           promotes=['*'])
+        self.add_subsystem('total', TotalNoiseComp(**total_sizes, weighting='none'),
+                           promotes=['*'])
+
+        # Inputs shared by several components: one default value and unit each.
+        self.set_input_defaults('radius', np.full(nr, 1.524), units='m')
+        self.set_input_defaults('rpm', np.full(nr, 1200.0), units='rpm')
+        self.set_input_defaults('chord', np.full((nr, nrad), 0.2), units='m')
+        self.set_input_defaults('density', 1.225, units='kg/m**3')
+        self.set_input_defaults('speed_of_sound', 340.294, units='m/s')
+        self.set_input_defaults('thrust', np.full(nr, 5000.0), units='N')
+        self.set_input_defaults('hub_position', np.zeros((nr, 3)), units='m')
+        if opt['load_input'] == 'sectional' and path != 'unsteady':
+            self.set_input_defaults('inflow_angle', np.full((nr, nrad, naz), 0.1), units='rad')
+
+
+def rotor_noise(radius, rpm, thrust, chord, *, num_blades=2, torque=None,
+                thrust_per_span=None, drag_per_span=None, inflow_angle=None,
+                thickness_to_chord=0.12, radial_stations=None, radial_weights=None,
+                hub_radius_ratio=0.2, hub_position=None, thrust_direction=(0.0, 0.0, -1.0),
+                observer_position=None, observer_distance=100.0, observer_elevation_deg=45.0,
+                observer_azimuth_deg=180.0, flight_velocity=(0.0, 0.0, 0.0), density=1.225,
+                speed_of_sound=340.294, num_harmonics=3, num_bands=38,
+                loading_path='auto', **group_options):
+    """
+    Noise of one or more rotors at an observer: tonal, broadband and total levels.
+
+    Builds a small Problem around :class:`RotorNoiseGroup`, runs it and returns the levels.
+    Defaults are the paper's hover case: observer 100 m from the rotor-hub centroid, 45 deg below
+    the rotor plane (aft), thrust axes up, vehicle at rest.
+
+    Parameters
+    ----------
+    radius, rpm, thrust : float or array (num_rotors,)
+        Radius (m), speed (rpm) and thrust (N) of each rotor; num_rotors is their broadcast size.
+    chord : float, array (num_radial,) or (num_rotors, num_radial)
+        Chord (m) at the acoustic radial stations; a scalar means a constant chord with 25
+        stations (or len(radial_stations)).
+    num_blades : int or sequence of int
+        Blades per rotor.
+    torque : float or array (num_rotors,), optional
+        Torque (N*m); required when sectional loads are not given (an assumed hover load shape
+        is then used, see HoverLoadDistributionComp).
+    thrust_per_span, drag_per_span, inflow_angle : array, optional
+        Sectional loads of one blade (N/m) and inflow angle (rad), shapes (num_radial,),
+        (num_radial, num_azimuth) or (num_rotors, num_radial, num_azimuth). Give all three or none.
+    thickness_to_chord : float or array
+        Section t/c (default 0.12).
+    radial_stations, radial_weights, hub_radius_ratio :
+        Acoustic radial stations r/R and weights (default: element centres on [0.2, 1]).
+    hub_position : array (num_rotors, 3), optional
+        Hub positions in the body frame, m (default all at the origin).
+    thrust_direction : array (3,) or (num_rotors, 3)
+        Thrust axes in the body frame (default up, (0, 0, -1)).
+    observer_position : array (3,), optional
+        Observer in the body frame, m. If None, the observer is placed at observer_distance (m),
+        observer_elevation_deg below the rotor plane and observer_azimuth_deg (from +x towards
+        +y) about the hub centroid.
+    flight_velocity : array (3,)
+        Vehicle velocity in the body frame, m/s.
+    density, speed_of_sound : float
+        Atmosphere (kg/m**3, m/s).
+    num_harmonics, num_bands : int
+        Blade-passing harmonics and one-third-octave bands.
+    loading_path : str
+        'auto', 'sears' or 'unsteady' (see LowsonLoadingNoiseComp).
+    **group_options
+        Further RotorNoiseGroup options (e.g. gust_factor, rotation_direction).
+
+    Returns
+    -------
+    dict
+        Floats: 'total_spl_a' (dBA), 'total_spl' (dB). Arrays (num_rotors,): 'rotor_spl_a',
+        'rotor_spl', 'tonal_spl_a', 'tonal_spl', 'broadband_oaspl_a', 'broadband_oaspl',
+        'distance' (m), 'elevation_deg' (observer above each rotor plane). Arrays
+        (num_rotors, num_harmonics): 'loading_spl', 'thickness_spl', 'loading_spl_a',
+        'thickness_spl_a', 'harmonic_frequency' (Hz). Arrays (num_rotors, num_bands):
+        'broadband_spl', 'broadband_spl_a'; (num_bands,): 'band_frequency' (Hz). Levels are dB
+        re 20 uPa.
+    """
+    per_rotor = np.broadcast_arrays(*(np.atleast_1d(np.asarray(v, dtype=float))
+                                      for v in (radius, rpm, thrust)))
+    if per_rotor[0].ndim != 1:
+        raise ValueError('rotor_noise: radius, rpm and thrust must be scalars or 1-D arrays of '
+                         f'one value per rotor, got shape {per_rotor[0].shape}.')
+    radius, rpm, thrust = (v.copy() for v in per_rotor)
+    nr = radius.size
+
+    sectional = [x is not None for x in (thrust_per_span, drag_per_span, inflow_angle)]
+    if any(sectional) and not all(sectional):
+        raise ValueError('rotor_noise: give all of thrust_per_span, drag_per_span and '
+                         'inflow_angle, or none of them.')
+    if all(sectional):
+        loads = [np.asarray(x, dtype=float) for x in (thrust_per_span, drag_per_span,
+                                                      inflow_angle)]
+        shape = loads[0].shape
+        if len(shape) == 1:
+            shape = (nr, shape[0], 1)
+        elif len(shape) == 2:
+            shape = (nr,) + shape
+        try:
+            loads = [np.broadcast_to(x.reshape(x.shape + (1,) if x.ndim == 1 else x.shape),
+                                     shape) for x in loads]
+        except ValueError:
+            shapes = [np.shape(x) for x in (thrust_per_span, drag_per_span, inflow_angle)]
+            raise ValueError(f'rotor_noise: thrust_per_span, drag_per_span and inflow_angle must '
+                             f'share one shape (num_radial,), (num_radial, num_azimuth) or '
+                             f'(num_rotors = {nr}, num_radial, num_azimuth); got {shapes}.'
+                             ) from None
+        nrad, naz = shape[1], shape[2]
+        load_input = 'sectional'
+    else:
+        if torque is None:
+            raise ValueError('rotor_noise: torque is required when the sectional loads '
+                             '(thrust_per_span, drag_per_span, inflow_angle) are not given.')
+        load_input = 'totals'
+        naz = 1
+        chord_arr = np.asarray(chord, dtype=float)
+        if chord_arr.ndim:
+            nrad = chord_arr.shape[-1]
+        elif radial_stations is not None:
+            nrad = len(radial_stations)
+        else:
+            nrad = 25
+
+    chord = np.asarray(chord, dtype=float)
+    try:
+        chord = np.broadcast_to(chord, (nr, nrad)).copy()
+        tc = np.broadcast_to(np.asarray(thickness_to_chord, dtype=float), (nr, nrad)).copy()
+    except ValueError:
+        raise ValueError(f'rotor_noise: chord and thickness_to_chord must broadcast to '
+                         f'(num_rotors, num_radial) = {(nr, nrad)}, got {np.shape(chord)} and '
+                         f'{np.shape(thickness_to_chord)}.') from None
+    hub = np.zeros((nr, 3)) if hub_position is None else np.asarray(hub_position, dtype=float)
+    direction = np.asarray(thrust_direction, dtype=float)
+    try:
+        hub = np.broadcast_to(hub, (nr, 3))
+        direction = np.broadcast_to(direction, (nr, 3))
+    except ValueError:
+        raise ValueError(f'rotor_noise: hub_position and thrust_direction must broadcast to '
+                         f'(num_rotors, 3) = {(nr, 3)}.') from None
+
+    group = RotorNoiseGroup(
+        num_rotors=nr, num_blades=num_blades, num_radial=nrad, num_azimuth=naz,
+        num_harmonics=num_harmonics, num_bands=num_bands, loading_path=loading_path,
+        load_input=load_input,
+        observer_input='relative' if observer_position is None else 'position',
+        radial_stations=radial_stations, radial_weights=radial_weights,
+        hub_radius_ratio=float(hub_radius_ratio), **group_options)
+    prob = om.Problem(group, reports=False)
+    prob.setup()
+    prob.set_val('radius', radius, units='m')
+    prob.set_val('rpm', rpm, units='rpm')
+    prob.set_val('thrust', thrust, units='N')
+    prob.set_val('chord', chord, units='m')
+    prob.set_val('thickness_to_chord', tc)
+    prob.set_val('hub_position', hub, units='m')
+    prob.set_val('thrust_direction', direction)
+    prob.set_val('flight_velocity', np.asarray(flight_velocity, dtype=float), units='m/s')
+    prob.set_val('density', density, units='kg/m**3')
+    prob.set_val('speed_of_sound', speed_of_sound, units='m/s')
+    if observer_position is None:
+        prob.set_val('observer_distance', observer_distance, units='m')
+        prob.set_val('observer_elevation', observer_elevation_deg, units='deg')
+        prob.set_val('observer_azimuth', observer_azimuth_deg, units='deg')
+    else:
+        prob.set_val('observer_position', np.asarray(observer_position, dtype=float), units='m')
+    if load_input == 'sectional':
+        prob.set_val('thrust_per_span', loads[0], units='N/m')
+        prob.set_val('drag_per_span', loads[1], units='N/m')
+        prob.set_val('inflow_angle', loads[2], units='rad')
+    else:
+        prob.set_val('torque', np.broadcast_to(np.asarray(torque, dtype=float), (nr,)),
+                     units='N*m')
+    prob.run_model()
+
+    result = {name: float(prob.get_val(name)[0]) for name in ('total_spl_a', 'total_spl')}
+    for name in ('rotor_spl_a', 'rotor_spl', 'tonal_spl_a', 'tonal_spl', 'broadband_oaspl_a',
+                 'broadband_oaspl', 'loading_spl', 'thickness_spl', 'loading_spl_a',
+                 'thickness_spl_a', 'harmonic_frequency', 'broadband_spl', 'broadband_spl_a',
+                 'distance'):
+        result[name] = prob.get_val(name).copy()
+    result['elevation_deg'] = np.degrees(np.arcsin(
+        np.clip(prob.get_val('axial_distance') / prob.get_val('distance'), -1.0, 1.0)))
+    result['band_frequency'] = group.band_frequencies.copy()
+    return result
