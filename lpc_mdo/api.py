@@ -4,6 +4,7 @@ Plain functions that wrap the OpenMDAO models for quick studies, and the public 
 """
 
 from lpc_mdo.drivers import IpoptDriver, IpoptMultipliers, make_driver
+from lpc_mdo.groups.acoustics import RotorNoiseGroup, a_weighting, rotor_noise
 from lpc_mdo.groups.flight_conditions import FlightConditionsGroup
 from lpc_mdo.groups.motor import MotorGroup
 from lpc_mdo.groups.motor import motor_analysis as motor
@@ -25,4 +26,7 @@ __all__ = [
     "mass_breakdown",
     "motor",
     "reference_vehicle",
+    "RotorNoiseGroup",
+    "a_weighting",
+    "rotor_noise",
 ]

@@ -1,5 +1,6 @@
 """The lpc_mdo.api wrappers return the same numbers as the models they wrap."""
 
+import numpy as np
 import pytest
 
 import lpc_mdo.api as lpc
@@ -19,3 +20,21 @@ def test_motor_wrapper_reference_point():
 def test_public_names_import():
     for name in lpc.__all__:
         assert getattr(lpc, name) is not None
+
+
+def test_a_weighting_wrapper():
+    # IEC 61672-1: A(1 kHz) = 0.0 dB, A(100 Hz) = -19.1 dB at the exact base-10 frequency.
+    assert lpc.a_weighting(1000.0) == pytest.approx(0.0, abs=0.05)
+    assert lpc.a_weighting(10 ** 2.0) == pytest.approx(-19.1, abs=0.1)
+
+
+def test_rotor_noise_wrapper_doubles_with_two_identical_rotors():
+    kwargs = dict(radius=1.524, rpm=1200.0, thrust=4000.0, chord=0.2, torque=900.0)
+    one = lpc.rotor_noise(**kwargs)
+    two = lpc.rotor_noise(radius=[1.524, 1.524], rpm=[1200.0, 1200.0], thrust=[4000.0, 4000.0],
+                          chord=0.2, torque=[900.0, 900.0],
+                          hub_position=[[0.0, 0.0, 0.0], [0.0, 0.0, 0.0]],
+                          rotation_direction=[1.0, 1.0])
+    for key in ("total_spl_a",):
+        assert np.asarray(two[key]).item() == pytest.approx(
+            np.asarray(one[key]).item() + 10 * np.log10(2), abs=1e-6)
