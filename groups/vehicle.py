@@ -1,0 +1,169 @@
+"""The vehicle: geometry, wing-box mass, motor masses and mass properties from design variables."""
+
+import functools
+
+import numpy as np
+import openmdao.api as om
+
+from lpc_mdo.components.geometry.rotor_layout import RotorLayoutComp
+from lpc_mdo.components.geometry.surface_sizing import SurfaceSizingComp
+from lpc_mdo.components.geometry.tail_position import TailPositionComp
+from lpc_mdo.components.motor.parameters import MotorParameters
+from lpc_mdo.components.motor.sizing import MotorSizingComp
+from lpc_mdo.components.structures.beam import BeamMassComp
+from lpc_mdo.components.structures.box_section import BoxSectionComp
+from lpc_mdo.components.structures.wing_box_geometry import (
+    WingBoxGeometryComp,
+    wing_box_section,
+)
+from lpc_mdo.components.weights.wing_mass import WingMirrorComp
+from lpc_mdo.groups.weights import WeightsGroup, motor_group_indices
+from lpc_mdo.vehicle import reference_vehicle
+
+# Design variables that the vehicle group consumes, with their units.
+VEHICLE_DESIGN_VARIABLES = {
+    "wing_area": "m**2", "wing_aspect_ratio": None, "htail_area": "m**2",
+    "htail_aspect_ratio": None, "fuselage_length": "m", "rotor_radius": "m",
+    "battery_mass": "kg", "motor_length": "m", "front_spar_thickness": "m",
+    "rear_spar_thickness": "m", "top_skin_thickness": "m", "bottom_skin_thickness": "m",
+}
+
+
+def motor_parameters(vehicle):
+    """The PMSM's fixed parameters from the vehicle file's [motor] table."""
+    m = vehicle.motor
+    return MotorParameters(pole_pairs=m.pole_pairs, phases=m.num_phases, num_slots=m.num_slots,
+                           rated_current=m.rated_current, voltage_limit=m.voltage_limit,
+                           gear_ratio=m.gear_ratio, torque_density=m.torque_density)
+
+
+class VehicleGroup(om.Group):
+    """
+    Everything about the vehicle that does not depend on a flight condition.
+
+    From the planform, rotor, motor, battery and wing-box design variables to the planform
+    dimensions, rotor layout, wing-box geometry and mass, motor masses and the mass properties
+    and gross mass of the whole vehicle (paper Sec. II.D, eqs. 23, 31-33).
+
+    Subsystems (promoted):
+
+    - ``wing_sizing``, ``htail_sizing`` (SurfaceSizingComp): span, root/tip chord, MAC
+      (outputs ``wing_span``, ``wing_root_chord``, ``wing_tip_chord``, ``wing_mac`` and the
+      ``htail_`` equivalents);
+    - ``tail_position`` (TailPositionComp): tail root leading edges follow the fuselage length;
+    - ``rotor_layout`` (RotorLayoutComp): hub positions, radii, radius intersection;
+    - ``wing_box`` (WingBoxGeometryComp), ``box_section`` (BoxSectionComp), ``box_mass``
+      (BeamMassComp), ``wing_mirror`` (WingMirrorComp): the beam of one half wing, its mass and
+      the whole wing's mass and cg;
+    - ``motor_sizing`` (MotorSizingComp, one motor per rotor group): motor masses (eq. 23);
+    - ``weights`` (WeightsGroup): regressions, gross mass (objective), cg, inertia.
+
+    Inputs (promoted): the design variables in ``VEHICLE_DESIGN_VARIABLES`` (the wing-box
+    thicknesses per bay, root to tip).
+
+    Options
+    -------
+    vehicle : Vehicle or None
+        None = the reference vehicle.
+    other_mass : float or None
+        W_other in kg; None = calibrated so that the initial design's gross mass equals the
+        vehicle's ``masses.target_gross_mass`` (paper: 3723.99 kg).
+    """
+
+    def initialize(self):
+        self.options.declare("vehicle", default=None, allow_none=True,
+                             desc="lpc_mdo.vehicle.Vehicle; None = reference vehicle")
+        self.options.declare("other_mass", default=None, types=(int, float), allow_none=True,
+                             desc="W_other (kg); None = calibrated to the target gross mass")
+
+    def setup(self):
+        vehicle = self.options["vehicle"] or reference_vehicle()
+        other = self.options["other_mass"]
+        if other is None:
+            other = calibrated_other_mass(vehicle)
+        wing, tail = vehicle.wing, vehicle.horizontal_tail
+
+        self.add_subsystem("wing_sizing", SurfaceSizingComp(taper_ratio=wing.taper_ratio),
+                           promotes_inputs=[("area", "wing_area"),
+                                            ("aspect_ratio", "wing_aspect_ratio")],
+                           promotes_outputs=[("span", "wing_span"),
+                                             ("root_chord", "wing_root_chord"),
+                                             ("tip_chord", "wing_tip_chord"),
+                                             ("mean_aerodynamic_chord", "wing_mac")])
+        self.add_subsystem("htail_sizing", SurfaceSizingComp(taper_ratio=tail.taper_ratio),
+                           promotes_inputs=[("area", "htail_area"),
+                                            ("aspect_ratio", "htail_aspect_ratio")],
+                           promotes_outputs=[("span", "htail_span"),
+                                             ("root_chord", "htail_root_chord"),
+                                             ("tip_chord", "htail_tip_chord"),
+                                             ("mean_aerodynamic_chord", "htail_mac")])
+        self.add_subsystem("tail_position", TailPositionComp(vehicle=vehicle), promotes=["*"])
+        self.add_subsystem("rotor_layout", RotorLayoutComp(vehicle=vehicle), promotes=["*"])
+
+        nodes = vehicle.wing_box.num_bays + 1
+        self.add_subsystem("wing_box", WingBoxGeometryComp(
+            num_nodes=nodes, section=wing_box_section(vehicle)),
+            promotes_inputs=["wing_area", "wing_aspect_ratio"],
+            promotes_outputs=[("nodes", "wing_box_nodes"), "box_width", "box_height",
+                              "top_skin_radius", "bottom_skin_radius"])
+        self.add_subsystem("box_section", BoxSectionComp(num_elements=nodes - 1),
+                           promotes=["*"])
+        self.add_subsystem("box_mass", BeamMassComp(num_nodes=nodes),
+                           promotes_inputs=[("nodes", "wing_box_nodes"), "area",
+                                            ("density", "material_density")],
+                           promotes_outputs=["element_mass", ("beam_mass", "half_wing_mass"),
+                                             ("beam_cg", "half_wing_cg")])
+        self.add_subsystem("wing_mirror", WingMirrorComp(), promotes=["*"])
+
+        groups = motor_group_indices(vehicle)
+        self.add_subsystem("motor_sizing", MotorSizingComp(
+            num_motors=5, length_to_diameter=vehicle.motor.length_to_diameter,
+            parameters=motor_parameters(vehicle)),
+            promotes_inputs=[("length", "motor_length")],
+            promotes_outputs=[("mass", "motor_group_mass"),
+                              ("peak_torque", "motor_peak_torque")])
+        self.add_subsystem("weights", WeightsGroup(vehicle=vehicle, other_mass=float(other)),
+                           promotes=["*"])
+        self.connect("motor_group_mass", "motor_mass", src_indices=groups)
+
+        self.set_input_defaults("material_density", vehicle.material.density, units="kg/m**3")
+        dvs = vehicle.design_variables
+        for name, units in VEHICLE_DESIGN_VARIABLES.items():
+            self.set_input_defaults(name, np.asarray(dvs[name].initial_array).reshape(
+                dvs[name].shape), units=units)
+
+
+@functools.lru_cache(maxsize=8)
+def calibrated_other_mass(vehicle):
+    """
+    W_other such that the vehicle's initial design weighs ``masses.target_gross_mass``.
+
+    The paper calibrates W_other at the initial design because the NASA reference does not
+    itemise every weight (reference page §4.1). Gross mass is affine in W_other, so one run of
+    the vehicle group with W_other = 0 gives it exactly.
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+
+    Returns
+    -------
+    float
+        W_other in kg.
+
+    Raises
+    ------
+    ValueError
+        When the other masses already exceed the target (W_other would be negative).
+    """
+    prob = om.Problem(reports=False)
+    prob.model.add_subsystem("vehicle", VehicleGroup(vehicle=vehicle, other_mass=0.0),
+                             promotes=["*"])
+    prob.setup()
+    prob.run_model()
+    other = vehicle.masses.target_gross_mass - float(prob.get_val("gross_mass", units="kg")[0])
+    if other < 0.0:
+        raise ValueError(f"calibrated W_other = {other:.2f} kg < 0: the vehicle's other masses "
+                         f"exceed masses.target_gross_mass = {vehicle.masses.target_gross_mass}"
+                         " kg at the initial design.")
+    return other
