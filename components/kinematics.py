@@ -37,6 +37,8 @@ class KinematicsComp(om.ExplicitComponent):
         Body-axis x velocity.
     w : float, (num_nodes,), m/s
         Body-axis z velocity (positive down).
+    velocity : float, (num_nodes, 3), m/s
+        Body-axis velocity vector (u, 0, w).
     mach : float, (num_nodes,)
     dynamic_pressure : float, (num_nodes,), Pa
     reynolds_per_length : float, (num_nodes,), 1/m
@@ -67,6 +69,8 @@ class KinematicsComp(om.ExplicitComponent):
                         desc="angle of attack, pitch minus flight-path angle")
         self.add_output("u", np.zeros(nn), units="m/s", desc="body-axis x velocity")
         self.add_output("w", np.zeros(nn), units="m/s", desc="body-axis z velocity (down)")
+        self.add_output("velocity", np.zeros((nn, 3)), units="m/s",
+                        desc="body-axis velocity vector (u, 0, w)")
         self.add_output("mach", np.zeros(nn), units=None, desc="Mach number")
         self.add_output("dynamic_pressure", np.zeros(nn), units="Pa", desc="dynamic pressure")
         self.add_output("reynolds_per_length", np.zeros(nn), units="1/m",
@@ -76,6 +80,10 @@ class KinematicsComp(om.ExplicitComponent):
         self.declare_partials("angle_of_attack", "flight_path_angle", diagonal=True, val=-1.0)
         self.declare_partials(["u", "w"], ["speed", "pitch", "flight_path_angle"],
                               diagonal=True)
+        rows = np.concatenate([3 * np.arange(nn), 3 * np.arange(nn) + 2])
+        cols = np.concatenate([np.arange(nn), np.arange(nn)])
+        self.declare_partials("velocity", ["speed", "pitch", "flight_path_angle"], rows=rows,
+                              cols=cols)
         self.declare_partials("mach", ["speed", "speed_of_sound"], diagonal=True)
         self.declare_partials("dynamic_pressure", ["speed", "density"], diagonal=True)
         self.declare_partials("reynolds_per_length", ["speed", "density", "dynamic_viscosity"],
@@ -90,6 +98,9 @@ class KinematicsComp(om.ExplicitComponent):
         outputs["angle_of_attack"] = alpha
         outputs["u"] = speed * np.cos(alpha)
         outputs["w"] = speed * np.sin(alpha)
+        outputs["velocity"][:, 0] = outputs["u"]
+        outputs["velocity"][:, 1] = 0.0
+        outputs["velocity"][:, 2] = outputs["w"]
         outputs["mach"] = speed / inputs["speed_of_sound"]
         outputs["dynamic_pressure"] = 0.5 * rho * speed**2
         outputs["reynolds_per_length"] = rho * speed / inputs["dynamic_viscosity"]
@@ -108,6 +119,8 @@ class KinematicsComp(om.ExplicitComponent):
         partials["w", "speed"] = sin
         partials["w", "pitch"] = speed * cos
         partials["w", "flight_path_angle"] = -speed * cos
+        for wrt in ("speed", "pitch", "flight_path_angle"):
+            partials["velocity", wrt] = np.concatenate([partials["u", wrt], partials["w", wrt]])
         partials["mach", "speed"] = 1.0 / a
         partials["mach", "speed_of_sound"] = -speed / a**2
         partials["dynamic_pressure", "speed"] = rho * speed
