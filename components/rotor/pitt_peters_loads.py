@@ -1,0 +1,664 @@
+"""Steady Pitt–Peters rotor: blade-element loads over radius and azimuth, and their integrals.
+
+reference/models_aero_rotor_acoustics.md §9.1 (items 1-4 and 9) and paper eq. 14 (with the
+reference's correction: the last term is lambda_c r/R cos psi). This module holds
+
+- :class:`PittPetersBladeElements`, the blade-element field of every station (rotor, operating
+  point, radial station, azimuth) for given inflow states, its integrals (thrust, moments,
+  torque, in-plane forces, Prandtl area factor) and their exact partials; shared by the inflow
+  solve (``pitt_peters_inflow.py``) and the loads component here;
+- :class:`PittPetersLoadsComp`, the sectional loads over (r, psi) and the hub loads at the
+  converged inflow states.
+
+Disk frame and azimuth (the frame of ``hub_loads.rotor_frames`` and reference §8.1): n is the
+thrust axis, e_y the body y axis projected on the disk, e_x = n x e_y; the rotor spins with
+angular velocity s Omega n (s = spin_direction). The azimuth psi_k = 2 pi k/N_psi of a blade is
+measured in the direction of rotation from the -e_x position, so the blade sits at
+r (-cos psi e_x + s sin psi e_y) and moves along t = sin psi e_x + s cos psi e_y. For a lift rotor
+in forward flight psi = 0 is the downstream (aft) blade and psi = 90 deg the advancing blade.
+
+Station equations (per blade, per unit span):
+
+- inflow (eq. 14): lambda = lambda_0 + (r/R)(lambda_c cos psi + lambda_s sin psi);
+- velocities: U_P = V_x + Omega R lambda (through the disk), U_T = Omega r + v_x sin psi
+  + s v_y cos psi (tangential; (V_x, v_x, v_y) = the hub's velocity relative to the air along
+  (n, e_x, e_y), so V_x > 0 is climb for a lift rotor); tangential induction neglected (§9.1);
+- phi = atan2(U_P, U_T) (four-quadrant: reverse flow on the retreating side is included; the
+  polar covers -pi..pi), alpha = twist - phi;
+- Reynolds and Mach numbers from the undisturbed resultant U = sqrt(V_x^2 + U_T^2), as the BEM
+  (§8.1): Re = rho U c/mu, M = U/a;
+- C_x = C_l cos phi - C_d sin phi, C_theta = C_l sin phi + C_d cos phi;
+- thrust_per_span t = (rho/2)(U_P^2 + U_T^2) c C_x F_l and drag_per_span
+  d = (rho/2)(U_P^2 + U_T^2) c C_theta F_l (drag opposes the rotation; dQ/dr = B r d), where
+  F_l = F (Prandtl tip and hub loss, §8.2 classical form) with the default
+  loss_placement='blade_element' (reference §9.1 item 3) and F_l = 1 with
+  loss_placement='momentum' (F then scales the momentum side of the inflow equation; see
+  ``pitt_peters_inflow.py``).
+
+Integrals (reference §8.3 rule, (1/N_psi) sum over the azimuth, dr_i = station_width):
+
+- thrust T = (B/N_psi) sum dr t; torque Q = (B/N_psi) sum dr r d;
+- moments M_c = (B/N_psi) sum dr r cos psi t and M_s = (B/N_psi) sum dr r sin psi t (the
+  forcing of the cosine and sine inflow states, eq. 15);
+- hub moment about (e_x, e_y): (-s M_s, -M_c); in-plane hub force along (e_x, e_y):
+  (-(B/N_psi) sum dr sin psi d, -s (B/N_psi) sum dr cos psi d);
+- Prandtl area factor F_A = (2/(N_psi R^2)) sum dr r F (the loss-weighted disk area over pi R^2).
+"""
+
+from types import SimpleNamespace
+
+import numpy as np
+import openmdao.api as om
+
+from lpc_mdo.components.aero.polar import LinearQuadraticPolar, Polar
+from lpc_mdo.components.geometry.blade import azimuth_angles, per_rotor
+
+#: Where Prandtl's loss factor acts: on the momentum (inflow) side or on the blade loads.
+LOSS_PLACEMENTS = ('momentum', 'blade_element')
+
+RPM_TO_RAD_S = np.pi / 30.0
+_TWO_OVER_PI = 2.0 / np.pi
+_ABS_SIN_FLOOR = 1.0e-9  # |sin phi| floor in the Prandtl exponent (F = 1 to all digits there)
+
+#: Inputs: name -> (kind, units, default, description). Kinds: 'op' (num_rotors, num_nodes),
+#: 'rotor' (num_rotors,), 'radial' (num_rotors, num_radial), 'node' (num_nodes,).
+PITT_PETERS_INPUTS = {
+    'rpm': ('op', 'rpm', 1000.0, 'Rotor speed'),
+    'axial_velocity': ('op', 'm/s', 0.0,
+                       'Velocity of the hub relative to the air along the thrust axis (> 0: '
+                       'flow through the disk as in climb)'),
+    'inplane_velocity': ('op2', 'm/s', 0.0,
+                         'Velocity of the hub relative to the air along the disk e_x and e_y'),
+    'radius': ('rotor', 'm', 1.0, 'Rotor tip radius'),
+    'hub_radius': ('rotor', 'm', 0.2, 'Hub radius'),
+    'station_radius': ('radial', 'm', None, 'Radius of the blade-element centres'),
+    'station_width': ('radial', 'm', None, 'Radial quadrature width of each blade element'),
+    'chord': ('radial', 'm', 0.1, 'Blade chord at the stations'),
+    'twist': ('radial', 'rad', 0.2, 'Blade pitch relative to the rotor plane at the stations'),
+    'density': ('node', 'kg/m**3', 1.225, 'Air density'),
+    'speed_of_sound': ('node', 'm/s', 340.294, 'Speed of sound'),
+    'dynamic_viscosity': ('node', 'Pa*s', 1.7894e-5, 'Dynamic viscosity of air'),
+}
+
+#: Per-operating-point vector inputs (and the states) and their sizes.
+_OP_VECTOR = {'inflow_states': 3, 'inplane_velocity': 2}
+
+
+def declare_pitt_peters_options(options):
+    """Declare the options shared by the Pitt–Peters components (and the rotor group)."""
+    options.declare('num_rotors', default=1, types=int, lower=1, desc='Number of rotors')
+    options.declare('num_nodes', default=1, types=int, lower=1,
+                    desc='Number of operating points (flight conditions) per rotor')
+    options.declare('num_radial', default=25, types=int, lower=1,
+                    desc='Number of radial stations per blade')
+    options.declare('num_azimuth', default=25, types=int, lower=3,
+                    desc='Number of equally spaced azimuthal stations (>= 3, so that the first '
+                         'harmonics of the loading are resolved)')
+    options.declare('num_blades', default=2, types=(int, list, tuple, np.ndarray),
+                    desc='Blades per rotor: one int for all rotors or one per rotor')
+    options.declare('spin_direction', default=1, types=(int, list, tuple, np.ndarray),
+                    desc='+1 (right-handed about the thrust axis) or -1, one for all or per rotor')
+    options.declare('polar', default=LinearQuadraticPolar(), types=Polar,
+                    desc='Sectional airfoil polar (lpc_mdo.components.aero.polar.Polar)')
+    options.declare('tip_loss', default=True, types=bool, desc="Apply Prandtl's tip loss")
+    options.declare('hub_loss', default=True, types=bool, desc="Apply Prandtl's hub loss")
+    options.declare('loss_placement', default='blade_element', values=LOSS_PLACEMENTS,
+                    desc="Prandtl factor on the blade-element loads ('blade_element', reference "
+                         "§9.1) or on the momentum side of the inflow equation ('momentum')")
+
+
+def input_shape(kind, nr, nn, nrad):
+    """Shape of a Pitt–Peters input of the given kind."""
+    return {'op': (nr, nn), 'op2': (nr, nn, 2), 'rotor': (nr,), 'radial': (nr, nrad),
+            'node': (nn,)}[kind]
+
+
+def add_pitt_peters_inputs(comp, nr, nn, nrad):
+    """Add the inputs of :data:`PITT_PETERS_INPUTS` to a component."""
+    eta = (np.arange(nrad) + 0.5) / nrad
+    defaults = {'station_radius': np.tile(0.2 + 0.8 * eta, (nr, 1)),
+                'station_width': np.full((nr, nrad), 0.8 / nrad)}
+    for name, (kind, units, default, desc) in PITT_PETERS_INPUTS.items():
+        shape = input_shape(kind, nr, nn, nrad)
+        val = defaults[name] if default is None else np.full(shape, default)
+        comp.add_input(name, val=val, units=units, desc=desc)
+
+
+def check_pitt_peters_inputs(comp, inputs, hub_loss):
+    """
+    Check the physical range of the inputs (real parts); raise om.AnalysisError naming the
+    field, the offending values and the allowed range (values may come from an optimizer).
+    """
+    def fail(name, values, allowed):
+        raise om.AnalysisError(f"{comp.msginfo}: input '{name}' = {np.asarray(values).tolist()} "
+                               f"is outside the allowed range {allowed}.")
+
+    for name in PITT_PETERS_INPUTS:
+        value = np.real(inputs[name])
+        if not np.all(np.isfinite(value)):
+            fail(name, value[~np.isfinite(value)], '(finite values)')
+    for name in ('rpm', 'radius', 'chord', 'station_width', 'density', 'speed_of_sound',
+                 'dynamic_viscosity'):
+        value = np.real(inputs[name])
+        if np.any(value <= 0.0):
+            fail(name, value[value <= 0.0], '(0, inf)')
+    rh, big_r = np.real(inputs['hub_radius']), np.real(inputs['radius'])
+    bad = ((rh <= 0.0) if hub_loss else (rh < 0.0)) | (rh >= big_r)
+    if np.any(bad):
+        fail('hub_radius', rh[bad], '(0, radius)' if hub_loss else '[0, radius)')
+    r = np.real(inputs['station_radius'])
+    bad = (r <= rh[:, None]) | (r >= big_r[:, None])
+    if np.any(bad):
+        rotors = np.flatnonzero(np.any(bad, axis=1))
+        fail('station_radius', r[bad], f"(hub_radius, radius) (rotors {rotors.tolist()})")
+
+
+def atan2_cs(y, x):
+    """arctan2(y, x), complex-step safe (the imaginary part carries the first derivative)."""
+    if np.iscomplexobj(y) or np.iscomplexobj(x):
+        yr, xr = np.real(y), np.real(x)
+        return np.arctan2(yr, xr) + 1j * (xr * np.imag(y) - yr * np.imag(x)) / (xr**2 + yr**2)
+    return np.arctan2(y, x)
+
+
+def rotor_blade_options(comp):
+    """Blade counts and spin directions (num_rotors,) of a component's options, checked."""
+    nr = comp.options['num_rotors']
+    blades = per_rotor(comp.options['num_blades'], nr, 'num_blades', kind=int, lower=1,
+                       owner=comp.msginfo)
+    spin = per_rotor(comp.options['spin_direction'], nr, 'spin_direction', kind=int, lower=-1,
+                     upper=1, owner=comp.msginfo)
+    if np.any(spin == 0):
+        raise ValueError(f"{comp.msginfo}: option 'spin_direction' = {spin.tolist()}; allowed "
+                         "values: +1 or -1.")
+    return blades.astype(float), spin.astype(float)
+
+
+class PittPetersBladeElements:
+    """
+    Blade-element field of several rotors at several operating points (module docstring).
+
+    Arrays have the station shape (num_rotors, num_nodes, num_radial, num_azimuth). The partials
+    are hand-derived (forward chain rule) and exact; everything is complex-step safe.
+
+    Parameters
+    ----------
+    shape : tuple of int
+        (num_rotors, num_nodes, num_radial, num_azimuth).
+    blades, spin : ndarray, (num_rotors,)
+        Blade counts and spin directions (+1 or -1).
+    polar : Polar
+        Sectional polar.
+    tip_loss, hub_loss : bool
+        Prandtl tip and hub losses.
+    loss_placement : str
+        'momentum' or 'blade_element'.
+    owner : str
+        Prefix of error messages.
+    """
+
+    #: Integrals: name -> (field, radius power, azimuth factor, times B).
+    INTEGRALS = {
+        'thrust': ('t', 0, None, True),
+        'moment_cos': ('t', 1, 'cos', True),
+        'moment_sin': ('t', 1, 'sin', True),
+        'torque': ('d', 1, None, True),
+        'drag_sin': ('d', 0, 'sin', True),
+        'drag_cos': ('d', 0, 'cos', True),
+        'loss_area': ('F', 1, None, False),
+    }
+
+    def __init__(self, shape, blades, spin, polar, tip_loss, hub_loss, loss_placement,
+                 owner=''):
+        nr, nn, nrad, naz = shape
+        self.shape = shape
+        self.polar = polar
+        self.tip_loss, self.hub_loss = tip_loss, hub_loss
+        self.loads_have_loss = loss_placement == 'blade_element' and (tip_loss or hub_loss)
+        self.owner = owner
+        psi = azimuth_angles(naz)
+        self.cos = np.cos(psi)[None, None, None, :]
+        self.sin = np.sin(psi)[None, None, None, :]
+        self.half_b = 0.5 * blades[:, None, None, None]
+        self.spin = spin
+        self.spin4 = spin[:, None, None, None]
+        # Integral prefactor B/N_psi (or 1/N_psi without B), shape (nr, 1, 1).
+        self.b_fac = (blades / naz)[:, None, None]
+        self.one_fac = np.full((nr, 1, 1), 1.0 / naz)
+
+    # ---------------------------------------------------------------- station values
+    def evaluate(self, x, states, partials=False):
+        """
+        Station field for inputs ``x`` (name -> array) and inflow states (nr, nn, 3).
+
+        Returns a namespace with the fields t, d, phi, F (station shape) and, with ``partials``,
+        their partials with respect to the station primitives (dicts ``dt``, ``dd``, ``dphi``,
+        ``dF``; keys 'up', 'ut', 'vx', 'theta', 'chord', 'r', 'radius', 'hub_radius',
+        'density', 'dynamic_viscosity', 'speed_of_sound').
+        """
+        st = SimpleNamespace()
+        big_r = x['radius'][:, None, None, None]
+        rh = x['hub_radius'][:, None, None, None]
+        r = x['station_radius'][:, None, :, None]
+        chord = x['chord'][:, None, :, None]
+        theta = x['twist'][:, None, :, None]
+        rho = x['density'][None, :, None, None]
+        mu = x['dynamic_viscosity'][None, :, None, None]
+        a = x['speed_of_sound'][None, :, None, None]
+        omega = (RPM_TO_RAD_S * x['rpm'])[:, :, None, None]
+        v_ax = x['axial_velocity'][:, :, None, None]
+        v_ip = x['inplane_velocity']
+        lam0, lam_c, lam_s = (states[..., k][:, :, None, None] for k in range(3))
+        g = lam_c * self.cos + lam_s * self.sin
+
+        up = v_ax + omega * big_r * lam0 + omega * r * g
+        ut = (omega * r + v_ip[..., 0][:, :, None, None] * self.sin
+              + (self.spin[:, None] * v_ip[..., 1])[:, :, None, None] * self.cos)
+        w2 = up * up + ut * ut
+        u = np.sqrt(v_ax * v_ax + ut * ut)
+        if np.any(np.real(w2) <= 0.0) or np.any(np.real(u) <= 0.0):
+            raise om.AnalysisError(f"{self.owner}: zero relative velocity at a blade station "
+                                   "(U_P = U_T = 0); the blade-element model is undefined there.")
+        phi = atan2_cs(up, ut)
+        re = rho * u * chord / mu
+        mach = u / a
+        pv = self.polar.evaluate(theta - phi, re, mach)
+        cphi, sphi = np.cos(phi), np.sin(phi)
+        cx = pv.cl * cphi - pv.cd * sphi
+        ct = pv.cl * sphi + pv.cd * cphi
+        q = 0.5 * rho * w2 * chord
+        big_f, df = self._loss(phi, r, big_r, rh, partials)
+        f_l = big_f if self.loads_have_loss else 1.0
+        st.t = q * cx * f_l
+        st.d = q * ct * f_l
+        st.phi = phi
+        st.F = big_f
+        st.r = r
+        st.width = x['station_width'][:, None, :, None]
+        st.omega, st.big_r, st.lam0, st.g = omega, big_r, lam0, g
+        if not partials:
+            return st
+
+        # Partials with respect to the primitives (U_P, U_T, V_x via U only, and the rest).
+        ptd = {'up': ut / w2, 'ut': -up / w2}             # dphi/dU_P, dphi/dU_T
+        st.dphi = ptd
+        for name, coeff, c_a, c_re, c_m, geo in (
+                ('dt', cx, pv.dcl_dalpha * cphi - pv.dcd_dalpha * sphi,
+                 pv.dcl_dreynolds * cphi - pv.dcd_dreynolds * sphi,
+                 pv.dcl_dmach * cphi - pv.dcd_dmach * sphi, -ct),
+                ('dd', ct, pv.dcl_dalpha * sphi + pv.dcd_dalpha * cphi,
+                 pv.dcl_dreynolds * sphi + pv.dcd_dreynolds * cphi,
+                 pv.dcl_dmach * sphi + pv.dcd_dmach * cphi, cx)):
+            field = q * coeff * f_l
+            base = q * f_l
+            f_phi = base * (geo - c_a)
+            if self.loads_have_loss:
+                f_phi = f_phi + q * coeff * df['phi']
+            f_u = base * (c_re * re + c_m * mach) / u   # through Re and M
+            p = {'up': 2.0 * up / w2 * field + f_phi * ptd['up'],
+                 'ut': 2.0 * ut / w2 * field + f_phi * ptd['ut'] + f_u * ut / u,
+                 'vx': f_u * v_ax / u,
+                 'theta': base * c_a,
+                 'chord': field / chord + base * c_re * re / chord,
+                 'density': field / rho + base * c_re * re / rho,
+                 'dynamic_viscosity': -base * c_re * re / mu,
+                 'speed_of_sound': -base * c_m * mach / a}
+            if self.loads_have_loss:
+                for key in ('r', 'radius', 'hub_radius'):
+                    p[key] = q * coeff * df[key]
+            setattr(st, name, p)
+        st.dF = {'up': df['phi'] * ptd['up'], 'ut': df['phi'] * ptd['ut'], 'r': df['r'],
+                 'radius': df['radius'], 'hub_radius': df['hub_radius']}
+        return st
+
+    def _loss(self, phi, r, big_r, rh, partials):
+        """Prandtl factor F = F_tip F_hub (§8.2, classical) and its partials."""
+        ones = np.ones(np.broadcast_shapes(phi.shape, r.shape), dtype=phi.dtype)
+        zero = np.zeros(ones.shape)
+        d = {'phi': zero, 'r': zero, 'radius': zero, 'hub_radius': zero}
+        if not (self.tip_loss or self.hub_loss):
+            return ones, d
+        s = np.sin(phi)
+        sgn = np.sign(np.real(s))
+        abs_s = s * sgn
+        floored = np.real(abs_s) < _ABS_SIN_FLOOR
+        abs_s = np.where(floored, _ABS_SIN_FLOOR, abs_s)
+        factors = []
+        if self.tip_loss:
+            k = self.half_b * (big_r - r) / r
+            factors.append(('tip', k))
+        if self.hub_loss:
+            k = self.half_b * (r - rh) / rh
+            factors.append(('hub', k))
+        values, slopes = [], []
+        for _, k in factors:
+            f = k / abs_s
+            e = np.exp(-f)
+            values.append(_TWO_OVER_PI * np.arccos(e))
+            one_minus = np.where(np.real(e) < 1.0 - 1e-15, 1.0 - e * e, 2e-15)
+            slopes.append((f, _TWO_OVER_PI * e / np.sqrt(one_minus)))  # dF_x/df
+        big_f = ones
+        for v in values:
+            big_f = big_f * v
+        if not partials:
+            return big_f, d
+        # d|sin phi|/dphi / |sin phi| = cos(phi)/sin(phi) (0 where floored: f is constant there)
+        with np.errstate(divide='ignore', invalid='ignore'):
+            cot = np.where(floored, 0.0, np.cos(phi) / np.where(floored, 1.0, s))
+        d_phi, d_r, d_big_r, d_rh = zero, zero, zero, zero
+        for idx, ((kind, _), (f, slope)) in enumerate(zip(factors, slopes, strict=True)):
+            other = values[1 - idx] if len(values) == 2 else 1.0
+            scale = other * slope
+            d_phi = d_phi - scale * f * cot
+            if kind == 'tip':
+                d_r = d_r - scale * self.half_b * big_r / (r * r * abs_s)
+                d_big_r = d_big_r + scale * self.half_b / (r * abs_s)
+            else:
+                d_r = d_r + scale * self.half_b / (rh * abs_s)
+                d_rh = d_rh - scale * self.half_b * r / (rh * rh * abs_s)
+        d = {'phi': d_phi, 'r': d_r, 'radius': d_big_r, 'hub_radius': d_rh}
+        return big_f, d
+
+    # ---------------------------------------------------------------- chain rule to the inputs
+    def chain(self, st, p, keys):
+        """
+        Partials of a station field with respect to the component inputs (and inflow states).
+
+        ``p`` holds the primitive partials (from :meth:`evaluate`); returns name -> array of the
+        station shape, with a trailing axis of 3 ('inflow_states') or 2 ('inplane_velocity').
+        """
+        shape = self.shape
+        zero = np.zeros(shape)
+        f_up, f_ut = p['up'], p['ut']
+        out = {}
+        for key in keys:
+            if key == 'inflow_states':
+                out[key] = np.stack([f_up * st.omega * st.big_r, f_up * st.omega * st.r * self.cos,
+                                     f_up * st.omega * st.r * self.sin], axis=-1)
+            elif key == 'rpm':
+                out[key] = RPM_TO_RAD_S * (f_up * (st.big_r * st.lam0 + st.r * st.g) + f_ut * st.r)
+            elif key == 'axial_velocity':
+                out[key] = f_up + p.get('vx', zero)
+            elif key == 'inplane_velocity':
+                out[key] = np.stack([f_ut * self.sin, f_ut * self.spin4 * self.cos], axis=-1)
+            elif key == 'radius':
+                out[key] = f_up * st.omega * st.lam0 + p.get('radius', zero)
+            elif key == 'station_radius':
+                out[key] = f_up * st.omega * st.g + f_ut * st.omega + p.get('r', zero)
+            elif key == 'twist':
+                out[key] = p.get('theta', zero)
+            else:   # hub_radius, chord, density, dynamic_viscosity, speed_of_sound
+                out[key] = p.get(key, zero)
+            out[key] = np.broadcast_to(out[key], shape + out[key].shape[4:])
+        return out
+
+    # ---------------------------------------------------------------- integrals
+    def _weight(self, st, name):
+        _, power, trig, _ = self.INTEGRALS[name]
+        m = 1.0 if trig is None else (self.cos if trig == 'cos' else self.sin)
+        return (st.r * m if power else m), (m if power else None)
+
+    def _factor(self, name):
+        return self.b_fac if self.INTEGRALS[name][3] else self.one_fac
+
+    def integrate(self, st, name):
+        """Integral ``name`` of :attr:`INTEGRALS`, shape (num_rotors, num_nodes)."""
+        field = getattr(st, self.INTEGRALS[name][0])
+        m, _ = self._weight(st, name)
+        return self._factor(name)[..., 0] * np.sum(st.width * m * field, axis=(2, 3))
+
+    def integrate_partials(self, st, name, chained):
+        """
+        Partials of integral ``name`` with respect to the inputs in ``chained`` (the field's
+        :meth:`chain` output) plus station_radius and station_width (through the quadrature).
+
+        Returns name -> array (nr, nn) for per-op, per-rotor and per-node inputs, (nr, nn, k) for
+        inflow_states and inplane_velocity, (nr, nn, num_radial) for per-station inputs.
+        """
+        field = getattr(st, self.INTEGRALS[name][0])
+        m, dm_dr = self._weight(st, name)
+        fac = self._factor(name)
+        wm = st.width * m
+        out = {}
+        for key, val in chained.items():
+            kind = PITT_PETERS_INPUTS[key][0] if key in PITT_PETERS_INPUTS else 'op'
+            if key in _OP_VECTOR:
+                out[key] = fac * np.sum(wm[..., None] * val, axis=(2, 3))
+            elif kind == 'radial':
+                out[key] = fac * np.sum(wm * val, axis=3)
+            else:
+                out[key] = fac[..., 0] * np.sum(wm * val, axis=(2, 3))
+        out['station_width'] = fac * np.sum(np.broadcast_to(m * field, self.shape), axis=3)
+        if dm_dr is not None:
+            extra = fac * np.sum(np.broadcast_to(st.width * dm_dr * field, self.shape), axis=3)
+            out['station_radius'] = out.get('station_radius', 0.0) + extra
+        return out
+
+
+class SparsityPatterns:
+    """
+    Row and column indices of the partials of the Pitt–Peters components.
+
+    Outputs are either per station (num_rotors, num_nodes, num_radial, num_azimuth) or per
+    operating point with ``k`` components (num_rotors, num_nodes, k). The value arrays of
+    ``compute_partials`` / ``linearize`` follow the order of these patterns:
+
+    - station output wrt an op input of size m: (nr, nn, nrad, naz, m);
+    - station output wrt a rotor, radial or node input: (nr, nn, nrad, naz);
+    - op output (k) wrt an op input of size m: (nr, nn, k, m);
+    - op output wrt a rotor or node input: (nr, nn, k); wrt a radial input: (nr, nn, k, nrad).
+    """
+
+    def __init__(self, nr, nn, nrad, naz):
+        self.nr, self.nn, self.nrad, self.naz = nr, nn, nrad, naz
+        j, n, i, _ = np.meshgrid(np.arange(nr), np.arange(nn), np.arange(nrad), np.arange(naz),
+                                 indexing='ij')
+        self._station = {'op': (j * nn + n).ravel(), 'rotor': j.ravel(),
+                         'radial': (j * nrad + i).ravel(), 'node': n.ravel()}
+
+    def station(self, kind, m=1):
+        """Rows and columns of a station output wrt an input of the given kind."""
+        base = self._station['op' if kind in ('op', 'op2') else kind]
+        size = base.size
+        if kind in ('op', 'op2') and m > 1:
+            rows = np.repeat(np.arange(size), m)
+            cols = (base[:, None] * m + np.arange(m)).ravel()
+            return rows, cols
+        return np.arange(size), base
+
+    def op(self, k, kind, m=1):
+        """Rows and columns of an op output with k components wrt an input of the given kind."""
+        nr, nn, nrad = self.nr, self.nn, self.nrad
+        o = np.arange(nr * nn)
+        rotor, node = o // nn, o % nn
+        if kind in ('op', 'op2'):
+            oo, a, b = np.meshgrid(o, np.arange(k), np.arange(m), indexing='ij')
+            return (oo * k + a).ravel(), (oo * m + b).ravel()
+        if kind == 'radial':
+            oo, a, i = np.meshgrid(o, np.arange(k), np.arange(nrad), indexing='ij')
+            return (oo * k + a).ravel(), (rotor[oo] * nrad + i).ravel()
+        rows = np.arange(nr * nn * k)
+        col = rotor if kind == 'rotor' else node
+        return rows, np.repeat(col, k)
+
+
+def input_kind(name):
+    """Kind of an input or of the inflow states ('op' with 3 components)."""
+    return 'op' if name == 'inflow_states' else PITT_PETERS_INPUTS[name][0]
+
+
+def input_size(name):
+    """Per-op size of an op input (3 for the states, 2 for inplane_velocity, else 1)."""
+    return _OP_VECTOR.get(name, 1)
+
+
+class PittPetersLoadsComp(om.ExplicitComponent):
+    """
+    Sectional loads over (r, psi) and hub loads of the steady Pitt–Peters rotor model.
+
+    reference/models_aero_rotor_acoustics.md §9.1 items 1-3 and 9, paper eq. 14, at the inflow
+    states solved by :class:`~lpc_mdo.components.rotor.pitt_peters_inflow.PittPetersInflowComp`
+    (equations in the module docstring). The sectional loads over (r, psi) are what the tonal
+    acoustics needs for the Fourier content of the azimuthal loading
+    (:class:`~lpc_mdo.components.acoustics.loads.LoadFourierComp`, same azimuths
+    psi_k = 2 pi k/N_psi). Analytic sparse partials.
+
+    Inputs
+    ------
+    inflow_states : float, (num_rotors, num_nodes, 3), -
+        (lambda_0, lambda_c, lambda_s), inflow normalised by Omega R.
+    rpm : float, (num_rotors, num_nodes), rpm
+        Rotor speed.
+    axial_velocity : float, (num_rotors, num_nodes), m/s
+        Hub velocity relative to the air along the thrust axis (> 0: climb for a lift rotor).
+    inplane_velocity : float, (num_rotors, num_nodes, 2), m/s
+        Hub velocity relative to the air along the disk e_x and e_y (RotorVelocityComp).
+    radius, hub_radius : float, (num_rotors,), m
+        Tip and hub radius.
+    station_radius, station_width : float, (num_rotors, num_radial), m
+        Element-centre radii and quadrature widths (BladeStationsComp).
+    chord : float, (num_rotors, num_radial), m
+        Blade chord at the stations.
+    twist : float, (num_rotors, num_radial), rad
+        Blade pitch relative to the rotor plane at the stations.
+    density, speed_of_sound, dynamic_viscosity : float, (num_nodes,), kg/m**3, m/s, Pa*s
+        Atmosphere.
+
+    Outputs
+    -------
+    thrust_per_span : float, (num_rotors, num_nodes, num_radial, num_azimuth), N/m
+        Sectional thrust of one blade per unit span at each azimuth.
+    drag_per_span : float, (num_rotors, num_nodes, num_radial, num_azimuth), N/m
+        Sectional in-plane drag of one blade per unit span (opposing the rotation; dQ/dr/(B r)).
+    inflow_angle : float, (num_rotors, num_nodes, num_radial, num_azimuth), rad
+        phi = atan2(U_P, U_T).
+    thrust : float, (num_rotors, num_nodes), N
+        Rotor thrust along the thrust axis.
+    torque : float, (num_rotors, num_nodes), N*m
+        Shaft torque the rotor needs (power = Omega torque, RotorPerformanceComp).
+    inplane_force : float, (num_rotors, num_nodes, 2), N
+        In-plane hub force along the disk e_x and e_y (signed components, HubLoadsComp
+        convention: the H-force against an edgewise velocity along +e_x is negative).
+    hub_moment : float, (num_rotors, num_nodes, 2), N*m
+        Hub moment about the disk e_x and e_y (rolling and pitching moments of a lift rotor).
+
+    Options
+    -------
+    num_rotors, num_nodes, num_radial : int
+        Array sizes (>= 1). Defaults 1, 1, 25.
+    num_azimuth : int
+        Azimuthal stations psi_k = 2 pi k/N_psi (>= 3). Default 25.
+    num_blades : int or sequence of int
+        Blades per rotor (one for all or one per rotor). Default 2.
+    spin_direction : int or sequence of int
+        +1 (rotation right-handed about the thrust axis) or -1. Default +1.
+    polar : Polar
+        Sectional polar. Default LinearQuadraticPolar() (reference §6.4).
+    tip_loss, hub_loss : bool
+        Prandtl losses (default True).
+    loss_placement : str
+        'blade_element' (default, reference §9.1 item 3: the loads are multiplied by F) or
+        'momentum' (F acts on the inflow equation, the loads carry no F).
+    """
+
+    def initialize(self):
+        declare_pitt_peters_options(self.options)
+
+    def setup(self):
+        opts = self.options
+        nr, nn = opts['num_rotors'], opts['num_nodes']
+        nrad, naz = opts['num_radial'], opts['num_azimuth']
+        blades, spin = rotor_blade_options(self)
+        self._field = PittPetersBladeElements(
+            (nr, nn, nrad, naz), blades, spin, opts['polar'], opts['tip_loss'], opts['hub_loss'],
+            opts['loss_placement'], owner=self.msginfo)
+        add_pitt_peters_inputs(self, nr, nn, nrad)
+        self.add_input('inflow_states', val=np.tile([0.05, 0.0, 0.0], (nr, nn, 1)), units=None,
+                       desc='Inflow states (lambda_0, lambda_c, lambda_s) over Omega R')
+
+        shape = (nr, nn, nrad, naz)
+        self.add_output('thrust_per_span', val=np.zeros(shape), units='N/m',
+                        desc='Sectional thrust of one blade per unit span over (r, psi)')
+        self.add_output('drag_per_span', val=np.zeros(shape), units='N/m',
+                        desc='Sectional in-plane drag of one blade per unit span over (r, psi)')
+        self.add_output('inflow_angle', val=np.zeros(shape), units='rad',
+                        desc='Inflow angle atan2(U_P, U_T) over (r, psi)')
+        self.add_output('thrust', val=np.zeros((nr, nn)), units='N', desc='Rotor thrust')
+        self.add_output('torque', val=np.zeros((nr, nn)), units='N*m',
+                        desc='Rotor (shaft) torque')
+        self.add_output('inplane_force', val=np.zeros((nr, nn, 2)), units='N',
+                        desc='In-plane hub force along the disk e_x and e_y')
+        self.add_output('hub_moment', val=np.zeros((nr, nn, 2)), units='N*m',
+                        desc='Hub moment about the disk e_x and e_y')
+
+        pat = SparsityPatterns(nr, nn, nrad, naz)
+        wrt = ['inflow_states', 'rpm', 'axial_velocity', 'inplane_velocity', 'station_radius',
+               'chord', 'twist', 'density', 'dynamic_viscosity', 'speed_of_sound', 'radius']
+        if self._field.loads_have_loss and opts['hub_loss']:
+            wrt.append('hub_radius')
+        self._wrt = wrt
+        self._phi_wrt = ['inflow_states', 'rpm', 'axial_velocity', 'inplane_velocity',
+                         'station_radius', 'radius']
+        for name in wrt:
+            kind, m = input_kind(name), input_size(name)
+            rows, cols = pat.station(kind, m)
+            self.declare_partials(['thrust_per_span', 'drag_per_span'], name, rows=rows,
+                                  cols=cols)
+            if name in self._phi_wrt:
+                self.declare_partials('inflow_angle', name, rows=rows, cols=cols)
+            for out, k in (('thrust', 1), ('torque', 1), ('inplane_force', 2), ('hub_moment', 2)):
+                rows, cols = pat.op(k, kind, m)
+                self.declare_partials(out, name, rows=rows, cols=cols)
+        for out, k in (('thrust', 1), ('torque', 1), ('inplane_force', 2), ('hub_moment', 2)):
+            rows, cols = pat.op(k, 'radial')
+            self.declare_partials(out, 'station_width', rows=rows, cols=cols)
+
+    def _values(self, inputs):
+        check_pitt_peters_inputs(self, inputs, self.options['hub_loss'])
+        return {name: inputs[name] for name in PITT_PETERS_INPUTS}
+
+    def compute(self, inputs, outputs):
+        fld = self._field
+        st = fld.evaluate(self._values(inputs), inputs['inflow_states'])
+        outputs['thrust_per_span'] = st.t
+        outputs['drag_per_span'] = st.d
+        outputs['inflow_angle'] = st.phi
+        ints = {name: fld.integrate(st, name) for name in
+                ('thrust', 'torque', 'moment_cos', 'moment_sin', 'drag_sin', 'drag_cos')}
+        outputs['thrust'] = ints['thrust']
+        outputs['torque'] = ints['torque']
+        spin = fld.spin[:, None]
+        outputs['inplane_force'] = np.stack([-ints['drag_sin'], -spin * ints['drag_cos']], -1)
+        outputs['hub_moment'] = np.stack([-spin * ints['moment_sin'], -ints['moment_cos']], -1)
+
+    def compute_partials(self, inputs, partials):
+        fld = self._field
+        st = fld.evaluate(self._values(inputs), inputs['inflow_states'], partials=True)
+        keys = self._wrt
+        dt = fld.chain(st, st.dt, keys)
+        dd = fld.chain(st, st.dd, keys)
+        dphi = fld.chain(st, st.dphi, self._phi_wrt)
+        for name in keys:
+            partials['thrust_per_span', name] = dt[name].ravel()
+            partials['drag_per_span', name] = dd[name].ravel()
+            if name in self._phi_wrt:
+                partials['inflow_angle', name] = dphi[name].ravel()
+
+        spin = fld.spin[:, None]
+        ints = {}
+        for name, chained in (('thrust', dt), ('moment_cos', dt), ('moment_sin', dt),
+                              ('torque', dd), ('drag_sin', dd), ('drag_cos', dd)):
+            ints[name] = fld.integrate_partials(st, name, chained)
+        comps = {'thrust': [(ints['thrust'], 1.0)], 'torque': [(ints['torque'], 1.0)],
+                 'inplane_force': [(ints['drag_sin'], -1.0), (ints['drag_cos'], -spin)],
+                 'hub_moment': [(ints['moment_sin'], -spin), (ints['moment_cos'], -1.0)]}
+        for out, parts in comps.items():
+            for name in keys + ['station_width']:
+                if name not in parts[0][0]:
+                    continue
+                vals = []
+                for d, sign in parts:
+                    v = d[name]
+                    sgn = np.reshape(sign, np.shape(sign) + (1,) * (v.ndim - np.ndim(sign)))
+                    vals.append(sgn * v)
+                partials[out, name] = np.stack(vals, axis=2).ravel()

@@ -1,0 +1,193 @@
+"""Pitt–Peters rotor assembly: blade geometry, inflow states, loads, performance and hub loads."""
+
+import numpy as np
+import openmdao.api as om
+
+from lpc_mdo.components.aero.polar import LinearQuadraticPolar, Polar
+from lpc_mdo.components.geometry.blade import QUADRATURES, SPLINE_STATIONS, BladeGeometryGroup
+from lpc_mdo.components.rotor.bem_loads import RotorPerformanceComp
+from lpc_mdo.components.rotor.hub_loads import HubLoadsComp, RotorVelocityComp
+from lpc_mdo.components.rotor.pitt_peters_inflow import PittPetersInflowComp
+from lpc_mdo.components.rotor.pitt_peters_loads import LOSS_PLACEMENTS, PittPetersLoadsComp
+from lpc_mdo.groups.rotor import rotor_options
+
+# Options that the `rotors` option can supply, with their values without it.
+_ROTOR_DERIVED = {'num_rotors': 1, 'num_blades': 2, 'hub_radius_ratio': 0.2,
+                  'thrust_axis': None, 'spin_direction': 1}
+
+
+class PittPetersRotorGroup(om.Group):
+    """
+    Several rotors at several operating points by steady Pitt–Peters inflow (edgewise flight).
+
+    Paper eq. 14-15, reference/models_aero_rotor_acoustics.md §9. The same interface as
+    :class:`~lpc_mdo.groups.rotor.BEMRotorGroup`, so a condition group can use either. Subsystems
+    (all variables promoted):
+
+    - ``blade``: BladeGeometryGroup (stations, chord and twist B-splines; reference §7, §8.1);
+    - ``velocity``: RotorVelocityComp (body velocity to each disk's axial and in-plane
+      velocity), if ``body_frame``;
+    - ``inflow``: PittPetersInflowComp (the three inflow states per rotor and operating point,
+      L^-1 lambda - c = 0 by Newton);
+    - ``loads``: PittPetersLoadsComp (sectional loads over (r, psi), thrust, torque, in-plane hub
+      force, hub moments);
+    - ``performance``: RotorPerformanceComp (power, C_T, C_P, J, eta, FoM, tip Mach; §8.3, §9.1
+      item 9);
+    - ``hub_loads``: HubLoadsComp with the in-plane loads (body-frame forces and moments), if
+      ``body_frame``.
+
+    Solvers: the group is feed-forward (NonlinearRunOnce, LinearRunOnce). PittPetersInflowComp
+    solves itself in ``solve_nonlinear`` (Newton on 3x3 blocks) and inverts those blocks in
+    ``solve_linear``, so no DirectSolver is needed and a total derivative costs one pass.
+
+    Inputs (promoted)
+    -----------------
+    radius : (num_rotors,), m
+        Tip radius (design variable).
+    chord_cp, twist_cp : (num_rotors, num_cp), m and rad
+        Chord and twist control points, root to tip (design variables).
+    rpm : (num_rotors, num_nodes), rpm
+        Rotor speed.
+    velocity : (num_nodes, 3), m/s
+        Body-axis velocity of the vehicle relative to the air (u, v, w), if ``body_frame``;
+        otherwise the inputs are axial_velocity (num_rotors, num_nodes) and inplane_velocity
+        (num_rotors, num_nodes, 2), m/s.
+    density, speed_of_sound, dynamic_viscosity : (num_nodes,), kg/m**3, m/s, Pa*s
+        Atmosphere.
+    hub_position : (num_rotors, 3), m;  reference_point : (3,), m
+        If ``body_frame``.
+
+    Outputs (promoted)
+    ------------------
+    hub_radius, station_radius, station_width, chord, twist, azimuth
+        Blade geometry (BladeGeometryGroup).
+    axial_velocity, inplane_velocity
+        If ``body_frame`` (RotorVelocityComp).
+    inflow_states : (num_rotors, num_nodes, 3), -
+        (lambda_0, lambda_c, lambda_s).
+    thrust_per_span, drag_per_span, inflow_angle : (num_rotors, num_nodes, num_radial,
+    num_azimuth), N/m, N/m, rad
+        Sectional loads of one blade over (r, psi) (for the tonal acoustics).
+    thrust, torque : (num_rotors, num_nodes), N, N*m
+    inplane_force, hub_moment : (num_rotors, num_nodes, 2), N, N*m
+        In-plane hub force and hub moment along / about the disk e_x and e_y.
+    power, thrust_coefficient, power_coefficient, advance_ratio, efficiency, figure_of_merit,
+    tip_mach : (num_rotors, num_nodes)
+        RotorPerformanceComp.
+    force, moment : (num_rotors, num_nodes, 3); total_force, total_moment : (num_nodes, 3)
+        If ``body_frame`` (HubLoadsComp).
+
+    Options
+    -------
+    rotors : sequence of lpc_mdo.vehicle.Rotor or None
+        Supplies num_rotors, num_blades, hub_radius_ratio, thrust_axis and spin_direction
+        (leave those options at None) and the defaults of radius, chord_cp, twist_cp and
+        hub_position.
+    num_rotors, num_blades, hub_radius_ratio, thrust_axis, spin_direction
+        None: from ``rotors``, else 1, 2, 0.2, (0, 0, -1), +1.
+    num_nodes, num_radial, num_azimuth, num_cp : int
+        Operating points (1), radial stations (25), azimuthal stations (25), control points (4).
+    polar : Polar
+        Sectional polar. Default LinearQuadraticPolar() (reference §6.4).
+    tip_loss, hub_loss : bool
+        Prandtl losses (default True).
+    loss_placement : str
+        'blade_element' (default, reference §9.1) or 'momentum' (see PittPetersInflowComp).
+    quadrature, spline_stations : str
+        'midpoint', 'as_coded' (defaults; see BladeGeometryGroup).
+    body_frame : bool
+        Include RotorVelocityComp and HubLoadsComp (default True).
+    """
+
+    def initialize(self):
+        self.options.declare('rotors', default=None, types=(list, tuple), allow_none=True,
+                             desc='lpc_mdo.vehicle.Rotor objects supplying the rotor options')
+        self.options.declare('num_rotors', default=None, types=int, lower=1, allow_none=True,
+                             desc='Number of rotors (None: from rotors, else 1)')
+        self.options.declare('num_blades', default=None, allow_none=True,
+                             types=(int, list, tuple, np.ndarray),
+                             desc='Blades per rotor (None: from rotors, else 2)')
+        self.options.declare('hub_radius_ratio', default=None, allow_none=True,
+                             types=(int, float, list, tuple, np.ndarray),
+                             desc='Hub radius over tip radius (None: from rotors, else 0.2)')
+        self.options.declare('thrust_axis', default=None, allow_none=True,
+                             types=(list, tuple, np.ndarray),
+                             desc='Thrust axes (num_rotors, 3) (None: from rotors, else lift)')
+        self.options.declare('spin_direction', default=None, allow_none=True,
+                             types=(int, list, tuple, np.ndarray),
+                             desc='+1 or -1 per rotor (None: from rotors, else +1)')
+        self.options.declare('num_nodes', default=1, types=int, lower=1,
+                             desc='Number of operating points per rotor')
+        self.options.declare('num_radial', default=25, types=int, lower=1,
+                             desc='Number of radial stations')
+        self.options.declare('num_azimuth', default=25, types=int, lower=3,
+                             desc='Number of azimuthal stations (>= 3)')
+        self.options.declare('num_cp', default=4, types=int, lower=4,
+                             desc='Chord and twist control points per rotor')
+        self.options.declare('polar', default=LinearQuadraticPolar(), types=Polar,
+                             desc='Sectional airfoil polar')
+        self.options.declare('tip_loss', default=True, types=bool, desc='Prandtl tip loss')
+        self.options.declare('hub_loss', default=True, types=bool, desc='Prandtl hub loss')
+        self.options.declare('loss_placement', default='blade_element', values=LOSS_PLACEMENTS,
+                             desc="Prandtl factor on the momentum side or on the blade loads")
+        self.options.declare('quadrature', default='midpoint', values=QUADRATURES,
+                             desc="Radial quadrature ('bladead': §11 Q8 compatibility)")
+        self.options.declare('spline_stations', default='as_coded', values=SPLINE_STATIONS,
+                             desc='Where the chord and twist spline values are placed (§7)')
+        self.options.declare('body_frame', default=True, types=bool,
+                             desc='Include body-frame velocity and hub loads')
+
+    def _resolved(self):
+        opts = self.options
+        values = {name: opts[name] for name in _ROTOR_DERIVED}
+        if opts['rotors'] is not None:
+            given = [name for name, value in values.items() if value is not None]
+            if given:
+                raise ValueError(f"{self.msginfo}: options {given} must be left at None when "
+                                 "option 'rotors' is given (they are taken from the rotors).")
+            return rotor_options(opts['rotors'])
+        return {name: (_ROTOR_DERIVED[name] if value is None else value)
+                for name, value in values.items()}
+
+    def setup(self):
+        opts = self.options
+        geo = self._resolved()
+        nr, nn = geo['num_rotors'], opts['num_nodes']
+        pp = {'num_rotors': nr, 'num_nodes': nn, 'num_radial': opts['num_radial'],
+              'num_azimuth': opts['num_azimuth'], 'num_blades': geo['num_blades'],
+              'spin_direction': geo['spin_direction'], 'polar': opts['polar'],
+              'tip_loss': opts['tip_loss'], 'hub_loss': opts['hub_loss'],
+              'loss_placement': opts['loss_placement']}
+        frame = {'num_rotors': nr, 'num_nodes': nn, 'thrust_axis': geo['thrust_axis']}
+
+        self.add_subsystem('blade', BladeGeometryGroup(
+            num_rotors=nr, num_radial=opts['num_radial'], num_azimuth=opts['num_azimuth'],
+            num_cp=opts['num_cp'], hub_radius_ratio=geo['hub_radius_ratio'],
+            quadrature=opts['quadrature'], spline_stations=opts['spline_stations']),
+            promotes=['*'])
+        if opts['body_frame']:
+            self.add_subsystem('velocity', RotorVelocityComp(**frame), promotes=['*'])
+        self.add_subsystem('inflow', PittPetersInflowComp(**pp), promotes=['*'])
+        self.add_subsystem('loads', PittPetersLoadsComp(**pp), promotes=['*'])
+        self.add_subsystem('performance', RotorPerformanceComp(num_rotors=nr, num_nodes=nn),
+                           promotes=['*'])
+        if opts['body_frame']:
+            self.add_subsystem('hub_loads', HubLoadsComp(
+                spin_direction=geo['spin_direction'], inplane_loads=True, **frame),
+                promotes=['*'])
+
+        rotors = opts['rotors']
+        if rotors is not None:
+            if opts['num_cp'] != 4:
+                raise ValueError(f"{self.msginfo}: option 'num_cp' = {opts['num_cp']}; the "
+                                 "vehicle rotors have 4 chord and twist control points, so it "
+                                 "must be 4 when option 'rotors' is given.")
+            self.set_input_defaults('radius', np.array([r.radius for r in rotors]), units='m')
+            self.set_input_defaults('chord_cp', np.array([r.chord_cp for r in rotors]), units='m')
+            self.set_input_defaults('twist_cp', np.array([r.twist_cp for r in rotors]),
+                                    units='rad')
+            if opts['body_frame']:
+                self.set_input_defaults('hub_position',
+                                        np.array([r.hub_position for r in rotors]), units='m')
+        else:
+            self.set_input_defaults('radius', np.ones(nr), units='m')
