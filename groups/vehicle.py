@@ -5,6 +5,7 @@ import functools
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.components.geometry.planform import PlanformMeshComp
 from lpc_mdo.components.geometry.rotor_layout import RotorLayoutComp
 from lpc_mdo.components.geometry.surface_sizing import SurfaceSizingComp
 from lpc_mdo.components.geometry.tail_position import TailPositionComp
@@ -51,6 +52,8 @@ class VehicleGroup(om.Group):
       (outputs ``wing_span``, ``wing_root_chord``, ``wing_tip_chord``, ``wing_mac`` and the
       ``htail_`` equivalents);
     - ``tail_position`` (TailPositionComp): tail root leading edges follow the fuselage length;
+    - ``wing_mesh``, ``htail_mesh`` (PlanformMeshComp): VLM meshes ``wing_mesh`` and
+      ``horizontal_tail_mesh`` (cosine span-wise spacing, one chord-wise panel);
     - ``rotor_layout`` (RotorLayoutComp): hub positions, radii, radius intersection;
     - ``wing_box`` (WingBoxGeometryComp), ``box_section`` (BoxSectionComp), ``box_mass``
       (BeamMassComp), ``wing_mirror`` (WingMirrorComp): the beam of one half wing, its mass and
@@ -75,6 +78,10 @@ class VehicleGroup(om.Group):
                              desc="lpc_mdo.vehicle.Vehicle; None = reference vehicle")
         self.options.declare("other_mass", default=None, types=(int, float), allow_none=True,
                              desc="W_other (kg); None = calibrated to the target gross mass")
+        self.options.declare("wing_panels", default=26, types=int,
+                             desc="span-wise VLM panels of the wing (even; paper code 26)")
+        self.options.declare("tail_panels", default=8, types=int,
+                             desc="span-wise VLM panels of the horizontal tail (even; code 8)")
 
     def setup(self):
         vehicle = self.options["vehicle"] or reference_vehicle()
@@ -98,6 +105,19 @@ class VehicleGroup(om.Group):
                                              ("tip_chord", "htail_tip_chord"),
                                              ("mean_aerodynamic_chord", "htail_mac")])
         self.add_subsystem("tail_position", TailPositionComp(vehicle=vehicle), promotes=["*"])
+        for name, prefix, surface, panels in (("wing", "wing", wing, self.options["wing_panels"]),
+                                              ("horizontal_tail", "htail", tail,
+                                               self.options["tail_panels"])):
+            self.add_subsystem(f"{prefix}_mesh", PlanformMeshComp(
+                num_chord_panels=1, num_span_panels=panels, spacing="cosine"),
+                promotes_inputs=[(p, f"{prefix}_{p}") for p in (
+                    "span", "root_chord", "tip_chord", "sweep", "dihedral", "incidence",
+                    "root_leading_edge")],
+                promotes_outputs=[("mesh", f"{name}_mesh")])
+            for p in ("sweep", "dihedral", "incidence"):
+                self.set_input_defaults(f"{prefix}_{p}", getattr(surface, p), units="rad")
+        self.set_input_defaults("wing_root_leading_edge", np.array(wing.root_leading_edge),
+                                units="m")
         self.add_subsystem("rotor_layout", RotorLayoutComp(vehicle=vehicle), promotes=["*"])
 
         nodes = vehicle.wing_box.num_bays + 1
