@@ -1,0 +1,527 @@
+"""One-call report: every table and figure the case files support, linked from an index.md.
+
+:func:`write_report` reads case files only. The generic parts work for any OpenMDAO problem
+whose driver was recorded: optimization statistics (paper Table 9) over all runs, and per run
+the constraint table (Table 7), the design-variable table and the convergence history. The
+LPC-specific parts (design table like Table 8, planform Fig. 15, mass breakdown Figs. 19-20,
+power and figure of merit per condition Fig. 16, thickness and stress distributions Figs. 13,
+21, sweeps Figs. 17-18) compare all runs and take their variable names from a
+:class:`ReportSpec`; a part whose variables are absent is skipped with a note in the index.
+
+Layout of ``out_dir``::
+
+    index.md                 links to everything below, notes on skipped parts
+    tables/*.md, *.csv       statistics, constraints_<run>, design_variables_<run>, designs
+    figures/*.png            convergence_<run>, planform, mass_breakdown, power,
+                             figure_of_merit, <distribution stem>, <sweep stem>
+"""
+
+import re
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from os import PathLike
+from pathlib import Path
+
+from lpc_mdo.components.weights.gross_weight import BREAKDOWN_LABELS
+from lpc_mdo.post import figures, tables
+from lpc_mdo.post.statistics import statistics_table
+from lpc_mdo.post.tables import DEFAULT_TOL, MissingVariableError, Quantity
+
+__all__ = [
+    "LPC_CONDITIONS",
+    "LPC_DESIGN_QUANTITIES",
+    "LPC_DISTRIBUTIONS",
+    "LPC_SWEEPS",
+    "DistributionSpec",
+    "ReportSpec",
+    "SweepSpec",
+    "find_case_files",
+    "write_report",
+]
+
+#: The 15 LPC design conditions (ARCHITECTURE.md §2), in mission order.
+LPC_CONDITIONS = ("hover", *(f"transition_{i}" for i in range(1, 6)), "climb", "cruise",
+                  "descent", *(f"oei_{i}" for i in range(1, 5)), "plus_3g", "minus_1g")
+
+_CASE_SUFFIXES = (".sql", ".db", ".sqlite", ".sqlite3")
+_GENERIC_STEMS = ("cases", "case", "driver", "recording")
+
+
+@dataclass(frozen=True)
+class DistributionSpec:
+    """
+    A distribution figure (:func:`~lpc_mdo.post.figures.plot_distribution`).
+
+    Attributes
+    ----------
+    stem : str
+        File name (without ``.png``) and index heading.
+    names : tuple of str
+        Arrays plotted together.
+    x : str or None
+        Abscissa variable; None uses the index.
+    units, x_units : str or None
+        Units of the arrays and of the abscissa.
+    limit : float or None
+        Horizontal limit line, in ``units``.
+    title : str or None
+        Figure title.
+    """
+
+    stem: str
+    names: tuple
+    x: str | None = None
+    units: str | None = None
+    x_units: str | None = None
+    limit: float | None = None
+    title: str | None = None
+
+
+@dataclass(frozen=True)
+class SweepSpec:
+    """
+    A sweep figure (:func:`~lpc_mdo.post.figures.plot_sweep`) over the runs of the report.
+
+    The parameter values are read from each run (:func:`~lpc_mdo.post.figures.sweep_points`);
+    ``'lower:NAME'`` reads a constraint's declared lower bound.
+
+    Attributes
+    ----------
+    stem : str
+        File name (without ``.png``) and index heading.
+    x : str
+        Swept parameter.
+    group : str or None
+        Second parameter: one line per value.
+    x_units, group_units : str or None
+        Units to read the parameters in.
+    xlabel, group_label : str or None
+        Axis label and legend prefix.
+    """
+
+    stem: str
+    x: str
+    group: str | None = None
+    x_units: str | None = None
+    group_units: str | None = None
+    xlabel: str | None = None
+    group_label: str | None = None
+
+
+#: Table 8 columns: VehicleGroup design variables (``VEHICLE_DESIGN_VARIABLES``; ``rotor_radius``
+#: holds the 4 lift-rotor pairs then the pusher) and the WeightsGroup gross mass.
+LPC_DESIGN_QUANTITIES = (
+    ("l_fuselage", "fuselage_length", "m"),
+    ("S_ref,wing", "wing_area", "m**2"),
+    ("AR_wing", "wing_aspect_ratio"),
+    ("S_ref,tail", "htail_area", "m**2"),
+    ("AR_tail", "htail_aspect_ratio"),
+    ("R_pusher", "rotor_radius", "m", 4),
+    *((f"R_lift,{i + 1}", "rotor_radius", "m", i) for i in range(4)),
+    ("W_0", "gross_mass", "kg"),
+)
+
+#: Wing-box design variables of VehicleGroup (per bay, root to tip) and the beam stress of the
+#: +3g condition (BeamGroup ``von_mises_stress``, (num_elements, 5) recovery points).
+LPC_DISTRIBUTIONS = (
+    DistributionSpec("skin_thickness", ("top_skin_thickness", "bottom_skin_thickness"),
+                     units="mm", title="Skin thickness, root to tip"),
+    DistributionSpec("spar_thickness", ("front_spar_thickness", "rear_spar_thickness"),
+                     units="mm", title="Spar thickness, root to tip"),
+    DistributionSpec("stress_plus_3g", ("plus_3g.von_mises_stress",), units="MPa",
+                     limit=350.0, title="Beam stress, +3g"),
+)
+
+LPC_SWEEPS = (
+    SweepSpec("sweep_energy_density", "specific_energy", x_units="W*h/kg",
+              xlabel="battery energy density (Wh/kg)"),
+    SweepSpec("sweep_final_soc", "lower:state_of_charge", xlabel="final state of charge"),
+)
+
+
+@dataclass
+class ReportSpec:
+    """
+    What :func:`write_report` writes and the variable names of its LPC-specific parts.
+
+    The defaults are the lift-plus-cruise names as far as they are settled (VehicleGroup design
+    variables, WeightsGroup, RotorLayoutComp, VLM ``{surface}_mesh``, ``electrical_power`` of
+    the power sum, condition groups of ARCHITECTURE.md §2); override any field when the
+    assembled model promotes differently. :meth:`generic` switches every LPC part off. Names
+    may be anything :func:`~lpc_mdo.post.tables.read_value` accepts.
+
+    Attributes
+    ----------
+    tol : float
+        Activity/feasibility tolerance of the constraint tables.
+    refs : Mapping
+        Constraint name -> reference magnitude for % violation (e.g. trim -> 1e4 N).
+    design_quantities : tuple
+        Table 8 columns: :class:`~lpc_mdo.post.tables.Quantity` or ``(label, name[, units[,
+        index]])``; default fuselage length, wing/tail area and aspect ratio, rotor radii,
+        gross mass.
+    meshes : tuple of str
+        Surface meshes (nx, ny, 3) of the planform figure; default ``('wing_mesh',
+        'horizontal_tail_mesh')``.
+    rotors : tuple of (str, str)
+        (hub positions, radii) drawn as disks; default lift rotors
+        ``('lift_hub_position', 'lift_rotor_radius')``; dropped with a note when absent.
+    mass_breakdown : str or None
+        Vector for the mass bar chart; default ``'mass_breakdown'`` (GrossWeightComp).
+    mass_labels : tuple of str or None
+        Its entry labels; default ``BREAKDOWN_LABELS``.
+    mass_units : str or None
+        Default ``'kg'``.
+    conditions : tuple of str
+        Condition names for the power figure; default the 15 LPC conditions.
+    power : str or None
+        Template (``{condition}``) or per-condition vector; default
+        ``'{condition}.electrical_power'``, summed per condition.
+    power_units : str or None
+        Default ``'kW'``.
+    figure_of_merit : str or None
+        Template or vector; default ``'{condition}.figure_of_merit'``, averaged over all its
+        entries (rotors) per condition.
+    fom_conditions : tuple of str
+        Default hover and the five transition points (lift rotors running).
+    distributions : tuple of DistributionSpec
+        Default ``top/bottom_skin_thickness`` and ``front/rear_spar_thickness`` (mm) and
+        ``plus_3g.von_mises_stress`` (MPa, limit 350).
+    sweeps : tuple of SweepSpec
+        Default battery energy density (``specific_energy`` in Wh/kg) and final SoC
+        (``lower:state_of_charge``).
+    """
+
+    tol: float = DEFAULT_TOL
+    refs: Mapping = field(default_factory=dict)
+    design_quantities: tuple = LPC_DESIGN_QUANTITIES
+    meshes: tuple = ("wing_mesh", "horizontal_tail_mesh")
+    rotors: tuple = (("lift_hub_position", "lift_rotor_radius"),)
+    mass_breakdown: str | None = "mass_breakdown"
+    mass_labels: tuple | None = BREAKDOWN_LABELS
+    mass_units: str | None = "kg"
+    conditions: tuple = LPC_CONDITIONS
+    power: str | None = "{condition}.electrical_power"
+    power_units: str | None = "kW"
+    figure_of_merit: str | None = "{condition}.figure_of_merit"
+    fom_conditions: tuple = LPC_CONDITIONS[:6]
+    distributions: tuple = LPC_DISTRIBUTIONS
+    sweeps: tuple = LPC_SWEEPS
+
+    @classmethod
+    def generic(cls, **overrides):
+        """A spec with every LPC-specific part off (only the generic tables and figures)."""
+        off = dict(design_quantities=(), meshes=(), rotors=(), mass_breakdown=None,
+                   power=None, figure_of_merit=None, distributions=(), sweeps=())
+        return cls(**{**off, **overrides})
+
+
+# ------------------------------------------------------------------------------------------------
+# Case files
+
+
+def _is_sqlite(path):
+    try:
+        with open(path, "rb") as fh:
+            return fh.read(16) == b"SQLite format 3\x00"
+    except OSError:
+        return False
+
+
+def _label(path, root):
+    rel = path.relative_to(root) if root is not None else Path(path.name)
+    parts = [p.removesuffix("_out") for p in rel.parent.parts]
+    if path.stem not in _GENERIC_STEMS or not parts:
+        parts.append(path.stem)
+    return "/".join(parts)
+
+
+def find_case_files(case_files_or_dir):
+    """
+    Resolve the report's input into labelled case files.
+
+    Parameters
+    ----------
+    case_files_or_dir : str, os.PathLike, Mapping or Sequence
+        A folder (searched recursively for SQLite files ending ``.sql``, ``.db``, ``.sqlite``
+        or ``.sqlite3``), one case file, a mapping label -> case file, or a sequence of case
+        files or ``(label, case file)`` pairs.
+
+    Returns
+    -------
+    list of (str, Path)
+        Unique labels (from the folder structure: ``run_a/cases.sql`` -> ``run_a``) and paths.
+    """
+    src = case_files_or_dir
+    if isinstance(src, (str, PathLike)) and Path(src).is_dir():
+        root = Path(src)
+        found = [(None, p) for p in sorted(root.rglob("*"))
+                 if p.suffix in _CASE_SUFFIXES and p.is_file() and _is_sqlite(p)]
+    else:
+        root = None
+        if isinstance(src, (str, PathLike)):
+            src = [src]
+        elif isinstance(src, Mapping):
+            src = list(src.items())
+        found = [(item[0], Path(item[1])) if isinstance(item, tuple) else (None, Path(item))
+                 for item in src]
+    out, seen = [], set()
+    for label, path in found:
+        if not path.is_file():
+            raise FileNotFoundError(f"Case file {str(path)!r} does not exist.")
+        label = label or _label(path, root)
+        base, k = label, 2
+        while label in seen:
+            label, k = f"{base}_{k}", k + 1
+        seen.add(label)
+        out.append((label, path))
+    return out
+
+
+# ------------------------------------------------------------------------------------------------
+# Report
+
+
+def _slug(label):
+    return re.sub(r"[^A-Za-z0-9_.-]+", "_", label).strip("_") or "run"
+
+
+class _Index:
+    """Markdown lines of index.md with links relative to the report folder."""
+
+    def __init__(self, out_dir):
+        self.out_dir = out_dir
+        self.lines = []
+        self.skipped = []
+
+    def add(self, *lines):
+        self.lines.extend(lines)
+
+    def link(self, path):
+        return path.relative_to(self.out_dir).as_posix()
+
+    def table(self, table, stem, inline=True):
+        md, csv = table.write(self.out_dir / "tables", stem)
+        if inline:
+            self.add(table.to_markdown(heading=False))
+        self.add(f"Files: [{md.name}]({self.link(md)}) · [{csv.name}]({self.link(csv)})", "")
+
+    def figure(self, path, caption):
+        self.add(f"![{caption}]({self.link(path)})", "")
+
+    def skip(self, part, reason):
+        note = f"*Skipped: {reason}*"
+        self.add(note, "")
+        self.skipped.append(f"{part}: {reason}")
+
+
+def _try(index, part, func):
+    """Run one report part; a missing variable or an unusable value becomes a skip note."""
+    try:
+        func()
+    except (MissingVariableError, ValueError) as err:
+        index.skip(part, str(err))
+
+
+def _run_section(index, label, cr, spec):
+    slug = _slug(label)
+    index.add(f"### {label}", "")
+
+    def constraints():
+        table = tables.constraint_table(cr, tol=spec.tol, refs=spec.refs)
+        status = [row[-1] for row in table.rows]
+        counts = {s: sum(1 for t in status if t.startswith(s))
+                  for s in ("active", "partially active", "inactive", "violated")}
+        summary = ", ".join(f"{n} {s}" for s, n in counts.items() if n)
+        index.add(f"**Constraints** (Table 7), final case: {summary}.", "")
+        index.table(table, f"constraints_{slug}")
+
+    if tables.constraint_metadata(cr):
+        _try(index, f"constraints of {label}", constraints)
+    else:
+        index.add("The problem has no constraints.", "")
+
+    def design_variables():
+        table = tables.design_variable_table(cr, tol=spec.tol)
+        index.add("**Design variables**:", "")
+        index.table(table, f"design_variables_{slug}", inline=False)
+
+    if tables.design_var_metadata(cr):
+        _try(index, f"design variables of {label}", design_variables)
+
+    def convergence():
+        path = figures.plot_convergence(cr, index.out_dir / "figures" / f"convergence_{slug}.png",
+                                        refs=spec.refs, title=label)
+        index.figure(path, f"Convergence of {label}")
+
+    index.add("**Convergence**:", "")
+    _try(index, f"convergence of {label}", convergence)
+
+
+def _recorded(cr, names, any_of=False):
+    found = []
+    for name in names:
+        try:
+            tables.read_value(cr, name)
+            found.append(True)
+        except MissingVariableError:
+            found.append(False)
+    return any(found) if any_of else all(found)
+
+
+def _runs_with(index, runs, names, any_of=False):
+    """The runs that record ``names`` (all of them, or any with ``any_of``); notes the others."""
+    names = list(names)
+    kept = [(label, cr) for label, cr in runs if _recorded(cr, names, any_of)]
+    if not kept:
+        listed = (" or " if any_of else ", ").join(map(repr, names))
+        raise MissingVariableError(f"no run records {listed}.")
+    left_out = [label for label, _ in runs if all(label != k for k, _ in kept)]
+    if left_out:
+        index.add(f"*Runs left out (variables not recorded): {', '.join(left_out)}.*", "")
+    return kept
+
+
+def _comparison_parts(index, runs, spec):
+    fig_dir = index.out_dir / "figures"
+
+    if spec.design_quantities:
+        def design_table():
+            table = tables.design_table(runs, spec.design_quantities)
+            if len(table.columns) == 1:
+                raise MissingVariableError("none of the design quantities is recorded ("
+                                           + ", ".join(Quantity.coerce(q).name for q in
+                                                       spec.design_quantities) + ").")
+            index.table(table, "designs")
+        index.add("### Design comparison (Table 8)", "")
+        _try(index, "design table", design_table)
+
+    if spec.meshes:
+        def planform():
+            kept = _runs_with(index, runs, spec.meshes)
+            rotors = [pair for pair in spec.rotors if all(_recorded(cr, pair) for _, cr in kept)]
+            for pair in spec.rotors:
+                if pair not in rotors:
+                    index.add(f"*Rotor disks {pair} left out: not recorded in every run.*", "")
+            path = figures.plot_planform(kept, spec.meshes, fig_dir / "planform.png",
+                                         rotors=rotors)
+            index.figure(path, "Planform")
+        index.add("### Planform (Fig. 15)", "")
+        _try(index, "planform", planform)
+
+    if spec.mass_breakdown:
+        def mass():
+            kept = _runs_with(index, runs, [spec.mass_breakdown])
+            path = figures.plot_bars(kept, spec.mass_breakdown, fig_dir / "mass_breakdown.png",
+                                     labels=spec.mass_labels, units=spec.mass_units)
+            index.figure(path, "Mass breakdown")
+        index.add("### Mass breakdown (Figs. 19-20)", "")
+        _try(index, "mass breakdown", mass)
+
+    for key, stem, heading, conditions, reduce, units in (
+            ("power", "power", "Power per condition (Fig. 16b)", spec.conditions, "sum",
+             spec.power_units),
+            ("figure_of_merit", "figure_of_merit", "Figure of merit per condition (Fig. 16a)",
+             spec.fom_conditions, "mean", None)):
+        variable = getattr(spec, key)
+        if not variable:
+            continue
+
+        def per_condition(variable=variable, stem=stem, conditions=conditions, reduce=reduce,
+                          units=units):
+            names = ([variable.format(condition=c) for c in conditions]
+                     if "{condition}" in variable else [variable])
+            kept = _runs_with(index, runs, names, any_of=True)
+            path = figures.plot_per_condition(kept, variable, conditions,
+                                              fig_dir / f"{stem}.png", units=units,
+                                              reduce=reduce)
+            index.figure(path, stem.replace("_", " "))
+        index.add(f"### {heading}", "")
+        _try(index, stem.replace("_", " "), per_condition)
+
+    for dist in spec.distributions:
+        def distribution(dist=dist):
+            names = list(dist.names) + ([dist.x] if dist.x else [])
+            kept = _runs_with(index, runs, names)
+            path = figures.plot_distribution(kept, dist.names, fig_dir / f"{dist.stem}.png",
+                                             x=dist.x, units=dist.units, x_units=dist.x_units,
+                                             limit=dist.limit, title=dist.title)
+            index.figure(path, dist.stem.replace("_", " "))
+        index.add(f"### Distribution: {dist.title or dist.stem}", "")
+        _try(index, dist.stem, distribution)
+
+    for sweep in spec.sweeps:
+        def sweep_figure(sweep=sweep):
+            points = figures.sweep_points(runs, sweep.x, sweep.group, sweep.x_units,
+                                          sweep.group_units)
+            if len({x for _, x, _ in points}) < 2:
+                raise MissingVariableError(f"fewer than two runs with different values of "
+                                           f"{sweep.x!r} ({len(points)} record it).")
+            path = figures.plot_sweep(points, fig_dir / f"{sweep.stem}.png",
+                                      xlabel=sweep.xlabel or sweep.x,
+                                      group_label=sweep.group_label)
+            index.figure(path, sweep.stem.replace("_", " "))
+        index.add(f"### Sweep: {sweep.xlabel or sweep.x} (Figs. 17-18)", "")
+        _try(index, sweep.stem, sweep_figure)
+
+
+def write_report(case_files_or_dir, out_dir, spec=None):
+    """
+    Write every table and figure the case files support into ``out_dir``, with an index.md.
+
+    Reads each case file (driver cases, the final problem case, ``problem_metadata``) and the
+    ``run_stats.json`` next to it; never a live model.
+
+    Parameters
+    ----------
+    case_files_or_dir : str, os.PathLike, Mapping or Sequence
+        A folder searched recursively for case files (one run per case file; a run's
+        ``run_stats.json`` sits in its folder), one case file, a mapping label -> case file,
+        or a sequence of case files or ``(label, case file)`` pairs.
+    out_dir : str or os.PathLike
+        Report folder (created); existing files of the same names are overwritten.
+    spec : ReportSpec or None
+        Variable names of the LPC-specific parts; None = ``ReportSpec()`` (LPC defaults), and
+        ``ReportSpec.generic()`` leaves those parts out.
+
+    Returns
+    -------
+    Path
+        The index.md written.
+
+    Raises
+    ------
+    FileNotFoundError
+        When no case file is found.
+    """
+    spec = ReportSpec() if spec is None else spec
+    files = find_case_files(case_files_or_dir)
+    if not files:
+        raise FileNotFoundError(f"No case files found in {str(case_files_or_dir)!r}.")
+    out_dir = Path(out_dir)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    runs = [(label, tables.open_reader(path)) for label, path in files]
+    index = _Index(out_dir)
+
+    index.add("# Optimization report", "",
+              f"Generated by lpc_mdo.post from {len(runs)} case file(s):", "")
+    index.add(*(f"- **{label}**: `{path}`" for label, path in files), "")
+
+    index.add("## Statistics (Table 9)", "")
+    index.table(statistics_table(runs), "statistics")
+
+    index.add("## Runs", "")
+    for label, cr in runs:
+        _run_section(index, label, cr, spec)
+
+    index.add("## Design comparison", "")
+    start = len(index.lines)
+    _comparison_parts(index, runs, spec)
+    if len(index.lines) == start:
+        index.add("No design-comparison parts requested (ReportSpec.generic()).", "")
+
+    if index.skipped:
+        index.add("## Skipped parts", "", *(f"- {note}" for note in index.skipped), "")
+    path = out_dir / "index.md"
+    path.write_text("\n".join(index.lines), encoding="utf-8")
+    return path

@@ -1,0 +1,405 @@
+"""lpc_mdo.post: tables, statistics, figures and the report, from real recorded optimizations.
+
+Problems (small, solved once per module):
+
+* paraboloid f = (x - 3)^2 + x y + (y + 4)^2 - 3 subject to c = x - y >= L and
+  v = [x, y, x + y] (m) <= 1000 cm. For L = 15 the optimum is x = 43/6, y = -47/6,
+  f = -27.0833 (OpenMDAO's documentation); in general x = (3L - 2)/6, y = x - L, so c is active
+  and every entry of v (|v| < 8 m) is inactive.
+* Sellar MDA (implicit disciplines, Newton + DirectSolver on the cycle) with the vector
+  constraint [3.16 - y1, y2 - 24] <= 0: at the optimum z = (1.9776, 0), x = 0 the first entry is
+  active and the second is not (y2 = 3.755), and x and z[1] sit at their lower bounds.
+"""
+
+import csv
+import re
+from pathlib import Path
+
+import numpy as np
+import openmdao.api as om
+import pytest
+from openmdao.test_suite.components.paraboloid import Paraboloid
+from openmdao.test_suite.components.sellar import SellarImplicitDis1, SellarImplicitDis2
+
+from lpc_mdo.drivers import IpoptDriver
+from lpc_mdo.post import figures, report, statistics, tables
+
+pytest.importorskip("cyipopt")
+pytestmark = pytest.mark.filterwarnings("ignore:The following groups have a nonlinear solver")
+
+PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
+
+
+class VectorComp(om.ExplicitComponent):
+    """v = [x, y, x + y] in metres."""
+
+    def setup(self):
+        self.add_input("x", 0.0)
+        self.add_input("y", 0.0)
+        self.add_output("v", np.zeros(3), units="m")
+        self.declare_partials("v", "x", rows=[0, 2], cols=[0, 0], val=1.0)
+        self.declare_partials("v", "y", rows=[1, 2], cols=[0, 0], val=1.0)
+
+    def compute(self, inputs, outputs):
+        x, y = inputs["x"][0], inputs["y"][0]
+        outputs["v"] = [x, y, x + y]
+
+
+class SellarConstraints(om.ExplicitComponent):
+    """con = [3.16 - y1, y2 - 24]."""
+
+    def setup(self):
+        self.add_input("y1", 0.0)
+        self.add_input("y2", 0.0)
+        self.add_output("con", np.zeros(2))
+        self.declare_partials("con", "y1", rows=[0], cols=[0], val=-1.0)
+        self.declare_partials("con", "y2", rows=[1], cols=[0], val=1.0)
+
+    def compute(self, inputs, outputs):
+        outputs["con"] = [3.16 - inputs["y1"][0], inputs["y2"][0] - 24.0]
+
+
+def _record_and_run(prob, path, driver):
+    prob.driver = driver
+    rec = om.SqliteRecorder(str(path))
+    prob.driver.add_recorder(rec)
+    prob.add_recorder(rec)
+    prob.recording_options["includes"] = ["*"]
+    prob.setup()
+    result = prob.run_driver()
+    prob.record("final")
+    prob.cleanup()
+    statistics.write_run_stats(result, path.parent, peak_memory_mb=123.5)
+    return result
+
+
+def paraboloid_run(path, driver, c_lower=15.0):
+    """Paraboloid optimization recorded to ``path``, with LPC-like extra outputs."""
+    prob = om.Problem(reports=False)
+    m = prob.model
+    geom = m.add_subsystem("geom", om.IndepVarComp(), promotes=["*"])
+    geom.add_output("wing_mesh", np.array([[[0.0, -4.0, 0.0], [0.5, 0.0, 0.0], [0.0, 4.0, 0.0]],
+                                           [[-1.0, -4.0, 0.0], [-1.5, 0.0, 0.0],
+                                            [-1.0, 4.0, 0.0]]]), units="m")
+    geom.add_output("tail_mesh", np.array([[[-5.0, -1.0, 0.0], [-5.0, 1.0, 0.0]],
+                                           [[-5.5, -1.0, 0.0], [-5.5, 1.0, 0.0]]]), units="m")
+    geom.add_output("hubs", np.array([[0.5, -2.0, 0.0], [0.5, 2.0, 0.0]]), units="m")
+    geom.add_output("radii", np.array([0.6, 0.6]), units="m")
+    geom.add_output("skin", np.array([4.0, 3.0, 2.0, 1.0]), units="mm")
+    geom.add_output("stations", np.linspace(0.0, 4.0, 5), units="m")
+    geom.add_output("stress", np.arange(8.0).reshape(4, 2), units="MPa")
+    m.add_subsystem("parab", Paraboloid(), promotes=["*"])
+    m.add_subsystem("con", om.ExecComp("c = x - y"), promotes=["*"])
+    m.add_subsystem("vec", VectorComp(), promotes=["*"])
+    m.add_subsystem("hover", om.ExecComp(
+        ["electrical_power = 1000.0*(x**2 + 1.0)", "figure_of_merit = 0.1*x*r"],
+        electrical_power={"units": "W"}, figure_of_merit={"shape": (2,)},
+        r={"shape": (2,), "val": [1.0, 0.5]}), promotes_inputs=["x"])
+    m.add_subsystem("cruise", om.ExecComp("electrical_power = 500.0*(y**2 + 1.0)",
+                                          electrical_power={"units": "W"}),
+                    promotes_inputs=["y"])
+    m.set_input_defaults("x", 3.0)
+    m.set_input_defaults("y", -4.0)
+    m.add_design_var("x", lower=-50.0, upper=50.0)
+    m.add_design_var("y", lower=-50.0, upper=50.0)
+    m.add_objective("f_xy")
+    m.add_constraint("c", lower=c_lower)
+    m.add_constraint("v", upper=1000.0, units="cm")
+    return _record_and_run(prob, path, driver)
+
+
+def sellar_run(path):
+    """Sellar MDA with IPOPT and recorded derivatives; returns (result, live model counts)."""
+    prob = om.Problem(reports=False)
+    m = prob.model
+    cycle = m.add_subsystem("cycle", om.Group(), promotes=["*"])
+    cycle.add_subsystem("d1", SellarImplicitDis1(), promotes=["*"])
+    cycle.add_subsystem("d2", SellarImplicitDis2(), promotes=["*"])
+    cycle.nonlinear_solver = om.NewtonSolver(solve_subsystems=False, iprint=-1, maxiter=30)
+    cycle.linear_solver = om.DirectSolver()
+    m.add_subsystem("obj_cmp", om.ExecComp("obj = x**2 + z[1] + y1 + exp(-y2)",
+                                           z=np.zeros(2)), promotes=["*"])
+    m.add_subsystem("cons", SellarConstraints(), promotes=["*"])
+    m.set_input_defaults("x", 1.0)
+    m.set_input_defaults("z", np.array([5.0, 2.0]))
+    m.add_design_var("x", lower=0.0, upper=10.0)
+    m.add_design_var("z", lower=np.array([-10.0, 0.0]), upper=np.array([10.0, 10.0]))
+    m.add_objective("obj")
+    m.add_constraint("con", upper=0.0)
+    driver = IpoptDriver(print_level=0)
+    driver.recording_options["record_derivatives"] = True
+    result = _record_and_run(prob, path, driver)
+
+    from openmdao.core.component import Component
+
+    outputs = m.list_outputs(out_stream=None, shape=True)
+    live = dict(
+        components=sum(1 for s in m.system_iter(recurse=True, typ=Component)
+                       if s.pathname != "_auto_ivc"),
+        groups=len(list(m.system_iter(recurse=True, typ=om.Group))),
+        implicit_components=len(list(m.system_iter(recurse=True, typ=om.ImplicitComponent))),
+        inputs=len(m.list_inputs(out_stream=None)),
+        outputs=len(outputs),
+        output_size=sum(int(np.prod(meta["shape"])) for _, meta in outputs),
+    )
+    return result, live
+
+
+@pytest.fixture(scope="module")
+def runs(tmp_path_factory):
+    """Case files of all runs, each in its own folder of one study folder."""
+    root = tmp_path_factory.mktemp("study")
+    with pytest.MonkeyPatch.context() as mp:
+        mp.chdir(root)
+        mp.setenv("OPENMDAO_WORKDIR", str(root))
+        out = {}
+        for name, driver, c_lower in (
+                ("ipopt", IpoptDriver(print_level=0), 15.0),
+                ("slsqp", om.ScipyOptimizeDriver(optimizer="SLSQP", disp=False), 16.0)):
+            path = root / "runs" / name / "cases.sql"
+            path.parent.mkdir(parents=True)
+            out[name] = (path, paraboloid_run(path, driver, c_lower), c_lower)
+        path = root / "runs" / "sellar" / "cases.sql"
+        path.parent.mkdir(parents=True)
+        out["sellar"] = (path, *sellar_run(path))
+    out["root"] = root / "runs"
+    return out
+
+
+def paraboloid_optimum(c_lower):
+    x = (3.0 * c_lower - 2.0) / 6.0
+    y = x - c_lower
+    return x, y, (x - 3.0) ** 2 + x * y + (y + 4.0) ** 2 - 3.0
+
+
+# ------------------------------------------------------------------------------------------------
+# tables
+
+
+@pytest.mark.parametrize("name", ["ipopt", "slsqp"])
+def test_constraint_table_equals_recorded_values(runs, name):
+    path, result, c_lower = runs[name]
+    assert result.success
+    cr = om.CaseReader(str(path))
+    last = cr.get_case(cr.list_cases("driver", recurse=False, out_stream=None)[-1])
+    recorded = last.get_constraints()
+    x, y, _ = paraboloid_optimum(c_lower)
+    np.testing.assert_allclose(last.get_val("x"), x, rtol=1e-5)
+
+    rows = {r["constraint"]: r for r in tables.constraint_table(path).as_dicts()}
+    assert list(rows) == ["c", "v"]
+    for con in rows:
+        assert rows[con]["min"] == float(np.min(recorded[con]))
+        assert rows[con]["max"] == float(np.max(recorded[con]))
+    # v is recorded in its declared units (cm), not the output's metres.
+    np.testing.assert_allclose(rows["v"]["min"], 100.0 * y, rtol=1e-5)
+    assert rows["c"]["lower"] == c_lower and rows["c"]["upper"] is None
+    assert rows["v"]["upper"] == 1000.0 and rows["v"]["units"] == "cm"
+    assert rows["c"]["status"] == "active" and rows["c"]["active"] == "1/1"
+    assert rows["v"]["status"] == "inactive" and rows["v"]["active"] == "0/3"
+    assert rows["c"]["% viol."] < 1e-4 and rows["v"]["% viol."] == 0.0
+
+
+def test_constraint_table_partially_active_vector(runs):
+    path = runs["sellar"][0]
+    (row,) = tables.constraint_table(path).as_dicts()
+    assert row["constraint"] == "con" and row["upper"] == 0.0
+    assert row["status"] == "partially active (1 of 2)" and row["active"] == "1/2"
+
+
+def test_entry_status_equality_violation_and_two_sided():
+    viol, active, violated = tables.entry_status([1.0, 1.00001, 1.1], equals=1.0, scale=1.0)
+    np.testing.assert_allclose(viol, [0.0, 1e-5, 0.1], atol=1e-12)
+    assert active.tolist() == [True, True, False] and violated.tolist() == [False, False, True]
+    viol, active, violated = tables.entry_status([0.0, 0.5, 1.0, 1.2], lower=0.0, upper=1.0,
+                                                 scale=np.array([1.0, 1.0, 1.0, 1.0]))
+    assert active.tolist() == [True, False, True, False]
+    assert violated.tolist() == [False, False, False, True]
+    np.testing.assert_allclose(viol, [0.0, 0.0, 0.0, 0.2])
+
+
+def test_tables_written_as_markdown_and_csv(runs, tmp_path):
+    path = runs["ipopt"][0]
+    table = tables.constraint_table(path)
+    md, csv_path = table.write(tmp_path, "constraints")
+    assert md.read_text().startswith("# Constraints")
+    with open(csv_path, newline="") as fh:
+        rows = list(csv.DictReader(fh))
+    assert [r["constraint"] for r in rows] == ["c", "v"]
+    # CSV keeps full precision.
+    assert float(rows[1]["min"]) == table.as_dicts()[1]["min"]
+
+
+def test_design_variable_table_initial_final_and_bounds(runs):
+    path = runs["sellar"][0]
+    cr = om.CaseReader(str(path))
+    ids = cr.list_cases("driver", recurse=False, out_stream=None)
+    first, last = cr.get_case(ids[0]), cr.get_case(ids[-1])
+    rows = {r["design variable"]: r for r in tables.design_variable_table(path).as_dicts()}
+    assert list(rows) == ["x", "z[0]", "z[1]"]
+    assert rows["x"]["initial"] == first.get_val("x")[0] == 1.0
+    assert rows["z[0]"]["final"] == last.get_val("z")[0]
+    assert (rows["x"]["at bound"], rows["z[0]"]["at bound"], rows["z[1]"]["at bound"]) == (
+        "lower", "", "lower")
+    (agg,) = [r for r in tables.design_variable_table(path, expand=False).as_dicts()
+              if r["design variable"] == "z"]
+    assert agg["size"] == 2 and agg["at bound"] == "1 lower"
+
+
+def test_design_table_reads_each_design(runs):
+    designs = [("IPOPT", runs["ipopt"][0]), ("SLSQP", runs["slsqp"][0])]
+    table = tables.design_table(designs, [("x", "x"), ("tip", "wing_mesh", "cm", 7),
+                                          ("S", "not_recorded"), ("P", "hover.electrical_power")])
+    # Columns without units given show the recorded units.
+    assert table.columns == ["design", "x", "tip (cm)", "P (W)"]
+    assert tables.recorded_units(designs[0][1], "v") == "m"
+    assert tables.recorded_units(designs[0][1], "x") is None
+    assert any("not_recorded" in note for note in table.notes)
+    for (label, path), row in zip(designs, table.rows, strict=True):
+        final = om.CaseReader(str(path)).get_case("final")
+        assert row[0] == label and row[1] == final.get_val("x")[0]
+        assert row[2] == pytest.approx(400.0)  # flat index 7: y of the right leading-edge tip
+
+
+# ------------------------------------------------------------------------------------------------
+# statistics
+
+
+def test_run_stats_round_trip(runs, tmp_path):
+    path, result, _ = runs["ipopt"]
+    stats = statistics.read_run_stats(path)
+    for key in ("runtime", "iter_count", "model_evals", "model_time", "deriv_evals",
+                "deriv_time", "success", "exit_status"):
+        assert stats[key] == getattr(result, key), key
+    assert stats["peak_memory_mb"] == 123.5
+    written = statistics.write_run_stats({"runtime": 2.5, "success": False},
+                                         tmp_path / "other.json")
+    assert statistics.read_run_stats(written) == {
+        **dict.fromkeys(statistics.RUN_STATS_KEYS), "runtime": 2.5, "success": False}
+    assert statistics.read_run_stats(tmp_path / "cases.sql") is None
+
+
+def test_statistics_count_the_model_and_the_run(runs):
+    path, result, live = runs["sellar"]
+    stats = statistics.run_statistics(path)
+    for key, value in live.items():
+        assert stats[key] == value, key
+    assert stats["implicit_components"] == 2 and stats["implicit_outputs"] == 2
+    cr = om.CaseReader(str(path))
+    cases = cr.get_cases("driver", recurse=False)
+    assert stats["driver_cases"] == len(cases)
+    assert stats["derivative_cases"] == sum(c.derivatives is not None for c in cases) > 0
+    assert stats["wall_time"] == result.runtime
+    assert stats["iter_count"] == result.iter_count
+    assert stats["mean_deriv_time"] == pytest.approx(result.deriv_time / result.deriv_evals)
+    assert (stats["design_var_size"], stats["constraint_size"]) == (3, 2)
+
+    table = statistics.statistics_table([("sellar", path), ("ipopt", runs["ipopt"][0])])
+    rows = {r["metric"]: r for r in table.as_dicts()}
+    assert rows["Components"]["sellar"] == live["components"]
+    assert rows["Implicit components"]["ipopt"] == 0
+    assert rows["Wall time source"]["sellar"] == "run_stats.json"
+
+
+# ------------------------------------------------------------------------------------------------
+# figures
+
+
+def _is_png(path):
+    path = Path(path)
+    return path.is_file() and path.read_bytes()[:8] == PNG_MAGIC
+
+
+def test_convergence_history_matches_driver_cases(runs, tmp_path):
+    path = runs["sellar"][0]
+    hist = figures.convergence_history(path)
+    cases = om.CaseReader(str(path)).get_cases("driver", recurse=False)
+    np.testing.assert_array_equal(hist["objective"],
+                                  [c.get_objectives()["obj"][0] for c in cases])
+    assert hist["max_violation"][-1] < 1e-6 and hist["derivatives"].sum() > 0
+    assert _is_png(figures.plot_convergence(path, tmp_path / "conv.png"))
+
+
+def test_figures_are_written(runs, tmp_path):
+    designs = [("IPOPT", runs["ipopt"][0]), ("SLSQP", runs["slsqp"][0])]
+    written = [
+        figures.plot_bars(designs, "v", tmp_path / "bars.png", labels=["x", "y", "x+y"],
+                          units="cm"),
+        figures.plot_per_condition(designs, "{condition}.electrical_power",
+                                   ["hover", "cruise", "climb"], tmp_path / "power.png",
+                                   units="kW"),
+        figures.plot_per_condition(designs, "{condition}.figure_of_merit", ["hover"],
+                                   tmp_path / "fom.png", reduce="mean"),
+        figures.plot_per_condition(designs, "v", ["a", "b", "c"], tmp_path / "vector.png"),
+        figures.plot_distribution(designs, "stress", tmp_path / "stress.png", x="stations",
+                                  limit=5.0),
+        figures.plot_distribution(runs["ipopt"][0], ["skin", "skin"], tmp_path / "skin.png"),
+        figures.plot_planform(designs, ["wing_mesh", "tail_mesh"], tmp_path / "plan.png",
+                              rotors=[("hubs", "radii")], mirror=True),
+    ]
+    assert all(_is_png(p) for p in written)
+    with pytest.raises(tables.MissingVariableError, match="not_there"):
+        figures.plot_bars(designs, "not_there", tmp_path / "missing.png")
+    with pytest.raises(tables.MissingVariableError, match="climb"):
+        figures.plot_per_condition(designs, "{condition}.power", ["climb"], tmp_path / "p.png")
+
+
+def test_sweep_points_and_plot(runs, tmp_path):
+    sources = [runs["ipopt"][0], runs["slsqp"][0], runs["sellar"][0]]
+    points = figures.sweep_points(sources, "lower:c")
+    assert [x for _, x, _ in points] == [15.0, 16.0]  # Sellar has no constraint c
+    for cr, c_lower, _ in points:
+        assert figures.objective_value(cr)[1] == pytest.approx(paraboloid_optimum(c_lower)[2],
+                                                               rel=1e-6)
+    path = figures.plot_sweep(points, tmp_path / "sweep.png", xlabel="L",
+                              highlight=[("start", runs["ipopt"][0], 15.0)])
+    assert _is_png(path)
+
+
+# ------------------------------------------------------------------------------------------------
+# report
+
+
+def _links(index):
+    return re.findall(r"\]\(([^)]+)\)", index.read_text())
+
+
+def test_write_report_on_a_folder(runs, tmp_path):
+    spec = report.ReportSpec(
+        design_quantities=(("x", "x"), ("f", "f_xy")),
+        meshes=("wing_mesh", "tail_mesh"), rotors=(("hubs", "radii"), ("no_hubs", "radii")),
+        mass_breakdown="v", mass_labels=("x", "y", "x+y"), mass_units="cm",
+        conditions=("hover", "cruise"), power="{condition}.electrical_power",
+        figure_of_merit="{condition}.figure_of_merit", fom_conditions=("hover",),
+        distributions=(report.DistributionSpec("stress", ("stress",), x="stations"),),
+        sweeps=(report.SweepSpec("sweep_c", "lower:c"),))
+    index = report.write_report(runs["root"], tmp_path / "report", spec)
+    links = _links(index)
+    assert links and all((index.parent / link).is_file() for link in links)
+    names = {Path(link).name for link in links}
+    for run in ("ipopt", "slsqp", "sellar"):
+        assert {f"constraints_{run}.md", f"constraints_{run}.csv",
+                f"design_variables_{run}.csv", f"convergence_{run}.png"} <= names
+    assert {"statistics.md", "designs.md", "planform.png", "mass_breakdown.png", "power.png",
+            "figure_of_merit.png", "stress.png", "sweep_c.png"} <= names
+    text = index.read_text()
+    # Sellar records none of the paraboloid's extras: the comparisons leave it out with a note,
+    # as they leave out the rotor pair that no run records.
+    assert "Runs left out (variables not recorded): sellar." in text
+    assert "Rotor disks ('no_hubs', 'radii') left out" in text
+    assert "## Skipped parts" not in text
+
+
+def test_write_report_lpc_defaults_skip_absent_parts(runs, tmp_path):
+    index = report.write_report({"opt": runs["ipopt"][0]}, tmp_path / "report")
+    text = index.read_text()
+    assert all((index.parent / link).is_file() for link in _links(index))
+    assert "## Skipped parts" in text
+    for part in ("design table", "planform", "mass breakdown", "skin_thickness",
+                 "stress_plus_3g", "sweep_energy_density", "sweep_final_soc"):
+        assert f"- {part}:" in text, part
+    # The test model records hover.electrical_power etc. under the LPC default names.
+    assert {"power.png", "figure_of_merit.png"} <= {Path(link).name for link in _links(index)}
+    generic = report.write_report(runs["ipopt"][0], tmp_path / "generic",
+                                  report.ReportSpec.generic())
+    assert "Skipped" not in generic.read_text()
