@@ -12,14 +12,16 @@ def test_sums_and_partials():
     prob.model.add_subsystem("f", ForceSumComp(sources=["wing", "rotor", "drag"],
                                                forces_only=["drag"], num_nodes=2),
                              promotes=["*"])
-    prob.model.add_subsystem("p", TotalPowerComp(num_motors=3, num_nodes=2), promotes=["*"])
+    prob.model.add_subsystem("p", TotalPowerComp(motors={"lift": 2, "pusher": 1},
+                                                            num_nodes=2), promotes=["*"])
     prob.setup(force_alloc_complex=True)
     rng = np.random.default_rng(1)
     values = {n: rng.normal(size=(2, 3)) for n in ("wing_force", "rotor_force", "drag_force",
                                                    "wing_moment", "rotor_moment")}
     for name, value in values.items():
         prob.set_val(name, value)
-    prob.set_val("motor_input_power", [[1.0, 2.0], [3.0, 4.0], [5.0, 6.0]])
+    prob.set_val("lift_motor_input_power", [[1.0, 2.0], [3.0, 4.0]])
+    prob.set_val("pusher_motor_input_power", [[5.0, 6.0]])
     prob.run_model()
     # Closed forms: plain sums (drag has no moment).
     assert_near_equal(prob.get_val("force"), values["wing_force"] + values["rotor_force"]

@@ -6,12 +6,13 @@ import openmdao.api as om
 
 class TotalPowerComp(om.ExplicitComponent):
     """
-    P_elec = sum over motors of the motor input power (paper Sec. III.G: the power of each
+    P_elec = sum over all motors of the motor input power (paper Sec. III.G: the power of each
     mission segment; reference/models_structures_motor_vehicle.md §8.10 default).
 
     Inputs
     ------
-    motor_input_power : (num_motors, num_nodes), W
+    {name}_motor_input_power : (num_motors of that set, num_nodes), W
+        One input per motor set (e.g. ``lift`` and ``pusher``).
 
     Outputs
     -------
@@ -19,23 +20,31 @@ class TotalPowerComp(om.ExplicitComponent):
 
     Options
     -------
-    num_motors, num_nodes : int
+    motors : dict
+        Motor-set name -> number of motors.
+    num_nodes : int
     """
 
     def initialize(self):
-        self.options.declare("num_motors", types=int, lower=1, desc="number of motors")
+        self.options.declare("motors", types=dict, desc="motor-set name -> number of motors")
         self.options.declare("num_nodes", default=1, types=int, lower=1,
                              desc="number of operating points")
 
     def setup(self):
-        nm, nn = self.options["num_motors"], self.options["num_nodes"]
-        self.add_input("motor_input_power", np.zeros((nm, nn)), units="W",
-                       desc="electrical input power of each motor")
+        nn = self.options["num_nodes"]
+        motors = self.options["motors"]
+        if not motors or any(not isinstance(n, int) or n < 1 for n in motors.values()):
+            raise ValueError(f"{self.msginfo}: motors = {motors}; must map names to motor "
+                             "counts >= 1.")
         self.add_output("electrical_power", np.zeros(nn), units="W", ref=1e5,
                         desc="total electrical power drawn from the battery")
-        rows = np.tile(np.arange(nn), nm)
-        self.declare_partials("electrical_power", "motor_input_power", rows=rows,
-                              cols=np.arange(nm * nn), val=1.0)
+        for name, nm in motors.items():
+            self.add_input(f"{name}_motor_input_power", np.zeros((nm, nn)), units="W",
+                           desc=f"electrical input power of each {name} motor")
+            self.declare_partials("electrical_power", f"{name}_motor_input_power",
+                                  rows=np.tile(np.arange(nn), nm), cols=np.arange(nm * nn),
+                                  val=1.0)
 
     def compute(self, inputs, outputs):
-        outputs["electrical_power"] = inputs["motor_input_power"].sum(axis=0)
+        outputs["electrical_power"] = sum(inputs[f"{name}_motor_input_power"].sum(axis=0)
+                                          for name in self.options["motors"])

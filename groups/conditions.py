@@ -1,0 +1,381 @@
+"""The design-condition groups of the lift-plus-cruise problem (paper Sec. IV, Fig. 11).
+
+Each condition is one OpenMDAO Group with its atmosphere, kinematics, the disciplines it needs and
+the six-degree-of-freedom equations of motion, whose accelerations are the trim constraints
+(paper eqs. 29, 34). Vehicle-level quantities (meshes, hub positions, radii, blade control points,
+motor lengths, mass properties) are inputs; ``groups/lpc.py`` connects them.
+
+Conditions and their groups (ARCHITECTURE.md §2):
+
+- ``hover``, ``oei_1``..``oei_4``: :class:`HoverCondition` (BEM lift rotors and motors, trim;
+  hover adds acoustics);
+- ``transition_1``..``transition_5``: :class:`TransitionCondition` (VLM + drag, Pitt–Peters
+  lift rotors, BEM pusher, 9 motors, prescribed speed, pitch and accelerations);
+- ``climb``, ``cruise``, ``descent``: :class:`SteadyFlightCondition` (VLM + drag, BEM pusher and
+  its motor; cruise adds the static margin);
+- ``plus_3g``, ``minus_1g``: :class:`StructuralCondition` (VLM at the load factor, wing-box beam,
+  stress and buckling).
+
+Variable names inside a condition (promoted): ``lift_radius`` (num_lift,), ``lift_chord_cp``,
+``lift_twist_cp`` (num_lift, 4), ``lift_hub_position`` (num_lift, 3), ``lift_motor_length``
+(num_lift,), ``lift_rotor_speed`` (1, num_speed_groups) and the ``pusher_`` equivalents; outputs
+``linear_acceleration``, ``angular_acceleration`` (1, 3), ``electrical_power`` (1,),
+``lift_motor_em_torque``/``pusher_motor_em_torque``, and the discipline outputs.
+"""
+
+import numpy as np
+import openmdao.api as om
+
+from lpc_mdo.components.aero.drag_buildup import DragBuildupComp, lpc_drag_components
+from lpc_mdo.components.aero.polar import LinearQuadraticPolar, Polar
+from lpc_mdo.components.atmosphere import AtmosphereComp
+from lpc_mdo.components.dynamics.eom import EquationsOfMotionComp
+from lpc_mdo.components.dynamics.force_sum import ForceSumComp
+from lpc_mdo.components.dynamics.stability_derivatives import (
+    AnglePerturbationComp,
+    StabilityDerivativeComp,
+)
+from lpc_mdo.components.dynamics.static_margin import NeutralPointComp, StaticMarginComp
+from lpc_mdo.components.energy.power import TotalPowerComp
+from lpc_mdo.components.kinematics import KinematicsComp
+from lpc_mdo.components.rotor.rotor_speed import RotorSpeedComp
+from lpc_mdo.groups.acoustics import RotorNoiseGroup
+from lpc_mdo.groups.beam import BoxBeamGroup
+from lpc_mdo.groups.motor import MotorGroup
+from lpc_mdo.groups.pitt_peters import PittPetersRotorGroup
+from lpc_mdo.groups.rotor import BEMRotorGroup
+from lpc_mdo.groups.vlm import VLMGroup, lpc_vlm_surfaces
+
+NUM_CP = 4
+
+
+def _declare_common(group):
+    group.options.declare("vehicle", desc="lpc_mdo.vehicle.Vehicle")
+    group.options.declare("condition", types=str, desc="condition name in the vehicle file")
+    group.options.declare("rotor_polar", default=LinearQuadraticPolar(), types=Polar,
+                          desc="blade-section polar of the rotors")
+    group.options.declare("num_radial", default=25, types=int, lower=2,
+                          desc="radial stations of the rotor models")
+
+
+def _motor_parameters(vehicle):
+    from lpc_mdo.groups.vehicle import motor_parameters
+
+    return motor_parameters(vehicle)
+
+
+def _add_atmosphere(group, condition):
+    group.add_subsystem("atmosphere", AtmosphereComp(num_nodes=1), promotes=["*"])
+    group.set_input_defaults("altitude", np.array([condition.altitude]), units="m")
+
+
+def _add_lift_rotors(group, vehicle, rotors, speed_groups, num_groups, model, edgewise):
+    """Lift rotors (BEM or Pitt–Peters) with their speeds and motors, promoted as ``lift_*``."""
+    na = len(rotors)
+    opts = group.options
+    group.add_subsystem("lift_speed", RotorSpeedComp(group=speed_groups, num_groups=num_groups),
+                        promotes_inputs=[("group_speed", "lift_rotor_speed")],
+                        promotes_outputs=[("rpm", "lift_rpm")])
+    rotor_cls = PittPetersRotorGroup if edgewise else BEMRotorGroup
+    kwargs = {"num_azimuth": opts["num_azimuth"]} if edgewise else {}
+    group.add_subsystem("lift_rotors", rotor_cls(
+        rotors=list(rotors), num_nodes=1, num_radial=opts["num_radial"],
+        polar=opts["rotor_polar"], **kwargs),
+        promotes_inputs=[("radius", "lift_radius"), ("chord_cp", "lift_chord_cp"),
+                         ("twist_cp", "lift_twist_cp"), ("rpm", "lift_rpm"),
+                         ("hub_position", "lift_hub_position"), "velocity", "density",
+                         "speed_of_sound", "dynamic_viscosity"],
+        promotes_outputs=[("thrust", "lift_thrust"), ("torque", "lift_torque"),
+                          ("power", "lift_power"), ("tip_mach", "lift_tip_mach"),
+                          ("figure_of_merit", "lift_figure_of_merit"),
+                          ("total_force", "lift_force"), ("total_moment", "lift_moment")])
+    group.add_subsystem("lift_motors", MotorGroup(
+        num_motors=na, num_nodes=1, length_to_diameter=vehicle.motor.length_to_diameter,
+        parameters=_motor_parameters(vehicle)),
+        promotes_inputs=[("length", "lift_motor_length"), ("rotor_rpm", "lift_rpm")],
+        promotes_outputs=[("input_power", "lift_motor_input_power"),
+                          ("em_torque", "lift_motor_em_torque"),
+                          ("torque_margin", "lift_motor_torque_margin"),
+                          ("peak_torque", "lift_motor_peak_torque")])
+    group.connect("lift_torque", "lift_motors.rotor_torque")
+    group.set_input_defaults("lift_radius", np.array([r.radius for r in rotors]), units="m")
+    group.set_input_defaults("lift_hub_position", np.array([r.hub_position for r in rotors]),
+                             units="m")
+
+
+def _add_pusher(group, vehicle):
+    """The pusher by BEM with its motor, promoted as ``pusher_*``."""
+    opts = group.options
+    pusher = vehicle.pusher
+    group.add_subsystem("pusher", BEMRotorGroup(
+        rotors=[pusher], num_nodes=1, num_radial=opts["num_radial"], polar=opts["rotor_polar"]),
+        promotes_inputs=[("radius", "pusher_radius"), ("chord_cp", "pusher_chord_cp"),
+                         ("twist_cp", "pusher_twist_cp"), ("rpm", "pusher_rpm"),
+                         ("hub_position", "pusher_hub_position"), "velocity", "density",
+                         "speed_of_sound", "dynamic_viscosity"],
+        promotes_outputs=[("thrust", "pusher_thrust"), ("torque", "pusher_torque"),
+                          ("power", "pusher_power"), ("efficiency", "pusher_efficiency"),
+                          ("total_force", "pusher_force"), ("total_moment", "pusher_moment")])
+    group.add_subsystem("pusher_motor", MotorGroup(
+        num_motors=1, num_nodes=1, length_to_diameter=vehicle.motor.length_to_diameter,
+        parameters=_motor_parameters(vehicle)),
+        promotes_inputs=[("length", "pusher_motor_length"), ("rotor_rpm", "pusher_rpm")],
+        promotes_outputs=[("input_power", "pusher_motor_input_power"),
+                          ("em_torque", "pusher_motor_em_torque"),
+                          ("torque_margin", "pusher_motor_torque_margin"),
+                          ("peak_torque", "pusher_motor_peak_torque")])
+    group.connect("pusher_torque", "pusher_motor.rotor_torque")
+    group.set_input_defaults("pusher_radius", np.array([pusher.radius]), units="m")
+    group.set_input_defaults("pusher_hub_position", np.array([pusher.hub_position]), units="m")
+
+
+def _add_aerodynamics(group, vehicle, condition, wing_zero_lift_angle, stability=False):
+    """Kinematics, wing + tail VLM and the parasite-drag build-up.
+
+    Outputs ``aero_force``/``aero_moment`` (about the body origin) and ``drag_force``; with
+    ``stability`` a second VLM at alpha + delta gives the neutral point and static margin.
+    """
+    opts = group.options
+    surfaces = lpc_vlm_surfaces(opts["wing_panels"], opts["tail_panels"])
+    vlm_inputs = ["wing_mesh", "horizontal_tail_mesh", "speed", "density",
+                  ("reference_area", "wing_area"), ("horizontal_tail_deflection", "elevator"),
+                  "wing_zero_lift_angle"]
+    group.add_subsystem("kinematics", KinematicsComp(num_nodes=1), promotes=["*"])
+    group.add_subsystem("vlm", VLMGroup(surfaces=surfaces, num_nodes=1),
+                        promotes_inputs=vlm_inputs + ["angle_of_attack"],
+                        promotes_outputs=[("force", "aero_force"), ("moment", "aero_moment"),
+                                          "lift", "CL", "induced_drag", "wing_sectional_cl",
+                                          "panel_forces", "force_points"])
+    group.set_input_defaults("wing_zero_lift_angle",
+                             np.full((1, opts["wing_panels"]), wing_zero_lift_angle),
+                             units="rad")
+    group.set_input_defaults("elevator", np.zeros(1), units="rad")
+
+    components, values = lpc_drag_components(vehicle)
+    renames = {"wing_mean_aerodynamic_chord": "wing_mac", "horizontal_tail_area": "htail_area",
+               "horizontal_tail_mean_aerodynamic_chord": "htail_mac",
+               "reference_area": "wing_area"}
+    group.add_subsystem("drag", DragBuildupComp(components=components, num_nodes=1),
+                        promotes_inputs=[(k, renames.get(k, f"drag_{k}")) for k in values
+                                         if k not in ("wing_area", "fuselage_length")]
+                        + ["wing_area", "fuselage_length", "speed", "density",
+                           "dynamic_viscosity", "speed_of_sound", "angle_of_attack"],
+                        promotes_outputs=[("parasite_drag_force", "drag_force"),
+                                          "parasite_drag", "CD0"])
+    for name, value in values.items():
+        if name not in renames and name not in ("wing_area", "fuselage_length"):
+            group.set_input_defaults(f"drag_{name}", value)
+
+    group.set_input_defaults("speed", np.array([condition.speed]), units="m/s")
+    group.set_input_defaults("pitch", np.array([condition.pitch]), units="rad")
+    group.set_input_defaults("flight_path_angle", np.array([condition.flight_path_angle]),
+                             units="rad")
+
+    if stability:
+        delta = 1e-3
+        group.add_subsystem("perturbation", AnglePerturbationComp(delta=delta), promotes=["*"])
+        group.add_subsystem("vlm_perturbed", VLMGroup(surfaces=surfaces, num_nodes=1),
+                            promotes_inputs=vlm_inputs + [("angle_of_attack",
+                                                           "perturbed_angle_of_attack")],
+                            promotes_outputs=[("force", "perturbed_aero_force"),
+                                              ("moment", "perturbed_aero_moment")])
+        group.add_subsystem("stability_derivatives", StabilityDerivativeComp(delta=delta),
+                            promotes_inputs=[("force", "aero_force"),
+                                             ("moment", "aero_moment"),
+                                             ("perturbed_force", "perturbed_aero_force"),
+                                             ("perturbed_moment", "perturbed_aero_moment")],
+                            promotes_outputs=["normal_force_slope", "pitching_moment_slope"])
+        nose_to_tail = (0.0, -1.5 * vehicle.fuselage.length)
+        group.add_subsystem("neutral_point", NeutralPointComp(bracket=nose_to_tail),
+                            promotes=["*"])
+        group.add_subsystem("static_margin", StaticMarginComp(),
+                            promotes_inputs=["neutral_point", "cg_x",
+                                             ("mean_aerodynamic_chord", "wing_mac")],
+                            promotes_outputs=["static_margin"])
+
+
+def _add_equations_of_motion(group, sources, forces_only=(), load_factor=1.0):
+    group.add_subsystem("loads", ForceSumComp(sources=sources, forces_only=forces_only),
+                        promotes=["*"])
+    group.add_subsystem("eom", EquationsOfMotionComp(num_nodes=1),
+                        promotes_inputs=[("mass", "gross_mass"), "cg", "inertia", "force",
+                                         "moment", "pitch", "velocity", "load_factor"],
+                        promotes_outputs=["linear_acceleration", "angular_acceleration"])
+    group.set_input_defaults("load_factor", np.array([load_factor]))
+
+
+def _add_power(group, motors):
+    group.add_subsystem("power", TotalPowerComp(motors=motors), promotes=["*"])
+
+
+class HoverCondition(om.Group):
+    """
+    Hover (and one-engine-inoperative hover): BEM lift rotors, their motors, trim, and in hover
+    the noise at the paper's observer (paper Sec. IV; reference page §8.3, §8.5).
+
+    The failed rotor of an OEI case (``failed_rotor`` in the vehicle file) is left out; the
+    seven working rotors have their own speeds (one speed group each), while in hover the
+    mirror-symmetric pairs share theirs. Trim: all six accelerations are outputs; the full
+    problem constrains w_dot, p_dot, q_dot in hover and v_dot, w_dot, p_dot, q_dot, r_dot in OEI.
+
+    Outputs: ``linear_acceleration``, ``angular_acceleration`` (1, 3); ``electrical_power``
+    (1,); ``lift_tip_mach``, ``lift_figure_of_merit``, ``lift_motor_torque_margin``,
+    ``lift_motor_em_torque`` (num_lift, 1); in hover ``total_spl_a`` (dBA).
+    """
+
+    def initialize(self):
+        _declare_common(self)
+        self.options.declare("acoustics", default=None, types=bool, allow_none=True,
+                             desc="add the noise model (None: in hover, not in OEI)")
+
+    def setup(self):
+        vehicle = self.options["vehicle"]
+        condition = vehicle.condition(self.options["condition"])
+        failed = condition.failed_rotor
+        self.active_rotors = [i for i in range(len(vehicle.lift_rotors)) if i != failed]
+        rotors = [vehicle.lift_rotors[i] for i in self.active_rotors]
+        if failed >= 0:
+            groups, num_groups = list(range(len(rotors))), len(rotors)
+        else:
+            groups, num_groups = [r.pair for r in rotors], 4
+        self.speed_groups = num_groups
+
+        _add_atmosphere(self, condition)
+        _add_lift_rotors(self, vehicle, rotors, groups, num_groups, "bem", edgewise=False)
+        self.set_input_defaults("velocity", np.zeros((1, 3)), units="m/s")
+        _add_power(self, {"lift": len(rotors)})
+        _add_equations_of_motion(self, ["lift"])
+        self.set_input_defaults("pitch", np.zeros(1), units="rad")
+
+        acoustics = self.options["acoustics"]
+        if acoustics is None:
+            acoustics = failed < 0
+        if acoustics:
+            nrad = self.options["num_radial"]
+            na = len(rotors)
+            self.add_subsystem("noise", RotorNoiseGroup(
+                num_rotors=na, num_radial=nrad, num_azimuth=1,
+                num_blades=[r.num_blades for r in rotors],
+                hub_radius_ratio=rotors[0].hub_radius_ratio, load_input="sectional",
+                rotation_direction=tuple(float(r.spin_direction) for r in rotors)),
+                promotes_inputs=[("radius", "lift_radius"), ("hub_position", "lift_hub_position"),
+                                 "density", "speed_of_sound"],
+                promotes_outputs=["total_spl_a", "total_spl", "rotor_spl_a"])
+            # (rotor, node = 0, station) of the BEM -> (rotor, station, azimuth = 0) of the
+            # acoustics: a fancy index of the source shaped like the target.
+            rotor, station = np.meshgrid(np.arange(na), np.arange(nrad), indexing="ij")
+            reshape = om.slicer[rotor[..., None], 0 * rotor[..., None], station[..., None]]
+            for name in ("thrust_per_span", "drag_per_span", "inflow_angle"):
+                self.connect(f"lift_rotors.{name}", f"noise.{name}", src_indices=reshape)
+            self.connect("lift_rotors.chord", "noise.chord")
+            self.connect("lift_thrust", "noise.thrust", src_indices=np.arange(na),
+                         flat_src_indices=True)
+            self.connect("lift_rpm", "noise.rpm", src_indices=np.arange(na),
+                         flat_src_indices=True)
+
+
+class SteadyFlightCondition(om.Group):
+    """
+    Climb, cruise or descent: VLM + parasite drag, the pusher by BEM and its motor, trim in
+    F_x, F_z, M_y (paper Sec. IV; reference page §8.2–8.3). Pitch, elevator and pusher speed
+    are inputs (design variables). With ``stability`` (cruise) the neutral point and the static
+    margin (paper eq. 30) are added.
+    """
+
+    def initialize(self):
+        _declare_common(self)
+        self.options.declare("wing_zero_lift_angle", default=0.0, types=float,
+                             desc="sectional zero-lift angle of the wing airfoil, rad")
+        self.options.declare("wing_panels", default=26, types=int, desc="wing VLM panels")
+        self.options.declare("tail_panels", default=8, types=int, desc="tail VLM panels")
+        self.options.declare("stability", default=False, types=bool,
+                             desc="add the neutral point and static margin")
+
+    def setup(self):
+        vehicle = self.options["vehicle"]
+        condition = vehicle.condition(self.options["condition"])
+        _add_atmosphere(self, condition)
+        _add_aerodynamics(self, vehicle, condition, self.options["wing_zero_lift_angle"],
+                          stability=self.options["stability"])
+        _add_pusher(self, vehicle)
+        _add_power(self, {"pusher": 1})
+        _add_equations_of_motion(self, ["aero", "drag", "pusher"], forces_only=["drag"])
+
+
+class TransitionCondition(om.Group):
+    """
+    A quasi-steady transition point: prescribed speed and pitch, VLM + drag, Pitt–Peters lift
+    rotors (pairs share speeds), the BEM pusher and all nine motors (paper Sec. IV; reference
+    page §8.4). The full problem constrains u_dot and w_dot to the prescribed acceleration
+    (dV/dt cos theta, dV/dt sin theta) and v_dot, p_dot, q_dot, r_dot to zero.
+    """
+
+    def initialize(self):
+        _declare_common(self)
+        self.options.declare("wing_zero_lift_angle", default=0.0, types=float,
+                             desc="sectional zero-lift angle of the wing airfoil, rad")
+        self.options.declare("wing_panels", default=26, types=int, desc="wing VLM panels")
+        self.options.declare("tail_panels", default=8, types=int, desc="tail VLM panels")
+        self.options.declare("num_azimuth", default=25, types=int, lower=3,
+                             desc="azimuthal stations of the Pitt-Peters rotors")
+
+    def setup(self):
+        vehicle = self.options["vehicle"]
+        condition = vehicle.condition(self.options["condition"])
+        rotors = vehicle.lift_rotors
+        self.active_rotors = list(range(len(rotors)))
+        self.speed_groups = 4
+        _add_atmosphere(self, condition)
+        _add_aerodynamics(self, vehicle, condition, self.options["wing_zero_lift_angle"])
+        _add_lift_rotors(self, vehicle, rotors, [r.pair for r in rotors], 4, "pitt_peters",
+                         edgewise=True)
+        _add_pusher(self, vehicle)
+        _add_power(self, {"lift": len(rotors), "pusher": 1})
+        _add_equations_of_motion(self, ["aero", "drag", "lift", "pusher"],
+                                 forces_only=["drag"])
+
+
+class StructuralCondition(om.Group):
+    """
+    +3g or -1g pull-up/push-over: VLM at the load factor, trim in F_z only, and the wing-box
+    beam of the right half wing loaded by the VLM panel forces plus its own inertia at the load
+    factor, with stress and curved-panel buckling (paper Sec. III.D, IV; reference page §6).
+    Pitch is an input (design variable); the elevator is held at zero.
+    """
+
+    def initialize(self):
+        _declare_common(self)
+        self.options.declare("wing_zero_lift_angle", default=0.0, types=float,
+                             desc="sectional zero-lift angle of the wing airfoil, rad")
+        self.options.declare("wing_panels", default=26, types=int, desc="wing VLM panels")
+        self.options.declare("tail_panels", default=8, types=int, desc="tail VLM panels")
+
+    def setup(self):
+        vehicle = self.options["vehicle"]
+        condition = vehicle.condition(self.options["condition"])
+        n_wing = self.options["wing_panels"]
+        right = np.arange(n_wing // 2, n_wing)  # wing panels with y > 0 (one chord-wise row)
+        _add_atmosphere(self, condition)
+        _add_aerodynamics(self, vehicle, condition, self.options["wing_zero_lift_angle"])
+        _add_equations_of_motion(self, ["aero", "drag"], forces_only=["drag"],
+                                 load_factor=condition.load_factor)
+        nodes = vehicle.wing_box.num_bays + 1
+        self.add_subsystem("beam", BoxBeamGroup(num_nodes=nodes, num_aero_points=right.size),
+                           promotes_inputs=[("nodes", "wing_box_nodes"), "box_width",
+                                            "box_height", "top_skin_thickness",
+                                            "bottom_skin_thickness", "front_spar_thickness",
+                                            "rear_spar_thickness", "top_skin_radius",
+                                            "bottom_skin_radius", "load_factor", "pitch",
+                                            ("density", "material_density")],
+                           promotes_outputs=["von_mises_stress", "top_skin_buckling_ratio",
+                                             "bottom_skin_buckling_ratio", "displacements",
+                                             "stress_ratio"])
+        self.connect("force_points", "beam.aero_points",
+                     src_indices=om.slicer[n_wing // 2:n_wing, :])
+        self.connect("panel_forces", "beam.aero_forces",
+                     src_indices=om.slicer[0, n_wing // 2:n_wing, :])
+        material = vehicle.material
+        for name, units in (("youngs_modulus", "Pa"), ("shear_modulus", "Pa"),
+                            ("poisson_ratio", None), ("allowable_stress", "Pa")):
+            self.promotes("beam", inputs=[(name, f"material_{name}")])
+            self.set_input_defaults(f"material_{name}", getattr(material, name), units=units)

@@ -1,0 +1,427 @@
+"""The full lift-plus-cruise model: vehicle, 15 design conditions, mission energy, constraints."""
+
+import numpy as np
+import openmdao.api as om
+
+from lpc_mdo.components.energy.battery import BatteryComp
+from lpc_mdo.components.energy.mission_energy import MissionEnergyComp
+from lpc_mdo.components.gather import GatherComp
+from lpc_mdo.components.ks import KSComp
+from lpc_mdo.groups.conditions import (
+    HoverCondition,
+    SteadyFlightCondition,
+    StructuralCondition,
+    TransitionCondition,
+)
+from lpc_mdo.groups.vehicle import VehicleGroup
+from lpc_mdo.vehicle import reference_vehicle
+
+PUSHER = 4  # row of the pusher in the per-rotor-group design variables
+
+_CONDITION_CLASSES = {
+    "hover": HoverCondition,
+    "oei": HoverCondition,
+    "transition": TransitionCondition,
+    "steady": SteadyFlightCondition,
+    "structural": StructuralCondition,
+}
+
+
+def _units(units):
+    """OpenMDAO units of a vehicle-file design variable ('unitless' is None)."""
+    return None if units == "unitless" else units
+
+
+def _row(index):
+    """src_indices that take row ``index`` of a 2-D source as a (1, n) target."""
+    return om.slicer[[index], :]
+
+
+def _as_row(size, start=0):
+    """src_indices that take ``size`` entries of a 1-D source as a (1, size) target."""
+    return om.slicer[np.arange(start, start + size)[np.newaxis, :]]
+
+
+class LPCGroup(om.Group):
+    """
+    System-level model of the lift-plus-cruise vehicle (paper Fig. 11, Table 6).
+
+    ``design_variables`` (an IndepVarComp) holds the 30 design-variable arrays of the vehicle
+    file (161 values); ``vehicle`` (VehicleGroup) turns them into geometry and mass properties;
+    each design condition is a subsystem named as in the vehicle file (``hover``,
+    ``transition_1`` .. ``transition_5``, ``climb``, ``cruise``, ``descent``, ``oei_1`` ..
+    ``oei_4``, ``plus_3g``, ``minus_1g``); ``mission`` and ``battery`` give the final state of
+    charge; ``lift_margin``/``pusher_margin`` aggregate the motor torque margins over the
+    conditions by KS (paper eq. 7). With ``design_problem`` the paper's design variables,
+    96 constraints and the gross-mass objective are declared (see :meth:`add_design_problem`).
+
+    Options
+    -------
+    vehicle : Vehicle or None
+    static_margin : bool
+        Constrain the cruise static margin (paper Sec. V.B, with and without).
+    design_problem : bool
+        Declare design variables, constraints and objective.
+    rotor_polar : Polar or None
+        Blade-section polar of all rotors (None: the vehicle rotor airfoil's table).
+    wing_zero_lift_angle : float or None
+        Sectional zero-lift angle of the wing airfoil, rad (None: from its table).
+    ks_rho : float
+        KS aggregation parameter of the torque margins.
+    """
+
+    def initialize(self):
+        self.options.declare(
+            "vehicle",
+            default=None,
+            allow_none=True,
+            desc="lpc_mdo.vehicle.Vehicle; None = reference vehicle",
+        )
+        self.options.declare(
+            "static_margin", default=True, types=bool, desc="constrain the cruise static margin"
+        )
+        self.options.declare(
+            "design_problem",
+            default=True,
+            types=bool,
+            desc="declare design variables, constraints and objective",
+        )
+        self.options.declare(
+            "rotor_polar",
+            default=None,
+            allow_none=True,
+            desc="blade-section polar (None: from the rotor airfoil)",
+        )
+        self.options.declare(
+            "wing_zero_lift_angle",
+            default=None,
+            allow_none=True,
+            types=float,
+            desc="wing sectional zero-lift angle, rad",
+        )
+        self.options.declare(
+            "ks_rho", default=50.0, types=float, desc="KS parameter of the torque-margin aggregates"
+        )
+
+    def setup(self):
+        vehicle = self.options["vehicle"] or reference_vehicle()
+        self.vehicle_spec = vehicle
+        polar, alpha0 = _airfoil_models(
+            vehicle, self.options["rotor_polar"], self.options["wing_zero_lift_angle"]
+        )
+
+        dvs = self.add_subsystem("design_variables", om.IndepVarComp(), promotes=["*"])
+        for name, dv in vehicle.design_variables.items():
+            dvs.add_output(
+                name,
+                np.asarray(dv.initial_array).reshape(dv.shape),
+                units=_units(dv.units),
+                desc=dv.description,
+            )
+        self.add_subsystem("vehicle", VehicleGroup(vehicle=vehicle), promotes=["*"])
+
+        self.condition_names = []
+        for condition in vehicle.conditions:
+            kind = condition.kind
+            kwargs = {"vehicle": vehicle, "condition": condition.name, "rotor_polar": polar}
+            if kind in ("transition", "steady", "structural"):
+                kwargs["wing_zero_lift_angle"] = alpha0
+            if condition.name == "cruise":
+                kwargs["stability"] = True
+            self.add_subsystem(condition.name, _CONDITION_CLASSES[kind](**kwargs))
+            self.condition_names.append(condition.name)
+
+        self._add_mission(vehicle)
+        if self.options["design_problem"]:
+            self.add_design_problem()
+
+    # ------------------------------------------------------------------ connections
+
+    def configure(self):
+        vehicle = self.vehicle_spec
+        pair = np.array([r.pair for r in vehicle.lift_rotors])
+        for condition in vehicle.conditions:
+            name, kind = condition.name, condition.kind
+            sub = getattr(self, name)
+            self.connect("gross_mass", f"{name}.gross_mass")
+            self.connect("cg", f"{name}.cg")
+            self.connect("inertia", f"{name}.inertia")
+            if kind in ("hover", "oei", "transition"):
+                active = np.array(sub.active_rotors)
+                self.connect("lift_rotor_radius", f"{name}.lift_radius", src_indices=active)
+                self.connect(
+                    "blade_chord_cp",
+                    f"{name}.lift_chord_cp",
+                    src_indices=om.slicer[pair[active], :],
+                )
+                self.connect(
+                    "blade_twist_cp",
+                    f"{name}.lift_twist_cp",
+                    src_indices=om.slicer[pair[active], :],
+                )
+                self.connect(
+                    "lift_hub_position",
+                    f"{name}.lift_hub_position",
+                    src_indices=om.slicer[active, :],
+                )
+                self.connect("motor_length", f"{name}.lift_motor_length", src_indices=pair[active])
+            if kind in ("transition", "steady"):
+                self.connect("rotor_radius", f"{name}.pusher_radius", src_indices=[PUSHER])
+                self.connect("blade_chord_cp", f"{name}.pusher_chord_cp", src_indices=_row(PUSHER))
+                self.connect("blade_twist_cp", f"{name}.pusher_twist_cp", src_indices=_row(PUSHER))
+                self.connect(
+                    "pusher_hub_position", f"{name}.pusher_hub_position", src_indices=_as_row(3)
+                )
+                self.connect("motor_length", f"{name}.pusher_motor_length", src_indices=[PUSHER])
+            if kind in ("transition", "steady", "structural"):
+                for src, tgt in (
+                    ("wing_mesh", "wing_mesh"),
+                    ("horizontal_tail_mesh", "horizontal_tail_mesh"),
+                    ("wing_area", "wing_area"),
+                    ("wing_mac", "wing_mac"),
+                    ("htail_area", "htail_area"),
+                    ("htail_mac", "htail_mac"),
+                    ("fuselage_length", "fuselage_length"),
+                ):
+                    self.connect(src, f"{name}.{tgt}")
+            if kind == "hover":
+                self.connect("hover_lift_rpm", f"{name}.lift_rotor_speed", src_indices=_as_row(4))
+            elif kind == "oei":
+                k = int(name.split("_")[1]) - 1
+                self.connect("oei_lift_rpm", f"{name}.lift_rotor_speed", src_indices=_row(k))
+            elif kind == "transition":
+                k = int(name.split("_")[1]) - 1
+                self.connect("transition_lift_rpm", f"{name}.lift_rotor_speed", src_indices=_row(k))
+                self.connect(
+                    "transition_pusher_rpm", f"{name}.pusher_rpm", src_indices=_as_row(1, start=k)
+                )
+                self.connect("transition_elevator", f"{name}.elevator", src_indices=[k])
+            elif kind == "steady":
+                self.connect(f"{name}_pusher_rpm", f"{name}.pusher_rpm", src_indices=_as_row(1))
+                self.connect(f"{name}_pitch", f"{name}.pitch")
+                self.connect(f"{name}_elevator", f"{name}.elevator")
+                if name == "cruise":
+                    self.connect("cg", "cruise.cg_x", src_indices=[0])
+            elif kind == "structural":
+                self.connect(f"{name}_pitch", f"{name}.pitch")
+                for var in (
+                    "wing_box_nodes",
+                    "box_width",
+                    "box_height",
+                    "top_skin_thickness",
+                    "bottom_skin_thickness",
+                    "front_spar_thickness",
+                    "rear_spar_thickness",
+                    "top_skin_radius",
+                    "bottom_skin_radius",
+                ):
+                    self.connect(var, f"{name}.{var}")
+
+        for i, condition in enumerate(vehicle.conditions):
+            if condition.kind != "structural":
+                self.connect(
+                    f"{condition.name}.electrical_power", f"power_mux.electrical_power_{i}"
+                )
+        lift = [c.name for c in vehicle.conditions if c.kind in ("hover", "oei", "transition")]
+        for name in lift:
+            self.connect(f"{name}.lift_motor_torque_margin", f"lift_margin_gather.{name}")
+        push = [c.name for c in vehicle.conditions if c.kind in ("transition", "steady")]
+        for name in push:
+            self.connect(f"{name}.pusher_motor_torque_margin", f"pusher_margin_gather.{name}")
+        super().configure()
+
+    # ------------------------------------------------------------------ the design problem
+
+    def add_design_problem(self):
+        """
+        Declare the paper's design variables (161), constraints (96) and objective (Table 6).
+
+        Constraints, with their count:
+
+        - hover: total noise <= limit (1); w_dot, p_dot, q_dot = 0 (3); tip Mach <= limit, one
+          rotor per pair (4);
+        - climb, cruise, descent: u_dot, w_dot, q_dot = 0 (3 x 3);
+        - transition points: u_dot = a cos(theta), w_dot = a sin(theta) (2 x 5); v_dot, p_dot,
+          q_dot, r_dot = 0 (4 x 5);
+        - OEI: v_dot, w_dot, p_dot, q_dot, r_dot = 0 (5 x 4);
+        - +3g, -1g: w_dot = 0 (2);
+        - cruise static margin >= limit (1, if ``static_margin``);
+        - buckling ratio <= 1 of the top skin at +3g and the bottom skin at -1g, all bays but the
+          tip bay (2 x 7);
+        - final state of charge >= limit (1); radius intersection = target (2);
+        - motor torque margin >= limit, KS over the conditions (8 lift + 1 pusher).
+        """
+        vehicle = self.vehicle_spec
+        limits = vehicle.constraints
+        for name, dv in vehicle.design_variables.items():
+            shape = dv.shape
+            self.add_design_var(
+                name,
+                lower=np.asarray(dv.lower_array).reshape(shape),
+                upper=np.asarray(dv.upper_array).reshape(shape),
+                ref=dv.ref,
+                units=_units(dv.units),
+            )
+        self.add_objective("gross_mass", ref=vehicle.masses.target_gross_mass, units="kg")
+
+        g = 9.81
+        self.add_constraint("hover.total_spl_a", upper=limits.max_noise, ref=10.0)
+        self.add_constraint(
+            "hover.linear_acceleration", indices=[2], flat_indices=True, equals=0.0, ref=g
+        )
+        self.add_constraint(
+            "hover.angular_acceleration", indices=[0, 1], flat_indices=True, equals=0.0
+        )
+        tip = [
+            int(np.flatnonzero(np.array([r.pair for r in vehicle.lift_rotors]) == p)[0])
+            for p in range(4)
+        ]
+        self.add_constraint(
+            "hover.lift_tip_mach", indices=tip, flat_indices=True, upper=limits.max_tip_mach
+        )
+        for c in vehicle.conditions:
+            name = c.name
+            if c.kind == "steady":
+                self.add_constraint(
+                    f"{name}.linear_acceleration",
+                    indices=[0, 2],
+                    flat_indices=True,
+                    equals=0.0,
+                    ref=g,
+                )
+                self.add_constraint(
+                    f"{name}.angular_acceleration", indices=[1], flat_indices=True, equals=0.0
+                )
+            elif c.kind == "transition":
+                accel = np.array(
+                    [c.acceleration * np.cos(c.pitch), 0.0, c.acceleration * np.sin(c.pitch)]
+                )
+                self.add_constraint(
+                    f"{name}.linear_acceleration",
+                    indices=[0, 1, 2],
+                    flat_indices=True,
+                    equals=accel,
+                    ref=g,
+                )
+                self.add_constraint(
+                    f"{name}.angular_acceleration", indices=[0, 1, 2], flat_indices=True, equals=0.0
+                )
+            elif c.kind == "oei":
+                self.add_constraint(
+                    f"{name}.linear_acceleration",
+                    indices=[1, 2],
+                    flat_indices=True,
+                    equals=0.0,
+                    ref=g,
+                )
+                self.add_constraint(
+                    f"{name}.angular_acceleration", indices=[0, 1, 2], flat_indices=True, equals=0.0
+                )
+            elif c.kind == "structural":
+                self.add_constraint(
+                    f"{name}.linear_acceleration",
+                    indices=[2],
+                    flat_indices=True,
+                    equals=0.0,
+                    ref=g * abs(c.load_factor),
+                )
+        if self.options["static_margin"]:
+            self.add_constraint("cruise.static_margin", lower=limits.min_static_margin, ref=0.1)
+        bays = list(range(vehicle.wing_box.num_bays - 1))
+        self.add_constraint(
+            "plus_3g.top_skin_buckling_ratio",
+            indices=bays,
+            flat_indices=True,
+            upper=limits.max_buckling_ratio,
+        )
+        self.add_constraint(
+            "minus_1g.bottom_skin_buckling_ratio",
+            indices=bays,
+            flat_indices=True,
+            upper=limits.max_buckling_ratio,
+        )
+        self.add_constraint("state_of_charge", lower=limits.min_final_soc, ref=0.1)
+        self.add_constraint("radius_intersection", equals=limits.radius_intersection, ref=0.1)
+        self.add_constraint("lift_motor_torque_margin", lower=limits.min_torque_margin, ref=0.1)
+        self.add_constraint("pusher_motor_torque_margin", lower=limits.min_torque_margin, ref=0.1)
+
+    # ------------------------------------------------------------------ mission and margins
+
+    def _add_mission(self, vehicle):
+        conditions = vehicle.conditions
+        n = len(conditions)
+        mux = self.add_subsystem("power_mux", om.MuxComp(vec_size=n))
+        mux.add_var("electrical_power", shape=(1,), axis=0, units="W")
+        self.add_subsystem(
+            "mission",
+            MissionEnergyComp(energy_multipliers=[c.energy_multiplier for c in conditions]),
+            promotes_outputs=["energy_used", "segment_energy"],
+        )
+        self.connect("power_mux.electrical_power", "mission.electrical_power")
+        self.set_input_defaults(
+            "mission.duration", np.array([c.duration for c in conditions]), units="s"
+        )
+        self.add_subsystem(
+            "battery",
+            BatteryComp(),
+            promotes_inputs=["battery_mass", "energy_used"],
+            promotes_outputs=["state_of_charge", "energy_capacity"],
+        )
+
+        lift = [c for c in conditions if c.kind in ("hover", "oei", "transition")]
+        items = []
+        for c in lift:
+            failed = c.failed_rotor
+            items.append([i for i in range(len(vehicle.lift_rotors)) if i != failed])
+        self.add_subsystem(
+            "lift_margin_gather",
+            GatherComp(
+                name="torque_margin",
+                sources=[c.name for c in lift],
+                items=items,
+                num_items=len(vehicle.lift_rotors),
+            ),
+        )
+        self.add_subsystem(
+            "lift_margin",
+            KSComp(
+                vec_size=len(vehicle.lift_rotors),
+                width=len(lift),
+                rho=self.options["ks_rho"],
+                lower_flag=True,
+            ),
+            promotes_outputs=[("KS", "lift_motor_torque_margin")],
+        )
+        self.connect("lift_margin_gather.torque_margin", "lift_margin.g")
+        push = [c for c in conditions if c.kind in ("transition", "steady")]
+        self.add_subsystem(
+            "pusher_margin_gather",
+            GatherComp(
+                name="torque_margin",
+                sources=[c.name for c in push],
+                items=[[0]] * len(push),
+                num_items=1,
+            ),
+        )
+        self.add_subsystem(
+            "pusher_margin",
+            KSComp(vec_size=1, width=len(push), rho=self.options["ks_rho"], lower_flag=True),
+            promotes_outputs=[("KS", "pusher_motor_torque_margin")],
+        )
+        self.connect("pusher_margin_gather.torque_margin", "pusher_margin.g")
+
+
+def _airfoil_models(vehicle, rotor_polar, wing_zero_lift_angle):
+    """The rotor polar and the wing's sectional zero-lift angle from the airfoil tables."""
+    if rotor_polar is not None and wing_zero_lift_angle is not None:
+        return rotor_polar, wing_zero_lift_angle
+    from lpc_mdo.components.aero.airfoil import get_polar
+
+    if rotor_polar is None:
+        rotor_polar = get_polar(vehicle.lift_rotors[0].airfoil)
+    if wing_zero_lift_angle is None:
+        cruise = vehicle.condition("cruise")
+        reynolds = 1.11 * cruise.speed * vehicle.wing.mean_aerodynamic_chord / 1.76e-5
+        wing = get_polar(vehicle.wing.airfoil)
+        wing_zero_lift_angle = float(wing.zero_lift_angle(reynolds, cruise.speed / 336.4))
+    return rotor_polar, wing_zero_lift_angle

@@ -1,0 +1,133 @@
+"""The full lift-plus-cruise model (paper Table 6: 161 design variables, 96 constraints)."""
+
+from collections import Counter
+
+import numpy as np
+import openmdao.api as om
+import pytest
+from openmdao.utils.assert_utils import assert_check_totals, assert_near_equal
+
+from lpc_mdo.components.aero.polar import LinearQuadraticPolar
+from lpc_mdo.groups.lpc import LPCGroup
+
+# Paper Table 6, by group.
+TABLE6_DESIGN_VARIABLES = {
+    "planform (wing and tail S and AR, fuselage length)": 5,
+    "rotor radius": 5, "blade chord": 20, "blade twist": 20, "battery mass": 1,
+    "motor length": 5, "lift rotor speeds, hover": 4, "lift rotor speeds, transition": 20,
+    "lift rotor speeds, OEI": 28, "pusher speeds": 8, "pitch": 5, "elevator": 8,
+    "wing-box thicknesses": 32,
+}
+TABLE6_CONSTRAINTS = {
+    "hover noise": 1, "hover trim": 3, "hover tip Mach": 4, "climb/cruise/descent trim": 9,
+    "transition trim (v, p, q, r)": 20, "transition prescribed accelerations": 10,
+    "OEI trim": 20, "+3g/-1g trim": 2, "static margin": 1, "buckling": 14, "final SoC": 1,
+    "radius intersection": 2, "motor torque margin": 9,
+}
+
+
+def _dv_group(name):
+    if name in ("wing_area", "wing_aspect_ratio", "htail_area", "htail_aspect_ratio",
+                "fuselage_length"):
+        return "planform (wing and tail S and AR, fuselage length)"
+    table = {"rotor_radius": "rotor radius", "blade_chord_cp": "blade chord",
+             "blade_twist_cp": "blade twist", "battery_mass": "battery mass",
+             "motor_length": "motor length", "hover_lift_rpm": "lift rotor speeds, hover",
+             "transition_lift_rpm": "lift rotor speeds, transition",
+             "oei_lift_rpm": "lift rotor speeds, OEI"}
+    if name in table:
+        return table[name]
+    if name.endswith("pusher_rpm"):
+        return "pusher speeds"
+    if name.endswith("pitch"):
+        return "pitch"
+    if name.endswith("elevator"):
+        return "elevator"
+    return "wing-box thicknesses"
+
+
+def _constraint_group(name, meta):
+    cond = name.split(".")[0]
+    if name == "hover.total_spl_a":
+        return "hover noise"
+    if name == "hover.lift_tip_mach":
+        return "hover tip Mach"
+    if cond == "hover":
+        return "hover trim"
+    if cond in ("climb", "cruise", "descent") and "acceleration" in name:
+        return "climb/cruise/descent trim"
+    if cond.startswith("transition"):
+        if name.endswith("linear_acceleration"):
+            return None  # split below: u and w prescribed, v zero
+        return "transition trim (v, p, q, r)"
+    if cond.startswith("oei"):
+        return "OEI trim"
+    if cond in ("plus_3g", "minus_1g") and "acceleration" in name:
+        return "+3g/-1g trim"
+    if "buckling" in name:
+        return "buckling"
+    return {"cruise.static_margin": "static margin", "state_of_charge": "final SoC",
+            "radius_intersection": "radius intersection",
+            "lift_motor_torque_margin": "motor torque margin",
+            "pusher_motor_torque_margin": "motor torque margin"}[name]
+
+
+@pytest.fixture(scope="module")
+def lpc():
+    prob = om.Problem(reports=False)
+    # The analytic reference polar keeps this test independent of the airfoil tables.
+    prob.model = LPCGroup(rotor_polar=LinearQuadraticPolar(), wing_zero_lift_angle=-0.07)
+    prob.setup(mode="rev", force_alloc_complex=True)
+    prob.run_model()
+    return prob
+
+
+def test_table6_design_variables_and_constraints(lpc):
+    dvs = Counter()
+    for name, meta in lpc.model.get_design_vars().items():
+        dvs[_dv_group(name)] += meta["size"]
+    assert dict(dvs) == TABLE6_DESIGN_VARIABLES
+    assert sum(dvs.values()) == 161
+
+    cons = Counter()
+    for name, meta in lpc.model.get_constraints().items():
+        group = _constraint_group(name, meta)
+        if group is None:  # transition linear accelerations: u, w prescribed, v zero
+            cons["transition prescribed accelerations"] += 2
+            cons["transition trim (v, p, q, r)"] += 1
+        else:
+            cons[group] += meta["size"]
+    assert dict(cons) == TABLE6_CONSTRAINTS
+    assert sum(cons.values()) == 96
+
+
+def test_initial_design(lpc):
+    # Paper Table 8: initial gross mass 3723.99 kg (W_other calibrated).
+    assert_near_equal(lpc.get_val("gross_mass", units="kg"), 3723.99, 1e-10)
+    for cond in lpc.model.condition_names:
+        assert np.all(np.isfinite(lpc.get_val(f"{cond}.linear_acceleration")))
+    # Transition points: the prescribed accelerations are the constraint targets.
+    cons = lpc.model.get_constraints()
+    t1 = cons["transition_1.linear_acceleration"]["equals"]
+    assert t1[0] > 0.0 and t1[1] == 0.0
+
+
+def test_static_margin_switch():
+    prob = om.Problem(reports=False)
+    prob.model = LPCGroup(rotor_polar=LinearQuadraticPolar(), wing_zero_lift_angle=-0.07,
+                          static_margin=False)
+    prob.setup()
+    prob.final_setup()
+    assert sum(m["size"] for m in prob.model.get_constraints().values()) == 95
+
+
+def test_totals_across_disciplines(lpc):
+    """Adjoint totals against complex step through every kind of condition."""
+    of = ["gross_mass", "state_of_charge", "hover.linear_acceleration", "hover.total_spl_a",
+          "cruise.static_margin", "cruise.linear_acceleration",
+          "plus_3g.top_skin_buckling_ratio", "lift_motor_torque_margin",
+          "transition_2.angular_acceleration", "oei_1.angular_acceleration"]
+    wrt = ["wing_area", "hover_lift_rpm", "cruise_pitch", "top_skin_thickness", "motor_length",
+           "transition_lift_rpm", "blade_twist_cp", "fuselage_length"]
+    data = lpc.check_totals(of=of, wrt=wrt, method="cs", out_stream=None)
+    assert_check_totals(data, atol=1e-6, rtol=1e-5)
