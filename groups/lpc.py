@@ -68,6 +68,9 @@ class LPCGroup(om.Group):
         Sectional zero-lift angle of the wing airfoil, rad (None: from its table).
     ks_rho : float
         KS aggregation parameter of the torque margins.
+    conditions : list of str or None
+        The design conditions to include, by name (None: all of the vehicle's). Subproblems
+        and single-condition studies use a subset; the mission energy then counts only those.
     """
 
     def initialize(self):
@@ -102,10 +105,22 @@ class LPCGroup(om.Group):
         self.options.declare(
             "ks_rho", default=50.0, types=float, desc="KS parameter of the torque-margin aggregates"
         )
+        self.options.declare("conditions", default=None, types=(list, tuple), allow_none=True,
+                             desc="names of the design conditions to include (None: all)")
 
     def setup(self):
         vehicle = self.options["vehicle"] or reference_vehicle()
         self.vehicle_spec = vehicle
+        names = [c.name for c in vehicle.conditions]
+        chosen = self.options["conditions"]
+        if chosen is not None:
+            unknown = [c for c in chosen if c not in names]
+            if unknown or not chosen:
+                raise ValueError(f"{self.msginfo}: conditions = {list(chosen)}; each must be one "
+                                 f"of the vehicle's conditions {names} (at least one).")
+        # In the vehicle file's order, so the mission bookkeeping is stable.
+        self.conditions = [c for c in vehicle.conditions
+                           if chosen is None or c.name in chosen]
         polar, alpha0 = _airfoil_models(
             vehicle, self.options["rotor_polar"], self.options["wing_zero_lift_angle"]
         )
@@ -121,7 +136,7 @@ class LPCGroup(om.Group):
         self.add_subsystem("vehicle", VehicleGroup(vehicle=vehicle), promotes=["*"])
 
         self.condition_names = []
-        for condition in vehicle.conditions:
+        for condition in self.conditions:
             kind = condition.kind
             kwargs = {"vehicle": vehicle, "condition": condition.name, "rotor_polar": polar}
             if kind in ("transition", "steady", "structural"):
@@ -140,7 +155,7 @@ class LPCGroup(om.Group):
     def configure(self):
         vehicle = self.vehicle_spec
         pair = np.array([r.pair for r in vehicle.lift_rotors])
-        for condition in vehicle.conditions:
+        for condition in self.conditions:
             name, kind = condition.name, condition.kind
             sub = getattr(self, name)
             self.connect("gross_mass", f"{name}.gross_mass")
@@ -217,15 +232,15 @@ class LPCGroup(om.Group):
                 ):
                     self.connect(var, f"{name}.{var}")
 
-        for i, condition in enumerate(vehicle.conditions):
+        for i, condition in enumerate(self.conditions):
             if condition.kind != "structural":
                 self.connect(
                     f"{condition.name}.electrical_power", f"power_mux.electrical_power_{i}"
                 )
-        lift = [c.name for c in vehicle.conditions if c.kind in ("hover", "oei", "transition")]
+        lift = [c.name for c in self.conditions if c.kind in ("hover", "oei", "transition")]
         for name in lift:
             self.connect(f"{name}.lift_motor_torque_margin", f"lift_margin_gather.{name}")
-        push = [c.name for c in vehicle.conditions if c.kind in ("transition", "steady")]
+        push = [c.name for c in self.conditions if c.kind in ("transition", "steady")]
         for name in push:
             self.connect(f"{name}.pusher_motor_torque_margin", f"pusher_margin_gather.{name}")
         super().configure()
@@ -253,7 +268,11 @@ class LPCGroup(om.Group):
         """
         vehicle = self.vehicle_spec
         limits = vehicle.constraints
+        present = {c.name for c in self.conditions}
+        kinds = {c.kind for c in self.conditions}
         for name, dv in vehicle.design_variables.items():
+            if not _design_variable_used(name, present, kinds):
+                continue
             shape = dv.shape
             self.add_design_var(
                 name,
@@ -265,90 +284,52 @@ class LPCGroup(om.Group):
         self.add_objective("gross_mass", ref=vehicle.masses.target_gross_mass, units="kg")
 
         g = 9.81
-        self.add_constraint("hover.total_spl_a", upper=limits.max_noise, ref=10.0)
-        self.add_constraint(
-            "hover.linear_acceleration", indices=[2], flat_indices=True, equals=0.0, ref=g
-        )
-        self.add_constraint(
-            "hover.angular_acceleration", indices=[0, 1], flat_indices=True, equals=0.0
-        )
-        tip = [
-            int(np.flatnonzero(np.array([r.pair for r in vehicle.lift_rotors]) == p)[0])
-            for p in range(4)
-        ]
-        self.add_constraint(
-            "hover.lift_tip_mach", indices=tip, flat_indices=True, upper=limits.max_tip_mach
-        )
-        for c in vehicle.conditions:
-            name = c.name
+        if "hover" in present:
+            self.add_constraint("hover.total_spl_a", upper=limits.max_noise, ref=10.0)
+            self._trim("hover", [2], [0, 1], 0.0, g)
+            pairs = np.array([r.pair for r in vehicle.lift_rotors])
+            tip = [int(np.flatnonzero(pairs == p)[0]) for p in range(4)]
+            self.add_constraint("hover.lift_tip_mach", indices=tip, flat_indices=True,
+                                upper=limits.max_tip_mach)
+        for c in self.conditions:
             if c.kind == "steady":
-                self.add_constraint(
-                    f"{name}.linear_acceleration",
-                    indices=[0, 2],
-                    flat_indices=True,
-                    equals=0.0,
-                    ref=g,
-                )
-                self.add_constraint(
-                    f"{name}.angular_acceleration", indices=[1], flat_indices=True, equals=0.0
-                )
+                self._trim(c.name, [0, 2], [1], 0.0, g)
             elif c.kind == "transition":
-                accel = np.array(
-                    [c.acceleration * np.cos(c.pitch), 0.0, c.acceleration * np.sin(c.pitch)]
-                )
-                self.add_constraint(
-                    f"{name}.linear_acceleration",
-                    indices=[0, 1, 2],
-                    flat_indices=True,
-                    equals=accel,
-                    ref=g,
-                )
-                self.add_constraint(
-                    f"{name}.angular_acceleration", indices=[0, 1, 2], flat_indices=True, equals=0.0
-                )
+                accel = c.acceleration * np.array([np.cos(c.pitch), 0.0, np.sin(c.pitch)])
+                self._trim(c.name, [0, 1, 2], [0, 1, 2], accel, g)
             elif c.kind == "oei":
-                self.add_constraint(
-                    f"{name}.linear_acceleration",
-                    indices=[1, 2],
-                    flat_indices=True,
-                    equals=0.0,
-                    ref=g,
-                )
-                self.add_constraint(
-                    f"{name}.angular_acceleration", indices=[0, 1, 2], flat_indices=True, equals=0.0
-                )
+                self._trim(c.name, [1, 2], [0, 1, 2], 0.0, g)
             elif c.kind == "structural":
-                self.add_constraint(
-                    f"{name}.linear_acceleration",
-                    indices=[2],
-                    flat_indices=True,
-                    equals=0.0,
-                    ref=g * abs(c.load_factor),
-                )
-        if self.options["static_margin"]:
+                self._trim(c.name, [2], [], 0.0, g * abs(c.load_factor))
+        if self.options["static_margin"] and "cruise" in present:
             self.add_constraint("cruise.static_margin", lower=limits.min_static_margin, ref=0.1)
         bays = list(range(vehicle.wing_box.num_bays - 1))
-        self.add_constraint(
-            "plus_3g.top_skin_buckling_ratio",
-            indices=bays,
-            flat_indices=True,
-            upper=limits.max_buckling_ratio,
-        )
-        self.add_constraint(
-            "minus_1g.bottom_skin_buckling_ratio",
-            indices=bays,
-            flat_indices=True,
-            upper=limits.max_buckling_ratio,
-        )
+        for name, skin in (("plus_3g", "top"), ("minus_1g", "bottom")):
+            if name in present:
+                self.add_constraint(f"{name}.{skin}_skin_buckling_ratio", indices=bays,
+                                    flat_indices=True, upper=limits.max_buckling_ratio)
         self.add_constraint("state_of_charge", lower=limits.min_final_soc, ref=0.1)
         self.add_constraint("radius_intersection", equals=limits.radius_intersection, ref=0.1)
-        self.add_constraint("lift_motor_torque_margin", lower=limits.min_torque_margin, ref=0.1)
-        self.add_constraint("pusher_motor_torque_margin", lower=limits.min_torque_margin, ref=0.1)
+        if kinds & {"hover", "oei", "transition"}:
+            self.add_constraint("lift_motor_torque_margin", lower=limits.min_torque_margin,
+                                ref=0.1)
+        if kinds & {"transition", "steady"}:
+            self.add_constraint("pusher_motor_torque_margin", lower=limits.min_torque_margin,
+                                ref=0.1)
+
+    def _trim(self, name, linear, angular, linear_target, ref):
+        """Trim constraints: chosen body-axis accelerations of a condition equal targets."""
+        target = np.broadcast_to(linear_target, 3)[linear] if np.ndim(linear_target) else 0.0
+        self.add_constraint(f"{name}.linear_acceleration", indices=linear, flat_indices=True,
+                            equals=target, ref=ref)
+        if angular:
+            self.add_constraint(f"{name}.angular_acceleration", indices=angular,
+                                flat_indices=True, equals=0.0)
 
     # ------------------------------------------------------------------ mission and margins
 
     def _add_mission(self, vehicle):
-        conditions = vehicle.conditions
+        conditions = self.conditions
         n = len(conditions)
         mux = self.add_subsystem("power_mux", om.MuxComp(vec_size=n))
         mux.add_var("electrical_power", shape=(1,), axis=0, units="W")
@@ -369,6 +350,13 @@ class LPCGroup(om.Group):
         )
 
         lift = [c for c in conditions if c.kind in ("hover", "oei", "transition")]
+        push = [c for c in conditions if c.kind in ("transition", "steady")]
+        if lift:
+            self._add_margin_aggregate(vehicle, lift)
+        if push:
+            self._add_pusher_margin_aggregate(push)
+
+    def _add_margin_aggregate(self, vehicle, lift):
         items = []
         for c in lift:
             failed = c.failed_rotor
@@ -393,7 +381,8 @@ class LPCGroup(om.Group):
             promotes_outputs=[("KS", "lift_motor_torque_margin")],
         )
         self.connect("lift_margin_gather.torque_margin", "lift_margin.g")
-        push = [c for c in conditions if c.kind in ("transition", "steady")]
+
+    def _add_pusher_margin_aggregate(self, push):
         self.add_subsystem(
             "pusher_margin_gather",
             GatherComp(
@@ -409,6 +398,20 @@ class LPCGroup(om.Group):
             promotes_outputs=[("KS", "pusher_motor_torque_margin")],
         )
         self.connect("pusher_margin_gather.torque_margin", "pusher_margin.g")
+
+
+def _design_variable_used(name, present, kinds):
+    """Whether a design variable acts on the model with these conditions."""
+    if name.startswith("hover_"):
+        return "hover" in present
+    if name.startswith("transition_"):
+        return "transition" in kinds
+    if name.startswith("oei_"):
+        return "oei" in kinds
+    for suffix in ("_pusher_rpm", "_pitch", "_elevator"):
+        if name.endswith(suffix):
+            return name[: -len(suffix)] in present
+    return True
 
 
 def _airfoil_models(vehicle, rotor_polar, wing_zero_lift_angle):
