@@ -39,7 +39,7 @@ def _row(index):
 
 def _as_row(size, start=0):
     """src_indices that take ``size`` entries of a 1-D source as a (1, size) target."""
-    return om.slicer[np.arange(start, start + size)[np.newaxis, :]]
+    return om.slicer[np.arange(start, start + size)[np.newaxis, :],]
 
 
 class LPCGroup(om.Group):
