@@ -5,15 +5,20 @@ Plain functions that wrap the OpenMDAO models for quick studies, and the public 
 
 from lpc_mdo.drivers import IpoptDriver, IpoptMultipliers, make_driver
 from lpc_mdo.groups.acoustics import RotorNoiseGroup, a_weighting, rotor_noise
-from lpc_mdo.groups.flight_conditions import FlightConditionsGroup
+from lpc_mdo.groups.beam import beam, box_beam
+from lpc_mdo.groups.lpc import LPCGroup
 from lpc_mdo.groups.motor import MotorGroup
 from lpc_mdo.groups.motor import motor_analysis as motor
+from lpc_mdo.groups.vehicle import VehicleGroup
 from lpc_mdo.groups.weights import WeightsGroup, calibrate_other_mass, mass_breakdown
 from lpc_mdo.problems import build_analysis_problem
 from lpc_mdo.vehicle import VehicleSpecError, load_vehicle, reference_vehicle
 
 __all__ = [
-    "FlightConditionsGroup",
+    "LPCGroup",
+    "VehicleGroup",
+    "beam",
+    "box_beam",
     "IpoptDriver",
     "IpoptMultipliers",
     "MotorGroup",

@@ -1,6 +1,7 @@
 """Command-line interface: ``lpc-mdo analyze``."""
 
 import argparse
+import os
 import sys
 from pathlib import Path
 
@@ -10,60 +11,70 @@ import numpy as np
 def _analyze(args):
     import openmdao.api as om
 
+    from lpc_mdo.groups.weights import format_mass_breakdown, mass_breakdown
+    from lpc_mdo.post.tables import constraint_table
     from lpc_mdo.problems import build_analysis_problem
 
     out = Path(args.output_dir)
     out.mkdir(parents=True, exist_ok=True)
-    prob = build_analysis_problem(args.vehicle, recorder_path=out / "cases.sql")
+    case_file = out / "cases.sql"
+    prob = build_analysis_problem(args.vehicle, recorder_path=case_file,
+                                  static_margin=not args.no_static_margin)
     prob.run_model()
     prob.record("final")
     vehicle = prob.vehicle
 
-    print(f"lpc-mdo analysis of '{vehicle.name}'")
-    wing, tail = vehicle.wing, vehicle.horizontal_tail
-    print(f"  wing: S = {wing.area:.2f} m^2, AR = {wing.aspect_ratio:.2f}, "
-          f"span = {wing.span:.2f} m; h-tail: S = {tail.area:.2f} m^2, "
-          f"AR = {tail.aspect_ratio:.2f}")
-    print(f"  fuselage length = {vehicle.fuselage.length:.3f} m; "
-          f"{len(vehicle.lift_rotors)} lift rotors R = "
-          f"{', '.join(f'{r.radius:.3f}' for r in vehicle.lift_rotors)} m; "
-          f"pusher R = {vehicle.pusher.radius:.3f} m")
-    print(f"  design variables: {vehicle.design_variable_count()} "
-          f"in {len(vehicle.design_variables)} groups")
+    dvs = prob.model.get_design_vars()
+    cons = prob.model.get_constraints()
+    print(f"lpc-mdo analysis of '{vehicle.name}' (initial design)")
+    print(f"  {len(prob.model.condition_names)} design conditions, "
+          f"{sum(m['size'] for m in dvs.values())} design variables, "
+          f"{sum(m['size'] for m in cons.values())} constraints")
+    print(f"  wing: S = {prob.get_val('wing_area')[0]:.2f} m^2, "
+          f"AR = {prob.get_val('wing_aspect_ratio')[0]:.2f}, "
+          f"span = {prob.get_val('wing_span')[0]:.2f} m; fuselage "
+          f"{prob.get_val('fuselage_length')[0]:.3f} m; rotor radii "
+          f"{np.array2string(prob.get_val('rotor_radius'), precision=3)} m")
     print()
-    names = [c.name for c in vehicle.conditions]
-    cols = {
-        "altitude [m]": prob.get_val("conditions.altitude", units="m"),
-        "speed [m/s]": prob.get_val("conditions.speed", units="m/s"),
-        "Mach": prob.get_val("conditions.mach"),
-        "alpha [deg]": prob.get_val("conditions.angle_of_attack", units="deg"),
-        "rho [kg/m^3]": prob.get_val("conditions.density", units="kg/m**3"),
-        "q [Pa]": prob.get_val("conditions.dynamic_pressure", units="Pa"),
-        "Re/m [1e6/m]": prob.get_val("conditions.reynolds_per_length", units="1/m") / 1e6,
-    }
-    header = f"  {'condition':<14}" + "".join(f"{k:>14}" for k in cols)
-    print(header)
-    for i, name in enumerate(names):
-        print(f"  {name:<14}" + "".join(f"{np.asarray(v)[i]:>14.4g}" for v in cols.values()))
-    print(f"\ncase file: {out / 'cases.sql'}")
+    print(format_mass_breakdown(mass_breakdown(prob)))
+    print()
+    print(f"  {'condition':<14}{'power [kW]':>12}{'u_dot':>9}{'w_dot':>9}{'q_dot':>9}"
+          "   (accelerations in m/s^2, rad/s^2; trim drives them to the targets)")
+    for name in prob.model.condition_names:
+        lin = prob.get_val(f"{name}.linear_acceleration")[0]
+        ang = prob.get_val(f"{name}.angular_acceleration")[0]
+        power = (prob.get_val(f"{name}.electrical_power", units="kW")[0]
+                 if name not in ("plus_3g", "minus_1g") else float("nan"))
+        print(f"  {name:<14}{power:>12.1f}{lin[0]:>9.3f}{lin[2]:>9.3f}{ang[1]:>9.3f}")
+    print(f"\n  final state of charge {prob.get_val('state_of_charge')[0]:.3f}, hover noise "
+          f"{prob.get_val('hover.total_spl_a')[0]:.1f} dBA, cruise static margin "
+          f"{prob.get_val('cruise.static_margin')[0]:.3f}")
+    prob.cleanup()
 
+    table = constraint_table(str(case_file), case="final")
+    table.write(str(out), "constraints")
+    print(f"\nconstraint table (paper Table 7 layout): {out / 'constraints.md'}")
+    print(f"case file: {case_file}")
     if args.n2:
-        om.n2(prob, outfile=str(args.n2), show_browser=False)
+        om.n2(str(case_file), outfile=str(args.n2), show_browser=False)
         print(f"N2 diagram: {args.n2}")
     return 0
 
 
 def main(argv=None):
     """Entry point of the ``lpc-mdo`` command."""
+    os.environ.setdefault("OPENMDAO_REPORTS", "0")
     parser = argparse.ArgumentParser(prog="lpc-mdo", description=__doc__)
     sub = parser.add_subparsers(dest="command", required=True)
     analyze = sub.add_parser("analyze", help="analyze a vehicle's design conditions")
     analyze.add_argument("--vehicle", default=None,
                          help="vehicle TOML file (default: the reference vehicle)")
     analyze.add_argument("--output-dir", default="analysis_out",
-                         help="folder for the case file (default: analysis_out)")
+                         help="folder for the case file and tables (default: analysis_out)")
     analyze.add_argument("--n2", default=None, metavar="HTML",
                          help="also write the N2 diagram to this file")
+    analyze.add_argument("--no-static-margin", action="store_true",
+                         help="leave the static-margin constraint out")
     analyze.set_defaults(func=_analyze)
 
     args = parser.parse_args(argv)

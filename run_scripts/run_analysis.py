@@ -1,9 +1,11 @@
-"""Analyze the reference vehicle's 15 design conditions: a run script to copy and edit.
+"""Analyze the reference vehicle at its initial design: a run script to copy and edit.
 
-    python run_scripts/run_analysis.py            # run and print
+    python run_scripts/run_analysis.py            # run, record and print
     openmdao n2 run_scripts/run_analysis.py       # N2 diagram of the same model
 
-The case file lands in ``run_analysis_out/cases.sql``; read it with ``om.CaseReader``.
+The full model: the vehicle group and the 15 design conditions with their 161 design variables
+and 96 constraints (paper Table 6). Every variable of the final case is recorded to
+``run_analysis_out/cases.sql``; read it back with ``om.CaseReader``.
 """
 
 import openmdao.api as om
@@ -14,12 +16,12 @@ from lpc_mdo.vehicle import reference_vehicle
 vehicle = reference_vehicle()  # or lpc_mdo.vehicle.load_vehicle("my_lpc.toml")
 prob = build_analysis_problem(vehicle, name="run_analysis")
 prob.add_recorder(om.SqliteRecorder(prob.get_outputs_dir(mkdir=True) / "cases.sql"))
+prob.recording_options["includes"] = ["*"]
 prob.final_setup()
 prob.run_model()
 prob.record("final")
 
-for name, mach, q in zip([c.name for c in vehicle.conditions],
-                         prob.get_val("conditions.mach"),
-                         prob.get_val("conditions.dynamic_pressure", units="Pa"), strict=True):
-    print(f"{name:<14} Mach {mach:6.4f}   q {q:8.1f} Pa")
+print(f"gross mass {prob.get_val('gross_mass', units='kg')[0]:.2f} kg")
+for name in prob.model.condition_names:
+    print(f"{name:<14} accelerations {prob.get_val(f'{name}.linear_acceleration')[0]} m/s^2")
 prob.cleanup()

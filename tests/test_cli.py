@@ -1,0 +1,36 @@
+"""The lpc-mdo command line (the README's main job)."""
+
+from importlib import resources
+
+import openmdao.api as om
+import pytest
+from openmdao.utils.assert_utils import assert_near_equal
+
+from lpc_mdo.cli import main
+
+
+def test_analyze_reference_vehicle(tmp_path, capsys):
+    assert main(["analyze", "--output-dir", str(tmp_path / "out"),
+                 "--n2", str(tmp_path / "n2.html")]) == 0
+    text = capsys.readouterr().out
+    assert "15 design conditions, 161 design variables, 96 constraints" in text
+    assert "gross" in text and "minus_1g" in text
+    assert (tmp_path / "n2.html").stat().st_size > 0
+    assert (tmp_path / "out" / "constraints.md").exists()
+    case = om.CaseReader(str(tmp_path / "out" / "cases.sql")).get_case("final")
+    # Paper Table 8: the initial design weighs 3723.99 kg.
+    assert_near_equal(case.get_val("gross_mass", units="kg"), 3723.99, 1e-8)
+
+
+def test_analyze_reports_a_bad_vehicle_file(tmp_path, capsys):
+    path = tmp_path / "bad.toml"
+    text = (resources.files("lpc_mdo") / "data" / "lpc_reference.toml").read_text()
+    assert "[wing]\n" in text
+    path.write_text(text.replace("[wing]\n", "[wing]\nspam = 1\n", 1))
+    assert main(["analyze", "--vehicle", str(path), "--output-dir", str(tmp_path)]) == 2
+    assert "unknown key 'wing.spam'" in capsys.readouterr().err
+
+
+def test_unknown_command_exits():
+    with pytest.raises(SystemExit):
+        main(["fly"])
