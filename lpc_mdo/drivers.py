@@ -88,6 +88,9 @@ class IpoptDriver(Driver):
         Multipliers of the last run, to pass to another driver's ``warm_start`` option.
     ipopt_info : dict or None
         The raw ``info`` dict cyipopt returned for the last run.
+    analysis_errors : list of str
+        Messages of the ``om.AnalysisError`` raised during the last run (each made IPOPT cut
+        its step back); the first place to look when IPOPT reports evaluation errors.
     """
 
     def __init__(self, **kwargs):
@@ -108,6 +111,7 @@ class IpoptDriver(Driver):
         self.supports._read_only = True
 
         self.opt_settings = {}
+        self.analysis_errors = []
         self.multipliers = None
         self.ipopt_info = None
         self.fail = False
@@ -255,6 +259,7 @@ class IpoptDriver(Driver):
         self._ipopt_iterations = 0
         self._user_stop = False
         self._exc_info = None
+        self.analysis_errors = []
         self._total_jac = None
         self._total_jac_linear = None
         self._reset_caches()
@@ -366,8 +371,9 @@ class IpoptDriver(Driver):
             try:
                 with model._relevance.nonlinear_active("iter"):
                     self._run_solve_nonlinear()
-            except om.AnalysisError:
+            except om.AnalysisError as err:
                 model._clear_iprint()
+                self.analysis_errors.append(str(err))
                 ok = False
             except KeyboardInterrupt:
                 model._clear_iprint()

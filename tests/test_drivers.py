@@ -204,6 +204,8 @@ def test_analysis_error_is_cut_back_and_optimization_converges():
     result = prob.run_driver()
     comp = prob.model.parab
     assert comp.failures == 2
+    errors = prob.driver.analysis_errors
+    assert len(errors) == 2 and errors[0].endswith("simulated failure on call 3")
     assert result.success, result.exit_status
     assert_near_equal(prob.get_val("x"), 43.0 / 6.0, 1e-6)
     assert_near_equal(prob.get_val("f"), -867.0 / 36.0 - 3.0, 1e-7)
