@@ -38,6 +38,7 @@ from lpc_mdo.components.dynamics.stability_derivatives import (
 from lpc_mdo.components.dynamics.static_margin import NeutralPointComp, StaticMarginComp
 from lpc_mdo.components.energy.power import TotalPowerComp
 from lpc_mdo.components.kinematics import KinematicsComp
+from lpc_mdo.components.motor.shaft_torque import ShaftTorqueComp
 from lpc_mdo.components.rotor.rotor_speed import RotorSpeedComp
 from lpc_mdo.groups.acoustics import RotorNoiseGroup
 from lpc_mdo.groups.beam import BoxBeamGroup
@@ -89,6 +90,8 @@ def _add_lift_rotors(group, vehicle, rotors, speed_groups, num_groups, model, ed
                           ("power", "lift_power"), ("tip_mach", "lift_tip_mach"),
                           ("figure_of_merit", "lift_figure_of_merit"),
                           ("total_force", "lift_force"), ("total_moment", "lift_moment")])
+    group.add_subsystem("lift_shaft", ShaftTorqueComp(num_motors=na),
+                        promotes_inputs=[("rotor_torque", "lift_torque")])
     group.add_subsystem("lift_motors", MotorGroup(
         num_motors=na, num_nodes=1, length_to_diameter=vehicle.motor.length_to_diameter,
         parameters=_motor_parameters(vehicle)),
@@ -97,7 +100,7 @@ def _add_lift_rotors(group, vehicle, rotors, speed_groups, num_groups, model, ed
                           ("em_torque", "lift_motor_em_torque"),
                           ("torque_margin", "lift_motor_torque_margin"),
                           ("peak_torque", "lift_motor_peak_torque")])
-    group.connect("lift_torque", "lift_motors.rotor_torque")
+    group.connect("lift_shaft.motor_load_torque", "lift_motors.rotor_torque")
     group.set_input_defaults("lift_radius", np.array([r.radius for r in rotors]), units="m")
     group.set_input_defaults("lift_hub_position", np.array([r.hub_position for r in rotors]),
                              units="m")
@@ -116,6 +119,8 @@ def _add_pusher(group, vehicle):
         promotes_outputs=[("thrust", "pusher_thrust"), ("torque", "pusher_torque"),
                           ("power", "pusher_power"), ("efficiency", "pusher_efficiency"),
                           ("total_force", "pusher_force"), ("total_moment", "pusher_moment")])
+    group.add_subsystem("pusher_shaft", ShaftTorqueComp(num_motors=1),
+                        promotes_inputs=[("rotor_torque", "pusher_torque")])
     group.add_subsystem("pusher_motor", MotorGroup(
         num_motors=1, num_nodes=1, length_to_diameter=vehicle.motor.length_to_diameter,
         parameters=_motor_parameters(vehicle)),
@@ -124,7 +129,7 @@ def _add_pusher(group, vehicle):
                           ("em_torque", "pusher_motor_em_torque"),
                           ("torque_margin", "pusher_motor_torque_margin"),
                           ("peak_torque", "pusher_motor_peak_torque")])
-    group.connect("pusher_torque", "pusher_motor.rotor_torque")
+    group.connect("pusher_shaft.motor_load_torque", "pusher_motor.rotor_torque")
     group.set_input_defaults("pusher_radius", np.array([pusher.radius]), units="m")
     group.set_input_defaults("pusher_hub_position", np.array([pusher.hub_position]), units="m")
 

@@ -131,3 +131,10 @@ def test_totals_across_disciplines(lpc):
            "transition_lift_rpm", "blade_twist_cp", "fuselage_length"]
     data = lpc.check_totals(of=of, wrt=wrt, method="cs", out_stream=None)
     assert_check_totals(data, atol=1e-6, rtol=1e-5)
+
+
+def test_check_config_solvers_and_order_are_clean(lpc, tmp_path):
+    path = tmp_path / "check.txt"
+    lpc.check_config(checks=["solvers", "out_of_order"], out_file=str(path))
+    text = path.read_text()
+    assert "solvers check complete" in text and "WARNING" not in text, text
