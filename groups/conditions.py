@@ -38,8 +38,10 @@ from lpc_mdo.components.dynamics.stability_derivatives import (
 from lpc_mdo.components.dynamics.static_margin import NeutralPointComp, StaticMarginComp
 from lpc_mdo.components.energy.power import TotalPowerComp
 from lpc_mdo.components.kinematics import KinematicsComp
+from lpc_mdo.components.ks import KSComp
 from lpc_mdo.components.motor.shaft_torque import ShaftTorqueComp
 from lpc_mdo.components.rotor.rotor_speed import RotorSpeedComp
+from lpc_mdo.components.structures.displacement import VerticalDisplacementComp
 from lpc_mdo.groups.acoustics import RotorNoiseGroup
 from lpc_mdo.groups.beam import BoxBeamGroup
 from lpc_mdo.groups.motor import MotorGroup
@@ -345,7 +347,11 @@ class StructuralCondition(om.Group):
     +3g or -1g pull-up/push-over: VLM at the load factor, trim in F_z only, and the wing-box
     beam of the right half wing loaded by the VLM panel forces plus its own inertia at the load
     factor, with stress and curved-panel buckling (paper Sec. III.D, IV; reference page §6).
-    Pitch is an input (design variable); the elevator is held at zero.
+    Pitch is an input (design variable); the elevator is held at zero. With ``ks_rho`` the
+    stress ratios, the buckling ratios (all bays but the tip bay) and the vertical tip-ward
+    displacement in the direction of the load (-w at positive, +w at negative load factor) are
+    also aggregated by KS (paper eq. 7): ``stress_ratio_ks``, ``top_skin_buckling_ratio_ks``,
+    ``bottom_skin_buckling_ratio_ks``, ``displacement_ks`` (m).
     """
 
     def initialize(self):
@@ -354,6 +360,8 @@ class StructuralCondition(om.Group):
                              desc="sectional zero-lift angle of the wing airfoil, rad")
         self.options.declare("wing_panels", default=26, types=int, desc="wing VLM panels")
         self.options.declare("tail_panels", default=8, types=int, desc="tail VLM panels")
+        self.options.declare("ks_rho", default=None, types=(int, float), allow_none=True,
+                             desc="KS parameter of the structural aggregates (None: none)")
 
     def setup(self):
         vehicle = self.options["vehicle"]
@@ -365,7 +373,9 @@ class StructuralCondition(om.Group):
         _add_equations_of_motion(self, ["aero", "drag"], forces_only=["drag"],
                                  load_factor=condition.load_factor)
         nodes = vehicle.wing_box.num_bays + 1
-        self.add_subsystem("beam", BoxBeamGroup(num_nodes=nodes, num_aero_points=right.size),
+        rho = self.options["ks_rho"]
+        self.add_subsystem("beam", BoxBeamGroup(num_nodes=nodes, num_aero_points=right.size,
+                                                ks_rho=rho),
                            promotes_inputs=[("nodes", "wing_box_nodes"), "box_width",
                                             "box_height", "top_skin_thickness",
                                             "bottom_skin_thickness", "front_spar_thickness",
@@ -384,3 +394,14 @@ class StructuralCondition(om.Group):
                             ("poisson_ratio", None), ("allowable_stress", "Pa")):
             self.promotes("beam", inputs=[(name, f"material_{name}")])
             self.set_input_defaults(f"material_{name}", getattr(material, name), units=units)
+        if rho is not None:
+            self.promotes("beam", outputs=["stress_ratio_ks", "top_skin_buckling_ratio_ks",
+                                           "bottom_skin_buckling_ratio_ks"])
+            sign = -1.0 if condition.load_factor > 0 else 1.0
+            self.add_subsystem("displacement_sign",
+                               VerticalDisplacementComp(num_nodes=nodes, sign=sign))
+            self.add_subsystem("displacement_ks", KSComp(width=nodes, rho=rho * 10.0,
+                                                         units="m"),
+                               promotes_outputs=[("KS", "displacement_ks")])
+            self.connect("displacements", "displacement_sign.displacements")
+            self.connect("displacement_sign.vertical_displacement", "displacement_ks.g")

@@ -2,6 +2,7 @@
 
 import numpy as np
 import openmdao.api as om
+from scipy.optimize import brentq
 
 from lpc_mdo.components.energy.battery import BatteryComp
 from lpc_mdo.components.energy.mission_energy import MissionEnergyComp
@@ -107,6 +108,10 @@ class LPCGroup(om.Group):
         )
         self.options.declare("conditions", default=None, types=(list, tuple), allow_none=True,
                              desc="names of the design conditions to include (None: all)")
+        self.options.declare("structural_ks_rho", default=None, types=(int, float),
+                             allow_none=True,
+                             desc="KS parameter of the +3g/-1g structural aggregates (None: "
+                                  "no aggregates)")
 
     def setup(self):
         vehicle = self.options["vehicle"] or reference_vehicle()
@@ -141,6 +146,8 @@ class LPCGroup(om.Group):
             kwargs = {"vehicle": vehicle, "condition": condition.name, "rotor_polar": polar}
             if kind in ("transition", "steady", "structural"):
                 kwargs["wing_zero_lift_angle"] = alpha0
+            if kind == "structural":
+                kwargs["ks_rho"] = self.options["structural_ks_rho"]
             if condition.name == "cruise":
                 kwargs["stability"] = True
             self.add_subsystem(condition.name, _CONDITION_CLASSES[kind](**kwargs))
@@ -414,6 +421,14 @@ def _design_variable_used(name, present, kinds):
     return True
 
 
+def zero_lift_angle(polar, reynolds, mach):
+    """Angle of attack (rad) where a polar's cl vanishes, bracketed in [-20, +10] deg."""
+    def cl(alpha):
+        return float(polar.evaluate(np.array(alpha), reynolds, mach).cl)
+
+    return float(brentq(cl, np.radians(-20.0), np.radians(10.0), xtol=1e-12))
+
+
 def _airfoil_models(vehicle, rotor_polar, wing_zero_lift_angle):
     """The rotor polar and the wing's sectional zero-lift angle from the airfoil tables."""
     if rotor_polar is not None and wing_zero_lift_angle is not None:
@@ -425,6 +440,6 @@ def _airfoil_models(vehicle, rotor_polar, wing_zero_lift_angle):
     if wing_zero_lift_angle is None:
         cruise = vehicle.condition("cruise")
         reynolds = 1.11 * cruise.speed * vehicle.wing.mean_aerodynamic_chord / 1.76e-5
-        wing = get_polar(vehicle.wing.airfoil)
-        wing_zero_lift_angle = float(wing.zero_lift_angle(reynolds, cruise.speed / 336.4))
+        wing_zero_lift_angle = zero_lift_angle(get_polar(vehicle.wing.airfoil), reynolds,
+                                               cruise.speed / 336.4)
     return rotor_polar, wing_zero_lift_angle
