@@ -1,0 +1,100 @@
+"""Benchmark of the full lift-plus-cruise model: one evaluation and one total derivative.
+
+    python run_scripts/benchmark_lpc.py [--repeats 5] [--profile]
+
+Builds the 15-condition model with its 161 design variables and 96 constraints, then times
+``run_model`` and ``compute_totals`` (all 96 x 161 totals, adjoint) and prints the medians, the
+ratios to the paper's CSDL figures (7.06 s forward, 24.84 s derivatives after 3.7 h of
+compilation; paper Table 9) and, with --profile, where the time goes by component class.
+"""
+
+import argparse
+import cProfile
+import os
+import pstats
+import statistics
+import time
+
+# Dense VLM mat-vecs on a loaded 2-core machine are much faster single-threaded (measured 40x
+# on this machine); set before numpy is imported.
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+os.environ.setdefault("OMP_NUM_THREADS", "1")
+os.environ.setdefault("OPENMDAO_REPORTS", "0")
+
+import openmdao.api as om  # noqa: E402
+
+from lpc_mdo.groups.lpc import LPCGroup  # noqa: E402
+
+PAPER_FORWARD_S = 7.06
+PAPER_DERIVATIVE_S = 24.84
+
+
+def build():
+    prob = om.Problem(reports=False)
+    prob.model = LPCGroup()
+    prob.driver = om.ScipyOptimizeDriver()  # only so compute_totals uses the driver's scaling
+    prob.setup(mode="rev")
+    prob.final_setup()
+    return prob
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--repeats", type=int, default=5, help="timed repetitions (median)")
+    parser.add_argument("--profile", action="store_true", help="profile one run + totals")
+    args = parser.parse_args(argv)
+
+    start = time.perf_counter()
+    prob = build()
+    setup = time.perf_counter() - start
+    prob.run_model()
+    prob.compute_totals()  # warm-up: first linearization allocates the Jacobians
+
+    forward, totals = [], []
+    for _ in range(args.repeats):
+        t0 = time.perf_counter()
+        prob.run_model()
+        t1 = time.perf_counter()
+        prob.compute_totals()
+        t2 = time.perf_counter()
+        forward.append(t1 - t0)
+        totals.append(t2 - t1)
+    dvs = sum(m["size"] for m in prob.model.get_design_vars().values())
+    cons = sum(m["size"] for m in prob.model.get_constraints().values())
+    f_med, t_med = statistics.median(forward), statistics.median(totals)
+    print(f"full LPC model: {dvs} design variables, {cons} constraints, "
+          f"median of {args.repeats} (OPENBLAS_NUM_THREADS={os.environ['OPENBLAS_NUM_THREADS']})")
+    print(f"  {'step':<36}{'time [s]':>10}{'paper [s]':>11}{'ratio':>9}")
+    print(f"  {'setup + final_setup':<36}{setup:>10.3f}{'13320':>11}"
+          f"{13320.0 / setup:>8.0f}x")
+    print(f"  {'model evaluation (run_model)':<36}{f_med:>10.3f}{PAPER_FORWARD_S:>11.2f}"
+          f"{PAPER_FORWARD_S / f_med:>8.1f}x")
+    print(f"  {'total derivatives (96 x 161, rev)':<36}{t_med:>10.3f}{PAPER_DERIVATIVE_S:>11.2f}"
+          f"{PAPER_DERIVATIVE_S / t_med:>8.1f}x")
+
+    if args.profile:
+        profiler = cProfile.Profile()
+        profiler.enable()
+        prob.run_model()
+        prob.compute_totals()
+        profiler.disable()
+        stats = pstats.Stats(profiler)
+        by_file = {}
+        for (filename, _, func), (_, _, tottime, _, _) in stats.stats.items():
+            if "lpc_mdo" in filename or "/components/" in filename or "/groups/" in filename:
+                key = os.path.basename(filename)
+            elif "openmdao" in filename:
+                key = "openmdao (framework)"
+            elif "numpy" in filename or "scipy" in filename or filename.startswith("~"):
+                key = "numpy/scipy/builtins"
+            else:
+                key = "other"
+            by_file[key] = by_file.get(key, 0.0) + tottime
+        total = sum(by_file.values())
+        print("\nwhere the time goes (one evaluation + totals, own time by module):")
+        for key, value in sorted(by_file.items(), key=lambda kv: -kv[1])[:15]:
+            print(f"  {key:<40}{value:>8.3f} s {100 * value / total:>6.1f} %")
+
+
+if __name__ == "__main__":
+    main()
