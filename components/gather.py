@@ -14,8 +14,9 @@ class GatherComp(om.ExplicitComponent):
         out[items[k][j], k] = source_k[j]
 
     An item absent from a source (the failed rotor of an OEI case) takes that column from the
-    source ``fill_from`` (default the first source), so a KS aggregate over the row ignores the
-    absence instead of seeing a zero.
+    first source that has the item, so a KS aggregate over the row ignores the absence instead
+    of seeing a zero; an item that no source has takes ``absent_value`` (a model built with a
+    single OEI case: the failed rotor's motor carries no load at all).
 
     Inputs
     ------
@@ -33,8 +34,8 @@ class GatherComp(om.ExplicitComponent):
         Item index of each entry of each source.
     num_items : int
     units : str or None
-    fill_from : int
-        Source index that fills absent items (must contain every item).
+    absent_value : float or None
+        Value of items that no source has (None: such an item is an error).
     """
 
     def initialize(self):
@@ -44,7 +45,8 @@ class GatherComp(om.ExplicitComponent):
         self.options.declare("num_items", types=int, lower=1, desc="number of items")
         self.options.declare("units", default=None, types=str, allow_none=True,
                              desc="units of the inputs and the output")
-        self.options.declare("fill_from", default=0, types=int, desc="source filling gaps")
+        self.options.declare("absent_value", default=None, types=float, allow_none=True,
+                             desc="value of items that no source has")
 
     def setup(self):
         opts = self.options
@@ -54,11 +56,18 @@ class GatherComp(om.ExplicitComponent):
             raise ValueError(f"{self.msginfo}: items = {[i.tolist() for i in items]} must give "
                              f"one index array per source ({len(sources)}) with values in "
                              f"0..{ni - 1}.")
-        fill = items[opts["fill_from"]]
-        if set(fill.tolist()) != set(range(ni)):
-            raise ValueError(f"{self.msginfo}: fill_from = {opts['fill_from']} must name a "
-                             "source that contains every item.")
         ns = len(sources)
+        owner = {}
+        for name, idx in zip(sources, items, strict=True):
+            for j, item in enumerate(idx):
+                owner.setdefault(int(item), (name, j))
+        missing = sorted(set(range(ni)) - set(owner))
+        if missing and opts["absent_value"] is None:
+            raise ValueError(f"{self.msginfo}: items {missing} are in no source; give "
+                             "absent_value to fill them.")
+        self._constant = np.zeros((ni, ns))
+        for item in missing:
+            self._constant[item, :] = opts["absent_value"]
         self._plan = []
         for k, (name, idx) in enumerate(zip(sources, items, strict=True)):
             self.add_input(name, np.zeros((idx.size, 1)), units=opts["units"],
@@ -74,14 +83,16 @@ class GatherComp(om.ExplicitComponent):
             for j, item in enumerate(idx):
                 self._maps[name][0].append(item * ns + k)
                 self._maps[name][1].append(j)
-            fill_name = sources[opts["fill_from"]]
             for item in np.flatnonzero(~present):
-                self._maps[fill_name][0].append(item * ns + k)
-                self._maps[fill_name][1].append(int(np.flatnonzero(fill == item)[0]))
+                if int(item) in owner:
+                    fill_name, j = owner[int(item)]
+                    self._maps[fill_name][0].append(item * ns + k)
+                    self._maps[fill_name][1].append(j)
         for name, (rows, cols) in self._maps.items():
             self.declare_partials(opts["name"], name, rows=rows, cols=cols, val=1.0)
 
     def compute(self, inputs, outputs):
+        outputs[self.options["name"]] = self._constant
         out = outputs[self.options["name"]].reshape(-1)
         for name, (rows, cols) in self._maps.items():
             out[rows] = inputs[name].reshape(-1)[cols]

@@ -18,6 +18,9 @@ from lpc_mdo.groups.vehicle import VehicleGroup
 from lpc_mdo.vehicle import reference_vehicle
 
 PUSHER = 4  # row of the pusher in the per-rotor-group design variables
+# Torque margin reported for a lift motor that no included condition loads (a model built with
+# a single OEI case); large, so it never binds.
+UNUSED_MOTOR_MARGIN = 10.0
 
 _CONDITION_CLASSES = {
     "hover": HoverCondition,
@@ -375,6 +378,7 @@ class LPCGroup(om.Group):
                 sources=[c.name for c in lift],
                 items=items,
                 num_items=len(vehicle.lift_rotors),
+                absent_value=UNUSED_MOTOR_MARGIN,
             ),
         )
         self.add_subsystem(

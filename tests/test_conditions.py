@@ -116,3 +116,18 @@ def test_unknown_condition_is_named():
                           wing_zero_lift_angle=-0.07)
     with pytest.raises(ValueError, match=r"conditions = \['landing'\]; each must be one of"):
         prob.setup()
+
+
+@pytest.mark.parametrize("name", ["hover", "transition_1", "transition_5", "climb", "cruise",
+                                  "descent", "oei_1", "oei_4", "plus_3g", "minus_1g"])
+def test_each_condition_runs_alone(name):
+    prob = om.Problem(reports=False)
+    prob.model = LPCGroup(conditions=[name], design_problem=False,
+                          rotor_polar=LinearQuadraticPolar(), wing_zero_lift_angle=-0.07)
+    prob.setup()
+    prob.run_model()
+    assert np.all(np.isfinite(prob.get_val(f"{name}.linear_acceleration")))
+    assert np.all(np.isfinite(prob.get_val(f"{name}.angular_acceleration")))
+    if name.startswith("oei"):
+        # One lift rotor is out: seven thrusts, each positive.
+        assert prob.get_val(f"{name}.lift_thrust").shape == (7, 1)

@@ -23,6 +23,21 @@ def test_gather_with_gap_filled():
     assert_check_partials(data, atol=1e-14, rtol=1e-14)
 
 
+def test_item_in_no_source_takes_the_absent_value():
+    prob = om.Problem(reports=False)
+    prob.model.add_subsystem("g", GatherComp(name="m", sources=["oei"], items=[[0, 2]],
+                                             num_items=3, absent_value=10.0), promotes=["*"])
+    prob.setup()
+    prob.set_val("oei", [[0.1], [0.2]])
+    prob.run_model()
+    assert_near_equal(prob.get_val("m"), [[0.1], [10.0], [0.2]], 1e-15)
+    bad = om.Problem(reports=False)
+    bad.model.add_subsystem("g", GatherComp(name="m", sources=["oei"], items=[[0, 2]],
+                                            num_items=3))
+    with pytest.raises(ValueError, match=r"items \[1\] are in no source"):
+        bad.setup()
+
+
 def test_bad_items():
     prob = om.Problem(reports=False)
     prob.model.add_subsystem("g", GatherComp(name="m", sources=["a"], items=[[0, 3]],

@@ -138,3 +138,10 @@ def test_check_config_solvers_and_order_are_clean(lpc, tmp_path):
     lpc.check_config(checks=["solvers", "out_of_order"], out_file=str(path))
     text = path.read_text()
     assert "solvers check complete" in text and "WARNING" not in text, text
+
+
+@pytest.mark.slow
+def test_all_totals_against_complex_step(lpc):
+    """All 96 constraints and the objective with respect to all 161 design variables."""
+    data = lpc.check_totals(method="cs", out_stream=None)
+    assert_check_totals(data, atol=1e-6, rtol=1e-5)
