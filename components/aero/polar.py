@@ -79,6 +79,60 @@ def _hermite(x, x0, x1, f0, d0, f1, d1):
     return f, df
 
 
+def viterna_cd_max(aspect_ratio=10.0):
+    """Viterna's maximum drag coefficient CD_max = 1.11 + 0.018 AR (§6.3; 1.29 for AR = 10)."""
+    return 1.11 + 0.018 * aspect_ratio
+
+
+def viterna_coefficients(alpha_stall, cl_stall, cd_stall, cd_max):
+    """
+    Viterna–Corrigan coefficients A2, B2 of one stall point (reference §6.3).
+
+    A2 = (cl_s - CD_max sin a_s cos a_s) sin a_s/cos^2 a_s,  B2 = (cd_s - CD_max sin^2 a_s)/cos a_s;
+    works elementwise on arrays of stall points.
+    """
+    s, c = np.sin(alpha_stall), np.cos(alpha_stall)
+    a2 = (cl_stall - cd_max * s * c) * s / c**2
+    b2 = (cd_stall - cd_max * s**2) / c
+    return a2, b2
+
+
+def viterna(a, cd_max, a2, b2):
+    """
+    Viterna–Corrigan post-stall law and its alpha slopes (reference §6.3), to +-90 deg.
+
+    cl = A1 sin 2a + A2 cos^2 a/sin a,  cd = B1 sin^2 a + B2 cos a,  A1 = CD_max/2, B1 = CD_max.
+    Returns (cl, cd, dcl/da, dcd/da).
+    """
+    a1, b1 = 0.5 * cd_max, cd_max
+    s, c = np.sin(a), np.cos(a)
+    cl = a1 * np.sin(2 * a) + a2 * c**2 / s
+    cd = b1 * s**2 + b2 * c
+    dcl = 2 * a1 * np.cos(2 * a) + a2 * (-2 * c - c**3 / s**2)
+    dcd = 2 * b1 * s * c - b2 * s
+    return cl, cd, dcl, dcd
+
+
+def reverse_flow(a, cd_max, b2, b_mean):
+    """
+    Reverse-flow continuation beyond +-90 deg (see :class:`LinearQuadraticPolar`).
+
+    cl = (CD_max/2) sin 2a,  cd = CD_max sin^2 a + cos a [B_m + (B2 - B_m) sin^2 a], with B2 of the
+    side (negative stall for a < -90 deg, positive for a > 90 deg) and B_m the mean of both sides'
+    B2: C1 at +-90 deg with :func:`viterna` and periodic and C1 across +-180 deg.
+    Returns (cl, cd, dcl/da, dcd/da).
+    """
+    a1 = 0.5 * cd_max
+    s, c = np.sin(a), np.cos(a)
+    g = b_mean + (b2 - b_mean) * s**2
+    dg = 2.0 * (b2 - b_mean) * s * c
+    cl = a1 * np.sin(2 * a)
+    cd = cd_max * s**2 + c * g
+    dcl = 2 * a1 * np.cos(2 * a)
+    dcd = 2 * cd_max * s * c - s * g + c * dg
+    return cl, cd, dcl, dcd
+
+
 _DEFAULT_STALL = (np.radians(-10.0), np.radians(15.0))
 _DEFAULT_BLEND = np.radians(1.5)
 
@@ -150,15 +204,15 @@ class LinearQuadraticPolar(Polar):
         self.cd_stall = tuple(float(c) for c in cd_stall)
         self.cl0, self.cd0, self.cl_alpha = float(cl0), float(cd0), float(cl_alpha)
         self.blend = float(blend)
-        self.cd_max = 1.11 + 0.018 * aspect_ratio
+        self.cd_max = viterna_cd_max(aspect_ratio)
         self.k = 0.5 * ((self.cd_stall[1] - cd0) / (cl0 - self.cl_stall[1]) ** 2
                         + (self.cd_stall[0] - cd0) / (cl0 - self.cl_stall[0]) ** 2)
         self._a2 = []
         self._b2 = []
         for a_s, cl_s, cd_s in zip(self.alpha_stall, self.cl_stall, self.cd_stall, strict=True):
-            s, c = np.sin(a_s), np.cos(a_s)
-            self._a2.append((cl_s - self.cd_max * s * c) * s / c**2)
-            self._b2.append((cd_s - self.cd_max * s**2) / c)
+            a2, b2 = viterna_coefficients(a_s, cl_s, cd_s, self.cd_max)
+            self._a2.append(a2)
+            self._b2.append(b2)
         self._b_mean = 0.5 * (self._b2[0] + self._b2[1])
 
     # ---------------------------------------------------------------- the laws and their slopes
@@ -169,26 +223,10 @@ class LinearQuadraticPolar(Polar):
         return cl, cd, self.cl_alpha + 0.0 * a, 2.0 * self.k * self.cl_alpha**2 * a
 
     def _viterna(self, a, side):
-        a1, b1 = 0.5 * self.cd_max, self.cd_max
-        a2, b2 = self._a2[side], self._b2[side]
-        s, c = np.sin(a), np.cos(a)
-        cl = a1 * np.sin(2 * a) + a2 * c**2 / s
-        cd = b1 * s**2 + b2 * c
-        dcl = 2 * a1 * np.cos(2 * a) + a2 * (-2 * c - c**3 / s**2)
-        dcd = 2 * b1 * s * c - b2 * s
-        return cl, cd, dcl, dcd
+        return viterna(a, self.cd_max, self._a2[side], self._b2[side])
 
     def _reverse(self, a, side):
-        a1 = 0.5 * self.cd_max
-        b2, bm = self._b2[side], self._b_mean
-        s, c = np.sin(a), np.cos(a)
-        g = bm + (b2 - bm) * s**2
-        dg = 2.0 * (b2 - bm) * s * c
-        cl = a1 * np.sin(2 * a)
-        cd = self.cd_max * s**2 + c * g
-        dcl = 2 * a1 * np.cos(2 * a)
-        dcd = 2 * self.cd_max * s * c - s * g + c * dg
-        return cl, cd, dcl, dcd
+        return reverse_flow(a, self.cd_max, self._b2[side], self._b_mean)
 
     def _blend(self, a, side):
         eps = self.blend

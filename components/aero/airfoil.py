@@ -1,0 +1,677 @@
+"""
+Tabulated airfoil polars: smooth (C1) interpolation over alpha, Reynolds and Mach, Viterna to
++-90 deg and reverse flow to +-180 deg (reference/models_aero_rotor_acoustics.md §6.2–6.4).
+
+:func:`get_polar` turns an airfoil name ('naca0012', 'naca0015', 'ls413', 'ls417'), a user table
+of (alpha [deg], cl, cd) at one Reynolds and Mach number (array, dict or file) or a ready
+:class:`~lpc_mdo.components.aero.polar.Polar` into a Polar, so a user table works wherever an
+airfoil name does.
+
+How a :class:`TablePolar` is built from a table cl, cd(alpha, Re, M):
+
+1. **Stall points of each (Re, M) slice** from the table: the positive stall angle is the first
+   table angle at or above the angle nearest 0 deg whose cl is not exceeded within the next
+   ``stall_window`` (3 deg), i.e. the first local maximum of cl that dominates the next 3 deg;
+   the negative stall angle is the mirror image (first local minimum going down). If there is
+   none, the end of the table is the stall point. (The first dominant extremum, not the global
+   one: NeuralFoil's low-confidence post-stall values can climb again beyond 20 deg.)
+2. **Composite polar of each slice** on -180..180 deg, exactly as
+   :class:`~lpc_mdo.components.aero.polar.LinearQuadraticPolar` does it, with the table in place
+   of the linear/quadratic law: the table (cubic Hermite in alpha with 3-point slopes) between
+   the stall blends; cubic Hermite blends on [alpha_s - eps, alpha_s + eps] (eps = 1.5 deg)
+   matching value and slope of the table at the inner end and of Viterna at the outer end;
+   Viterna–Corrigan (AR = 10, CD_max = 1.29) from the stall point (alpha_s, cl_s, cd_s) to
+   +-90 deg; the reverse-flow continuation to +-180 deg (with cd(180 deg) >= the slice's
+   minimum table cd, see ``_find_stall``). Values and exact alpha slopes are
+   sampled on a fixed alpha grid (0.25 deg where the tables and blends are, 2 deg elsewhere).
+3. **Run time**: tensor-product interpolation of those samples: cubic Hermite in alpha with the
+   stored exact slopes, and cubic Hermite with 3-point (parabola) slopes in ln Re and in M.
+   Each factor is C1, so cl and cd are C1 in (alpha, Re, M) jointly, periodic and C1 across
+   +-180 deg, and the analytic derivatives are those of the interpolant (complex-step safe:
+   intervals are chosen from real parts). Outside the Reynolds and Mach ranges of the table the
+   values are held at the nearest edge (zero Re or M derivative there).
+
+Tables shipped in ``lpc_mdo/data/airfoil_<name>.npz`` were made by
+``run_scripts/make_airfoil_tables.py`` (NeuralFoil 0.3.3, an XFOIL-trained model, with
+Prandtl–Glauert for Mach); ``lpc_mdo/data/README.md`` says how.
+"""
+
+import functools
+import os
+from importlib import resources
+from pathlib import Path
+
+import numpy as np
+
+from .polar import (
+    Polar,
+    PolarValues,
+    _hermite,
+    reverse_flow,
+    viterna,
+    viterna_cd_max,
+    viterna_coefficients,
+    wrap_angle,
+)
+
+#: Airfoil names with a shipped table, and the aliases that map to them.
+AIRFOIL_NAMES = ("naca0012", "naca0015", "ls413", "ls417")
+_ALIASES = {
+    "naca0012": "naca0012", "naca 0012": "naca0012", "n0012": "naca0012",
+    "naca0015": "naca0015", "naca 0015": "naca0015", "n0015": "naca0015",
+    "ls413": "ls413", "ls(1)-0413": "ls413", "gaw2": "ls413", "ga(w)-2": "ls413",
+    "ls417": "ls417", "ls(1)-0417": "ls417", "gaw1": "ls417", "ga(w)-1": "ls417",
+}
+
+_DEG = np.pi / 180.0
+
+
+# ------------------------------------------------------------------------------------------------
+# One interpolation axis: cubic Hermite with 3-point slopes, evaluated as weights on a 4-point
+# window so that a tensor product is a gather plus an einsum.
+
+
+class HermiteAxis:
+    """
+    A 1-D grid with C1 cubic Hermite interpolation whose node slopes are 3-point finite
+    differences (the slope of the parabola through each node and its neighbours; one-sided
+    parabolas at the ends), so the interpolant is linear in the node values.
+
+    The interpolant on interval k is sum_j W_kj(t) f_(s_k + j), j < width, with W_kj cubic in the
+    local coordinate t; :meth:`weights` returns the window start s_k and the weights and their
+    derivatives. Queries outside the grid are clamped to its ends (zero derivative weights there).
+
+    Parameters
+    ----------
+    nodes : array_like
+        Strictly increasing grid values (any count >= 1; one node means a constant).
+    log : bool
+        Interpolate in ln(x) (for Reynolds numbers); nodes must be > 0.
+    """
+
+    _H = np.array([[1.0, 0.0, -3.0, 2.0],    # h00
+                   [0.0, 1.0, -2.0, 1.0],    # h10 (times h)
+                   [0.0, 0.0, 3.0, -2.0],    # h01
+                   [0.0, 0.0, -1.0, 1.0]])   # h11 (times h)
+
+    def __init__(self, nodes, log=False):
+        nodes = np.asarray(nodes, dtype=float)
+        if nodes.ndim != 1 or nodes.size < 1 or not np.all(np.isfinite(nodes)):
+            raise ValueError(f"HermiteAxis: nodes must be a finite 1-D array, got {nodes!r}")
+        if np.any(np.diff(nodes) <= 0.0):
+            raise ValueError(f"HermiteAxis: nodes must be strictly increasing, got {nodes}")
+        if log and nodes[0] <= 0.0:
+            raise ValueError(f"HermiteAxis: log axis needs positive nodes, got {nodes}")
+        self.nodes = nodes
+        self.log = log
+        self.x = np.log(nodes) if log else nodes
+        n = nodes.size
+        self.n = n
+        self.width = min(n, 4)
+        if n == 1:
+            return
+        x = self.x
+        self.h = np.diff(x)
+        d = self.slope_matrix(x)
+        self.starts = np.clip(np.arange(n - 1) - 1, 0, n - self.width)
+        coef = np.zeros((n - 1, 4, self.width))
+        for k in range(n - 1):
+            full = np.zeros((4, n))
+            full[:, k] += self._H[0]
+            full[:, k + 1] += self._H[2]
+            full += self.h[k] * (np.outer(self._H[1], d[k]) + np.outer(self._H[3], d[k + 1]))
+            s = self.starts[k]
+            coef[k] = full[:, s:s + self.width]
+        self.coef = coef
+
+    @staticmethod
+    def slope_matrix(x):
+        """Matrix D with node slopes d = D f (3-point parabola slopes; secant if 2 nodes)."""
+        n = x.size
+        d = np.zeros((n, n))
+        if n == 2:
+            d[:, 0], d[:, 1] = -1.0 / (x[1] - x[0]), 1.0 / (x[1] - x[0])
+            return d
+        h = np.diff(x)
+        for i in range(1, n - 1):
+            h0, h1 = h[i - 1], h[i]
+            d[i, i - 1:i + 2] = (-h1 / (h0 * (h0 + h1)), (h1 - h0) / (h0 * h1),
+                                 h0 / (h1 * (h0 + h1)))
+        h0, h1 = h[0], h[1]
+        d[0, :3] = (-(2 * h0 + h1) / (h0 * (h0 + h1)), (h0 + h1) / (h0 * h1),
+                    -h0 / (h1 * (h0 + h1)))
+        h0, h1 = h[-2], h[-1]
+        d[-1, -3:] = (h1 / (h0 * (h0 + h1)), -(h0 + h1) / (h0 * h1),
+                      (2 * h1 + h0) / (h1 * (h0 + h1)))
+        return d
+
+    def weights(self, q, second=False):
+        """
+        Interpolation weights at the query points.
+
+        Parameters
+        ----------
+        q : ndarray, (N,)
+            Query values (real or complex; the interval comes from the real part).
+        second : bool
+            Also return second-derivative weights.
+
+        Returns
+        -------
+        index : ndarray of int, (N, width)
+            Node indices of each window.
+        w, dw[, d2w] : ndarray, (N, width)
+            Weights of the value and of d/dq (and d2/dq2) in the units of q (not ln q).
+        """
+        q = np.asarray(q)
+        num = q.shape[0]
+        dtype = np.result_type(q, float)
+        if self.n == 1:
+            ones = np.ones((num, 1), dtype=dtype)
+            out = [np.zeros((num, 1), dtype=int), ones, np.zeros_like(ones)]
+            return tuple(out + [np.zeros_like(ones)]) if second else tuple(out)
+        qr = np.real(q)
+        lo, hi = qr <= self.nodes[0], qr >= self.nodes[-1]
+        clamped = lo | hi
+        q_in = np.where(clamped, self.nodes[0], q)
+        u = np.log(q_in) if self.log else q_in
+        u = np.where(lo, self.x[0], np.where(hi, self.x[-1], u))
+        k = np.clip(np.searchsorted(self.x, np.real(u), side="right") - 1, 0, self.n - 2)
+        h = self.h[k]
+        t = (u - self.x[k]) / h
+        one, zero = np.ones_like(t), np.zeros_like(t)
+        powers = np.stack([one, t, t * t, t * t * t], axis=-1)
+        dpowers = np.stack([zero, one, 2 * t, 3 * t * t], axis=-1) / h[:, None]
+        coef = self.coef[k]
+        w = np.einsum("np,npj->nj", powers, coef)
+        du_dq = np.where(clamped, 0.0, 1.0 / q_in if self.log else 1.0)
+        dw = np.einsum("np,npj->nj", dpowers, coef) * du_dq[:, None]
+        index = self.starts[k][:, None] + np.arange(self.width)
+        if not second:
+            return index, w, dw
+        d2powers = np.stack([zero, zero, 2 * one, 6 * t], axis=-1) / (h * h)[:, None]
+        d2w = np.einsum("np,npj->nj", d2powers, coef) * (du_dq**2)[:, None]
+        if self.log:
+            d2w = d2w - np.einsum("np,npj->nj", dpowers, coef) * (du_dq**2)[:, None]
+        return index, w, dw, d2w
+
+
+def tensor_eval(table, index, weights, dweights):
+    """
+    Tensor-product interpolation over the 3 leading table axes, with the 3 partial derivatives.
+
+    value = sum_abc T[i_a, j_b, k_c, ...] u_a v_b w_c for each query; the derivative along an
+    axis replaces that axis' weights by its derivative weights.
+
+    Parameters
+    ----------
+    table : ndarray, (n1, n2, n3, *value_shape)
+    index : sequence of three (N, width) int arrays
+        Node indices of each query's window on each axis.
+    weights, dweights : sequences of three (N, width) arrays
+        Value weights and derivative weights on each axis.
+
+    Returns
+    -------
+    tuple of ndarray, each (N, *value_shape)
+        (value, d/dq1, d/dq2, d/dq3).
+    """
+    i1, i2, i3 = index
+    g = table[i1[:, :, None, None], i2[:, None, :, None], i3[:, None, None, :]]
+    (u, v, w), (du, dv, dw) = weights, dweights
+    g3 = np.einsum("nabc...,nc->nab...", g, w)
+    g3d = np.einsum("nabc...,nc->nab...", g, dw)
+    g23 = np.einsum("nab...,nb->na...", g3, v)
+    g2d3 = np.einsum("nab...,nb->na...", g3, dv)
+    g23d = np.einsum("nab...,nb->na...", g3d, v)
+    return (np.einsum("na...,na->n...", g23, u), np.einsum("na...,na->n...", g23, du),
+            np.einsum("na...,na->n...", g2d3, u), np.einsum("na...,na->n...", g23d, u))
+
+
+def _alpha_hermite_weights(grid, a):
+    """Window [2k .. 2k+3] and weights on a (value, slope)-interleaved alpha table."""
+    k = np.clip(np.searchsorted(grid, np.real(a), side="right") - 1, 0, grid.size - 2)
+    h = (grid[k + 1] - grid[k])
+    t = (a - grid[k]) / h
+    t2, t3 = t * t, t * t * t
+    w = np.stack([2 * t3 - 3 * t2 + 1, (t3 - 2 * t2 + t) * h, -2 * t3 + 3 * t2,
+                  (t3 - t2) * h], axis=-1)
+    dw = np.stack([(6 * t2 - 6 * t) / h, 3 * t2 - 4 * t + 1, (-6 * t2 + 6 * t) / h,
+                   3 * t2 - 2 * t], axis=-1)
+    return 2 * k[:, None] + np.arange(4), w, dw
+
+
+# ------------------------------------------------------------------------------------------------
+
+
+class TablePolar(Polar):
+    """
+    Airfoil polar from tables over (alpha, Re, M) with Viterna and reverse flow, C1 everywhere.
+
+    See the module docstring for the construction. Implements
+    :meth:`~lpc_mdo.components.aero.polar.Polar.evaluate`; also gives the stall angles
+    (:meth:`stall_angles`, the alpha* bracket), the tabulated moment coefficient
+    (:meth:`moment_coefficient`) and, for the wing airfoils, the pressure table
+    (:attr:`pressure`, see :mod:`lpc_mdo.components.aero.pressure`).
+
+    Parameters
+    ----------
+    alpha : array_like, (n_a,)
+        Table angles of attack, rad, strictly increasing, inside (-90, 90) deg. At least 5.
+    reynolds : array_like, (n_r,)
+        Table Reynolds numbers (> 0, increasing); one value for a single-Re table.
+    mach : array_like, (n_m,)
+        Table Mach numbers (>= 0, increasing); one value for a single-Mach table.
+    cl, cd : array_like, (n_a, n_r, n_m) (or (n_a,) for a single slice)
+        Lift and drag coefficients; cd > 0.
+    cm : array_like, optional
+        Moment coefficient about the quarter chord, same shape (stored, used by
+        :meth:`moment_coefficient`).
+    name : str
+        Label.
+    blend : float
+        Half width eps of the stall blends, rad (default 1.5 deg, as the reference).
+    aspect_ratio : float
+        Viterna aspect ratio (CD_max = 1.11 + 0.018 AR); default 10.
+    stall_window : float
+        Look-ahead of the stall search, rad (default 3 deg).
+    pressure : object, optional
+        A pressure table (see :mod:`lpc_mdo.components.aero.pressure`) attached as
+        :attr:`pressure`.
+    """
+
+    def __init__(self, alpha, reynolds, mach, cl, cd, cm=None, *, name="table",
+                 blend=1.5 * _DEG, aspect_ratio=10.0, stall_window=3.0 * _DEG, pressure=None):
+        self.name = str(name)
+        alpha = np.asarray(alpha, dtype=float)
+        reynolds = np.atleast_1d(np.asarray(reynolds, dtype=float))
+        mach = np.atleast_1d(np.asarray(mach, dtype=float))
+        shape = (alpha.size, reynolds.size, mach.size)
+        cl, cd = np.asarray(cl, dtype=float), np.asarray(cd, dtype=float)
+        if cl.size == cd.size == np.prod(shape):        # e.g. (n_a,) for a single slice
+            cl, cd = cl.reshape(shape), cd.reshape(shape)
+        self._check(alpha, reynolds, mach, cl, cd, shape, blend)
+        self.blend = float(blend)
+        self.cd_max = viterna_cd_max(aspect_ratio)
+        self.pressure = pressure
+        self.table_alpha, self.table_reynolds, self.table_mach = alpha, reynolds, mach
+        self.table_cl, self.table_cd = cl, cd
+        self.table_cm = None if cm is None else np.asarray(cm, dtype=float).reshape(shape)
+
+        self._alpha_axis = HermiteAxis(alpha)
+        self._re_axis = HermiteAxis(reynolds, log=True)
+        self._mach_axis = HermiteAxis(mach)
+        self._find_stall(stall_window)
+        self._build_composite()
+
+    # ------------------------------------------------------------------------------ construction
+
+    def _check(self, alpha, reynolds, mach, cl, cd, shape, blend):
+        def fail(field, value, allowed):
+            raise ValueError(f"TablePolar '{self.name}': {field} = {value}; allowed: {allowed}.")
+
+        if alpha.ndim != 1 or alpha.size < 5:
+            fail("alpha", alpha, "a 1-D array of at least 5 angles")
+        if not np.all(np.isfinite(alpha)) or np.any(np.diff(alpha) <= 0.0):
+            fail("alpha", alpha, "finite and strictly increasing (duplicate angles?)")
+        if alpha[0] <= -np.pi / 2 + blend or alpha[-1] >= np.pi / 2 - blend:
+            fail("alpha range (deg)", np.degrees([alpha[0], alpha[-1]]),
+                 "inside (-90 + blend, 90 - blend) deg; Viterna covers the rest")
+        if np.any(reynolds <= 0.0) or np.any(np.diff(reynolds) <= 0.0):
+            fail("reynolds", reynolds, "> 0 and strictly increasing")
+        if np.any(mach < 0.0) or np.any(mach >= 1.0) or np.any(np.diff(mach) <= 0.0):
+            fail("mach", mach, "in [0, 1) and strictly increasing")
+        for field, value in (("cl", cl), ("cd", cd)):
+            value = np.asarray(value)
+            if value.shape != shape:
+                fail(f"{field} shape", value.shape, f"{shape} (alpha, reynolds, mach)")
+            if not np.all(np.isfinite(value)):
+                fail(field, "non-finite values", "finite numbers")
+        if np.any(np.asarray(cd) <= 0.0):
+            fail("cd", f"min {np.min(cd)}", "> 0")
+
+    def _find_stall(self, window):
+        """First dominant local max (min) of cl going up (down) from the angle nearest 0."""
+        a, cl, cd = self.table_alpha, self.table_cl, self.table_cd
+        i0 = int(np.argmin(np.abs(a)))
+        n_r, n_m = cl.shape[1:]
+        idx = np.zeros((2, n_r, n_m), dtype=int)
+        for r in range(n_r):
+            for m in range(n_m):
+                c = cl[:, r, m]
+                hi = a.size - 1
+                for i in range(i0, a.size):
+                    ahead = c[(a > a[i]) & (a <= a[i] + window + 1e-12)]
+                    if ahead.size == 0 or c[i] >= ahead.max():
+                        hi = i
+                        break
+                lo = 0
+                for i in range(i0, -1, -1):
+                    ahead = c[(a < a[i]) & (a >= a[i] - window - 1e-12)]
+                    if ahead.size == 0 or c[i] <= ahead.min():
+                        lo = i
+                        break
+                idx[:, r, m] = (lo, hi)
+        self.alpha_stall = a[idx]                                    # (2, n_r, n_m), rad
+        grid = np.indices(idx.shape[1:])
+        self.cl_stall = cl[idx, grid[0][None], grid[1][None]]
+        self.cd_stall = cd[idx, grid[0][None], grid[1][None]]
+        eps = self.blend
+        if np.any(self.alpha_stall[0] > -2 * eps) or np.any(self.alpha_stall[1] < 2 * eps):
+            raise ValueError(
+                f"TablePolar '{self.name}': stall angles (deg) "
+                f"{np.degrees(self.alpha_stall.min()):.2f}..{np.degrees(self.alpha_stall.max()):.2f}"
+                f" found from the table; allowed: negative stall < -2 blend and positive stall > "
+                f"2 blend (the table must cover the attached range on both sides of 0 deg).")
+        if np.any(self.cl_stall[0] >= self.cl_stall[1]):
+            raise ValueError(f"TablePolar '{self.name}': cl at negative stall >= cl at positive "
+                             f"stall; allowed: cl increasing through the attached range.")
+        self._a2, self._b2 = viterna_coefficients(self.alpha_stall, self.cl_stall,
+                                                  self.cd_stall, self.cd_max)
+        # Reverse flow (polar.reverse_flow) has cd(+-180 deg) = -B_m; B_m is the mean of the two
+        # sides' B2 as in LinearQuadraticPolar, capped at -(the slice's minimum table cd) so the
+        # drag at 180 deg is never below the forward minimum drag (low-Re slices with early
+        # stall have B2 > 0 and would otherwise give cd < 0 near 180 deg).
+        self._b_mean = np.minimum(0.5 * (self._b2[0] + self._b2[1]), -cd.min(axis=0))
+
+    def _table_slices(self, a):
+        """Table cl, cd and alpha slopes at angles a (n,), every slice: arrays (n, n_r, n_m)."""
+        a_clip = np.clip(a, self.table_alpha[0], self.table_alpha[-1])
+        index, w, dw = self._alpha_axis.weights(a_clip)
+        out = []
+        for table in (self.table_cl, self.table_cd):
+            g = table[index]                                         # (n, width, n_r, n_m)
+            out.append((np.einsum("nj,njrm->nrm", w, g), np.einsum("nj,njrm->nrm", dw, g)))
+        return out[0][0], out[1][0], out[0][1], out[1][1]
+
+    def _composite_grid(self):
+        eps = self.blend
+        lo = min(np.min(self.alpha_stall[0]) - eps, self.table_alpha[0], -30 * _DEG)
+        hi = max(np.max(self.alpha_stall[1]) + eps, self.table_alpha[-1], 30 * _DEG)
+        fine = np.arange(np.floor(lo / _DEG / 2) * 2, np.ceil(hi / _DEG / 2) * 2 + 1e-9, 0.25)
+        left = np.arange(-180.0, fine[0] - 1e-9, 2.0)
+        right = np.arange(180.0, fine[-1] + 1e-9, -2.0)[::-1]
+        return np.concatenate([left, fine, right]) * _DEG
+
+    def _composite(self, a):
+        """Composite cl, cd and slopes at grid angles a (n,) for every slice: (n, n_r, n_m)."""
+        eps = self.blend
+        n = a.size
+        shape = (n,) + self.alpha_stall.shape[1:]
+        aa = np.broadcast_to(a[:, None, None], shape)
+        a_neg, a_pos = (np.broadcast_to(s, shape) for s in self.alpha_stall)
+        half_pi = 0.5 * np.pi
+        out = [np.zeros(shape) for _ in range(4)]
+
+        tab = self._table_slices(a)
+        attached = (aa >= a_neg + eps) & (aa <= a_pos - eps)
+        for o, v in zip(out, tab, strict=True):
+            o[attached] = v[attached]
+
+        def stall_params(side, mask):
+            sel = np.nonzero(mask)[1:]
+            return self._a2[side][sel], self._b2[side][sel]
+
+        for side, mask in ((0, (aa >= -half_pi) & (aa < a_neg - eps)),
+                           (1, (aa > a_pos + eps) & (aa <= half_pi))):
+            a2, b2 = stall_params(side, mask)
+            for o, v in zip(out, viterna(aa[mask], self.cd_max, a2, b2), strict=True):
+                o[mask] = v
+        for side, mask in ((0, aa < -half_pi), (1, aa > half_pi)):
+            sel = np.nonzero(mask)[1:]
+            values = reverse_flow(aa[mask], self.cd_max, self._b2[side][sel], self._b_mean[sel])
+            for o, v in zip(out, values, strict=True):
+                o[mask] = v
+        # Stall blends: Hermite between the table at the inner end and Viterna at the outer end.
+        for side in (0, 1):
+            a_s = self.alpha_stall[side]
+            x0, x1 = a_s - eps, a_s + eps
+            inner = x1 if side == 0 else x0
+            outer = x0 if side == 0 else x1
+            t_cl, t_cd, t_dcl, t_dcd = self._table_at(inner)
+            v_cl, v_cd, v_dcl, v_dcd = viterna(outer, self.cd_max, self._a2[side],
+                                               self._b2[side])
+            if side == 0:
+                ends = ((v_cl, v_dcl, t_cl, t_dcl), (v_cd, v_dcd, t_cd, t_dcd))
+            else:
+                ends = ((t_cl, t_dcl, v_cl, v_dcl), (t_cd, t_dcd, v_cd, v_dcd))
+            mask = (aa >= x0[None]) & (aa <= x1[None])
+            if side == 0:
+                mask &= aa < a_neg + eps
+            else:
+                mask &= aa > a_pos - eps
+            sel = np.nonzero(mask)[1:]
+            for (f0, d0, f1, d1), (o_f, o_d) in zip(ends, ((out[0], out[2]), (out[1], out[3])),
+                                                    strict=True):
+                f, df = _hermite(aa[mask], x0[sel], x1[sel], f0[sel], d0[sel], f1[sel], d1[sel])
+                o_f[mask], o_d[mask] = f, df
+        return out
+
+    def _table_at(self, a_slice):
+        """Table cl, cd and slopes at one angle per slice a_slice (n_r, n_m)."""
+        n_r, n_m = a_slice.shape
+        index, w, dw = self._alpha_axis.weights(np.clip(a_slice.ravel(), self.table_alpha[0],
+                                                        self.table_alpha[-1]))
+        r, m = np.meshgrid(np.arange(n_r), np.arange(n_m), indexing="ij")
+        r, m = r.ravel()[:, None], m.ravel()[:, None]
+        out = []
+        for table in (self.table_cl, self.table_cd):
+            g = table[index, r, m]
+            out.append((np.sum(w * g, axis=1).reshape(n_r, n_m),
+                        np.sum(dw * g, axis=1).reshape(n_r, n_m)))
+        return out[0][0], out[1][0], out[0][1], out[1][1]
+
+    def _build_composite(self):
+        grid = self._composite_grid()
+        cl, cd, dcl, dcd = self._composite(grid)
+        n_g = grid.size
+        table = np.empty((2 * n_g,) + cl.shape[1:] + (2,))
+        table[0::2, ..., 0], table[1::2, ..., 0] = cl, dcl
+        table[0::2, ..., 1], table[1::2, ..., 1] = cd, dcd
+        self.alpha_grid = grid
+        self._composite_table = table
+        stall = np.moveaxis(self.alpha_stall, 0, -1)                  # (n_r, n_m, 2)
+        self._stall_table = stall[None]                               # (1, n_r, n_m, 2)
+
+    # ------------------------------------------------------------------------------ evaluation
+
+    def _conditions(self, reynolds, mach):
+        ir, wr, dwr = self._re_axis.weights(reynolds)
+        im, wm, dwm = self._mach_axis.weights(mach)
+        return (ir, wr, dwr), (im, wm, dwm)
+
+    def evaluate(self, alpha, reynolds, mach):
+        alpha, reynolds, mach = np.broadcast_arrays(np.asarray(alpha), np.asarray(reynolds),
+                                                    np.asarray(mach))
+        shape = alpha.shape
+        a = wrap_angle(alpha).ravel()
+        (ir, wr, dwr), (im, wm, dwm) = self._conditions(reynolds.ravel(), mach.ravel())
+        ia, wa, dwa = _alpha_hermite_weights(self.alpha_grid, a)
+        values = tensor_eval(self._composite_table, (ia, ir, im), (wa, wr, wm), (dwa, dwr, dwm))
+        out = [v[:, f].reshape(shape) for f in (0, 1) for v in values]
+        return PolarValues(cl=out[0], dcl_dalpha=out[1], dcl_dreynolds=out[2], dcl_dmach=out[3],
+                           cd=out[4], dcd_dalpha=out[5], dcd_dreynolds=out[6], dcd_dmach=out[7])
+
+    def stall_angles(self, reynolds, mach):
+        """
+        Negative and positive stall angles at (Re, M), interpolated like the polar.
+
+        Returns
+        -------
+        tuple of ndarray
+            (alpha_neg, alpha_pos, dneg_dre, dpos_dre, dneg_dm, dpos_dm), each of the broadcast
+            shape of the inputs; angles in rad.
+        """
+        reynolds, mach = np.broadcast_arrays(np.asarray(reynolds), np.asarray(mach))
+        shape = reynolds.shape
+        (ir, wr, dwr), (im, wm, dwm) = self._conditions(reynolds.ravel(), mach.ravel())
+        zero_idx = np.zeros((ir.shape[0], 1), dtype=int)
+        one = np.ones((ir.shape[0], 1))
+        v, _, d_r, d_m = tensor_eval(self._stall_table, (zero_idx, ir, im), (one, wr, wm),
+                                     (0.0 * one, dwr, dwm))
+        return tuple(x[:, s].reshape(shape) for x in (v, d_r, d_m) for s in (0, 1))
+
+    def moment_coefficient(self, alpha, reynolds, mach):
+        """
+        Tabulated quarter-chord moment coefficient and its derivatives (alpha, Re, M).
+
+        Pre-stall table only: alpha is clamped to the table range (no post-stall model).
+
+        Returns
+        -------
+        tuple of ndarray
+            (cm, dcm_dalpha, dcm_dreynolds, dcm_dmach).
+        """
+        if self.table_cm is None:
+            raise ValueError(f"TablePolar '{self.name}' has no cm table")
+        alpha, reynolds, mach = np.broadcast_arrays(np.asarray(alpha), np.asarray(reynolds),
+                                                    np.asarray(mach))
+        shape = alpha.shape
+        ia, wa, dwa = self._alpha_axis.weights(wrap_angle(alpha).ravel())
+        (ir, wr, dwr), (im, wm, dwm) = self._conditions(reynolds.ravel(), mach.ravel())
+        values = tensor_eval(self.table_cm, (ia, ir, im), (wa, wr, wm), (dwa, dwr, dwm))
+        return tuple(v.reshape(shape) for v in values)
+
+    # ------------------------------------------------------------------------------ constructors
+
+    @classmethod
+    def from_npz(cls, path, **kwargs):
+        """Load a table in the ``lpc_mdo/data/airfoil_<name>.npz`` format (alpha in degrees)."""
+        from .pressure import PressureTable
+
+        with np.load(path, allow_pickle=False) as data:
+            keys = set(data.files)
+            missing = {"alpha_deg", "cl", "cd"} - keys
+            if missing:
+                raise ValueError(f"{path}: missing arrays {sorted(missing)}; an airfoil table "
+                                 f"needs alpha_deg, cl, cd (and optionally reynolds, mach, cm)")
+            alpha = np.radians(data["alpha_deg"])
+            reynolds = data["reynolds"] if "reynolds" in keys else np.array([1e6])
+            mach = data["mach"] if "mach" in keys else np.array([0.0])
+            cm = data["cm"] if "cm" in keys else None
+            name = str(data["name"]) if "name" in keys else Path(path).stem
+            pressure = PressureTable.from_npz_data(data) if "cp_upper" in keys else None
+            return cls(alpha, reynolds, mach, data["cl"], data["cd"], cm, name=name,
+                       pressure=pressure, **kwargs)
+
+    @classmethod
+    def from_alpha_cl_cd(cls, alpha_deg, cl, cd, reynolds=1e6, mach=0.0, name="user table",
+                         **kwargs):
+        """
+        A single-(Re, M) polar from a table of alpha [deg], cl, cd (any order; sorted here).
+
+        Reynolds and Mach derivatives are zero (the table holds for every Re and M).
+        """
+        alpha_deg, cl, cd = (np.asarray(v, dtype=float).ravel() for v in (alpha_deg, cl, cd))
+        if not alpha_deg.size == cl.size == cd.size:
+            raise ValueError(f"{name}: alpha, cl and cd have lengths {alpha_deg.size}, {cl.size},"
+                             f" {cd.size}; allowed: equal lengths")
+        if alpha_deg.size and np.ptp(alpha_deg) < 2.0:
+            raise ValueError(f"{name}: alpha spans {np.ptp(alpha_deg):.3g} deg; tables give alpha "
+                             f"in degrees over the attached range and past both stall points")
+        order = np.argsort(alpha_deg, kind="stable")
+        return cls(np.radians(alpha_deg[order]), [reynolds], [mach], cl[order], cd[order],
+                   name=name, **kwargs)
+
+    @classmethod
+    def from_text(cls, path, **kwargs):
+        """
+        Read a polar text file: every line with at least three numbers gives alpha [deg], cl, cd
+        (its first three columns); other lines (headers, comments) are skipped, so XFOIL polar
+        files (alpha CL CD CDp CM ...) load as they are.
+        """
+        rows = []
+        with open(path, encoding="utf-8", errors="replace") as fh:
+            for line in fh:
+                parts = line.replace(",", " ").split()
+                try:
+                    values = [float(p) for p in parts[:3]]
+                except ValueError:
+                    continue
+                if len(values) == 3:
+                    rows.append(values)
+        if len(rows) < 5:
+            raise ValueError(f"{path}: found {len(rows)} rows of (alpha [deg], cl, cd); allowed:"
+                             f" a text table with at least 5 such rows")
+        rows = np.array(rows)
+        kwargs.setdefault("name", Path(path).stem)
+        return cls.from_alpha_cl_cd(rows[:, 0], rows[:, 1], rows[:, 2], **kwargs)
+
+
+# ------------------------------------------------------------------------------------------------
+
+
+def airfoil_table_path(name):
+    """Path of the shipped table of an airfoil name (see :data:`AIRFOIL_NAMES`)."""
+    key = _ALIASES.get(str(name).strip().lower())
+    if key is None:
+        raise ValueError(f"airfoil = {name!r}; allowed: {', '.join(AIRFOIL_NAMES)}, a file "
+                         f"(.npz or text with alpha [deg], cl, cd columns), an (n, 3) table or a "
+                         f"Polar")
+    return Path(str(resources.files("lpc_mdo") / "data" / f"airfoil_{key}.npz"))
+
+
+@functools.lru_cache(maxsize=None)
+def _named_polar(key):
+    return TablePolar.from_npz(airfoil_table_path(key))
+
+
+def get_polar(airfoil):
+    """
+    A :class:`~lpc_mdo.components.aero.polar.Polar` from an airfoil name, a table or a Polar.
+
+    Parameters
+    ----------
+    airfoil : str, os.PathLike, Polar, array_like or dict
+        - a name: 'naca0012', 'naca0015', 'ls413' (= GA(W)-2, LS(1)-0413), 'ls417' (= GA(W)-1,
+          LS(1)-0417); the shipped table (one cached instance per name);
+        - a file: ``.npz`` in the shipped format (``alpha_deg``, ``cl``, ``cd`` and optional
+          ``reynolds``, ``mach``, ``cm``), or a text file whose rows are alpha [deg], cl, cd
+          (e.g. an XFOIL polar file);
+        - an (n, 3) array of rows alpha [deg], cl, cd at one Reynolds and Mach number;
+        - a dict with ``cl``, ``cd`` and ``alpha_deg`` or ``alpha_rad`` (optional ``reynolds``,
+          ``mach`` for a 3-D table, ``name``);
+        - a Polar, returned unchanged.
+
+    Returns
+    -------
+    Polar
+    """
+    if isinstance(airfoil, Polar):
+        return airfoil
+    if isinstance(airfoil, (str, os.PathLike)):
+        text = str(airfoil)
+        key = _ALIASES.get(text.strip().lower())
+        if key is not None:
+            return _named_polar(key)
+        path = Path(text).expanduser()
+        if path.is_file():
+            if path.suffix.lower() == ".npz":
+                return TablePolar.from_npz(path)
+            return TablePolar.from_text(path)
+        airfoil_table_path(text)  # raises the error listing the allowed names
+    if isinstance(airfoil, dict):
+        d = dict(airfoil)
+        if "alpha_deg" in d:
+            alpha = np.radians(np.asarray(d.pop("alpha_deg"), dtype=float))
+        elif "alpha_rad" in d:
+            alpha = np.asarray(d.pop("alpha_rad"), dtype=float)
+        else:
+            raise ValueError("airfoil table dict: needs 'alpha_deg' or 'alpha_rad', 'cl', 'cd'")
+        name = d.pop("name", "user table")
+        re = d.pop("reynolds", [1e6])
+        m = d.pop("mach", [0.0])
+        cl, cd, cm = d.pop("cl"), d.pop("cd"), d.pop("cm", None)
+        if d:
+            raise ValueError(f"airfoil table dict: unknown keys {sorted(d)}")
+        if np.size(re) == 1 and np.size(m) == 1:
+            return TablePolar.from_alpha_cl_cd(np.degrees(alpha), cl, cd, np.ravel(re)[0],
+                                               np.ravel(m)[0], name=name)
+        return TablePolar(alpha, re, m, cl, cd, cm, name=name)
+    table = np.asarray(airfoil, dtype=float)
+    if table.ndim == 2 and table.shape[1] != 3 and table.shape[0] == 3:
+        table = table.T
+    if table.ndim != 2 or table.shape[1] != 3:
+        raise ValueError(f"airfoil table shape {table.shape}; allowed: (n, 3) rows of "
+                         f"alpha [deg], cl, cd")
+    return TablePolar.from_alpha_cl_cd(table[:, 0], table[:, 1], table[:, 2])

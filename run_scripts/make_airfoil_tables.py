@@ -1,0 +1,429 @@
+#!/usr/bin/env python3
+"""
+Regenerate the airfoil tables ``lpc_mdo/data/airfoil_<name>.npz``.
+
+What each file holds (all angles in degrees in the files; the runtime converts to radians):
+
+- ``alpha_deg`` (n_a), ``reynolds`` (n_r), ``mach`` (n_m) and ``cl``, ``cd``, ``cm``
+  (n_a, n_r, n_m): the polar from NeuralFoil 0.3.3 (an XFOIL-trained network; incompressible)
+  with the Prandtl-Glauert rule for Mach (cl and cm divided by sqrt(1 - M^2), cd unchanged);
+  ``confidence`` is NeuralFoil's analysis confidence (0..1).
+- wing airfoils only (``ls413``, ``ls417``): the chordwise pressure coefficient from XFOIL 6.99
+  (Debian package ``xfoil``), ``cp_alpha_deg`` (p_a), ``cp_reynolds`` (p_r), ``cp_mach`` (p_m),
+  ``x`` (n_x stations, x/c from the leading edge, cosine spaced), ``y_upper``, ``y_lower`` (n_x,
+  surface heights y/c at the stations), ``cp_upper``, ``cp_lower`` (p_a, p_r, p_m, n_x),
+  ``cp_converged`` (p_a, p_r, p_m) and XFOIL's own ``xfoil_cl``, ``xfoil_cd``, ``xfoil_cm``
+  (NaN where XFOIL did not converge).
+
+Usage (a few seconds for the polars; the XFOIL pressure tables take about 5 minutes of CPU,
+about 5 minutes wall time with ``--jobs 2``; a rerun reproduces the shipped arrays bit for bit)::
+
+    python3 -m venv /tmp/genvenv && /tmp/genvenv/bin/pip install neuralfoil==0.3.3
+    apt-get install xfoil xvfb   # pressure tables only (XFOIL 6.99 needs an X display)
+    /tmp/genvenv/bin/python run_scripts/make_airfoil_tables.py [--airfoils ls413 ...]
+        [--coordinates ../shared/data/airfoils] [--out lpc_mdo/data] [--jobs 2] [--no-pressure]
+
+NeuralFoil and XFOIL are generation-time tools only; the lpc_mdo runtime reads the ``.npz`` files
+with numpy. ``lpc_mdo/data/README.md`` records the settings used for the shipped files.
+"""
+
+import argparse
+import concurrent.futures
+import datetime
+import os
+import queue
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+from importlib import metadata
+from pathlib import Path
+
+import numpy as np
+
+REPO = Path(__file__).resolve().parents[1]
+DEFAULT_COORDINATES = REPO.parent / "shared" / "data" / "airfoils"
+DEFAULT_OUT = REPO / "lpc_mdo" / "data"
+
+# name: coordinate file (None = generated NACA 4-digit symmetric section with thickness t),
+# description, symmetric flag, whether to make XFOIL pressure tables.
+AIRFOILS = {
+    "naca0012": dict(file="naca0012.dat", t=0.12, symmetric=True, pressure=False,
+                     description="NACA 0012 (rotor and propeller blades)"),
+    "naca0015": dict(file=None, t=0.15, symmetric=True, pressure=False,
+                     description="NACA 0015 (tails), coordinates generated from the four-digit "
+                                 "equation with the naca0012.dat rule (open trailing edge)"),
+    "ls413": dict(file="ls413_gaw2.dat", symmetric=False, pressure=True,
+                  description="NASA LS(1)-0413 = GA(W)-2 (wing, project default)"),
+    "ls417": dict(file="ls417_gaw1.dat", symmetric=False, pressure=True,
+                  description="NASA LS(1)-0417 = GA(W)-1 (wing, public-code alternative)"),
+}
+
+# Polar grid (NeuralFoil): alpha every 0.5 deg on +-25 deg (NeuralFoil's confident range; the
+# runtime replaces everything beyond each slice's stall point by Viterna), Reynolds numbers
+# roughly log-uniform on 1e5..1e7 (covers the paper's 1e5..8e6), Mach 0..0.6 (the hover tip-Mach
+# limit; the paper's range is 0..0.5).
+ALPHA_DEG = np.arange(-25.0, 25.0 + 1e-9, 0.5)
+REYNOLDS = np.array([1e5, 2e5, 3e5, 5e5, 1e6, 2e6, 3e6, 5e6, 1e7])
+MACH = np.array([0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6])
+N_CRIT = 9.0
+MODEL_SIZE = "xxxlarge"
+
+# Pressure grid (XFOIL): every 1 deg on -16..22 deg (run in 0.5 deg steps from 0 deg up and down
+# for convergence), 5 Reynolds numbers, Mach 0..0.5, 240 panel nodes resampled to N_X cosine
+# spaced stations per surface.
+CP_ALPHA_DEG = np.arange(-16.0, 22.0 + 1e-9, 1.0)
+CP_REYNOLDS = np.array([1e5, 3e5, 1e6, 3e6, 1e7])
+CP_MACH = np.array([0.0, 0.1, 0.2, 0.3, 0.4, 0.5])
+XFOIL_PANELS = 240
+XFOIL_ITER = 80
+XFOIL_SUBSTEP = 0.5
+N_X = 61
+
+
+def naca4_symmetric(t, n=81):
+    """NACA 00tt coordinates, Selig order, cosine spacing, open trailing edge (as naca0012.dat)."""
+    beta = np.linspace(0.0, np.pi, n)
+    x = 0.5 * (1.0 - np.cos(beta))
+    y = 5 * t * (0.2969 * np.sqrt(x) - 0.1260 * x - 0.3516 * x**2 + 0.2843 * x**3
+                 - 0.1015 * x**4)
+    upper = np.column_stack([x[::-1], y[::-1]])
+    lower = np.column_stack([x[1:], -y[1:]])
+    return np.vstack([upper, lower])
+
+
+def load_coordinates(name, coordinates_dir):
+    spec = AIRFOILS[name]
+    if spec["file"] is None:
+        return naca4_symmetric(spec["t"])
+    path = Path(coordinates_dir) / spec["file"]
+    if not path.is_file():
+        raise SystemExit(f"coordinate file {path} not found; pass --coordinates DIR")
+    return np.loadtxt(path, skiprows=1)
+
+
+# ------------------------------------------------------------------------------ polars (NeuralFoil)
+
+def polar_tables(coords, symmetric):
+    """
+    cl, cd, cm, confidence on ALPHA_DEG x REYNOLDS x MACH.
+
+    NeuralFoil is incompressible; Mach enters by Prandtl-Glauert, cl = cl_0/beta and
+    cm = cm_0/beta with beta = sqrt(1 - M^2), cd unchanged (subcritical flow, no wave drag).
+    """
+    import aerosandbox as asb
+    import neuralfoil as nf
+
+    airfoil = asb.Airfoil(name="airfoil", coordinates=coords)
+    a, r = np.meshgrid(ALPHA_DEG, REYNOLDS, indexing="ij")
+    out = nf.get_aero_from_airfoil(airfoil, alpha=a.ravel(), Re=r.ravel(), n_crit=N_CRIT,
+                                   model_size=MODEL_SIZE)
+    cl, cd, cm, conf = (np.reshape(np.asarray(out[k], dtype=float), a.shape)
+                        for k in ("CL", "CD", "CM", "analysis_confidence"))
+    if symmetric:  # remove the Kulfan-fit asymmetry: cl, cm odd and cd even in alpha
+        cl = 0.5 * (cl - cl[::-1])
+        cm = 0.5 * (cm - cm[::-1])
+        cd = 0.5 * (cd + cd[::-1])
+        conf = 0.5 * (conf + conf[::-1])
+    inv_beta = 1.0 / np.sqrt(1.0 - MACH**2)
+    return (cl[..., None] * inv_beta, cd[..., None] * np.ones_like(MACH),
+            cm[..., None] * inv_beta, conf[..., None] * np.ones_like(MACH))
+
+
+# ------------------------------------------------------------------------------ pressure (XFOIL)
+
+def _xfoil_alphas():
+    """The two sweeps (0 deg up, -0.5 deg down), in XFOIL_SUBSTEP steps."""
+    up = np.arange(0.0, CP_ALPHA_DEG.max() + 1e-9, XFOIL_SUBSTEP)
+    down = np.arange(-XFOIL_SUBSTEP, CP_ALPHA_DEG.min() - 1e-9, -XFOIL_SUBSTEP)
+    return up, down
+
+
+class Xfoil:
+    """
+    An interactive XFOIL process: each call sends commands plus an unknown marker command and
+    reads the output up to XFOIL's "not recognized" reply, so the script can react to each point
+    (re-initialise the boundary layer after a failure, stop a sweep after repeated failures).
+    """
+
+    MARK = "ZZMARK"
+    REPLY = "ZZMA command not recognized"
+
+    def __init__(self, workdir, display):
+        env = dict(os.environ, DISPLAY=display, GFORTRAN_UNBUFFERED_ALL="y")
+        self.proc = subprocess.Popen(["xfoil"], stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                                     stderr=subprocess.STDOUT, text=True, cwd=workdir, env=env)
+        self.lines = queue.Queue()
+        threading.Thread(target=self._read, daemon=True).start()
+
+    def _read(self):
+        for line in self.proc.stdout:
+            self.lines.put(line)
+        self.lines.put(None)
+
+    def run(self, *commands, timeout=30.0):
+        self.proc.stdin.write("\n".join((*commands, self.MARK)) + "\n")
+        self.proc.stdin.flush()
+        out = []
+        deadline = time.monotonic() + timeout
+        while True:
+            try:
+                line = self.lines.get(timeout=max(deadline - time.monotonic(), 1e-3))
+            except queue.Empty:
+                raise TimeoutError from None
+            if line is None:
+                raise TimeoutError("xfoil exited")
+            if self.REPLY in line:
+                return "".join(out)
+            out.append(line)
+
+    def close(self):
+        try:
+            self.proc.stdin.write("\n\n\nQUIT\n")
+            self.proc.stdin.flush()
+            self.proc.wait(timeout=5)
+        except (OSError, subprocess.TimeoutExpired):
+            self.proc.kill()
+            self.proc.wait()
+
+
+_RE_CL = re.compile(r"a =\s*(\S+)\s+CL =\s*(\S+)")
+_RE_CD = re.compile(r"Cm =\s*(\S+)\s+CD =\s*(\S+)")
+
+
+def _start(workdir, display, reynolds):
+    (workdir / "nodes.txt").unlink(missing_ok=True)  # PSAV would ask before overwriting
+    xf = Xfoil(workdir, display)
+    xf.run("LOAD airfoil.dat")
+    xf.run("PPAR", f"N {XFOIL_PANELS}", "", "")
+    xf.run("PSAV nodes.txt")
+    xf.run("OPER", f"VISC {reynolds:.6g}", f"ITER {XFOIL_ITER}")
+    return xf
+
+
+def xfoil_session(args):
+    """XFOIL for one airfoil and Reynolds number over all CP_MACH; returns the converged points."""
+    coords, reynolds, workdir, display = args
+    workdir = Path(workdir)
+    workdir.mkdir(parents=True, exist_ok=True)
+    np.savetxt(workdir / "airfoil.dat", coords, header="airfoil", comments="", fmt="%.7f")
+    stored = {round(float(a), 2) for a in CP_ALPHA_DEG}
+    result = {"mach": {}}
+    xf = _start(workdir, display, reynolds)
+    result["nodes"] = np.loadtxt(workdir / "nodes.txt")
+    for k, mach in enumerate(CP_MACH):
+        converged = {}
+        for sweep in _xfoil_alphas():
+            try:
+                xf.run(f"MACH {mach:g}")
+                bl_ready = xf.run("INIT")  # INIT toggles XFOIL's flag; make it "initialise"
+                if "will be initialized" not in bl_ready:
+                    xf.run("INIT")
+                failures = 0
+                for a in sweep:
+                    out = xf.run(f"ALFA {a:.2f}")
+                    m_cl, m_cd = _RE_CL.findall(out), _RE_CD.findall(out)
+                    ok = ("VISCAL:  Convergence failed" not in out and m_cl and m_cd
+                          and np.isfinite(float(m_cd[-1][1])))
+                    if not ok:  # go on from the unconverged state (as XFOIL's ASEQ does)
+                        failures += 1
+                        if failures >= 4:
+                            break
+                        continue
+                    failures = 0
+                    key = round(float(a), 2)
+                    if key in stored:
+                        name = f"cp_{k}_{key:+06.2f}.txt"
+                        xf.run(f"CPWR {name}")
+                        cp = np.loadtxt(workdir / name, skiprows=1)[:, -1]
+                        converged[key] = (float(m_cl[-1][1]), float(m_cd[-1][1]),
+                                          float(m_cd[-1][0]), cp)
+            except TimeoutError:
+                xf.close()
+                xf = _start(workdir, display, reynolds)
+        result["mach"][k] = converged
+    xf.close()
+    return reynolds, result
+
+
+def stations(n):
+    beta = np.linspace(0.0, np.pi, n)
+    return 0.5 * (1.0 - np.cos(beta))
+
+
+def split_surfaces(nodes, values, x_st):
+    """Resample node values (XFOIL order: TE, upper, LE, lower, TE) to x stations per surface."""
+    from scipy.interpolate import PchipInterpolator
+
+    x, y = nodes[:, 0], nodes[:, 1]
+    i_le = int(np.argmin(x))
+    x_le, y_le = x[i_le], y[i_le]
+    chord = 0.5 * (x[0] + x[-1]) - x_le
+    xn, yn = (x - x_le) / chord, (y - y_le) / chord
+    out = []
+    for idx in (np.arange(i_le, -1, -1), np.arange(i_le, len(x))):
+        xs = xn[idx]
+        keep = np.concatenate([[True], np.diff(xs) > 1e-9])  # x strictly increasing from the LE
+        xs = xs[keep]
+        cols = [yn[idx][keep]] + [v[idx][keep] for v in values]
+        out.append([PchipInterpolator(xs, c)(np.clip(x_st, xs[0], xs[-1])) for c in cols])
+    return out  # [[y_u, v1_u, ...], [y_l, v1_l, ...]]
+
+
+def integrate_cl(x, y_u, y_l, cp_u, cp_l, alpha_deg):
+    """Pressure lift coefficient (trapezoid on the stations; see components/aero/pressure.py)."""
+    cn = np.trapezoid(cp_l - cp_u, x, axis=-1)
+    ca = (np.sum(0.5 * (cp_u[..., 1:] + cp_u[..., :-1]) * np.diff(y_u), axis=-1)
+          - np.sum(0.5 * (cp_l[..., 1:] + cp_l[..., :-1]) * np.diff(y_l), axis=-1))
+    a = np.radians(alpha_deg)
+    return cn * np.cos(a) - ca * np.sin(a)
+
+
+def fill_alpha_gaps(values, ok):
+    """Fill non-converged angles along axis 0: linear between neighbours, nearest at the ends."""
+    n = values.shape[0]
+    idx = np.arange(n)
+    good = np.flatnonzero(ok)
+    if good.size == 0:
+        return None
+    flat = values.reshape(n, -1)
+    filled = np.empty_like(flat)
+    for j in range(flat.shape[1]):
+        filled[:, j] = np.interp(idx, good, flat[good, j])
+    return filled.reshape(values.shape)
+
+
+def start_display():
+    """Start a private Xvfb server (XFOIL 6.99 needs an X display); return (process, ':N')."""
+    proc = subprocess.Popen(["Xvfb", "-displayfd", "1", "-nolisten", "tcp"],
+                            stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+    number = proc.stdout.readline().strip()
+    if not number:
+        proc.kill()
+        raise SystemExit("could not start Xvfb")
+    return proc, f":{number}"
+
+
+def pressure_tables(coords, jobs, name, display):
+    shape = (len(CP_ALPHA_DEG), len(CP_REYNOLDS), len(CP_MACH))
+    x_st = stations(N_X)
+    cp_u = np.full(shape + (N_X,), np.nan)
+    cp_l = np.full(shape + (N_X,), np.nan)
+    conv = np.zeros(shape, dtype=bool)
+    xf = {k: np.full(shape, np.nan) for k in ("cl", "cd", "cm")}
+    y_u = y_l = None
+    with tempfile.TemporaryDirectory(prefix=f"xfoil_{name}_") as tmp:
+        tasks = [(coords, rey, Path(tmp) / f"re{j}", display)
+                 for j, rey in enumerate(CP_REYNOLDS)]
+        with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+            results = list(pool.map(xfoil_session, tasks))
+    for j, (_, res) in enumerate(results):
+        nodes = res["nodes"]
+        for k, converged in res["mach"].items():
+            for i, a in enumerate(CP_ALPHA_DEG):
+                key = round(float(a), 2)
+                if key not in converged:
+                    continue
+                cl, cd, cm, cp = converged[key]
+                (yu, cpu), (yl, cpl) = split_surfaces(nodes, [cp], x_st)
+                y_u, y_l = yu, yl
+                cp_u[i, j, k], cp_l[i, j, k] = cpu, cpl
+                xf["cl"][i, j, k], xf["cd"][i, j, k], xf["cm"][i, j, k] = cl, cd, cm
+                conv[i, j, k] = True
+    # Consistency of the resampled Cp with XFOIL's own cl (converged points only).
+    cl_int = integrate_cl(x_st, y_u, y_l, cp_u, cp_l, CP_ALPHA_DEG[:, None, None])
+    err = np.abs(cl_int - xf["cl"])[conv]
+    print(f"  {name}: XFOIL converged {conv.sum()}/{conv.size}; |cl(Cp) - cl_xfoil| max "
+          f"{err.max():.4f}, mean {err.mean():.5f}")
+    for j in range(shape[1]):
+        for k in range(shape[2]):
+            ok = conv[:, j, k]
+            fu, fl = fill_alpha_gaps(cp_u[:, j, k], ok), fill_alpha_gaps(cp_l[:, j, k], ok)
+            if fu is None:
+                raise SystemExit(f"XFOIL converged nowhere for {name} Re={CP_REYNOLDS[j]:g} "
+                                 f"M={CP_MACH[k]:g}")
+            cp_u[:, j, k], cp_l[:, j, k] = fu, fl
+    return dict(cp_alpha_deg=CP_ALPHA_DEG, cp_reynolds=CP_REYNOLDS, cp_mach=CP_MACH, x=x_st,
+                y_upper=y_u, y_lower=y_l, cp_upper=cp_u.astype(np.float32),
+                cp_lower=cp_l.astype(np.float32), cp_converged=conv,
+                xfoil_cl=xf["cl"].astype(np.float32), xfoil_cd=xf["cd"].astype(np.float32),
+                xfoil_cm=xf["cm"].astype(np.float32))
+
+
+def xfoil_version():
+    try:
+        out = subprocess.run(["dpkg-query", "-W", "-f=${Version}", "xfoil"], capture_output=True,
+                             text=True, check=False).stdout.strip()
+    except OSError:
+        out = ""
+    return f"XFOIL 6.99 (Debian xfoil {out})" if out else "XFOIL 6.99"
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--airfoils", nargs="+", default=list(AIRFOILS), choices=list(AIRFOILS))
+    parser.add_argument("--coordinates", default=str(DEFAULT_COORDINATES),
+                        help="folder with the Selig .dat files (default ../shared/data/airfoils)")
+    parser.add_argument("--out", default=str(DEFAULT_OUT), help="output folder")
+    parser.add_argument("--jobs", type=int, default=2, help="parallel XFOIL processes")
+    parser.add_argument("--no-pressure", action="store_true",
+                        help="skip the XFOIL Cp tables (wing files are then written without them)")
+    args = parser.parse_args(argv)
+
+    try:
+        nf_version = metadata.version("neuralfoil")
+        asb_version = metadata.version("aerosandbox")
+    except metadata.PackageNotFoundError:
+        raise SystemExit("neuralfoil is not installed: pip install neuralfoil==0.3.3 (into a "
+                         "separate venv; lpc_mdo itself does not need it)") from None
+    need_pressure = not args.no_pressure and any(AIRFOILS[n]["pressure"] for n in args.airfoils)
+    if need_pressure and not (shutil.which("xfoil") and shutil.which("Xvfb")):
+        raise SystemExit("the pressure tables need XFOIL and Xvfb: apt-get install xfoil xvfb "
+                         "(or pass --no-pressure)")
+    out_dir = Path(args.out)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    stamp = datetime.date.today().isoformat()
+    xvfb, display = start_display() if need_pressure else (None, None)
+    try:
+        for name in args.airfoils:
+            make_one(name, args, nf_version, asb_version, stamp, display, out_dir)
+    finally:
+        if xvfb is not None:
+            xvfb.terminate()
+            xvfb.wait()
+    return 0
+
+
+def make_one(name, args, nf_version, asb_version, stamp, display, out_dir):
+    """Write airfoil_<name>.npz."""
+    spec = AIRFOILS[name]
+    t0 = time.process_time()
+    w0 = time.time()
+    coords = load_coordinates(name, args.coordinates)
+    cl, cd, cm, conf = polar_tables(coords, spec["symmetric"])
+    data = dict(name=name, description=spec["description"], alpha_deg=ALPHA_DEG,
+                reynolds=REYNOLDS, mach=MACH, cl=cl, cd=cd, cm=cm,
+                confidence=conf.astype(np.float32), coordinates=coords,
+                source=f"NeuralFoil {nf_version} get_aero_from_airfoil ({MODEL_SIZE}, "
+                       f"n_crit={N_CRIT:g}, free transition; AeroSandbox {asb_version} Kulfan "
+                       f"fit), incompressible, Prandtl-Glauert cl/beta and cm/beta, cd "
+                       f"unchanged; made {stamp} by run_scripts/make_airfoil_tables.py")
+    msg = f"{name}: polar {time.process_time() - t0:.1f} s CPU"
+    if spec["pressure"] and display is not None:
+        p = pressure_tables(coords, args.jobs, name, display)
+        data.update(p)
+        data["cp_source"] = (f"{xfoil_version()}, PANE {XFOIL_PANELS} nodes, viscous, "
+                             f"n_crit={N_CRIT:g}, ITER {XFOIL_ITER}, sweeps from 0 deg in "
+                             f"{XFOIL_SUBSTEP} deg steps; CPWR resampled (PCHIP) to {N_X} "
+                             f"cosine-spaced stations per surface; made {stamp}")
+    path = out_dir / f"airfoil_{name}.npz"
+    np.savez_compressed(path, **data)
+    print(f"{msg}; total {time.time() - w0:.1f} s wall, {time.process_time() - t0:.1f} s "
+          f"CPU in this process -> {path} ({path.stat().st_size / 1024:.0f} KiB)")
+
+
+if __name__ == "__main__":
+    sys.exit(main())
