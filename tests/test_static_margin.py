@@ -53,6 +53,17 @@ def test_partials_and_totals():
         assert_check_totals(totals, atol=1e-12, rtol=1e-9)
 
 
+def test_complex_step_through_the_solve():
+    # Totals by complex step go through solve_nonlinear; they must match the analytic ones.
+    prob = problem()
+    prob.set_val("normal_force_slope", -9.0e4)
+    prob.set_val("pitching_moment_slope", 3.5 * -9.0e4)
+    prob.run_model()
+    data = prob.check_totals(of=["neutral_point"], wrt=["normal_force_slope"], method="cs",
+                             out_stream=None)
+    assert_check_totals(data, atol=1e-12, rtol=1e-10)
+
+
 def test_no_neutral_point_in_bracket_is_an_analysis_error():
     prob = problem()
     prob.set_val("normal_force_slope", -1e5)

@@ -64,8 +64,11 @@ class NeutralPointComp(om.ImplicitComponent):
             raise om.AnalysisError(
                 f"{self.msginfo}: no neutral point in the bracket {self.options['bracket']} m "
                 f"(dM/dalpha = {dm:.4g} N*m/rad, dFz/dalpha = {dfz:.4g} N/rad give x = {x:.4g} m)")
-        outputs["neutral_point"] = brentq(lambda x: dm + x * dfz, min(lo, hi), max(lo, hi),
-                                          xtol=1e-12, rtol=1e-14)
+        root = brentq(lambda x: dm + x * dfz, min(lo, hi), max(lo, hi), xtol=1e-12, rtol=1e-14)
+        # One Newton step on the (possibly complex) inputs: exact for this affine residual, and
+        # it carries the complex-step perturbation that the real bracketed solve drops.
+        slope = inputs["normal_force_slope"]
+        outputs["neutral_point"] = root - (inputs["pitching_moment_slope"] + root * slope) / slope
 
     def linearize(self, inputs, outputs, partials):
         partials["neutral_point", "pitching_moment_slope"] = 1.0
