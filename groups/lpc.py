@@ -18,6 +18,8 @@ from lpc_mdo.groups.vehicle import VehicleGroup
 from lpc_mdo.vehicle import reference_vehicle
 
 PUSHER = 4  # row of the pusher in the per-rotor-group design variables
+CONSTRAINT_KINDS = ("trim", "noise", "tip_mach", "static_margin", "buckling", "soc",
+                    "radius_intersection", "torque_margin")
 # Torque margin reported for a lift motor that no included condition loads (a model built with
 # a single OEI case); large, so it never binds.
 UNUSED_MOTOR_MARGIN = 10.0
@@ -111,6 +113,14 @@ class LPCGroup(om.Group):
         )
         self.options.declare("conditions", default=None, types=(list, tuple), allow_none=True,
                              desc="names of the design conditions to include (None: all)")
+        self.options.declare("design_variables", default=None, types=(list, tuple, dict),
+                             allow_none=True,
+                             desc="design variables to declare: names, or (name, flat indices) "
+                                  "pairs (None: every one that acts on the conditions)")
+        self.options.declare("design_variable_refs", default=None, types=dict, allow_none=True,
+                             desc="name -> ref overriding the vehicle file's scaling")
+        self.options.declare("constraint_kinds", default=CONSTRAINT_KINDS, types=(list, tuple),
+                             desc=f"constraint kinds to declare, from {CONSTRAINT_KINDS}")
         self.options.declare("structural_ks_rho", default=None, types=(int, float),
                              allow_none=True,
                              desc="KS parameter of the +3g/-1g structural aggregates (None: "
@@ -280,28 +290,45 @@ class LPCGroup(om.Group):
         limits = vehicle.constraints
         present = {c.name for c in self.conditions}
         kinds = {c.kind for c in self.conditions}
-        for name, dv in vehicle.design_variables.items():
+        chosen = self.options["design_variables"]
+        if chosen is None:
+            selection = {name: None for name in vehicle.design_variables}
+        else:
+            selection = {}
+            for entry in chosen:
+                name, indices = (entry, None) if isinstance(entry, str) else entry
+                if name not in vehicle.design_variables:
+                    raise ValueError(f"{self.msginfo}: design variable {name!r} is not in the "
+                                     f"vehicle file; allowed: {list(vehicle.design_variables)}")
+                selection[name] = None if indices is None else list(indices)
+        refs = self.options["design_variable_refs"] or {}
+        for name, indices in selection.items():
+            dv = vehicle.design_variables[name]
             if not _design_variable_used(name, present, kinds):
                 continue
             shape = dv.shape
-            self.add_design_var(
-                name,
-                lower=np.asarray(dv.lower_array).reshape(shape),
-                upper=np.asarray(dv.upper_array).reshape(shape),
-                ref=dv.ref,
-                units=_units(dv.units),
-            )
+            lower = np.asarray(dv.lower_array).reshape(shape)
+            upper = np.asarray(dv.upper_array).reshape(shape)
+            ref = refs.get(name, dv.ref)
+            if indices is not None:
+                lower, upper = lower.ravel()[indices], upper.ravel()[indices]
+                ref = ref if np.ndim(ref) == 0 else np.asarray(ref).ravel()[indices]
+            self.add_design_var(name, lower=lower, upper=upper, ref=ref, units=_units(dv.units),
+                                indices=indices, flat_indices=indices is not None)
         self.add_objective("gross_mass", ref=vehicle.masses.target_gross_mass, units="kg")
+        wanted = set(self.options["constraint_kinds"])
 
         g = 9.81
-        if "hover" in present:
+        if "hover" in present and "noise" in wanted:
             self.add_constraint("hover.total_spl_a", upper=limits.max_noise, ref=10.0)
+        if "hover" in present and "trim" in wanted:
             self._trim("hover", [2], [0, 1], 0.0, g)
+        if "hover" in present and "tip_mach" in wanted:
             pairs = np.array([r.pair for r in vehicle.lift_rotors])
             tip = [int(np.flatnonzero(pairs == p)[0]) for p in range(4)]
             self.add_constraint("hover.lift_tip_mach", indices=tip, flat_indices=True,
                                 upper=limits.max_tip_mach)
-        for c in self.conditions:
+        for c in self.conditions if "trim" in wanted else ():
             if c.kind == "steady":
                 self._trim(c.name, [0, 2], [1], 0.0, g)
             elif c.kind == "transition":
@@ -311,15 +338,20 @@ class LPCGroup(om.Group):
                 self._trim(c.name, [1, 2], [0, 1, 2], 0.0, g)
             elif c.kind == "structural":
                 self._trim(c.name, [2], [], 0.0, g * abs(c.load_factor))
-        if self.options["static_margin"] and "cruise" in present:
+        if self.options["static_margin"] and "cruise" in present and "static_margin" in wanted:
             self.add_constraint("cruise.static_margin", lower=limits.min_static_margin, ref=0.1)
         bays = list(range(vehicle.wing_box.num_bays - 1))
         for name, skin in (("plus_3g", "top"), ("minus_1g", "bottom")):
-            if name in present:
+            if name in present and "buckling" in wanted:
                 self.add_constraint(f"{name}.{skin}_skin_buckling_ratio", indices=bays,
                                     flat_indices=True, upper=limits.max_buckling_ratio)
-        self.add_constraint("state_of_charge", lower=limits.min_final_soc, ref=0.1)
-        self.add_constraint("radius_intersection", equals=limits.radius_intersection, ref=0.1)
+        if "soc" in wanted:
+            self.add_constraint("state_of_charge", lower=limits.min_final_soc, ref=0.1)
+        if "radius_intersection" in wanted:
+            self.add_constraint("radius_intersection", equals=limits.radius_intersection,
+                                ref=0.1)
+        if "torque_margin" not in wanted:
+            return
         if kinds & {"hover", "oei", "transition"}:
             self.add_constraint("lift_motor_torque_margin", lower=limits.min_torque_margin,
                                 ref=0.1)

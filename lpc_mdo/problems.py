@@ -4,7 +4,7 @@ import os
 
 import openmdao.api as om
 
-from lpc_mdo.groups.lpc import LPCGroup
+from lpc_mdo.groups.lpc import CONSTRAINT_KINDS, LPCGroup
 from lpc_mdo.vehicle import load_vehicle
 
 
@@ -35,6 +35,95 @@ def build_analysis_problem(vehicle=None, recorder_path=None, name="analysis", **
     prob = om.Problem(model=LPCGroup(vehicle=vehicle, **options), name=name)
     if recorder_path is not None:
         prob.add_recorder(om.SqliteRecorder(str(recorder_path)))
+        prob.recording_options["includes"] = ["*"]
+    prob.setup(mode="rev")
+    prob.vehicle = vehicle
+    return prob
+
+
+# Paper Table 2: each subproblem's conditions, design variables and constraint kinds.
+_TRANSITIONS = [f"transition_{i}" for i in range(1, 6)]
+SUBPROBLEMS = {
+    "subproblem_1": {
+        "conditions": ["hover", *_TRANSITIONS, "climb", "cruise", "descent"],
+        "design_variables": ["hover_lift_rpm", "transition_lift_rpm", "transition_pusher_rpm",
+                             "climb_pusher_rpm", "cruise_pusher_rpm", "descent_pusher_rpm",
+                             "climb_pitch", "cruise_pitch", "descent_pitch",
+                             "transition_elevator", "climb_elevator", "cruise_elevator",
+                             "descent_elevator", "battery_mass", ("motor_length", [4])],
+        "constraint_kinds": ["trim", "noise", "soc", "torque_margin"],
+    },
+    "subproblem_2": {
+        "conditions": [f"oei_{i}" for i in range(1, 5)],
+        "design_variables": ["oei_lift_rpm", ("motor_length", [0, 1, 2, 3])],
+        "constraint_kinds": ["trim", "torque_margin"],
+    },
+    "subproblem_3": {
+        "conditions": ["plus_3g", "minus_1g"],
+        "design_variables": ["front_spar_thickness", "rear_spar_thickness",
+                             "top_skin_thickness", "bottom_skin_thickness", "plus_3g_pitch",
+                             "minus_1g_pitch"],
+        "constraint_kinds": ["trim", "buckling"],
+    },
+    "subproblem_4": {
+        "conditions": ["cruise"],
+        "design_variables": ["wing_area", "wing_aspect_ratio", "htail_area",
+                             "htail_aspect_ratio", "fuselage_length", "cruise_pusher_rpm",
+                             "cruise_pitch", "cruise_elevator"],
+        "constraint_kinds": ["trim", "static_margin"],
+    },
+}
+PROBLEM_NAMES = (*SUBPROBLEMS, "full")
+
+
+def build_problem(name, vehicle=None, static_margin=True, optimizer="IPOPT",
+                  recorder_path=None, design_variable_refs=None, driver_settings=None,
+                  **model_options):
+    """
+    One of the paper's warm-start subproblems (Table 2) or the full problem (Table 6).
+
+    Parameters
+    ----------
+    name : str
+        'subproblem_1' .. 'subproblem_4' or 'full'.
+    vehicle : Vehicle, path or None
+    static_margin : bool
+        Include the cruise static-margin constraint (subproblem 4 and the full problem).
+    optimizer : str
+        For :func:`lpc_mdo.drivers.make_driver`.
+    recorder_path : str or None
+        One case file for the driver iterations and the final problem case (record it with
+        ``prob.record('final')``).
+    design_variable_refs : dict or None
+        Design-variable scaling overrides (the warm start sets them from optimized magnitudes).
+    driver_settings : dict or None
+        Passed to make_driver.
+    **model_options
+        Further LPCGroup options.
+
+    Returns
+    -------
+    om.Problem
+        Set up, not run.
+    """
+    from lpc_mdo.drivers import make_driver
+
+    if name not in PROBLEM_NAMES:
+        raise ValueError(f"problem name = {name!r}; allowed: {PROBLEM_NAMES}")
+    if vehicle is None or isinstance(vehicle, (str, os.PathLike)):
+        vehicle = load_vehicle(vehicle)
+    spec = SUBPROBLEMS.get(name, {})
+    model = LPCGroup(vehicle=vehicle, static_margin=static_margin,
+                     conditions=spec.get("conditions"),
+                     design_variables=spec.get("design_variables"),
+                     constraint_kinds=spec.get("constraint_kinds", CONSTRAINT_KINDS),
+                     design_variable_refs=design_variable_refs, **model_options)
+    prob = om.Problem(model=model, name=name, reports=False)
+    prob.driver = make_driver(optimizer, **(driver_settings or {}))
+    if recorder_path is not None:
+        recorder = om.SqliteRecorder(str(recorder_path))
+        prob.driver.add_recorder(recorder)
+        prob.add_recorder(recorder)
         prob.recording_options["includes"] = ["*"]
     prob.setup(mode="rev")
     prob.vehicle = vehicle

@@ -80,7 +80,7 @@ def main(argv=None):
         profiler.disable()
         stats = pstats.Stats(profiler)
         by_file = {}
-        for (filename, _, func), (_, _, tottime, _, _) in stats.stats.items():
+        for (filename, _, _func), (_, _, tottime, _, _) in stats.stats.items():
             if "lpc_mdo" in filename or "/components/" in filename or "/groups/" in filename:
                 key = os.path.basename(filename)
             elif "openmdao" in filename:

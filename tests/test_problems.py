@@ -1,0 +1,39 @@
+"""Problem builders: the paper's warm-start subproblems (Table 2) and the full problem."""
+
+import pytest
+
+from lpc_mdo.problems import PROBLEM_NAMES, build_problem
+
+
+def sizes(prob):
+    prob.final_setup()
+    dvs = sum(m["size"] for m in prob.model.get_design_vars().values())
+    cons = sum(m["size"] for m in prob.model.get_constraints().values())
+    return dvs, cons
+
+
+@pytest.mark.parametrize(("name", "expected"), [
+    # Design variables and constraints of each subproblem (paper Table 2 with Table 6 counts).
+    ("subproblem_1", (4 + 20 + 5 + 3 + 3 + 8 + 1 + 1, 1 + 3 + 9 + 30 + 1 + 9)),
+    ("subproblem_2", (28 + 4, 20 + 8)),
+    ("subproblem_3", (32 + 2, 2 + 14)),
+    ("subproblem_4", (5 + 3, 3 + 1)),
+    ("full", (161, 96)),
+])
+def test_problem_sizes(name, expected):
+    assert sizes(build_problem(name, optimizer="SLSQP")) == expected
+
+
+def test_subproblem_4_converges():
+    prob = build_problem("subproblem_4", driver_settings={"max_iter": 100, "print_level": 0})
+    result = prob.run_driver()
+    assert result.success, result.exit_status
+    values = prob.driver.get_constraint_values(driver_scaling=False)
+    assert abs(values["cruise.linear_acceleration"]).max() < 1e-6
+    assert values["cruise.static_margin"][0] >= 0.08 - 1e-6
+
+
+def test_unknown_problem_name():
+    with pytest.raises(ValueError, match="allowed: "):
+        build_problem("subproblem_9")
+    assert PROBLEM_NAMES[-1] == "full"
