@@ -42,6 +42,8 @@ from lpc_mdo.components.ks import KSComp
 from lpc_mdo.components.motor.shaft_torque import ShaftTorqueComp
 from lpc_mdo.components.rotor.rotor_speed import RotorSpeedComp
 from lpc_mdo.components.structures.displacement import VerticalDisplacementComp
+from lpc_mdo.components.structures.load_transfer import DisplacementTransferComp
+from lpc_mdo.components.structures.mesh_deformation import MeshDeformationComp
 from lpc_mdo.groups.acoustics import RotorNoiseGroup
 from lpc_mdo.groups.beam import BoxBeamGroup
 from lpc_mdo.groups.motor import MotorGroup
@@ -136,7 +138,8 @@ def _add_pusher(group, vehicle):
     group.set_input_defaults("pusher_hub_position", np.array([pusher.hub_position]), units="m")
 
 
-def _add_aerodynamics(group, vehicle, condition, wing_zero_lift_angle, stability=False):
+def _add_aerodynamics(group, vehicle, condition, wing_zero_lift_angle, stability=False,
+                      wing_mesh="wing_mesh"):
     """Kinematics, wing + tail VLM and the parasite-drag build-up.
 
     Outputs ``aero_force``/``aero_moment`` (about the body origin) and ``drag_force``; with
@@ -144,7 +147,7 @@ def _add_aerodynamics(group, vehicle, condition, wing_zero_lift_angle, stability
     """
     opts = group.options
     surfaces = lpc_vlm_surfaces(opts["wing_panels"], opts["tail_panels"])
-    vlm_inputs = ["wing_mesh", "horizontal_tail_mesh", "speed", "density",
+    vlm_inputs = [("wing_mesh", wing_mesh), "horizontal_tail_mesh", "speed", "density",
                   ("reference_area", "wing_area"), ("horizontal_tail_deflection", "elevator"),
                   "wing_zero_lift_angle"]
     group.add_subsystem("kinematics", KinematicsComp(num_nodes=1), promotes=["*"])
@@ -362,17 +365,24 @@ class StructuralCondition(om.Group):
         self.options.declare("tail_panels", default=8, types=int, desc="tail VLM panels")
         self.options.declare("ks_rho", default=None, types=(int, float), allow_none=True,
                              desc="KS parameter of the structural aggregates (None: none)")
+        self.options.declare("coupling", default="one_way", values=("one_way", "two_way"),
+                             desc="one-way (loads only) or two-way (the beam deforms the VLM "
+                                  "wing mesh; block Gauss-Seidel)")
 
     def setup(self):
         vehicle = self.options["vehicle"]
         condition = vehicle.condition(self.options["condition"])
         n_wing = self.options["wing_panels"]
         right = np.arange(n_wing // 2, n_wing)  # wing panels with y > 0 (one chord-wise row)
+        nodes = vehicle.wing_box.num_bays + 1
         _add_atmosphere(self, condition)
-        _add_aerodynamics(self, vehicle, condition, self.options["wing_zero_lift_angle"])
+        two_way = self.options["coupling"] == "two_way"
+        if two_way:
+            self._add_mesh_deformation(nodes, n_wing)
+        _add_aerodynamics(self, vehicle, condition, self.options["wing_zero_lift_angle"],
+                          wing_mesh="deformed_wing_mesh" if two_way else "wing_mesh")
         _add_equations_of_motion(self, ["aero", "drag"], forces_only=["drag"],
                                  load_factor=condition.load_factor)
-        nodes = vehicle.wing_box.num_bays + 1
         rho = self.options["ks_rho"]
         self.add_subsystem("beam", BoxBeamGroup(num_nodes=nodes, num_aero_points=right.size,
                                                 ks_rho=rho),
@@ -384,7 +394,7 @@ class StructuralCondition(om.Group):
                                             ("density", "material_density")],
                            promotes_outputs=["von_mises_stress", "top_skin_buckling_ratio",
                                              "bottom_skin_buckling_ratio", "displacements",
-                                             "stress_ratio"])
+                                             "rotations", "stress_ratio"])
         self.connect("force_points", "beam.aero_points",
                      src_indices=om.slicer[n_wing // 2:n_wing, :])
         self.connect("panel_forces", "beam.aero_forces",
@@ -405,3 +415,30 @@ class StructuralCondition(om.Group):
                                promotes_outputs=[("KS", "displacement_ks")])
             self.connect("displacements", "displacement_sign.displacements")
             self.connect("displacement_sign.vertical_displacement", "displacement_ks.g")
+        if two_way:
+            # The loop VLM -> beam -> mesh -> VLM: Newton on the coupled system (each implicit
+            # component still solves itself first); a failure to converge is an AnalysisError
+            # so an optimizer can back off.
+            self.nonlinear_solver = om.NewtonSolver(solve_subsystems=True, maxiter=30,
+                                                    atol=1e-8, rtol=1e-8, iprint=-1,
+                                                    err_on_non_converge=True)
+            self.linear_solver = om.DirectSolver()
+
+    def _add_mesh_deformation(self, nodes, n_wing):
+        """Beam displacements -> right-half wing mesh nodes -> mirrored deformed mesh."""
+        nx, ny = 2, n_wing + 1
+        half = ny // 2
+        chord, span = np.meshgrid(np.arange(nx), np.arange(half, ny), indexing="ij")
+        points = chord.size
+        self.add_subsystem("displacement_transfer", DisplacementTransferComp(
+            num_nodes=nodes, num_points=points),
+            promotes_inputs=[("nodes", "wing_box_nodes"), "displacements", "rotations"])
+        xyz = np.arange(3)[np.newaxis, :]
+        self.connect("wing_mesh", "displacement_transfer.aero_points",
+                     src_indices=om.slicer[chord.reshape(-1, 1), span.reshape(-1, 1), xyz])
+        self.add_subsystem("mesh_deformation", MeshDeformationComp(
+            num_chord_nodes=nx, num_span_nodes=ny),
+            promotes_inputs=[("mesh", "wing_mesh")],
+            promotes_outputs=[("deformed_mesh", "deformed_wing_mesh")])
+        self.connect("displacement_transfer.aero_displacements",
+                     "mesh_deformation.right_displacements")

@@ -121,6 +121,9 @@ class LPCGroup(om.Group):
                              desc="name -> ref overriding the vehicle file's scaling")
         self.options.declare("constraint_kinds", default=CONSTRAINT_KINDS, types=(list, tuple),
                              desc=f"constraint kinds to declare, from {CONSTRAINT_KINDS}")
+        self.options.declare("structural_coupling", default="one_way",
+                             values=("one_way", "two_way"),
+                             desc="aerostructural coupling of the +3g/-1g cases")
         self.options.declare("structural_ks_rho", default=None, types=(int, float),
                              allow_none=True,
                              desc="KS parameter of the +3g/-1g structural aggregates (None: "
@@ -161,6 +164,7 @@ class LPCGroup(om.Group):
                 kwargs["wing_zero_lift_angle"] = alpha0
             if kind == "structural":
                 kwargs["ks_rho"] = self.options["structural_ks_rho"]
+                kwargs["coupling"] = self.options["structural_coupling"]
             if condition.name == "cruise":
                 kwargs["stability"] = True
             self.add_subsystem(condition.name, _CONDITION_CLASSES[kind](**kwargs))
