@@ -4,7 +4,7 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.aero.vlm_biot_savart import lattice_velocities
-from lpc_mdo.components.aero.vlm_lattice import Lattice, check_surfaces
+from lpc_mdo.components.aero.vlm_lattice import Lattice, declare_lattice_options
 
 
 class VLMAICComp(om.ExplicitComponent):
@@ -46,10 +46,7 @@ class VLMAICComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare("surfaces", types=(tuple, list), check_valid=_check,
-                             desc="tuple of VLMSurface, in lattice order")
-        self.options.declare("num_nodes", default=1, types=int, lower=1,
-                             desc="number of flight conditions")
+        declare_lattice_options(self)
 
     def setup(self):
         nn = self.options["num_nodes"]
@@ -120,6 +117,3 @@ class VLMAICComp(om.ExplicitComponent):
         partials["aic", "freestream_direction"] = np.einsum(
             "nic,nitcd->nitd", normals, vel["wake_d_u"]).ravel()
 
-
-def _check(name, value):
-    check_surfaces(value)

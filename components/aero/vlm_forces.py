@@ -4,7 +4,7 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.aero.vlm_biot_savart import cross, skew
-from lpc_mdo.components.aero.vlm_lattice import Lattice, check_surfaces
+from lpc_mdo.components.aero.vlm_lattice import Lattice, declare_lattice_options
 
 
 class VLMPanelForcesComp(om.ExplicitComponent):
@@ -36,10 +36,7 @@ class VLMPanelForcesComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare("surfaces", types=(tuple, list), check_valid=_check,
-                             desc="tuple of VLMSurface, in lattice order")
-        self.options.declare("num_nodes", default=1, types=int, lower=1,
-                             desc="number of flight conditions")
+        declare_lattice_options(self)
 
     def setup(self):
         nn = self.options["num_nodes"]
@@ -102,6 +99,3 @@ class VLMPanelForcesComp(om.ExplicitComponent):
         partials["panel_forces", "bound_vectors"] = (scale * skew(vel)).ravel()
         partials["panel_forces", "density"] = (g_net[..., None] * vxl).ravel()
 
-
-def _check(name, value):
-    check_surfaces(value)

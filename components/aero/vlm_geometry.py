@@ -4,7 +4,7 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.aero.vlm_biot_savart import cross, dot, skew
-from lpc_mdo.components.aero.vlm_lattice import Lattice, check_surfaces, sparse_pattern
+from lpc_mdo.components.aero.vlm_lattice import Lattice, declare_lattice_options, sparse_pattern
 
 
 class VLMGeometryComp(om.ExplicitComponent):
@@ -45,8 +45,7 @@ class VLMGeometryComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare("surfaces", types=(tuple, list), check_valid=_check,
-                             desc="tuple of VLMSurface, in lattice order")
+        declare_lattice_options(self, num_nodes=False)
 
     def setup(self):
         lat = self._lattice = Lattice(self.options["surfaces"])
@@ -148,6 +147,3 @@ class VLMGeometryComp(om.ExplicitComponent):
             dstrip[:, 1:, 0] += dcorner[:, :, 3].transpose(1, 0, 2)
             partials["strip_areas", name] = dstrip.ravel()
 
-
-def _check(name, value):
-    check_surfaces(value)

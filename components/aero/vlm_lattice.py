@@ -211,3 +211,13 @@ def sparse_pattern(matrix):
     """Rows, cols and values of a scipy sparse matrix, for ``declare_partials``."""
     coo = sp.coo_matrix(matrix)
     return coo.row, coo.col, coo.data
+
+
+def declare_lattice_options(component, num_nodes=True):
+    """Declare the options every VLM component shares: ``surfaces`` and ``num_nodes``."""
+    component.options.declare("surfaces", types=(tuple, list),
+                              check_valid=lambda name, value: check_surfaces(value),
+                              desc="tuple of VLMSurface, in lattice order")
+    if num_nodes:
+        component.options.declare("num_nodes", default=1, types=int, lower=1,
+                                  desc="number of flight conditions")

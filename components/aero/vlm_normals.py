@@ -4,7 +4,7 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.aero.vlm_biot_savart import cross, dot, outer, skew
-from lpc_mdo.components.aero.vlm_lattice import Lattice, check_surfaces
+from lpc_mdo.components.aero.vlm_lattice import Lattice, declare_lattice_options
 
 
 class VLMNormalsComp(om.ExplicitComponent):
@@ -43,10 +43,7 @@ class VLMNormalsComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare("surfaces", types=(tuple, list), check_valid=_check,
-                             desc="tuple of VLMSurface, in lattice order")
-        self.options.declare("num_nodes", default=1, types=int, lower=1,
-                             desc="number of flight conditions")
+        declare_lattice_options(self)
 
     def setup(self):
         nn = self.options["num_nodes"]
@@ -142,6 +139,3 @@ class VLMNormalsComp(om.ExplicitComponent):
             if surf.deflectable:
                 partials["boundary_normals", f"{surf.name}_deflection"] = d_theta[:, sl].ravel()
 
-
-def _check(name, value):
-    check_surfaces(value)

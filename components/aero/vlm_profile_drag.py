@@ -3,7 +3,7 @@
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.components.aero.vlm_lattice import Lattice, check_surfaces
+from lpc_mdo.components.aero.vlm_lattice import Lattice, declare_lattice_options
 
 
 class VLMProfileDragComp(om.ExplicitComponent):
@@ -38,10 +38,7 @@ class VLMProfileDragComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare("surfaces", types=(tuple, list), check_valid=_check,
-                             desc="tuple of VLMSurface, in lattice order")
-        self.options.declare("num_nodes", default=1, types=int, lower=1,
-                             desc="number of flight conditions")
+        declare_lattice_options(self)
 
     def setup(self):
         nn = self.options["num_nodes"]
@@ -105,6 +102,3 @@ class VLMProfileDragComp(om.ExplicitComponent):
             partials["viscous_panel_forces", f"{s.name}_sectional_cd"] = (
                 (q[:, None] * area[:, sl])[..., None] * e_d).ravel()
 
-
-def _check(name, value):
-    check_surfaces(value)

@@ -4,7 +4,7 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.aero.vlm_biot_savart import cross, dot, outer, skew
-from lpc_mdo.components.aero.vlm_lattice import Lattice, check_surfaces
+from lpc_mdo.components.aero.vlm_lattice import Lattice, declare_lattice_options
 from lpc_mdo.components.aero.vlm_loads import Q_FLOOR
 
 
@@ -42,10 +42,7 @@ class VLMSectionalLiftComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare("surfaces", types=(tuple, list), check_valid=_check,
-                             desc="tuple of VLMSurface, in lattice order")
-        self.options.declare("num_nodes", default=1, types=int, lower=1,
-                             desc="number of flight conditions")
+        declare_lattice_options(self)
 
     def setup(self):
         nn = self.options["num_nodes"]
@@ -127,6 +124,3 @@ class VLMSectionalLiftComp(om.ExplicitComponent):
             partials[name, "density"] = (-cl * (0.5 * speed**2)[:, None] / q[:, None]).ravel()
             partials[name, "strip_areas"] = (-cl / area[None]).ravel()
 
-
-def _check(name, value):
-    check_surfaces(value)

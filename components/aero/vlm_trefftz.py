@@ -4,7 +4,7 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.aero.vlm_biot_savart import cross, dot
-from lpc_mdo.components.aero.vlm_lattice import Lattice, check_surfaces
+from lpc_mdo.components.aero.vlm_lattice import Lattice, declare_lattice_options
 
 #: Squared core radius (m**2) of the 2-D Trefftz-plane vortices (finite if two legs coincide).
 TREFFTZ_CORE_SQ = 1.0e-12
@@ -45,10 +45,7 @@ class VLMTrefftzDragComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare("surfaces", types=(tuple, list), check_valid=_check,
-                             desc="tuple of VLMSurface, in lattice order")
-        self.options.declare("num_nodes", default=1, types=int, lower=1,
-                             desc="number of flight conditions")
+        declare_lattice_options(self)
 
     def setup(self):
         nn = self.options["num_nodes"]
@@ -141,6 +138,3 @@ class VLMTrefftzDragComp(om.ExplicitComponent):
         partials["trefftz_induced_drag", "freestream_direction"] = np.sum(
             w * t["df_du"], axis=(1, 2)).ravel()
 
-
-def _check(name, value):
-    check_surfaces(value)
