@@ -1,22 +1,12 @@
 """Pitt–Peters rotor assembly: blade geometry, inflow states, loads, performance and hub loads."""
 
-import numpy as np
-import openmdao.api as om
 
-from lpc_mdo.components.aero.polar import LinearQuadraticPolar, Polar
-from lpc_mdo.components.geometry.blade import QUADRATURES, SPLINE_STATIONS, BladeGeometryGroup
-from lpc_mdo.components.rotor.bem_loads import RotorPerformanceComp
-from lpc_mdo.components.rotor.hub_loads import HubLoadsComp, RotorVelocityComp
 from lpc_mdo.components.rotor.pitt_peters_inflow import PittPetersInflowComp
 from lpc_mdo.components.rotor.pitt_peters_loads import LOSS_PLACEMENTS, PittPetersLoadsComp
-from lpc_mdo.groups.rotor import rotor_options
-
-# Options that the `rotors` option can supply, with their values without it.
-_ROTOR_DERIVED = {'num_rotors': 1, 'num_blades': 2, 'hub_radius_ratio': 0.2,
-                  'thrust_axis': None, 'spin_direction': 1}
+from lpc_mdo.groups.rotor import RotorGroupBase
 
 
-class PittPetersRotorGroup(om.Group):
+class PittPetersRotorGroup(RotorGroupBase):
     """
     Several rotors at several operating points by steady Pitt–Peters inflow (edgewise flight).
 
@@ -99,95 +89,21 @@ class PittPetersRotorGroup(om.Group):
         Include RotorVelocityComp and HubLoadsComp (default True).
     """
 
-    def initialize(self):
-        self.options.declare('rotors', default=None, types=(list, tuple), allow_none=True,
-                             desc='lpc_mdo.vehicle.Rotor objects supplying the rotor options')
-        self.options.declare('num_rotors', default=None, types=int, lower=1, allow_none=True,
-                             desc='Number of rotors (None: from rotors, else 1)')
-        self.options.declare('num_blades', default=None, allow_none=True,
-                             types=(int, list, tuple, np.ndarray),
-                             desc='Blades per rotor (None: from rotors, else 2)')
-        self.options.declare('hub_radius_ratio', default=None, allow_none=True,
-                             types=(int, float, list, tuple, np.ndarray),
-                             desc='Hub radius over tip radius (None: from rotors, else 0.2)')
-        self.options.declare('thrust_axis', default=None, allow_none=True,
-                             types=(list, tuple, np.ndarray),
-                             desc='Thrust axes (num_rotors, 3) (None: from rotors, else lift)')
-        self.options.declare('spin_direction', default=None, allow_none=True,
-                             types=(int, list, tuple, np.ndarray),
-                             desc='+1 or -1 per rotor (None: from rotors, else +1)')
-        self.options.declare('num_nodes', default=1, types=int, lower=1,
-                             desc='Number of operating points per rotor')
-        self.options.declare('num_radial', default=25, types=int, lower=1,
-                             desc='Number of radial stations')
+    num_azimuth_option = True
+
+    def declare_model_options(self):
         self.options.declare('num_azimuth', default=25, types=int, lower=3,
                              desc='Number of azimuthal stations (>= 3)')
-        self.options.declare('num_cp', default=4, types=int, lower=4,
-                             desc='Chord and twist control points per rotor')
-        self.options.declare('polar', default=LinearQuadraticPolar(), types=Polar,
-                             desc='Sectional airfoil polar')
-        self.options.declare('tip_loss', default=True, types=bool, desc='Prandtl tip loss')
-        self.options.declare('hub_loss', default=True, types=bool, desc='Prandtl hub loss')
         self.options.declare('loss_placement', default='blade_element', values=LOSS_PLACEMENTS,
                              desc="Prandtl factor on the momentum side or on the blade loads")
-        self.options.declare('quadrature', default='midpoint', values=QUADRATURES,
-                             desc="Radial quadrature ('bladead': §11 Q8 compatibility)")
-        self.options.declare('spline_stations', default='as_coded', values=SPLINE_STATIONS,
-                             desc='Where the chord and twist spline values are placed (§7)')
-        self.options.declare('body_frame', default=True, types=bool,
-                             desc='Include body-frame velocity and hub loads')
 
-    def _resolved(self):
+    def add_rotor_model(self, geo):
         opts = self.options
-        values = {name: opts[name] for name in _ROTOR_DERIVED}
-        if opts['rotors'] is not None:
-            given = [name for name, value in values.items() if value is not None]
-            if given:
-                raise ValueError(f"{self.msginfo}: options {given} must be left at None when "
-                                 "option 'rotors' is given (they are taken from the rotors).")
-            return rotor_options(opts['rotors'])
-        return {name: (_ROTOR_DERIVED[name] if value is None else value)
-                for name, value in values.items()}
-
-    def setup(self):
-        opts = self.options
-        geo = self._resolved()
-        nr, nn = geo['num_rotors'], opts['num_nodes']
-        pp = {'num_rotors': nr, 'num_nodes': nn, 'num_radial': opts['num_radial'],
-              'num_azimuth': opts['num_azimuth'], 'num_blades': geo['num_blades'],
-              'spin_direction': geo['spin_direction'], 'polar': opts['polar'],
-              'tip_loss': opts['tip_loss'], 'hub_loss': opts['hub_loss'],
-              'loss_placement': opts['loss_placement']}
-        frame = {'num_rotors': nr, 'num_nodes': nn, 'thrust_axis': geo['thrust_axis']}
-
-        self.add_subsystem('blade', BladeGeometryGroup(
-            num_rotors=nr, num_radial=opts['num_radial'], num_azimuth=opts['num_azimuth'],
-            num_cp=opts['num_cp'], hub_radius_ratio=geo['hub_radius_ratio'],
-            quadrature=opts['quadrature'], spline_stations=opts['spline_stations']),
-            promotes=['*'])
-        if opts['body_frame']:
-            self.add_subsystem('velocity', RotorVelocityComp(**frame), promotes=['*'])
+        pp = {'num_rotors': geo['num_rotors'], 'num_nodes': opts['num_nodes'],
+              'num_radial': opts['num_radial'], 'num_azimuth': opts['num_azimuth'],
+              'num_blades': geo['num_blades'], 'spin_direction': geo['spin_direction'],
+              'polar': opts['polar'], 'tip_loss': opts['tip_loss'],
+              'hub_loss': opts['hub_loss'], 'loss_placement': opts['loss_placement']}
         self.add_subsystem('inflow', PittPetersInflowComp(**pp), promotes=['*'])
         self.add_subsystem('loads', PittPetersLoadsComp(**pp), promotes=['*'])
-        self.add_subsystem('performance', RotorPerformanceComp(num_rotors=nr, num_nodes=nn),
-                           promotes=['*'])
-        if opts['body_frame']:
-            self.add_subsystem('hub_loads', HubLoadsComp(
-                spin_direction=geo['spin_direction'], inplane_loads=True, **frame),
-                promotes=['*'])
-
-        rotors = opts['rotors']
-        if rotors is not None:
-            if opts['num_cp'] != 4:
-                raise ValueError(f"{self.msginfo}: option 'num_cp' = {opts['num_cp']}; the "
-                                 "vehicle rotors have 4 chord and twist control points, so it "
-                                 "must be 4 when option 'rotors' is given.")
-            self.set_input_defaults('radius', np.array([r.radius for r in rotors]), units='m')
-            self.set_input_defaults('chord_cp', np.array([r.chord_cp for r in rotors]), units='m')
-            self.set_input_defaults('twist_cp', np.array([r.twist_cp for r in rotors]),
-                                    units='rad')
-            if opts['body_frame']:
-                self.set_input_defaults('hub_position',
-                                        np.array([r.hub_position for r in rotors]), units='m')
-        else:
-            self.set_input_defaults('radius', np.ones(nr), units='m')
+        return True  # edgewise model: in-plane forces and hub moments

@@ -38,7 +38,112 @@ def rotor_options(rotors):
             'spin_direction': [r.spin_direction for r in rotors]}
 
 
-class BEMRotorGroup(om.Group):
+class RotorGroupBase(om.Group):
+    """
+    What every rotor assembly shares: the rotor options (from vehicle rotors or given), blade
+    geometry, body-frame velocity, performance, hub loads and the input defaults. Subclasses
+    add their inflow and loads components in :meth:`add_rotor_model` and may declare more
+    options in :meth:`declare_model_options`.
+    """
+
+    num_azimuth_option = False  # whether the subclass resolves azimuthal stations
+
+    def initialize(self):
+        self.options.declare('rotors', default=None, types=(list, tuple), allow_none=True,
+                             desc='lpc_mdo.vehicle.Rotor objects supplying the rotor options')
+        self.options.declare('num_rotors', default=None, types=int, lower=1, allow_none=True,
+                             desc='Number of rotors (None: from rotors, else 1)')
+        self.options.declare('num_blades', default=None, allow_none=True,
+                             types=(int, list, tuple, np.ndarray),
+                             desc='Blades per rotor (None: from rotors, else 2)')
+        self.options.declare('hub_radius_ratio', default=None, allow_none=True,
+                             types=(int, float, list, tuple, np.ndarray),
+                             desc='Hub radius over tip radius (None: from rotors, else 0.2)')
+        self.options.declare('thrust_axis', default=None, allow_none=True,
+                             types=(list, tuple, np.ndarray),
+                             desc='Thrust axes (num_rotors, 3) (None: from rotors, else lift)')
+        self.options.declare('spin_direction', default=None, allow_none=True,
+                             types=(int, list, tuple, np.ndarray),
+                             desc='+1 or -1 per rotor (None: from rotors, else +1)')
+        self.options.declare('num_nodes', default=1, types=int, lower=1,
+                             desc='Number of operating points per rotor')
+        self.options.declare('num_radial', default=25, types=int, lower=1,
+                             desc='Number of radial stations')
+        self.options.declare('num_cp', default=4, types=int, lower=4,
+                             desc='Chord and twist control points per rotor')
+        self.options.declare('polar', default=LinearQuadraticPolar(), types=Polar,
+                             desc='Sectional airfoil polar')
+        self.options.declare('tip_loss', default=True, types=bool, desc='Prandtl tip loss')
+        self.options.declare('hub_loss', default=True, types=bool, desc='Prandtl hub loss')
+        self.options.declare('quadrature', default='midpoint', values=QUADRATURES,
+                             desc="Radial quadrature ('bladead': §11 Q8 compatibility)")
+        self.options.declare('spline_stations', default='as_coded', values=SPLINE_STATIONS,
+                             desc='Where the chord and twist spline values are placed (§7)')
+        self.options.declare('body_frame', default=True, types=bool,
+                             desc='Include body-frame velocity and hub loads')
+        self.declare_model_options()
+
+    def declare_model_options(self):
+        """Options of the inflow model (override)."""
+
+    def add_rotor_model(self, geo):
+        """Add the inflow and loads components (override)."""
+        raise NotImplementedError
+
+    def _resolved(self):
+        opts = self.options
+        values = {name: opts[name] for name in _ROTOR_DERIVED}
+        rotors = opts['rotors']
+        if rotors is not None:
+            derived = rotor_options(rotors)
+            given = [name for name, value in values.items() if value is not None]
+            if given:
+                raise ValueError(f"{self.msginfo}: options {given} must be left at None when "
+                                 "option 'rotors' is given (they are taken from the rotors).")
+            return derived
+        return {name: (_ROTOR_DERIVED[name] if value is None else value)
+                for name, value in values.items()}
+
+    def setup(self):
+        opts = self.options
+        geo = self._resolved()
+        nr, nn = geo['num_rotors'], opts['num_nodes']
+        frame = {'num_rotors': nr, 'num_nodes': nn, 'thrust_axis': geo['thrust_axis']}
+
+        self.add_subsystem('blade', BladeGeometryGroup(
+            num_rotors=nr, num_radial=opts['num_radial'],
+            num_azimuth=opts['num_azimuth'] if self.num_azimuth_option else 1,
+            num_cp=opts['num_cp'], hub_radius_ratio=geo['hub_radius_ratio'],
+            quadrature=opts['quadrature'], spline_stations=opts['spline_stations']),
+            promotes=['*'])
+        if opts['body_frame']:
+            self.add_subsystem('velocity', RotorVelocityComp(**frame), promotes=['*'])
+        inplane = self.add_rotor_model(geo)
+        self.add_subsystem('performance', RotorPerformanceComp(num_rotors=nr, num_nodes=nn),
+                           promotes=['*'])
+        if opts['body_frame']:
+            self.add_subsystem('hub_loads', HubLoadsComp(
+                spin_direction=geo['spin_direction'], inplane_loads=inplane, **frame),
+                promotes=['*'])
+
+        rotors = opts['rotors']
+        if rotors is not None:
+            if opts['num_cp'] != 4:
+                raise ValueError(f"{self.msginfo}: option 'num_cp' = {opts['num_cp']}; the "
+                                 "vehicle rotors have 4 chord and twist control points, so it "
+                                 "must be 4 when option 'rotors' is given.")
+            self.set_input_defaults('radius', np.array([r.radius for r in rotors]), units='m')
+            self.set_input_defaults('chord_cp', np.array([r.chord_cp for r in rotors]), units='m')
+            self.set_input_defaults('twist_cp', np.array([r.twist_cp for r in rotors]),
+                                    units='rad')
+            if opts['body_frame']:
+                self.set_input_defaults('hub_position',
+                                        np.array([r.hub_position for r in rotors]), units='m')
+        else:
+            self.set_input_defaults('radius', np.ones(nr), units='m')
+
+
+class BEMRotorGroup(RotorGroupBase):
     """
     Several rotors at several operating points by BEM, from design variables to body loads.
 
@@ -107,92 +212,16 @@ class BEMRotorGroup(om.Group):
         Include RotorVelocityComp and HubLoadsComp (default True).
     """
 
-    def initialize(self):
-        self.options.declare('rotors', default=None, types=(list, tuple), allow_none=True,
-                             desc='lpc_mdo.vehicle.Rotor objects supplying the rotor options')
-        self.options.declare('num_rotors', default=None, types=int, lower=1, allow_none=True,
-                             desc='Number of rotors (None: from rotors, else 1)')
-        self.options.declare('num_blades', default=None, allow_none=True,
-                             types=(int, list, tuple, np.ndarray),
-                             desc='Blades per rotor (None: from rotors, else 2)')
-        self.options.declare('hub_radius_ratio', default=None, allow_none=True,
-                             types=(int, float, list, tuple, np.ndarray),
-                             desc='Hub radius over tip radius (None: from rotors, else 0.2)')
-        self.options.declare('thrust_axis', default=None, allow_none=True,
-                             types=(list, tuple, np.ndarray),
-                             desc='Thrust axes (num_rotors, 3) (None: from rotors, else lift)')
-        self.options.declare('spin_direction', default=None, allow_none=True,
-                             types=(int, list, tuple, np.ndarray),
-                             desc='+1 or -1 per rotor (None: from rotors, else +1)')
-        self.options.declare('num_nodes', default=1, types=int, lower=1,
-                             desc='Number of operating points per rotor')
-        self.options.declare('num_radial', default=25, types=int, lower=1,
-                             desc='Number of radial stations')
-        self.options.declare('num_cp', default=4, types=int, lower=4,
-                             desc='Chord and twist control points per rotor')
-        self.options.declare('polar', default=LinearQuadraticPolar(), types=Polar,
-                             desc='Sectional airfoil polar')
-        self.options.declare('tip_loss', default=True, types=bool, desc='Prandtl tip loss')
-        self.options.declare('hub_loss', default=True, types=bool, desc='Prandtl hub loss')
+    def declare_model_options(self):
         self.options.declare('tip_loss_form', default='classical', values=TIP_LOSS_FORMS,
                              desc="Tip-loss form ('bladead': §11 Q9 compatibility)")
-        self.options.declare('quadrature', default='midpoint', values=QUADRATURES,
-                             desc="Radial quadrature ('bladead': §11 Q8 compatibility)")
-        self.options.declare('spline_stations', default='as_coded', values=SPLINE_STATIONS,
-                             desc='Where the chord and twist spline values are placed (§7)')
-        self.options.declare('body_frame', default=True, types=bool,
-                             desc='Include body-frame velocity and hub loads')
 
-    def _resolved(self):
+    def add_rotor_model(self, geo):
         opts = self.options
-        values = {name: opts[name] for name in _ROTOR_DERIVED}
-        rotors = opts['rotors']
-        if rotors is not None:
-            derived = rotor_options(rotors)
-            given = [name for name, value in values.items() if value is not None]
-            if given:
-                raise ValueError(f"{self.msginfo}: options {given} must be left at None when "
-                                 "option 'rotors' is given (they are taken from the rotors).")
-            return derived
-        return {name: (_ROTOR_DERIVED[name] if value is None else value)
-                for name, value in values.items()}
-
-    def setup(self):
-        opts = self.options
-        geo = self._resolved()
-        nr, nn, nrad = geo['num_rotors'], opts['num_nodes'], opts['num_radial']
-        bem = {'num_rotors': nr, 'num_nodes': nn, 'num_radial': nrad,
-               'num_blades': geo['num_blades'], 'polar': opts['polar'],
-               'tip_loss': opts['tip_loss'], 'hub_loss': opts['hub_loss'],
-               'tip_loss_form': opts['tip_loss_form']}
-        frame = {'num_rotors': nr, 'num_nodes': nn, 'thrust_axis': geo['thrust_axis']}
-
-        self.add_subsystem('blade', BladeGeometryGroup(
-            num_rotors=nr, num_radial=nrad, num_azimuth=1, num_cp=opts['num_cp'],
-            hub_radius_ratio=geo['hub_radius_ratio'], quadrature=opts['quadrature'],
-            spline_stations=opts['spline_stations']), promotes=['*'])
-        if opts['body_frame']:
-            self.add_subsystem('velocity', RotorVelocityComp(**frame), promotes=['*'])
+        bem = {'num_rotors': geo['num_rotors'], 'num_nodes': opts['num_nodes'],
+               'num_radial': opts['num_radial'], 'num_blades': geo['num_blades'],
+               'polar': opts['polar'], 'tip_loss': opts['tip_loss'],
+               'hub_loss': opts['hub_loss'], 'tip_loss_form': opts['tip_loss_form']}
         self.add_subsystem('inflow', BEMInflowComp(**bem), promotes=['*'])
         self.add_subsystem('loads', BEMLoadsComp(**bem), promotes=['*'])
-        self.add_subsystem('performance', RotorPerformanceComp(num_rotors=nr, num_nodes=nn),
-                           promotes=['*'])
-        if opts['body_frame']:
-            self.add_subsystem('hub_loads', HubLoadsComp(
-                spin_direction=geo['spin_direction'], **frame), promotes=['*'])
-
-        rotors = opts['rotors']
-        if rotors is not None:
-            if opts['num_cp'] != 4:
-                raise ValueError(f"{self.msginfo}: option 'num_cp' = {opts['num_cp']}; the "
-                                 "vehicle rotors have 4 chord and twist control points, so it "
-                                 "must be 4 when option 'rotors' is given.")
-            self.set_input_defaults('radius', np.array([r.radius for r in rotors]), units='m')
-            self.set_input_defaults('chord_cp', np.array([r.chord_cp for r in rotors]), units='m')
-            self.set_input_defaults('twist_cp', np.array([r.twist_cp for r in rotors]),
-                                    units='rad')
-            if opts['body_frame']:
-                self.set_input_defaults('hub_position',
-                                        np.array([r.hub_position for r in rotors]), units='m')
-        else:
-            self.set_input_defaults('radius', np.ones(nr), units='m')
+        return False  # axial model: no in-plane hub loads
