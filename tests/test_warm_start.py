@@ -1,0 +1,45 @@
+"""The warm-start chain: each stage starts from the previous stage's final case."""
+
+import numpy as np
+import openmdao.api as om
+import pytest
+
+from lpc_mdo.vehicle import reference_vehicle
+from lpc_mdo.warm_start import magnitude_refs, run_sequence
+
+pytest.importorskip("cyipopt")
+
+
+def test_planform_found_by_subproblem_4_carries_into_subproblem_3(tmp_path):
+    results = run_sequence(str(tmp_path), names=("subproblem_4", "subproblem_3"),
+                           driver_settings={"max_iter": 100, "print_level": 0},
+                           log=lambda message: None)
+    assert [r.name for r in results] == ["subproblem_4", "subproblem_3"]
+    assert all(r.success for r in results), [r.exit_status for r in results]
+    sub4 = om.CaseReader(results[0].case_file).get_case("final")
+    sub3 = om.CaseReader(results[1].case_file).get_case("final")
+    # Subproblem 3 has no planform design variables: it keeps the wing subproblem 4 found.
+    assert sub4.get_val("wing_area")[0] != reference_vehicle().wing.area
+    np.testing.assert_allclose(sub3.get_val("wing_area"), sub4.get_val("wing_area"))
+    # ... and sizes its wing box for it (the thicknesses moved from their initial value).
+    assert not np.allclose(sub3.get_val("top_skin_thickness"), 1.5e-3)
+
+
+def test_magnitude_refs(tmp_path):
+    vehicle = reference_vehicle()
+    prob = om.Problem(reports=False)
+    ivc = prob.model.add_subsystem("dv", om.IndepVarComp(), promotes=["*"])
+    ivc.add_output("battery_mass", 850.0, units="kg")
+    ivc.add_output("top_skin_thickness", np.array([2e-3, 0.0, 1e-3, 1e-3, 1e-3, 1e-3, 1e-3,
+                                                   3e-4]), units="m")
+    recorder = om.SqliteRecorder(str(tmp_path / "c.sql"))
+    prob.add_recorder(recorder)
+    prob.setup()
+    prob.run_model()
+    prob.record("final")
+    prob.cleanup()
+    refs = magnitude_refs(om.CaseReader(str(tmp_path / "c.sql")).get_case("final"), vehicle)
+    assert refs["battery_mass"] == pytest.approx(850.0)
+    # A zero entry gets the floor (1e-6 of the vehicle file's ref), never a zero ref.
+    assert refs["top_skin_thickness"][1] == pytest.approx(1e-6 * 1e-3)
+    assert set(refs) == {"battery_mass", "top_skin_thickness"}
