@@ -1,8 +1,10 @@
 """The paper's warm-start sequence (Fig. 8): subproblems 1 to 4, then the full problem.
 
 Each problem records its iterations and a final case (every variable) to its own case file; the
-next one starts from the previous final case with ``load_case``, which matches promoted names,
-so the design variables a subproblem did not have keep the values the earlier ones found. The
+next one starts from the previous final case: every design-variable array of the vehicle file
+is set from it by name (``load_case`` itself also sets inputs, whose shapes differ between
+subproblems with different conditions), so the design variables a subproblem did not have keep
+the values the earlier ones found. The
 full problem then rescales every design variable by its optimized magnitude (the paper's remedy
 for the conditioning of rotor speeds ~1e3 against thicknesses ~1e-3).
 """
@@ -62,6 +64,15 @@ def magnitude_refs(case, vehicle, floor=1e-6):
     return refs
 
 
+def _load_design_variables(prob, case, vehicle):
+    """Set every design-variable array of the vehicle file from a recorded case."""
+    outputs = case.list_outputs(out_stream=None, prom_name=True, return_format="dict")
+    recorded = {meta["prom_name"] for meta in outputs.values()}
+    for name, dv in vehicle.design_variables.items():
+        if name in recorded:
+            prob.set_val(name, np.asarray(case.get_val(name)).reshape(dv.shape))
+
+
 def run_sequence(out_dir, names=DEFAULT_SEQUENCE, vehicle=None, static_margin=True,
                  optimizer="IPOPT", full_optimizer=None, driver_settings=None, start_case=None,
                  rescale_full=True, log=print):
@@ -114,7 +125,7 @@ def run_sequence(out_dir, names=DEFAULT_SEQUENCE, vehicle=None, static_margin=Tr
                              recorder_path=path, design_variable_refs=refs,
                              driver_settings=driver_settings)
         if case is not None:
-            prob.load_case(case)
+            _load_design_variables(prob, case, vehicle)
         start = time.perf_counter()
         result = prob.run_driver()
         seconds = time.perf_counter() - start
