@@ -38,6 +38,22 @@ ATMOSPHERE_CONSTANTS = {
 }
 
 
+def standard_atmosphere(altitude, constants="icao"):
+    """
+    Troposphere states at ``altitude`` (m): temperature (K), pressure (Pa), density (kg/m**3),
+    speed of sound (m/s) and dynamic viscosity (Pa s), with a constant set of
+    :data:`ATMOSPHERE_CONSTANTS`. Complex-step safe; no range check (AtmosphereComp checks).
+    """
+    c = ATMOSPHERE_CONSTANTS[constants]
+    temperature = c['T0'] - c['L'] * altitude
+    pressure = c['p0'] * (temperature / c['T0']) ** (c['g0'] / (c['R'] * c['L']))
+    density = pressure / (c['R'] * temperature)
+    speed_of_sound = np.sqrt(c['gamma'] * c['R'] * temperature)
+    mu = (c['mu_ref'] * (temperature / c['T_mu_ref']) ** 1.5
+          * (c['T_mu_ref'] + c['S']) / (temperature + c['S']))
+    return temperature, pressure, density, speed_of_sound, mu
+
+
 class AtmosphereComp(om.ExplicitComponent):
     """
     Standard atmosphere in the troposphere (constant lapse rate, 0 to 11 km).
@@ -140,14 +156,7 @@ class AtmosphereComp(om.ExplicitComponent):
                 f"[{self.altitude_min:g}, {self.altitude_max:g}] m.")
 
     def _states(self, h):
-        c = self._c
-        temperature = c['T0'] - c['L'] * h
-        pressure = c['p0'] * (temperature / c['T0']) ** self._exponent
-        density = pressure / (c['R'] * temperature)
-        speed_of_sound = np.sqrt(c['gamma'] * c['R'] * temperature)
-        mu = (c['mu_ref'] * (temperature / c['T_mu_ref']) ** 1.5
-              * (c['T_mu_ref'] + c['S']) / (temperature + c['S']))
-        return temperature, pressure, density, speed_of_sound, mu
+        return standard_atmosphere(h, self.options['constants'])
 
     def compute(self, inputs, outputs):
         h = inputs['altitude']

@@ -4,6 +4,7 @@ import numpy as np
 import openmdao.api as om
 from scipy.optimize import brentq
 
+from lpc_mdo.components.atmosphere import standard_atmosphere
 from lpc_mdo.components.energy.battery import BatteryComp
 from lpc_mdo.components.energy.mission_energy import MissionEnergyComp
 from lpc_mdo.components.gather import GatherComp
@@ -478,8 +479,10 @@ def _airfoil_models(vehicle, rotor_polar, wing_zero_lift_angle):
     if rotor_polar is None:
         rotor_polar = get_polar(vehicle.lift_rotors[0].airfoil)
     if wing_zero_lift_angle is None:
+        # At the cruise condition's Reynolds and Mach numbers on the wing MAC.
         cruise = vehicle.condition("cruise")
-        reynolds = 1.11 * cruise.speed * vehicle.wing.mean_aerodynamic_chord / 1.76e-5
+        _, _, rho, a, mu = standard_atmosphere(cruise.altitude)
+        reynolds = rho * cruise.speed * vehicle.wing.mean_aerodynamic_chord / mu
         wing_zero_lift_angle = zero_lift_angle(get_polar(vehicle.wing.airfoil), reynolds,
-                                               cruise.speed / 336.4)
+                                               cruise.speed / a)
     return rotor_polar, wing_zero_lift_angle
