@@ -140,6 +140,10 @@ class _Spec:
     count: int | None = None  # lists of tables
     count_note: str = ""
     derived: bool = False  # set by the loader, not read from the file
+    polar_file: bool = False  # a string may also name an existing airfoil polar file
+
+
+_POLAR_SUFFIXES = (".npz", ".txt", ".dat", ".csv", ".pol")
 
 
 def _param(units: str = "", **kw) -> typing.Any:
@@ -349,7 +353,8 @@ class Rotor:
     pair : int
         Group: 0..3 for the lift-rotor pairs, 4 for the pusher.
     airfoil : str
-        Blade section, a key of :data:`AIRFOILS`.
+        Blade section, a key of :data:`AIRFOILS`, or a polar file (alpha [deg], cl, cd rows;
+        ``.npz`` in the shipped table format) that ``components.aero.airfoil.get_polar`` reads.
     """
 
     name: str = _param()
@@ -362,7 +367,7 @@ class Rotor:
     spin_direction: int = _param(choices=(-1, 1))
     thrust_axis: tuple[float, ...] = _param(shape=(3,), unit_vector=True)
     pair: int = _param(ge=0, le=_PUSHER_GROUP)
-    airfoil: str = _param(choices=_AIRFOIL_NAMES)
+    airfoil: str = _param(choices=_AIRFOIL_NAMES, polar_file=True)
 
     @property
     def hub_radius(self) -> float:
@@ -1074,8 +1079,15 @@ def _string(value, spec: _Spec, path: str) -> str:
     if not isinstance(value, str):
         raise VehicleSpecError(f"'{path}' must be a string, got {_show(value)}")
     if spec.choices and value not in spec.choices:
+        if spec.polar_file and value.lower().endswith(_POLAR_SUFFIXES):
+            if not os.path.isfile(value):
+                raise VehicleSpecError(f"'{path}' = {value!r}: polar file not found")
+            return os.path.abspath(value)
         allowed = ", ".join(repr(c) for c in spec.choices)
-        raise VehicleSpecError(f"'{path}' = {value!r} is not allowed: must be one of {allowed}")
+        extra = (f", or a polar file ({', '.join(_POLAR_SUFFIXES)}: alpha [deg], cl, cd)"
+                 if spec.polar_file else "")
+        raise VehicleSpecError(f"'{path}' = {value!r} is not allowed: must be one of "
+                               f"{allowed}{extra}")
     return value
 
 

@@ -441,3 +441,26 @@ def test_bad_input_raises_one_clear_error(data, mutate, message):
 def test_error_is_a_value_error():
     with pytest.raises(ValueError, match="a vehicle description must be a table, got list"):
         vehicle_from_dict([])
+
+
+def test_rotor_airfoil_may_be_a_user_polar_file(tmp_path):
+    # A user polar (alpha [deg], cl, cd rows) works wherever an airfoil name does.
+    alpha = np.linspace(-10.0, 12.0, 23)
+    table = np.column_stack([alpha, 0.1 * alpha, 0.01 + 1e-4 * alpha**2])
+    polar_path = tmp_path / "my_blade.dat"
+    np.savetxt(polar_path, table)
+    data = read_vehicle_file()
+    for rotor in data["lift_rotors"]:
+        rotor["airfoil"] = str(polar_path)
+    vehicle = vehicle_from_dict(data)
+    assert vehicle.lift_rotors[0].airfoil == str(polar_path.resolve())
+
+    from lpc_mdo.components.aero.airfoil import get_polar
+
+    polar = get_polar(vehicle.lift_rotors[0].airfoil)
+    values = polar.evaluate(np.radians(4.0), 1e6, 0.1)
+    assert abs(float(values.cl) - 0.4) < 1e-6  # the table's own value at 4 deg
+
+    data["lift_rotors"][0]["airfoil"] = str(tmp_path / "missing.dat")
+    with pytest.raises(VehicleSpecError, match="polar file not found"):
+        vehicle_from_dict(data)
