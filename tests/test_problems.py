@@ -33,6 +33,19 @@ def test_subproblem_4_converges():
     assert values["cruise.static_margin"][0] >= 0.08 - 1e-6
 
 
+def test_subproblem_2_trims_every_oei_case():
+    # One lift rotor out, the other seven trim all five accelerations with a 10 % torque
+    # margin (the lift-motor lengths are free up to 0.25 m; 0.12 m made this infeasible).
+    prob = build_problem("subproblem_2", driver_settings={"max_iter": 200, "print_level": 0})
+    result = prob.run_driver()
+    assert result.success, result.exit_status
+    values = prob.driver.get_constraint_values(driver_scaling=False)
+    for case in range(1, 5):
+        assert abs(values[f"oei_{case}.linear_acceleration"]).max() < 1e-5
+        assert abs(values[f"oei_{case}.angular_acceleration"]).max() < 1e-5
+    assert values["lift_motor_torque_margin"].min() >= 0.1 - 1e-6
+
+
 def test_unknown_problem_name():
     with pytest.raises(ValueError, match="allowed: "):
         build_problem("subproblem_9")
