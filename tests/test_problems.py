@@ -14,7 +14,8 @@ def sizes(prob):
 
 @pytest.mark.parametrize(("name", "expected"), [
     # Design variables and constraints of each subproblem (paper Table 2 with Table 6 counts).
-    ("subproblem_1", (4 + 20 + 5 + 3 + 3 + 8 + 1 + 1, 1 + 3 + 9 + 30 + 1 + 9)),
+    # Subproblem 1 adds the 45 blade variables (radius, chord, twist) Table 2 leaves implicit.
+    ("subproblem_1", (4 + 20 + 5 + 3 + 3 + 8 + 1 + 1 + 45, 1 + 3 + 9 + 30 + 1 + 9)),
     ("subproblem_2", (28 + 4, 20 + 8)),
     ("subproblem_3", (32 + 2, 2 + 14)),
     ("subproblem_4", (5 + 3, 3 + 1)),
