@@ -9,12 +9,23 @@ from openmdao.utils.assert_utils import (
     assert_no_approx_partials,
 )
 
+from lpc_mdo.components.aero.vlm_aic import VLMAICComp
 from lpc_mdo.components.aero.vlm_biot_savart import (
     INV_4PI,
     segment_velocity,
     semi_infinite_velocity,
 )
+from lpc_mdo.components.aero.vlm_circulation import VLMCirculationComp
+from lpc_mdo.components.aero.vlm_forces import VLMPanelForcesComp
+from lpc_mdo.components.aero.vlm_freestream import VLMFreestreamComp
+from lpc_mdo.components.aero.vlm_geometry import VLMGeometryComp
+from lpc_mdo.components.aero.vlm_induced_velocity import VLMInducedVelocityComp
 from lpc_mdo.components.aero.vlm_lattice import Lattice, VLMSurface
+from lpc_mdo.components.aero.vlm_loads import VLMLoadsComp
+from lpc_mdo.components.aero.vlm_normals import VLMNormalsComp
+from lpc_mdo.components.aero.vlm_profile_drag import VLMProfileDragComp
+from lpc_mdo.components.aero.vlm_sectional import VLMSectionalLiftComp
+from lpc_mdo.components.aero.vlm_trefftz import VLMTrefftzDragComp
 from lpc_mdo.components.geometry.planform import PlanformMeshComp
 from lpc_mdo.groups.vlm import VLMGroup
 
@@ -69,9 +80,15 @@ def make_problem():
 def test_partials_of_every_vlm_component():
     prob = make_problem()
     data = prob.check_partials(method="cs", compact_print=True, out_stream=None)
-    expected = {"geometry", "freestream", "normals", "aic", "circulation", "induced_velocity",
-                "panel_forces", "profile_drag", "loads", "sectional", "trefftz"}
-    assert {name.split(".")[-1] for name in data} == expected
+    expected = {"geometry": VLMGeometryComp, "freestream": VLMFreestreamComp,
+                "normals": VLMNormalsComp, "aic": VLMAICComp, "circulation": VLMCirculationComp,
+                "induced_velocity": VLMInducedVelocityComp, "panel_forces": VLMPanelForcesComp,
+                "profile_drag": VLMProfileDragComp, "loads": VLMLoadsComp,
+                "sectional": VLMSectionalLiftComp, "trefftz": VLMTrefftzDragComp}
+    # Every VLM component is checked, each in its subsystem of the group.
+    assert {name.split(".")[-1] for name in data} == set(expected)
+    for name, cls in expected.items():
+        assert isinstance(getattr(prob.model.vlm, name), cls)
     # Mesh-coordinate partials included (ring vertices, collocation and force points, areas).
     assert ("aic", "ring_vertices") in data["vlm.aic"]
     assert_check_partials(data, atol=1e-8, rtol=1e-8)
