@@ -49,6 +49,7 @@ from lpc_mdo.groups.beam import BoxBeamGroup
 from lpc_mdo.groups.motor import MotorGroup
 from lpc_mdo.groups.pitt_peters import PittPetersRotorGroup
 from lpc_mdo.groups.rotor import BEMRotorGroup
+from lpc_mdo.groups.vehicle import motor_parameters
 from lpc_mdo.groups.vlm import VLMGroup, lpc_vlm_surfaces
 
 NUM_CP = 4
@@ -63,10 +64,20 @@ def _declare_common(group):
                           desc="radial stations of the rotor models")
 
 
-def _motor_parameters(vehicle):
-    from lpc_mdo.groups.vehicle import motor_parameters
+def _add_motors(group, vehicle, prefix, num_motors):
+    """Motors of the ``prefix`` rotors (torque floored at idle), promoted as ``{prefix}_motor_*``.
 
-    return motor_parameters(vehicle)
+    Inputs ``{prefix}_torque`` (rotor shaft torque), ``{prefix}_rpm``, ``{prefix}_motor_length``.
+    """
+    group.add_subsystem(f"{prefix}_shaft", ShaftTorqueComp(num_motors=num_motors),
+                        promotes_inputs=[("rotor_torque", f"{prefix}_torque")])
+    group.add_subsystem(f"{prefix}_motors", MotorGroup(
+        num_motors=num_motors, num_nodes=1, length_to_diameter=vehicle.motor.length_to_diameter,
+        parameters=motor_parameters(vehicle)),
+        promotes_inputs=[("length", f"{prefix}_motor_length"), ("rotor_rpm", f"{prefix}_rpm")],
+        promotes_outputs=[(name, f"{prefix}_motor_{name}") for name in
+                          ("input_power", "em_torque", "torque_margin", "peak_torque")])
+    group.connect(f"{prefix}_shaft.motor_load_torque", f"{prefix}_motors.rotor_torque")
 
 
 def _add_atmosphere(group, condition):
@@ -74,7 +85,7 @@ def _add_atmosphere(group, condition):
     group.set_input_defaults("altitude", np.array([condition.altitude]), units="m")
 
 
-def _add_lift_rotors(group, vehicle, rotors, speed_groups, num_groups, model, edgewise):
+def _add_lift_rotors(group, vehicle, rotors, speed_groups, num_groups, edgewise):
     """Lift rotors (BEM or Pitt–Peters) with their speeds and motors, promoted as ``lift_*``."""
     na = len(rotors)
     opts = group.options
@@ -94,17 +105,7 @@ def _add_lift_rotors(group, vehicle, rotors, speed_groups, num_groups, model, ed
                           ("power", "lift_power"), ("tip_mach", "lift_tip_mach"),
                           ("figure_of_merit", "lift_figure_of_merit"),
                           ("total_force", "lift_force"), ("total_moment", "lift_moment")])
-    group.add_subsystem("lift_shaft", ShaftTorqueComp(num_motors=na),
-                        promotes_inputs=[("rotor_torque", "lift_torque")])
-    group.add_subsystem("lift_motors", MotorGroup(
-        num_motors=na, num_nodes=1, length_to_diameter=vehicle.motor.length_to_diameter,
-        parameters=_motor_parameters(vehicle)),
-        promotes_inputs=[("length", "lift_motor_length"), ("rotor_rpm", "lift_rpm")],
-        promotes_outputs=[("input_power", "lift_motor_input_power"),
-                          ("em_torque", "lift_motor_em_torque"),
-                          ("torque_margin", "lift_motor_torque_margin"),
-                          ("peak_torque", "lift_motor_peak_torque")])
-    group.connect("lift_shaft.motor_load_torque", "lift_motors.rotor_torque")
+    _add_motors(group, vehicle, "lift", na)
     group.set_input_defaults("lift_radius", np.array([r.radius for r in rotors]), units="m")
     group.set_input_defaults("lift_hub_position", np.array([r.hub_position for r in rotors]),
                              units="m")
@@ -123,17 +124,7 @@ def _add_pusher(group, vehicle):
         promotes_outputs=[("thrust", "pusher_thrust"), ("torque", "pusher_torque"),
                           ("power", "pusher_power"), ("efficiency", "pusher_efficiency"),
                           ("total_force", "pusher_force"), ("total_moment", "pusher_moment")])
-    group.add_subsystem("pusher_shaft", ShaftTorqueComp(num_motors=1),
-                        promotes_inputs=[("rotor_torque", "pusher_torque")])
-    group.add_subsystem("pusher_motor", MotorGroup(
-        num_motors=1, num_nodes=1, length_to_diameter=vehicle.motor.length_to_diameter,
-        parameters=_motor_parameters(vehicle)),
-        promotes_inputs=[("length", "pusher_motor_length"), ("rotor_rpm", "pusher_rpm")],
-        promotes_outputs=[("input_power", "pusher_motor_input_power"),
-                          ("em_torque", "pusher_motor_em_torque"),
-                          ("torque_margin", "pusher_motor_torque_margin"),
-                          ("peak_torque", "pusher_motor_peak_torque")])
-    group.connect("pusher_shaft.motor_load_torque", "pusher_motor.rotor_torque")
+    _add_motors(group, vehicle, "pusher", 1)
     group.set_input_defaults("pusher_radius", np.array([pusher.radius]), units="m")
     group.set_input_defaults("pusher_hub_position", np.array([pusher.hub_position]), units="m")
 
@@ -251,7 +242,7 @@ class HoverCondition(om.Group):
         self.speed_groups = num_groups
 
         _add_atmosphere(self, condition)
-        _add_lift_rotors(self, vehicle, rotors, groups, num_groups, "bem", edgewise=False)
+        _add_lift_rotors(self, vehicle, rotors, groups, num_groups, edgewise=False)
         self.set_input_defaults("velocity", np.zeros((1, 3)), units="m/s")
         _add_power(self, {"lift": len(rotors)})
         _add_equations_of_motion(self, ["lift"])
@@ -337,8 +328,7 @@ class TransitionCondition(om.Group):
         self.speed_groups = 4
         _add_atmosphere(self, condition)
         _add_aerodynamics(self, vehicle, condition, self.options["wing_zero_lift_angle"])
-        _add_lift_rotors(self, vehicle, rotors, [r.pair for r in rotors], 4, "pitt_peters",
-                         edgewise=True)
+        _add_lift_rotors(self, vehicle, rotors, [r.pair for r in rotors], 4, edgewise=True)
         _add_pusher(self, vehicle)
         _add_power(self, {"lift": len(rotors), "pusher": 1})
         _add_equations_of_motion(self, ["aero", "drag", "lift", "pusher"],
