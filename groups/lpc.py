@@ -75,6 +75,10 @@ class LPCGroup(om.Group):
         Sectional zero-lift angle of the wing airfoil, rad (None: from its table).
     ks_rho : float
         KS aggregation parameter of the torque margins.
+    lateral_trim : bool
+        Declare the lateral trim constraints of hover and the transition points (paper Table 6:
+        96 constraints). They are zero by symmetry with zero gradients, so an optimizer does
+        better without them (80 constraints).
     conditions : list of str or None
         The design conditions to include, by name (None: all of the vehicle's). Subproblems
         and single-condition studies use a subset; the mission energy then counts only those.
@@ -112,6 +116,9 @@ class LPCGroup(om.Group):
         self.options.declare(
             "ks_rho", default=50.0, types=float, desc="KS parameter of the torque-margin aggregates"
         )
+        self.options.declare("lateral_trim", default=True, types=bool,
+                             desc="constrain v_dot, p_dot, r_dot in hover and transition, which "
+                                  "symmetry already zeroes (paper Table 6 counts them)")
         self.options.declare("conditions", default=None, types=(list, tuple), allow_none=True,
                              desc="names of the design conditions to include (None: all)")
         self.options.declare("design_variables", default=None, types=(list, tuple, dict),
@@ -322,12 +329,16 @@ class LPCGroup(om.Group):
                                 indices=indices, flat_indices=indices is not None)
         self.add_objective("gross_mass", ref=vehicle.masses.target_gross_mass, units="kg")
         wanted = set(self.options["constraint_kinds"])
+        # Lateral trim (v_dot, p_dot, r_dot) of the symmetric conditions is zero by symmetry:
+        # paired rotors share speed and spin in opposite senses. Those rows of the constraint
+        # Jacobian are identically zero, which violates the constraint qualification.
+        symmetric_only = not self.options["lateral_trim"]
 
         g = 9.81
         if "hover" in present and "noise" in wanted:
             self.add_constraint("hover.total_spl_a", upper=limits.max_noise, ref=10.0)
         if "hover" in present and "trim" in wanted:
-            self._trim("hover", [2], [0, 1], 0.0, g)
+            self._trim("hover", [2], [1] if symmetric_only else [0, 1], 0.0, g)
         if "hover" in present and "tip_mach" in wanted:
             pairs = np.array([r.pair for r in vehicle.lift_rotors])
             tip = [int(np.flatnonzero(pairs == p)[0]) for p in range(4)]
@@ -338,7 +349,10 @@ class LPCGroup(om.Group):
                 self._trim(c.name, [0, 2], [1], 0.0, g)
             elif c.kind == "transition":
                 accel = c.acceleration * np.array([np.cos(c.pitch), 0.0, np.sin(c.pitch)])
-                self._trim(c.name, [0, 1, 2], [0, 1, 2], accel, g)
+                if symmetric_only:
+                    self._trim(c.name, [0, 2], [1], accel, g)
+                else:
+                    self._trim(c.name, [0, 1, 2], [0, 1, 2], accel, g)
             elif c.kind == "oei":
                 self._trim(c.name, [1, 2], [0, 1, 2], 0.0, g)
             elif c.kind == "structural":

@@ -83,7 +83,7 @@ PROBLEM_NAMES = (*SUBPROBLEMS, "full")
 
 def build_problem(name, vehicle=None, static_margin=True, optimizer="IPOPT",
                   recorder_path=None, design_variable_refs=None, driver_settings=None,
-                  **model_options):
+                  lateral_trim=False, **model_options):
     """
     One of the paper's warm-start subproblems (Table 2) or the full problem (Table 6).
 
@@ -103,6 +103,11 @@ def build_problem(name, vehicle=None, static_margin=True, optimizer="IPOPT",
         Design-variable scaling overrides (the warm start sets them from optimized magnitudes).
     driver_settings : dict or None
         Passed to make_driver.
+    lateral_trim : bool
+        Also constrain v_dot, p_dot, r_dot in hover and transition. Paper Table 6 counts them
+        (96 constraints), but symmetry zeroes them identically, with zero gradients that
+        violate the constraint qualification (SLSQP stops on a singular matrix, IPOPT's dual
+        infeasibility explodes), so optimizations leave them out (80 constraints).
     **model_options
         Further LPCGroup options.
 
@@ -122,7 +127,8 @@ def build_problem(name, vehicle=None, static_margin=True, optimizer="IPOPT",
                      conditions=spec.get("conditions"),
                      design_variables=spec.get("design_variables"),
                      constraint_kinds=spec.get("constraint_kinds", CONSTRAINT_KINDS),
-                     design_variable_refs=design_variable_refs, **model_options)
+                     design_variable_refs=design_variable_refs, lateral_trim=lateral_trim,
+                     **model_options)
     prob = om.Problem(model=model, name=name, reports=False)
     prob.driver = make_driver(optimizer, **(driver_settings or {}))
     if recorder_path is not None:
