@@ -1,4 +1,4 @@
-"""Command-line interface: ``lpc-mdo analyze``."""
+"""Command-line interface: ``lpc-mdo analyze | optimize | report``."""
 
 import argparse
 import os
@@ -61,6 +61,57 @@ def _analyze(args):
     return 0
 
 
+def _optimize(args):
+    from lpc_mdo.post.statistics import process_peak_memory_mb, write_run_stats
+    from lpc_mdo.problems import build_problem
+    from lpc_mdo.warm_start import run_sequence
+
+    out = Path(args.output_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    settings = {"max_iter": args.max_iter}
+    if args.problem == "sequence":
+        results = run_sequence(str(out), vehicle=args.vehicle,
+                               static_margin=not args.no_static_margin,
+                               optimizer=args.optimizer, driver_settings=settings)
+        return 0 if all(r.success for r in results) else 1
+
+    case_file = out / f"{args.problem}.sql"
+    prob = build_problem(args.problem, vehicle=args.vehicle,
+                         static_margin=not args.no_static_margin, optimizer=args.optimizer,
+                         recorder_path=case_file, driver_settings=settings)
+    if args.start_case:
+        import openmdao.api as om
+
+        from lpc_mdo.warm_start import load_design_variables
+
+        load_design_variables(prob, om.CaseReader(args.start_case).get_case("final"),
+                               prob.vehicle)
+    # IPOPT prints its iteration table (iteration, objective, infeasibility) as it goes; a
+    # Ctrl-C stops it cleanly and the case file keeps every recorded iteration.
+    try:
+        result = prob.run_driver()
+    except KeyboardInterrupt:
+        print("lpc-mdo: interrupted; the case file holds the iterations so far", file=sys.stderr)
+        prob.record("final")
+        prob.cleanup()
+        return 130
+    prob.record("final")
+    prob.cleanup()
+    write_run_stats(result, out, peak_memory_mb=process_peak_memory_mb())
+    print(f"{args.problem}: success={result.success}, {result.iter_count} iterations, "
+          f"{result.runtime:.1f} s, gross mass {prob.get_val('gross_mass', units='kg')[0]:.2f} kg"
+          f"\ncase file: {case_file}")
+    return 0 if result.success else 1
+
+
+def _report(args):
+    from lpc_mdo.post.report import write_report
+
+    index = write_report(args.cases, args.output_dir)
+    print(f"report: {index}")
+    return 0
+
+
 def main(argv=None):
     """Entry point of the ``lpc-mdo`` command."""
     os.environ.setdefault("OPENMDAO_REPORTS", "0")
@@ -76,6 +127,28 @@ def main(argv=None):
     analyze.add_argument("--no-static-margin", action="store_true",
                          help="leave the static-margin constraint out")
     analyze.set_defaults(func=_analyze)
+
+    from lpc_mdo.problems import PROBLEM_NAMES
+
+    optimize = sub.add_parser("optimize", help="solve a subproblem, the full problem, or the "
+                                               "warm-start sequence")
+    optimize.add_argument("--problem", default="sequence", choices=(*PROBLEM_NAMES, "sequence"),
+                          help="which problem (default: the whole warm-start sequence)")
+    optimize.add_argument("--optimizer", default="IPOPT", choices=("IPOPT", "SNOPT", "SLSQP"))
+    optimize.add_argument("--max-iter", type=int, default=200, help="iteration limit")
+    optimize.add_argument("--vehicle", default=None, help="vehicle TOML file")
+    optimize.add_argument("--no-static-margin", action="store_true",
+                          help="leave the static-margin constraint out")
+    optimize.add_argument("--start-case", default=None,
+                          help="case file whose final case gives the starting design")
+    optimize.add_argument("--output-dir", default="optimize_out",
+                          help="folder for case files and run statistics")
+    optimize.set_defaults(func=_optimize)
+
+    report = sub.add_parser("report", help="tables and figures from case files")
+    report.add_argument("cases", help="a case file or a folder of case files")
+    report.add_argument("--output-dir", default="report", help="report folder")
+    report.set_defaults(func=_report)
 
     args = parser.parse_args(argv)
     from lpc_mdo.vehicle import VehicleSpecError

@@ -64,7 +64,7 @@ def magnitude_refs(case, vehicle, floor=1e-6):
     return refs
 
 
-def _load_design_variables(prob, case, vehicle):
+def load_design_variables(prob, case, vehicle):
     """Set every design-variable array of the vehicle file from a recorded case."""
     outputs = case.list_outputs(out_stream=None, prom_name=True, return_format="dict")
     recorded = {meta["prom_name"] for meta in outputs.values()}
@@ -125,7 +125,7 @@ def run_sequence(out_dir, names=DEFAULT_SEQUENCE, vehicle=None, static_margin=Tr
                              recorder_path=path, design_variable_refs=refs,
                              driver_settings=driver_settings)
         if case is not None:
-            _load_design_variables(prob, case, vehicle)
+            load_design_variables(prob, case, vehicle)
         start = time.perf_counter()
         result = prob.run_driver()
         seconds = time.perf_counter() - start

@@ -34,3 +34,17 @@ def test_analyze_reports_a_bad_vehicle_file(tmp_path, capsys):
 def test_unknown_command_exits():
     with pytest.raises(SystemExit):
         main(["fly"])
+
+
+def test_optimize_subproblem_4_and_report(tmp_path, capsys):
+    pytest.importorskip("cyipopt")
+    out = tmp_path / "opt"
+    assert main(["optimize", "--problem", "subproblem_4", "--max-iter", "100",
+                 "--output-dir", str(out)]) == 0
+    text = capsys.readouterr().out
+    assert "subproblem_4: success=True" in text
+    assert (out / "run_stats.json").exists()
+    case = om.CaseReader(str(out / "subproblem_4.sql")).get_case("final")
+    assert case.get_val("cruise.static_margin")[0] >= 0.08 - 1e-6
+    assert main(["report", str(out), "--output-dir", str(tmp_path / "report")]) == 0
+    assert (tmp_path / "report" / "index.md").exists()
