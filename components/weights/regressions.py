@@ -190,7 +190,24 @@ class _M4RegressionComp(om.ExplicitComponent):
             partials[f"{self._prefix}_inertia", name] = jac[:, j:j + 1]
 
 
-class FuselageRegressionComp(_M4RegressionComp):
+class _SinglePartRegressionComp(_M4RegressionComp):
+    """A part that is one body with its own cg factor k_x (the coefficients under ``_prefix``)."""
+
+    def initialize(self):
+        super().initialize()
+        k_x = m4_coefficients()[self._prefix]["cg_x_factor"]
+        self.options.declare("cg_x_factor", default=k_x, types=(int, float),
+                             check_valid=_positive,
+                             desc=f"k_x in x_cg = x_nose - k_x cg_X (> 0); {k_x} as coded")
+
+    def _sub_parts(self):
+        return [(1.0, m4_coefficients()[self._prefix], float(self.options["cg_x_factor"]))]
+
+    def _mass_coefficients(self):
+        return m4_coefficients()[self._prefix]["mass"]
+
+
+class FuselageRegressionComp(_SinglePartRegressionComp):
     """
     Fuselage structural mass, cg and inertia from the M4 regression.
 
@@ -242,20 +259,9 @@ class FuselageRegressionComp(_M4RegressionComp):
     _prefix = "fuselage"
     _what = "fuselage"
 
-    def initialize(self):
-        super().initialize()
-        self.options.declare("cg_x_factor", default=m4_coefficients()["fuselage"]["cg_x_factor"],
-                             types=(int, float), check_valid=_positive,
-                             desc="k_x in x_cg = x_nose - k_x cg_X (> 0); 0.88 as coded")
-
-    def _sub_parts(self):
-        return [(1.0, m4_coefficients()["fuselage"], float(self.options["cg_x_factor"]))]
-
-    def _mass_coefficients(self):
-        return m4_coefficients()["fuselage"]["mass"]
 
 
-class WingRegressionComp(_M4RegressionComp):
+class WingRegressionComp(_SinglePartRegressionComp):
     """
     Wing structural mass, cg and inertia from the M4 regression (public-code alternative).
 
@@ -295,17 +301,6 @@ class WingRegressionComp(_M4RegressionComp):
     _prefix = "wing"
     _what = "wing"
 
-    def initialize(self):
-        super().initialize()
-        self.options.declare("cg_x_factor", default=m4_coefficients()["wing"]["cg_x_factor"],
-                             types=(int, float), check_valid=_positive,
-                             desc="k_x in x_cg = x_nose - k_x cg_X (> 0); 0.9 as coded")
-
-    def _sub_parts(self):
-        return [(1.0, m4_coefficients()["wing"], float(self.options["cg_x_factor"]))]
-
-    def _mass_coefficients(self):
-        return m4_coefficients()["wing"]["mass"]
 
 
 class BoomRegressionComp(_M4RegressionComp):
