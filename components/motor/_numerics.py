@@ -274,3 +274,17 @@ def check_range(owner, name, value, units, lower=None, upper=None, lower_open=Tr
         raise om.AnalysisError(
             f"{owner}: {name} = {val.ravel()[idx].tolist()} {units} at flat index(es) "
             f"{idx.tolist()} is outside the allowed range {lo_txt}{lo_val}, {hi_txt}.")
+
+
+def check_saliency(owner, inductance_d, inductance_q, detail=''):
+    """Raise AnalysisError naming the motors whose L_q - L_d is not > 0 (MTPA needs it).
+
+    ``detail(idx)`` may add a sentence about those motors to the message.
+    """
+    saliency = (inductance_q - inductance_d).real
+    if np.any(~(saliency > 0.0)):
+        idx = np.flatnonzero(~(saliency > 0.0))
+        extra = detail(idx) if callable(detail) else detail
+        raise om.AnalysisError(
+            f'{owner}: inductance_q - inductance_d = {saliency[idx].tolist()} H for '
+            f'motor(s) {idx.tolist()}{extra}')

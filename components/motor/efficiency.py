@@ -7,6 +7,7 @@ from lpc_mdo.components.motor import parameters as mp
 from lpc_mdo.components.motor._numerics import (
     CS_STEP,
     check_range,
+    check_saliency,
     declare_pointwise_partials,
     newton_bracketed,
 )
@@ -350,15 +351,12 @@ class EMTorqueComp(PointwiseImplicitComp):
     def _check_values(self, values):
         check_range(self.msginfo, 'rotor_torque', values['rotor_torque'], 'N*m', lower=0.0)
         check_range(self.msginfo, 'rotor_rpm', values['rotor_rpm'], 'rpm', lower=0.0)
-        saliency = (values['inductance_q'] - values['inductance_d']).real
-        if np.any(~(saliency > 0.0)):
-            idx = np.flatnonzero(~(saliency > 0.0))
-            raise om.AnalysisError(
-                f'{self.msginfo}: inductance_q - inductance_d = {saliency[idx].tolist()} H for '
-                f'motor(s) {idx.tolist()} (length {values["length"].real[idx].tolist()} m) is '
-                'outside the allowed range (0, inf): the MTPA current needs L_q > L_d, which '
-                'the equivalent circuit gives only above a minimum length (about 0.056 m at '
-                'L/D = 0.5 with the default parameters).')
+        check_saliency(
+            self.msginfo, values['inductance_d'], values['inductance_q'],
+            lambda idx: (f' (length {values["length"].real[idx].tolist()} m) is outside the '
+                         'allowed range (0, inf): the MTPA current needs L_q > L_d, which the '
+                         'equivalent circuit gives only above a minimum length (about 0.056 m '
+                         'at L/D = 0.5 with the default parameters).'))
 
     def _operating_point(self, v, torque):
         """Loss-model outputs at EM torque ``torque`` with the MTPA q-axis current."""

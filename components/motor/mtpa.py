@@ -3,7 +3,7 @@
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.components.motor._numerics import check_range, newton_bracketed
+from lpc_mdo.components.motor._numerics import check_range, check_saliency, newton_bracketed
 from lpc_mdo.components.motor.parameters import MotorParameters
 
 
@@ -128,13 +128,9 @@ class MTPAComp(om.ImplicitComponent):
         check_range(self.msginfo, 'em_torque', inputs['em_torque'], 'N*m', lower=0.0)
         check_range(self.msginfo, 'flux_linkage', inputs['flux_linkage'], 'Wb', lower=0.0)
         check_range(self.msginfo, 'inductance_d', inputs['inductance_d'], 'H', lower=0.0)
-        saliency = (inputs['inductance_q'] - inputs['inductance_d']).real
-        if np.any(~(saliency > 0.0)):
-            idx = np.flatnonzero(~(saliency > 0.0))
-            raise om.AnalysisError(
-                f'{self.msginfo}: inductance_q - inductance_d = {saliency[idx].tolist()} H for '
-                f'motor(s) {idx.tolist()} is outside the allowed range (0, inf): the MTPA '
-                'quartic needs L_q > L_d.')
+        check_saliency(self.msginfo, inputs['inductance_d'], inputs['inductance_q'],
+                       ' is outside the allowed range (0, inf): the MTPA quartic needs '
+                       'L_q > L_d.')
 
     def apply_nonlinear(self, inputs, outputs, residuals):
         current_pu, torque_pu, _, _ = self._per_unit(inputs, outputs['current_q'])
