@@ -64,6 +64,13 @@ def _declare_common(group):
                           desc="radial stations of the rotor models")
 
 
+def _declare_aero(group):
+    group.options.declare("wing_zero_lift_angle", default=0.0, types=float,
+                          desc="sectional zero-lift angle of the wing airfoil, rad")
+    group.options.declare("wing_panels", default=26, types=int, desc="wing VLM panels")
+    group.options.declare("tail_panels", default=8, types=int, desc="tail VLM panels")
+
+
 def _add_motors(group, vehicle, prefix, num_motors):
     """Motors of the ``prefix`` rotors (torque floored at idle), promoted as ``{prefix}_motor_*``.
 
@@ -285,10 +292,7 @@ class SteadyFlightCondition(om.Group):
 
     def initialize(self):
         _declare_common(self)
-        self.options.declare("wing_zero_lift_angle", default=0.0, types=float,
-                             desc="sectional zero-lift angle of the wing airfoil, rad")
-        self.options.declare("wing_panels", default=26, types=int, desc="wing VLM panels")
-        self.options.declare("tail_panels", default=8, types=int, desc="tail VLM panels")
+        _declare_aero(self)
         self.options.declare("stability", default=False, types=bool,
                              desc="add the neutral point and static margin")
 
@@ -313,10 +317,7 @@ class TransitionCondition(om.Group):
 
     def initialize(self):
         _declare_common(self)
-        self.options.declare("wing_zero_lift_angle", default=0.0, types=float,
-                             desc="sectional zero-lift angle of the wing airfoil, rad")
-        self.options.declare("wing_panels", default=26, types=int, desc="wing VLM panels")
-        self.options.declare("tail_panels", default=8, types=int, desc="tail VLM panels")
+        _declare_aero(self)
         self.options.declare("num_azimuth", default=25, types=int, lower=3,
                              desc="azimuthal stations of the Pitt-Peters rotors")
 
@@ -349,10 +350,7 @@ class StructuralCondition(om.Group):
 
     def initialize(self):
         _declare_common(self)
-        self.options.declare("wing_zero_lift_angle", default=0.0, types=float,
-                             desc="sectional zero-lift angle of the wing airfoil, rad")
-        self.options.declare("wing_panels", default=26, types=int, desc="wing VLM panels")
-        self.options.declare("tail_panels", default=8, types=int, desc="tail VLM panels")
+        _declare_aero(self)
         self.options.declare("ks_rho", default=None, types=(int, float), allow_none=True,
                              desc="KS parameter of the structural aggregates (None: none)")
         self.options.declare("coupling", default="one_way", values=("one_way", "two_way"),

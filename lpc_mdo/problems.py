@@ -8,6 +8,15 @@ from lpc_mdo.groups.lpc import CONSTRAINT_KINDS, LPCGroup
 from lpc_mdo.vehicle import load_vehicle
 
 
+def attach_recorder(prob, path):
+    """One SQLite recorder on the driver (every iteration) and the problem (``'final'``, every
+    variable), so a single case file holds the run and what post-processing needs."""
+    recorder = om.SqliteRecorder(str(path))
+    prob.driver.add_recorder(recorder)
+    prob.add_recorder(recorder)
+    prob.recording_options["includes"] = ["*"]
+
+
 def build_analysis_problem(vehicle=None, recorder_path=None, name="analysis", **options):
     """
     The full lift-plus-cruise model of a vehicle at its initial design, ready to run.
@@ -132,10 +141,7 @@ def build_problem(name, vehicle=None, static_margin=True, optimizer="IPOPT",
     prob = om.Problem(model=model, name=name, reports=False)
     prob.driver = make_driver(optimizer, **(driver_settings or {}))
     if recorder_path is not None:
-        recorder = om.SqliteRecorder(str(recorder_path))
-        prob.driver.add_recorder(recorder)
-        prob.add_recorder(recorder)
-        prob.recording_options["includes"] = ["*"]
+        attach_recorder(prob, recorder_path)
     prob.setup(mode="rev")
     prob.vehicle = vehicle
     return prob

@@ -5,6 +5,7 @@ import openmdao.api as om
 
 from lpc_mdo.drivers import make_driver
 from lpc_mdo.groups.lpc import LPCGroup
+from lpc_mdo.problems import attach_recorder
 from lpc_mdo.vehicle import reference_vehicle
 
 THICKNESSES = ("front_spar_thickness", "rear_spar_thickness", "top_skin_thickness",
@@ -59,10 +60,7 @@ def structural_sizing_problem(vehicle=None, aggregated=False, ks_rho=50.0, optim
     prob.driver = make_driver(optimizer)
     prob.driver.recording_options["includes"] = ["wing_mass"]
     if recorder_path is not None:
-        recorder = om.SqliteRecorder(str(recorder_path))
-        prob.driver.add_recorder(recorder)
-        prob.add_recorder(recorder)
-        prob.recording_options["includes"] = ["*"]
+        attach_recorder(prob, recorder_path)
     limits = vehicle.constraints
     max_w = limits.max_displacement if max_displacement is None else max_displacement
     material = vehicle.material
