@@ -71,6 +71,9 @@ class VehicleGroup(om.Group):
     other_mass : float or None
         W_other in kg; None = calibrated so that the initial design's gross mass equals the
         vehicle's ``masses.target_gross_mass`` (paper: 3723.99 kg).
+    other_cg : sequence of 3 float or None
+        cg of W_other in m; None = calibrated with W_other (``masses.other_cg_rule``), or the
+        vehicle's ``other_cg`` when ``other_mass`` is given.
     """
 
     def initialize(self):
@@ -78,6 +81,10 @@ class VehicleGroup(om.Group):
                              desc="lpc_mdo.vehicle.Vehicle; None = reference vehicle")
         self.options.declare("other_mass", default=None, types=(int, float), allow_none=True,
                              desc="W_other (kg); None = calibrated to the target gross mass")
+        self.options.declare("other_cg", default=None, types=(tuple, list, np.ndarray),
+                             allow_none=True,
+                             desc="cg of W_other (m); None = calibrated with W_other (or the "
+                                  "vehicle's other_cg when other_mass is given)")
         self.options.declare("wing_panels", default=26, types=int,
                              desc="span-wise VLM panels of the wing (even; paper code 26)")
         self.options.declare("tail_panels", default=8, types=int,
@@ -85,9 +92,10 @@ class VehicleGroup(om.Group):
 
     def setup(self):
         vehicle = self.options["vehicle"] or reference_vehicle()
-        other = self.options["other_mass"]
+        other, other_cg = self.options["other_mass"], self.options["other_cg"]
         if other is None:
-            other = calibrated_other_mass(vehicle)
+            other, calibrated_cg = calibrated_other_mass(vehicle)
+            other_cg = calibrated_cg if other_cg is None else other_cg
         wing, tail = vehicle.wing, vehicle.horizontal_tail
 
         self.add_subsystem("wing_sizing", SurfaceSizingComp(taper_ratio=wing.taper_ratio),
@@ -142,7 +150,8 @@ class VehicleGroup(om.Group):
             promotes_inputs=[("length", "motor_length")],
             promotes_outputs=[("mass", "motor_group_mass"),
                               ("peak_torque", "motor_peak_torque")])
-        self.add_subsystem("weights", WeightsGroup(vehicle=vehicle, other_mass=float(other)),
+        self.add_subsystem("weights", WeightsGroup(vehicle=vehicle, other_mass=float(other),
+                                                   other_cg=other_cg),
                            promotes=["*"])
         self.connect("motor_group_mass", "motor_mass", src_indices=groups)
 
@@ -156,11 +165,13 @@ class VehicleGroup(om.Group):
 @functools.lru_cache(maxsize=8)
 def calibrated_other_mass(vehicle):
     """
-    W_other such that the vehicle's initial design weighs ``masses.target_gross_mass``.
+    W_other and its cg such that the vehicle's initial design weighs
+    ``masses.target_gross_mass`` (and, with ``masses.other_cg_rule = 'hover_balance'``, has its
+    cg above the mean lift-hub x).
 
     The paper calibrates W_other at the initial design because the NASA reference does not
-    itemise every weight (reference page §4.1). Gross mass is affine in W_other, so one run of
-    the vehicle group with W_other = 0 gives it exactly.
+    itemise every weight (reference page §4.1). Gross mass and cg are affine in W_other and its
+    position, so one run of the vehicle group with W_other = 0 gives both exactly.
 
     Parameters
     ----------
@@ -168,8 +179,8 @@ def calibrated_other_mass(vehicle):
 
     Returns
     -------
-    float
-        W_other in kg.
+    tuple of (float, ndarray)
+        W_other in kg and its cg (3,) in m.
 
     Raises
     ------
@@ -177,13 +188,21 @@ def calibrated_other_mass(vehicle):
         When the other masses already exceed the target (W_other would be negative).
     """
     prob = om.Problem(reports=False)
-    prob.model.add_subsystem("vehicle", VehicleGroup(vehicle=vehicle, other_mass=0.0),
+    prob.model.add_subsystem("vehicle", VehicleGroup(vehicle=vehicle, other_mass=0.0,
+                                                     other_cg=(0.0, 0.0, 0.0)),
                              promotes=["*"])
     prob.setup()
     prob.run_model()
-    other = vehicle.masses.target_gross_mass - float(prob.get_val("gross_mass", units="kg")[0])
-    if other < 0.0:
-        raise ValueError(f"calibrated W_other = {other:.2f} kg < 0: the vehicle's other masses "
-                         f"exceed masses.target_gross_mass = {vehicle.masses.target_gross_mass}"
+    masses = vehicle.masses
+    bare_mass = float(prob.get_val("gross_mass", units="kg")[0])
+    other = masses.target_gross_mass - bare_mass
+    if other <= 0.0:
+        raise ValueError(f"calibrated W_other = {other:.2f} kg <= 0: the vehicle's other masses "
+                         f"exceed masses.target_gross_mass = {masses.target_gross_mass}"
                          " kg at the initial design.")
-    return other
+    cg = np.array(masses.other_cg, dtype=float)
+    if masses.other_cg_rule == "hover_balance":
+        target_x = np.mean([r.hub_position[0] for r in vehicle.lift_rotors])
+        bare_x = float(prob.get_val("cg", units="m")[0])
+        cg[0] = (masses.target_gross_mass * target_x - bare_mass * bare_x) / other
+    return other, tuple(float(v) for v in cg)

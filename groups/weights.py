@@ -204,6 +204,8 @@ class WeightsGroup(om.Group):
     other_mass : float or None
         Default of the ``other_mass`` input (>= 0), e.g. from :func:`calibrate_other_mass`;
         None = ``vehicle.masses.other`` (the uncalibrated initial guess).
+    other_cg : sequence of 3 float or None
+        Default of the ``other_cg`` input (m); None = ``vehicle.masses.other_cg``.
     """
 
     def initialize(self):
@@ -222,6 +224,9 @@ class WeightsGroup(om.Group):
         self.options.declare("other_mass", default=None, types=(int, float), allow_none=True,
                              check_valid=_check_nonnegative,
                              desc="default of the other_mass input, kg (>= 0); None = vehicle")
+        self.options.declare("other_cg", default=None, types=(tuple, list, np.ndarray),
+                             allow_none=True,
+                             desc="default of the other_cg input, m; None = vehicle")
 
     def setup(self):
         vehicle = _vehicle(self.options["vehicle"])
@@ -263,7 +268,8 @@ class WeightsGroup(om.Group):
             "systems_mass": (masses.systems, "kg"),
             "systems_cg": (masses.systems_cg, "m"),
             "other_mass": (masses.other if other is None else other, "kg"),
-            "other_cg": (masses.other_cg, "m"),
+            "other_cg": (masses.other_cg if self.options["other_cg"] is None
+                         else self.options["other_cg"], "m"),
         }
         if wing_model == "input":
             defaults["wing_mass"] = (placeholder["wing_mass"], "kg")

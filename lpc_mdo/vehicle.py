@@ -429,6 +429,10 @@ class FixedMasses:
         Centres of gravity, body frame (m).
     target_gross_mass : float
         Gross mass of the initial design that ``other`` is calibrated to (kg).
+    other_cg_rule : str
+        'fixed': ``other_cg`` as given. 'hover_balance': the x of ``other_cg`` is an initial
+        guess, calibrated (like ``other``) so that the initial design's cg lies above the mean
+        lift-hub x, i.e. the lift rotors trim hover with equal thrust.
     """
 
     payload: float = _param("kg", ge=0)
@@ -440,6 +444,7 @@ class FixedMasses:
     power_electronics: float = _param("kg", ge=0)
     power_electronics_cg: tuple[float, ...] = _param("m", shape=(3,))
     target_gross_mass: float = _param("kg", gt=0)
+    other_cg_rule: str = _param(choices=("fixed", "hover_balance"))
 
 
 @dataclass(frozen=True)

@@ -1,5 +1,7 @@
 """VehicleGroup: design variables to geometry, masses and mass properties."""
 
+import dataclasses
+
 import numpy as np
 import openmdao.api as om
 from openmdao.utils.assert_utils import (
@@ -10,7 +12,7 @@ from openmdao.utils.assert_utils import (
 
 from lpc_mdo.components.geometry.tail_position import TailPositionComp
 from lpc_mdo.components.weights.wing_mass import WingMirrorComp
-from lpc_mdo.groups.vehicle import VehicleGroup
+from lpc_mdo.groups.vehicle import VehicleGroup, calibrated_other_mass
 from lpc_mdo.vehicle import reference_vehicle
 
 VEHICLE = reference_vehicle()
@@ -35,6 +37,25 @@ def test_initial_design_is_calibrated_to_the_paper_gross_mass():
     assert_near_equal(masses[8], group[4], 1e-14)
     assert_near_equal(prob.get_val("wing_mass"), 2.0 * prob.get_val("half_wing_mass"), 1e-14)
     assert_near_equal(prob.get_val("wing_span"), VEHICLE.wing.span, 1e-12)
+
+
+def test_unitemised_mass_is_placed_for_hover_balance():
+    # masses.other_cg_rule = 'hover_balance': the initial cg lies above the mean lift-hub x, so
+    # that equal lift-rotor thrust trims hover (closed form: the mean of the 8 hub x values).
+    prob = vehicle_problem()
+    hub_x = np.mean([r.hub_position[0] for r in VEHICLE.lift_rotors])
+    assert_near_equal(prob.get_val("cg", units="m")[0], hub_x, 1e-10)
+    # 'fixed' keeps the file's other_cg: the cg is then 0.59 m ahead of the rotor centroid.
+    fixed = dataclasses.replace(VEHICLE, masses=dataclasses.replace(
+        VEHICLE.masses, other_cg_rule="fixed"))
+    other, cg = calibrated_other_mass(fixed)
+    assert cg == VEHICLE.masses.other_cg
+    assert_near_equal(other, calibrated_other_mass(VEHICLE)[0], 1e-12)
+    fixed_prob = om.Problem(reports=False)
+    fixed_prob.model.add_subsystem("vehicle", VehicleGroup(vehicle=fixed), promotes=["*"])
+    fixed_prob.setup()
+    fixed_prob.run_model()
+    assert 0.5 < fixed_prob.get_val("cg", units="m")[0] - hub_x < 0.7
 
 
 def test_totals_of_gross_mass_and_geometry():
