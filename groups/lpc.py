@@ -117,8 +117,13 @@ class LPCGroup(om.Group):
             "ks_rho", default=50.0, types=float, desc="KS parameter of the torque-margin aggregates"
         )
         self.options.declare("lateral_trim", default=True, types=bool,
-                             desc="constrain v_dot, p_dot, r_dot in hover and transition, which "
-                                  "symmetry already zeroes (paper Table 6 counts them)")
+                             desc="constrain v_dot, p_dot, r_dot in hover and transition (paper "
+                                  "Table 6 counts them): symmetry zeroes v_dot and r_dot, and "
+                                  "no trim variable acts on p_dot (the pusher's torque "
+                                  "reaction in transition; the model has no ailerons)")
+        self.options.declare("objective", default=("gross_mass", None), types=tuple,
+                             desc="(output, ref) of the objective; ref None = the vehicle's "
+                                  "target gross mass (paper: gross mass)")
         self.options.declare("conditions", default=None, types=(list, tuple), allow_none=True,
                              desc="names of the design conditions to include (None: all)")
         self.options.declare("design_variables", default=None, types=(list, tuple, dict),
@@ -327,11 +332,14 @@ class LPCGroup(om.Group):
                 ref = ref if np.ndim(ref) == 0 else np.asarray(ref).ravel()[indices]
             self.add_design_var(name, lower=lower, upper=upper, ref=ref, units=_units(dv.units),
                                 indices=indices, flat_indices=indices is not None)
-        self.add_objective("gross_mass", ref=vehicle.masses.target_gross_mass, units="kg")
+        objective, objective_ref = self.options["objective"]
+        self.add_objective(objective, ref=(vehicle.masses.target_gross_mass
+                                           if objective_ref is None else objective_ref))
         wanted = set(self.options["constraint_kinds"])
-        # Lateral trim (v_dot, p_dot, r_dot) of the symmetric conditions is zero by symmetry:
-        # paired rotors share speed and spin in opposite senses. Those rows of the constraint
-        # Jacobian are identically zero, which violates the constraint qualification.
+        # Lateral trim (v_dot, p_dot, r_dot) of the symmetric conditions: paired rotors share
+        # speed and spin in opposite senses, so v_dot and r_dot vanish identically (zero
+        # Jacobian rows violate the constraint qualification), and p_dot in transition is the
+        # pusher's torque reaction, which no trim variable balances (no ailerons modelled).
         symmetric_only = not self.options["lateral_trim"]
 
         g = 9.81
@@ -460,6 +468,30 @@ class LPCGroup(om.Group):
             promotes_outputs=[("KS", "pusher_motor_torque_margin")],
         )
         self.connect("pusher_margin_gather.torque_margin", "pusher_margin.g")
+
+
+def condition_trim_variables(vehicle, name):
+    """
+    The design-variable entries that trim condition ``name`` (paper Table 6): list of
+    (design-variable name, flat indices). Hover: the 4 lift-pair speeds; OEI: the 7 working lift
+    rotor speeds; transition: 4 lift-pair speeds, pusher speed, elevator; climb, cruise,
+    descent: pusher speed, pitch, elevator; +3g/-1g: pitch.
+    """
+    kind = vehicle.condition(name).kind
+    if kind == "hover":
+        return [("hover_lift_rpm", np.arange(4))]
+    if kind == "oei":
+        k = int(name.split("_")[1]) - 1
+        n = vehicle.design_variables["oei_lift_rpm"].shape[1]
+        return [("oei_lift_rpm", k * n + np.arange(n))]
+    if kind == "transition":
+        k = int(name.split("_")[1]) - 1
+        return [("transition_lift_rpm", 4 * k + np.arange(4)),
+                ("transition_pusher_rpm", np.array([k])),
+                ("transition_elevator", np.array([k]))]
+    if kind == "steady":
+        return [(f"{name}_{v}", np.array([0])) for v in ("pusher_rpm", "pitch", "elevator")]
+    return [(f"{name}_pitch", np.array([0]))]
 
 
 def _design_variable_used(name, present, kinds):

@@ -16,10 +16,11 @@ from dataclasses import dataclass, field
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.problems import SUBPROBLEMS, build_problem
+from lpc_mdo.problems import PRESIZING, SUBPROBLEMS, build_problem
+from lpc_mdo.trim import trim
 from lpc_mdo.vehicle import load_vehicle
 
-DEFAULT_SEQUENCE = (*SUBPROBLEMS, "full")
+DEFAULT_SEQUENCE = (*PRESIZING, *SUBPROBLEMS, "full")
 
 
 @dataclass
@@ -34,6 +35,8 @@ class StageResult:
     gross_mass: float
     exit_status: str
     analysis_errors: int = 0
+    trim_seconds: float = 0.0
+    trim_message: str = ""
     extra: dict = field(default_factory=dict)
 
 
@@ -75,7 +78,7 @@ def load_design_variables(prob, case, vehicle):
 
 def run_sequence(out_dir, names=DEFAULT_SEQUENCE, vehicle=None, static_margin=True,
                  optimizer="IPOPT", full_optimizer=None, driver_settings=None, start_case=None,
-                 rescale_full=True, log=print):
+                 rescale_full=True, trim_first=True, log=print):
     """
     Solve the stages in order, each warm-started from the previous stage's final case.
 
@@ -97,6 +100,11 @@ def run_sequence(out_dir, names=DEFAULT_SEQUENCE, vehicle=None, static_margin=Tr
         Case file whose final case initializes the first stage.
     rescale_full : bool
         Rescale the full problem's design variables by their optimized magnitudes.
+    trim_first : bool
+        Before each stage's optimizer, trim the stage's conditions by their trim variables
+        (:func:`lpc_mdo.trim.trim`; recorded as the problem case ``'trimmed'``). The previous
+        stage changed the vehicle under them (the initial design is far from trim), and IPOPT
+        with a quasi-Newton Hessian started far from trim stalls at locally infeasible points.
     log : callable
         Progress messages.
 
@@ -126,6 +134,14 @@ def run_sequence(out_dir, names=DEFAULT_SEQUENCE, vehicle=None, static_margin=Tr
                              driver_settings=driver_settings)
         if case is not None:
             load_design_variables(prob, case, vehicle)
+        trim_seconds, trim_message = 0.0, ""
+        if trim_first:
+            start = time.perf_counter()
+            trimmed = trim(prob)
+            trim_seconds = time.perf_counter() - start
+            trim_message = trimmed.message
+            prob.record("trimmed")
+            log(f"{name}: trim {trim_seconds:.1f} s: {trimmed.message}")
         start = time.perf_counter()
         result = prob.run_driver()
         seconds = time.perf_counter() - start
@@ -134,7 +150,8 @@ def run_sequence(out_dir, names=DEFAULT_SEQUENCE, vehicle=None, static_margin=Tr
                             iterations=int(result.iter_count), seconds=seconds,
                             gross_mass=float(prob.get_val("gross_mass", units="kg")[0]),
                             exit_status=str(result.exit_status),
-                            analysis_errors=len(getattr(prob.driver, "analysis_errors", [])))
+                            analysis_errors=len(getattr(prob.driver, "analysis_errors", [])),
+                            trim_seconds=trim_seconds, trim_message=trim_message)
         prob.cleanup()
         results.append(stage)
         log(f"{name}: success={stage.success} iterations={stage.iterations} "

@@ -1,0 +1,47 @@
+"""Trim of design conditions by their trim variables (lpc_mdo.trim)."""
+
+import numpy as np
+import pytest
+
+from lpc_mdo.problems import build_analysis_problem
+from lpc_mdo.trim import trim
+
+
+def test_hover_trims_to_weight_with_equal_rotor_speeds():
+    prob = build_analysis_problem(None, conditions=["hover"], lateral_trim=False,
+                                  constraint_kinds=["trim"])
+    result = trim(prob)
+    assert result.success, result.message
+    # Closed form: in hover at zero pitch the lift rotors carry the weight, sum T = m g (the
+    # force row is scaled by g, so success means 1e-6 of the weight).
+    weight = prob.get_val("gross_mass", units="kg")[0] * 9.81
+    thrust = prob.get_val("hover.lift_thrust", units="N").sum()
+    assert thrust == pytest.approx(weight, rel=1e-5)
+    # The reference vehicle's unitemised mass is placed for hover balance (vehicle file), so
+    # the four pairs trim at one speed.
+    rpm = prob.get_val("hover_lift_rpm", units="rpm")
+    np.testing.assert_allclose(rpm, rpm[0], rtol=1e-4)
+    assert abs(result.residuals["hover.linear_acceleration"][0]) < 1e-5
+
+
+def test_transition_point_trims_to_the_prescribed_acceleration():
+    # transition_3 starts 6.6 m/s^2 off in w_dot (initial design), 4 lift speeds, pusher
+    # speed and elevator against u_dot, w_dot, q_dot.
+    prob = build_analysis_problem(None, conditions=["transition_3"], lateral_trim=False,
+                                  constraint_kinds=["trim"])
+    condition = prob.vehicle.condition("transition_3")
+    prob.run_model()
+    before = prob.get_val("transition_3.linear_acceleration").copy()
+    result = trim(prob)
+    assert result.success, result.message
+    acc = prob.get_val("transition_3.linear_acceleration", units="m/s**2").ravel()
+    a, theta = condition.acceleration, condition.pitch
+    np.testing.assert_allclose(acc[[0, 2]], [a * np.cos(theta), a * np.sin(theta)], atol=1e-5)
+    assert abs(prob.get_val("transition_3.angular_acceleration")[0, 1]) < 1e-6
+    assert np.abs(before).max() > 1.0   # it did have to move
+
+
+def test_missing_trim_constraints_are_an_error():
+    prob = build_analysis_problem(None, conditions=["hover"], constraint_kinds=["noise"])
+    with pytest.raises(ValueError, match=r"no trim constraints declared for conditions \['hover'\]"):
+        trim(prob)
