@@ -43,5 +43,5 @@ def test_transition_point_trims_to_the_prescribed_acceleration():
 
 def test_missing_trim_constraints_are_an_error():
     prob = build_analysis_problem(None, conditions=["hover"], constraint_kinds=["noise"])
-    with pytest.raises(ValueError, match=r"no trim constraints declared for conditions \['hover'\]"):
+    with pytest.raises(ValueError, match=r"no trim constraints .* conditions \['hover'\]"):
         trim(prob)
