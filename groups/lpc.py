@@ -21,6 +21,8 @@ from lpc_mdo.vehicle import reference_vehicle
 PUSHER = 4  # row of the pusher in the per-rotor-group design variables
 CONSTRAINT_KINDS = ("trim", "noise", "tip_mach", "static_margin", "buckling", "soc",
                     "radius_intersection", "torque_margin")
+# Finer kinds a subproblem may name instead of 'torque_margin' (which means both).
+TORQUE_MARGIN_KINDS = ("lift_torque_margin", "pusher_torque_margin")
 # Torque margin reported for a lift motor that no included condition loads (a model built with
 # a single OEI case); large, so it never binds.
 UNUSED_MOTOR_MARGIN = 10.0
@@ -133,7 +135,8 @@ class LPCGroup(om.Group):
         self.options.declare("design_variable_refs", default=None, types=dict, allow_none=True,
                              desc="name -> ref overriding the vehicle file's scaling")
         self.options.declare("constraint_kinds", default=CONSTRAINT_KINDS, types=(list, tuple),
-                             desc=f"constraint kinds to declare, from {CONSTRAINT_KINDS}")
+                             desc=f"constraint kinds to declare, from {CONSTRAINT_KINDS} "
+                                  f"(or {TORQUE_MARGIN_KINDS} for one motor kind)")
         self.options.declare("structural_coupling", default="one_way",
                              values=("one_way", "two_way"),
                              desc="aerostructural coupling of the +3g/-1g cases")
@@ -336,6 +339,10 @@ class LPCGroup(om.Group):
         self.add_objective(objective, ref=(vehicle.masses.target_gross_mass
                                            if objective_ref is None else objective_ref))
         wanted = set(self.options["constraint_kinds"])
+        unknown = sorted(wanted - set(CONSTRAINT_KINDS) - set(TORQUE_MARGIN_KINDS))
+        if unknown:
+            raise ValueError(f"{self.msginfo}: option 'constraint_kinds' has unknown kinds "
+                             f"{unknown}; allowed: {CONSTRAINT_KINDS + TORQUE_MARGIN_KINDS}")
         # Lateral trim (v_dot, p_dot, r_dot) of the symmetric conditions: paired rotors share
         # speed and spin in opposite senses, so v_dot and r_dot vanish identically (zero
         # Jacobian rows violate the constraint qualification), and p_dot in transition is the
@@ -377,12 +384,11 @@ class LPCGroup(om.Group):
         if "radius_intersection" in wanted:
             self.add_constraint("radius_intersection", equals=limits.radius_intersection,
                                 ref=0.1)
-        if "torque_margin" not in wanted:
-            return
-        if kinds & {"hover", "oei", "transition"}:
+        both = "torque_margin" in wanted
+        if kinds & {"hover", "oei", "transition"} and (both or "lift_torque_margin" in wanted):
             self.add_constraint("lift_motor_torque_margin", lower=limits.min_torque_margin,
                                 ref=0.1)
-        if kinds & {"transition", "steady"}:
+        if kinds & {"transition", "steady"} and (both or "pusher_torque_margin" in wanted):
             self.add_constraint("pusher_motor_torque_margin", lower=limits.min_torque_margin,
                                 ref=0.1)
 

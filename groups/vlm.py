@@ -9,7 +9,7 @@ from lpc_mdo.components.aero.vlm_forces import VLMPanelForcesComp
 from lpc_mdo.components.aero.vlm_freestream import VLMFreestreamComp
 from lpc_mdo.components.aero.vlm_geometry import VLMGeometryComp
 from lpc_mdo.components.aero.vlm_induced_velocity import VLMInducedVelocityComp
-from lpc_mdo.components.aero.vlm_lattice import Lattice, VLMSurface, check_surfaces
+from lpc_mdo.components.aero.vlm_lattice import Lattice, VLMSurface, check_surfaces_option
 from lpc_mdo.components.aero.vlm_loads import VLMLoadsComp
 from lpc_mdo.components.aero.vlm_normals import VLMNormalsComp
 from lpc_mdo.components.aero.vlm_profile_drag import VLMProfileDragComp
@@ -88,8 +88,7 @@ class VLMGroup(om.Group):
     """
 
     def initialize(self):
-        self.options.declare("surfaces", types=(tuple, list),
-                             check_valid=lambda name, value: check_surfaces(value),
+        self.options.declare("surfaces", types=(tuple, list), check_valid=check_surfaces_option,
                              desc="tuple of VLMSurface, in lattice order")
         self.options.declare("num_nodes", default=1, types=int, lower=1,
                              desc="number of flight conditions")

@@ -72,7 +72,11 @@ def _trim_variables(prob, vehicle, conditions):
     return merged
 
 
-def trim(prob, conditions=None, tol=1e-10, max_iter=30):
+# LPCGroup options a single-condition trim problem inherits from the problem it trims.
+_INHERITED_OPTIONS = ("rotor_polar", "wing_zero_lift_angle", "ks_rho", "structural_coupling")
+
+
+def trim(prob, conditions=None, tol=1e-10, max_iter=30, separate=True):
     """
     Trim conditions of a set-up LPC problem by their trim variables (module docstring).
 
@@ -80,42 +84,58 @@ def trim(prob, conditions=None, tol=1e-10, max_iter=30):
     ----------
     prob : om.Problem
         A problem whose model is an :class:`~lpc_mdo.groups.lpc.LPCGroup` that declares the trim
-        constraints and trim design variables (an analysis problem built with
-        ``lateral_trim=False``: the pusher's torque reaction in roll has no trim variable).
+        design variables of the conditions (and, with ``separate=False``, their trim
+        constraints: build it with ``lateral_trim=False``, since the pusher's torque reaction
+        in roll has no trim variable).
     conditions : sequence of str or None
         Conditions to trim; None = every condition of the model.
     tol : float
         Tolerance on the scaled residual, step and gradient (scipy ``ftol``/``xtol``/``gtol``).
     max_iter : int
         Limit on residual evaluations per condition.
+    separate : bool
+        Solve each condition in its own single-condition problem (the same vehicle design,
+        copied over), whose model runs cost a fraction of the whole model's; the trim
+        variables found are copied back. False: solve in ``prob`` itself.
 
     Returns
     -------
     TrimResult
         ``residuals`` maps each trim constraint to its unscaled residual (value - target);
         ``success`` means the largest driver-scaled residual is below 1e-6 (for the force rows,
-        scaled by g, that is 1e-6 of the weight). The problem is left at the solution (run).
+        scaled by g, that is 1e-6 of the weight). ``prob`` is left at the solution, run.
 
     Raises
     ------
     ValueError
-        When the problem lacks a trim constraint or variable of a condition.
+        When a problem lacks a trim constraint or variable of a condition.
     om.AnalysisError
         When the model fails during the solve.
     """
+    from lpc_mdo.problems import build_analysis_problem
+
     vehicle = prob.vehicle if hasattr(prob, "vehicle") else prob.model.options["vehicle"]
     conditions = list(prob.model.condition_names if conditions is None else conditions)
     prob.run_model()
-    all_cons = _trim_constraints(prob, conditions)
-    missing = [c for c in conditions if not any(n.startswith(f"{c}.") for n in all_cons)]
-    if missing:
-        raise ValueError(f"trim: no trim constraints declared for conditions {missing}.")
-    dv_meta = prob.model.get_design_vars()
     residuals, iterations, messages, worst = {}, 0, [], 0.0
     for cond in conditions:
-        cons = {n: m for n, m in all_cons.items() if n.startswith(f"{cond}.")}
-        variables = _trim_variables(prob, vehicle, [cond])
-        sol, scaled = _solve_block(prob, dv_meta, cons, variables, tol, max_iter)
+        target = prob
+        if separate:
+            options = {k: prob.model.options[k] for k in _INHERITED_OPTIONS}
+            target = build_analysis_problem(vehicle, name=f"trim_{cond}", conditions=[cond],
+                                            lateral_trim=False, constraint_kinds=["trim"],
+                                            static_margin=False, **options)
+            _copy_design_variables(prob, target, vehicle)
+            target.run_model()
+        cons = {n: m for n, m in _trim_constraints(target, [cond]).items()}
+        if not cons:
+            raise ValueError(f"trim: no trim constraints declared for conditions ['{cond}'].")
+        variables = _trim_variables(target, vehicle, [cond])
+        sol, scaled = _solve_block(target, target.model.get_design_vars(), cons, variables,
+                                   tol, max_iter)
+        if separate:
+            _copy_design_variables(target, prob, vehicle,
+                                   names=[n for n, _ in condition_trim_variables(vehicle, cond)])
         iterations += int(sol.njev or 0)
         start = 0
         for name, meta in cons.items():   # scaled residual = (value - target) * scaler
@@ -126,9 +146,26 @@ def trim(prob, conditions=None, tol=1e-10, max_iter=30):
         worst = max(worst, block_max)
         if block_max >= 1e-6:
             messages.append(f"{cond}: max scaled residual {block_max:.3g} ({sol.message})")
+    if separate:
+        prob.run_model()
     return TrimResult(success=worst < 1e-6, iterations=iterations, max_residual=worst,
                       residuals=residuals,
                       message="; ".join(messages) or "all conditions trimmed")
+
+
+def _copy_design_variables(source, target, vehicle, names=None):
+    """Set the vehicle's design-variable arrays of ``target`` from ``source`` (both set up)."""
+    for name in names or vehicle.design_variables:
+        units = vehicle.design_variables[name].units
+        units = None if units == "unitless" else units
+        try:
+            value = source.get_val(name, units=units)
+        except KeyError:
+            continue
+        try:
+            target.set_val(name, value, units=units)
+        except KeyError:
+            continue
 
 
 def _solve_block(prob, dv_meta, cons, variables, tol, max_iter):

@@ -22,6 +22,13 @@ from lpc_mdo.vehicle import load_vehicle
 
 DEFAULT_SEQUENCE = (*PRESIZING, *SUBPROBLEMS, "full")
 
+# IPOPT's "acceptable" termination for the stages: stop once the scaled NLP error has stayed
+# below 1e-4 (constraints within 1e-6) for 10 iterations. Without it, degenerate stages crawl
+# on: subproblem 4 reaches its optimum by iteration ~30 and then runs to the iteration limit
+# with the h-tail aspect ratio drifting along a flat valley (measured).
+STAGE_IPOPT_SETTINGS = {"acceptable_tol": 1e-4, "acceptable_iter": 10,
+                        "acceptable_constr_viol_tol": 1e-6}
+
 
 @dataclass
 class StageResult:
@@ -128,10 +135,12 @@ def run_sequence(out_dir, names=DEFAULT_SEQUENCE, vehicle=None, static_margin=Tr
         refs = magnitude_refs(case, vehicle) if (name == "full" and rescale_full
                                                  and case is not None) else None
         path = os.path.join(out_dir, f"{name}.sql")
+        stage_optimizer = full_optimizer if name == "full" else optimizer
+        settings = dict(STAGE_IPOPT_SETTINGS) if stage_optimizer.upper() == "IPOPT" else {}
+        settings.update(driver_settings or {})
         prob = build_problem(name, vehicle=vehicle, static_margin=static_margin,
-                             optimizer=full_optimizer if name == "full" else optimizer,
-                             recorder_path=path, design_variable_refs=refs,
-                             driver_settings=driver_settings)
+                             optimizer=stage_optimizer, recorder_path=path,
+                             design_variable_refs=refs, driver_settings=settings)
         if case is not None:
             load_design_variables(prob, case, vehicle)
         trim_seconds, trim_message = 0.0, ""

@@ -10,7 +10,7 @@ from lpc_mdo.trim import trim
 def test_hover_trims_to_weight_with_equal_rotor_speeds():
     prob = build_analysis_problem(None, conditions=["hover"], lateral_trim=False,
                                   constraint_kinds=["trim"])
-    result = trim(prob)
+    result = trim(prob, separate=False)
     assert result.success, result.message
     # Closed form: in hover at zero pitch the lift rotors carry the weight, sum T = m g (the
     # force row is scaled by g, so success means 1e-6 of the weight).
@@ -44,4 +44,4 @@ def test_transition_point_trims_to_the_prescribed_acceleration():
 def test_missing_trim_constraints_are_an_error():
     prob = build_analysis_problem(None, conditions=["hover"], constraint_kinds=["noise"])
     with pytest.raises(ValueError, match=r"no trim constraints .* conditions \['hover'\]"):
-        trim(prob)
+        trim(prob, separate=False)

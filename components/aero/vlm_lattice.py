@@ -213,10 +213,14 @@ def sparse_pattern(matrix):
     return coo.row, coo.col, coo.data
 
 
+def check_surfaces_option(name, value):
+    """check_valid of a ``surfaces`` option (a module function, so recorders can pickle it)."""
+    check_surfaces(value)
+
+
 def declare_lattice_options(component, num_nodes=True):
     """Declare the options every VLM component shares: ``surfaces`` and ``num_nodes``."""
-    component.options.declare("surfaces", types=(tuple, list),
-                              check_valid=lambda name, value: check_surfaces(value),
+    component.options.declare("surfaces", types=(tuple, list), check_valid=check_surfaces_option,
                               desc="tuple of VLMSurface, in lattice order")
     if num_nodes:
         component.options.declare("num_nodes", default=1, types=int, lower=1,
