@@ -5,6 +5,7 @@ import openmdao.api as om
 from scipy.optimize import brentq
 
 from lpc_mdo.components.atmosphere import standard_atmosphere
+from lpc_mdo.components.design_deviation import DesignDeviationComp
 from lpc_mdo.components.energy.battery import BatteryComp
 from lpc_mdo.components.energy.mission_energy import MissionEnergyComp
 from lpc_mdo.components.gather import GatherComp
@@ -21,6 +22,14 @@ from lpc_mdo.vehicle import reference_vehicle
 PUSHER = 4  # row of the pusher in the per-rotor-group design variables
 CONSTRAINT_KINDS = ("trim", "noise", "tip_mach", "static_margin", "buckling", "soc",
                     "radius_intersection", "torque_margin")
+# Paper eq. 8-9: the set S of design variables the initial specification gives (beta = 1) -
+# every sizing variable; the operating variables (rotor speeds, pitch, elevator) are free - and
+# the penalty weight alpha.
+BASELINE_SET = ("wing_area", "wing_aspect_ratio", "htail_area", "htail_aspect_ratio",
+                "fuselage_length", "rotor_radius", "blade_chord_cp", "blade_twist_cp",
+                "battery_mass", "motor_length", "front_spar_thickness", "rear_spar_thickness",
+                "top_skin_thickness", "bottom_skin_thickness")
+BASELINE_ALPHA = 100.0
 # Finer kinds a subproblem may name instead of 'torque_margin' (which means both).
 TORQUE_MARGIN_KINDS = ("lift_torque_margin", "pusher_torque_margin")
 # Torque margin reported for a lift motor that no included condition loads (a model built with
@@ -125,7 +134,8 @@ class LPCGroup(om.Group):
                                   "reaction in transition; the model has no ailerons)")
         self.options.declare("objective", default=("gross_mass", None), types=tuple,
                              desc="(output, ref) of the objective; ref None = the vehicle's "
-                                  "target gross mass (paper: gross mass)")
+                                  "target gross mass (paper: gross mass); ('baseline', None) = "
+                                  "the baseline design's penalised gross mass (eq. 8-9)")
         self.options.declare("conditions", default=None, types=(list, tuple), allow_none=True,
                              desc="names of the design conditions to include (None: all)")
         self.options.declare("design_variables", default=None, types=(list, tuple, dict),
@@ -336,8 +346,12 @@ class LPCGroup(om.Group):
             self.add_design_var(name, lower=lower, upper=upper, ref=ref, units=_units(dv.units),
                                 indices=indices, flat_indices=indices is not None)
         objective, objective_ref = self.options["objective"]
-        self.add_objective(objective, ref=(vehicle.masses.target_gross_mass
-                                           if objective_ref is None else objective_ref))
+        if objective == "baseline":
+            self._add_baseline_objective(vehicle)
+            self.add_objective("baseline_objective", ref=1.0)
+        else:
+            self.add_objective(objective, ref=(vehicle.masses.target_gross_mass
+                                               if objective_ref is None else objective_ref))
         wanted = set(self.options["constraint_kinds"])
         unknown = sorted(wanted - set(CONSTRAINT_KINDS) - set(TORQUE_MARGIN_KINDS))
         if unknown:
@@ -391,6 +405,17 @@ class LPCGroup(om.Group):
         if kinds & {"transition", "steady"} and (both or "pusher_torque_margin" in wanted):
             self.add_constraint("pusher_motor_torque_margin", lower=limits.min_torque_margin,
                                 ref=0.1)
+
+    def _add_baseline_objective(self, vehicle):
+        """Paper eq. 8-9: gross mass plus 100 x the squared relative deviation over the set S."""
+        references = {name: (np.asarray(vehicle.design_variables[name].initial_array).reshape(
+            vehicle.design_variables[name].shape), _units(vehicle.design_variables[name].units))
+            for name in BASELINE_SET}
+        self.add_subsystem("baseline", DesignDeviationComp(
+            references=references, alpha=BASELINE_ALPHA,
+            objective_ref=vehicle.masses.target_gross_mass),
+            promotes_inputs=[*BASELINE_SET, ("objective", "gross_mass")],
+            promotes_outputs=["baseline_objective", ("deviation", "baseline_deviation")])
 
     def _trim(self, name, linear, angular, linear_target, ref):
         """Trim constraints: chosen body-axis accelerations of a condition equal targets."""

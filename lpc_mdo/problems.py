@@ -104,7 +104,8 @@ PRESIZING = {
         "objective": ("hover.electrical_power", 5.0e5),
     },
 }
-PROBLEM_NAMES = (*PRESIZING, *SUBPROBLEMS, "full")
+# Paper Sec. II.F: the baseline design is the full problem with the objective of eq. 8.
+PROBLEM_NAMES = (*PRESIZING, *SUBPROBLEMS, "full", "baseline")
 
 
 def build_problem(name, vehicle=None, static_margin=True, optimizer="IPOPT",
@@ -116,7 +117,8 @@ def build_problem(name, vehicle=None, static_margin=True, optimizer="IPOPT",
     Parameters
     ----------
     name : str
-        'rotor_presizing', 'subproblem_1' .. 'subproblem_4' or 'full'.
+        'rotor_presizing', 'subproblem_1' .. 'subproblem_4', 'full', or 'baseline' (the full
+        problem with the objective of eq. 8: the feasible design closest to the initial one).
     vehicle : Vehicle, path or None
     static_margin : bool
         Include the cruise static-margin constraint (subproblem 4 and the full problem).
@@ -151,6 +153,8 @@ def build_problem(name, vehicle=None, static_margin=True, optimizer="IPOPT",
     if vehicle is None or isinstance(vehicle, (str, os.PathLike)):
         vehicle = load_vehicle(vehicle)
     spec = SUBPROBLEMS.get(name) or PRESIZING.get(name) or {}
+    if name == "baseline":
+        spec = {"objective": ("baseline", None)}
     if "objective" in spec:
         model_options.setdefault("objective", spec["objective"])
     model = LPCGroup(vehicle=vehicle, static_margin=static_margin,

@@ -132,10 +132,10 @@ def run_sequence(out_dir, names=DEFAULT_SEQUENCE, vehicle=None, static_margin=Tr
         case = None
         if previous is not None:
             case = om.CaseReader(previous).get_case("final")
-        refs = magnitude_refs(case, vehicle) if (name == "full" and rescale_full
+        refs = magnitude_refs(case, vehicle) if (name in ("full", "baseline") and rescale_full
                                                  and case is not None) else None
         path = os.path.join(out_dir, f"{name}.sql")
-        stage_optimizer = full_optimizer if name == "full" else optimizer
+        stage_optimizer = full_optimizer if name in ("full", "baseline") else optimizer
         settings = dict(STAGE_IPOPT_SETTINGS) if stage_optimizer.upper() == "IPOPT" else {}
         settings.update(driver_settings or {})
         prob = build_problem(name, vehicle=vehicle, static_margin=static_margin,

@@ -16,13 +16,16 @@ def sizes(prob):
 @pytest.mark.parametrize(("name", "expected"), [
     # Design variables and constraints of each subproblem (paper Table 2 with Table 6 counts).
     # Subproblem 1 adds the 45 blade variables (radius, chord, twist) Table 2 leaves implicit.
-    # Constraints without the lateral trim that symmetry zeroes (hover p_dot; transition
-    # v_dot, p_dot, r_dot): the default of build_problem.
-    ("subproblem_1", (4 + 20 + 5 + 3 + 3 + 8 + 1 + 1 + 45, 1 + 2 + 9 + 15 + 1 + 9)),
+    # Constraints without the lateral trim (hover p_dot; transition v_dot, p_dot, r_dot): the
+    # default of build_problem. Subproblem 1 constrains the pusher motor margin only (it sizes
+    # the pusher motor; the lift motors are subproblem 2's).
+    ("rotor_presizing", (4 + 4 + 16 + 16, 1 + 2 + 4)),
+    ("subproblem_1", (4 + 20 + 5 + 3 + 3 + 8 + 1 + 1 + 45, 1 + 2 + 9 + 15 + 1 + 1)),
     ("subproblem_2", (28 + 4, 20 + 8)),
     ("subproblem_3", (32 + 2, 2 + 14)),
     ("subproblem_4", (5 + 3, 3 + 1)),
     ("full", (161, 96 - 16)),
+    ("baseline", (161, 96 - 16)),
 ])
 def test_problem_sizes(name, expected):
     assert sizes(build_problem(name, optimizer="SLSQP")) == expected
@@ -57,4 +60,13 @@ def test_subproblem_2_trims_every_oei_case():
 def test_unknown_problem_name():
     with pytest.raises(ValueError, match="allowed: "):
         build_problem("subproblem_9")
-    assert PROBLEM_NAMES[-1] == "full"
+    assert PROBLEM_NAMES[-2:] == ("full", "baseline")
+
+
+def test_baseline_objective_is_one_at_the_initial_design():
+    # Paper eq. 8 at x = x0: the penalty vanishes and gross mass / initial gross mass = 1.
+    prob = build_problem("baseline", optimizer="SLSQP")
+    prob.run_model()
+    assert list(prob.model.get_objectives()) == ["baseline_objective"]
+    assert prob.get_val("baseline_deviation")[0] == pytest.approx(0.0, abs=1e-14)
+    assert prob.get_val("baseline_objective")[0] == pytest.approx(1.0, rel=1e-10)
