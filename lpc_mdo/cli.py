@@ -62,46 +62,33 @@ def _analyze(args):
 
 
 def _optimize(args):
-    from lpc_mdo.post.statistics import process_peak_memory_mb, write_run_stats
-    from lpc_mdo.problems import build_problem
-    from lpc_mdo.warm_start import run_sequence
+    from lpc_mdo.warm_start import FULL_PROBLEMS, run_sequence, solve_stage
 
     out = Path(args.output_dir)
     out.mkdir(parents=True, exist_ok=True)
     settings = {"max_iter": args.max_iter}
-    if args.problem == "sequence":
-        results = run_sequence(str(out), vehicle=args.vehicle,
-                               static_margin=not args.no_static_margin,
-                               optimizer=args.optimizer, driver_settings=settings)
-        return 0 if all(r.success for r in results) else 1
-
-    case_file = out / f"{args.problem}.sql"
-    prob = build_problem(args.problem, vehicle=args.vehicle,
-                         static_margin=not args.no_static_margin, optimizer=args.optimizer,
-                         recorder_path=case_file, driver_settings=settings)
-    if args.start_case:
-        import openmdao.api as om
-
-        from lpc_mdo.warm_start import load_design_variables
-
-        load_design_variables(prob, om.CaseReader(args.start_case).get_case("final"),
-                               prob.vehicle)
-    # IPOPT prints its iteration table (iteration, objective, infeasibility) as it goes; a
-    # Ctrl-C stops it cleanly and the case file keeps every recorded iteration.
+    if args.quiet and args.optimizer == "IPOPT":
+        settings["print_level"] = 0
+    common = dict(vehicle=args.vehicle, static_margin=not args.no_static_margin,
+                  driver_settings=settings, trim_first=not args.no_trim, progress=True)
+    # Each stage prints a progress line per iteration (and IPOPT its own table unless
+    # --quiet); Ctrl-C stops cleanly: the case file keeps every recorded iteration and a
+    # 'final' case of the interrupted point.
     try:
-        result = prob.run_driver()
+        if args.problem == "sequence":
+            results = run_sequence(str(out), optimizer=args.optimizer,
+                                   start_case=args.start_case, **common)
+            return 0 if all(r.success for r in results) else 1
+        case_file = out / f"{args.problem}.sql"
+        stage = solve_stage(args.problem, str(case_file), start_case=args.start_case,
+                            optimizer=args.optimizer,
+                            rescale=args.problem in FULL_PROBLEMS and args.start_case is not None,
+                            **common)
     except KeyboardInterrupt:
-        print("lpc-mdo: interrupted; the case file holds the iterations so far", file=sys.stderr)
-        prob.record("final")
-        prob.cleanup()
+        print("lpc-mdo: interrupted; the case files hold the iterations so far", file=sys.stderr)
         return 130
-    prob.record("final")
-    prob.cleanup()
-    write_run_stats(result, out, peak_memory_mb=process_peak_memory_mb())
-    print(f"{args.problem}: success={result.success}, {result.iter_count} iterations, "
-          f"{result.runtime:.1f} s, gross mass {prob.get_val('gross_mass', units='kg')[0]:.2f} kg"
-          f"\ncase file: {case_file}")
-    return 0 if result.success else 1
+    print(f"case file: {case_file}")
+    return 0 if stage.success else 1
 
 
 def _report(args):
@@ -143,6 +130,10 @@ def main(argv=None):
                           help="case file whose final case gives the starting design")
     optimize.add_argument("--output-dir", default="optimize_out",
                           help="folder for case files and run statistics")
+    optimize.add_argument("--no-trim", action="store_true",
+                          help="do not trim the conditions before optimizing")
+    optimize.add_argument("--quiet", action="store_true",
+                          help="only the progress lines, not IPOPT's iteration table")
     optimize.set_defaults(func=_optimize)
 
     report = sub.add_parser("report", help="tables and figures from case files")

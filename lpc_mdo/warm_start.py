@@ -16,18 +16,15 @@ from dataclasses import dataclass, field
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.post.statistics import process_peak_memory_mb, run_stats_path, write_run_stats
 from lpc_mdo.problems import PRESIZING, SUBPROBLEMS, build_problem
 from lpc_mdo.trim import trim
 from lpc_mdo.vehicle import load_vehicle
 
 DEFAULT_SEQUENCE = (*PRESIZING, *SUBPROBLEMS, "full")
+# Problems over every condition: the full problem's optimizer, rescaled design variables.
+FULL_PROBLEMS = ("full", "baseline")
 
-# IPOPT's "acceptable" termination for the stages: stop once the scaled NLP error has stayed
-# below 1e-4 (constraints within 1e-6) for 10 iterations. Without it, degenerate stages crawl
-# on: subproblem 4 reaches its optimum by iteration ~30 and then runs to the iteration limit
-# with the h-tail aspect ratio drifting along a flat valley (measured).
-STAGE_IPOPT_SETTINGS = {"acceptable_tol": 1e-4, "acceptable_iter": 10,
-                        "acceptable_constr_viol_tol": 1e-6}
 
 
 @dataclass
@@ -85,7 +82,7 @@ def load_design_variables(prob, case, vehicle):
 
 def run_sequence(out_dir, names=DEFAULT_SEQUENCE, vehicle=None, static_margin=True,
                  optimizer="IPOPT", full_optimizer=None, driver_settings=None, start_case=None,
-                 rescale_full=True, trim_first=True, log=print):
+                 rescale_full=True, trim_first=True, log=print, progress=False):
     """
     Solve the stages in order, each warm-started from the previous stage's final case.
 
@@ -114,6 +111,8 @@ def run_sequence(out_dir, names=DEFAULT_SEQUENCE, vehicle=None, static_margin=Tr
         with a quasi-Newton Hessian started far from trim stalls at locally infeasible points.
     log : callable
         Progress messages.
+    progress : bool
+        A progress line per driver iteration (:class:`lpc_mdo.progress.ProgressLine`).
 
     Returns
     -------
@@ -129,41 +128,88 @@ def run_sequence(out_dir, names=DEFAULT_SEQUENCE, vehicle=None, static_margin=Tr
     previous = start_case
     results = []
     for name in names:
-        case = None
-        if previous is not None:
-            case = om.CaseReader(previous).get_case("final")
-        refs = magnitude_refs(case, vehicle) if (name in ("full", "baseline") and rescale_full
-                                                 and case is not None) else None
-        path = os.path.join(out_dir, f"{name}.sql")
-        stage_optimizer = full_optimizer if name in ("full", "baseline") else optimizer
-        settings = dict(STAGE_IPOPT_SETTINGS) if stage_optimizer.upper() == "IPOPT" else {}
-        settings.update(driver_settings or {})
-        prob = build_problem(name, vehicle=vehicle, static_margin=static_margin,
-                             optimizer=stage_optimizer, recorder_path=path,
-                             design_variable_refs=refs, driver_settings=settings)
-        if case is not None:
-            load_design_variables(prob, case, vehicle)
-        trim_seconds, trim_message = 0.0, ""
-        if trim_first:
-            start = time.perf_counter()
-            trimmed = trim(prob)
-            trim_seconds = time.perf_counter() - start
-            trim_message = trimmed.message
-            prob.record("trimmed")
-            log(f"{name}: trim {trim_seconds:.1f} s: {trimmed.message}")
-        start = time.perf_counter()
-        result = prob.run_driver()
-        seconds = time.perf_counter() - start
-        prob.record("final")
-        stage = StageResult(name=name, case_file=path, success=bool(result.success),
-                            iterations=int(result.iter_count), seconds=seconds,
-                            gross_mass=float(prob.get_val("gross_mass", units="kg")[0]),
-                            exit_status=str(result.exit_status),
-                            analysis_errors=len(getattr(prob.driver, "analysis_errors", [])),
-                            trim_seconds=trim_seconds, trim_message=trim_message)
-        prob.cleanup()
+        stage = solve_stage(name, os.path.join(out_dir, f"{name}.sql"), vehicle=vehicle,
+                            start_case=previous, static_margin=static_margin,
+                            optimizer=full_optimizer if name in FULL_PROBLEMS else optimizer,
+                            driver_settings=driver_settings,
+                            rescale=rescale_full and name in FULL_PROBLEMS,
+                            trim_first=trim_first, log=log, progress=progress)
         results.append(stage)
-        log(f"{name}: success={stage.success} iterations={stage.iterations} "
-            f"{stage.seconds:.1f} s gross mass {stage.gross_mass:.2f} kg")
-        previous = path
+        previous = stage.case_file
     return results
+
+
+def solve_stage(name, case_file, vehicle=None, start_case=None, static_margin=True,
+                optimizer="IPOPT", driver_settings=None, rescale=False, trim_first=True,
+                log=print, progress=False):
+    """
+    One optimization: build problem ``name``, start it from a recorded case, trim, optimize.
+
+    Parameters
+    ----------
+    name : str
+        A name of :data:`lpc_mdo.problems.PROBLEM_NAMES`.
+    case_file : str
+        Its case file (driver iterations, the problem cases 'trimmed' and 'final').
+    vehicle : Vehicle, path or None
+    start_case : str or None
+        Case file whose final case gives the starting design (None: the vehicle's initial one).
+    static_margin : bool
+    optimizer : str
+    driver_settings : dict or None
+        make_driver settings, over the problem's defaults (:func:`build_problem`).
+    rescale : bool
+        Scale the design variables by their magnitudes in the start case (paper Sec. II.E).
+    trim_first : bool
+        Trim the problem's conditions before optimizing (see :func:`run_sequence`).
+    log : callable
+    progress : bool
+        Print a progress line per driver iteration (:class:`lpc_mdo.progress.ProgressLine`).
+
+    Returns
+    -------
+    StageResult
+        Also written: ``<case file stem>.run_stats.json`` (driver statistics and the process's
+        peak memory so far, for the report's Table 9).
+    """
+    if vehicle is None or isinstance(vehicle, (str, os.PathLike)):
+        vehicle = load_vehicle(vehicle)
+    case = om.CaseReader(start_case).get_case("final") if start_case is not None else None
+    refs = magnitude_refs(case, vehicle) if (rescale and case is not None) else None
+    prob = build_problem(name, vehicle=vehicle, static_margin=static_margin,
+                         optimizer=optimizer, recorder_path=case_file,
+                         design_variable_refs=refs, driver_settings=driver_settings)
+    if progress:
+        from lpc_mdo.progress import ProgressLine
+
+        prob.driver.add_recorder(ProgressLine(name))   # recorders start at final_setup
+    if case is not None:
+        load_design_variables(prob, case, vehicle)
+    trim_seconds, trim_message = 0.0, ""
+    if trim_first:
+        start = time.perf_counter()
+        trimmed = trim(prob)
+        trim_seconds = time.perf_counter() - start
+        trim_message = trimmed.message
+        prob.record("trimmed")
+        log(f"{name}: trim {trim_seconds:.1f} s: {trimmed.message}")
+    start = time.perf_counter()
+    try:
+        result = prob.run_driver()
+    except KeyboardInterrupt:
+        prob.record("final")
+        prob.cleanup()
+        raise
+    seconds = time.perf_counter() - start
+    prob.record("final")
+    write_run_stats(result, run_stats_path(case_file), peak_memory_mb=process_peak_memory_mb())
+    stage = StageResult(name=name, case_file=case_file, success=bool(result.success),
+                        iterations=int(result.iter_count), seconds=seconds,
+                        gross_mass=float(prob.get_val("gross_mass", units="kg")[0]),
+                        exit_status=str(result.exit_status),
+                        analysis_errors=len(getattr(prob.driver, "analysis_errors", [])),
+                        trim_seconds=trim_seconds, trim_message=trim_message)
+    prob.cleanup()
+    log(f"{name}: success={stage.success} iterations={stage.iterations} "
+        f"{stage.seconds:.1f} s gross mass {stage.gross_mass:.2f} kg")
+    return stage

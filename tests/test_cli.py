@@ -1,5 +1,6 @@
 """The lpc-mdo command line (the README's main job)."""
 
+import re
 from importlib import resources
 
 import openmdao.api as om
@@ -42,8 +43,10 @@ def test_optimize_subproblem_4_and_report(tmp_path, capsys):
     assert main(["optimize", "--problem", "subproblem_4", "--max-iter", "100",
                  "--output-dir", str(out)]) == 0
     text = capsys.readouterr().out
-    assert "subproblem_4: success=True" in text
-    assert (out / "run_stats.json").exists()
+    assert "subproblem_4: trim" in text and "subproblem_4: success=True" in text
+    # The progress line of every iteration: label, iteration, objective, violation, time.
+    assert re.search(r"subproblem_4  iter +1  objective .* max violation .* s", text)
+    assert (out / "subproblem_4.run_stats.json").exists()
     case = om.CaseReader(str(out / "subproblem_4.sql")).get_case("final")
     assert case.get_val("cruise.static_margin")[0] >= 0.08 - 1e-6
     assert main(["report", str(out), "--output-dir", str(tmp_path / "report")]) == 0

@@ -153,7 +153,8 @@ def write_run_stats(driver_result, path, peak_memory_mb=None):
 
 def find_run_stats(case_file):
     """
-    Return the ``run_stats.json`` next to a case file, or None.
+    Return a case file's run statistics: ``<stem>.run_stats.json`` beside it (one per stage of
+    a sequence), else a ``run_stats.json`` in its folder; None when neither exists.
 
     Parameters
     ----------
@@ -166,8 +167,15 @@ def find_run_stats(case_file):
         The sidecar path when it exists.
     """
     case_file = Path(getattr(case_file, "_filename", case_file))
-    path = case_file.parent / RUN_STATS_FILENAME
-    return path if path.is_file() else None
+    for path in (run_stats_path(case_file), case_file.parent / RUN_STATS_FILENAME):
+        if path.is_file():
+            return path
+    return None
+
+
+def run_stats_path(case_file):
+    """The run-statistics sidecar of a case file: ``<stem>.run_stats.json``."""
+    return Path(case_file).with_suffix(".run_stats.json")
 
 
 def read_run_stats(path):
