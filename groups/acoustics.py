@@ -26,6 +26,7 @@ from lpc_mdo.components.acoustics.observer import ObserverGeometryComp, Observer
 from lpc_mdo.components.acoustics.thickness import BarryMagliozziThicknessComp
 from lpc_mdo.components.acoustics.tonal import LowsonLoadingNoiseComp, SearsGustLoadsComp
 from lpc_mdo.components.acoustics.total import TotalNoiseComp
+from lpc_mdo.mpi import serial_comm
 
 __all__ = ['RotorNoiseGroup', 'a_weighting', 'rotor_noise', 'HOVER_NOISE_LIMIT_DBA']
 
@@ -364,7 +365,7 @@ def rotor_noise(radius, rpm, thrust, chord, *, num_blades=2, torque=None,
         observer_input='relative' if observer_position is None else 'position',
         radial_stations=radial_stations, radial_weights=radial_weights,
         hub_radius_ratio=float(hub_radius_ratio), **group_options)
-    prob = om.Problem(group, reports=False)
+    prob = om.Problem(group, reports=False, comm=serial_comm())
     prob.setup()
     prob.set_val('radius', radius, units='m')
     prob.set_val('rpm', rpm, units='rpm')

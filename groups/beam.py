@@ -13,6 +13,7 @@ from lpc_mdo.components.structures.box_section import TORSION_FORMULAS, BoxSecti
 from lpc_mdo.components.structures.buckling import PANEL_MODELS, PanelBucklingComp
 from lpc_mdo.components.structures.load_transfer import LoadTransferComp
 from lpc_mdo.components.structures.stress import BoxStressComp
+from lpc_mdo.mpi import serial_comm
 
 
 def _declare_frame_options(group):
@@ -256,7 +257,7 @@ def _frame_arguments(nodes, loads, fixed_nodes):
 
 
 def _run(group, values):
-    prob = om.Problem(reports=False)
+    prob = om.Problem(reports=False, comm=serial_comm())
     prob.model.add_subsystem('beam', group, promotes=['*'])
     prob.setup()
     for name, val in values.items():

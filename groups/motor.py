@@ -17,6 +17,7 @@ from lpc_mdo.components.motor.mtpa import MTPAComp
 from lpc_mdo.components.motor.parameters import MotorParameters
 from lpc_mdo.components.motor.sizing import MotorSizingComp
 from lpc_mdo.components.motor.torque_limit import TorqueLimitComp
+from lpc_mdo.mpi import serial_comm
 
 
 def _check_ratio(name, value):
@@ -236,7 +237,7 @@ def motor_analysis(length, rotor_torque, rotor_rpm, length_to_diameter=0.5, gear
                          f"(num_motors, num_nodes) with num_motors = {nm} (length).") from None
     nn = point_shape[1]
 
-    prob = om.Problem(reports=False)
+    prob = om.Problem(reports=False, comm=serial_comm())
     prob.model.add_subsystem('motor', MotorGroup(num_motors=nm, num_nodes=nn,
                                                  length_to_diameter=float(ratio),
                                                  parameters=parameters), promotes=['*'])

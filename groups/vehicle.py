@@ -19,6 +19,7 @@ from lpc_mdo.components.structures.wing_box_geometry import (
 )
 from lpc_mdo.components.weights.wing_mass import WingMirrorComp
 from lpc_mdo.groups.weights import WeightsGroup, motor_group_indices
+from lpc_mdo.mpi import serial_comm
 from lpc_mdo.vehicle import reference_vehicle
 
 # Design variables that the vehicle group consumes, with their units.
@@ -187,7 +188,7 @@ def calibrated_other_mass(vehicle):
     ValueError
         When the other masses already exceed the target (W_other would be negative).
     """
-    prob = om.Problem(reports=False)
+    prob = om.Problem(reports=False, comm=serial_comm())
     prob.model.add_subsystem("vehicle", VehicleGroup(vehicle=vehicle, other_mass=0.0,
                                                      other_cg=(0.0, 0.0, 0.0)),
                              promotes=["*"])

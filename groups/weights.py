@@ -26,6 +26,7 @@ from lpc_mdo.components.weights.regressions import (
     WingRegressionComp,
     m4_coefficients,
 )
+from lpc_mdo.mpi import serial_comm
 
 #: Kinds of bodies of the vehicle's mass properties (inputs ``{name}_mass``, ``{name}_cg`` and,
 #: for parts with an own inertia, ``{name}_inertia``). ``motor`` has one row per motor.
@@ -378,7 +379,7 @@ def calibrate_other_mass(vehicle=None, *, wing_mass=None, motor_mass=None,
         target_gross_mass = vehicle.masses.target_gross_mass
     options.pop("wing_model", None)
 
-    prob = om.Problem(reports=False)
+    prob = om.Problem(reports=False, comm=serial_comm())
     prob.model.add_subsystem("weights", WeightsGroup(vehicle=vehicle, **options),
                              promotes=["*"])
     prob.setup()

@@ -1,4 +1,4 @@
-"""Command-line interface: ``lpc-mdo analyze | optimize | report``."""
+"""Command-line interface: ``lpc-mdo analyze | optimize | sweep | report``."""
 
 import argparse
 import os
@@ -91,6 +91,30 @@ def _optimize(args):
     return 0 if stage.success else 1
 
 
+def _sweep(args):
+    from lpc_mdo.sweeps import SWEEP_PARAMETERS, run_sweep
+
+    parameters = list(SWEEP_PARAMETERS) if args.parameter == "all" else [args.parameter]
+    values = {parameters[0]: args.values} if args.values else None
+    if args.values and len(parameters) > 1:
+        print("lpc-mdo: --values needs a single --parameter", file=sys.stderr)
+        return 2
+    margins = {"on": (True,), "off": (False,), "both": (True, False)}[args.static_margin]
+    points = run_sweep(args.output_dir, args.start_case, parameters=parameters, values=values,
+                       static_margins=margins, vehicle=args.vehicle, processes=args.processes,
+                       mpi=args.mpi, driver_settings={"max_iter": args.max_iter,
+                                                      "print_level": 0},
+                       problem=args.problem)
+    if points is None:   # an MPI rank other than 0
+        return 0
+    for p in points:
+        print(f"{p.parameter}={p.value:g} static margin {'on' if p.static_margin else 'off'}: "
+              f"{'converged' if p.success else 'FAILED'}{' (retried)' if p.retried else ''}, "
+              f"gross mass {p.gross_mass:.2f} kg, {p.iterations} iterations, {p.seconds:.1f} s")
+    print(f"summary: {Path(args.output_dir) / 'sweep_summary.csv'}")
+    return 0 if all(p.success for p in points) else 1
+
+
 def _report(args):
     from lpc_mdo.post.report import write_report
 
@@ -135,6 +159,25 @@ def main(argv=None):
     optimize.add_argument("--quiet", action="store_true",
                           help="only the progress lines, not IPOPT's iteration table")
     optimize.set_defaults(func=_optimize)
+
+    sweep = sub.add_parser("sweep", help="parameter sweeps of the full problem (paper Sec. V.C)")
+    sweep.add_argument("--start-case", required=True,
+                       help="case file whose final case starts every chain, e.g. the "
+                            "sequence's full.sql")
+    sweep.add_argument("--parameter", default="all",
+                       choices=("energy_density", "final_soc", "all"))
+    sweep.add_argument("--values", type=float, nargs="+", default=None,
+                       help="values of the one --parameter (default: the paper's five)")
+    sweep.add_argument("--static-margin", default="both", choices=("on", "off", "both"))
+    sweep.add_argument("--processes", type=int, default=2, help="local worker processes")
+    sweep.add_argument("--mpi", action="store_true",
+                       help="distribute over MPI ranks (run under mpirun; needs mpi4py)")
+    sweep.add_argument("--problem", default="full", choices=PROBLEM_NAMES,
+                       help="problem each point solves (default: full)")
+    sweep.add_argument("--max-iter", type=int, default=200, help="iteration limit per point")
+    sweep.add_argument("--vehicle", default=None, help="vehicle TOML file")
+    sweep.add_argument("--output-dir", default="sweep_out", help="folder for case files")
+    sweep.set_defaults(func=_sweep)
 
     report = sub.add_parser("report", help="tables and figures from case files")
     report.add_argument("cases", help="a case file or a folder of case files")

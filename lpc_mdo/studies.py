@@ -5,6 +5,7 @@ import openmdao.api as om
 
 from lpc_mdo.drivers import make_driver
 from lpc_mdo.groups.lpc import LPCGroup
+from lpc_mdo.mpi import serial_comm
 from lpc_mdo.problems import attach_recorder
 from lpc_mdo.vehicle import reference_vehicle
 
@@ -51,7 +52,7 @@ def structural_sizing_problem(vehicle=None, aggregated=False, ks_rho=50.0, optim
         Set up, not run.
     """
     vehicle = vehicle or reference_vehicle()
-    prob = om.Problem(reports=False)
+    prob = om.Problem(reports=False, comm=serial_comm())
     prob.model = model = LPCGroup(vehicle=vehicle, conditions=list(STRUCTURAL_CONDITIONS),
                                   design_problem=False,
                                   structural_ks_rho=ks_rho if aggregated else None,

@@ -124,7 +124,7 @@ def trim(prob, conditions=None, tol=1e-10, max_iter=30, separate=True):
             options = {k: prob.model.options[k] for k in _INHERITED_OPTIONS}
             target = build_analysis_problem(vehicle, name=f"trim_{cond}", conditions=[cond],
                                             lateral_trim=False, constraint_kinds=["trim"],
-                                            static_margin=False, **options)
+                                            static_margin=False, comm=prob.comm, **options)
             _copy_design_variables(prob, target, vehicle)
             target.run_model()
         cons = {n: m for n, m in _trim_constraints(target, [cond]).items()}

@@ -141,7 +141,7 @@ def run_sequence(out_dir, names=DEFAULT_SEQUENCE, vehicle=None, static_margin=Tr
 
 def solve_stage(name, case_file, vehicle=None, start_case=None, static_margin=True,
                 optimizer="IPOPT", driver_settings=None, rescale=False, trim_first=True,
-                log=print, progress=False):
+                log=print, progress=False, comm=None):
     """
     One optimization: build problem ``name``, start it from a recorded case, trim, optimize.
 
@@ -165,6 +165,8 @@ def solve_stage(name, case_file, vehicle=None, start_case=None, static_margin=Tr
     log : callable
     progress : bool
         Print a progress line per driver iteration (:class:`lpc_mdo.progress.ProgressLine`).
+    comm : MPI communicator or None
+        The problem's communicator (MPI.COMM_SELF for one problem per rank).
 
     Returns
     -------
@@ -178,7 +180,7 @@ def solve_stage(name, case_file, vehicle=None, start_case=None, static_margin=Tr
     refs = magnitude_refs(case, vehicle) if (rescale and case is not None) else None
     prob = build_problem(name, vehicle=vehicle, static_margin=static_margin,
                          optimizer=optimizer, recorder_path=case_file,
-                         design_variable_refs=refs, driver_settings=driver_settings)
+                         design_variable_refs=refs, driver_settings=driver_settings, comm=comm)
     if progress:
         from lpc_mdo.progress import ProgressLine
 
