@@ -94,11 +94,17 @@ SUBPROBLEMS = {
                              "minus_1g_pitch"],
         "constraint_kinds": ["trim", "buckling"],
     },
+    # Table 2 sizes the planform in cruise alone; climb and descent are added (with their trim
+    # variables): alone, cruise drives wing and tail to their lower bounds with the pitch at its
+    # 10 deg limit, and the full problem then starts with climb and descent untrimmable
+    # (scaled trim residuals 0.5; measured 2026-11-22).
     "subproblem_4": {
-        "conditions": ["cruise"],
+        "conditions": ["climb", "cruise", "descent"],
         "design_variables": ["wing_area", "wing_aspect_ratio", "htail_area",
-                             "htail_aspect_ratio", "fuselage_length", "cruise_pusher_rpm",
-                             "cruise_pitch", "cruise_elevator"],
+                             "htail_aspect_ratio", "fuselage_length", "climb_pusher_rpm",
+                             "cruise_pusher_rpm", "descent_pusher_rpm", "climb_pitch",
+                             "cruise_pitch", "descent_pitch", "climb_elevator",
+                             "cruise_elevator", "descent_elevator"],
         "constraint_kinds": ["trim", "static_margin"],
     },
 }
