@@ -87,9 +87,10 @@ class LPCGroup(om.Group):
     ks_rho : float
         KS aggregation parameter of the torque margins.
     lateral_trim : bool
-        Declare the lateral trim constraints of hover and the transition points (paper Table 6:
-        96 constraints). They are zero by symmetry with zero gradients, so an optimizer does
-        better without them (80 constraints).
+        Declare the lateral trim constraints of hover and the transition points and the OEI
+        side force (paper Table 6: 96 constraints). They are zero by symmetry (or, OEI v_dot,
+        without a side force) with zero gradients, or beyond any trim variable (transition
+        p_dot), so an optimizer does better without them (76 constraints).
     conditions : list of str or None
         The design conditions to include, by name (None: all of the vehicle's). Subproblems
         and single-condition studies use a subset; the mission energy then counts only those.
@@ -128,10 +129,11 @@ class LPCGroup(om.Group):
             "ks_rho", default=50.0, types=float, desc="KS parameter of the torque-margin aggregates"
         )
         self.options.declare("lateral_trim", default=True, types=bool,
-                             desc="constrain v_dot, p_dot, r_dot in hover and transition (paper "
-                                  "Table 6 counts them): symmetry zeroes v_dot and r_dot, and "
-                                  "no trim variable acts on p_dot (the pusher's torque "
-                                  "reaction in transition; the model has no ailerons)")
+                             desc="constrain v_dot, p_dot, r_dot in hover and transition and "
+                                  "v_dot in OEI (paper Table 6 counts them): symmetry zeroes "
+                                  "v_dot and r_dot, no side force acts in OEI hover, and no "
+                                  "trim variable acts on p_dot (the pusher's torque reaction in "
+                                  "transition; the model has no ailerons)")
         self.options.declare("objective", default=("gross_mass", None), types=tuple,
                              desc="(output, ref) of the objective; ref None = the vehicle's "
                                   "target gross mass (paper: gross mass); ('baseline', None) = "
@@ -383,7 +385,8 @@ class LPCGroup(om.Group):
                 else:
                     self._trim(c.name, [0, 1, 2], [0, 1, 2], accel, g)
             elif c.kind == "oei":
-                self._trim(c.name, [1, 2], [0, 1, 2], 0.0, g)
+                # v_dot: no side force acts in hover (rotor thrust only, no edgewise flow).
+                self._trim(c.name, [2] if symmetric_only else [1, 2], [0, 1, 2], 0.0, g)
             elif c.kind == "structural":
                 self._trim(c.name, [2], [], 0.0, g * abs(c.load_factor))
         if self.options["static_margin"] and "cruise" in present and "static_margin" in wanted:

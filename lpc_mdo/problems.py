@@ -156,12 +156,13 @@ def build_problem(name, vehicle=None, static_margin=True, optimizer="IPOPT",
         Passed to make_driver, over the defaults (IPOPT: :data:`IPOPT_SETTINGS` and the
         stage's own).
     lateral_trim : bool
-        Also constrain v_dot, p_dot, r_dot in hover and transition. Paper Table 6 counts them
-        (96 constraints), but symmetry zeroes v_dot and r_dot identically (zero gradients that
-        violate the constraint qualification: SLSQP stops on a singular matrix, IPOPT's dual
-        infeasibility explodes) and no trim variable acts on the transition p_dot (the pusher's
-        torque reaction; the model has no ailerons), so optimizations leave them out (80
-        constraints).
+        Also constrain v_dot, p_dot, r_dot in hover and transition and v_dot in the OEI cases.
+        Paper Table 6 counts them (96 constraints), but symmetry zeroes v_dot and r_dot
+        identically, as the absence of side forces in OEI hover zeroes its v_dot (zero gradients
+        that violate the constraint qualification: SLSQP stops on a singular matrix, IPOPT's
+        dual infeasibility explodes), and no trim variable acts on the transition p_dot (the
+        pusher's torque reaction; the model has no ailerons), so optimizations leave them out
+        (76 constraints).
     comm : MPI communicator or None
         The problem's communicator (MPI.COMM_SELF for one problem per rank, as in sweeps).
     **model_options

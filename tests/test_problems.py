@@ -21,12 +21,12 @@ def sizes(prob):
     # the pusher motor; the lift motors are subproblem 2's).
     ("rotor_presizing", (4 + 4 + 16 + 16, 1 + 2 + 4)),
     ("subproblem_1", (4 + 20 + 5 + 3 + 3 + 8 + 1 + 1 + 45, 1 + 2 + 9 + 15 + 1 + 1)),
-    ("subproblem_2", (28 + 4, 20 + 8)),
+    ("subproblem_2", (28 + 4, 16 + 8)),     # OEI v_dot is identically zero (no side force)
     ("subproblem_3", (32 + 2, 2 + 14)),
     # Subproblem 4: planform in climb, cruise and descent (Table 2: cruise only; see problems.py).
     ("subproblem_4", (5 + 3 * 3, 3 * 3 + 1)),
-    ("full", (161, 96 - 16)),
-    ("baseline", (161, 96 - 16)),
+    ("full", (161, 96 - 20)),
+    ("baseline", (161, 96 - 20)),
 ])
 def test_problem_sizes(name, expected):
     assert sizes(build_problem(name, optimizer="SLSQP")) == expected
