@@ -80,8 +80,10 @@ class ProgressLine(CaseRecorder):
 
 def max_violation(driver):
     """Largest constraint violation of a driver's current point, in its scaled space."""
-    values = driver.get_constraint_values(driver_scaling=True)
-    meta = driver._problem().model.get_constraints()   # bounds in the driver-scaled space
+    from lpc_mdo.trim import driver_scaling
+
+    values = driver.get_constraint_values(driver_scaling=False)
+    meta = driver._problem().model.get_constraints()   # bounds as declared (unscaled)
     worst = 0.0
     for name, value in values.items():
         m = meta.get(name)
@@ -95,5 +97,5 @@ def max_violation(driver):
             upper = np.inf if m["upper"] is None else np.ravel(m["upper"])
             viol = np.maximum(np.maximum(lower - value, value - upper), 0.0)
         if viol.size:
-            worst = max(worst, float(np.max(viol)))
+            worst = max(worst, float(np.max(np.abs(viol * driver_scaling(m)[0]))))
     return worst

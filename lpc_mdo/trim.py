@@ -21,9 +21,19 @@ from dataclasses import dataclass
 
 import numpy as np
 import openmdao.api as om
+from openmdao.utils.general_utils import determine_adder_scaler
 from scipy.optimize import least_squares
 
 from lpc_mdo.groups.lpc import condition_trim_variables
+
+
+def driver_scaling(meta):
+    """(scaler, adder) of a design variable or response from its metadata (scaled = (x +
+    adder) * scaler). The metadata of ``get_design_vars``/``get_constraints`` keep ref/ref0 as
+    declared and leave scaler/adder None when they were declared through refs."""
+    adder, scaler = determine_adder_scaler(meta.get("ref0"), meta.get("ref"), meta.get("adder"),
+                                           meta.get("scaler"))
+    return (1.0 if scaler is None else scaler), (0.0 if adder is None else adder)
 
 
 @dataclass
@@ -141,7 +151,7 @@ def trim(prob, conditions=None, tol=1e-10, max_iter=30, separate=True):
         for name, meta in cons.items():   # scaled residual = (value - target) * scaler
             part = scaled[start:start + meta["size"]]
             start += meta["size"]
-            residuals[name] = part / (1.0 if meta["scaler"] is None else meta["scaler"])
+            residuals[name] = part / driver_scaling(meta)[0]
         block_max = float(np.max(np.abs(scaled)))
         worst = max(worst, block_max)
         if block_max >= 1e-6:
@@ -172,26 +182,26 @@ def _solve_block(prob, dv_meta, cons, variables, tol, max_iter):
     """Bounded least squares of one condition's trim residuals in its trim variables."""
 
     def scaling(name):
-        meta = dv_meta[name]
-        scaler = 1.0 if meta["scaler"] is None else meta["scaler"]
-        return scaler, (0.0 if meta["adder"] is None else meta["adder"]), meta["units"]
+        return (*driver_scaling(dv_meta[name]), dv_meta[name]["units"])
 
     def model_entries(name, pos):
         indices = dv_meta[name]["indices"]
         return pos if indices is None else indices.as_array()[pos]
-
-    def bounds(key):
-        return np.concatenate([np.broadcast_to(dv_meta[n][key], (dv_meta[n]["size"],))[p]
-                               for n, p in variables.items()])
 
     x0 = []
     for name, pos in variables.items():
         scaler, adder, units = scaling(name)
         value = np.asarray(prob.get_val(name, units=units), dtype=float).ravel()
         x0.append((value[model_entries(name, pos)] + adder) * scaler)
-    lower, upper = bounds("lower"), bounds("upper")
+    # get_design_vars keeps the bounds as declared (unscaled): scale them like the values.
+    lower = np.concatenate([(np.broadcast_to(dv_meta[n]["lower"], (dv_meta[n]["size"],))[p]
+                             + scaling(n)[1]) * scaling(n)[0] for n, p in variables.items()])
+    upper = np.concatenate([(np.broadcast_to(dv_meta[n]["upper"], (dv_meta[n]["size"],))[p]
+                             + scaling(n)[1]) * scaling(n)[0] for n, p in variables.items()])
     x0 = np.clip(np.concatenate(x0), lower, upper)
-    targets = {n: np.broadcast_to(m["equals"], (m["size"],)) for n, m in cons.items()}
+    cons_scaling = {n: driver_scaling(m) for n, m in cons.items()}
+    targets = {n: (np.broadcast_to(m["equals"], (m["size"],)) + cons_scaling[n][1])
+               * cons_scaling[n][0] for n, m in cons.items()}
     sources = {n: m["source"] for n, m in cons.items()}
     con_index = {n: (None if m["indices"] is None else m["indices"].as_array())
                  for n, m in cons.items()}
@@ -213,24 +223,25 @@ def _solve_block(prob, dv_meta, cons, variables, tol, max_iter):
     def residual(x):
         set_x(x)
         parts = []
-        for name, meta in cons.items():
+        for name in cons:
             value = np.asarray(prob.get_val(sources[name]), dtype=float).ravel()
             value = value if con_index[name] is None else value[con_index[name]]
-            scaler = 1.0 if meta["scaler"] is None else meta["scaler"]
-            adder = 0.0 if meta["adder"] is None else meta["adder"]
+            scaler, adder = cons_scaling[name]
             parts.append((value + adder) * scaler - targets[name])
         return np.concatenate(parts)
 
     def jacobian(x):
+        # By response name (not source), so that OpenMDAO applies the declared scaling and
+        # units of responses and design variables: the space of x and of residual().
         set_x(x)
-        totals = prob.compute_totals(of=list(sources.values()), wrt=list(variables),
+        totals = prob.compute_totals(of=list(cons), wrt=list(variables),
                                      driver_scaling=True, return_format="dict")
         rows = []
-        for name in cons:
+        for name, meta in cons.items():
             blocks = []
             for dv_name, pos in variables.items():
-                block = np.atleast_2d(totals[sources[name]][dv_name])
-                if con_index[name] is not None:
+                block = np.atleast_2d(totals[name][dv_name])
+                if block.shape[0] != meta["size"] and con_index[name] is not None:
                     block = block[con_index[name]]
                 blocks.append(block[:, pos])
             rows.append(np.hstack(blocks))
