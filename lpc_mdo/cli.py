@@ -67,7 +67,7 @@ def _optimize(args):
     out = Path(args.output_dir)
     out.mkdir(parents=True, exist_ok=True)
     settings = {"max_iter": args.max_iter}
-    if args.quiet and args.optimizer == "IPOPT":
+    if args.quiet:
         settings["print_level"] = 0
     common = dict(vehicle=args.vehicle, static_margin=not args.no_static_margin,
                   driver_settings=settings, trim_first=not args.no_trim, progress=True)
@@ -76,8 +76,9 @@ def _optimize(args):
     # 'final' case of the interrupted point.
     try:
         if args.problem == "sequence":
-            results = run_sequence(str(out), optimizer=args.optimizer,
-                                   start_case=args.start_case, **common)
+            results = run_sequence(str(out), optimizer=args.optimizer or "IPOPT",
+                                   full_optimizer=args.optimizer, start_case=args.start_case,
+                                   **common)
             return 0 if all(r.success for r in results) else 1
         case_file = out / f"{args.problem}.sql"
         stage = solve_stage(args.problem, str(case_file), start_case=args.start_case,
@@ -145,7 +146,9 @@ def main(argv=None):
                                                "warm-start sequence")
     optimize.add_argument("--problem", default="sequence", choices=(*PROBLEM_NAMES, "sequence"),
                           help="which problem (default: the whole warm-start sequence)")
-    optimize.add_argument("--optimizer", default="IPOPT", choices=("IPOPT", "SNOPT", "SLSQP"))
+    optimize.add_argument("--optimizer", default=None, choices=("IPOPT", "SNOPT", "SLSQP"),
+                          help="default: IPOPT for the presizing and subproblems, SQP (SNOPT "
+                               "if pyoptsparse has it, else SLSQP) for full and baseline")
     optimize.add_argument("--max-iter", type=int, default=200, help="iteration limit")
     optimize.add_argument("--vehicle", default=None, help="vehicle TOML file")
     optimize.add_argument("--no-static-margin", action="store_true",

@@ -43,3 +43,15 @@ def test_magnitude_refs(tmp_path):
     # A zero entry gets the floor (1e-6 of the vehicle file's ref), never a zero ref.
     assert refs["top_skin_thickness"][1] == pytest.approx(1e-6 * 1e-3)
     assert set(refs) == {"battery_mass", "top_skin_thickness"}
+
+
+def test_default_optimizers_follow_the_paper():
+    # Paper Sec. II.E: IPOPT for the subproblems, SQP (SNOPT) for the full problem; SLSQP
+    # stands in for SNOPT when pyoptsparse does not have it.
+    from lpc_mdo.drivers import pyoptsparse_optimizers
+    from lpc_mdo.warm_start import default_optimizer
+
+    assert default_optimizer("subproblem_1") == "IPOPT"
+    assert default_optimizer("rotor_presizing") == "IPOPT"
+    sqp = "SNOPT" if "SNOPT" in pyoptsparse_optimizers() else "SLSQP"
+    assert default_optimizer("full") == default_optimizer("baseline") == sqp
