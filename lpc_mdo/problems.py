@@ -130,6 +130,12 @@ PRESIZING = {
 # Paper Sec. II.F: the baseline design is the full problem with the objective of eq. 8.
 PROBLEM_NAMES = (*PRESIZING, *SUBPROBLEMS, "full", "baseline")
 
+# SLSQP on the full problem: stop when an iteration changes the scaled objective (gross mass
+# over the initial 3724 kg) by less than 1e-5, i.e. 0.04 kg. With SciPy's default 1e-6 it spent
+# 250 more iterations (8 min) after reaching a feasible design to gain the last 0.05 %
+# (measured 2026-11-22).
+SLSQP_SETTINGS = {"tol": 1e-5}
+
 
 def build_problem(name, vehicle=None, static_margin=True, optimizer="IPOPT",
                   recorder_path=None, design_variable_refs=None, driver_settings=None,
@@ -192,7 +198,8 @@ def build_problem(name, vehicle=None, static_margin=True, optimizer="IPOPT",
                      **model_options)
     prob = om.Problem(model=model, name=name, reports=False, comm=comm)
     settings = ({**IPOPT_SETTINGS, **spec.get("driver_settings", {})}
-                if optimizer.upper() == "IPOPT" else {})
+                if optimizer.upper() == "IPOPT" else
+                dict(SLSQP_SETTINGS) if optimizer.upper() == "SLSQP" else {})
     settings.update(driver_settings or {})
     prob.driver = make_driver(optimizer, **settings)
     if recorder_path is not None:
