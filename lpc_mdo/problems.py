@@ -18,7 +18,7 @@ def attach_recorder(prob, path):
 
 
 def build_analysis_problem(vehicle=None, recorder_path=None, name="analysis", comm=None,
-                           **options):
+                           work_dir=None, **options):
     """
     The full lift-plus-cruise model of a vehicle at its initial design, ready to run.
 
@@ -33,6 +33,8 @@ def build_analysis_problem(vehicle=None, recorder_path=None, name="analysis", co
         Problem name; OpenMDAO writes reports and outputs under ``{name}_out``.
     comm : MPI communicator or None
         The problem's communicator (MPI.COMM_SELF for one problem per rank).
+    work_dir : str or None
+        Where OpenMDAO puts ``{name}_out`` (None: the current directory).
     **options
         Further :class:`~lpc_mdo.groups.lpc.LPCGroup` options (``static_margin``,
         ``conditions``, ``rotor_polar``, ...).
@@ -44,7 +46,9 @@ def build_analysis_problem(vehicle=None, recorder_path=None, name="analysis", co
     """
     if vehicle is None or isinstance(vehicle, (str, os.PathLike)):
         vehicle = load_vehicle(vehicle)
-    prob = om.Problem(model=LPCGroup(vehicle=vehicle, **options), name=name, comm=comm)
+    kwargs = {} if work_dir is None else {"work_dir": str(work_dir)}
+    prob = om.Problem(model=LPCGroup(vehicle=vehicle, **options), name=name, comm=comm,
+                      **kwargs)
     if recorder_path is not None:
         prob.add_recorder(om.SqliteRecorder(str(recorder_path)))
         prob.recording_options["includes"] = ["*"]

@@ -17,6 +17,10 @@ in a few iterations (measured on the reference vehicle: see the optimization iss
 warm-start sequence therefore trims first (stage ``'trim'``).
 """
 
+import atexit
+import functools
+import shutil
+import tempfile
 from dataclasses import dataclass
 
 import numpy as np
@@ -82,6 +86,15 @@ def _trim_variables(prob, vehicle, conditions):
     return merged
 
 
+@functools.lru_cache(maxsize=1)
+def _scratch_dir():
+    """A per-process folder for the trim problems' OpenMDAO output folders (removed at exit),
+    so that trimming does not leave 15 ``trim_<condition>_out`` folders in the user's."""
+    path = tempfile.mkdtemp(prefix="lpc_mdo_trim_")
+    atexit.register(shutil.rmtree, path, ignore_errors=True)
+    return path
+
+
 # LPCGroup options a single-condition trim problem inherits from the problem it trims.
 _INHERITED_OPTIONS = ("rotor_polar", "wing_zero_lift_angle", "ks_rho", "structural_coupling")
 
@@ -134,7 +147,8 @@ def trim(prob, conditions=None, tol=1e-10, max_iter=30, separate=True):
             options = {k: prob.model.options[k] for k in _INHERITED_OPTIONS}
             target = build_analysis_problem(vehicle, name=f"trim_{cond}", conditions=[cond],
                                             lateral_trim=False, constraint_kinds=["trim"],
-                                            static_margin=False, comm=prob.comm, **options)
+                                            static_margin=False, comm=prob.comm,
+                                            work_dir=_scratch_dir(), **options)
             _copy_design_variables(prob, target, vehicle)
             target.run_model()
         cons = {n: m for n, m in _trim_constraints(target, [cond]).items()}

@@ -202,6 +202,8 @@ def solve_stage(name, case_file, vehicle=None, start_case=None, static_margin=Tr
     if vehicle is None or isinstance(vehicle, (str, os.PathLike)):
         vehicle = load_vehicle(vehicle)
     optimizer = optimizer or default_optimizer(name)
+    # Absolute: OpenMDAO puts a bare file name under the problem's {name}_out folder.
+    case_file = os.path.abspath(case_file)
     case = om.CaseReader(start_case).get_case("final") if start_case is not None else None
     refs = magnitude_refs(case, vehicle) if (rescale and case is not None) else None
     prob = build_problem(name, vehicle=vehicle, static_margin=static_margin,
