@@ -134,12 +134,14 @@ PRESIZING = {
 # Paper Sec. II.F: the baseline design is the full problem with the objective of eq. 8.
 PROBLEM_NAMES = (*PRESIZING, *SUBPROBLEMS, "full", "baseline")
 
-# SLSQP on the full problem: SciPy stops when an iteration changes the scaled objective by less
-# than tol *and* every scaled constraint is within tol. With 1e-6 (SciPy's default) or 1e-5 it
-# went on for 250+ iterations (8+ min) after reaching a design feasible to 1e-4 (trim rows: 1e-3
-# m/s^2, 1e-4 of the weight), gaining the last 0.05 % of gross mass; 1e-4 stops there
-# (measured 2026-11-22).
-SLSQP_SETTINGS = {"tol": 1e-4}
+# SLSQP on the full problem: SciPy stops when an iteration changes the scaled objective (gross
+# mass over the initial 3724 kg) by less than tol *and* every scaled constraint is within tol.
+# With 1e-6 (SciPy's default) or 1e-4 it never stopped: after ~150 evaluations (5 min) the
+# design is feasible to 1e-4 .. 2.5e-4 (noise +0.002 dB, OEI trim 2e-4 rad/s^2) and SLSQP's line
+# searches keep it there while gaining the last 0.05 % of gross mass for 250+ more iterations.
+# 3e-4 accepts that: trim rows within 3e-3 m/s^2 (0.03 % of the weight), noise within
+# 0.003 dB (measured 2026-11-22).
+SLSQP_SETTINGS = {"tol": 3e-4}
 
 
 def build_problem(name, vehicle=None, static_margin=True, optimizer="IPOPT",
