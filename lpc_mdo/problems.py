@@ -15,6 +15,7 @@ def attach_recorder(prob, path):
     prob.driver.add_recorder(recorder)
     prob.add_recorder(recorder)
     prob.recording_options["includes"] = ["*"]
+    prob.recording_options["record_inputs"] = True   # fixed parameters too (sweep plots)
 
 
 def build_analysis_problem(vehicle=None, recorder_path=None, name="analysis", comm=None,
@@ -52,6 +53,7 @@ def build_analysis_problem(vehicle=None, recorder_path=None, name="analysis", co
     if recorder_path is not None:
         prob.add_recorder(om.SqliteRecorder(str(recorder_path)))
         prob.recording_options["includes"] = ["*"]
+        prob.recording_options["record_inputs"] = True
     prob.setup(mode="rev")
     prob.vehicle = vehicle
     return prob

@@ -133,7 +133,7 @@ LPC_DISTRIBUTIONS = (
 )
 
 LPC_SWEEPS = (
-    SweepSpec("sweep_energy_density", "specific_energy", x_units="W*h/kg",
+    SweepSpec("sweep_energy_density", "battery.specific_energy", x_units="W*h/kg",
               xlabel="battery energy density (Wh/kg)"),
     SweepSpec("sweep_final_soc", "lower:state_of_charge", xlabel="final state of charge"),
 )
@@ -180,7 +180,7 @@ class ReportSpec:
     power_units : str or None
         Default ``'kW'``.
     figure_of_merit : str or None
-        Template or vector; default ``'{condition}.figure_of_merit'``, averaged over all its
+        Template or vector; default ``'{condition}.lift_figure_of_merit'``, averaged over all its
         entries (rotors) per condition.
     fom_conditions : tuple of str
         Default hover and the five transition points (lift rotors running).
@@ -188,7 +188,7 @@ class ReportSpec:
         Default ``top/bottom_skin_thickness`` and ``front/rear_spar_thickness`` (mm) and
         ``plus_3g.von_mises_stress`` (MPa, limit 350).
     sweeps : tuple of SweepSpec
-        Default battery energy density (``specific_energy`` in Wh/kg) and final SoC
+        Default battery energy density (``battery.specific_energy`` in Wh/kg) and final SoC
         (``lower:state_of_charge``).
     """
 
@@ -203,7 +203,7 @@ class ReportSpec:
     conditions: tuple = LPC_CONDITIONS
     power: str | None = "{condition}.electrical_power"
     power_units: str | None = "kW"
-    figure_of_merit: str | None = "{condition}.figure_of_merit"
+    figure_of_merit: str | None = "{condition}.lift_figure_of_merit"
     fom_conditions: tuple = LPC_CONDITIONS[:6]
     distributions: tuple = LPC_DISTRIBUTIONS
     sweeps: tuple = LPC_SWEEPS
