@@ -92,8 +92,8 @@ def paraboloid_run(path, driver, c_lower=15.0):
     m.add_subsystem("con", om.ExecComp("c = x - y"), promotes=["*"])
     m.add_subsystem("vec", VectorComp(), promotes=["*"])
     m.add_subsystem("hover", om.ExecComp(
-        ["electrical_power = 1000.0*(x**2 + 1.0)", "figure_of_merit = 0.1*x*r"],
-        electrical_power={"units": "W"}, figure_of_merit={"shape": (2,)},
+        ["electrical_power = 1000.0*(x**2 + 1.0)", "lift_figure_of_merit = 0.1*x*r"],
+        electrical_power={"units": "W"}, lift_figure_of_merit={"shape": (2,)},
         r={"shape": (2,), "val": [1.0, 0.5]}), promotes_inputs=["x"])
     m.add_subsystem("cruise", om.ExecComp("electrical_power = 500.0*(y**2 + 1.0)",
                                           electrical_power={"units": "W"}),
@@ -328,7 +328,7 @@ def test_figures_are_written(runs, tmp_path):
         figures.plot_per_condition(designs, "{condition}.electrical_power",
                                    ["hover", "cruise", "climb"], tmp_path / "power.png",
                                    units="kW"),
-        figures.plot_per_condition(designs, "{condition}.figure_of_merit", ["hover"],
+        figures.plot_per_condition(designs, "{condition}.lift_figure_of_merit", ["hover"],
                                    tmp_path / "fom.png", reduce="mean"),
         figures.plot_per_condition(designs, "v", ["a", "b", "c"], tmp_path / "vector.png"),
         figures.plot_distribution(designs, "stress", tmp_path / "stress.png", x="stations",
@@ -370,7 +370,7 @@ def test_write_report_on_a_folder(runs, tmp_path):
         meshes=("wing_mesh", "tail_mesh"), rotors=(("hubs", "radii"), ("no_hubs", "radii")),
         mass_breakdown="v", mass_labels=("x", "y", "x+y"), mass_units="cm",
         conditions=("hover", "cruise"), power="{condition}.electrical_power",
-        figure_of_merit="{condition}.figure_of_merit", fom_conditions=("hover",),
+        figure_of_merit="{condition}.lift_figure_of_merit", fom_conditions=("hover",),
         distributions=(report.DistributionSpec("stress", ("stress",), x="stations"),),
         sweeps=(report.SweepSpec("sweep_c", "lower:c"),))
     index = report.write_report(runs["root"], tmp_path / "report", spec)
