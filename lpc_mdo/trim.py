@@ -13,8 +13,8 @@ OEI blocks within 30 evaluations where dogbox converged in 5-7 (measured).
 Why this exists: the initial design is far from trim (transition w_dot of -7 m/s^2), and an
 optimizer with a quasi-Newton Hessian started there wanders into windmilling rotors and stalls
 at a locally infeasible point, whereas Gauss-Newton on the exact Jacobian trims every condition
-in a few iterations (measured on the reference vehicle: see the optimization issue note). The
-warm-start sequence therefore trims first (stage ``'trim'``).
+in a few iterations (measured on the reference vehicle: see the optimization issue note). Every
+stage of the warm-start sequence therefore trims its conditions before its optimizer runs.
 """
 
 import atexit
@@ -42,7 +42,7 @@ def driver_scaling(meta):
 
 @dataclass
 class TrimResult:
-    """Outcome of :func:`trim`."""
+    """Outcome of :func:`trim` (``iterations``: Jacobian evaluations over all conditions)."""
 
     success: bool
     iterations: int
@@ -52,7 +52,7 @@ class TrimResult:
 
 
 def _trim_constraints(prob, conditions):
-    """Driver-scaled trim constraints of the given conditions: name -> meta."""
+    """Trim constraints of the given conditions: name -> metadata (bounds as declared)."""
     cons = prob.model.get_constraints()
     found = {}
     for name, meta in cons.items():
