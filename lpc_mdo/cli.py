@@ -190,6 +190,11 @@ def main(argv=None):
     args = parser.parse_args(argv)
     from lpc_mdo.vehicle import VehicleSpecError
 
+    start_case = getattr(args, "start_case", None)
+    if start_case is not None and not os.path.isfile(start_case):
+        print(f"lpc-mdo: --start-case {start_case!r} is not a file (a case file written by "
+              "lpc-mdo optimize, e.g. optimize_out/full.sql)", file=sys.stderr)
+        return 2
     try:
         return args.func(args)
     except VehicleSpecError as err:

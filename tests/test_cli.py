@@ -32,6 +32,14 @@ def test_analyze_reports_a_bad_vehicle_file(tmp_path, capsys):
     assert "unknown key 'wing.spam'" in capsys.readouterr().err
 
 
+def test_missing_start_case_is_a_clear_error(tmp_path, capsys):
+    missing = str(tmp_path / "nope.sql")
+    for argv in (["optimize", "--problem", "full", "--start-case", missing],
+                 ["sweep", "--start-case", missing]):
+        assert main(argv) == 2
+        assert f"--start-case '{missing}' is not a file" in capsys.readouterr().err
+
+
 def test_unknown_command_exits():
     with pytest.raises(SystemExit):
         main(["fly"])
