@@ -2,6 +2,7 @@
 
 import os
 
+import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.groups.lpc import CONSTRAINT_KINDS, LPCGroup
@@ -16,6 +17,22 @@ def attach_recorder(prob, path):
     prob.add_recorder(recorder)
     prob.recording_options["includes"] = ["*"]
     prob.recording_options["record_inputs"] = True   # fixed parameters too (sweep plots)
+
+
+def copy_design_variables(source, target, vehicle, names=None):
+    """
+    Set the vehicle file's design-variable arrays of ``target`` (a set-up problem) from
+    ``source`` (a set-up problem or a recorded case), by name, in the vehicle file's units;
+    arrays that either side lacks are skipped.
+    """
+    for name in names or vehicle.design_variables:
+        dv = vehicle.design_variables[name]
+        units = None if dv.units == "unitless" else dv.units
+        try:
+            value = np.asarray(source.get_val(name, units=units)).reshape(dv.shape)
+            target.set_val(name, value, units=units)
+        except KeyError:
+            continue
 
 
 def build_analysis_problem(vehicle=None, recorder_path=None, name="analysis", comm=None,

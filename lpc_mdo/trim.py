@@ -135,7 +135,7 @@ def trim(prob, conditions=None, tol=1e-10, max_iter=30, separate=True):
     om.AnalysisError
         When the model fails during the solve.
     """
-    from lpc_mdo.problems import build_analysis_problem
+    from lpc_mdo.problems import build_analysis_problem, copy_design_variables
 
     vehicle = prob.vehicle if hasattr(prob, "vehicle") else prob.model.options["vehicle"]
     conditions = list(prob.model.condition_names if conditions is None else conditions)
@@ -149,16 +149,16 @@ def trim(prob, conditions=None, tol=1e-10, max_iter=30, separate=True):
                                             lateral_trim=False, constraint_kinds=["trim"],
                                             static_margin=False, comm=prob.comm,
                                             work_dir=_scratch_dir(), **options)
-            _copy_design_variables(prob, target, vehicle)
+            copy_design_variables(prob, target, vehicle)
             target.run_model()
-        cons = {n: m for n, m in _trim_constraints(target, [cond]).items()}
+        cons = _trim_constraints(target, [cond])
         if not cons:
             raise ValueError(f"trim: no trim constraints declared for conditions ['{cond}'].")
         variables = _trim_variables(target, vehicle, [cond])
         sol, scaled = _solve_block(target, target.model.get_design_vars(), cons, variables,
                                    tol, max_iter)
         if separate:
-            _copy_design_variables(target, prob, vehicle,
+            copy_design_variables(target, prob, vehicle,
                                    names=[n for n, _ in condition_trim_variables(vehicle, cond)])
         iterations += int(sol.njev or 0)
         start = 0
@@ -175,21 +175,6 @@ def trim(prob, conditions=None, tol=1e-10, max_iter=30, separate=True):
     return TrimResult(success=worst < 1e-6, iterations=iterations, max_residual=worst,
                       residuals=residuals,
                       message="; ".join(messages) or "all conditions trimmed")
-
-
-def _copy_design_variables(source, target, vehicle, names=None):
-    """Set the vehicle's design-variable arrays of ``target`` from ``source`` (both set up)."""
-    for name in names or vehicle.design_variables:
-        units = vehicle.design_variables[name].units
-        units = None if units == "unitless" else units
-        try:
-            value = source.get_val(name, units=units)
-        except KeyError:
-            continue
-        try:
-            target.set_val(name, value, units=units)
-        except KeyError:
-            continue
 
 
 def _solve_block(prob, dv_meta, cons, variables, tol, max_iter):

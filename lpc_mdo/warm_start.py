@@ -17,7 +17,7 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.post.statistics import process_peak_memory_mb, run_stats_path, write_run_stats
-from lpc_mdo.problems import PRESIZING, SUBPROBLEMS, build_problem
+from lpc_mdo.problems import PRESIZING, SUBPROBLEMS, build_problem, copy_design_variables
 from lpc_mdo.trim import trim
 from lpc_mdo.vehicle import load_vehicle
 
@@ -80,11 +80,7 @@ def magnitude_refs(case, vehicle, floor=1e-6):
 
 def load_design_variables(prob, case, vehicle):
     """Set every design-variable array of the vehicle file from a recorded case."""
-    outputs = case.list_outputs(out_stream=None, prom_name=True, return_format="dict")
-    recorded = {meta["prom_name"] for meta in outputs.values()}
-    for name, dv in vehicle.design_variables.items():
-        if name in recorded:
-            prob.set_val(name, np.asarray(case.get_val(name)).reshape(dv.shape))
+    copy_design_variables(case, prob, vehicle)
 
 
 def run_sequence(out_dir, names=DEFAULT_SEQUENCE, vehicle=None, static_margin=True,
