@@ -82,7 +82,10 @@ class PittPetersRotorGroup(RotorGroupBase):
     tip_loss, hub_loss : bool
         Prandtl losses (default True).
     loss_placement : str
-        'blade_element' (default, reference §9.1) or 'momentum' (see PittPetersInflowComp).
+        'momentum' (default, as the BEM) or 'blade_element' (reference §9.1); see
+        PittPetersInflowComp.
+    tangential_induction : bool
+        Wake swirl per station (default True; see PittPetersLoadsComp).
     quadrature, spline_stations : str
         'midpoint', 'as_coded' (defaults; see BladeGeometryGroup).
     body_frame : bool
@@ -94,8 +97,10 @@ class PittPetersRotorGroup(RotorGroupBase):
     def declare_model_options(self):
         self.options.declare('num_azimuth', default=25, types=int, lower=3,
                              desc='Number of azimuthal stations (>= 3)')
-        self.options.declare('loss_placement', default='blade_element', values=LOSS_PLACEMENTS,
+        self.options.declare('loss_placement', default='momentum', values=LOSS_PLACEMENTS,
                              desc="Prandtl factor on the momentum side or on the blade loads")
+        self.options.declare('tangential_induction', default=True, types=bool,
+                             desc='Wake swirl per station (as the BEM)')
 
     def add_rotor_model(self, geo):
         opts = self.options
@@ -103,7 +108,8 @@ class PittPetersRotorGroup(RotorGroupBase):
               'num_radial': opts['num_radial'], 'num_azimuth': opts['num_azimuth'],
               'num_blades': geo['num_blades'], 'spin_direction': geo['spin_direction'],
               'polar': opts['polar'], 'tip_loss': opts['tip_loss'],
-              'hub_loss': opts['hub_loss'], 'loss_placement': opts['loss_placement']}
+              'hub_loss': opts['hub_loss'], 'loss_placement': opts['loss_placement'],
+              'tangential_induction': opts['tangential_induction']}
         self.add_subsystem('inflow', PittPetersInflowComp(**pp), promotes=['*'])
         self.add_subsystem('loads', PittPetersLoadsComp(**pp), promotes=['*'])
         return True  # edgewise model: in-plane forces and hub moments

@@ -9,6 +9,7 @@ from lpc_mdo.groups.beam import beam, box_beam
 from lpc_mdo.groups.lpc import LPCGroup
 from lpc_mdo.groups.motor import MotorGroup
 from lpc_mdo.groups.motor import motor_analysis as motor
+from lpc_mdo.groups.rotor_analysis import bem, blade_stations, pitt_peters
 from lpc_mdo.groups.vehicle import VehicleGroup
 from lpc_mdo.groups.weights import WeightsGroup, calibrate_other_mass, mass_breakdown
 from lpc_mdo.problems import build_analysis_problem
@@ -18,6 +19,8 @@ __all__ = [
     "LPCGroup",
     "VehicleGroup",
     "beam",
+    "bem",
+    "blade_stations",
     "box_beam",
     "IpoptDriver",
     "IpoptMultipliers",
@@ -30,6 +33,7 @@ __all__ = [
     "make_driver",
     "mass_breakdown",
     "motor",
+    "pitt_peters",
     "reference_vehicle",
     "RotorNoiseGroup",
     "a_weighting",

@@ -14,7 +14,10 @@ of ``--repeats`` runs after one warm-up run:
 
 Usage::
 
-    python run_scripts/benchmark_pitt_peters.py [--repeats 15] [--nodes 1]
+    python run_scripts/benchmark_pitt_peters.py [--repeats 15] [--nodes 1] [--no-swirl]
+
+``--no-swirl`` runs the model without the tangential induction (reference §9.1), to see what the
+per-station swirl solve costs.
 """
 
 import argparse
@@ -30,7 +33,7 @@ from lpc_mdo.groups.rotor import rotor_options
 from lpc_mdo.vehicle import reference_vehicle
 
 
-def build_problem(num_radial=25, num_azimuth=25, num_nodes=1):
+def build_problem(num_radial=25, num_azimuth=25, num_nodes=1, tangential_induction=True):
     """Problem with the two Pitt–Peters components for the 8 lift rotors of the vehicle."""
     vehicle = reference_vehicle()
     opts = rotor_options(vehicle.lift_rotors)
@@ -38,7 +41,7 @@ def build_problem(num_radial=25, num_azimuth=25, num_nodes=1):
     condition = next(c for c in vehicle.conditions if c.name == 'transition_1')
     kw = dict(num_rotors=nr, num_nodes=num_nodes, num_radial=num_radial,
               num_azimuth=num_azimuth, num_blades=opts['num_blades'],
-              spin_direction=opts['spin_direction'])
+              spin_direction=opts['spin_direction'], tangential_induction=tangential_induction)
     prob = om.Problem(reports=False)
     prob.model.add_subsystem('inflow', PittPetersInflowComp(**kw), promotes=['*'])
     prob.model.add_subsystem('loads', PittPetersLoadsComp(**kw), promotes=['*'])
@@ -78,10 +81,11 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     parser.add_argument('--repeats', type=int, default=15, help='timed runs per measurement')
     parser.add_argument('--nodes', type=int, default=1, help='operating points per rotor')
+    parser.add_argument('--no-swirl', action='store_true', help='without tangential induction')
     args = parser.parse_args(argv)
     os.environ.setdefault('OPENMDAO_REPORTS', '0')
 
-    prob = build_problem(num_nodes=args.nodes)
+    prob = build_problem(num_nodes=args.nodes, tangential_induction=not args.no_swirl)
     comp = prob.model.inflow
     cold = np.tile([0.05, 0.0, 0.0], (8, args.nodes, 1))
     rpm = prob.get_val('rpm').copy()

@@ -68,8 +68,10 @@ def build(nr=2, nn=3, nrad=6, naz=7, **options):
 
 
 CASES = {
-    'default': {},
-    'momentum_placement': {'loss_placement': 'momentum'},
+    'default': {},   # F on the momentum side, with the tangential induction (swirl)
+    'blade_element_placement': {'loss_placement': 'blade_element'},
+    'no_swirl': {'tangential_induction': False},
+    'blade_element_no_swirl': {'loss_placement': 'blade_element', 'tangential_induction': False},
     'tip_loss_only': {'hub_loss': False},
     're_mach_polar': {'polar': ReMachPolar()},
 }

@@ -34,15 +34,15 @@ form of eq. 15 (M lambda_dot = 0)::
   with g = tan(chi/2) d = (mu_x, -s mu_y)/(V_T + lambda) the entries are L01 = -k g^T,
   L10 = k g, and the 2x2 block (4/(1 + cos chi)) I - 4 g g^T. g is smooth through hover (mu = 0),
   so the model is differentiable at zero edgewise speed.
-- F_A = 1 with the default loss_placement='blade_element' (Prandtl's F multiplies the loads,
-  reference §9.1 item 3); then in hover lambda_0 = C_T/(2 V_T) exactly, the momentum value.
-  With loss_placement='momentum', F acts where the BEM puts it, on the momentum side: F_A is the
-  Prandtl-loss-weighted disk area over pi R^2, F_A = (2/(N_psi R^2)) sum_i dr_i r_i sum_psi F
+- F_A = 1 with loss_placement='blade_element' (Prandtl's F multiplies the loads, reference
+  §9.1 item 3); then in hover lambda_0 = C_T/(2 V_T) exactly, the momentum value. With the
+  default loss_placement='momentum', F acts where the BEM puts it, on the momentum side: F_A is
+  the Prandtl-loss-weighted disk area over pi R^2, F_A = (2/(N_psi R^2)) sum_i dr_i r_i sum_psi F
   (the BEM's annulus momentum with F integrated over the disk; in hover C_T = 2 F_A lambda_0^2),
-  and the loads carry no F. Pitt–Peters neglects the tangential induction (wake swirl, §9.1
-  item 2) that the BEM includes; in hover the 'momentum' form matches a swirl-free BEM to about
-  1 %, while the default happens to be closer to the BEM with swirl (the loads' F partly stands in
-  for the swirl loss). tests/test_pitt_peters_validation.py quantifies both.
+  and the loads carry no F. With the tangential induction (``pitt_peters_loads.py``, default on)
+  this matches the BEM's hover thrust to 0.02 % on the LPC blade; without the swirl
+  (reference §9.1) it is 6.5 % high ('momentum') or 2.4 % high ('blade_element').
+  tests/test_pitt_peters_validation.py quantifies them.
 
 Solver: Newton on each rotor's 3x3 system (vectorized over rotors and operating points) with a
 backtracking line search per rotor, from the previous solution and, if that fails, from a cold
@@ -185,7 +185,9 @@ class PittPetersInflowComp(om.ImplicitComponent):
     tip_loss, hub_loss : bool
         Prandtl losses (default True).
     loss_placement : str
-        'blade_element' (default, reference §9.1) or 'momentum' (module docstring).
+        'momentum' (default) or 'blade_element' (reference §9.1); module docstring.
+    tangential_induction : bool
+        Wake swirl per station (default True; ``pitt_peters_loads.py``).
     max_iterations : int
         Newton iterations per start (default 50).
     tolerance : float
@@ -213,7 +215,7 @@ class PittPetersInflowComp(om.ImplicitComponent):
         self._momentum = opts['loss_placement'] == 'momentum'
         self._field = PittPetersBladeElements(
             (nr, nn, nrad, naz), blades, spin, opts['polar'], opts['tip_loss'], opts['hub_loss'],
-            opts['loss_placement'], owner=self.msginfo)
+            opts['loss_placement'], opts['tangential_induction'], owner=self.msginfo)
         self._loads = _LOADS if self._momentum else _LOADS[:3]
         add_pitt_peters_inputs(self, nr, nn, nrad)
         self.add_output('inflow_states', val=np.tile([0.05, 0.0, 0.0], (nr, nn, 1)), units=None,
