@@ -138,6 +138,10 @@ class LPCGroup(om.Group):
                              desc="(output, ref) of the objective; ref None = the vehicle's "
                                   "target gross mass (paper: gross mass); ('baseline', None) = "
                                   "the baseline design's penalised gross mass (eq. 8-9)")
+        self.options.declare("baseline_alpha", default=BASELINE_ALPHA, types=(int, float),
+                             lower=0.0,
+                             desc="penalty weight alpha of the baseline objective (eq. 8; paper: "
+                                  "100, chosen from a study over 1e-2 .. 1e4)")
         self.options.declare("conditions", default=None, types=(list, tuple), allow_none=True,
                              desc="names of the design conditions to include (None: all)")
         self.options.declare("design_variables", default=None, types=(list, tuple, dict),
@@ -415,7 +419,7 @@ class LPCGroup(om.Group):
             vehicle.design_variables[name].shape), _units(vehicle.design_variables[name].units))
             for name in BASELINE_SET}
         self.add_subsystem("baseline", DesignDeviationComp(
-            references=references, alpha=BASELINE_ALPHA,
+            references=references, alpha=self.options["baseline_alpha"],
             objective_ref=vehicle.masses.target_gross_mass),
             promotes_inputs=[*BASELINE_SET, ("objective", "gross_mass")],
             promotes_outputs=["baseline_objective", ("deviation", "baseline_deviation")])

@@ -62,7 +62,7 @@ def _analyze(args):
 
 
 def _optimize(args):
-    from lpc_mdo.warm_start import FULL_PROBLEMS, run_sequence, solve_stage
+    from lpc_mdo.warm_start import FULL_PROBLEMS, run_sequence, solve_baseline, solve_stage
 
     out = Path(args.output_dir)
     out.mkdir(parents=True, exist_ok=True)
@@ -81,10 +81,14 @@ def _optimize(args):
                                    **common)
             return 0 if all(r.success for r in results) else 1
         case_file = out / f"{args.problem}.sql"
-        stage = solve_stage(args.problem, str(case_file), start_case=args.start_case,
-                            optimizer=args.optimizer,
-                            rescale=args.problem in FULL_PROBLEMS and args.start_case is not None,
-                            **common)
+        if args.problem == "baseline":   # continuation in alpha (paper eq. 8)
+            stage = solve_baseline(str(case_file), start_case=args.start_case,
+                                   optimizer=args.optimizer, **common)
+        else:
+            stage = solve_stage(args.problem, str(case_file), start_case=args.start_case,
+                                optimizer=args.optimizer,
+                                rescale=(args.problem in FULL_PROBLEMS
+                                         and args.start_case is not None), **common)
     except KeyboardInterrupt:
         print("lpc-mdo: interrupted; the case files hold the iterations so far", file=sys.stderr)
         return 130

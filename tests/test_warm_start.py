@@ -55,3 +55,28 @@ def test_default_optimizers_follow_the_paper():
     assert default_optimizer("rotor_presizing") == "IPOPT"
     sqp = "SNOPT" if "SNOPT" in pyoptsparse_optimizers() else "SLSQP"
     assert default_optimizer("full") == default_optimizer("baseline") == sqp
+
+
+def test_baseline_continuation_raises_alpha_stage_by_stage(tmp_path):
+    # Two alphas, one SLSQP iteration each, no trim (machinery only; the measured runs are in
+    # the issue note): every stage writes its own case file, starts from the previous one, and
+    # its recorded objective is eq. 8 with its own alpha: f/f_ref + alpha * deviation.
+    from lpc_mdo.warm_start import solve_baseline
+
+    vehicle = reference_vehicle()
+    final = tmp_path / "baseline.sql"
+    result = solve_baseline(str(final), vehicle=vehicle, alphas=(1.0, 100.0), optimizer="SLSQP",
+                            driver_settings={"maxiter": 1}, trim_first=False,
+                            log=lambda message: None)
+    stages = result.extra["continuation"]
+    assert [s.extra["alpha"] for s in stages] == [1.0, 100.0]
+    assert stages[0].case_file == str(tmp_path / "baseline_alpha1.sql")
+    assert stages[1].case_file == str(final) and result is stages[1]
+    f_ref = vehicle.masses.target_gross_mass
+    for stage in stages:
+        case = om.CaseReader(stage.case_file).get_case("final")
+        expected = (case.get_val("gross_mass", units="kg")[0] / f_ref
+                    + stage.extra["alpha"] * case.get_val("baseline_deviation")[0])
+        assert case.get_val("baseline_objective")[0] == pytest.approx(expected, rel=1e-12)
+    with pytest.raises(ValueError, match="alphas"):
+        solve_baseline(str(final), alphas=(10.0, 1.0))
