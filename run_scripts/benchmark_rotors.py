@@ -13,7 +13,8 @@ default polar. Prints the median wall time over the repeats of
   power and the body-frame force and moment wrt radius, chord and twist control points, rpm;
   adjoint);
 
-and the rotor results. :func:`benchmark_pitt_peters` is the slot for the edgewise model.
+and the rotor results; then the Pitt–Peters edgewise model (8 x 25 x 25 stations,
+``benchmark_pitt_peters.py``).
 """
 
 import argparse
@@ -86,18 +87,6 @@ def benchmark_bem(repeats, num_nodes):
     return times
 
 
-def benchmark_pitt_peters(repeats, num_nodes):
-    """Time the Pitt–Peters edgewise model (8 lift rotors x 25 radial x 25 azimuthal stations).
-
-    Slot for the Pitt–Peters implementation (components/rotor/pitt_peters*.py): build the same
-    8 lift rotors with the blade geometry of BladeGeometryGroup (outputs radius, hub_radius,
-    station_radius, station_width, chord, twist, azimuth), time run_model, run_linearize and
-    compute_totals as :func:`benchmark_bem` does, print and return the timings. Returns None
-    until then.
-    """
-    return None
-
-
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument('--repeats', type=int, default=30, help='timed repetitions (>= 1)')
@@ -107,8 +96,9 @@ def main(argv=None):
         parser.error(f"--repeats = {args.repeats} and --num-nodes = {args.num_nodes}; both "
                      "must be >= 1")
     benchmark_bem(args.repeats, args.num_nodes)
-    if benchmark_pitt_peters(args.repeats, args.num_nodes) is None:
-        print('Pitt-Peters benchmark: not implemented yet (benchmark_pitt_peters).')
+    import benchmark_pitt_peters  # the sibling run script (this script's folder is on sys.path)
+
+    benchmark_pitt_peters.main(['--repeats', str(args.repeats), '--nodes', str(args.num_nodes)])
 
 
 if __name__ == '__main__':
