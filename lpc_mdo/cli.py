@@ -109,7 +109,7 @@ def _sweep(args):
                        static_margins=margins, vehicle=args.vehicle, processes=args.processes,
                        mpi=args.mpi, driver_settings={"max_iter": args.max_iter,
                                                       "print_level": 0},
-                       problem=args.problem)
+                       optimizer=args.optimizer, problem=args.problem)
     if points is None:   # an MPI rank other than 0
         return 0
     for p in points:
@@ -182,6 +182,8 @@ def main(argv=None):
     sweep.add_argument("--problem", default="full", choices=PROBLEM_NAMES,
                        help="problem each point solves (default: full)")
     sweep.add_argument("--max-iter", type=int, default=200, help="iteration limit per point")
+    sweep.add_argument("--optimizer", default=None, choices=("IPOPT", "SNOPT", "SLSQP"),
+                       help="default: as optimize (SNOPT if pyoptsparse has it, else SLSQP)")
     sweep.add_argument("--vehicle", default=None, help="vehicle TOML file")
     sweep.add_argument("--output-dir", default="sweep_out", help="folder for case files")
     sweep.set_defaults(func=_sweep)

@@ -135,7 +135,7 @@ def run_chain(task):
 
 def run_sweep(out_dir, start_case, parameters=("energy_density", "final_soc"), values=None,
               static_margins=(True, False), vehicle=None, processes=1, mpi=False,
-              driver_settings=None, optimizer="IPOPT", problem="full"):
+              driver_settings=None, optimizer=None, problem="full"):
     """
     Run sweeps of the full problem (module docstring) and write ``sweep_summary.csv``.
 
@@ -160,7 +160,9 @@ def run_sweep(out_dir, start_case, parameters=("energy_density", "final_soc"), v
         summary and returns the points, the other ranks return None.
     driver_settings : dict or None
         make_driver settings (default: 200 iterations).
-    optimizer : str
+    optimizer : str or None
+        None: :func:`lpc_mdo.warm_start.default_optimizer` of the problem (as ``lpc-mdo
+        optimize``: SNOPT if pyoptsparse has it, else SLSQP, for the full problem).
     problem : str
         The problem each point solves (default: the full problem, as in the paper).
 

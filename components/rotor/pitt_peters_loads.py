@@ -68,7 +68,7 @@ RPM_TO_RAD_S = np.pi / 30.0
 _TWO_OVER_PI = 2.0 / np.pi
 _ABS_SIN_FLOOR = 1.0e-9  # |sin phi| floor in the Prandtl exponent (F = 1 to all digits there)
 _SWIRL_MAX_ITERATIONS = 30
-_SWIRL_TOLERANCE = 1.0e-13   # last Newton step on v_t, relative to max |U_T| + 1 m/s
+_SWIRL_TOLERANCE = 1.0e-12   # Newton step on v_t left, relative to max |U_T| + 1 m/s
 
 #: Inputs: name -> (kind, units, default, description). Kinds: 'op' (num_rotors, num_nodes),
 #: 'rotor' (num_rotors,), 'radial' (num_rotors, num_radial), 'node' (num_nodes,).
@@ -405,11 +405,15 @@ class PittPetersBladeElements:
                     "U_m near zero, e.g. axial descent into the vortex-ring state); set option "
                     "tangential_induction=False to neglect the swirl.")
             step = res / jac
-            vt = vt - step
             if not np.all(np.isfinite(step)):
                 break
-            if np.max(np.abs(step)) <= _SWIRL_TOLERANCE * scale:
+            if np.max(np.abs(np.real(step))) <= _SWIRL_TOLERANCE * scale:
+                if not np.iscomplexobj(step):
+                    return vt, sec      # converged: the step left is below the tolerance
+                # complex step: the imaginary part (the derivative) takes one more step
+                vt = vt - step
                 return vt, self._section(geo, ut - vt)
+            vt = vt - step
         raise om.AnalysisError(
             f"{self.owner}: the tangential-induction (swirl) Newton did not converge in "
             f"{_SWIRL_MAX_ITERATIONS} iterations (last step {np.max(np.abs(step)):.3g} m/s).")
