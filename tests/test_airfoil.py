@@ -274,3 +274,36 @@ def test_table_polar_validates_its_input():
         TablePolar(a[::-1], [1e6], [0.0], 0.1 * a, 0.01 + 0 * a)
     with pytest.raises(ValueError, match=r"cl shape"):
         TablePolar(a, [1e6, 2e6], [0.0], 0.1 * a, 0.01 + 0 * a)
+
+
+def test_repeated_conditions_reuse_the_cached_re_mach_contraction():
+    # The fixed-condition cache (blade-element solvers evaluate the polar many times at the same
+    # Reynolds and Mach numbers) gives the uncached tensor-product sums to round-off: a first
+    # call, a call whose angles moved within their alpha windows and one whose angles moved to
+    # other windows; the complex (complex-step) path never uses the cache. Pickling drops it.
+    import pickle
+
+    from lpc_mdo.components.aero.airfoil import _alpha_hermite_weights, tensor_eval, wrap_angle
+
+    polar = TablePolar.from_npz(airfoil_table_path("ls417"))
+    rng = np.random.default_rng(3)
+    n = 400
+    re, mach = rng.uniform(2e5, 8e6, n), rng.uniform(0.0, 0.6, n)
+    alpha0 = rng.uniform(-0.4, 0.5, n)
+    for alpha in (alpha0, alpha0 + 1e-6, alpha0 + 0.3, alpha0 - 3.0):
+        got = polar.evaluate(alpha, re, mach)
+        (ir, wr, dwr), (im, wm, dwm) = polar._conditions(re, mach)
+        ia, wa, dwa = _alpha_hermite_weights(polar.alpha_grid, wrap_angle(alpha))
+        v, d_a, d_r, d_m = tensor_eval(polar._composite_table, (ia, ir, im), (wa, wr, wm),
+                                       (dwa, dwr, dwm))
+        for f, name in enumerate(("cl", "cd")):   # d/dRe as d/dln(Re): all of order 1
+            for value, ref in ((getattr(got, name), v[:, f]),
+                               (getattr(got, f"d{name}_dalpha"), d_a[:, f]),
+                               (getattr(got, f"d{name}_dreynolds") * re, d_r[:, f] * re),
+                               (getattr(got, f"d{name}_dmach"), d_m[:, f])):
+                np.testing.assert_allclose(value, ref, rtol=1e-12, atol=1e-13)
+    assert len(polar._condition_caches) == 1
+    complex_values = polar.evaluate(alpha0 + 0j, re + 0j, mach)
+    np.testing.assert_allclose(np.real(complex_values.cl), polar.evaluate(alpha0, re, mach).cl,
+                               rtol=1e-12)
+    assert "_condition_caches" not in pickle.loads(pickle.dumps(polar)).__dict__

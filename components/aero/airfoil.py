@@ -241,6 +241,47 @@ def _alpha_hermite_weights(grid, a):
     return 2 * k[:, None] + np.arange(4), w, dw
 
 
+class _FixedConditions:
+    """
+    A TablePolar's (Re, M) interpolation at fixed query conditions, cached.
+
+    The blade-element solvers evaluate the polar many times at the same Reynolds and Mach
+    numbers (taken from the undisturbed velocity) while only the angle of attack changes: the
+    BEM bracket, the Pitt–Peters inflow Newton and its per-station swirl Newton. For each query
+    this keeps the (Re, M) weights and the table contracted over Re and M on the query's current
+    alpha window (value, d/dRe, d/dM at the window's 4 Hermite nodes), so a repeated evaluation
+    only contracts over alpha; queries whose window moved are recontracted. The sums are the
+    same as :func:`tensor_eval`'s, in another order (equal to round-off).
+    """
+
+    def __init__(self, polar, reynolds, mach):
+        self.reynolds, self.mach = reynolds.copy(), mach.copy()
+        (self.ir, self.wr, self.dwr), (self.im, self.wm, self.dwm) = polar._conditions(reynolds,
+                                                                                      mach)
+        self.window = np.full(reynolds.size, -1)
+        self.contracted = np.zeros((reynolds.size, 4, polar._composite_table.shape[-1], 3))
+
+    def matches(self, reynolds, mach):
+        return (reynolds.shape == self.reynolds.shape and np.array_equal(reynolds, self.reynolds)
+                and np.array_equal(mach, self.mach))
+
+    def contract(self, table, ia):
+        """(N, 4, n_values, 3): value, d/dRe, d/dM on each query's alpha window ``ia``."""
+        stale = np.flatnonzero(ia[:, 0] != self.window)
+        if stale.size:
+            ir, im = self.ir[stale], self.im[stale]
+            g = table[ia[stale][:, :, None, None], ir[:, None, :, None], im[:, None, None, :]]
+            wr, dwr, wm, dwm = self.wr[stale], self.dwr[stale], self.wm[stale], self.dwm[stale]
+            for j, (u, v) in enumerate(((wr, wm), (dwr, wm), (wr, dwm))):
+                self.contracted[stale, :, :, j] = np.einsum("nabc...,nb,nc->na...", g, u, v)
+            self.window[stale] = ia[stale, 0]
+        return self.contracted
+
+
+#: Fixed-condition caches kept per TablePolar (the most recently used ones).
+_CONDITION_CACHE_SIZE = 16
+
+
 # ------------------------------------------------------------------------------------------------
 
 
@@ -475,6 +516,23 @@ class TablePolar(Polar):
 
     # ------------------------------------------------------------------------------ evaluation
 
+    def _fixed_conditions(self, reynolds, mach):
+        """The cached :class:`_FixedConditions` of these query conditions (made if new)."""
+        caches = self.__dict__.setdefault("_condition_caches", [])
+        for k, cache in enumerate(caches):
+            if cache.matches(reynolds, mach):
+                caches.append(caches.pop(k))          # most recently used last
+                return cache
+        cache = _FixedConditions(self, reynolds, mach)
+        caches.append(cache)
+        del caches[:-_CONDITION_CACHE_SIZE]
+        return cache
+
+    def __getstate__(self):
+        state = dict(self.__dict__)
+        state.pop("_condition_caches", None)        # a cache, not part of the polar
+        return state
+
     def _conditions(self, reynolds, mach):
         ir, wr, dwr = self._re_axis.weights(reynolds)
         im, wm, dwm = self._mach_axis.weights(mach)
@@ -485,9 +543,17 @@ class TablePolar(Polar):
                                                     np.asarray(mach))
         shape = alpha.shape
         a = wrap_angle(alpha).ravel()
-        (ir, wr, dwr), (im, wm, dwm) = self._conditions(reynolds.ravel(), mach.ravel())
         ia, wa, dwa = _alpha_hermite_weights(self.alpha_grid, a)
-        values = tensor_eval(self._composite_table, (ia, ir, im), (wa, wr, wm), (dwa, dwr, dwm))
+        re, m = reynolds.ravel(), mach.ravel()
+        if np.iscomplexobj(re) or np.iscomplexobj(m):
+            (ir, wr, dwr), (im, wm, dwm) = self._conditions(re, m)
+            values = tensor_eval(self._composite_table, (ia, ir, im), (wa, wr, wm),
+                                 (dwa, dwr, dwm))
+        else:
+            c = self._fixed_conditions(re, m).contract(self._composite_table, ia)
+            value = np.einsum("nasj,na->nsj", c, wa)
+            values = (value[..., 0], np.einsum("nas,na->ns", c[..., 0], dwa), value[..., 1],
+                      value[..., 2])
         out = [v[:, f].reshape(shape) for f in (0, 1) for v in values]
         return PolarValues(cl=out[0], dcl_dalpha=out[1], dcl_dreynolds=out[2], dcl_dmach=out[3],
                            cd=out[4], dcd_dalpha=out[5], dcd_dreynolds=out[6], dcd_dmach=out[7])
