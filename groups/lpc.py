@@ -455,6 +455,8 @@ class LPCGroup(om.Group):
             promotes_inputs=["battery_mass", "energy_used"],
             promotes_outputs=["state_of_charge", "energy_capacity"],
         )
+        self.set_input_defaults("battery.specific_energy", vehicle.battery.energy_density,
+                                units="J/kg")
 
         lift = [c for c in conditions if c.kind in ("hover", "oei", "transition")]
         push = [c for c in conditions if c.kind in ("transition", "steady")]

@@ -38,6 +38,26 @@ def test_sweep_vehicle_changes_one_parameter():
         sweep_vehicle(vehicle, "wing_area", 1.0)
 
 
+def test_swept_parameters_reach_the_model():
+    # The energy density of the vehicle file is the battery's specific energy (it was once left
+    # at the component default, 400 Wh/kg, so an energy-density sweep changed nothing), and the
+    # final-SoC limit is the SoC constraint's lower bound.
+    import openmdao.api as om
+
+    from lpc_mdo.groups.lpc import LPCGroup
+
+    base = reference_vehicle()
+    vehicle = sweep_vehicle(sweep_vehicle(base, "energy_density", 300.0), "final_soc", 0.3)
+    prob = om.Problem(LPCGroup(vehicle=vehicle, conditions=["cruise"]), reports=False)
+    prob.setup()
+    prob.run_model()
+    mass = prob.get_val("battery_mass", units="kg")[0]
+    assert prob.get_val("energy_capacity", units="W*h")[0] == pytest.approx(300.0 * mass,
+                                                                           rel=1e-12)
+    soc = prob.model.get_constraints()["state_of_charge"]
+    assert soc["lower"] == pytest.approx(0.3)
+
+
 @pytest.fixture(scope="module")
 def start_case(tmp_path_factory):
     pytest.importorskip("cyipopt")
