@@ -49,17 +49,23 @@ from lpc_mdo.groups.beam import BoxBeamGroup
 from lpc_mdo.groups.motor import MotorGroup
 from lpc_mdo.groups.pitt_peters import PittPetersRotorGroup
 from lpc_mdo.groups.rotor import BEMRotorGroup
-from lpc_mdo.groups.vehicle import motor_parameters
+from lpc_mdo.groups.vehicle import motor_loadings, motor_parameters
 from lpc_mdo.groups.vlm import VLMGroup, lpc_vlm_surfaces
+from lpc_mdo.vehicle import check_hover_pitch
 
 NUM_CP = 4
+#: Rotor section t/c of the thickness noise when a rotor's airfoil is a polar file (NACA 0012).
+DEFAULT_ROTOR_THICKNESS_TO_CHORD = 0.12
 
 
 def _declare_common(group):
     group.options.declare("vehicle", desc="lpc_mdo.vehicle.Vehicle")
     group.options.declare("condition", types=str, desc="condition name in the vehicle file")
     group.options.declare("rotor_polar", default=LinearQuadraticPolar(), types=Polar,
-                          desc="blade-section polar of the rotors")
+                          desc="blade-section polar of the lift rotors (and of the pusher when "
+                               "'pusher_polar' is None)")
+    group.options.declare("pusher_polar", default=None, types=Polar, allow_none=True,
+                          desc="blade-section polar of the pusher (None: 'rotor_polar')")
     group.options.declare("num_radial", default=25, types=int, lower=2,
                           desc="radial stations of the rotor models")
 
@@ -80,7 +86,7 @@ def _add_motors(group, vehicle, prefix, num_motors):
                         promotes_inputs=[("rotor_torque", f"{prefix}_torque")])
     group.add_subsystem(f"{prefix}_motors", MotorGroup(
         num_motors=num_motors, num_nodes=1, length_to_diameter=vehicle.motor.length_to_diameter,
-        parameters=motor_parameters(vehicle)),
+        parameters=motor_parameters(vehicle), **motor_loadings(vehicle)),
         promotes_inputs=[("length", f"{prefix}_motor_length"), ("rotor_rpm", f"{prefix}_rpm")],
         promotes_outputs=[(name, f"{prefix}_motor_{name}") for name in
                           ("input_power", "em_torque", "torque_margin", "peak_torque")])
@@ -122,8 +128,9 @@ def _add_pusher(group, vehicle):
     """The pusher by BEM with its motor, promoted as ``pusher_*``."""
     opts = group.options
     pusher = vehicle.pusher
+    polar = opts["rotor_polar"] if opts["pusher_polar"] is None else opts["pusher_polar"]
     group.add_subsystem("pusher", BEMRotorGroup(
-        rotors=[pusher], num_nodes=1, num_radial=opts["num_radial"], polar=opts["rotor_polar"]),
+        rotors=[pusher], num_nodes=1, num_radial=opts["num_radial"], polar=polar),
         promotes_inputs=[("radius", "pusher_radius"), ("chord_cp", "pusher_chord_cp"),
                          ("twist_cp", "pusher_twist_cp"), ("rpm", "pusher_rpm"),
                          ("hub_position", "pusher_hub_position"), "velocity", "density",
@@ -225,6 +232,13 @@ class HoverCondition(om.Group):
     seven working rotors have their own speeds (one speed group each), while in hover the
     mirror-symmetric pairs share theirs. Trim: all six accelerations are outputs; the full
     problem constrains w_dot, p_dot, q_dot in hover and v_dot, w_dot, p_dot, q_dot, r_dot in OEI.
+    The body is level (``pitch`` = 0): a condition with another pitch is a VehicleSpecError
+    (see :func:`lpc_mdo.vehicle.check_hover_pitch`).
+
+    The noise model (hover) takes from the vehicle the observer (``noise_observer.distance``,
+    ``noise_observer.elevation`` -> ``observer_distance``, ``observer_elevation``; the azimuth
+    stays aft, 180 deg) and each lift rotor's section t/c (``lift_rotors[i].airfoil`` ->
+    ``lift_thickness_to_chord``, of the thickness noise).
 
     Outputs: ``linear_acceleration``, ``angular_acceleration`` (1, 3); ``electrical_power``
     (1,); ``lift_tip_mach``, ``lift_figure_of_merit``, ``lift_motor_torque_margin``,
@@ -239,6 +253,8 @@ class HoverCondition(om.Group):
     def setup(self):
         vehicle = self.options["vehicle"]
         condition = vehicle.condition(self.options["condition"])
+        # A Vehicle built in code (dataclasses.replace) skips the file validation: check again.
+        check_hover_pitch(vehicle.conditions.index(condition), condition)
         failed = condition.failed_rotor
         self.active_rotors = [i for i in range(len(vehicle.lift_rotors)) if i != failed]
         rotors = [vehicle.lift_rotors[i] for i in self.active_rotors]
@@ -253,7 +269,7 @@ class HoverCondition(om.Group):
         self.set_input_defaults("velocity", np.zeros((1, 3)), units="m/s")
         _add_power(self, {"lift": len(rotors)})
         _add_equations_of_motion(self, ["lift"])
-        self.set_input_defaults("pitch", np.zeros(1), units="rad")
+        self.set_input_defaults("pitch", np.array([condition.pitch]), units="rad")  # 0, checked
 
         acoustics = self.options["acoustics"]
         if acoustics is None:
@@ -267,8 +283,19 @@ class HoverCondition(om.Group):
                 hub_radius_ratio=rotors[0].hub_radius_ratio, load_input="sectional",
                 rotation_direction=tuple(float(r.spin_direction) for r in rotors)),
                 promotes_inputs=[("radius", "lift_radius"), ("hub_position", "lift_hub_position"),
-                                 "density", "speed_of_sound"],
+                                 "density", "speed_of_sound", "observer_distance",
+                                 "observer_elevation",
+                                 ("thickness_to_chord", "lift_thickness_to_chord")],
                 promotes_outputs=["total_spl_a", "total_spl", "rotor_spl_a"])
+            observer = vehicle.noise_observer
+            self.set_input_defaults("observer_distance", np.array([observer.distance]),
+                                    units="m")
+            self.set_input_defaults("observer_elevation", np.array([observer.elevation]),
+                                    units="rad")
+            # Each rotor's section t/c at every acoustic station (rotor, station).
+            thickness = [_rotor_thickness_to_chord(vehicle, i) for i in self.active_rotors]
+            self.set_input_defaults("lift_thickness_to_chord",
+                                    np.repeat(np.array(thickness)[:, None], nrad, axis=1))
             # (rotor, node = 0, station) of the BEM -> (rotor, station, azimuth = 0) of the
             # acoustics: a fancy index of the source shaped like the target.
             rotor, station = np.meshgrid(np.arange(na), np.arange(nrad), indexing="ij")
@@ -280,6 +307,22 @@ class HoverCondition(om.Group):
                          flat_src_indices=True)
             self.connect("lift_rpm", "noise.rpm", src_indices=np.arange(na),
                          flat_src_indices=True)
+
+
+def _rotor_thickness_to_chord(vehicle, index):
+    """Section t/c of ``vehicle.lift_rotors[index]`` for the thickness noise.
+
+    A named airfoil gives its t/c (``lpc_mdo.vehicle.AIRFOILS``); a user polar file has none, so
+    the noise model then uses that of NACA 0012 (the reference rotor section), with a warning
+    naming the field.
+    """
+    rotor = vehicle.lift_rotors[index]
+    if rotor.thickness_to_chord is not None:
+        return rotor.thickness_to_chord
+    om.issue_warning(f"'lift_rotors[{index}].airfoil' = {rotor.airfoil!r} is a polar file, "
+                     f"which gives no thickness: the thickness noise uses t/c = "
+                     f"{DEFAULT_ROTOR_THICKNESS_TO_CHORD} (NACA 0012)")
+    return DEFAULT_ROTOR_THICKNESS_TO_CHORD
 
 
 class SteadyFlightCondition(om.Group):
@@ -345,7 +388,10 @@ class StructuralCondition(om.Group):
     stress ratios, the buckling ratios (all bays but the tip bay) and the vertical tip-ward
     displacement in the direction of the load (-w at positive, +w at negative load factor) are
     also aggregated by KS (paper eq. 7): ``stress_ratio_ks``, ``top_skin_buckling_ratio_ks``,
-    ``bottom_skin_buckling_ratio_ks``, ``displacement_ks`` (m).
+    ``bottom_skin_buckling_ratio_ks``, ``displacement_ks`` (m). The beam's material is the
+    vehicle's ``[material]``: inputs ``material_youngs_modulus``, ``material_shear_modulus``,
+    ``material_density`` (the box's own weight), ``material_poisson_ratio`` and
+    ``material_allowable_stress``.
     """
 
     def initialize(self):
@@ -378,8 +424,7 @@ class StructuralCondition(om.Group):
                                             "box_height", "top_skin_thickness",
                                             "bottom_skin_thickness", "front_spar_thickness",
                                             "rear_spar_thickness", "top_skin_radius",
-                                            "bottom_skin_radius", "load_factor", "pitch",
-                                            ("density", "material_density")],
+                                            "bottom_skin_radius", "load_factor", "pitch"],
                            promotes_outputs=["von_mises_stress", "top_skin_buckling_ratio",
                                              "bottom_skin_buckling_ratio", "displacements",
                                              "rotations", "stress_ratio"])
@@ -389,7 +434,8 @@ class StructuralCondition(om.Group):
                      src_indices=om.slicer[0, n_wing // 2:n_wing, :])
         material = vehicle.material
         for name, units in (("youngs_modulus", "Pa"), ("shear_modulus", "Pa"),
-                            ("poisson_ratio", None), ("allowable_stress", "Pa")):
+                            ("density", "kg/m**3"), ("poisson_ratio", None),
+                            ("allowable_stress", "Pa")):
             self.promotes("beam", inputs=[(name, f"material_{name}")])
             self.set_input_defaults(f"material_{name}", getattr(material, name), units=units)
         if rho is not None:

@@ -17,7 +17,7 @@ from lpc_mdo.groups.conditions import (
     TransitionCondition,
 )
 from lpc_mdo.groups.vehicle import VehicleGroup
-from lpc_mdo.vehicle import reference_vehicle
+from lpc_mdo.vehicle import VehicleSpecError, reference_vehicle
 
 PUSHER = 4  # row of the pusher in the per-rotor-group design variables
 CONSTRAINT_KINDS = ("trim", "noise", "tip_mach", "static_margin", "buckling", "soc",
@@ -81,7 +81,9 @@ class LPCGroup(om.Group):
     design_problem : bool
         Declare design variables, constraints and objective.
     rotor_polar : Polar or None
-        Blade-section polar of all rotors (None: the vehicle rotor airfoil's table).
+        Blade-section polar of all rotors (None: the lift rotors use the table of their
+        ``lift_rotors[i].airfoil``, which must be the same for all eight, and the pusher that of
+        ``pusher.airfoil``).
     wing_zero_lift_angle : float or None
         Sectional zero-lift angle of the wing airfoil, rad (None: from its table).
     ks_rho : float
@@ -174,7 +176,7 @@ class LPCGroup(om.Group):
         # In the vehicle file's order, so the mission bookkeeping is stable.
         self.conditions = [c for c in vehicle.conditions
                            if chosen is None or c.name in chosen]
-        polar, alpha0 = _airfoil_models(
+        polar, pusher_polar, alpha0 = _airfoil_models(
             vehicle, self.options["rotor_polar"], self.options["wing_zero_lift_angle"]
         )
 
@@ -191,7 +193,8 @@ class LPCGroup(om.Group):
         self.condition_names = []
         for condition in self.conditions:
             kind = condition.kind
-            kwargs = {"vehicle": vehicle, "condition": condition.name, "rotor_polar": polar}
+            kwargs = {"vehicle": vehicle, "condition": condition.name, "rotor_polar": polar,
+                      "pusher_polar": pusher_polar}
             if kind in ("transition", "steady", "structural"):
                 kwargs["wing_zero_lift_angle"] = alpha0
             if kind == "structural":
@@ -457,6 +460,7 @@ class LPCGroup(om.Group):
         )
         self.set_input_defaults("battery.specific_energy", vehicle.battery.energy_density,
                                 units="J/kg")
+        self.set_input_defaults("battery.initial_soc", vehicle.battery.initial_soc)
 
         lift = [c for c in conditions if c.kind in ("hover", "oei", "transition")]
         push = [c for c in conditions if c.kind in ("transition", "steady")]
@@ -557,13 +561,32 @@ def zero_lift_angle(polar, reynolds, mach):
 
 
 def _airfoil_models(vehicle, rotor_polar, wing_zero_lift_angle):
-    """The rotor polar and the wing's sectional zero-lift angle from the airfoil tables."""
+    """
+    The lift-rotor polar, the pusher polar and the wing's sectional zero-lift angle.
+
+    A given ``rotor_polar`` serves every rotor; otherwise the lift rotors take the table of their
+    airfoil and the pusher that of its own. One lift-rotor polar serves all eight lift rotors
+    (one BEM/Pitt-Peters call per condition), so lift rotors with different airfoils are a
+    VehicleSpecError naming the first that differs from ``lift_rotors[0]``.
+    """
     if rotor_polar is not None and wing_zero_lift_angle is not None:
-        return rotor_polar, wing_zero_lift_angle
+        return rotor_polar, rotor_polar, wing_zero_lift_angle
     from lpc_mdo.components.aero.airfoil import get_polar
 
     if rotor_polar is None:
-        rotor_polar = get_polar(vehicle.lift_rotors[0].airfoil)
+        first = vehicle.lift_rotors[0].airfoil
+        for i, rotor in enumerate(vehicle.lift_rotors):
+            if rotor.airfoil != first:
+                raise VehicleSpecError(
+                    f"'lift_rotors[{i}].airfoil' = {rotor.airfoil!r} differs from "
+                    f"'lift_rotors[0].airfoil' = {first!r}; allowed: one airfoil for all lift "
+                    f"rotors (the model evaluates them with one polar), or pass LPCGroup option "
+                    f"'rotor_polar'"
+                )
+        rotor_polar = get_polar(first)
+        pusher_polar = get_polar(vehicle.pusher.airfoil)
+    else:
+        pusher_polar = rotor_polar
     if wing_zero_lift_angle is None:
         # At the cruise condition's Reynolds and Mach numbers on the wing MAC.
         cruise = vehicle.condition("cruise")
@@ -571,4 +594,4 @@ def _airfoil_models(vehicle, rotor_polar, wing_zero_lift_angle):
         reynolds = rho * cruise.speed * vehicle.wing.mean_aerodynamic_chord / mu
         wing_zero_lift_angle = zero_lift_angle(get_polar(vehicle.wing.airfoil), reynolds,
                                                cruise.speed / a)
-    return rotor_polar, wing_zero_lift_angle
+    return rotor_polar, pusher_polar, wing_zero_lift_angle

@@ -26,6 +26,12 @@ def _check_ratio(name, value):
                          "(0, inf) (or None to make diameter an input).")
 
 
+def _check_loading(name, value):
+    if isinstance(value, bool) or not (np.isfinite(value) and value > 0.0):
+        raise ValueError(f"MotorGroup option '{name}' = {value!r} is outside the allowed range "
+                         "(0, inf).")
+
+
 def _declare_options(group):
     group.options.declare('num_motors', default=1, types=int, lower=1,
                           desc='Number of motors (different designs) evaluated at once')
@@ -67,9 +73,9 @@ class MotorGroup(om.Group):
     diameter : float, (num_motors,), m
         Outer stator diameter; an input only with ``length_to_diameter`` None.
     electric_loading : float, (num_motors,), A/m
-        Electric loading A_bar. Default 30e3.
+        Electric loading A_bar. Default: the option ``electric_loading``.
     magnetic_loading : float, (num_motors,), T
-        Magnetic loading B_bar. Default 0.85.
+        Magnetic loading B_bar. Default: the option ``magnetic_loading``.
     rotor_torque : float, (num_motors, num_nodes), N*m
         Required rotor torque at each operating point.
     rotor_rpm : float, (num_motors, num_nodes), rpm
@@ -97,6 +103,12 @@ class MotorGroup(om.Group):
         L/D ratio tying D to L (> 0). Default 0.5 (paper). None: diameter is an input.
     parameters : MotorParameters
         Fixed motor parameters (pole pairs, gear ratio, voltage limit, ...).
+    electric_loading : float
+        Default of the input ``electric_loading``, A/m (> 0). Default 30e3; a vehicle's value
+        is ``vehicle.motor.electric_loading`` (``lpc_mdo.groups.vehicle.motor_loadings``).
+    magnetic_loading : float
+        Default of the input ``magnetic_loading``, T (> 0). Default 0.85; a vehicle's value is
+        ``vehicle.motor.magnetic_loading``.
     include_torque_limit : bool
         Compute the voltage-limited torque and its margin. Default True.
     """
@@ -108,6 +120,12 @@ class MotorGroup(om.Group):
                              desc='L/D ratio tying D to L (> 0); None makes diameter an input')
         self.options.declare('include_torque_limit', default=True, types=bool,
                              desc='Compute the voltage-limited torque and its margin')
+        self.options.declare('electric_loading', default=30.0e3, types=(int, float),
+                             check_valid=_check_loading,
+                             desc='Default of the input electric_loading, A/m (> 0)')
+        self.options.declare('magnetic_loading', default=0.85, types=(int, float),
+                             check_valid=_check_loading,
+                             desc='Default of the input magnetic_loading, T (> 0)')
 
     def setup(self):
         nm, nn = self.options['num_motors'], self.options['num_nodes']
@@ -132,6 +150,10 @@ class MotorGroup(om.Group):
                                                       **points), promotes=['*'])
 
         self.set_input_defaults('length', 0.1 * np.ones(nm), units='m')
+        self.set_input_defaults('electric_loading',
+                                np.full(nm, float(self.options['electric_loading'])), units='A/m')
+        self.set_input_defaults('magnetic_loading',
+                                np.full(nm, float(self.options['magnetic_loading'])), units='T')
         if self.options['length_to_diameter'] is None:
             self.set_input_defaults('diameter', 0.2 * np.ones(nm), units='m')
         self.set_input_defaults('rotor_torque', 500.0 * np.ones((nm, nn)), units='N*m')

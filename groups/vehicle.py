@@ -30,6 +30,9 @@ VEHICLE_DESIGN_VARIABLES = {
     "rear_spar_thickness": "m", "top_skin_thickness": "m", "bottom_skin_thickness": "m",
 }
 
+# Units of the motor loadings (the inputs of MotorSizingComp).
+MOTOR_LOADING_UNITS = {"electric_loading": "A/m", "magnetic_loading": "T"}
+
 
 def motor_parameters(vehicle):
     """The PMSM's fixed parameters from the vehicle file's [motor] table."""
@@ -37,6 +40,13 @@ def motor_parameters(vehicle):
     return MotorParameters(pole_pairs=m.pole_pairs, phases=m.num_phases, num_slots=m.num_slots,
                            rated_current=m.rated_current, voltage_limit=m.voltage_limit,
                            gear_ratio=m.gear_ratio, torque_density=m.torque_density)
+
+
+def motor_loadings(vehicle):
+    """The electric and magnetic loadings (A/m, T) of the vehicle file's [motor] table, as
+    keyword arguments of :class:`~lpc_mdo.groups.motor.MotorGroup`."""
+    m = vehicle.motor
+    return {"electric_loading": m.electric_loading, "magnetic_loading": m.magnetic_loading}
 
 
 class VehicleGroup(om.Group):
@@ -57,9 +67,11 @@ class VehicleGroup(om.Group):
       ``horizontal_tail_mesh`` (cosine span-wise spacing, one chord-wise panel);
     - ``rotor_layout`` (RotorLayoutComp): hub positions, radii, radius intersection;
     - ``wing_box`` (WingBoxGeometryComp), ``box_section`` (BoxSectionComp), ``box_mass``
-      (BeamMassComp), ``wing_mirror`` (WingMirrorComp): the beam of one half wing, its mass and
-      the whole wing's mass and cg;
-    - ``motor_sizing`` (MotorSizingComp, one motor per rotor group): motor masses (eq. 23);
+      (BeamMassComp), ``wing_mirror`` (WingMirrorComp): the beam of one half wing (the
+      vehicle's taper, sweep, dihedral, incidence and root leading edge), its mass and the whole
+      wing's mass and cg;
+    - ``motor_sizing`` (MotorSizingComp, one motor per rotor group): motor masses (eq. 23),
+      with the vehicle's electric and magnetic loadings;
     - ``weights`` (WeightsGroup): regressions, gross mass (objective), cg, inertia.
 
     Inputs (promoted): the design variables in ``VEHICLE_DESIGN_VARIABLES`` (the wing-box
@@ -130,9 +142,13 @@ class VehicleGroup(om.Group):
         self.add_subsystem("rotor_layout", RotorLayoutComp(vehicle=vehicle), promotes=["*"])
 
         nodes = vehicle.wing_box.num_bays + 1
+        # The wing box shares the VLM mesh's sweep, dihedral, incidence and root leading edge
+        # (promoted inputs, defaults set above); the taper ratio is an option of the planform
+        # sizing, so the box's own input keeps the vehicle's value (its default from ``wing``).
         self.add_subsystem("wing_box", WingBoxGeometryComp(
-            num_nodes=nodes, section=wing_box_section(vehicle)),
-            promotes_inputs=["wing_area", "wing_aspect_ratio"],
+            num_nodes=nodes, section=wing_box_section(vehicle), wing=wing),
+            promotes_inputs=["wing_area", "wing_aspect_ratio", "wing_sweep", "wing_dihedral",
+                             "wing_incidence", "wing_root_leading_edge"],
             promotes_outputs=[("nodes", "wing_box_nodes"), "box_width", "box_height",
                               "top_skin_radius", "bottom_skin_radius"])
         self.add_subsystem("box_section", BoxSectionComp(num_elements=nodes - 1),
@@ -145,8 +161,9 @@ class VehicleGroup(om.Group):
         self.add_subsystem("wing_mirror", WingMirrorComp(), promotes=["*"])
 
         groups = motor_group_indices(vehicle)
+        num_groups = 5  # motor designs: one per rotor group (four lift pairs, the pusher)
         self.add_subsystem("motor_sizing", MotorSizingComp(
-            num_motors=5, length_to_diameter=vehicle.motor.length_to_diameter,
+            num_motors=num_groups, length_to_diameter=vehicle.motor.length_to_diameter,
             parameters=motor_parameters(vehicle)),
             promotes_inputs=[("length", "motor_length")],
             promotes_outputs=[("mass", "motor_group_mass"),
@@ -155,6 +172,9 @@ class VehicleGroup(om.Group):
                                                    other_cg=other_cg),
                            promotes=["*"])
         self.connect("motor_group_mass", "motor_mass", src_indices=groups)
+        for name, value in motor_loadings(vehicle).items():
+            self.set_input_defaults(f"motor_sizing.{name}", np.full(num_groups, value),
+                                    units=MOTOR_LOADING_UNITS[name])
 
         self.set_input_defaults("material_density", vehicle.material.density, units="kg/m**3")
         dvs = vehicle.design_variables

@@ -25,7 +25,8 @@ number; an integer field rejects 2.5 but accepts 2.0) or a non-physical value ra
 :class:`VehicleSpecError` that names the dotted key (``wing.area``, ``lift_rotors[3].radius``), the
 value and what is allowed, before anything is built. The checks come from a small schema in the
 dataclass field metadata (units, range, file-key suffix, array shape); checks that involve several
-fields (symmetric pairs, condition order and kind, design-variable bounds) follow.
+fields (symmetric pairs, condition order and kind, level hover and OEI, design-variable bounds)
+follow.
 
 Design variables
 ----------------
@@ -103,6 +104,7 @@ __all__ = [
     "Vehicle",
     "VehicleSpecError",
     "WingBox",
+    "check_hover_pitch",
     "condition_kind",
     "design_variable_count",
     "load_vehicle",
@@ -374,6 +376,12 @@ class Rotor:
         """Hub radius (m)."""
         return self.hub_radius_ratio * self.radius
 
+    @property
+    def thickness_to_chord(self) -> float | None:
+        """Section t/c of :attr:`airfoil` (-); None for a polar file, which gives no thickness."""
+        airfoil = AIRFOILS.get(self.airfoil)
+        return None if airfoil is None else airfoil.thickness_to_chord
+
 
 @dataclass(frozen=True)
 class Booms:
@@ -591,7 +599,7 @@ class DesignCondition:
         Flight speed (m/s); 0 in hover and OEI.
     pitch : float
         Pitch angle (rad): initial value where pitch is a design variable, prescribed in
-        transition; file key ``pitch_deg``.
+        transition, 0 in hover and OEI (:func:`check_hover_pitch`); file key ``pitch_deg``.
     flight_path_angle : float
         Flight-path angle γ (rad), positive climbing; file key ``flight_path_angle_deg``.
     duration : float
@@ -1214,6 +1222,22 @@ _KIND_RULES: dict[str, dict[str, tuple[typing.Callable, str]]] = {
 }
 
 
+def check_hover_pitch(index: int, condition: DesignCondition) -> None:
+    """Raise VehicleSpecError unless a hover or OEI condition has zero pitch.
+
+    The hover model holds the body level: its lift-rotor thrust axes are body-fixed and u_dot is
+    not one of its trim constraints, so a pitched hover would accelerate horizontally, untrimmed.
+    ``index`` is the condition's position in ``conditions`` (for the message).
+    """
+    if condition.kind in ("hover", "oei") and condition.pitch != 0.0:
+        raise VehicleSpecError(
+            f"'conditions[{index}].pitch_deg' = {_fmt(math.degrees(condition.pitch))} deg is not "
+            f"allowed: must be 0 in {condition.kind!r} conditions (the hover model holds the body "
+            f"level; the lift-rotor thrust axes are body-fixed and u_dot is not a hover trim "
+            f"constraint)"
+        )
+
+
 def _check_conditions(conditions: tuple[DesignCondition, ...]) -> None:
     failed: dict[int, int] = {}
     for i, (c, expected) in enumerate(zip(conditions, CONDITION_NAMES, strict=True)):
@@ -1230,6 +1254,7 @@ def _check_conditions(conditions: tuple[DesignCondition, ...]) -> None:
                     f"'{path}.{name}' = {value!r} is not allowed: must be {text} in "
                     f"{c.kind!r} conditions"
                 )
+        check_hover_pitch(i, c)
         if c.kind == "oei":
             if c.failed_rotor in failed:
                 raise VehicleSpecError(

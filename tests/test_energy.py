@@ -49,10 +49,25 @@ def test_soc_is_one_without_power_and_linear_in_energy():
     assert_near_equal(socs[1] - socs[0], socs[2] - socs[1], 1e-12)
 
 
+def test_initial_soc_shifts_the_final_soc_by_itself():
+    prob = mission_problem()
+    full = prob.get_val("state_of_charge")[0]
+    prob.set_val("initial_soc", 0.9)
+    prob.run_model()
+    # Closed form: SoC_final = SoC_0 - E_used / E_total = 0.9 - 1557.892 / 1152 (MJ).
+    assert_near_equal(prob.get_val("state_of_charge"), 0.9 - 1557.892 / 1152.0, 1e-12)
+    assert_near_equal(full - prob.get_val("state_of_charge")[0], 0.1, 1e-12)
+    # The capacity is that of a full charge, whatever the start.
+    assert_near_equal(prob.get_val("energy_capacity", units="MJ"), 1152.0, 1e-12)
+
+
 def test_partials():
     prob = mission_problem()
+    prob.set_val("initial_soc", 0.85)
+    prob.run_model()
     data = prob.check_partials(method="cs", compact_print=True, out_stream=None)
     assert_check_partials(data, atol=1e-8, rtol=1e-10)
+    assert ("state_of_charge", "initial_soc") in data["battery"]
 
 
 def test_bad_inputs():
@@ -64,6 +79,11 @@ def test_bad_inputs():
     prob.set_val("battery_mass", -5.0)
     with pytest.raises(om.AnalysisError, match="battery_mass = -5.0; must be > 0"):
         prob.run_model()
+    for bad in (0.0, 1.2):
+        prob = mission_problem()
+        prob.set_val("initial_soc", bad)
+        with pytest.raises(om.AnalysisError, match=rf"initial_soc = {bad}; allowed: \(0, 1\]"):
+            prob.run_model()
     prob = mission_problem()
     prob.set_val("duration", [-1.0, 0, 0, 0, 0, 0, 0])
     with pytest.raises(om.AnalysisError, match="duration = .* s; must be >= 0"):

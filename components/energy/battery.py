@@ -11,7 +11,11 @@ class BatteryComp(om.ExplicitComponent):
     corrected there):
 
     - E_total = e_bat m_bat                        (e_bat in J/kg; 400 Wh/kg = 1.44e6 J/kg)
-    - SoC_final = (E_total - E_used) / E_total = 1 - E_used / E_total
+    - SoC_final = SoC_0 - E_used / E_total         (SoC_0 = 1: (E_total - E_used) / E_total)
+
+    SoC_0 is the state of charge at the start of the mission (the vehicle file's
+    ``battery.initial_soc``); E_total is the full-charge capacity, so a pack that starts at
+    SoC_0 < 1 holds SoC_0 E_total.
 
     Inputs
     ------
@@ -22,6 +26,8 @@ class BatteryComp(om.ExplicitComponent):
         Wh/kg).
     energy_used : float, scalar, J
         Energy drawn from the pack over the sizing mission (MissionEnergyComp).
+    initial_soc : float, scalar, unitless
+        State of charge at the start of the mission, in (0, 1] (default 1: fully charged).
 
     Outputs
     -------
@@ -38,12 +44,15 @@ class BatteryComp(om.ExplicitComponent):
         self.add_input("specific_energy", 400.0 * 3600.0, units="J/kg",
                        desc="pack-level specific energy (default 400 Wh/kg)")
         self.add_input("energy_used", 0.0, units="J", desc="mission energy drawn from the pack")
+        self.add_input("initial_soc", 1.0, units=None,
+                       desc="state of charge at the start of the mission, in (0, 1]")
         self.add_output("energy_capacity", 1.152e9, units="J", ref=1e9,
                         desc="usable pack energy")
         self.add_output("state_of_charge", 1.0, units=None, desc="end-of-mission state of charge")
         self.declare_partials("energy_capacity", ["battery_mass", "specific_energy"])
         self.declare_partials("state_of_charge", ["battery_mass", "specific_energy",
                                                   "energy_used"])
+        self.declare_partials("state_of_charge", "initial_soc", val=1.0)
 
     def compute(self, inputs, outputs):
         mass = inputs["battery_mass"]
@@ -51,9 +60,13 @@ class BatteryComp(om.ExplicitComponent):
         for name, value in (("battery_mass", mass), ("specific_energy", density)):
             if value.real[0] <= 0.0:
                 raise om.AnalysisError(f"{self.msginfo}: {name} = {value.real[0]}; must be > 0.")
+        soc0 = inputs["initial_soc"]
+        if not 0.0 < soc0.real[0] <= 1.0:
+            raise om.AnalysisError(f"{self.msginfo}: initial_soc = {soc0.real[0]}; allowed: "
+                                   f"(0, 1].")
         capacity = mass * density
         outputs["energy_capacity"] = capacity
-        outputs["state_of_charge"] = 1.0 - inputs["energy_used"] / capacity
+        outputs["state_of_charge"] = soc0 - inputs["energy_used"] / capacity
 
     def compute_partials(self, inputs, partials):
         mass = inputs["battery_mass"]

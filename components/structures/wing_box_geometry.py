@@ -6,7 +6,7 @@ import math
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.vehicle import reference_vehicle
+from lpc_mdo.vehicle import LiftingSurface, reference_vehicle
 
 
 @dataclasses.dataclass(frozen=True)
@@ -159,7 +159,8 @@ class WingBoxGeometryComp(om.ExplicitComponent):
     the point-wise radius goes to infinity. The arc radius is the panel's mean curvature radius
     and uses surface heights only.
 
-    All outputs are smooth closed forms of the inputs; partials are analytic.
+    All outputs are smooth closed forms of the inputs; partials are analytic. The inputs'
+    defaults are the planform of the ``wing`` option.
 
     Inputs
     ------
@@ -167,6 +168,7 @@ class WingBoxGeometryComp(om.ExplicitComponent):
         Reference area S of the whole wing.
     wing_aspect_ratio : float, scalar
     wing_taper_ratio : float, scalar
+        Tip chord over root chord λ.
     wing_sweep : float, scalar, rad
         Leading-edge sweep Λ_LE.
     wing_dihedral : float, scalar, rad
@@ -192,6 +194,9 @@ class WingBoxGeometryComp(om.ExplicitComponent):
         Beam nodes per half wing (>= 2); default 9 (8 bays).
     section : WingBoxSection
         Airfoil numbers and chord fractions; default ``WING_BOX_SECTIONS['ls413']``.
+    wing : lpc_mdo.vehicle.LiftingSurface or None
+        The wing whose planform gives the input defaults (VehicleGroup passes the vehicle's
+        wing); None = the reference vehicle's wing, for stand-alone use.
     """
 
     def initialize(self):
@@ -200,11 +205,16 @@ class WingBoxGeometryComp(om.ExplicitComponent):
         self.options.declare('section', default=WING_BOX_SECTIONS['ls413'],
                              types=WingBoxSection,
                              desc='Airfoil thickness/camber/skin radii and spar fractions')
+        self.options.declare('wing', default=None, types=LiftingSurface, allow_none=True,
+                             desc='lpc_mdo.vehicle.LiftingSurface giving the input defaults; '
+                                  'None = the reference vehicle\'s wing')
 
     def setup(self):
         n = self.options['num_nodes']
         ne = n - 1
-        wing = reference_vehicle().wing
+        wing = self.options['wing']
+        if wing is None:
+            wing = reference_vehicle().wing
         self.add_input('wing_area', val=wing.area, units='m**2', desc='wing reference area')
         self.add_input('wing_aspect_ratio', val=wing.aspect_ratio, units=None,
                        desc='wing aspect ratio')
