@@ -222,14 +222,14 @@ def plot_sweeps(points, out_dir):
 
     paths = []
     for parameter, (description, units, _) in SWEEP_PARAMETERS.items():
-        runs = [(p.case_file, p.value, 1.0 if p.static_margin else 0.0)
+        runs = [(p.case_file, p.value,
+                 "with static margin" if p.static_margin else "without static margin")
                 for p in points if p.parameter == parameter and p.success]
         if runs:
             unit = "" if units == "-" else f" ({units})"
             paths.append(plot_sweep(runs, os.path.join(out_dir, f"sweep_{parameter}.png"),
                                     y="gross_mass", y_units="kg",
-                                    xlabel=f"{description}{unit}", ylabel="gross mass (kg)",
-                                    group_label="static margin constraint"))
+                                    xlabel=f"{description}{unit}", ylabel="gross mass (kg)"))
     return paths
 
 

@@ -517,7 +517,8 @@ def plot_sweep(runs, path, y=None, y_units=None, xlabel="parameter", ylabel=None
     ----------
     runs : Sequence of tuple
         ``(case file or reader, x)`` or ``(case file or reader, x, group)`` per converged run,
-        e.g. from :func:`sweep_points`.
+        e.g. from :func:`sweep_points`; a numeric group is labelled ``group_label = value``,
+        a string group by itself.
     path : str or os.PathLike
         PNG file to write.
     y : str or None
@@ -551,10 +552,17 @@ def plot_sweep(runs, path, y=None, y_units=None, xlabel="parameter", ylabel=None
         yname, yv = value(src)
         groups.setdefault(gv, []).append((float(xv), yv))
     fig, (ax,) = _figure()
-    for k, (gv, pts) in enumerate(sorted(groups.items(), key=lambda kv: (kv[0] is None,
-                                                                          kv[0] or 0.0))):
+    def order(item):
+        gv = item[0]
+        return (gv is None, isinstance(gv, str), gv if isinstance(gv, (int, float)) else 0.0,
+                str(gv))
+
+    for k, (gv, pts) in enumerate(sorted(groups.items(), key=order)):
         pts = np.array(sorted(pts))
-        label = None if gv is None else (f"{group_label} = {gv:g}" if group_label else f"{gv:g}")
+        if gv is None or isinstance(gv, str):
+            label = gv
+        else:
+            label = f"{group_label} = {gv:g}" if group_label else f"{gv:g}"
         ax.plot(pts[:, 0], pts[:, 1], "o-", color=f"C{k}", label=label)
     for k, (label, src, xv) in enumerate(highlight):
         ax.plot([xv], [value(src)[1]], "*", ms=14, color=f"C{len(groups) + k}", label=label)
