@@ -152,6 +152,10 @@ class LPCGroup(om.Group):
                                   "pairs (None: every one that acts on the conditions)")
         self.options.declare("design_variable_refs", default=None, types=dict, allow_none=True,
                              desc="name -> ref overriding the vehicle file's scaling")
+        self.options.declare("design_variable_bounds", default=None, types=dict,
+                             allow_none=True,
+                             desc="name -> (lower, upper) overriding the vehicle file's bounds "
+                                  "(vehicle-file units, scalars or the variable's shape)")
         self.options.declare("constraint_kinds", default=CONSTRAINT_KINDS, types=(list, tuple),
                              desc=f"constraint kinds to declare, from {CONSTRAINT_KINDS} "
                                   f"(or {TORQUE_MARGIN_KINDS} for one motor kind)")
@@ -341,13 +345,19 @@ class LPCGroup(om.Group):
                                      f"vehicle file; allowed: {list(vehicle.design_variables)}")
                 selection[name] = None if indices is None else list(indices)
         refs = self.options["design_variable_refs"] or {}
+        bounds = self.options["design_variable_bounds"] or {}
+        for name in bounds:
+            if name not in vehicle.design_variables:
+                raise ValueError(f"{self.msginfo}: option 'design_variable_bounds' names "
+                                 f"{name!r}; allowed: {list(vehicle.design_variables)}")
         for name, indices in selection.items():
             dv = vehicle.design_variables[name]
             if not _design_variable_used(name, present, kinds):
                 continue
             shape = dv.shape
-            lower = np.asarray(dv.lower_array).reshape(shape)
-            upper = np.asarray(dv.upper_array).reshape(shape)
+            lower, upper = bounds.get(name, (dv.lower_array, dv.upper_array))
+            lower = np.broadcast_to(np.asarray(lower, dtype=float), shape)
+            upper = np.broadcast_to(np.asarray(upper, dtype=float), shape)
             ref = refs.get(name, dv.ref)
             if indices is not None:
                 lower, upper = lower.ravel()[indices], upper.ravel()[indices]

@@ -74,3 +74,21 @@ def test_baseline_objective_is_one_at_the_initial_design():
     assert list(prob.model.get_objectives()) == ["baseline_objective"]
     assert prob.get_val("baseline_deviation")[0] == pytest.approx(0.0, abs=1e-14)
     assert prob.get_val("baseline_objective")[0] == pytest.approx(1.0, rel=1e-10)
+
+
+def test_subproblem_1_keeps_the_battery_in_its_trust_region():
+    # Subproblem 1 bounds the battery to +-20 % of its initial 800 kg (the reference code's
+    # 640-960 kg); the vehicle file's wider bounds (400-1400 kg) apply to the other problems.
+    from lpc_mdo.problems import trust_region_bounds
+    from lpc_mdo.vehicle import reference_vehicle
+
+    vehicle = reference_vehicle()
+    lower, upper = trust_region_bounds(vehicle, {"battery_mass": 0.2})["battery_mass"]
+    assert (lower[0], upper[0]) == pytest.approx((640.0, 960.0))
+    # Intersected with the file's bounds: 90 % would reach below the file's 400 kg.
+    lower, upper = trust_region_bounds(vehicle, {"battery_mass": 0.9})["battery_mass"]
+    assert (lower[0], upper[0]) == pytest.approx((400.0, 1400.0))
+    dv = build_problem("subproblem_1", vehicle=vehicle).model.get_design_vars()["battery_mass"]
+    assert (dv["lower"], dv["upper"]) == pytest.approx((640.0, 960.0))
+    with pytest.raises(ValueError, match="design_variable_bounds' names 'wing'"):
+        build_problem("subproblem_4", vehicle=vehicle, design_variable_bounds={"wing": (0, 1)})
