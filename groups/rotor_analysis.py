@@ -11,11 +11,12 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.aero.airfoil import get_polar
-from lpc_mdo.components.geometry.blade import azimuth_angles
+from lpc_mdo.components.geometry.blade import azimuth_angles, station_fractions
 from lpc_mdo.components.rotor.bem_inflow import BEMInflowComp
 from lpc_mdo.components.rotor.bem_loads import BEMLoadsComp, RotorPerformanceComp
 from lpc_mdo.components.rotor.pitt_peters_inflow import PittPetersInflowComp
 from lpc_mdo.components.rotor.pitt_peters_loads import PittPetersLoadsComp
+from lpc_mdo.mpi import serial_comm
 
 RPM_TO_RAD_S = np.pi / 30.0
 
@@ -55,8 +56,8 @@ def blade_stations(radius, hub_radius, radial_stations):
         if n != radial_stations or n < 1:
             raise ValueError(f"radial_stations = {radial_stations!r}; allowed: an int >= 1 or "
                              "the station radii")
-        width = np.full(n, (radius - hub_radius) / n)
-        return hub_radius + width * (np.arange(n) + 0.5), width
+        eta, q = station_fractions(n)
+        return hub_radius + (radius - hub_radius) * eta, (radius - hub_radius) * q
     r = np.asarray(radial_stations, dtype=float).ravel()
     if (r.size < 1 or not np.all(np.isfinite(r)) or np.any(np.diff(r) <= 0.0)
             or r[0] <= hub_radius or r[-1] >= radius):
@@ -172,7 +173,7 @@ def bem(radius, hub_radius, num_blades, radial_stations, chord, twist_deg, rpm, 
     polar = get_polar(airfoil)
     kw = dict(num_nodes=nn, num_radial=n, num_blades=int(num_blades), polar=polar,
               tip_loss=tip_loss, hub_loss=hub_loss)
-    prob = om.Problem(reports=False)
+    prob = om.Problem(reports=False, comm=serial_comm())
     prob.model.add_subsystem('inflow', BEMInflowComp(**kw), promotes=['*'])
     prob.model.add_subsystem('loads', BEMLoadsComp(**kw), promotes=['*'])
     prob.model.add_subsystem('performance', RotorPerformanceComp(num_nodes=nn), promotes=['*'])
@@ -266,7 +267,7 @@ def pitt_peters(radius, hub_radius, num_blades, radial_stations, chord, twist_de
               num_blades=int(num_blades), spin_direction=int(spin_direction),
               polar=get_polar(airfoil), tip_loss=tip_loss, hub_loss=hub_loss,
               loss_placement=loss_placement, tangential_induction=tangential_induction)
-    prob = om.Problem(reports=False)
+    prob = om.Problem(reports=False, comm=serial_comm())
     prob.model.add_subsystem('inflow', PittPetersInflowComp(**kw), promotes=['*'])
     prob.model.add_subsystem('loads', PittPetersLoadsComp(**kw), promotes=['*'])
     prob.setup()

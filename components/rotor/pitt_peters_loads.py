@@ -286,7 +286,7 @@ class PittPetersBladeElements:
             vt, sec = self._solve_swirl(geo, ut, um, kappa)
         else:
             vt = np.zeros_like(ut)
-            sec = self._section(geo, ut)
+            sec = self._section(geo, ut, derivatives=partials)
         st.t, st.d, st.phi, st.F, st.vt = sec.t, sec.d, sec.phi, sec.F, vt
         st.v_ip = v_ip[:, :, None, None, :]
         st.r = r
@@ -340,8 +340,10 @@ class PittPetersBladeElements:
             setattr(st, name, p)
         return st
 
-    def _section(self, geo, ute):
-        """Blade-element loads at the stations for the tangential velocity ``ute`` = U_T - v_t."""
+    def _section(self, geo, ute, derivatives=True):
+        """Blade-element loads at the stations for the tangential velocity ``ute`` = U_T - v_t;
+        with ``derivatives``, also the loss partials and d/d(ute) of the drag and of F (the
+        swirl Newton and the partials need them, a plain evaluation without swirl does not)."""
         sec = SimpleNamespace(ute=ute)
         up = geo.up
         sec.w2 = up * up + ute * ute
@@ -354,10 +356,12 @@ class PittPetersBladeElements:
         sec.cx = sec.pv.cl * sec.cphi - sec.pv.cd * sec.sphi
         sec.ct = sec.pv.cl * sec.sphi + sec.pv.cd * sec.cphi
         sec.q = 0.5 * geo.rho * sec.w2 * geo.chord
-        sec.F, sec.df = self._loss(sec.phi, geo.r, geo.big_r, geo.rh, True)
+        sec.F, sec.df = self._loss(sec.phi, geo.r, geo.big_r, geo.rh, derivatives)
         sec.f_l = sec.F if self.loads_have_loss else 1.0
         sec.t = sec.q * sec.cx * sec.f_l
         sec.d = sec.q * sec.ct * sec.f_l
+        if not derivatives:
+            return sec
         # d(drag_per_span)/d(ute) and dF/d(ute), for the swirl Newton step
         dphi = -up / sec.w2
         c_a = sec.pv.dcl_dalpha * sec.sphi + sec.pv.dcd_dalpha * sec.cphi
