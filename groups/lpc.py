@@ -64,13 +64,13 @@ class LPCGroup(om.Group):
     """
     System-level model of the lift-plus-cruise vehicle (paper Fig. 11, Table 6).
 
-    ``design_variables`` (an IndepVarComp) holds the 30 design-variable arrays of the vehicle
-    file (161 values); ``vehicle`` (VehicleGroup) turns them into geometry and mass properties;
+    ``design_variables`` (an IndepVarComp) holds the 31 design-variable arrays of the vehicle
+    file (181 values: the paper's 161 and the 20 transition lift-rotor speed differentials); ``vehicle`` (VehicleGroup) turns them into geometry and mass properties;
     each design condition is a subsystem named as in the vehicle file (``hover``,
     ``transition_1`` .. ``transition_5``, ``climb``, ``cruise``, ``descent``, ``oei_1`` ..
     ``oei_4``, ``plus_3g``, ``minus_1g``); ``mission`` and ``battery`` give the final state of
     charge; ``lift_margin``/``pusher_margin`` aggregate the motor torque margins over the
-    conditions by KS (paper eq. 7). With ``design_problem`` the paper's design variables,
+    conditions by KS (paper eq. 7). With ``design_problem`` the design variables, the paper's
     96 constraints and the gross-mass objective are declared (see :meth:`add_design_problem`).
 
     Options
@@ -89,10 +89,9 @@ class LPCGroup(om.Group):
     ks_rho : float
         KS aggregation parameter of the torque margins.
     lateral_trim : bool
-        Declare the lateral trim constraints of hover and the transition points and the OEI
-        side force (paper Table 6: 96 constraints). They are zero by symmetry (or, OEI v_dot,
-        without a side force) with zero gradients, or beyond any trim variable (transition
-        p_dot), so an optimizer does better without them (76 constraints).
+        Declare every trim row of paper Table 6 (96 constraints). False leaves out the five
+        that vanish for every design, with zero gradients: hover p_dot (symmetry) and the OEI
+        v_dot (no side force in hover); an optimizer does better without them (91).
     conditions : list of str or None
         The design conditions to include, by name (None: all of the vehicle's). Subproblems
         and single-condition studies use a subset; the mission energy then counts only those.
@@ -131,11 +130,9 @@ class LPCGroup(om.Group):
             "ks_rho", default=50.0, types=float, desc="KS parameter of the torque-margin aggregates"
         )
         self.options.declare("lateral_trim", default=True, types=bool,
-                             desc="constrain v_dot, p_dot, r_dot in hover and transition and "
-                                  "v_dot in OEI (paper Table 6 counts them): symmetry zeroes "
-                                  "v_dot and r_dot, no side force acts in OEI hover, and no "
-                                  "trim variable acts on p_dot (the pusher's torque reaction in "
-                                  "transition; the model has no ailerons)")
+                             desc="also constrain hover p_dot and OEI v_dot (paper Table 6 "
+                                  "counts them, 96 constraints), which vanish for every design "
+                                  "(symmetry; no side force in hover): False gives 91")
         self.options.declare("objective", default=("gross_mass", None), types=tuple,
                              desc="(output, ref) of the objective; ref None = the vehicle's "
                                   "target gross mass (paper: gross mass); ('baseline', None) = "
@@ -270,6 +267,8 @@ class LPCGroup(om.Group):
             elif kind == "transition":
                 k = int(name.split("_")[1]) - 1
                 self.connect("transition_lift_rpm", f"{name}.lift_rotor_speed", src_indices=_row(k))
+                self.connect("transition_lift_rpm_differential",
+                             f"{name}.lift_rotor_speed_differential", src_indices=_row(k))
                 self.connect(
                     "transition_pusher_rpm", f"{name}.pusher_rpm", src_indices=_as_row(1, start=k)
                 )
@@ -312,7 +311,8 @@ class LPCGroup(om.Group):
 
     def add_design_problem(self):
         """
-        Declare the paper's design variables (161), constraints (96) and objective (Table 6).
+        Declare the design variables (the paper's 161 and our 20 transition speed
+        differentials), the constraints (96) and the objective (Table 6).
 
         Constraints, with their count:
 
@@ -328,6 +328,9 @@ class LPCGroup(om.Group):
           tip bay (2 x 7);
         - final state of charge >= limit (1); radius intersection = target (2);
         - motor torque margin >= limit, KS over the conditions (8 lift + 1 pusher).
+
+        Without ``lateral_trim`` the hover p_dot and the OEI v_dot rows, which vanish for every
+        design, are left out (91 constraints).
         """
         vehicle = self.vehicle_spec
         limits = vehicle.constraints
@@ -376,17 +379,18 @@ class LPCGroup(om.Group):
         if unknown:
             raise ValueError(f"{self.msginfo}: option 'constraint_kinds' has unknown kinds "
                              f"{unknown}; allowed: {CONSTRAINT_KINDS + TORQUE_MARGIN_KINDS}")
-        # Lateral trim (v_dot, p_dot, r_dot) of the symmetric conditions: paired rotors share
-        # speed and spin in opposite senses, so v_dot and r_dot vanish identically (zero
-        # Jacobian rows violate the constraint qualification), and p_dot in transition is the
-        # pusher's torque reaction, which no trim variable balances (no ailerons modelled).
-        symmetric_only = not self.options["lateral_trim"]
+        # Rows that vanish for every design (zero value, zero gradient; they violate the
+        # constraint qualification): hover p_dot (the pairs share speeds and spin in opposite
+        # senses) and the OEI v_dot (no side force in hover). Without lateral_trim they are
+        # left out; every other lateral row (transition v_dot, p_dot, r_dot; OEI p_dot, r_dot)
+        # has its trim variables and is declared.
+        skip_vanishing = not self.options["lateral_trim"]
 
         g = 9.81
         if "hover" in present and "noise" in wanted:
             self.add_constraint("hover.total_spl_a", upper=limits.max_noise, ref=10.0)
         if "hover" in present and "trim" in wanted:
-            self._trim("hover", [2], [1] if symmetric_only else [0, 1], 0.0, g)
+            self._trim("hover", [2], [1] if skip_vanishing else [0, 1], 0.0, g)
         if "hover" in present and "tip_mach" in wanted:
             pairs = np.array([r.pair for r in vehicle.lift_rotors])
             tip = [int(np.flatnonzero(pairs == p)[0]) for p in range(4)]
@@ -397,13 +401,10 @@ class LPCGroup(om.Group):
                 self._trim(c.name, [0, 2], [1], 0.0, g)
             elif c.kind == "transition":
                 accel = c.acceleration * np.array([np.cos(c.pitch), 0.0, np.sin(c.pitch)])
-                if symmetric_only:
-                    self._trim(c.name, [0, 2], [1], accel, g)
-                else:
-                    self._trim(c.name, [0, 1, 2], [0, 1, 2], accel, g)
+                self._trim(c.name, [0, 1, 2], [0, 1, 2], accel, g)
             elif c.kind == "oei":
                 # v_dot: no side force acts in hover (rotor thrust only, no edgewise flow).
-                self._trim(c.name, [2] if symmetric_only else [1, 2], [0, 1, 2], 0.0, g)
+                self._trim(c.name, [2] if skip_vanishing else [1, 2], [0, 1, 2], 0.0, g)
             elif c.kind == "structural":
                 self._trim(c.name, [2], [], 0.0, g * abs(c.load_factor))
         if self.options["static_margin"] and "cruise" in present and "static_margin" in wanted:
@@ -528,7 +529,8 @@ def condition_trim_variables(vehicle, name):
     """
     The design-variable entries that trim condition ``name`` (paper Table 6): list of
     (design-variable name, flat indices). Hover: the 4 lift-pair speeds; OEI: the 7 working lift
-    rotor speeds; transition: 4 lift-pair speeds, pusher speed, elevator; climb, cruise,
+    rotor speeds; transition: 4 lift-pair speeds and their 4 left/right differentials (ours),
+    pusher speed, elevator; climb, cruise,
     descent: pusher speed, pitch, elevator; +3g/-1g: pitch.
     """
     kind = vehicle.condition(name).kind
@@ -541,6 +543,7 @@ def condition_trim_variables(vehicle, name):
     if kind == "transition":
         k = int(name.split("_")[1]) - 1
         return [("transition_lift_rpm", 4 * k + np.arange(4)),
+                ("transition_lift_rpm_differential", 4 * k + np.arange(4)),
                 ("transition_pusher_rpm", np.array([k])),
                 ("transition_elevator", np.array([k]))]
     if kind == "steady":

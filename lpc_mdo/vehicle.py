@@ -30,8 +30,12 @@ follow.
 
 Design variables
 ----------------
-``Vehicle.design_variables`` maps the 30 names below to :class:`DesignVariable`; their sizes sum to
-the paper's 161 (Table 6). Rows of the per-group DVs: lift pairs 0..3, then the pusher.
+``Vehicle.design_variables`` maps the 31 names below to :class:`DesignVariable`: the paper's 161
+(Table 6) and the 20 left/right speed differentials of the transition lift rotors, which the paper
+does not have. Without them no trim variable acts on roll in transition, where the pusher's
+torque reaction rolls the vehicle (about 10^3 N m, 3 % of the weight as a moment in N m; the
+paper's model leaves that torque out). Rows of the per-group DVs: lift pairs 0..3, then the
+pusher.
 
 ======================  =======  ================================================================
 name                    shape    meaning
@@ -47,7 +51,10 @@ blade_twist_cp          5 x 4    blade twist control points, rad (initial: the r
 battery_mass            1        battery mass, kg (initial: ``battery.mass``)
 motor_length            5        motor stack length per group, m
 hover_lift_rpm          4        lift-rotor speed per pair in hover, rpm
-transition_lift_rpm     5 x 4    lift-rotor speed per transition point and pair, rpm
+transition_lift_rpm     5 x 4    lift-rotor speed per transition point and pair, rpm (the mean
+                                 of the pair's two rotors)
+transition_lift_rpm_    5 x 4    left minus right rotor speed of each pair per transition point,
+differential                     rpm (not in the paper: the roll and yaw trim of transition)
 oei_lift_rpm            4 x 7    speed of the 7 working lift rotors per OEI case, rpm
 transition_pusher_rpm   5        pusher speed per transition point, rpm
 climb_pusher_rpm        1        pusher speed in climb, rpm (likewise cruise_, descent_)
@@ -795,7 +802,8 @@ class Vehicle:
     noise_observer : NoiseObserver
         Hover noise observer.
     design_variables : Mapping of str to DesignVariable
-        The 161 paper design variables by name (read-only); see the module docstring.
+        The 161 paper design variables and the 20 transition speed differentials by name
+        (read-only); see the module docstring.
     """
 
     name: str = _param()
@@ -833,7 +841,7 @@ class Vehicle:
         return tuple(c for c in self.conditions if c.energy_multiplier > 0)
 
     def design_variable_count(self) -> int:
-        """Total number of scalar design variables (161 for the paper problem)."""
+        """Total number of scalar design variables (181: the paper's 161 + 20 differentials)."""
         return sum(dv.size for dv in self.design_variables.values())
 
     def condition(self, name: str) -> DesignCondition:
@@ -923,7 +931,7 @@ def vehicle_from_dict(data: Mapping) -> Vehicle:
 
 
 def design_variable_count(vehicle: Vehicle | None = None) -> int:
-    """Total number of scalar design variables (161 for the paper problem).
+    """Total number of scalar design variables (181: the paper's 161 + 20 differentials).
 
     Parameters
     ----------
@@ -1346,7 +1354,13 @@ def _design_variable_specs(parts: dict) -> dict[str, _DVSpec]:
         "motor_length": _DVSpec(f"motor stack length; {rotor_rows}", "m", (ng,)),
         "hover_lift_rpm": _DVSpec("lift-rotor speed in hover, per pair", "rpm", (_NUM_PAIRS,)),
         "transition_lift_rpm": _DVSpec(
-            "lift-rotor speed; rows: transition points, columns: pairs",
+            "lift-rotor speed, mean of the pair; rows: transition points, columns: pairs",
+            "rpm",
+            (n_transition, _NUM_PAIRS),
+        ),
+        "transition_lift_rpm_differential": _DVSpec(
+            "lift-rotor speed of the left (y < 0) minus the right rotor of each pair; rows: "
+            "transition points, columns: pairs",
             "rpm",
             (n_transition, _NUM_PAIRS),
         ),

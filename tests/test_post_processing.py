@@ -372,7 +372,8 @@ def test_write_report_on_a_folder(runs, tmp_path):
         conditions=("hover", "cruise"), power="{condition}.electrical_power",
         figure_of_merit="{condition}.lift_figure_of_merit", fom_conditions=("hover",),
         distributions=(report.DistributionSpec("stress", ("stress",), x="stations"),),
-        sweeps=(report.SweepSpec("sweep_c", "lower:c"),))
+        sweeps=(report.SweepSpec("sweep_c", "lower:c"),),
+        trim_residuals=False)   # the test models have no LPC trim outputs
     index = report.write_report(runs["root"], tmp_path / "report", spec)
     links = _links(index)
     assert links and all((index.parent / link).is_file() for link in links)
@@ -396,7 +397,8 @@ def test_write_report_lpc_defaults_skip_absent_parts(runs, tmp_path):
     assert all((index.parent / link).is_file() for link in _links(index))
     assert "## Skipped parts" in text
     for part in ("design table", "planform", "mass breakdown", "skin_thickness",
-                 "stress_plus_3g", "sweep_energy_density", "sweep_final_soc"):
+                 "stress_plus_3g", "sweep_energy_density", "sweep_final_soc",
+                 "trim residuals of opt"):
         assert f"- {part}:" in text, part
     # The test model records hover.electrical_power etc. under the LPC default names.
     assert {"power.png", "figure_of_merit.png"} <= {Path(link).name for link in _links(index)}

@@ -11,7 +11,8 @@ power and figure of merit per condition Fig. 16, thickness and stress distributi
 Layout of ``out_dir``::
 
     index.md                 links to everything below, notes on skipped parts
-    tables/*.md, *.csv       statistics, constraints_<run>, design_variables_<run>, designs
+    tables/*.md, *.csv       statistics, constraints_<run>, trim_residuals_<run>,
+                             design_variables_<run>, designs
     figures/*.png            convergence_<run>, planform, mass_breakdown, power,
                              figure_of_merit, <distribution stem>, <sweep stem>
 """
@@ -25,6 +26,7 @@ from pathlib import Path
 from lpc_mdo.components.weights.gross_weight import BREAKDOWN_LABELS
 from lpc_mdo.post import figures, tables
 from lpc_mdo.post.statistics import statistics_table
+from lpc_mdo.post.trim_residuals import trim_residual_table
 from lpc_mdo.post.tables import DEFAULT_TOL, MissingVariableError, Quantity
 
 __all__ = [
@@ -190,6 +192,9 @@ class ReportSpec:
     sweeps : tuple of SweepSpec
         Default battery energy density (``battery.specific_energy`` in Wh/kg) and final SoC
         (``lower:state_of_charge``).
+    trim_residuals : bool
+        Per run, every Table 6 trim row as a force or moment in % of the weight
+        (:func:`~lpc_mdo.post.trim_residuals.trim_residual_table`), declared or not.
     """
 
     tol: float = DEFAULT_TOL
@@ -207,12 +212,14 @@ class ReportSpec:
     fom_conditions: tuple = LPC_CONDITIONS[:6]
     distributions: tuple = LPC_DISTRIBUTIONS
     sweeps: tuple = LPC_SWEEPS
+    trim_residuals: bool = True
 
     @classmethod
     def generic(cls, **overrides):
         """A spec with every LPC-specific part off (only the generic tables and figures)."""
         off = dict(design_quantities=(), meshes=(), rotors=(), mass_breakdown=None,
-                   power=None, figure_of_merit=None, distributions=(), sweeps=())
+                   power=None, figure_of_merit=None, distributions=(), sweeps=(),
+                   trim_residuals=False)
         return cls(**{**off, **overrides})
 
 
@@ -345,6 +352,14 @@ def _run_section(index, label, cr, spec):
         table = tables.design_variable_table(cr, tol=spec.tol)
         index.add("**Design variables**:", "")
         index.table(table, f"design_variables_{slug}", inline=False)
+
+    def trim():
+        table = trim_residual_table(cr)
+        index.add("**Trim residuals** (Table 6 rows, forces and moments in % of the weight):", "")
+        index.table(table, f"trim_residuals_{slug}")
+
+    if spec.trim_residuals:
+        _try(index, f"trim residuals of {label}", trim)
 
     if tables.design_var_metadata(cr):
         _try(index, f"design variables of {label}", design_variables)
