@@ -65,8 +65,9 @@ class LPCGroup(om.Group):
     System-level model of the lift-plus-cruise vehicle (paper Fig. 11, Table 6).
 
     ``design_variables`` (an IndepVarComp) holds the 31 design-variable arrays of the vehicle
-    file (181 values: the paper's 161 and the 20 transition lift-rotor speed differentials); ``vehicle`` (VehicleGroup) turns them into geometry and mass properties;
-    each design condition is a subsystem named as in the vehicle file (``hover``,
+    file (181 values: the paper's 161 and the 20 transition lift-rotor speed differentials);
+    ``vehicle`` (VehicleGroup) turns them into geometry and mass properties; each design
+    condition is a subsystem named as in the vehicle file (``hover``,
     ``transition_1`` .. ``transition_5``, ``climb``, ``cruise``, ``descent``, ``oei_1`` ..
     ``oei_4``, ``plus_3g``, ``minus_1g``); ``mission`` and ``battery`` give the final state of
     charge; ``lift_margin``/``pusher_margin`` aggregate the motor torque margins over the

@@ -26,8 +26,8 @@ from pathlib import Path
 from lpc_mdo.components.weights.gross_weight import BREAKDOWN_LABELS
 from lpc_mdo.post import figures, tables
 from lpc_mdo.post.statistics import statistics_table
-from lpc_mdo.post.trim_residuals import trim_residual_table
 from lpc_mdo.post.tables import DEFAULT_TOL, MissingVariableError, Quantity
+from lpc_mdo.post.trim_residuals import trim_residual_table
 
 __all__ = [
     "LPC_CONDITIONS",
