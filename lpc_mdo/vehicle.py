@@ -33,8 +33,9 @@ Design variables
 ``Vehicle.design_variables`` maps the 31 names below to :class:`DesignVariable`: the paper's 161
 (Table 6) and the 20 left/right speed differentials of the transition lift rotors, which the paper
 does not have. Without them no trim variable acts on roll in transition, where the pusher's
-torque reaction rolls the vehicle (about 10^3 N m, 3 % of the weight as a moment in N m; the
-paper's model leaves that torque out). Rows of the per-group DVs: lift pairs 0..3, then the
+torque reaction rolls the vehicle (1.1-1.4e3 N m at our optimum, 3-4 % of the weight as a
+moment in N m; the paper's trim residuals of at most 25 N m, Table 7, imply that its model
+leaves that torque out). Rows of the per-group DVs: lift pairs 0..3, then the
 pusher.
 
 ======================  =======  ================================================================
