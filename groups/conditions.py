@@ -19,7 +19,7 @@ Conditions and their groups (ARCHITECTURE.md §2):
 Variable names inside a condition (promoted): ``lift_radius`` (num_lift,), ``lift_chord_cp``,
 ``lift_twist_cp`` (num_lift, 4), ``lift_hub_position`` (num_lift, 3), ``lift_motor_length``
 (num_lift,), ``lift_rotor_speed`` (1, num_speed_groups) (in transition also
-``lift_rotor_speed_differential``, (1, 4)) and the ``pusher_`` equivalents; outputs
+``lift_roll_yaw_rpm``, (1, 2)) and the ``pusher_`` equivalents; outputs
 ``linear_acceleration``, ``angular_acceleration`` (1, 3), ``electrical_power`` (1,),
 ``lift_motor_em_torque``/``pusher_motor_em_torque``, and the discipline outputs.
 """
@@ -99,23 +99,36 @@ def _add_atmosphere(group, condition):
     group.set_input_defaults("altitude", np.array([condition.altitude]), units="m")
 
 
+def roll_yaw_mixing(rotors):
+    """
+    Mixing of the roll and yaw speed differentials onto the rotors, (num_rotors, 2).
+
+    Roll: the left rotors (y < 0) turn half the roll differential faster, the right ones half
+    of it slower; yaw: likewise the rotors that spin +1 against those that spin -1. Each
+    differential is then the mean speed of one set minus that of the other, and every
+    mirror-symmetric pair keeps its mean speed.
+    """
+    side = [1.0 if r.hub_position[1] < 0.0 else -1.0 for r in rotors]
+    spin = [float(r.spin_direction) for r in rotors]
+    return 0.5 * np.column_stack([side, spin])
+
+
 def _add_lift_rotors(group, vehicle, rotors, speed_groups, num_groups, edgewise,
-                     differential=False):
+                     roll_yaw=False):
     """Lift rotors (BEM or Pitt–Peters) with their speeds and motors, promoted as ``lift_*``.
 
-    With ``differential`` each speed group also takes a left-minus-right speed differential,
-    input ``lift_rotor_speed_differential`` (the left rotor, y < 0, turns half of it faster,
-    the right one half of it slower).
+    With ``roll_yaw`` the rotor speeds also take the roll and yaw differentials, input
+    ``lift_roll_yaw_rpm`` (1, 2) (:func:`roll_yaw_mixing`).
     """
     na = len(rotors)
     opts = group.options
-    side = [1.0 if r.hub_position[1] < 0.0 else -1.0 for r in rotors] if differential else None
     promoted = [("group_speed", "lift_rotor_speed")]
-    if differential:
-        promoted.append(("group_differential", "lift_rotor_speed_differential"))
-    group.add_subsystem("lift_speed", RotorSpeedComp(group=speed_groups, num_groups=num_groups,
-                                                     side=side),
-                        promotes_inputs=promoted, promotes_outputs=[("rpm", "lift_rpm")])
+    if roll_yaw:
+        promoted.append(("mixer_speed", "lift_roll_yaw_rpm"))
+    group.add_subsystem("lift_speed", RotorSpeedComp(
+        group=speed_groups, num_groups=num_groups,
+        mixing=roll_yaw_mixing(rotors) if roll_yaw else None),
+        promotes_inputs=promoted, promotes_outputs=[("rpm", "lift_rpm")])
     rotor_cls = PittPetersRotorGroup if edgewise else BEMRotorGroup
     kwargs = {"num_azimuth": opts["num_azimuth"]} if edgewise else {}
     group.add_subsystem("lift_rotors", rotor_cls(
@@ -368,10 +381,11 @@ class TransitionCondition(om.Group):
     problem constrains u_dot and w_dot to the prescribed acceleration (dV/dt cos theta,
     dV/dt sin theta) and v_dot, p_dot, q_dot, r_dot to zero.
 
-    The two rotors of a pair turn at ``lift_rotor_speed`` (1, 4; the paper's per-pair speed)
-    plus and minus half of ``lift_rotor_speed_differential`` (1, 4; left minus right, not in
-    the paper): the roll and yaw trim, since the pusher's torque reaction rolls the vehicle
-    and the h-tail deflects symmetrically.
+    The rotors turn at their pair's ``lift_rotor_speed`` (1, 4; the paper's per-pair speed)
+    plus the roll and yaw differentials ``lift_roll_yaw_rpm`` (1, 2; not in the paper; left
+    minus right and spin +1 minus spin -1 rotor speed, :func:`roll_yaw_mixing`): the roll and
+    yaw trim, since the pusher's torque reaction rolls the vehicle and the h-tail deflects
+    symmetrically.
     """
 
     def initialize(self):
@@ -389,7 +403,7 @@ class TransitionCondition(om.Group):
         _add_atmosphere(self, condition)
         _add_aerodynamics(self, vehicle, condition, self.options["wing_zero_lift_angle"])
         _add_lift_rotors(self, vehicle, rotors, [r.pair for r in rotors], 4, edgewise=True,
-                         differential=True)
+                         roll_yaw=True)
         _add_pusher(self, vehicle)
         _add_power(self, {"lift": len(rotors), "pusher": 1})
         _add_equations_of_motion(self, ["aero", "drag", "lift", "pusher"],

@@ -31,8 +31,8 @@ follow.
 Design variables
 ----------------
 ``Vehicle.design_variables`` maps the 31 names below to :class:`DesignVariable`: the paper's 161
-(Table 6) and the 20 left/right speed differentials of the transition lift rotors, which the paper
-does not have. Without them no trim variable acts on roll in transition, where the pusher's
+(Table 6) and the 10 roll and yaw speed differentials of the transition lift rotors, which the
+paper does not have. Without them no trim variable acts on roll in transition, where the pusher's
 torque reaction rolls the vehicle (1.1-1.4e3 N m at our optimum, 3-4 % of the weight as a
 moment in N m; the paper's trim residuals of at most 25 N m, Table 7, imply that its model
 leaves that torque out). Rows of the per-group DVs: lift pairs 0..3, then the
@@ -54,8 +54,9 @@ motor_length            5        motor stack length per group, m
 hover_lift_rpm          4        lift-rotor speed per pair in hover, rpm
 transition_lift_rpm     5 x 4    lift-rotor speed per transition point and pair, rpm (the mean
                                  of the pair's two rotors)
-transition_lift_rpm_    5 x 4    left minus right rotor speed of each pair per transition point,
-differential                     rpm (not in the paper: the roll and yaw trim of transition)
+transition_roll_yaw_rpm 5 x 2    lift-rotor speed differentials per transition point, rpm: left
+                                 minus right rotors, spin +1 minus spin -1 rotors (not in the
+                                 paper: the roll and yaw trim of transition)
 oei_lift_rpm            4 x 7    speed of the 7 working lift rotors per OEI case, rpm
 transition_pusher_rpm   5        pusher speed per transition point, rpm
 climb_pusher_rpm        1        pusher speed in climb, rpm (likewise cruise_, descent_)
@@ -803,8 +804,8 @@ class Vehicle:
     noise_observer : NoiseObserver
         Hover noise observer.
     design_variables : Mapping of str to DesignVariable
-        The 161 paper design variables and the 20 transition speed differentials by name
-        (read-only); see the module docstring.
+        The 161 paper design variables and the 10 transition roll/yaw speed differentials by
+        name (read-only); see the module docstring.
     """
 
     name: str = _param()
@@ -842,7 +843,7 @@ class Vehicle:
         return tuple(c for c in self.conditions if c.energy_multiplier > 0)
 
     def design_variable_count(self) -> int:
-        """Total number of scalar design variables (181: the paper's 161 + 20 differentials)."""
+        """Total number of scalar design variables (171: the paper's 161 + 10 differentials)."""
         return sum(dv.size for dv in self.design_variables.values())
 
     def condition(self, name: str) -> DesignCondition:
@@ -932,7 +933,7 @@ def vehicle_from_dict(data: Mapping) -> Vehicle:
 
 
 def design_variable_count(vehicle: Vehicle | None = None) -> int:
-    """Total number of scalar design variables (181: the paper's 161 + 20 differentials).
+    """Total number of scalar design variables (171: the paper's 161 + 10 differentials).
 
     Parameters
     ----------
@@ -1359,11 +1360,11 @@ def _design_variable_specs(parts: dict) -> dict[str, _DVSpec]:
             "rpm",
             (n_transition, _NUM_PAIRS),
         ),
-        "transition_lift_rpm_differential": _DVSpec(
-            "lift-rotor speed of the left (y < 0) minus the right rotor of each pair; rows: "
-            "transition points, columns: pairs",
+        "transition_roll_yaw_rpm": _DVSpec(
+            "lift-rotor speed differentials; rows: transition points, columns: roll (left, "
+            "y < 0, minus right rotors), yaw (spin +1 minus spin -1 rotors)",
             "rpm",
-            (n_transition, _NUM_PAIRS),
+            (n_transition, 2),
         ),
         "oei_lift_rpm": _DVSpec(
             "lift-rotor speed; rows: OEI cases, columns: the working rotors in lift_rotors order",

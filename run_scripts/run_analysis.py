@@ -3,8 +3,8 @@
     python run_scripts/run_analysis.py            # run, record and print
     openmdao n2 run_scripts/run_analysis.py       # N2 diagram of the same model
 
-The full model: the vehicle group and the 15 design conditions with their 181 design variables
-(the paper's 161 and 20 transition speed differentials) and 96 constraints (paper Table 6).
+The full model: the vehicle group and the 15 design conditions with their 171 design variables
+(the paper's 161 and 10 transition roll/yaw speed differentials) and 96 constraints (paper Table 6).
 Every variable of the final case is recorded to ``run_analysis_out/cases.sql``; read it back
 with ``om.CaseReader``.
 """

@@ -1,3 +1,4 @@
+import numpy as np
 import openmdao.api as om
 import pytest
 from openmdao.utils.assert_utils import assert_check_partials, assert_near_equal
@@ -28,29 +29,38 @@ def test_bad_group():
         prob.setup()
 
 
-def test_side_differential_splits_each_pair_about_its_mean():
-    """Closed form: left = mean + d/2, right = mean - d/2, so left - right = d and the pair's
-    mean stays the group speed."""
+def test_roll_and_yaw_mixers_split_each_pair_about_its_mean():
+    """Closed form: rpm = pair speed + (side * roll + spin * yaw) / 2, so roll = mean left
+    minus mean right speed, yaw = mean spin(+1) minus mean spin(-1) speed, and each pair's
+    mean stays its group speed."""
     prob = om.Problem(reports=False)
-    # LPC: rotors 0-3 on the left (side +1), 4-7 on the right (-1).
-    side = [1, 1, 1, 1, -1, -1, -1, -1]
+    # LPC: rotors 0-3 on the left, 4-7 on the right; spins of the vehicle file.
+    side = np.array([1, 1, 1, 1, -1, -1, -1, -1], dtype=float)
+    spin = np.array([1, -1, -1, 1, 1, -1, -1, 1], dtype=float)
+    mixing = 0.5 * np.column_stack([side, spin])
     prob.model.add_subsystem("s", RotorSpeedComp(group=[0, 1, 2, 3, 2, 3, 0, 1], num_groups=4,
-                                                 num_nodes=2, side=side), promotes=["*"])
+                                                 num_nodes=2, mixing=mixing), promotes=["*"])
     prob.setup(force_alloc_complex=True)
-    prob.set_val("group_speed", [[1000.0, 1100.0, 1200.0, 1300.0],
-                                 [900.0, 950.0, 980.0, 990.0]])
-    prob.set_val("group_differential", [[10.0, -20.0, 30.0, -40.0], [1.0, 2.0, 3.0, 4.0]])
+    speeds = np.array([[1000.0, 1100.0, 1200.0, 1300.0], [900.0, 950.0, 980.0, 990.0]])
+    prob.set_val("group_speed", speeds)
+    prob.set_val("mixer_speed", [[20.0, -8.0], [2.0, 6.0]])
     prob.run_model()
     rpm = prob.get_val("rpm")
-    assert_near_equal(rpm[:, 0], [1005, 1090, 1215, 1280, 1185, 1320, 995, 1110], 1e-15)
-    assert_near_equal(rpm[0, 1] - rpm[6, 1], 1.0, 1e-12)
-    assert_near_equal(0.5 * (rpm[3, 1] + rpm[5, 1]), 990.0, 1e-15)
+    # Node 0: rotor 0 (left, spin +1): 1000 + 10 - 4; rotor 1 (left, -1): 1100 + 10 + 4; ...
+    assert_near_equal(rpm[:, 0], [1006, 1114, 1214, 1306, 1186, 1294, 994, 1086], 1e-15)
+    assert_near_equal(rpm[:4, 1].mean() - rpm[4:, 1].mean(), 2.0, 1e-12)
+    assert_near_equal(rpm[spin > 0, 1].mean() - rpm[spin < 0, 1].mean(), 6.0, 1e-12)
+    pairs = np.array([0, 1, 2, 3, 2, 3, 0, 1])
+    for p in range(4):
+        assert_near_equal(rpm[pairs == p, 1].mean(), speeds[1, p], 1e-15)
     data = prob.check_partials(method="cs", compact_print=True, out_stream=None)
     assert_check_partials(data, atol=1e-14, rtol=1e-14)
 
 
-def test_bad_side():
+def test_bad_mixing():
     prob = om.Problem(reports=False)
-    prob.model.add_subsystem("s", RotorSpeedComp(group=[0, 0], num_groups=1, side=[1, 2]))
-    with pytest.raises(ValueError, match=r"side = \[1.0, 2.0\]; allowed: one of \+1, -1, 0"):
+    prob.model.add_subsystem("s", RotorSpeedComp(group=[0, 0], num_groups=1,
+                                                 mixing=[[0.5], [0.5], [0.5]]))
+    with pytest.raises(ValueError, match=r"mixing has shape \(3, 1\); allowed: finite values "
+                                         r"of shape \(2, num_mixers\)"):
         prob.setup()

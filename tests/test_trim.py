@@ -26,8 +26,8 @@ def test_hover_trims_to_weight_with_equal_rotor_speeds():
 
 def test_transition_point_trims_to_the_prescribed_acceleration():
     # transition_3 starts 6.6 m/s^2 off in w_dot and 1.5 rad/s^2 off in p_dot (initial design:
-    # the pusher's torque reaction rolls it); 4 lift pair speeds, their 4 left/right
-    # differentials, pusher speed and elevator against u_dot, v_dot, w_dot, p_dot, q_dot, r_dot.
+    # the pusher's torque reaction rolls it); 4 lift pair speeds, the roll and yaw
+    # differentials, pusher speed and elevator against u_dot, w_dot, p_dot, q_dot, r_dot.
     prob = build_analysis_problem(None, conditions=["transition_3"], lateral_trim=False,
                                   constraint_kinds=["trim"])
     condition = prob.vehicle.condition("transition_3")
@@ -38,7 +38,10 @@ def test_transition_point_trims_to_the_prescribed_acceleration():
     assert result.success, result.message
     acc = prob.get_val("transition_3.linear_acceleration", units="m/s**2").ravel()
     a, theta = condition.acceleration, condition.pitch
-    np.testing.assert_allclose(acc, [a * np.cos(theta), 0.0, a * np.sin(theta)], atol=1e-5)
+    np.testing.assert_allclose(acc[[0, 2]], [a * np.cos(theta), a * np.sin(theta)], atol=1e-5)
+    # v_dot is left to itself: second order in the differentials, 2.3e-3 m/s^2 here (0.02 %
+    # of the weight as a force); the criterion is 0.1 % of the weight.
+    assert abs(acc[1]) < 1e-3 * 9.81
     np.testing.assert_allclose(prob.get_val("transition_3.angular_acceleration"), 0.0,
                                atol=1e-6)
     assert np.abs(before).max() > 1.0 and abs(roll_before) > 1.0   # it did have to move
@@ -49,7 +52,7 @@ def test_transition_point_trims_to_the_prescribed_acceleration():
     pusher_roll = prob.get_val("transition_3.pusher_moment", units="N*m")[0, 0]
     assert abs(pusher_roll) > 1e3
     assert abs(roll) < 1e-3 * abs(pusher_roll)
-    assert np.abs(prob.get_val("transition_lift_rpm_differential")[2]).max() > 1.0
+    assert abs(prob.get_val("transition_roll_yaw_rpm")[2, 0]) > 1.0
 
 
 def test_missing_trim_constraints_are_an_error():

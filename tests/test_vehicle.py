@@ -59,8 +59,8 @@ def test_counts_and_condition_order():
         "minus_1g",
     ]
     assert tuple(c.name for c in vehicle.conditions) == CONDITION_NAMES
-    assert design_variable_count() == 161 + 20
-    assert vehicle.design_variable_count() == 161 + 20
+    assert design_variable_count() == 161 + 10
+    assert vehicle.design_variable_count() == 161 + 10
     assert design_variable_count(vehicle) == sum(
         dv.size for dv in vehicle.design_variables.values()
     )
@@ -176,7 +176,7 @@ def test_number_of_bays_sizes_the_thickness_design_variables(data):
     data["wing_box"]["num_bays"] = 10
     vehicle = vehicle_from_dict(data)
     assert vehicle.design_variables["bottom_skin_thickness"].shape == (10,)
-    assert design_variable_count(vehicle) == 161 + 20 + 4 * 2
+    assert design_variable_count(vehicle) == 161 + 10 + 4 * 2
 
 
 def test_invalid_toml_is_reported(tmp_path):

@@ -7,21 +7,21 @@ import openmdao.api as om
 class RotorSpeedComp(om.ExplicitComponent):
     """
     rpm of each rotor from the speed of its group (e.g. the mirror-symmetric lift-rotor pairs
-    of the LPC share one speed design variable, paper Table 6), and optionally from a speed
-    differential between the two sides of each group:
+    of the LPC share one speed design variable, paper Table 6), optionally plus mixer inputs
+    that speed some rotors up and others down, as a multicopter's flight control does:
 
-        rpm[i, k] = group_speed[k, group[i]] + side[i] / 2 * group_differential[k, group[i]]
+        rpm[i, k] = group_speed[k, group[i]] + sum_j mixing[i, j] * mixer_speed[k, j]
 
-    With ``side`` = +1 for the left (y < 0) and -1 for the right rotor of each pair,
-    ``group_differential`` is the left minus the right rotor's speed and ``group_speed`` their
-    mean: the roll (and yaw) control of the transition points, where the pusher's torque
-    reaction rolls the vehicle.
+    The LPC transition points use two mixers: roll (mixing = +1/2 for the left rotors, y < 0,
+    -1/2 for the right ones) and yaw (+1/2 for the rotors that spin +1, -1/2 for the others),
+    so each mixer speed is the difference of the two sets' speeds and ``group_speed`` stays the
+    pair's mean: the roll and yaw trim, since the pusher's torque reaction rolls the vehicle.
 
     Inputs
     ------
     group_speed : (num_nodes, num_groups), rpm
-    group_differential : (num_nodes, num_groups), rpm
-        Only with ``side``.
+    mixer_speed : (num_nodes, num_mixers), rpm
+        Only with ``mixing``.
 
     Outputs
     -------
@@ -33,9 +33,8 @@ class RotorSpeedComp(om.ExplicitComponent):
         Group index of each rotor; its length is num_rotors.
     num_groups : int
     num_nodes : int
-    side : sequence of float or None
-        +1, -1 (or 0) per rotor: the share (side / 2) of its group's differential it takes.
-        None: no differential input.
+    mixing : array (num_rotors, num_mixers) or None
+        Share of each mixer speed each rotor takes; None: no mixer input.
     """
 
     def initialize(self):
@@ -44,10 +43,10 @@ class RotorSpeedComp(om.ExplicitComponent):
         self.options.declare("num_groups", types=int, lower=1, desc="number of speed groups")
         self.options.declare("num_nodes", default=1, types=int, lower=1,
                              desc="number of operating points")
-        self.options.declare("side", default=None, types=(list, tuple, np.ndarray),
+        self.options.declare("mixing", default=None, types=(list, tuple, np.ndarray),
                              allow_none=True,
-                             desc="+1 / -1 / 0 per rotor: its share (side/2) of the group's "
-                                  "speed differential (None: no differential)")
+                             desc="(num_rotors, num_mixers) share of each mixer speed per "
+                                  "rotor (None: no mixer input)")
 
     def setup(self):
         group = np.asarray(self.options["group"], dtype=int)
@@ -62,25 +61,28 @@ class RotorSpeedComp(om.ExplicitComponent):
         self.add_output("rpm", np.full((nr, nn), 1000.0), units="rpm",
                         desc="rotor speed of each rotor")
         rotor, node = np.meshgrid(np.arange(nr), np.arange(nn), indexing="ij")
-        rows = (rotor * nn + node).ravel()
-        cols = (node * ng + group[rotor]).ravel()
-        self.declare_partials("rpm", "group_speed", rows=rows, cols=cols, val=1.0)
+        self.declare_partials("rpm", "group_speed", rows=(rotor * nn + node).ravel(),
+                              cols=(node * ng + group[rotor]).ravel(), val=1.0)
 
-        side = self.options["side"]
-        self._half_side = None
-        if side is not None:
-            side = np.asarray(side, dtype=float)
-            if side.shape != (nr,) or not np.all(np.isin(side, (-1.0, 0.0, 1.0))):
-                raise ValueError(f"{self.msginfo}: side = {side.tolist()}; allowed: one of "
-                                 f"+1, -1, 0 per rotor ({nr} rotors).")
-            self._half_side = 0.5 * side
-            self.add_input("group_differential", np.zeros((nn, ng)), units="rpm",
-                           desc="speed of the +1 side minus the -1 side of each group")
-            self.declare_partials("rpm", "group_differential", rows=rows, cols=cols,
-                                  val=self._half_side[rotor].ravel())
+        mixing = self.options["mixing"]
+        self._mixing = None
+        if mixing is not None:
+            mixing = np.asarray(mixing, dtype=float)
+            if mixing.ndim != 2 or mixing.shape[0] != nr or not np.all(np.isfinite(mixing)):
+                raise ValueError(f"{self.msginfo}: mixing has shape {mixing.shape}; allowed: "
+                                 f"finite values of shape ({nr}, num_mixers), one row per "
+                                 f"rotor.")
+            self._mixing = mixing
+            nm = mixing.shape[1]
+            self.add_input("mixer_speed", np.zeros((nn, nm)), units="rpm",
+                           desc="speed of each mixer input")
+            # d rpm[i, k] / d mixer_speed[k, j] = mixing[i, j]
+            r, k, j = np.meshgrid(np.arange(nr), np.arange(nn), np.arange(nm), indexing="ij")
+            self.declare_partials("rpm", "mixer_speed", rows=(r * nn + k).ravel(),
+                                  cols=(k * nm + j).ravel(), val=mixing[r, j].ravel())
 
     def compute(self, inputs, outputs):
         rpm = inputs["group_speed"][:, self._group].T
-        if self._half_side is not None:
-            rpm = rpm + self._half_side[:, None] * inputs["group_differential"][:, self._group].T
+        if self._mixing is not None:
+            rpm = rpm + self._mixing @ inputs["mixer_speed"].T
         outputs["rpm"] = rpm

@@ -4,7 +4,8 @@ The optimizations constrain body-axis accelerations (m/s^2, rad/s^2); the paper'
 the trim residuals as forces and moments (N, N m) relative to the weight W0 = m g (about 3.6e4 N
 here). This module reads a case file's final case and evaluates every trim row of Table 6 for
 the conditions the case holds, whether or not the run declared it as a constraint (the
-optimizations leave out hover p_dot and the OEI v_dot, which vanish for every design):
+optimizations leave out hover p_dot and the OEI v_dot, which vanish for every design, and the
+transition v_dot, which no trim variable controls on its own):
 
     force residual  F_i = m (a_i - a_target,i)          i in (u, v, w)
     moment residual M   = I . alpha                      (quasi-steady: zero body rates)
