@@ -224,8 +224,8 @@ def build_problem(name, vehicle=None, static_margin=True, optimizer="IPOPT",
         counts them (96 constraints), but the first two vanish for every design (symmetry; no
         side force in hover): zero gradients that violate the constraint qualification (SLSQP
         stops on a singular matrix, IPOPT's dual infeasibility explodes); and no trim variable
-        acts on the transition v_dot on its own (the rotors' side forces, second order in the
-        roll/yaw differentials; about 1e-5 m/s^2 once trimmed). Optimizations leave them out
+        acts on the transition v_dot on its own (the rotors' net side force under the yaw
+        differential; at most 0.06 % of the weight at the optimum). Optimizations leave them out
         (86 constraints) and the report evaluates all 96 at the final design.
     comm : MPI communicator or None
         The problem's communicator (MPI.COMM_SELF for one problem per rank, as in sweeps).

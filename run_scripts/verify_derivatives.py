@@ -3,9 +3,9 @@
     python run_scripts/verify_derivatives.py [--steps 1e-2 1e-3 1e-4 1e-5 1e-6 1e-7] [--out fig]
 
 Computes all totals of the objective and the 96 constraints with respect to the 171 design
-variables (the paper's 161 and 10 transition roll/yaw speed differentials) by the adjoint method, then
-by forward finite differences in the driver-scaled space for each step size, and plots the
-relative error ||J_fd - J_adj|| / ||J_adj|| against the step: it falls with the step
+variables (the paper's 161 and 10 transition roll/yaw speed differentials) by the adjoint
+method, then by forward finite differences in the driver-scaled space for each step size, and
+plots the relative error ||J_fd - J_adj|| / ||J_adj|| against the step: it falls with the step
 (truncation) until round-off takes over, as in the paper's Fig. 12.
 Also prints the complex-step comparison, which has no step-size trade-off.
 """

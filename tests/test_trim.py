@@ -39,8 +39,8 @@ def test_transition_point_trims_to_the_prescribed_acceleration():
     acc = prob.get_val("transition_3.linear_acceleration", units="m/s**2").ravel()
     a, theta = condition.acceleration, condition.pitch
     np.testing.assert_allclose(acc[[0, 2]], [a * np.cos(theta), a * np.sin(theta)], atol=1e-5)
-    # v_dot is left to itself: second order in the differentials, 2.3e-3 m/s^2 here (0.02 %
-    # of the weight as a force); the issue's criterion is 0.1 % of the weight.
+    # v_dot is left to itself (the rotors' net side force under the yaw differential):
+    # 2.3e-3 m/s^2 here (0.02 % of the weight as a force); the issue's criterion is 0.1 %.
     assert abs(acc[1]) < 1e-3 * 9.81
     np.testing.assert_allclose(prob.get_val("transition_3.angular_acceleration"), 0.0,
                                atol=1e-6)
