@@ -108,8 +108,8 @@ def trim(prob, conditions=None, tol=1e-10, max_iter=30, separate=True):
     prob : om.Problem
         A problem whose model is an :class:`~lpc_mdo.groups.lpc.LPCGroup` that declares the trim
         design variables of the conditions (and, with ``separate=False``, their trim
-        constraints: build it with ``lateral_trim=False``, since hover p_dot and the OEI
-        v_dot vanish for every design and have no trim variable).
+        constraints: build it with ``lateral_trim=False``, since some lateral rows have no
+        trim variable: hover p_dot and the OEI and transition v_dot).
     conditions : sequence of str or None
         Conditions to trim; None = every condition of the model.
     tol : float

@@ -4,6 +4,8 @@ import pytest
 from openmdao.utils.assert_utils import assert_check_partials, assert_near_equal
 
 from lpc_mdo.components.rotor.rotor_speed import RotorSpeedComp
+from lpc_mdo.groups.conditions import roll_yaw_mixing
+from lpc_mdo.vehicle import reference_vehicle
 
 
 def test_pairs_share_speed():
@@ -55,6 +57,8 @@ def test_roll_and_yaw_mixers_split_each_pair_about_its_mean():
         assert_near_equal(rpm[pairs == p, 1].mean(), speeds[1, p], 1e-15)
     data = prob.check_partials(method="cs", compact_print=True, out_stream=None)
     assert_check_partials(data, atol=1e-14, rtol=1e-14)
+    # The transition condition's mixing, from the reference vehicle's rotors, is this one.
+    np.testing.assert_array_equal(roll_yaw_mixing(reference_vehicle().lift_rotors), mixing)
 
 
 def test_bad_mixing():
