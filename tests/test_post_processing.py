@@ -218,6 +218,19 @@ def test_entry_status_equality_violation_and_two_sided():
     np.testing.assert_allclose(viol, [0.0, 0.0, 0.0, 0.2])
 
 
+def test_limit_scale_of_a_scaled_constraint_is_at_least_its_ref():
+    # A prescribed acceleration of 0.017 m/s^2 on a row scaled by g: the band is tol * g, the
+    # magnitude the optimizer's tolerance is measured in, not tol * 0.017.
+    equals = np.array([0.017, 0.25])
+    scaled = tables.limit_scale({"size": 2, "ref": 9.81, "ref0": None}, equals=equals)
+    np.testing.assert_allclose(scaled, [9.81, 9.81])
+    np.testing.assert_allclose(tables.limit_scale({"size": 2, "ref": 0.1}, equals=equals),
+                               [0.1, 0.25])
+    # Unscaled: the limit itself, else 1.
+    np.testing.assert_allclose(tables.limit_scale({"size": 2}, equals=np.array([0.017, 0.0])),
+                               [0.017, 1.0])
+
+
 def test_tables_written_as_markdown_and_csv(runs, tmp_path):
     path = runs["ipopt"][0]
     table = tables.constraint_table(path)

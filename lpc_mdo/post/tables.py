@@ -18,8 +18,11 @@ Activity and feasibility tolerance
 An entry g_i of a constraint is compared with its limit(s) in the constraint's own units (the
 units given to ``add_constraint``, else the output's units). With the reference magnitude
 
-    r_i = max |finite limits of entry i|     if that is > 0,
-    r_i = |ref - ref0| (or 1/|scaler|) of the constraint, if it was scaled,
+    r_i = max(|finite limits of entry i|, s)  for a constraint scaled by ref/ref0 or scaler,
+          with s = |ref - ref0| (or 1/|scaler|), the magnitude its optimizer's tolerance
+          is measured in (a small target, e.g. a prescribed acceleration of 0.017 m/s^2 on
+          a row scaled by g, then does not make the band absurdly narrow),
+    r_i = max |finite limits of entry i|     for an unscaled one, if that is > 0,
     r_i = 1                                  otherwise,
 
 (or ``refs[name]`` when given), an entry is *violated* when it lies beyond a limit by more than
@@ -570,6 +573,8 @@ def limit_scale(meta, lower=None, upper=None, equals=None, ref=None):
         fallback = 1.0
     if not fallback > 0.0:
         fallback = 1.0
+    if meta.get("ref") is not None or meta.get("scaler") is not None:
+        return np.maximum(mag, fallback)
     return np.where(mag > 0.0, mag, fallback)
 
 
@@ -727,7 +732,8 @@ def constraint_table(source, case=None, tol=DEFAULT_TOL, refs=None):
                      f"{int(r['active'].sum())}/{r['active'].size}",
                      _status(r["active"], r["violated"])])
     notes = [f"Active: within tol*r of a limit; violated: beyond it by more than tol*r "
-             f"(tol = {tol:g}; r = |limit|, else |ref - ref0| of the constraint, else 1"
+             f"(tol = {tol:g}; r = max(|limit|, |ref - ref0|) for a scaled constraint, "
+             f"else |limit|, else 1"
              + (", or the given reference" if refs else "") + ").",
              "% viol. = 100 * max over entries of violation / r."]
     return Table(["constraint", "units", "lower", "upper", "equals", "size", "min", "max",
