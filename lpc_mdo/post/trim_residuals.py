@@ -28,6 +28,7 @@ from lpc_mdo.post.tables import (
     constraint_metadata,
     final_case,
     last_case,
+    open_reader,
     read_value,
 )
 from lpc_mdo.vehicle import CONDITION_NAMES, condition_kind
@@ -90,6 +91,7 @@ def trim_residuals(source, case=None):
     MissingVariableError
         When the case holds no condition's accelerations, or not ``gross_mass``/``inertia``.
     """
+    source = open_reader(source)   # once: every read_value below would reopen a path
     case = _problem_case(source, case)
     mass = float(read_value(source, "gross_mass", "kg", case)[0])
     inertia = read_value(source, "inertia", "kg*m**2", case).reshape(3, 3)
@@ -148,6 +150,7 @@ def trim_residual_table(source, case=None, limit_percent=0.1):
         Columns ``condition, rows, declared, max |force| (N), max |moment| (N m), max % of
         W0, trimmed``; a note gives the weight and the overall largest residual.
     """
+    source = open_reader(source)
     case = _problem_case(source, case)
     rows = trim_residuals(source, case)
     weight = float(read_value(source, "gross_mass", "kg", case)[0]) * G
