@@ -21,7 +21,7 @@ from lpc_mdo.vehicle import VehicleSpecError, reference_vehicle
 
 PUSHER = 4  # row of the pusher in the per-rotor-group design variables
 CONSTRAINT_KINDS = ("trim", "noise", "tip_mach", "static_margin", "buckling", "soc",
-                    "radius_intersection", "torque_margin")
+                    "radius_intersection", "torque_margin", "rotor_speed")
 # Paper eq. 8-9: the set S of design variables the initial specification gives (beta = 1) -
 # every sizing variable; the operating variables (rotor speeds, pitch, elevator) are free - and
 # the penalty weight alpha.
@@ -336,6 +336,11 @@ class LPCGroup(om.Group):
         Without ``lateral_trim`` the hover p_dot and the OEI v_dot rows, which vanish for every
         design, and the transition v_dot rows, which no trim variable controls on its own, are
         left out (86 constraints).
+
+        Ours, beyond Table 6 (kind ``rotor_speed``, with ``transition_roll_yaw_rpm``): each
+        lift rotor's own speed in transition within its pair's ``transition_lift_rpm`` bounds
+        (8 x 5 linear two-sided constraints), which the differentials could otherwise drive to
+        0 rpm.
         """
         vehicle = self.vehicle_spec
         limits = vehicle.constraints
@@ -427,6 +432,8 @@ class LPCGroup(om.Group):
         if "radius_intersection" in wanted:
             self.add_constraint("radius_intersection", equals=limits.radius_intersection,
                                 ref=0.1)
+        if "rotor_speed" in wanted and "transition_roll_yaw_rpm" in selection:
+            self._add_transition_speed_bounds(vehicle, bounds)
         both = "torque_margin" in wanted
         if kinds & {"hover", "oei", "transition"} and (both or "lift_torque_margin" in wanted):
             self.add_constraint("lift_motor_torque_margin", lower=limits.min_torque_margin,
@@ -445,6 +452,29 @@ class LPCGroup(om.Group):
             objective_ref=vehicle.masses.target_gross_mass),
             promotes_inputs=[*BASELINE_SET, ("objective", "gross_mass")],
             promotes_outputs=["baseline_objective", ("deviation", "baseline_deviation")])
+
+    def _add_transition_speed_bounds(self, vehicle, bounds):
+        """
+        Each lift rotor's own speed in transition within the bounds of its pair's mean speed.
+
+        With the roll/yaw differentials a rotor turns at its pair's ``transition_lift_rpm``
+        +- half of each differential, so the design-variable bounds alone let it reach 0 rpm
+        (100 rpm mean - 50 - 50), where the motor model stalls: an SLSQP line search of the
+        baseline problem drove a transition_2 rotor to 7 rpm and ended in an AnalysisError
+        (measured 2026-12-01). The speeds are linear in the design variables, so these are
+        linear constraints (Jacobian computed once; SLSQP's steps keep them).
+        """
+        dv = vehicle.design_variables["transition_lift_rpm"]
+        lower, upper = bounds.get("transition_lift_rpm", (dv.lower_array, dv.upper_array))
+        lower = np.broadcast_to(np.asarray(lower, dtype=float), dv.shape)
+        upper = np.broadcast_to(np.asarray(upper, dtype=float), dv.shape)
+        pairs = np.array([r.pair for r in vehicle.lift_rotors])
+        for c in self.conditions:
+            if c.kind == "transition":
+                k = int(c.name.split("_")[1]) - 1
+                self.add_constraint(f"{c.name}.lift_rpm", lower=lower[k, pairs],
+                                    upper=upper[k, pairs], ref=dv.ref, units=_units(dv.units),
+                                    linear=True)
 
     def _trim(self, name, linear, angular, linear_target, ref):
         """Trim constraints: chosen body-axis accelerations of a condition equal targets."""

@@ -14,7 +14,8 @@ def test_analyze_reference_vehicle(tmp_path, capsys):
     assert main(["analyze", "--output-dir", str(tmp_path / "out"),
                  "--n2", str(tmp_path / "n2.html")]) == 0
     text = capsys.readouterr().out
-    assert "15 design conditions, 171 design variables, 96 constraints" in text
+    assert ("15 design conditions, 171 design variables, 96 constraints, 40 linear rotor-speed "
+            "bounds") in text
     assert "gross" in text and "minus_1g" in text
     assert (tmp_path / "n2.html").stat().st_size > 0
     assert (tmp_path / "out" / "constraints.md").exists()

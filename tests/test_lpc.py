@@ -1,5 +1,6 @@
 """The full lift-plus-cruise model (paper Table 6: 161 design variables, 96 constraints; and our
-10 transition roll/yaw lift-rotor speed differentials)."""
+10 transition roll/yaw lift-rotor speed differentials, with 40 linear bounds on each rotor's
+speed)."""
 
 from collections import Counter
 
@@ -22,6 +23,8 @@ TABLE6_DESIGN_VARIABLES = {
 # Not in the paper: roll and yaw speed differentials of the transition lift rotors (roll and yaw
 # trim of transition, lpc_reference.toml).
 OUR_DESIGN_VARIABLES = {"lift rotor roll/yaw differentials, transition": 10}
+# Not in the paper: each transition lift rotor's own speed within its pair's bounds (linear).
+OUR_CONSTRAINTS = {"transition lift rotor speed bounds": 40}
 TABLE6_CONSTRAINTS = {
     "hover noise": 1, "hover trim": 3, "hover tip Mach": 4, "climb/cruise/descent trim": 9,
     "transition trim (v, p, q, r)": 20, "transition prescribed accelerations": 10,
@@ -55,6 +58,9 @@ def _constraint_group(name, meta):
     cond = name.split(".")[0]
     if name == "hover.total_spl_a":
         return "hover noise"
+    if cond.startswith("transition") and name.endswith("lift_rpm"):
+        assert meta["linear"]
+        return "transition lift rotor speed bounds"
     if name == "hover.lift_tip_mach":
         return "hover tip Mach"
     if cond == "hover":
@@ -102,8 +108,20 @@ def test_table6_design_variables_and_constraints(lpc):
             cons["transition trim (v, p, q, r)"] += 1
         else:
             cons[group] += meta["size"]
-    assert dict(cons) == TABLE6_CONSTRAINTS
-    assert sum(cons.values()) == 96
+    assert dict(cons) == TABLE6_CONSTRAINTS | OUR_CONSTRAINTS
+    assert sum(cons.values()) == 96 + 40
+
+
+def test_transition_rotor_speed_bounds_are_the_pair_bounds(lpc):
+    # lpc_reference.toml: transition_lift_rpm in [100, 2000] rpm, ref 1000 rpm; each rotor's
+    # own speed (pair mean + the roll/yaw differentials' share) gets the same bounds, linear.
+    cons = lpc.model.get_constraints()
+    for k in range(1, 6):
+        meta = cons[f"transition_{k}.lift_rpm"]
+        assert meta["linear"] and meta["size"] == 8 and meta["units"] == "rpm"
+        assert_near_equal(meta["lower"], np.full(8, 100.0), 1e-12)
+        assert_near_equal(meta["upper"], np.full(8, 2000.0), 1e-12)
+        assert meta["ref"] == 1000.0
 
 
 def test_initial_design(lpc):
@@ -123,7 +141,7 @@ def test_static_margin_switch():
                           static_margin=False)
     prob.setup()
     prob.final_setup()
-    assert sum(m["size"] for m in prob.model.get_constraints().values()) == 95
+    assert sum(m["size"] for m in prob.model.get_constraints().values()) == 95 + 40
 
 
 def test_totals_across_disciplines(lpc):
