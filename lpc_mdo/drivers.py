@@ -4,7 +4,8 @@ pyoptsparse (the paper's route to IPOPT and SNOPT) is not on PyPI, so a plain ``
 cannot reach it.  :class:`IpoptDriver` is a small OpenMDAO ``Driver`` on top of the ``cyipopt``
 module (``pip install lpc-mdo[ipopt]`` brings the ``cyipopt-wheels`` build, conda users take
 conda-forge ``cyipopt``).  :func:`make_driver` picks pyoptsparse when it is importable and has the
-requested optimizer, and falls back to :class:`IpoptDriver` or ``ScipyOptimizeDriver``.
+requested optimizer, and falls back to :class:`IpoptDriver` or :class:`SlsqpDriver` (OpenMDAO's
+``ScipyOptimizeDriver`` with SLSQP, backing off from failed model evaluations).
 
 The driver follows OpenMDAO's own ``ScipyOptimizeDriver`` (openmdao 3.45): design variables are
 written through ``self._vectors['design_var']`` in driver scaling, every model evaluation is
@@ -18,7 +19,8 @@ import numpy as np
 import openmdao.api as om
 from openmdao.core.driver import Driver, RecordingDebugging
 
-__all__ = ["IpoptDriver", "IpoptMultipliers", "make_driver", "pyoptsparse_optimizers"]
+__all__ = ["IpoptDriver", "IpoptMultipliers", "SlsqpDriver", "make_driver",
+           "pyoptsparse_optimizers"]
 
 # IPOPT return codes 0 (Solve_Succeeded) and 1 (Solved_To_Acceptable_Level) count as success,
 # as in pyOptSparseDriver.
@@ -527,6 +529,66 @@ def pyoptsparse_optimizers():
     return found
 
 
+class SlsqpDriver(om.ScipyOptimizeDriver):
+    """
+    OpenMDAO's ``ScipyOptimizeDriver`` with SLSQP that backs off from points where the model
+    fails.
+
+    SciPy's SLSQP has no notion of a failed evaluation, and ``ScipyOptimizeDriver`` re-raises
+    the first exception of the model, ending the run: an ``om.AnalysisError`` at one line-search
+    point (a trial step that stalls a motor or leaves a rotor without through-flow) would end a
+    full-problem optimization that a shorter step keeps feasible. Here an ``om.AnalysisError``
+    at a trial point returns the last successful point's objective plus ``failure_penalty``
+    (in the driver-scaled space) and that point's constraint values, so the merit function
+    rises and SLSQP's line search cuts the step (by at least 10x each time); an error at the
+    first evaluation, or any other exception, is re-raised as before. The messages are kept in
+    ``analysis_errors``, as :class:`IpoptDriver` does.
+
+    Options
+    -------
+    failure_penalty : float
+        Added to the last successful objective at a failed point (driver-scaled; > 0).
+    """
+
+    def __init__(self, **kwargs):
+        super().__init__(**kwargs)
+        self.options["optimizer"] = "SLSQP"
+        self.analysis_errors = []
+        self._last_good = None
+
+    def _declare_options(self):
+        super()._declare_options()
+        self.options.declare("failure_penalty", default=1.0e6, lower=0.0,
+                             desc="added to the last successful scaled objective at a point "
+                                  "where the model raised om.AnalysisError")
+
+    def run(self):
+        self.analysis_errors = []
+        self._last_good = None
+        self._last_failed = False
+        fail = super().run()
+        if self._last_failed:  # the model holds a failed trial point: evaluate the result
+            super()._objfunc(self._scipy_optimize_result.x)
+            if self._exc_info is not None:
+                self._reraise()
+        return fail
+
+    def _objfunc(self, x_new):
+        value = super()._objfunc(x_new)
+        self._last_failed = False
+        if self._exc_info is None:
+            self._last_good = (value, self._con_cache)
+            return value
+        error = self._exc_info[1]
+        if not isinstance(error, om.AnalysisError) or self._last_good is None:
+            return value  # re-raised by the constraint callback, as in ScipyOptimizeDriver
+        self._exc_info = None
+        self._last_failed = True
+        self.analysis_errors.append(str(error))
+        value, self._con_cache = self._last_good
+        return value + self.options["failure_penalty"]
+
+
 _KNOWN = ("IPOPT", "SNOPT", "SLSQP")
 
 
@@ -547,7 +609,8 @@ def make_driver(optimizer="IPOPT", **settings):
     -------
     Driver
         ``om.pyOptSparseDriver`` when pyoptsparse is importable and provides the optimizer;
-        otherwise :class:`IpoptDriver` for IPOPT and ``om.ScipyOptimizeDriver`` for SLSQP.
+        otherwise :class:`IpoptDriver` for IPOPT and :class:`SlsqpDriver` (SciPy's SLSQP) for
+        SLSQP.
 
     Raises
     ------
@@ -566,7 +629,7 @@ def make_driver(optimizer="IPOPT", **settings):
     elif name == "IPOPT":
         driver = IpoptDriver()
     elif name == "SLSQP":
-        driver = om.ScipyOptimizeDriver(optimizer="SLSQP")
+        driver = SlsqpDriver()
     else:
         raise RuntimeError(
             "SNOPT is reached only through pyoptsparse, which is not importable here"

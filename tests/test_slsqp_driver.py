@@ -1,0 +1,94 @@
+"""SlsqpDriver: SciPy's SLSQP that backs off from model failures instead of ending the run.
+
+Reference optimum: f = (x - 2)^2 + (y + 1)^2 has its minimum 0 at (2, -1) (closed form).
+"""
+
+import numpy as np
+import openmdao.api as om
+import pytest
+from openmdao.utils.assert_utils import assert_near_equal
+
+from lpc_mdo.drivers import SlsqpDriver, make_driver
+
+
+class Bowl(om.ExplicitComponent):
+    """f = k (x - 2)^2 + (y + 1)^2, failing (AnalysisError, or ``error``) where x > x_fail."""
+
+    def initialize(self):
+        self.options.declare("x_fail", default=np.inf)
+        self.options.declare("error", default=om.AnalysisError)
+
+    def setup(self):
+        self.add_input("x", 0.0)
+        self.add_input("y", 0.0)
+        self.add_output("f", 0.0)
+        self.add_output("c", 0.0)
+        self.declare_partials("f", ["x", "y"])
+        self.declare_partials("c", ["x", "y"], val=1.0)
+        self.failures = 0
+
+    def compute(self, inputs, outputs):
+        x, y = inputs["x"][0], inputs["y"][0]
+        if x > self.options["x_fail"]:
+            self.failures += 1
+            raise self.options["error"](f"no solution at x = {x:.4g}")
+        outputs["f"] = 4.0 * (x - 2.0) ** 2 + (y + 1.0) ** 2
+        outputs["c"] = x + y
+
+    def compute_partials(self, inputs, partials):
+        partials["f", "x"] = 8.0 * (inputs["x"] - 2.0)
+        partials["f", "y"] = 2.0 * (inputs["y"] + 1.0)
+
+
+def bowl_problem(driver, **options):
+    prob = om.Problem(reports=False)
+    prob.model.add_subsystem("bowl", Bowl(**options), promotes=["*"])
+    prob.model.add_design_var("x", lower=-10.0, upper=10.0)
+    prob.model.add_design_var("y", lower=-10.0, upper=10.0)
+    prob.model.add_objective("f")
+    prob.model.add_constraint("c", upper=5.0)   # inactive at the optimum (c = 1)
+    prob.driver = driver
+    prob.setup()
+    return prob
+
+
+def test_failed_trial_point_is_backed_off_and_optimum_reached():
+    # From x = 0 the first SLSQP step (unit initial Hessian, gradient -16) lands at x = 16,
+    # clipped to the bound 10, where the model fails (x_fail = 3): the line search must cut it.
+    prob = bowl_problem(SlsqpDriver(tol=1e-10, disp=False), x_fail=3.0)
+    prob.set_val("x", 0.0)
+    prob.set_val("y", 0.0)
+    prob.run_driver()
+    assert prob.model.bowl.failures >= 1
+    assert len(prob.driver.analysis_errors) == prob.model.bowl.failures
+    assert prob.driver.analysis_errors[0].endswith("no solution at x = 10")
+    assert prob.driver.result.success
+    assert_near_equal(prob.get_val("x"), 2.0, 1e-6)
+    assert_near_equal(prob.get_val("y"), -1.0, 1e-6)
+    # The model holds the optimum, not a failed trial point.
+    assert_near_equal(prob.get_val("f"), 0.0, 1e-10)
+
+
+def test_scipy_driver_without_back_off_ends_the_run():
+    # The same problem with OpenMDAO's driver: the first failed trial point ends the run.
+    prob = bowl_problem(om.ScipyOptimizeDriver(optimizer="SLSQP", tol=1e-10, disp=False),
+                        x_fail=3.0)
+    with pytest.raises(om.AnalysisError, match="no solution at x"):
+        prob.run_driver()
+
+
+def test_other_errors_and_a_failed_start_are_reraised():
+    prob = bowl_problem(SlsqpDriver(disp=False), x_fail=3.0, error=KeyError)
+    with pytest.raises(KeyError, match="no solution at x"):
+        prob.run_driver()
+    prob = bowl_problem(SlsqpDriver(disp=False), x_fail=-1.0)   # fails at the start, x = 0
+    with pytest.raises(om.AnalysisError, match="no solution at x = 0"):
+        prob.run_driver()
+
+
+def test_make_driver_gives_slsqp_driver_and_penalty_option():
+    driver = make_driver("SLSQP", failure_penalty=10.0)
+    assert isinstance(driver, SlsqpDriver) and driver.options["optimizer"] == "SLSQP"
+    assert driver.options["failure_penalty"] == 10.0
+    with pytest.raises(ValueError, match="failure_penalty"):
+        driver.options["failure_penalty"] = -1.0
