@@ -3,7 +3,7 @@
 Plain functions that wrap the OpenMDAO models for quick studies, and the public classes.
 """
 
-from lpc_mdo.drivers import IpoptDriver, IpoptMultipliers, make_driver
+from lpc_mdo.drivers import IpoptDriver, IpoptMultipliers, SlsqpDriver, make_driver
 from lpc_mdo.groups.acoustics import RotorNoiseGroup, a_weighting, rotor_noise
 from lpc_mdo.groups.beam import beam, box_beam
 from lpc_mdo.groups.lpc import LPCGroup
@@ -25,6 +25,7 @@ __all__ = [
     "IpoptDriver",
     "IpoptMultipliers",
     "MotorGroup",
+    "SlsqpDriver",
     "VehicleSpecError",
     "WeightsGroup",
     "build_analysis_problem",
