@@ -547,14 +547,15 @@ class SlsqpDriver(om.ScipyOptimizeDriver):
     Options
     -------
     failure_penalty : float
-        Added to the last successful objective at a failed point (driver-scaled; > 0).
+        Added to the last successful objective at a failed point (driver-scaled; >= 0).
     """
 
     def __init__(self, **kwargs):
         super().__init__(**kwargs)
         self.options["optimizer"] = "SLSQP"
         self.analysis_errors = []
-        self._last_good = None
+        self._last_good = None     # (scaled objective, constraint values) of the last good point
+        self._last_failed = False  # whether the model holds a failed trial point
 
     def _declare_options(self):
         super()._declare_options()
