@@ -18,6 +18,7 @@ import sys
 import numpy as np
 import openmdao.api as om
 from openmdao.core.driver import Driver, RecordingDebugging
+from openmdao.utils.om_warnings import DriverWarning, issue_warning
 
 __all__ = ["IpoptDriver", "IpoptMultipliers", "SlsqpDriver", "make_driver",
            "pyoptsparse_optimizers"]
@@ -586,6 +587,9 @@ class SlsqpDriver(om.ScipyOptimizeDriver):
         self._exc_info = None
         self._last_failed = True
         self.analysis_errors.append(str(error))
+        issue_warning(f"model evaluation {self.iter_count} failed ({error}); SLSQP's line "
+                      "search is given the last good point's values plus failure_penalty",
+                      prefix=self.msginfo, category=DriverWarning)
         value, self._con_cache = self._last_good
         return value + self.options["failure_penalty"]
 

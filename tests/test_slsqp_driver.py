@@ -7,6 +7,7 @@ import numpy as np
 import openmdao.api as om
 import pytest
 from openmdao.utils.assert_utils import assert_near_equal
+from openmdao.utils.om_warnings import DriverWarning
 
 from lpc_mdo.drivers import SlsqpDriver, make_driver
 
@@ -58,7 +59,8 @@ def test_failed_trial_point_is_backed_off_and_optimum_reached():
     prob = bowl_problem(SlsqpDriver(tol=1e-10, disp=False), x_fail=3.0)
     prob.set_val("x", 0.0)
     prob.set_val("y", 0.0)
-    prob.run_driver()
+    with pytest.warns(DriverWarning, match="model evaluation 3 failed .*no solution at x = 10"):
+        prob.run_driver()
     assert prob.model.bowl.failures >= 1
     assert len(prob.driver.analysis_errors) == prob.model.bowl.failures
     assert prob.driver.analysis_errors[0].endswith("no solution at x = 10")
