@@ -47,6 +47,23 @@ WARM_START_SETTINGS = {
 }
 
 
+class _FlagsFailedCases:
+    """
+    Driver mixin: a model evaluation that raised ``om.AnalysisError`` is recorded as a driver
+    case with ``success = 0`` and the error as ``msg`` (OpenMDAO records every evaluation with
+    success = 1), so post-processing can leave its stale outputs out (``case.success``).
+    """
+
+    _failure = None  # the AnalysisError of the evaluation being recorded, when caught
+
+    def _get_recorder_metadata(self, case_name):
+        meta = super()._get_recorder_metadata(case_name)
+        error = self._failure if self._failure is not None else sys.exc_info()[1]
+        if isinstance(error, om.AnalysisError):
+            meta["success"], meta["msg"] = 0, str(error)
+        return meta
+
+
 class IpoptMultipliers(dict):
     """
     Final IPOPT multipliers of a run, keyed by OpenMDAO name, for a later warm start.
@@ -58,7 +75,7 @@ class IpoptMultipliers(dict):
     """
 
 
-class IpoptDriver(Driver):
+class IpoptDriver(_FlagsFailedCases, Driver):
     """
     OpenMDAO driver for IPOPT through the ``cyipopt`` module.
 
@@ -377,11 +394,13 @@ class IpoptDriver(Driver):
             except om.AnalysisError as err:
                 model._clear_iprint()
                 self.analysis_errors.append(str(err))
+                self._failure = err  # recorded as a failed case on leaving the block
                 ok = False
             except KeyboardInterrupt:
                 model._clear_iprint()
                 self._user_stop = True
                 ok = False
+        self._failure = None
         if ok:
             self._x_model = np.array(x, copy=True)
             self._x_failed = None
@@ -530,7 +549,7 @@ def pyoptsparse_optimizers():
     return found
 
 
-class SlsqpDriver(om.ScipyOptimizeDriver):
+class SlsqpDriver(_FlagsFailedCases, om.ScipyOptimizeDriver):
     """
     OpenMDAO's ``ScipyOptimizeDriver`` with SLSQP that backs off from points where the model
     fails.

@@ -48,6 +48,10 @@ class ProgressLine(CaseRecorder):
         if (self._counter - 1) % self.every:
             return
         driver = recording_requester
+        if not metadata["success"]:   # an evaluation that raised AnalysisError
+            print(f"{self.label:>16}  iter {self._counter:5d}  evaluation failed: "
+                  f"{metadata['msg']}", file=self.stream or sys.stdout, flush=True)
+            return
         objective = driver.get_objective_values(driver_scaling=False)
         obj = float(np.ravel(next(iter(objective.values())))[0]) if objective else float("nan")
         elapsed = time.perf_counter() - self._start

@@ -198,10 +198,21 @@ def test_recorder_records_every_evaluation_and_final_case_loads(tmp_path):
     assert_near_equal(fresh.get_val("z"), prob.get_val("z"), 1e-12)
 
 
-def test_analysis_error_is_cut_back_and_optimization_converges():
+def test_analysis_error_is_cut_back_and_optimization_converges(tmp_path):
     # Fail the 3rd and 5th model evaluations; IPOPT must back off and still converge.
     prob = paraboloid_problem(IpoptDriver(print_level=0, tol=1e-10), fail_on_calls=(3, 5))
+    path = str(tmp_path / "cases.sql")
+    prob.driver.add_recorder(om.SqliteRecorder(path))
+    prob.final_setup()
     result = prob.run_driver()
+    prob.cleanup()
+    # The failed evaluations are recorded as failed driver cases (success 0, the error as msg).
+    reader = om.CaseReader(path)
+    failed = [c for c in map(reader.get_case, reader.list_cases("driver", out_stream=None))
+              if not c.success]
+    assert len(failed) == 2
+    assert failed[0].msg.endswith("simulated failure on call 3")
+    assert failed[1].msg.endswith("simulated failure on call 5")
     comp = prob.model.parab
     assert comp.failures == 2
     errors = prob.driver.analysis_errors

@@ -3,6 +3,8 @@
 Reference optimum: f = (x - 2)^2 + (y + 1)^2 has its minimum 0 at (2, -1) (closed form).
 """
 
+import io
+
 import numpy as np
 import openmdao.api as om
 import pytest
@@ -10,6 +12,8 @@ from openmdao.utils.assert_utils import assert_near_equal
 from openmdao.utils.om_warnings import DriverWarning
 
 from lpc_mdo.drivers import SlsqpDriver, make_driver
+from lpc_mdo.post.tables import driver_cases, last_case
+from lpc_mdo.progress import ProgressLine
 
 
 class Bowl(om.ExplicitComponent):
@@ -69,6 +73,25 @@ def test_failed_trial_point_is_backed_off_and_optimum_reached():
     assert_near_equal(prob.get_val("y"), -1.0, 1e-6)
     # The model holds the optimum, not a failed trial point.
     assert_near_equal(prob.get_val("f"), 0.0, 1e-10)
+
+
+def test_failed_evaluation_is_recorded_as_failed_case(tmp_path):
+    path = str(tmp_path / "bowl.sql")
+    prob = bowl_problem(SlsqpDriver(tol=1e-10, disp=False), x_fail=3.0)
+    prob.driver.add_recorder(om.SqliteRecorder(path))
+    out = io.StringIO()
+    prob.driver.add_recorder(ProgressLine("bowl", stream=out))
+    prob.final_setup()
+    with pytest.warns(DriverWarning):
+        prob.run_driver()
+    prob.cleanup()
+    cases = driver_cases(path, include_failed=True)
+    failed = [c for c in cases if not c.success]
+    assert len(failed) == prob.model.bowl.failures == 1
+    assert failed[0].msg.endswith("no solution at x = 10")
+    assert len(driver_cases(path)) == len(cases) - 1
+    assert last_case(path).success
+    assert "iter     3  evaluation failed: 'bowl' <class Bowl>" in out.getvalue()
 
 
 def test_scipy_driver_without_back_off_ends_the_run():

@@ -116,16 +116,20 @@ def _source_ids(cr, source):
     return cr.list_cases(source, recurse=False, out_stream=None)
 
 
-def driver_cases(source):
+def driver_cases(source, include_failed=False):
     """
-    Return every driver case of a case file, in recording order.
+    Return the driver cases of a case file, in recording order.
 
-    Reads the ``driver`` cases (one per model evaluation the driver recorded).
+    Reads the ``driver`` cases (one per model evaluation the driver recorded) and their
+    ``success`` flag: lpc-mdo's drivers record an evaluation that raised ``om.AnalysisError``
+    with success = 0, its outputs stale.
 
     Parameters
     ----------
     source : str, os.PathLike or CaseReader
         Case file or reader.
+    include_failed : bool
+        Also return the failed evaluations.
 
     Returns
     -------
@@ -133,12 +137,13 @@ def driver_cases(source):
         Empty when the driver was not recorded.
     """
     cr = open_reader(source)
-    return [cr.get_case(i) for i in _source_ids(cr, "driver")]
+    cases = [cr.get_case(i) for i in _source_ids(cr, "driver")]
+    return cases if include_failed else [c for c in cases if c.success]
 
 
 def last_case(source, kind="driver"):
     """
-    Return the last case recorded by the driver or by the problem, or None.
+    Return the last successful case recorded by the driver or by the problem, or None.
 
     Parameters
     ----------
@@ -156,8 +161,11 @@ def last_case(source, kind="driver"):
     if kind not in ("driver", "problem"):
         raise ValueError(f"kind = {kind!r}; allowed values are 'driver' and 'problem'.")
     cr = open_reader(source)
-    ids = _source_ids(cr, kind)
-    return cr.get_case(ids[-1]) if ids else None
+    for case_id in reversed(_source_ids(cr, kind)):
+        case = cr.get_case(case_id)
+        if case.success:  # a driver case of a failed evaluation holds stale outputs
+            return case
+    return None
 
 
 def final_case(source, case=None):
