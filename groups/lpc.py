@@ -367,10 +367,7 @@ class LPCGroup(om.Group):
             dv = vehicle.design_variables[name]
             if not _design_variable_used(name, present, kinds):
                 continue
-            shape = dv.shape
-            lower, upper = bounds.get(name, (dv.lower_array, dv.upper_array))
-            lower = np.broadcast_to(np.asarray(lower, dtype=float), shape)
-            upper = np.broadcast_to(np.asarray(upper, dtype=float), shape)
+            lower, upper = _bounds(name, dv, bounds)
             ref = refs.get(name, dv.ref)
             if indices is not None:
                 lower, upper = lower.ravel()[indices], upper.ravel()[indices]
@@ -465,9 +462,7 @@ class LPCGroup(om.Group):
         linear constraints (Jacobian computed once; SLSQP's steps keep them).
         """
         dv = vehicle.design_variables["transition_lift_rpm"]
-        lower, upper = bounds.get("transition_lift_rpm", (dv.lower_array, dv.upper_array))
-        lower = np.broadcast_to(np.asarray(lower, dtype=float), dv.shape)
-        upper = np.broadcast_to(np.asarray(upper, dtype=float), dv.shape)
+        lower, upper = _bounds("transition_lift_rpm", dv, bounds)
         pairs = np.array([r.pair for r in vehicle.lift_rotors])
         for c in self.conditions:
             if c.kind == "transition":
@@ -587,6 +582,13 @@ def condition_trim_variables(vehicle, name):
     if kind == "steady":
         return [(f"{name}_{v}", np.array([0])) for v in ("pusher_rpm", "pitch", "elevator")]
     return [(f"{name}_pitch", np.array([0]))]
+
+
+def _bounds(name, dv, overrides):
+    """(lower, upper) of a design variable in its shape: the override, else the vehicle file's."""
+    lower, upper = overrides.get(name, (dv.lower_array, dv.upper_array))
+    return (np.broadcast_to(np.asarray(lower, dtype=float), dv.shape),
+            np.broadcast_to(np.asarray(upper, dtype=float), dv.shape))
 
 
 def _design_variable_used(name, present, kinds):
