@@ -1,6 +1,6 @@
 """SlsqpDriver: SciPy's SLSQP that backs off from model failures instead of ending the run.
 
-Reference optimum: f = (x - 2)^2 + (y + 1)^2 has its minimum 0 at (2, -1) (closed form).
+Reference optimum: f = 4 (x - 2)^2 + (y + 1)^2 has its minimum 0 at (2, -1) (closed form).
 """
 
 import io
@@ -17,7 +17,7 @@ from lpc_mdo.progress import ProgressLine
 
 
 class Bowl(om.ExplicitComponent):
-    """f = k (x - 2)^2 + (y + 1)^2, failing (AnalysisError, or ``error``) where x > x_fail."""
+    """f = 4 (x - 2)^2 + (y + 1)^2, failing (AnalysisError, or ``error``) where x > x_fail."""
 
     def initialize(self):
         self.options.declare("x_fail", default=np.inf)
