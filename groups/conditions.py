@@ -1,20 +1,22 @@
 """The design-condition groups of the lift-plus-cruise problem (paper Sec. IV, Fig. 11).
 
-Each condition is one OpenMDAO Group with its atmosphere, kinematics, the disciplines it needs and
-the six-degree-of-freedom equations of motion, whose accelerations are the trim constraints
+Each condition of the vehicle file is one OpenMDAO Group, built by the class of its ``kind``
+(:mod:`lpc_mdo.groups.condition_kinds`), with its atmosphere, kinematics, the disciplines it needs
+and the six-degree-of-freedom equations of motion, whose accelerations are the trim constraints
 (paper eqs. 29, 34). Vehicle-level quantities (meshes, hub positions, radii, blade control points,
-motor lengths, mass properties) are inputs; ``groups/lpc.py`` connects them.
+motor lengths, mass properties) are inputs, which each class declares
+(:class:`~lpc_mdo.groups.condition_base.ConditionGroup`) and ``groups/lpc.py`` connects.
 
-Conditions and their groups (ARCHITECTURE.md §2):
+Kinds and their groups (the reference vehicle's conditions in parentheses):
 
-- ``hover``, ``oei_1``..``oei_4``: :class:`HoverCondition` (BEM lift rotors and motors, trim;
-  hover adds acoustics);
-- ``transition_1``..``transition_5``: :class:`TransitionCondition` (VLM + drag, Pitt–Peters
-  lift rotors, BEM pusher, 9 motors, prescribed speed, pitch and accelerations);
-- ``climb``, ``cruise``, ``descent``: :class:`SteadyFlightCondition` (VLM + drag, BEM pusher and
-  its motor; cruise adds the static margin);
-- ``plus_3g``, ``minus_1g``: :class:`StructuralCondition` (VLM at the load factor, wing-box beam,
-  stress and buckling).
+- ``hover``, ``oei``: :class:`HoverCondition` (BEM lift rotors and motors, trim; without a failed
+  rotor also the acoustics; hover, oei_1 .. oei_4);
+- ``transition``: :class:`TransitionCondition` (VLM + drag, Pitt–Peters lift rotors, BEM pusher,
+  all motors, prescribed speed, pitch and acceleration; transition_1 .. transition_5);
+- ``steady``: :class:`SteadyFlightCondition` (VLM + drag, BEM pusher and its motor; the vehicle's
+  ``mission.cruise_condition`` adds the static margin; climb, cruise, descent);
+- ``structural``: :class:`StructuralCondition` (VLM at the load factor, wing-box beam, stress and
+  buckling; plus_3g, minus_1g).
 
 Variable names inside a condition (promoted): ``lift_radius`` (num_lift,), ``lift_chord_cp``,
 ``lift_twist_cp`` (num_lift, 4), ``lift_hub_position`` (num_lift, 3), ``lift_motor_length``
@@ -28,7 +30,6 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.aero.drag_buildup import DragBuildupComp, lpc_drag_components
-from lpc_mdo.components.aero.polar import LinearQuadraticPolar, Polar
 from lpc_mdo.components.atmosphere import AtmosphereComp
 from lpc_mdo.components.dynamics.eom import EquationsOfMotionComp
 from lpc_mdo.components.dynamics.force_sum import ForceSumComp
@@ -47,28 +48,28 @@ from lpc_mdo.components.structures.load_transfer import DisplacementTransferComp
 from lpc_mdo.components.structures.mesh_deformation import MeshDeformationComp
 from lpc_mdo.groups.acoustics import RotorNoiseGroup
 from lpc_mdo.groups.beam import BoxBeamGroup
+from lpc_mdo.groups.condition_base import (
+    ConditionConstraint,
+    ConditionGroup,
+    ConditionVariable,
+    TrimRow,
+    condition_layout,
+    linear_trim_ref,
+)
 from lpc_mdo.groups.motor import MotorGroup
 from lpc_mdo.groups.pitt_peters import PittPetersRotorGroup
 from lpc_mdo.groups.rotor import BEMRotorGroup
 from lpc_mdo.groups.vehicle import motor_loadings, motor_parameters
 from lpc_mdo.groups.vlm import VLMGroup, lpc_vlm_surfaces
-from lpc_mdo.vehicle import check_hover_pitch
+from lpc_mdo.vehicle import VehicleSpecError
 
-NUM_CP = 4
 #: Rotor section t/c of the thickness noise when a rotor's airfoil is a polar file (NACA 0012).
 DEFAULT_ROTOR_THICKNESS_TO_CHORD = 0.12
 
-
-def _declare_common(group):
-    group.options.declare("vehicle", desc="lpc_mdo.vehicle.Vehicle")
-    group.options.declare("condition", types=str, desc="condition name in the vehicle file")
-    group.options.declare("rotor_polar", default=LinearQuadraticPolar(), types=Polar,
-                          desc="blade-section polar of the lift rotors (and of the pusher when "
-                               "'pusher_polar' is None)")
-    group.options.declare("pusher_polar", default=None, types=Polar, allow_none=True,
-                          desc="blade-section polar of the pusher (None: 'rotor_polar')")
-    group.options.declare("num_radial", default=25, types=int, lower=2,
-                          desc="radial stations of the rotor models")
+_ZERO = (lambda x: x == 0, "0")
+_ONE = (lambda x: x == 1, "1")
+_POSITIVE = (lambda x: x > 0, "> 0")
+_NO_FAILURE = (lambda x: x == -1, "-1")
 
 
 def _declare_aero(group):
@@ -76,6 +77,60 @@ def _declare_aero(group):
                           desc="sectional zero-lift angle of the wing airfoil, rad")
     group.options.declare("wing_panels", default=26, types=int, desc="wing VLM panels")
     group.options.declare("tail_panels", default=8, types=int, desc="tail VLM panels")
+
+
+def num_lift_pairs(lift_rotors):
+    """Number of mirror-symmetric lift-rotor pairs (rotor groups of the per-group variables)."""
+    return len({r.pair for r in lift_rotors})
+
+
+def _rotor_group_rows(vehicle, active):
+    """Rows of the per-rotor-group design variables (pair index) of the lift rotors ``active``."""
+    return np.array([vehicle.lift_rotors[i].pair for i in active])
+
+
+def _lift_inputs(vehicle, active):
+    """Vehicle-level inputs of the lift rotors ``active`` (indices into ``lift_rotors``)."""
+    active = np.asarray(active)
+    rows = _rotor_group_rows(vehicle, active)
+    return (("lift_rotor_radius", "lift_radius", active),
+            ("blade_chord_cp", "lift_chord_cp", om.slicer[rows, :]),
+            ("blade_twist_cp", "lift_twist_cp", om.slicer[rows, :]),
+            ("lift_hub_position", "lift_hub_position", om.slicer[active, :]),
+            ("motor_length", "lift_motor_length", rows))
+
+
+def _pusher_inputs(vehicle):
+    """Vehicle-level inputs of the pusher (its row follows the lift pairs)."""
+    row = num_lift_pairs(vehicle.lift_rotors)
+    return (("rotor_radius", "pusher_radius", [row]),
+            ("blade_chord_cp", "pusher_chord_cp", om.slicer[[row], :]),
+            ("blade_twist_cp", "pusher_twist_cp", om.slicer[[row], :]),
+            ("pusher_hub_position", "pusher_hub_position", om.slicer[np.arange(3)[None, :],]),
+            ("motor_length", "pusher_motor_length", [row]))
+
+
+#: Vehicle-level inputs of the aerodynamics (VLM meshes, reference quantities, drag build-up).
+_AERO_INPUTS = tuple((name, name, None) for name in (
+    "wing_mesh", "horizontal_tail_mesh", "wing_area", "wing_mac", "htail_area", "htail_mac",
+    "fuselage_length"))
+
+
+#: Wing-box inputs of a structural condition (vehicle-level outputs of the same name).
+_WING_BOX_INPUTS = ("wing_box_nodes", "box_width", "box_height", "top_skin_thickness",
+                    "bottom_skin_thickness", "front_spar_thickness", "rear_spar_thickness",
+                    "top_skin_radius", "bottom_skin_radius")
+
+
+def _speed_variable(target, count, description, name="lift_rpm"):
+    """Rotor speeds as a (1, count) input of the condition."""
+    return ConditionVariable(name, target, (1, count), (count,), "rpm", description)
+
+
+_PUSHER_RPM = ConditionVariable("pusher_rpm", "pusher_rpm", (1, 1), (1,), "rpm", "pusher speed")
+_ELEVATOR = ConditionVariable("elevator", "elevator", (1,), (1,), "rad", "h-tail deflection")
+_PITCH = ConditionVariable("pitch", "pitch", (1,), (1,), "rad", "aircraft pitch",
+                           initial_from="pitch")
 
 
 def _add_motors(group, vehicle, prefix, num_motors):
@@ -247,45 +302,126 @@ def _add_power(group, motors):
     group.add_subsystem("power", TotalPowerComp(motors=motors), promotes=["*"])
 
 
-class HoverCondition(om.Group):
+class HoverCondition(ConditionGroup):
     """
     Hover (and one-engine-inoperative hover): BEM lift rotors, their motors, trim, and in hover
-    the noise at the paper's observer (paper Sec. IV; reference page §8.3, §8.5).
+    the noise at the paper's observer (paper Sec. IV; docs: theory/dynamics and
+    theory/acoustics).
 
-    The failed rotor of an OEI case (``failed_rotor`` in the vehicle file) is left out; the
-    seven working rotors have their own speeds (one speed group each), while in hover the
-    mirror-symmetric pairs share theirs. Trim: all six accelerations are outputs; the full
-    problem constrains w_dot, p_dot, q_dot in hover and v_dot, w_dot, p_dot, q_dot, r_dot in OEI.
-    The body is level (``pitch`` = 0): a condition with another pitch is a VehicleSpecError
-    (see :func:`lpc_mdo.vehicle.check_hover_pitch`).
+    Kinds ``hover`` and ``oei``. The failed rotor of an OEI case (``failed_rotor`` in the vehicle
+    file) is left out; the working rotors have their own speeds (one speed group each), while in
+    hover the mirror-symmetric pairs share theirs. Trim: all six accelerations are outputs; the
+    Table 6 rows are w_dot, p_dot, q_dot in hover and v_dot, w_dot, p_dot, q_dot, r_dot in OEI
+    (hover p_dot and OEI v_dot vanish for every design: degenerate rows). The body is level
+    (``pitch`` = 0): the lift-rotor thrust axes are body-fixed and u_dot is not a hover trim row,
+    so a pitched hover is a VehicleSpecError.
 
-    The noise model (hover) takes from the vehicle the observer (``noise_observer.distance``,
-    ``noise_observer.elevation`` -> ``observer_distance``, ``observer_elevation``; the azimuth
-    stays aft, 180 deg) and each lift rotor's section t/c (``lift_rotors[i].airfoil`` ->
-    ``lift_thickness_to_chord``, of the thickness noise).
+    The noise model (without a failed rotor) takes from the vehicle the observer
+    (``noise_observer.distance``, ``noise_observer.elevation`` -> ``observer_distance``,
+    ``observer_elevation``; the azimuth stays aft, 180 deg) and each lift rotor's section t/c
+    (``lift_rotors[i].airfoil`` -> ``lift_thickness_to_chord``, of the thickness noise).
 
     Outputs: ``linear_acceleration``, ``angular_acceleration`` (1, 3); ``electrical_power``
     (1,); ``lift_tip_mach``, ``lift_figure_of_merit``, ``lift_motor_torque_margin``,
-    ``lift_motor_em_torque`` (num_lift, 1); in hover ``total_spl_a`` (dBA).
+    ``lift_motor_em_torque`` (num_lift, 1); with acoustics ``total_spl_a`` (dBA).
     """
 
+    field_rules = {
+        "hover": {"speed": _ZERO, "failed_rotor": _NO_FAILURE, "acceleration": _ZERO,
+                  "load_factor": _ONE},
+        "oei": {"speed": _ZERO, "failed_rotor": (lambda x: x >= 0, "a lift-rotor index (>= 0)"),
+                "acceleration": _ZERO, "load_factor": _ONE},
+    }
+
     def initialize(self):
-        _declare_common(self)
+        super().initialize()
         self.options.declare("acoustics", default=None, types=bool, allow_none=True,
-                             desc="add the noise model (None: in hover, not in OEI)")
+                             desc="add the noise model (None: without a failed rotor)")
+
+    @classmethod
+    def check(cls, index, condition, vehicle):
+        super().check(index, condition, vehicle)
+        if condition.pitch != 0.0:
+            raise VehicleSpecError(
+                f"'conditions[{index}].pitch_deg' = {np.degrees(condition.pitch):.6g} deg is not "
+                f"allowed: must be 0 in {condition.kind!r} conditions (the hover model holds the "
+                f"body level; the lift-rotor thrust axes are body-fixed and u_dot is not a hover "
+                f"trim constraint)"
+            )
+        failed = condition.failed_rotor
+        if failed >= len(vehicle.lift_rotors):
+            raise VehicleSpecError(
+                f"'conditions[{index}].failed_rotor' = {failed} is out of range: must be -1 or a "
+                f"lift-rotor index in [0, {len(vehicle.lift_rotors) - 1}]"
+            )
+        if failed >= 0:
+            for j, other in enumerate(vehicle.conditions[:index]):
+                if other.failed_rotor == failed:
+                    raise VehicleSpecError(
+                        f"'conditions[{index}].failed_rotor' = {failed} repeats "
+                        f"'conditions[{j}].failed_rotor'; each OEI condition must fail a "
+                        f"different lift rotor"
+                    )
+
+    @staticmethod
+    def active_lift_rotors(vehicle, condition):
+        """Indices into ``vehicle.lift_rotors`` of the rotors that run."""
+        return [i for i in range(len(vehicle.lift_rotors)) if i != condition.failed_rotor]
+
+    @classmethod
+    def variables(cls, vehicle, condition):
+        if condition.failed_rotor < 0:
+            n = num_lift_pairs(vehicle.lift_rotors)
+            return (_speed_variable("lift_rotor_speed", n, "lift-rotor speed per pair"),)
+        n = len(vehicle.lift_rotors) - 1
+        return (_speed_variable("lift_rotor_speed", n, "speed of the working lift rotors, in "
+                                "lift_rotors order (the failed one skipped)"),)
+
+    @classmethod
+    def vehicle_inputs(cls, vehicle, condition):
+        return (super().vehicle_inputs(vehicle, condition)
+                + _lift_inputs(vehicle, cls.active_lift_rotors(vehicle, condition)))
+
+    @classmethod
+    def trim_rows(cls, vehicle, condition):
+        g = linear_trim_ref()
+        if condition.failed_rotor < 0:
+            # p_dot: the pairs share speeds and spin in opposite senses, so it vanishes.
+            return (TrimRow("w", ref=g), TrimRow("p", degenerate=True), TrimRow("q"))
+        # v_dot: no side force acts in hover (rotor thrust only, no edgewise flow).
+        return (TrimRow("v", ref=g, degenerate=True), TrimRow("w", ref=g), TrimRow("p"),
+                TrimRow("q"), TrimRow("r"))
+
+    @classmethod
+    def constraints(cls, vehicle, condition, bounds):
+        if condition.failed_rotor >= 0:
+            return ()
+        limits = vehicle.constraints
+        active = cls.active_lift_rotors(vehicle, condition)
+        pairs = [vehicle.lift_rotors[i].pair for i in active]
+        one_per_pair = [pairs.index(p) for p in sorted(set(pairs))]
+        return (ConditionConstraint("noise", "total_spl_a",
+                                    {"upper": limits.max_noise, "ref": 10.0}),
+                ConditionConstraint("tip_mach", "lift_tip_mach",
+                                    {"indices": one_per_pair, "flat_indices": True,
+                                     "upper": limits.max_tip_mach}))
+
+    @classmethod
+    def motor_sets(cls, vehicle, condition):
+        return {"lift": tuple(cls.active_lift_rotors(vehicle, condition))}
 
     def setup(self):
         vehicle = self.options["vehicle"]
         condition = vehicle.condition(self.options["condition"])
         # A Vehicle built in code (dataclasses.replace) skips the file validation: check again.
-        check_hover_pitch(vehicle.conditions.index(condition), condition)
+        self.check(vehicle.conditions.index(condition), condition, vehicle)
         failed = condition.failed_rotor
-        self.active_rotors = [i for i in range(len(vehicle.lift_rotors)) if i != failed]
+        self.active_rotors = self.active_lift_rotors(vehicle, condition)
         rotors = [vehicle.lift_rotors[i] for i in self.active_rotors]
         if failed >= 0:
             groups, num_groups = list(range(len(rotors))), len(rotors)
         else:
-            groups, num_groups = [r.pair for r in rotors], 4
+            groups, num_groups = [r.pair for r in rotors], num_lift_pairs(rotors)
         self.speed_groups = num_groups
 
         _add_atmosphere(self, condition)
@@ -349,32 +485,74 @@ def _rotor_thickness_to_chord(vehicle, index):
     return DEFAULT_ROTOR_THICKNESS_TO_CHORD
 
 
-class SteadyFlightCondition(om.Group):
+class SteadyFlightCondition(ConditionGroup):
     """
-    Climb, cruise or descent: VLM + parasite drag, the pusher by BEM and its motor, trim in
-    F_x, F_z, M_y (paper Sec. IV; reference page §8.2–8.3). Pitch, elevator and pusher speed
-    are inputs (design variables). With ``stability`` (cruise) the neutral point and the static
+    Climb, cruise or descent (kind ``steady``): VLM + parasite drag, the pusher by BEM and its
+    motor, trim in F_x, F_z, M_y (paper Sec. IV; docs: theory/dynamics). Pitch, elevator and
+    pusher speed are inputs (design variables). With ``stability`` (default: the condition
+    named by the vehicle's ``mission.cruise_condition``) the neutral point and the static
     margin (paper eq. 30) are added.
     """
 
+    field_rules = {"steady": {"speed": _POSITIVE, "failed_rotor": _NO_FAILURE,
+                              "acceleration": _ZERO, "load_factor": _ONE}}
+
     def initialize(self):
-        _declare_common(self)
+        super().initialize()
         _declare_aero(self)
-        self.options.declare("stability", default=False, types=bool,
-                             desc="add the neutral point and static margin")
+        self.options.declare("stability", default=None, types=bool, allow_none=True,
+                             desc="add the neutral point and static margin (None: in the "
+                                  "vehicle's cruise condition)")
+
+    @staticmethod
+    def has_stability(vehicle, condition):
+        """Whether the condition evaluates the static margin: the vehicle's cruise condition."""
+        return vehicle.mission.cruise_condition == condition.name
+
+    @classmethod
+    def variables(cls, vehicle, condition):
+        return (_PUSHER_RPM, _PITCH, _ELEVATOR)
+
+    @classmethod
+    def vehicle_inputs(cls, vehicle, condition):
+        inputs = (super().vehicle_inputs(vehicle, condition) + _pusher_inputs(vehicle)
+                  + _AERO_INPUTS)
+        if cls.has_stability(vehicle, condition):
+            inputs += (("cg", "cg_x", [0]),)
+        return inputs
+
+    @classmethod
+    def trim_rows(cls, vehicle, condition):
+        g = linear_trim_ref()
+        return (TrimRow("u", ref=g), TrimRow("w", ref=g), TrimRow("q"))
+
+    @classmethod
+    def constraints(cls, vehicle, condition, bounds):
+        if not cls.has_stability(vehicle, condition):
+            return ()
+        return (ConditionConstraint("static_margin", "static_margin",
+                                    {"lower": vehicle.constraints.min_static_margin,
+                                     "ref": 0.1}),)
+
+    @classmethod
+    def motor_sets(cls, vehicle, condition):
+        return {"pusher": (0,)}
 
     def setup(self):
         vehicle = self.options["vehicle"]
         condition = vehicle.condition(self.options["condition"])
         _add_atmosphere(self, condition)
+        stability = self.options["stability"]
+        if stability is None:
+            stability = self.has_stability(vehicle, condition)
         _add_aerodynamics(self, vehicle, condition, self.options["wing_zero_lift_angle"],
-                          stability=self.options["stability"])
+                          stability=stability)
         _add_pusher(self, vehicle)
         _add_power(self, {"pusher": 1})
         _add_equations_of_motion(self, ["aero", "drag", "pusher"], forces_only=["drag"])
 
 
-class TransitionCondition(om.Group):
+class TransitionCondition(ConditionGroup):
     """
     A quasi-steady transition point: prescribed speed and pitch, VLM + drag, Pitt–Peters lift
     rotors, the BEM pusher and all nine motors (paper Sec. IV; reference page §8.4). The full
@@ -388,21 +566,78 @@ class TransitionCondition(om.Group):
     symmetrically.
     """
 
+    field_rules = {"transition": {"speed": _POSITIVE, "failed_rotor": _NO_FAILURE,
+                                  "load_factor": _ONE}}
+
     def initialize(self):
-        _declare_common(self)
+        super().initialize()
         _declare_aero(self)
         self.options.declare("num_azimuth", default=25, types=int, lower=3,
                              desc="azimuthal stations of the Pitt-Peters rotors")
+
+    @classmethod
+    def variables(cls, vehicle, condition):
+        n = num_lift_pairs(vehicle.lift_rotors)
+        return (_speed_variable("lift_rotor_speed", n, "lift-rotor speed, mean of the pair; "
+                                "columns: pairs"),
+                ConditionVariable("roll_yaw_rpm", "lift_roll_yaw_rpm", (1, 2), (2,), "rpm",
+                                  "lift-rotor speed differentials; columns: roll (left, y < 0, "
+                                  "minus right rotors), yaw (spin +1 minus spin -1 rotors)"),
+                _PUSHER_RPM, _ELEVATOR)
+
+    @classmethod
+    def vehicle_inputs(cls, vehicle, condition):
+        return (super().vehicle_inputs(vehicle, condition)
+                + _lift_inputs(vehicle, range(len(vehicle.lift_rotors)))
+                + _pusher_inputs(vehicle) + _AERO_INPUTS)
+
+    @classmethod
+    def trim_rows(cls, vehicle, condition):
+        g = linear_trim_ref()
+        a, theta = condition.acceleration, condition.pitch
+        # v_dot: only the rotors' net side force under the yaw differential moves it, with no
+        # trim variable of its own: a degenerate row.
+        return (TrimRow("u", a * np.cos(theta), ref=g), TrimRow("v", ref=g, degenerate=True),
+                TrimRow("w", a * np.sin(theta), ref=g), TrimRow("p"), TrimRow("q"),
+                TrimRow("r"))
+
+    @classmethod
+    def constraints(cls, vehicle, condition, bounds):
+        """
+        Each lift rotor's own speed within the bounds of its pair's mean speed (linear).
+
+        With the roll/yaw differentials a rotor turns at its pair's mean speed +- half of each
+        differential, so the design-variable bounds alone let it reach 0 rpm (100 rpm mean -
+        50 - 50), where the motor model stalls: an SLSQP line search of the baseline problem
+        drove a rotor to 7 rpm and ended in an AnalysisError (measured 2026-12-01). The speeds
+        are linear in the design variables, so these are linear constraints.
+        """
+        entry = condition_layout(vehicle).entry(condition.name, "lift_rpm")
+        dv = vehicle.design_variables[entry.design_variable]
+        lower, upper = (bounds(entry.design_variable) if bounds is not None
+                        else (dv.lower_array, dv.upper_array))
+        pairs = [r.pair for r in vehicle.lift_rotors]
+        lower = np.ravel(lower)[entry.flat_indices][pairs]
+        upper = np.ravel(upper)[entry.flat_indices][pairs]
+        ref = dv.ref
+        return (ConditionConstraint("rotor_speed", "lift_rpm",
+                                    {"lower": lower, "upper": upper, "ref": ref,
+                                     "units": "rpm", "linear": True}),)
+
+    @classmethod
+    def motor_sets(cls, vehicle, condition):
+        return {"lift": tuple(range(len(vehicle.lift_rotors))), "pusher": (0,)}
 
     def setup(self):
         vehicle = self.options["vehicle"]
         condition = vehicle.condition(self.options["condition"])
         rotors = vehicle.lift_rotors
         self.active_rotors = list(range(len(rotors)))
-        self.speed_groups = 4
+        self.speed_groups = num_lift_pairs(rotors)
         _add_atmosphere(self, condition)
         _add_aerodynamics(self, vehicle, condition, self.options["wing_zero_lift_angle"])
-        _add_lift_rotors(self, vehicle, rotors, [r.pair for r in rotors], 4, edgewise=True,
+        _add_lift_rotors(self, vehicle, rotors, [r.pair for r in rotors], self.speed_groups,
+                         edgewise=True,
                          roll_yaw=True)
         _add_pusher(self, vehicle)
         _add_power(self, {"lift": len(rotors), "pusher": 1})
@@ -410,7 +645,7 @@ class TransitionCondition(om.Group):
                                  forces_only=["drag"])
 
 
-class StructuralCondition(om.Group):
+class StructuralCondition(ConditionGroup):
     """
     +3g or -1g pull-up/push-over: VLM at the load factor, trim in F_z only, and the wing-box
     beam of the right half wing loaded by the VLM panel forces plus its own inertia at the load
@@ -425,14 +660,45 @@ class StructuralCondition(om.Group):
     ``material_allowable_stress``.
     """
 
+    power_output = None
+    field_rules = {"structural": {"speed": _POSITIVE, "failed_rotor": _NO_FAILURE,
+                                  "acceleration": _ZERO,
+                                  "load_factor": (lambda x: x != 0, "non-zero")}}
+
     def initialize(self):
-        _declare_common(self)
+        super().initialize()
         _declare_aero(self)
         self.options.declare("ks_rho", default=None, types=(int, float), allow_none=True,
                              desc="KS parameter of the structural aggregates (None: none)")
         self.options.declare("coupling", default="one_way", values=("one_way", "two_way"),
                              desc="one-way (loads only) or two-way (the beam deforms the VLM "
                                   "wing mesh; block Gauss-Seidel)")
+
+    @staticmethod
+    def compressed_skin(condition):
+        """The skin in compression: ``top`` under a positive load factor, else ``bottom``."""
+        return "top" if condition.load_factor > 0 else "bottom"
+
+    @classmethod
+    def variables(cls, vehicle, condition):
+        return (_PITCH,)
+
+    @classmethod
+    def vehicle_inputs(cls, vehicle, condition):
+        return (super().vehicle_inputs(vehicle, condition) + _AERO_INPUTS
+                + tuple((name, name, None) for name in _WING_BOX_INPUTS))
+
+    @classmethod
+    def trim_rows(cls, vehicle, condition):
+        return (TrimRow("w", ref=linear_trim_ref(condition.load_factor)),)
+
+    @classmethod
+    def constraints(cls, vehicle, condition, bounds):
+        bays = list(range(vehicle.wing_box.num_bays - 1))   # all bays but the tip bay
+        skin = cls.compressed_skin(condition)
+        return (ConditionConstraint("buckling", f"{skin}_skin_buckling_ratio",
+                                    {"indices": bays, "flat_indices": True,
+                                     "upper": vehicle.constraints.max_buckling_ratio}),)
 
     def setup(self):
         vehicle = self.options["vehicle"]

@@ -101,7 +101,8 @@ def placeholder_calibration_inputs(vehicle=None):
     vehicle = _vehicle(vehicle)
     coeffs = m4_coefficients()["wing"]["mass"]
     regressors = [vehicle.wing.area, vehicle.wing.aspect_ratio, vehicle.fuselage.length,
-                  vehicle.battery.mass, vehicle.condition("cruise").speed, 1.0]
+                  vehicle.battery.mass,
+                  vehicle.condition(vehicle.mission.cruise_condition).speed, 1.0]
     wing_mass = float(np.dot(coeffs, regressors))
     motor = vehicle.motor
     length = np.asarray(vehicle.design_variables["motor_length"].initial, dtype=float)
@@ -257,7 +258,7 @@ class WeightsGroup(om.Group):
             "htail_area": (vehicle.horizontal_tail.area, "m**2"),
             "vtail_area": (vehicle.vertical_tail.area, "m**2"),
             "battery_mass": (vehicle.battery.mass, "kg"),
-            "cruise_speed": (vehicle.condition("cruise").speed, "m/s"),
+            "cruise_speed": (vehicle.condition(vehicle.mission.cruise_condition).speed, "m/s"),
             "battery_cg": (vehicle.battery.cg, "m"),
             "motor_mass": (placeholder["motor_mass"], "kg"),
             "motor_cg": ([r.hub_position for r in vehicle.lift_rotors]

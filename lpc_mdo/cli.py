@@ -41,15 +41,27 @@ def _analyze(args):
     print()
     print(f"  {'condition':<14}{'power [kW]':>12}{'u_dot':>9}{'w_dot':>9}{'q_dot':>9}"
           "   (accelerations in m/s^2, rad/s^2; trim drives them to the targets)")
-    for name in prob.model.condition_names:
+    from lpc_mdo.groups.condition_kinds import condition_class
+
+    for condition in prob.model.conditions:
+        name = condition.name
         lin = prob.get_val(f"{name}.linear_acceleration")[0]
         ang = prob.get_val(f"{name}.angular_acceleration")[0]
-        power = (prob.get_val(f"{name}.electrical_power", units="kW")[0]
-                 if name not in ("plus_3g", "minus_1g") else float("nan"))
-        print(f"  {name:<14}{power:>12.1f}{lin[0]:>9.3f}{lin[2]:>9.3f}{ang[1]:>9.3f}")
-    print(f"\n  final state of charge {prob.get_val('state_of_charge')[0]:.3f}, hover noise "
-          f"{prob.get_val('hover.total_spl_a')[0]:.1f} dBA, cruise static margin "
-          f"{prob.get_val('cruise.static_margin')[0]:.3f}")
+        output = condition_class(condition.kind).power_output
+        power = (f"{prob.get_val(f'{name}.{output}', units='kW')[0]:>12.1f}" if output
+                 else f"{'(none)':>12}")
+        print(f"  {name:<14}{power}{lin[0]:>9.3f}{lin[2]:>9.3f}{ang[1]:>9.3f}")
+    summary = [f"final state of charge {prob.get_val('state_of_charge')[0]:.3f}"]
+    for condition in prob.model.conditions:
+        for con in condition_class(condition.kind).constraints(vehicle, condition, None):
+            if con.kind == "noise":
+                value = prob.get_val(f"{condition.name}.{con.output}")[0]
+                summary.append(f"{condition.name} noise {value:.1f} dBA")
+    cruise = vehicle.mission.cruise_condition
+    if cruise in prob.model.condition_names:
+        summary.append(f"{cruise} static margin "
+                       f"{prob.get_val(f'{cruise}.static_margin')[0]:.3f}")
+    print("\n  " + ", ".join(summary))
     prob.cleanup()
 
     table = constraint_table(str(case_file), case="final")
@@ -122,9 +134,11 @@ def _sweep(args):
 
 
 def _report(args):
-    from lpc_mdo.post.report import write_report
+    from lpc_mdo.post.report import ReportSpec, write_report
+    from lpc_mdo.vehicle import load_vehicle
 
-    index = write_report(args.cases, args.output_dir)
+    spec = ReportSpec(vehicle=load_vehicle(args.vehicle))
+    index = write_report(args.cases, args.output_dir, spec)
     print(f"report: {index}")
     return 0
 
@@ -192,6 +206,9 @@ def main(argv=None):
     report = sub.add_parser("report", help="tables and figures from case files")
     report.add_argument("cases", help="a case file or a folder of case files")
     report.add_argument("--output-dir", default="report", help="report folder")
+    report.add_argument("--vehicle", default=None,
+                        help="vehicle file the runs were made with (its conditions and trim "
+                             "rows; default: the reference vehicle)")
     report.set_defaults(func=_report)
 
     args = parser.parse_args(argv)

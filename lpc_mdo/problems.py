@@ -1,12 +1,235 @@
-"""Problem builders: the OpenMDAO problems that run scripts and the CLI share."""
+"""The optimization problems, declared outside the physics model (paper Tables 2 and 6).
+
+:func:`declare_problem` declares the objective, design variables and constraints of a problem on
+an :class:`~lpc_mdo.groups.lpc.LPCGroup` from the condition contracts
+(:mod:`lpc_mdo.groups.condition_base`): each condition's design variables, its trim rows (paper
+Table 6) and its other constraints come from the class of its kind, the vehicle-level ones
+(state of charge, radius intersection, torque margins) from here. The subproblems of the
+warm start (Table 2) select conditions by kind, never by name, so a vehicle file with other or
+more conditions gets the same problems. :func:`build_problem` and
+:func:`build_analysis_problem` put model, problem and driver together.
+"""
 
 import os
 
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.groups.lpc import CONSTRAINT_KINDS, LPCGroup
+from lpc_mdo.components.design_deviation import DesignDeviationComp
+from lpc_mdo.groups.condition_base import condition_layout
+from lpc_mdo.groups.condition_kinds import condition_class
+from lpc_mdo.groups.lpc import LPCGroup, included_conditions, openmdao_units
 from lpc_mdo.vehicle import load_vehicle
+
+#: Constraint kinds a problem may declare.
+CONSTRAINT_KINDS = ("trim", "noise", "tip_mach", "static_margin", "buckling", "soc",
+                    "radius_intersection", "torque_margin", "rotor_speed")
+#: Finer kinds a subproblem may name instead of 'torque_margin' (which means both).
+TORQUE_MARGIN_KINDS = ("lift_torque_margin", "pusher_torque_margin")
+# Paper eq. 8-9: the set S of design variables the initial specification gives (beta = 1) -
+# every sizing variable; the operating variables (rotor speeds, pitch, elevator) are free - and
+# the penalty weight alpha.
+BASELINE_SET = ("wing_area", "wing_aspect_ratio", "htail_area", "htail_aspect_ratio",
+                "fuselage_length", "rotor_radius", "blade_chord_cp", "blade_twist_cp",
+                "battery_mass", "motor_length", "front_spar_thickness", "rear_spar_thickness",
+                "top_skin_thickness", "bottom_skin_thickness")
+BASELINE_ALPHA = 100.0
+#: Keyword arguments of :func:`declare_problem` (the rest of a builder's options are the
+#: model's).
+PROBLEM_OPTIONS = ("static_margin", "lateral_trim", "constraint_kinds", "design_variables",
+                   "design_variable_refs", "design_variable_bounds", "objective")
+
+
+class BaselineModel(LPCGroup):
+    """
+    The lift-plus-cruise model plus the baseline objective of paper eq. 8-9.
+
+    ``baseline_objective`` = gross mass + alpha x the squared relative deviation of the design
+    variables of the set S (:data:`BASELINE_SET`) from their initial values: minimised subject
+    to every constraint, it gives the feasible design closest to the initial one. Option
+    ``baseline_alpha`` (paper: 100, chosen from a study over 1e-2 .. 1e4).
+    """
+
+    def initialize(self):
+        super().initialize()
+        self.options.declare("baseline_alpha", default=BASELINE_ALPHA, types=(int, float),
+                             lower=0.0, desc="penalty weight alpha of eq. 8")
+
+    def setup(self):
+        super().setup()
+        vehicle = self.vehicle_spec
+        dvs = vehicle.design_variables
+        references = {name: (np.asarray(dvs[name].initial_array).reshape(dvs[name].shape),
+                             openmdao_units(dvs[name].units)) for name in BASELINE_SET}
+        self.add_subsystem("baseline", DesignDeviationComp(
+            references=references, alpha=self.options["baseline_alpha"],
+            objective_ref=vehicle.masses.target_gross_mass),
+            promotes_inputs=[*BASELINE_SET, ("objective", "gross_mass")],
+            promotes_outputs=["baseline_objective", ("deviation", "baseline_deviation")])
+
+
+def _bounds(name, dv, overrides):
+    """(lower, upper) of a design variable in its shape: the override, else the vehicle file's."""
+    lower, upper = overrides.get(name, (dv.lower_array, dv.upper_array))
+    return (np.broadcast_to(np.asarray(lower, dtype=float), dv.shape),
+            np.broadcast_to(np.asarray(upper, dtype=float), dv.shape))
+
+
+def trim_constraints(vehicle, condition, lateral_trim=True):
+    """
+    The trim constraints of a condition (its Table 6 rows), grouped by output.
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+    condition : DesignCondition
+    lateral_trim : bool
+        Also the degenerate rows (:class:`~lpc_mdo.groups.condition_base.TrimRow`).
+
+    Returns
+    -------
+    list of (output, indices, targets, ref)
+        One entry per acceleration output of the condition that has declared rows.
+    """
+    rows = [r for r in condition_class(condition.kind).trim_rows(vehicle, condition)
+            if lateral_trim or not r.degenerate]
+    out = []
+    for output in ("linear_acceleration", "angular_acceleration"):
+        mine = sorted((r for r in rows if r.output == output), key=lambda r: r.index)
+        if mine:
+            out.append((output, [r.index for r in mine], np.array([r.target for r in mine]),
+                        mine[0].ref))
+    return out
+
+
+def declare_problem(model, vehicle=None, *, static_margin=True, lateral_trim=True,
+                    constraint_kinds=CONSTRAINT_KINDS, design_variables=None,
+                    design_variable_refs=None, design_variable_bounds=None,
+                    objective=("gross_mass", None)):
+    """
+    Declare the objective, design variables and constraints of a problem on ``model``.
+
+    Call it before ``prob.setup()``. With the defaults it declares paper Table 6: the 161
+    design variables and our 10 transition roll/yaw speed differentials; the 96 constraints,
+    and the gross-mass objective. Per condition, from its kind's contract: its design
+    variables, its trim rows and its constraints (hover: noise, tip Mach; the cruise condition:
+    static margin; structural: skin buckling; transition: each lift rotor's own speed within
+    its pair's bounds, linear, ours); vehicle-level: final state of charge, radius
+    intersection, the KS torque margins of the lift motors and the pusher motor.
+
+    Parameters
+    ----------
+    model : LPCGroup
+        Not yet set up (its ``conditions`` option says which conditions it holds).
+    vehicle : Vehicle or None
+        The model's vehicle (None: the model's option, else the reference vehicle).
+    static_margin : bool
+        Constrain the cruise static margin (paper Sec. V.B, with and without).
+    lateral_trim : bool
+        Declare every trim row of Table 6 (96 constraints). False leaves out the degenerate
+        rows, which vanish for every design with zero gradients (hover p_dot by symmetry, the
+        OEI v_dot: no side force in hover) or which no trim variable controls on its own (the
+        transition v_dot: the rotors' net side force under the yaw differential, at most
+        0.06 % of the weight at the optimum): 86 constraints.
+    constraint_kinds : sequence of str
+        Constraint kinds to declare, from :data:`CONSTRAINT_KINDS` (or
+        :data:`TORQUE_MARGIN_KINDS` for one motor kind).
+    design_variables : sequence or None
+        Vehicle-level design variables to declare: names, or (name, flat indices) pairs (None:
+        all of them). The design variables of the included conditions are always declared.
+    design_variable_refs : dict or None
+        name -> ref overriding the vehicle file's scaling.
+    design_variable_bounds : dict or None
+        name -> (lower, upper) overriding the vehicle file's bounds (vehicle-file units,
+        scalars or the variable's shape).
+    objective : tuple
+        (output, ref): ref None = the vehicle's target gross mass; ``("baseline", None)`` =
+        the baseline design's penalised gross mass (eq. 8-9; needs a :class:`BaselineModel`).
+    """
+    vehicle = vehicle or model.options["vehicle"] or load_vehicle()
+    where = type(model).__name__
+    conditions = included_conditions(vehicle, model.options["conditions"], where=where)
+    layout = condition_layout(vehicle)
+    limits = vehicle.constraints
+    dvs = vehicle.design_variables
+    refs = dict(design_variable_refs or {})
+    bounds = dict(design_variable_bounds or {})
+    for label, names in (("design_variable_bounds", bounds), ("design_variable_refs", refs)):
+        for name in names:
+            if name not in dvs:
+                raise ValueError(f"{where}: option '{label}' names {name!r}; allowed: "
+                                 f"{list(dvs)}")
+    wanted = set(constraint_kinds)
+    unknown = sorted(wanted - set(CONSTRAINT_KINDS) - set(TORQUE_MARGIN_KINDS))
+    if unknown:
+        raise ValueError(f"{where}: option 'constraint_kinds' has unknown kinds {unknown}; "
+                         f"allowed: {CONSTRAINT_KINDS + TORQUE_MARGIN_KINDS}")
+    if "static_margin" in wanted and not static_margin:
+        wanted.discard("static_margin")
+
+    # Design variables: the chosen vehicle-level ones, then those of the included conditions.
+    condition_dvs = {e.design_variable for c in conditions for e in layout.entries[c.name].values()}
+    owned = set(layout.design_variables)
+    if design_variables is None:
+        selection = {name: None for name in dvs if name not in owned}
+    else:
+        selection = {}
+        for entry in design_variables:
+            name, indices = (entry, None) if isinstance(entry, str) else entry
+            if name not in dvs or name in owned:
+                raise ValueError(f"{where}: design variable {name!r} is not a vehicle-level "
+                                 f"design variable of the vehicle file; allowed: "
+                                 f"{[n for n in dvs if n not in owned]} (a condition's own "
+                                 f"design variables come with the condition)")
+            selection[name] = None if indices is None else list(indices)
+    selection.update({name: None for name in dvs if name in condition_dvs})
+    for name in dvs:   # in the vehicle file's order
+        if name not in selection:
+            continue
+        indices, dv = selection[name], dvs[name]
+        lower, upper = _bounds(name, dv, bounds)
+        ref = refs.get(name, dv.ref)
+        if indices is not None:
+            lower, upper = lower.ravel()[indices], upper.ravel()[indices]
+            ref = ref if np.ndim(ref) == 0 else np.asarray(ref).ravel()[indices]
+        model.add_design_var(name, lower=lower, upper=upper, ref=ref,
+                             units=openmdao_units(dv.units), indices=indices,
+                             flat_indices=indices is not None)
+
+    name, ref = objective
+    if name == "baseline":
+        if not isinstance(model, BaselineModel):
+            raise ValueError(f"{where}: objective ('baseline', ...) needs the model to be a "
+                             f"lpc_mdo.problems.BaselineModel, got {where}")
+        model.add_objective("baseline_objective", ref=1.0)
+    else:
+        model.add_objective(name, ref=vehicle.masses.target_gross_mass if ref is None else ref)
+
+    # Each condition's trim rows and constraints, from its kind's contract.
+    def bounds_of(dv_name):
+        return _bounds(dv_name, dvs[dv_name], bounds)
+
+    for c in conditions:
+        if "trim" in wanted:
+            for output, indices, targets, scale in trim_constraints(vehicle, c, lateral_trim):
+                model.add_constraint(f"{c.name}.{output}", indices=indices, flat_indices=True,
+                                     equals=targets, ref=scale)
+        for con in condition_class(c.kind).constraints(vehicle, c, bounds_of):
+            if con.kind in wanted:
+                model.add_constraint(f"{c.name}.{con.output}", **con.options)
+
+    # Vehicle-level constraints.
+    if "soc" in wanted:
+        model.add_constraint("state_of_charge", lower=limits.min_final_soc, ref=0.1)
+    if "radius_intersection" in wanted:
+        model.add_constraint("radius_intersection", equals=limits.radius_intersection, ref=0.1)
+    motor_sets = set()
+    for c in conditions:
+        motor_sets.update(condition_class(c.kind).motor_sets(vehicle, c))
+    for prefix in sorted(motor_sets):
+        if "torque_margin" in wanted or f"{prefix}_torque_margin" in wanted:
+            model.add_constraint(f"{prefix}_motor_torque_margin",
+                                 lower=limits.min_torque_margin, ref=0.1)
 
 
 def attach_recorder(prob, path):
@@ -36,7 +259,7 @@ def copy_design_variables(source, target, vehicle, names=None):
 
 
 def build_analysis_problem(vehicle=None, recorder_path=None, name="analysis", comm=None,
-                           work_dir=None, **options):
+                           work_dir=None, design_problem=True, **options):
     """
     The full lift-plus-cruise model of a vehicle at its initial design, ready to run.
 
@@ -53,9 +276,12 @@ def build_analysis_problem(vehicle=None, recorder_path=None, name="analysis", co
         The problem's communicator (MPI.COMM_SELF for one problem per rank).
     work_dir : str or None
         Where OpenMDAO puts ``{name}_out`` (None: the current directory).
+    design_problem : bool
+        Also declare the problem (:func:`declare_problem`; for constraint tables, totals and
+        trim): design variables, constraints and objective.
     **options
-        Further :class:`~lpc_mdo.groups.lpc.LPCGroup` options (``static_margin``,
-        ``conditions``, ``rotor_polar``, ...).
+        :data:`PROBLEM_OPTIONS` go to :func:`declare_problem`, the rest to
+        :class:`~lpc_mdo.groups.lpc.LPCGroup` (``conditions``, ``rotor_polar``, ...).
 
     Returns
     -------
@@ -64,9 +290,12 @@ def build_analysis_problem(vehicle=None, recorder_path=None, name="analysis", co
     """
     if vehicle is None or isinstance(vehicle, (str, os.PathLike)):
         vehicle = load_vehicle(vehicle)
+    problem_options = {k: options.pop(k) for k in PROBLEM_OPTIONS if k in options}
     kwargs = {} if work_dir is None else {"work_dir": str(work_dir)}
-    prob = om.Problem(model=LPCGroup(vehicle=vehicle, **options), name=name, comm=comm,
-                      **kwargs)
+    model = LPCGroup(vehicle=vehicle, **options)
+    if design_problem:
+        declare_problem(model, vehicle, **problem_options)
+    prob = om.Problem(model=model, name=name, comm=comm, **kwargs)
     if recorder_path is not None:
         prob.add_recorder(om.SqliteRecorder(str(recorder_path)))
         prob.recording_options["includes"] = ["*"]
@@ -86,17 +315,13 @@ def build_analysis_problem(vehicle=None, recorder_path=None, name="analysis", co
 IPOPT_SETTINGS = {"acceptable_tol": 1e-4, "acceptable_iter": 10,
                   "acceptable_constr_viol_tol": 1e-4}
 
-# Paper Table 2: each subproblem's conditions, design variables and constraint kinds.
-_TRANSITIONS = [f"transition_{i}" for i in range(1, 6)]
+# Paper Table 2: each subproblem's conditions (by kind), vehicle-level design variables and
+# constraint kinds. The design variables of the included conditions (rotor speeds, pitch,
+# elevator) always come with them.
 SUBPROBLEMS = {
     "subproblem_1": {
-        "conditions": ["hover", *_TRANSITIONS, "climb", "cruise", "descent"],
-        "design_variables": ["hover_lift_rpm", "transition_lift_rpm",
-                             "transition_roll_yaw_rpm", "transition_pusher_rpm",
-                             "climb_pusher_rpm", "cruise_pusher_rpm", "descent_pusher_rpm",
-                             "climb_pitch", "cruise_pitch", "descent_pitch",
-                             "transition_elevator", "climb_elevator", "cruise_elevator",
-                             "descent_elevator", "battery_mass", ("motor_length", [4]),
+        "kinds": ["hover", "transition", "steady"],
+        "design_variables": ["battery_mass", ("motor_length", [4]),
                              # Table 2 names the rotors as the sized subsystem without listing
                              # their blade variables; without them the hover noise limit
                              # (89 dBA at the initial design) has no lever but rpm.
@@ -113,15 +338,14 @@ SUBPROBLEMS = {
         "trust_region": {"battery_mass": 0.2},
     },
     "subproblem_2": {
-        "conditions": [f"oei_{i}" for i in range(1, 5)],
-        "design_variables": ["oei_lift_rpm", ("motor_length", [0, 1, 2, 3])],
+        "kinds": ["oei"],
+        "design_variables": [("motor_length", [0, 1, 2, 3])],
         "constraint_kinds": ["trim", "lift_torque_margin"],
     },
     "subproblem_3": {
-        "conditions": ["plus_3g", "minus_1g"],
+        "kinds": ["structural"],
         "design_variables": ["front_spar_thickness", "rear_spar_thickness",
-                             "top_skin_thickness", "bottom_skin_thickness", "plus_3g_pitch",
-                             "minus_1g_pitch"],
+                             "top_skin_thickness", "bottom_skin_thickness"],
         "constraint_kinds": ["trim", "buckling"],
     },
     # Table 2 sizes the planform in cruise alone; climb and descent are added (with their trim
@@ -129,12 +353,9 @@ SUBPROBLEMS = {
     # 10 deg limit, and the full problem then starts with climb and descent untrimmable
     # (scaled trim residuals 0.5; measured 2026-11-22).
     "subproblem_4": {
-        "conditions": ["climb", "cruise", "descent"],
+        "kinds": ["steady"],
         "design_variables": ["wing_area", "wing_aspect_ratio", "htail_area",
-                             "htail_aspect_ratio", "fuselage_length", "climb_pusher_rpm",
-                             "cruise_pusher_rpm", "descent_pusher_rpm", "climb_pitch",
-                             "cruise_pitch", "descent_pitch", "climb_elevator",
-                             "cruise_elevator", "descent_elevator"],
+                             "htail_aspect_ratio", "fuselage_length"],
         "constraint_kinds": ["trim", "static_margin"],
     },
 }
@@ -145,18 +366,30 @@ SUBPROBLEMS = {
 # noise-feasible start (measured 2026-11-22, see the optimization issue note).
 PRESIZING = {
     "rotor_presizing": {
-        "conditions": ["hover"],
-        "design_variables": ["hover_lift_rpm", ("rotor_radius", [0, 1, 2, 3]),
+        "kinds": ["hover"],
+        "design_variables": [("rotor_radius", [0, 1, 2, 3]),
                              ("blade_chord_cp", list(range(16))),
                              ("blade_twist_cp", list(range(16)))],
         "constraint_kinds": ["trim", "noise", "tip_mach"],
-        "objective": ("hover.electrical_power", 5.0e5),
+        # The electrical power of the (first) hover condition, W.
+        "objective": ("electrical_power", 5.0e5),
         # A starting point for subproblem 1, not an answer: its L-BFGS iterates circle the
         # optimum at 1e-3 (scaled) for hundreds of iterations, so stop there.
         "driver_settings": {"tol": 1e-3, "acceptable_tol": 1e-3,
                             "acceptable_constr_viol_tol": 1e-3},
     },
 }
+
+
+def conditions_of_kinds(vehicle, kinds):
+    """Names of the vehicle's conditions of the given kinds, in vehicle-file order."""
+    names = [c.name for c in vehicle.conditions if c.kind in kinds]
+    if not names:
+        raise ValueError(f"the vehicle has no condition of kind {list(kinds)}; its conditions: "
+                         f"{[(c.name, c.kind) for c in vehicle.conditions]}")
+    return names
+
+
 # Paper Sec. II.F: the baseline design is the full problem with the objective of eq. 8.
 PROBLEM_NAMES = (*PRESIZING, *SUBPROBLEMS, "full", "baseline")
 
@@ -183,7 +416,7 @@ def trust_region_bounds(vehicle, fractions):
     Returns
     -------
     dict
-        name -> (lower, upper) arrays, for LPCGroup option ``design_variable_bounds``.
+        name -> (lower, upper) arrays, for :func:`declare_problem`'s ``design_variable_bounds``.
     """
     bounds = {}
     for name, f in fractions.items():
@@ -230,7 +463,8 @@ def build_problem(name, vehicle=None, static_margin=True, optimizer="IPOPT",
     comm : MPI communicator or None
         The problem's communicator (MPI.COMM_SELF for one problem per rank, as in sweeps).
     **model_options
-        Further LPCGroup options.
+        Further :func:`declare_problem` options (:data:`PROBLEM_OPTIONS`) and model options
+        (:class:`~lpc_mdo.groups.lpc.LPCGroup`; ``baseline_alpha`` of :class:`BaselineModel`).
 
     Returns
     -------
@@ -244,19 +478,27 @@ def build_problem(name, vehicle=None, static_margin=True, optimizer="IPOPT",
     if vehicle is None or isinstance(vehicle, (str, os.PathLike)):
         vehicle = load_vehicle(vehicle)
     spec = SUBPROBLEMS.get(name) or PRESIZING.get(name) or {}
+    problem_options = {k: model_options.pop(k) for k in PROBLEM_OPTIONS if k in model_options}
+    conditions = conditions_of_kinds(vehicle, spec["kinds"]) if "kinds" in spec else None
+    objective = ("gross_mass", None)
     if name == "baseline":
-        spec = {"objective": ("baseline", None)}
-    if "objective" in spec:
-        model_options.setdefault("objective", spec["objective"])
+        objective = ("baseline", None)
+    elif "objective" in spec:
+        output, ref = spec["objective"]
+        objective = (f"{conditions[0]}.{output}", ref)
+    problem_options.setdefault("objective", objective)
     if "trust_region" in spec:
-        model_options.setdefault("design_variable_bounds",
-                                 trust_region_bounds(vehicle, spec["trust_region"]))
-    model = LPCGroup(vehicle=vehicle, static_margin=static_margin,
-                     conditions=spec.get("conditions"),
-                     design_variables=spec.get("design_variables"),
-                     constraint_kinds=spec.get("constraint_kinds", CONSTRAINT_KINDS),
-                     design_variable_refs=design_variable_refs, lateral_trim=lateral_trim,
-                     **model_options)
+        problem_options.setdefault("design_variable_bounds",
+                                   trust_region_bounds(vehicle, spec["trust_region"]))
+    model_cls = BaselineModel if name == "baseline" else LPCGroup
+    if name != "baseline":
+        model_options.pop("baseline_alpha", None)
+    model = model_cls(vehicle=vehicle, conditions=conditions, **model_options)
+    declare_problem(model, vehicle, static_margin=static_margin,
+                    design_variables=spec.get("design_variables"),
+                    constraint_kinds=spec.get("constraint_kinds", CONSTRAINT_KINDS),
+                    design_variable_refs=design_variable_refs, lateral_trim=lateral_trim,
+                    **problem_options)
     prob = om.Problem(model=model, name=name, reports=False, comm=comm)
     settings = ({**IPOPT_SETTINGS, **spec.get("driver_settings", {})}
                 if optimizer.upper() == "IPOPT" else

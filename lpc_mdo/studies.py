@@ -4,14 +4,15 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.drivers import make_driver
-from lpc_mdo.groups.lpc import LPCGroup
+from lpc_mdo.groups.condition_base import condition_layout
+from lpc_mdo.groups.conditions import StructuralCondition
+from lpc_mdo.groups.lpc import LPCGroup, openmdao_units
 from lpc_mdo.mpi import serial_comm
-from lpc_mdo.problems import attach_recorder
+from lpc_mdo.problems import attach_recorder, conditions_of_kinds, trim_constraints
 from lpc_mdo.vehicle import reference_vehicle
 
 THICKNESSES = ("front_spar_thickness", "rear_spar_thickness", "top_skin_thickness",
                "bottom_skin_thickness")
-STRUCTURAL_CONDITIONS = ("plus_3g", "minus_1g")
 
 
 def structural_sizing_problem(vehicle=None, aggregated=False, ks_rho=50.0, optimizer="IPOPT",
@@ -21,7 +22,8 @@ def structural_sizing_problem(vehicle=None, aggregated=False, ks_rho=50.0, optim
     The paper's wing structural optimization (Table 4) as an OpenMDAO problem.
 
     Minimise the wing-box mass over the 32 skin and spar thicknesses (8 bays each) and the
-    pitch angles of the +3g and -1g cases, subject to z-force equilibrium in both cases and,
+    pitch angles of the vehicle's structural conditions (the reference: +3g and -1g), subject
+    to their trim rows (z-force equilibrium) and,
     per case, skin buckling on all bays but the tip bay (top skin at +3g, bottom skin at -1g),
     von Mises stress at the 5 recovery points of every element <= the allowable, and the
     vertical displacement of every node <= the limit; with ``aggregated`` each of the three
@@ -53,8 +55,8 @@ def structural_sizing_problem(vehicle=None, aggregated=False, ks_rho=50.0, optim
     """
     vehicle = vehicle or reference_vehicle()
     prob = om.Problem(reports=False, comm=serial_comm())
-    prob.model = model = LPCGroup(vehicle=vehicle, conditions=list(STRUCTURAL_CONDITIONS),
-                                  design_problem=False,
+    structural = conditions_of_kinds(vehicle, ["structural"])
+    prob.model = model = LPCGroup(vehicle=vehicle, conditions=structural,
                                   structural_ks_rho=ks_rho if aggregated else None,
                                   structural_coupling=coupling,
                                   **model_options)
@@ -72,14 +74,18 @@ def structural_sizing_problem(vehicle=None, aggregated=False, ks_rho=50.0, optim
                              ref=1e-3, units="m")
     model.add_objective("wing_mass", ref=100.0, units="kg")
     bays = list(range(vehicle.wing_box.num_bays - 1))
-    for name in STRUCTURAL_CONDITIONS:
+    layout = condition_layout(vehicle)
+    for name in structural:
         condition = vehicle.condition(name)
-        dv = vehicle.design_variables[f"{name}_pitch"]
-        model.add_design_var(f"{name}_pitch", lower=dv.lower_array, upper=dv.upper_array,
-                             ref=0.1, units="rad")
-        model.add_constraint(f"{name}.linear_acceleration", indices=[2], flat_indices=True,
-                             equals=0.0, ref=9.81 * abs(condition.load_factor))
-        skin = "top" if condition.load_factor > 0 else "bottom"
+        for entry in layout.entries[name].values():
+            dv = vehicle.design_variables[entry.design_variable]
+            model.add_design_var(entry.design_variable, lower=dv.lower_array,
+                                 upper=dv.upper_array, ref=dv.ref,
+                                 units=openmdao_units(dv.units))
+        for output, indices, targets, ref in trim_constraints(vehicle, condition):
+            model.add_constraint(f"{name}.{output}", indices=indices, flat_indices=True,
+                                 equals=targets, ref=ref)
+        skin = StructuralCondition.compressed_skin(condition)
         if aggregated:
             model.add_constraint(f"{name}.{skin}_skin_buckling_ratio_ks",
                                  upper=limits.max_buckling_ratio)

@@ -2,7 +2,8 @@
 
 Each condition has its trim constraints (paper Table 6: force and moment balance, the
 prescribed transition acceleration) and its trim variables (rotor speeds, pitch, elevator;
-:func:`lpc_mdo.groups.lpc.condition_trim_variables`). With everything else fixed these form a
+:meth:`lpc_mdo.groups.condition_base.ConditionLayout.trim_variables`, from each kind's
+contract). With everything else fixed these form a
 small nonlinear system per condition, square or under-determined, with bounds. :func:`trim`
 solves them one condition at a time by bounded Gauss-Newton least squares (scipy's dogbox
 trust-region method) on the exact total derivatives, in the optimizer's scaled space. One
@@ -28,7 +29,7 @@ import openmdao.api as om
 from openmdao.utils.general_utils import determine_adder_scaler
 from scipy.optimize import least_squares
 
-from lpc_mdo.groups.lpc import condition_trim_variables
+from lpc_mdo.groups.condition_base import condition_layout
 
 
 def driver_scaling(meta):
@@ -67,7 +68,7 @@ def _trim_variables(prob, vehicle, conditions):
     dvs = prob.model.get_design_vars()
     entries = []
     for cond in conditions:
-        for dv_name, flat in condition_trim_variables(vehicle, cond):
+        for dv_name, flat in condition_layout(vehicle).trim_variables(cond):
             if dv_name not in dvs:
                 raise ValueError(f"trim: condition '{cond}' needs design variable '{dv_name}', "
                                  "which the problem does not declare.")
@@ -158,8 +159,8 @@ def trim(prob, conditions=None, tol=1e-10, max_iter=30, separate=True):
         sol, scaled = _solve_block(target, target.model.get_design_vars(), cons, variables,
                                    tol, max_iter)
         if separate:
-            copy_design_variables(target, prob, vehicle,
-                                   names=[n for n, _ in condition_trim_variables(vehicle, cond)])
+            names = [n for n, _ in condition_layout(vehicle).trim_variables(cond)]
+            copy_design_variables(target, prob, vehicle, names=names)
         iterations += int(sol.njev or 0)
         start = 0
         for name, meta in cons.items():   # scaled residual = (value - target) * scaler

@@ -11,8 +11,11 @@ Conventions
   ``battery.energy_density_wh_per_kg`` holds Wh/kg and is stored in J/kg.
 - Body frame: x forward, y right, z down, origin at the fuselage nose. Vectors are tuples of floats
   (use ``np.asarray``).
-- Condition names, in order: ``hover``, ``transition_1`` .. ``transition_5``, ``climb``, ``cruise``,
-  ``descent``, ``oei_1`` .. ``oei_4``, ``plus_3g``, ``minus_1g`` (:data:`CONDITION_NAMES`).
+- Conditions are data: each ``[[conditions]]`` entry has a ``name`` (any identifier), a ``kind``
+  (a key of :data:`lpc_mdo.groups.condition_kinds.CONDITION_KINDS`: ``hover``, ``oei``,
+  ``transition``, ``steady``, ``structural``), its flight state, its ``energy_weight`` in the
+  mission energy and the ``design_variable_prefix`` of the design variables it owns. The
+  reference vehicle has 15.
 - Rotor groups: the 8 lift rotors form 4 mirror-symmetric pairs (``Rotor.pair`` 0..3) that share
   radius, blades, chord, twist and rpm; the pusher is group 4. Per-rotor design variables
   (``rotor_radius``, ``blade_chord_cp``, ``blade_twist_cp``, ``motor_length``) have one row per
@@ -25,12 +28,17 @@ number; an integer field rejects 2.5 but accepts 2.0) or a non-physical value ra
 :class:`VehicleSpecError` that names the dotted key (``wing.area``, ``lift_rotors[3].radius``), the
 value and what is allowed, before anything is built. The checks come from a small schema in the
 dataclass field metadata (units, range, file-key suffix, array shape); checks that involve several
-fields (symmetric pairs, condition order and kind, level hover and OEI, design-variable bounds)
+fields (symmetric pairs, unique condition names, each kind's own rules, design-variable bounds)
 follow.
 
 Design variables
 ----------------
-``Vehicle.design_variables`` maps the 31 names below to :class:`DesignVariable`: the paper's 161
+``Vehicle.design_variables`` maps the design-variable names to :class:`DesignVariable`, in the
+order of the vehicle file's ``[design_variables]`` tables. The vehicle-level ones are fixed by the
+vehicle; each condition adds those its kind declares (rotor speeds, pitch, elevator), named
+``{design_variable_prefix}_{variable}`` and stacked as rows where conditions share a prefix
+(:class:`lpc_mdo.groups.condition_base.ConditionLayout`). The reference vehicle has the 31 below:
+the paper's 161
 (Table 6) and the 10 roll and yaw speed differentials of the transition lift rotors, which the
 paper does not have. Without them no trim variable acts on roll in transition, where the pusher's
 torque reaction rolls the vehicle (1.1-1.4e3 N m at our optimum, 3-4 % of the weight as a
@@ -95,7 +103,6 @@ import numpy as np
 
 __all__ = [
     "AIRFOILS",
-    "CONDITION_NAMES",
     "Airfoil",
     "Battery",
     "Booms",
@@ -113,8 +120,6 @@ __all__ = [
     "Vehicle",
     "VehicleSpecError",
     "WingBox",
-    "check_hover_pitch",
-    "condition_kind",
     "design_variable_count",
     "load_vehicle",
     "read_vehicle_file",
@@ -206,35 +211,11 @@ AIRFOILS: dict[str, Airfoil] = {
     )
 }
 
-#: The 15 design conditions, in order (ARCHITECTURE §2).
-CONDITION_NAMES: tuple[str, ...] = (
-    "hover",
-    *(f"transition_{i}" for i in range(1, 6)),
-    "climb",
-    "cruise",
-    "descent",
-    *(f"oei_{i}" for i in range(1, 5)),
-    "plus_3g",
-    "minus_1g",
-)
-
 _NUM_LIFT_ROTORS = 8
 _NUM_PAIRS = 4
 _PUSHER_GROUP = 4
+_IDENTIFIER = "an identifier (letters, digits and '_', not starting with a digit)"
 _AIRFOIL_NAMES = tuple(AIRFOILS)
-
-
-def condition_kind(name: str) -> str:
-    """Return the kind of a condition name.
-
-    One of ``"hover"``, ``"transition"``, ``"steady"`` (climb, cruise, descent), ``"oei"`` and
-    ``"structural"`` (plus_3g, minus_1g).
-    """
-    if name in ("climb", "cruise", "descent"):
-        return "steady"
-    if name in ("plus_3g", "minus_1g"):
-        return "structural"
-    return name.split("_")[0]
 
 
 # ------------------------------------------------------------------------------------------------
@@ -560,86 +541,75 @@ class Motor:
 
 @dataclass(frozen=True)
 class Mission:
-    """The energy-accounting rule of the sizing mission (paper §IV).
+    """The mission-level choices of the sizing mission (paper Sec. IV).
 
-    The mission segments themselves are the design conditions with a positive
-    ``energy_multiplier`` (hover, transition, climb, cruise, descent; see
-    :attr:`Vehicle.mission_segments`); their durations are in the conditions. The paper's rule
-    E_req = 2 (E_hover,60s + 2 E_transition + E_climb + E_cruise + E_descent) + E_cruise is
-    ``repetitions = 2``, ``transition_energy_factor = 2`` and ``reserve_cruise_segments = 1``.
+    The mission segments are the design conditions with a positive ``energy_weight`` (see
+    :attr:`Vehicle.mission_segments`); their durations and weights are in the conditions.
 
     Attributes
     ----------
-    repetitions : int
-        How many times the mission is flown.
-    transition_energy_factor : float
-        Factor on the outbound-transition energy that accounts for the unmodelled inbound one (-).
-    reserve_cruise_segments : float
-        Reserve, in cruise segments (-).
+    cruise_condition : str
+        Name of the design cruise condition (a ``steady`` condition): the static margin is
+        evaluated and constrained there, the M4 weight regressions take its speed, and the
+        wing's sectional zero-lift angle is taken at its Reynolds and Mach numbers.
     """
 
-    repetitions: int = _param(ge=1)
-    transition_energy_factor: float = _param(ge=0)
-    reserve_cruise_segments: float = _param(ge=0)
-
-    def energy_multiplier(self, condition_name: str) -> float:
-        """How many times the energy of a condition counts in the required energy (-)."""
-        kind = condition_kind(condition_name)
-        if kind == "transition":
-            return self.repetitions * self.transition_energy_factor
-        if condition_name == "cruise":
-            return self.repetitions + self.reserve_cruise_segments
-        if kind == "hover" or condition_name in ("climb", "descent"):
-            return float(self.repetitions)
-        return 0.0
+    cruise_condition: str = _param()
 
 
 @dataclass(frozen=True)
 class DesignCondition:
-    """One of the 15 design conditions.
+    """One design condition of the vehicle file.
 
     Attributes
     ----------
     name : str
-        Condition name, see :data:`CONDITION_NAMES`; :attr:`kind` follows from it.
+        Condition name, an identifier unique in the vehicle; the subsystem's name in the model.
+    kind : str
+        Which group class builds it and declares its design variables, trim rows, constraints
+        and motors: a key of :data:`lpc_mdo.groups.condition_kinds.CONDITION_KINDS`
+        (``hover``, ``oei``, ``transition``, ``steady``, ``structural``).
     altitude : float
         Altitude for the atmosphere (m); the mean altitude in climb and descent.
     speed : float
         Flight speed (m/s); 0 in hover and OEI.
     pitch : float
         Pitch angle (rad): initial value where pitch is a design variable, prescribed in
-        transition, 0 in hover and OEI (:func:`check_hover_pitch`); file key ``pitch_deg``.
+        transition, 0 in hover and OEI; file key ``pitch_deg``.
     flight_path_angle : float
         Flight-path angle γ (rad), positive climbing; file key ``flight_path_angle_deg``.
     duration : float
-        Time the condition represents in the energy sum (s); 0 where it is not part of it.
+        Time the condition represents in the energy sum (s).
+    energy_weight : float
+        How many times the condition's energy (power x duration) counts in the mission energy
+        (-); 0 where it is not part of the mission. The paper's rule E_req = 2 (E_hover +
+        2 E_transition + E_climb + E_cruise + E_descent) + E_cruise gives hover 2, each
+        transition point 4, climb 2, cruise 3, descent 2, OEI and structural 0.
     load_factor : float
-        Load factor n (-): 1 except +3g and -1g.
+        Load factor n (-): 1 except in structural conditions.
     failed_rotor : int
         Index into ``Vehicle.lift_rotors`` of the failed rotor in an OEI case, else -1.
     acceleration : float
         Prescribed dV/dt (m/s^2) in transition (u̇ = a cos θ, ẇ = a sin θ), else 0.
-    energy_multiplier : float
-        How many times the condition's energy counts in the required energy (-), set from
-        :class:`Mission` at load (not a file key): hover 2 (with 60 s), each transition point 4,
-        climb 2, cruise 3, descent 2, OEI and structural 0 for the paper rule.
+    design_variable_prefix : str
+        Prefix of the design variables the condition owns: its variable ``v`` is the vehicle
+        file's ``design_variables.{prefix}_{v}``. Conditions that share a prefix share the
+        tables, one row each in vehicle-file order (the reference's five transition points:
+        ``transition``); a prefix equal to the condition's name gives it tables of its own.
     """
 
-    name: str = _param(choices=CONDITION_NAMES)
+    name: str = _param()
+    kind: str = _param()
     altitude: float = _param("m", ge=0, le=11000)
     speed: float = _param("m/s", ge=0, le=150)
     pitch: float = _angle(gt=-90, lt=90)
     flight_path_angle: float = _angle(gt=-90, lt=90)
-    duration: float = _param("s", ge=0)
+    duration: float = _param("s", ge=0, le=86400)
+    energy_weight: float = _param(ge=0, le=100)
     load_factor: float = _param(ge=-5, le=5)
     failed_rotor: int = _param(ge=-1, le=_NUM_LIFT_ROTORS - 1)
     acceleration: float = _param("m/s^2", ge=-20, le=20)
-    energy_multiplier: float = field(default=0.0, metadata={"spec": _Spec(derived=True)})
-
-    @property
-    def kind(self) -> str:
-        """``"hover"``, ``"transition"``, ``"steady"``, ``"oei"`` or ``"structural"``."""
-        return condition_kind(self.name)
+    design_variable_prefix: str = _param()
 
 
 @dataclass(frozen=True)
@@ -797,8 +767,8 @@ class Vehicle:
         Motor design constants.
     mission : Mission
         Energy-accounting rule.
-    conditions : tuple of 15 DesignCondition
-        Design conditions in the order of :data:`CONDITION_NAMES`.
+    conditions : tuple of DesignCondition
+        Design conditions, in vehicle-file order (15 in the reference vehicle).
     constraints : ConstraintLimits
         Constraint limits.
     noise_observer : NoiseObserver
@@ -825,9 +795,7 @@ class Vehicle:
     battery: Battery = _param()
     motor: Motor = _param()
     mission: Mission = _param()
-    conditions: tuple[DesignCondition, ...] = _param(
-        count=len(CONDITION_NAMES), count_note="one per name in CONDITION_NAMES"
-    )
+    conditions: tuple[DesignCondition, ...] = _param(count_note="at least one [[conditions]] table")
     constraints: ConstraintLimits = _param()
     noise_observer: NoiseObserver = _param()
     design_variables: Mapping[str, DesignVariable] = _param()
@@ -840,7 +808,7 @@ class Vehicle:
     @property
     def mission_segments(self) -> tuple[DesignCondition, ...]:
         """The conditions that make up the mission energy, in flight order."""
-        return tuple(c for c in self.conditions if c.energy_multiplier > 0)
+        return tuple(c for c in self.conditions if c.energy_weight > 0)
 
     def design_variable_count(self) -> int:
         """Total number of scalar design variables (171: the paper's 161 + 10 differentials)."""
@@ -851,7 +819,8 @@ class Vehicle:
         for c in self.conditions:
             if c.name == name:
                 return c
-        raise KeyError(f"no design condition {name!r}; the conditions are {CONDITION_NAMES}")
+        names = [c.name for c in self.conditions]
+        raise KeyError(f"no design condition {name!r}; the vehicle's conditions are {names}")
 
 
 # ------------------------------------------------------------------------------------------------
@@ -916,18 +885,14 @@ def vehicle_from_dict(data: Mapping) -> Vehicle:
     values = _read_fields(Vehicle, data, "", skip="design_variables")
     _check_lift_rotors(values["lift_rotors"])
     _check_pusher(values["pusher"])
-    _check_conditions(values["conditions"])
+    _check_conditions(values)
     wing_box = values["wing_box"]
     if wing_box.rear_spar <= wing_box.front_spar:
         raise VehicleSpecError(
             f"'wing_box.rear_spar' = {wing_box.rear_spar!r} is out of range: must be > "
             f"'wing_box.front_spar' = {wing_box.front_spar!r}"
         )
-    mission = values["mission"]
-    values["conditions"] = tuple(
-        dataclasses.replace(c, energy_multiplier=mission.energy_multiplier(c.name))
-        for c in values["conditions"]
-    )
+    _check_mission(values["mission"], values["conditions"])
     values["design_variables"] = _read_design_variables(data["design_variables"], values)
     return Vehicle(**values)
 
@@ -1132,10 +1097,12 @@ def _table_list(cls, spec: _Spec, value, path: str) -> tuple:
         raise VehicleSpecError(
             f"'{path}' must be a list of tables ([[{path}]]), got {_show(value)}"
         )
-    if len(value) != spec.count:
+    if spec.count is not None and len(value) != spec.count:
         raise VehicleSpecError(
             f"'{path}' must have exactly {spec.count} entries ({spec.count_note}), got {len(value)}"
         )
+    if not value:
+        raise VehicleSpecError(f"'{path}' must have at least one entry ({spec.count_note})")
     return tuple(cls(**_read_fields(cls, v, f"{path}[{i}]")) for i, v in enumerate(value))
 
 
@@ -1202,77 +1169,45 @@ def _check_pusher(pusher: Rotor) -> None:
         )
 
 
-_ZERO = (lambda x: x == 0, "0")
-_ONE = (lambda x: x == 1, "1")
-_POSITIVE = (lambda x: x > 0, "> 0")
-_NO_FAILURE = (lambda x: x == -1, "-1")
+def _check_conditions(parts: dict) -> None:
+    """Names unique identifiers, kinds registered, each kind's own rules (its class's check)."""
+    from lpc_mdo.groups.condition_kinds import CONDITION_KINDS
 
-# Per condition kind: field -> (test, requirement text).
-_KIND_RULES: dict[str, dict[str, tuple[typing.Callable, str]]] = {
-    "hover": {
-        "speed": _ZERO,
-        "failed_rotor": _NO_FAILURE,
-        "acceleration": _ZERO,
-        "load_factor": _ONE,
-    },
-    "transition": {"speed": _POSITIVE, "failed_rotor": _NO_FAILURE, "load_factor": _ONE},
-    "steady": {
-        "speed": _POSITIVE,
-        "failed_rotor": _NO_FAILURE,
-        "acceleration": _ZERO,
-        "load_factor": _ONE,
-    },
-    "oei": {
-        "speed": _ZERO,
-        "failed_rotor": (lambda x: x >= 0, "a lift-rotor index (0 to 7)"),
-        "acceleration": _ZERO,
-        "load_factor": _ONE,
-    },
-    "structural": {"speed": _POSITIVE, "failed_rotor": _NO_FAILURE, "acceleration": _ZERO},
-}
+    vehicle = _PartialVehicle(parts)
+    seen: dict[str, int] = {}
+    for i, c in enumerate(parts["conditions"]):
+        path = f"conditions[{i}]"
+        for key in ("name", "design_variable_prefix"):
+            value = getattr(c, key)
+            if not value.isidentifier():
+                raise VehicleSpecError(f"'{path}.{key}' = {value!r} is not allowed: must be "
+                                       f"{_IDENTIFIER}")
+        if c.name in seen:
+            raise VehicleSpecError(f"'{path}.name' = {c.name!r} repeats "
+                                   f"'conditions[{seen[c.name]}].name'; names must be unique")
+        seen[c.name] = i
+        if c.kind not in CONDITION_KINDS:
+            allowed = ", ".join(repr(k) for k in CONDITION_KINDS)
+            raise VehicleSpecError(f"'{path}.kind' = {c.kind!r} is not allowed: must be one of "
+                                   f"{allowed} (register a new kind with "
+                                   f"lpc_mdo.groups.condition_kinds.register_condition_kind)")
+        CONDITION_KINDS[c.kind].check(i, c, vehicle)
 
 
-def check_hover_pitch(index: int, condition: DesignCondition) -> None:
-    """Raise VehicleSpecError unless a hover or OEI condition has zero pitch.
-
-    The hover model holds the body level: its lift-rotor thrust axes are body-fixed and u_dot is
-    not one of its trim constraints, so a pitched hover would accelerate horizontally, untrimmed.
-    ``index`` is the condition's position in ``conditions`` (for the message).
-    """
-    if condition.kind in ("hover", "oei") and condition.pitch != 0.0:
+def _check_mission(mission: Mission, conditions: tuple[DesignCondition, ...]) -> None:
+    steady = [c.name for c in conditions if c.kind == "steady"]
+    if mission.cruise_condition not in steady:
         raise VehicleSpecError(
-            f"'conditions[{index}].pitch_deg' = {_fmt(math.degrees(condition.pitch))} deg is not "
-            f"allowed: must be 0 in {condition.kind!r} conditions (the hover model holds the body "
-            f"level; the lift-rotor thrust axes are body-fixed and u_dot is not a hover trim "
-            f"constraint)"
+            f"'mission.cruise_condition' = {mission.cruise_condition!r} is not allowed: must be "
+            f"the name of a 'steady' condition, one of {steady}"
         )
 
 
-def _check_conditions(conditions: tuple[DesignCondition, ...]) -> None:
-    failed: dict[int, int] = {}
-    for i, (c, expected) in enumerate(zip(conditions, CONDITION_NAMES, strict=True)):
-        path = f"conditions[{i}]"
-        if c.name != expected:
-            raise VehicleSpecError(
-                f"'{path}.name' = {c.name!r} is not allowed here: must be {expected!r} (the "
-                f"conditions must be, in order: {', '.join(CONDITION_NAMES)})"
-            )
-        for name, (test, text) in _KIND_RULES[c.kind].items():
-            value = getattr(c, name)
-            if not test(value):
-                raise VehicleSpecError(
-                    f"'{path}.{name}' = {value!r} is not allowed: must be {text} in "
-                    f"{c.kind!r} conditions"
-                )
-        check_hover_pitch(i, c)
-        if c.kind == "oei":
-            if c.failed_rotor in failed:
-                raise VehicleSpecError(
-                    f"'{path}.failed_rotor' = {c.failed_rotor} repeats "
-                    f"'conditions[{failed[c.failed_rotor]}].failed_rotor'; each OEI condition "
-                    f"must fail a different lift rotor"
-                )
-            failed[c.failed_rotor] = i
+class _PartialVehicle:
+    """The parts of a vehicle read so far, as attributes (for checks before it is built)."""
+
+    def __init__(self, parts: dict):
+        self.__dict__.update(parts)
 
 
 # ------------------------------------------------------------------------------------------------
@@ -1292,14 +1227,16 @@ class _DVSpec:
 
 
 def _design_variable_specs(parts: dict) -> dict[str, _DVSpec]:
-    """The paper's design variables (Table 6, ref §9.1), sized from the built vehicle parts."""
+    """The design variables (paper Table 6), sized from the built vehicle parts.
+
+    The vehicle-level ones (planform, rotors, battery, motors, wing box), then those the
+    conditions own (:class:`lpc_mdo.groups.condition_base.ConditionLayout`).
+    """
+    from lpc_mdo.groups.condition_base import ConditionLayout
     wing, htail = parts["wing"], parts["horizontal_tail"]
     groups = [parts["lift_rotors"][i] for i, _ in _pairs(parts["lift_rotors"])]
     groups.append(parts["pusher"])
     ng = len(groups)
-    index = {c.name: i for i, c in enumerate(parts["conditions"])}
-    n_transition = sum(c.kind == "transition" for c in parts["conditions"])
-    n_oei = sum(c.kind == "oei" for c in parts["conditions"])
     n_bays = parts["wing_box"].num_bays
     rotor_rows = "rows: lift pairs 0-3, pusher"
     rotor_from = "lift_rotors[i].{0} (one rotor per pair) and pusher.{0}"
@@ -1308,18 +1245,12 @@ def _design_variable_specs(parts: dict) -> dict[str, _DVSpec]:
     def scalar(description, units, key, value):
         return _DVSpec(description, units, (1,), key, (value,))
 
-    def pitch(name):
-        i = index[name]
-        condition = parts["conditions"][i]
-        key = f"conditions[{i}].pitch_deg"
-        return scalar(f"aircraft pitch in {name}", "rad", key, condition.pitch)
-
     def thickness(what):
         return _DVSpec(
             f"{what} thickness per wing-box bay, root to tip", "m", (n_bays,), lower_min=gauge
         )
 
-    return {
+    specs = {
         "wing_aspect_ratio": scalar(
             "wing aspect ratio", "unitless", "wing.aspect_ratio", wing.aspect_ratio
         ),
@@ -1354,45 +1285,27 @@ def _design_variable_specs(parts: dict) -> dict[str, _DVSpec]:
         ),
         "battery_mass": scalar("battery mass", "kg", "battery.mass", parts["battery"].mass),
         "motor_length": _DVSpec(f"motor stack length; {rotor_rows}", "m", (ng,)),
-        "hover_lift_rpm": _DVSpec("lift-rotor speed in hover, per pair", "rpm", (_NUM_PAIRS,)),
-        "transition_lift_rpm": _DVSpec(
-            "lift-rotor speed, mean of the pair; rows: transition points, columns: pairs",
-            "rpm",
-            (n_transition, _NUM_PAIRS),
-        ),
-        "transition_roll_yaw_rpm": _DVSpec(
-            "lift-rotor speed differentials; rows: transition points, columns: roll (left, "
-            "y < 0, minus right rotors), yaw (spin +1 minus spin -1 rotors)",
-            "rpm",
-            (n_transition, 2),
-        ),
-        "oei_lift_rpm": _DVSpec(
-            "lift-rotor speed; rows: OEI cases, columns: the working rotors in lift_rotors order",
-            "rpm",
-            (n_oei, _NUM_LIFT_ROTORS - 1),
-        ),
-        "transition_pusher_rpm": _DVSpec(
-            "pusher speed per transition point", "rpm", (n_transition,)
-        ),
-        "climb_pusher_rpm": _DVSpec("pusher speed in climb", "rpm", (1,)),
-        "cruise_pusher_rpm": _DVSpec("pusher speed in cruise", "rpm", (1,)),
-        "descent_pusher_rpm": _DVSpec("pusher speed in descent", "rpm", (1,)),
-        "climb_pitch": pitch("climb"),
-        "cruise_pitch": pitch("cruise"),
-        "descent_pitch": pitch("descent"),
-        "plus_3g_pitch": pitch("plus_3g"),
-        "minus_1g_pitch": pitch("minus_1g"),
-        "transition_elevator": _DVSpec(
-            "h-tail deflection per transition point", "rad", (n_transition,)
-        ),
-        "climb_elevator": _DVSpec("h-tail deflection in climb", "rad", (1,)),
-        "cruise_elevator": _DVSpec("h-tail deflection in cruise", "rad", (1,)),
-        "descent_elevator": _DVSpec("h-tail deflection in descent", "rad", (1,)),
         "front_spar_thickness": thickness("front-spar"),
         "rear_spar_thickness": thickness("rear-spar"),
         "top_skin_thickness": thickness("top-skin"),
         "bottom_skin_thickness": thickness("bottom-skin"),
     }
+    conditions = parts["conditions"]
+    index = {c.name: i for i, c in enumerate(conditions)}
+    suffix = {f.name: _spec(f).suffix for f in dataclasses.fields(DesignCondition)}
+    for name, dv in ConditionLayout(_PartialVehicle(parts)).design_variables.items():
+        if name in specs:
+            raise VehicleSpecError(
+                f"the design variable {name!r} of condition {dv.conditions[0]!r} (its "
+                f"design_variable_prefix + a variable of its kind) has the name of a "
+                f"vehicle-level design variable; choose another design_variable_prefix"
+            )
+        initial_from = ""
+        if dv.initial_from:
+            initial_from = ", ".join(f"conditions[{index[c]}].{dv.initial_from}"
+                                     f"{suffix[dv.initial_from]}" for c in dv.conditions)
+        specs[name] = _DVSpec(dv.description, dv.units, dv.shape, initial_from, dv.initial)
+    return specs
 
 
 def _dv_values(value, shape: tuple[int, ...], path: str) -> tuple[float, ...]:
@@ -1408,9 +1321,10 @@ def _dv_values(value, shape: tuple[int, ...], path: str) -> tuple[float, ...]:
 def _read_design_variables(data, parts: dict) -> dict[str, DesignVariable]:
     specs = _design_variable_specs(parts)
     _check_keys(data, dict.fromkeys(specs, "design-variable table"), "design_variables")
+    # In the file's order (the order of the model's design-variable outputs).
     return _ReadOnlyDict(
-        (name, _read_design_variable(data[name], spec, f"design_variables.{name}"))
-        for name, spec in specs.items()
+        (name, _read_design_variable(data[name], specs[name], f"design_variables.{name}"))
+        for name in data
     )
 
 

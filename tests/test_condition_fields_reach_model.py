@@ -30,7 +30,7 @@ REF = reference_vehicle()
 
 def run(vehicle, conditions, **options):
     """Set up and run an LPCGroup of ``vehicle`` with only ``conditions``."""
-    prob = om.Problem(LPCGroup(vehicle=vehicle, conditions=conditions, design_problem=False,
+    prob = om.Problem(LPCGroup(vehicle=vehicle, conditions=conditions,
                                **options), reports=False)
     prob.setup()
     prob.run_model()
@@ -148,7 +148,7 @@ def test_nonzero_hover_pitch_is_rejected_by_the_file_validation(index, kind):
 def test_nonzero_hover_pitch_is_rejected_by_the_model():
     # dataclasses.replace skips the file validation; the hover group checks again.
     vehicle = with_condition(REF, "hover", pitch=np.radians(3.0))
-    prob = om.Problem(LPCGroup(vehicle=vehicle, conditions=["hover"], design_problem=False),
+    prob = om.Problem(LPCGroup(vehicle=vehicle, conditions=["hover"]),
                       reports=False)
     with pytest.raises(VehicleSpecError, match=r"'conditions\[0\]\.pitch_deg' = 3 deg"):
         prob.setup()
@@ -164,7 +164,7 @@ def test_hover_pitch_reaches_the_model():
 
 
 def _group_polars(vehicle, conditions, **options):
-    prob = om.Problem(LPCGroup(vehicle=vehicle, conditions=conditions, design_problem=False,
+    prob = om.Problem(LPCGroup(vehicle=vehicle, conditions=conditions,
                                **options), reports=False)
     prob.setup()
     return prob
@@ -213,7 +213,7 @@ def test_lift_rotors_with_different_airfoils_are_rejected():
     # One polar serves all eight lift rotors (one rotor-model call per condition): a pair with
     # another section is a VehicleSpecError naming the first rotor that differs.
     vehicle = with_lift_airfoil(REF, "naca0015", pairs=(1,))
-    prob = om.Problem(LPCGroup(vehicle=vehicle, conditions=["hover"], design_problem=False),
+    prob = om.Problem(LPCGroup(vehicle=vehicle, conditions=["hover"]),
                       reports=False)
     with pytest.raises(VehicleSpecError,
                        match=r"'lift_rotors\[1\]\.airfoil' = 'naca0015' differs from "
@@ -246,7 +246,7 @@ def test_polar_file_rotor_uses_naca0012_thickness_with_a_warning(tmp_path):
     alpha = np.linspace(-10.0, 12.0, 23)
     np.savetxt(path, np.column_stack([alpha, 0.1 * alpha, 0.01 + 1e-4 * alpha**2]))
     vehicle = with_lift_airfoil(REF, str(path))
-    prob = om.Problem(LPCGroup(vehicle=vehicle, conditions=["hover"], design_problem=False,
+    prob = om.Problem(LPCGroup(vehicle=vehicle, conditions=["hover"],
                                rotor_polar=LinearQuadraticPolar(), wing_zero_lift_angle=-0.07),
                       reports=False)
     with pytest.warns(om.OpenMDAOWarning, match=r"'lift_rotors\[0\]\.airfoil' = .*blade\.dat"):

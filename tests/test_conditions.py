@@ -15,7 +15,7 @@ pytest.importorskip("cyipopt")
 
 def condition_problem(name, design_vars=(), constraints=(), objective=None):
     prob = om.Problem(reports=False)
-    prob.model = LPCGroup(conditions=[name], design_problem=False,
+    prob.model = LPCGroup(conditions=[name],
                           rotor_polar=LinearQuadraticPolar(), wing_zero_lift_angle=-0.07)
     for dv, kw in design_vars:
         prob.model.add_design_var(dv, **kw)
@@ -91,7 +91,7 @@ def test_plus_3g_trim_by_pitch_alone():
 
 def test_transition_point_runs_alone_and_obeys_newton():
     prob = om.Problem(reports=False)
-    prob.model = LPCGroup(conditions=["transition_2"], design_problem=False,
+    prob.model = LPCGroup(conditions=["transition_2"],
                           rotor_polar=LinearQuadraticPolar(), wing_zero_lift_angle=-0.07)
     prob.setup()
     prob.run_model()
@@ -122,7 +122,7 @@ def test_unknown_condition_is_named():
                                   "descent", "oei_1", "oei_4", "plus_3g", "minus_1g"])
 def test_each_condition_runs_alone(name):
     prob = om.Problem(reports=False)
-    prob.model = LPCGroup(conditions=[name], design_problem=False,
+    prob.model = LPCGroup(conditions=[name],
                           rotor_polar=LinearQuadraticPolar(), wing_zero_lift_angle=-0.07)
     prob.setup()
     prob.run_model()

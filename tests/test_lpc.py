@@ -11,6 +11,7 @@ from openmdao.utils.assert_utils import assert_check_totals, assert_near_equal
 
 from lpc_mdo.components.aero.polar import LinearQuadraticPolar
 from lpc_mdo.groups.lpc import LPCGroup
+from lpc_mdo.problems import declare_problem
 
 # Paper Table 6, by group.
 TABLE6_DESIGN_VARIABLES = {
@@ -88,6 +89,7 @@ def lpc():
     prob = om.Problem(reports=False)
     # The analytic reference polar keeps this test independent of the airfoil tables.
     prob.model = LPCGroup(rotor_polar=LinearQuadraticPolar(), wing_zero_lift_angle=-0.07)
+    declare_problem(prob.model)   # paper Table 6, every row (lateral_trim)
     prob.setup(mode="rev", force_alloc_complex=True)
     prob.run_model()
     return prob
@@ -137,11 +139,27 @@ def test_initial_design(lpc):
 
 def test_static_margin_switch():
     prob = om.Problem(reports=False)
-    prob.model = LPCGroup(rotor_polar=LinearQuadraticPolar(), wing_zero_lift_angle=-0.07,
-                          static_margin=False)
+    prob.model = LPCGroup(rotor_polar=LinearQuadraticPolar(), wing_zero_lift_angle=-0.07)
+    declare_problem(prob.model, static_margin=False)
     prob.setup()
     prob.final_setup()
     assert sum(m["size"] for m in prob.model.get_constraints().values()) == 95 + 40
+
+
+def test_the_model_has_physics_options_only():
+    # The problem (design variables, constraints, objective, subproblems, baseline penalty) is
+    # declared by lpc_mdo.problems; the model's options are its physics and its conditions.
+    assert set(LPCGroup().options) - {"assembled_jac_type", "derivs_method", "auto_order"} == {
+        "vehicle", "conditions", "rotor_polar", "wing_zero_lift_angle", "ks_rho",
+        "structural_coupling", "structural_ks_rho"}
+
+
+def test_an_undeclared_model_has_no_problem():
+    prob = om.Problem(LPCGroup(rotor_polar=LinearQuadraticPolar(), wing_zero_lift_angle=-0.07,
+                               conditions=["cruise"]), reports=False)
+    prob.setup()
+    prob.final_setup()
+    assert not prob.model.get_design_vars() and not prob.model.get_constraints()
 
 
 def test_totals_across_disciplines(lpc):

@@ -2,7 +2,9 @@
 
 A synthetic recorded problem with LPC output names: m = 2000 kg, a diagonal-plus-xz inertia,
 hover and one transition point with chosen accelerations; the residuals are checked against
-the closed forms F = m (a - a_target) and M = I alpha computed here by hand.
+the closed forms F = m (a - a_target) and M = I alpha computed here by hand, with the
+transition point's prescribed acceleration a_target = dV/dt (cos theta, sin theta) of the
+reference vehicle's transition_1.
 """
 
 import numpy as np
@@ -12,14 +14,16 @@ from openmdao.utils.assert_utils import assert_near_equal
 
 from lpc_mdo.post.tables import MissingVariableError
 from lpc_mdo.post.trim_residuals import trim_residual_table, trim_residuals
+from lpc_mdo.vehicle import reference_vehicle
 
 MASS = 2000.0
 INERTIA = np.array([[5000.0, 0.0, -700.0], [0.0, 9000.0, 0.0], [-700.0, 0.0, 13000.0]])
 HOVER_LINEAR = [0.0, 0.0, 2e-4]
 HOVER_ANGULAR = [3e-3, -1e-5, 0.0]
-T1_LINEAR = [1.5, 1e-6, 0.1002]
+_T1 = reference_vehicle().condition("transition_1")
+T1_TARGET = (_T1.acceleration * np.cos(_T1.pitch), _T1.acceleration * np.sin(_T1.pitch))
+T1_LINEAR = [T1_TARGET[0], 1e-6, T1_TARGET[1] + 2e-4]
 T1_ANGULAR = [1e-6, 2e-6, -4e-6]
-T1_TARGET = (1.5, 0.1)   # prescribed u_dot, w_dot
 
 
 def _record(path, declare=True):
@@ -67,9 +71,10 @@ def test_residuals_are_forces_and_moments_of_every_table6_row(tmp_path):
     assert_near_equal(by_key["hover", "p"]["residual"], 5000.0 * 3e-3, 1e-12)
     assert_near_equal(by_key["hover", "q"]["residual"], 9000.0 * -1e-5, 1e-12)
     assert by_key["hover", "p"]["declared"] is False and by_key["hover", "q"]["declared"]
-    # Transition: residual against the declared prescribed acceleration.
+    # Transition: residual against the prescribed acceleration.
     assert_near_equal(by_key["transition_1", "u"]["residual"], 0.0, 1e-12)
-    assert_near_equal(by_key["transition_1", "w"]["residual"], MASS * (0.1002 - 0.1), 1e-9)
+    assert_near_equal(by_key["transition_1", "w"]["residual"], MASS * 2e-4, 1e-9)
+    assert_near_equal(by_key["transition_1", "w"]["target"], T1_TARGET[1], 1e-12)
     assert_near_equal(by_key["transition_1", "r"]["residual"],
                       -700.0 * 1e-6 + 13000.0 * -4e-6, 1e-12)
     assert_near_equal(by_key["hover", "p"]["percent_of_weight"], 100 * 15.0 / weight, 1e-12)
@@ -85,10 +90,13 @@ def test_table_flags_rows_beyond_the_limit(tmp_path):
     assert "largest: hover p" in table.notes[1]
 
 
-def test_undeclared_transition_skips_only_its_prescribed_rows(tmp_path):
+def test_undeclared_rows_are_evaluated_against_the_condition_targets(tmp_path):
+    # The rows and targets come from the condition's contract, declared or not.
     rows = trim_residuals(_record(tmp_path / "cases.sql", declare=False))
-    transition = [r["component"] for r in rows if r["condition"] == "transition_1"]
-    assert transition == ["v", "p", "q", "r"]   # u and w need the prescribed targets
+    transition = {r["component"]: r for r in rows if r["condition"] == "transition_1"}
+    assert list(transition) == list("uvwpqr")
+    assert not any(r["declared"] for r in rows)
+    assert_near_equal(transition["w"]["residual"], MASS * 2e-4, 1e-9)
 
 
 def test_case_without_accelerations_is_a_clear_error(tmp_path):

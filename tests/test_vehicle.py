@@ -10,7 +10,6 @@ import numpy as np
 import pytest
 
 from lpc_mdo.vehicle import (
-    CONDITION_NAMES,
     Vehicle,
     VehicleSpecError,
     design_variable_count,
@@ -58,7 +57,8 @@ def test_counts_and_condition_order():
         "plus_3g",
         "minus_1g",
     ]
-    assert tuple(c.name for c in vehicle.conditions) == CONDITION_NAMES
+    assert [c.kind for c in vehicle.conditions] == (
+        ["hover"] + ["transition"] * 5 + ["steady"] * 3 + ["oei"] * 4 + ["structural"] * 2)
     assert design_variable_count() == 161 + 10
     assert vehicle.design_variable_count() == 161 + 10
     assert design_variable_count(vehicle) == sum(
@@ -103,16 +103,20 @@ def test_rotor_pairs_are_mirror_images_with_balanced_spin():
     assert all(vehicle.lift_rotors[i].hub_position[2] < wing_z for i in (1, 3, 5, 7))
 
 
-def test_angles_are_radians_and_energy_multipliers_follow_the_paper_rule():
+def test_angles_are_radians_and_energy_weights_follow_the_paper_rule():
+    # The reference file's energy weights are the paper's rule (Sec. IV):
+    # E_req = 2 (E_hover + 2 E_transition + E_climb + E_cruise + E_descent) + E_cruise.
     vehicle = reference_vehicle()
     assert vehicle.pusher.twist_cp[0] == pytest.approx(math.radians(60))
     assert vehicle.wing.dihedral == pytest.approx(math.radians(-2))
-    multipliers = {c.name: c.energy_multiplier for c in vehicle.conditions}
+    multipliers = {c.name: c.energy_weight for c in vehicle.conditions}
     assert multipliers["hover"] == 2 and vehicle.condition("hover").duration == 60
     assert [multipliers[f"transition_{i}"] for i in range(1, 6)] == [4] * 5
     assert (multipliers["climb"], multipliers["cruise"], multipliers["descent"]) == (2, 3, 2)
     assert all(multipliers[n] == 0 for n in ("oei_1", "oei_4", "plus_3g", "minus_1g"))
-    assert [c.name for c in vehicle.mission_segments] == list(CONDITION_NAMES[:9])
+    assert [c.name for c in vehicle.mission_segments] == [
+        c.name for c in vehicle.conditions[:9]]
+    assert vehicle.mission.cruise_condition == "cruise"
     accelerations = [c.acceleration for c in vehicle.conditions if c.kind == "transition"]
     assert min(accelerations) == pytest.approx(0.17, abs=0.01)  # paper Table 7 minimum
     assert [c.failed_rotor for c in vehicle.conditions if c.kind == "oei"] == [0, 1, 2, 3]
@@ -211,8 +215,8 @@ def _delete(*keys):
     return mutate
 
 
-def _swap_conditions(d):
-    d["conditions"][1], d["conditions"][6] = d["conditions"][6], d["conditions"][1]
+def _repeat_condition_name(d):
+    d["conditions"][6]["name"] = "hover"
 
 
 BAD_INPUTS = {
@@ -349,14 +353,36 @@ BAD_INPUTS = {
         _set("lift_rotors", 7, "spin_direction", -1),
         "'lift_rotors[7].spin_direction' = -1 must be opposite to its pair partner",
     ),
-    "conditions out of order": (
-        _swap_conditions,
-        "'conditions[1].name' = 'climb' is not allowed here: must be 'transition_1' (the "
-        "conditions must be, in order: hover, transition_1,",
+    "condition name repeated": (
+        _repeat_condition_name,
+        "'conditions[6].name' = 'hover' repeats 'conditions[0].name'; names must be unique",
     ),
-    "unknown condition": (
-        _set("conditions", 14, "name", "minus_2g"),
-        "'conditions[14].name' = 'minus_2g' is not allowed: must be one of 'hover',",
+    "condition name not an identifier": (
+        _set("conditions", 14, "name", "minus 1g"),
+        "'conditions[14].name' = 'minus 1g' is not allowed: must be an identifier",
+    ),
+    "unknown condition kind": (
+        _set("conditions", 14, "kind", "pull_up"),
+        "'conditions[14].kind' = 'pull_up' is not allowed: must be one of 'hover', 'oei', "
+        "'transition', 'steady', 'structural'",
+    ),
+    "missing energy weight": (
+        _delete("conditions", 3, "energy_weight"),
+        "missing key 'conditions[3].energy_weight'",
+    ),
+    "energy weight of a condition without power": (
+        _set("conditions", 13, "energy_weight", 1.0),
+        "'conditions[13].energy_weight' = 1.0 is not allowed: must be 0 in 'structural' "
+        "conditions (they draw no power)",
+    ),
+    "cruise condition not steady": (
+        _set("mission", "cruise_condition", "hover"),
+        "'mission.cruise_condition' = 'hover' is not allowed: must be the name of a 'steady' "
+        "condition, one of ['climb', 'cruise', 'descent']",
+    ),
+    "structural condition at zero load factor": (
+        _set("conditions", 14, "load_factor", 0.0),
+        "'conditions[14].load_factor' = 0.0 is not allowed: must be non-zero in 'structural'",
     ),
     "hover with speed": (
         _set("conditions", 0, "speed", 5.0),
@@ -368,7 +394,7 @@ BAD_INPUTS = {
     ),
     "OEI without a failed rotor": (
         _set("conditions", 9, "failed_rotor", -1),
-        "'conditions[9].failed_rotor' = -1 is not allowed: must be a lift-rotor index (0 to 7) "
+        "'conditions[9].failed_rotor' = -1 is not allowed: must be a lift-rotor index (>= 0) "
         "in 'oei' conditions",
     ),
     "OEI repeats a failed rotor": (

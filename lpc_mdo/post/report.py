@@ -30,9 +30,9 @@ from lpc_mdo.post.tables import DEFAULT_TOL, MissingVariableError, Quantity
 from lpc_mdo.post.trim_residuals import trim_residual_table
 
 __all__ = [
-    "LPC_CONDITIONS",
     "LPC_DESIGN_QUANTITIES",
-    "LPC_DISTRIBUTIONS",
+    "LPC_THICKNESS_DISTRIBUTIONS",
+    "lpc_distributions",
     "LPC_SWEEPS",
     "DistributionSpec",
     "ReportSpec",
@@ -40,10 +40,6 @@ __all__ = [
     "find_case_files",
     "write_report",
 ]
-
-#: The 15 LPC design conditions (ARCHITECTURE.md §2), in mission order.
-LPC_CONDITIONS = ("hover", *(f"transition_{i}" for i in range(1, 6)), "climb", "cruise",
-                  "descent", *(f"oei_{i}" for i in range(1, 5)), "plus_3g", "minus_1g")
 
 _CASE_SUFFIXES = (".sql", ".db", ".sqlite", ".sqlite3")
 _GENERIC_STEMS = ("cases", "case", "driver", "recording")
@@ -123,16 +119,39 @@ LPC_DESIGN_QUANTITIES = (
     ("W_0", "gross_mass", "kg"),
 )
 
-#: Wing-box design variables of VehicleGroup (per bay, root to tip) and the beam stress of the
-#: +3g condition (BeamGroup ``von_mises_stress``, (num_elements, 5) recovery points).
-LPC_DISTRIBUTIONS = (
+#: Wing-box design variables of VehicleGroup (per bay, root to tip).
+LPC_THICKNESS_DISTRIBUTIONS = (
     DistributionSpec("skin_thickness", ("top_skin_thickness", "bottom_skin_thickness"),
                      units="mm", title="Skin thickness, root to tip"),
     DistributionSpec("spar_thickness", ("front_spar_thickness", "rear_spar_thickness"),
                      units="mm", title="Spar thickness, root to tip"),
-    DistributionSpec("stress_plus_3g", ("plus_3g.von_mises_stress",), units="MPa",
-                     limit=350.0, title="Beam stress, +3g"),
 )
+
+
+def lpc_distributions(vehicle):
+    """The wing-box thicknesses and, per structural condition of the vehicle, the beam stress
+    (BeamGroup ``von_mises_stress``, (num_elements, 5) recovery points; limit: the material's
+    allowable)."""
+    allowable = vehicle.material.allowable_stress / 1e6
+    return LPC_THICKNESS_DISTRIBUTIONS + tuple(
+        DistributionSpec(f"stress_{c.name}", (f"{c.name}.von_mises_stress",), units="MPa",
+                         limit=allowable, title=f"Beam stress, {c.name}")
+        for c in vehicle.conditions if c.kind == "structural")
+
+
+def _powered_conditions(vehicle):
+    from lpc_mdo.groups.condition_kinds import condition_class
+
+    return tuple(c.name for c in vehicle.conditions if condition_class(c.kind).power_output)
+
+
+def _all_lift_rotor_conditions(vehicle):
+    """Conditions that run every lift rotor (hover and transition in the reference)."""
+    from lpc_mdo.groups.condition_kinds import condition_class
+
+    n = len(vehicle.lift_rotors)
+    return tuple(c.name for c in vehicle.conditions
+                 if len(condition_class(c.kind).motor_sets(vehicle, c).get("lift", ())) == n)
 
 LPC_SWEEPS = (
     SweepSpec("sweep_energy_density", "battery.specific_energy", x_units="W*h/kg",
@@ -174,8 +193,11 @@ class ReportSpec:
         Its entry labels; default ``BREAKDOWN_LABELS``.
     mass_units : str or None
         Default ``'kg'``.
-    conditions : tuple of str
-        Condition names for the power figure; default the 15 LPC conditions.
+    vehicle : Vehicle or None
+        The vehicle of the runs (None: the reference vehicle); the defaults of ``conditions``,
+        ``fom_conditions`` and ``distributions`` and the trim rows come from its conditions.
+    conditions : tuple of str or None
+        Condition names for the power figure; None: the vehicle's conditions with motors.
     power : str or None
         Template (``{condition}``) or per-condition vector; default
         ``'{condition}.electrical_power'``, summed per condition.
@@ -184,11 +206,12 @@ class ReportSpec:
     figure_of_merit : str or None
         Template or vector; default ``'{condition}.lift_figure_of_merit'``, averaged over all its
         entries (rotors) per condition.
-    fom_conditions : tuple of str
-        Default hover and the five transition points (lift rotors running).
-    distributions : tuple of DistributionSpec
-        Default ``top/bottom_skin_thickness`` and ``front/rear_spar_thickness`` (mm) and
-        ``plus_3g.von_mises_stress`` (MPa, limit 350).
+    fom_conditions : tuple of str or None
+        None: the vehicle's conditions that run every lift rotor (the reference: hover and the
+        five transition points).
+    distributions : tuple of DistributionSpec or None
+        None: ``top/bottom_skin_thickness`` and ``front/rear_spar_thickness`` (mm) and each
+        structural condition's ``von_mises_stress`` (MPa, limit: the allowable stress).
     sweeps : tuple of SweepSpec
         Default battery energy density (``battery.specific_energy`` in Wh/kg) and final SoC
         (``lower:state_of_charge``).
@@ -205,14 +228,27 @@ class ReportSpec:
     mass_breakdown: str | None = "mass_breakdown"
     mass_labels: tuple | None = BREAKDOWN_LABELS
     mass_units: str | None = "kg"
-    conditions: tuple = LPC_CONDITIONS
+    vehicle: object = None
+    conditions: tuple | None = None
     power: str | None = "{condition}.electrical_power"
     power_units: str | None = "kW"
     figure_of_merit: str | None = "{condition}.lift_figure_of_merit"
-    fom_conditions: tuple = LPC_CONDITIONS[:6]
-    distributions: tuple = LPC_DISTRIBUTIONS
+    fom_conditions: tuple | None = None
+    distributions: tuple | None = None
     sweeps: tuple = LPC_SWEEPS
     trim_residuals: bool = True
+
+    def __post_init__(self):
+        from lpc_mdo.vehicle import reference_vehicle
+
+        if self.vehicle is None:
+            self.vehicle = reference_vehicle()
+        if self.conditions is None:
+            self.conditions = _powered_conditions(self.vehicle)
+        if self.fom_conditions is None:
+            self.fom_conditions = _all_lift_rotor_conditions(self.vehicle)
+        if self.distributions is None:
+            self.distributions = lpc_distributions(self.vehicle)
 
     @classmethod
     def generic(cls, **overrides):
@@ -354,7 +390,7 @@ def _run_section(index, label, cr, spec):
         index.table(table, f"design_variables_{slug}", inline=False)
 
     def trim():
-        table = trim_residual_table(cr)
+        table = trim_residual_table(cr, vehicle=spec.vehicle)
         index.add("**Trim residuals** (Table 6 rows, forces and moments in % of the weight):", "")
         index.table(table, f"trim_residuals_{slug}")
 

@@ -11,17 +11,18 @@ transition v_dot, which no trim variable controls on its own):
     moment residual M   = I . alpha                      (quasi-steady: zero body rates)
 
 with m = ``gross_mass``, I = ``inertia`` (3 x 3, about the cg) and the accelerations
-``{condition}.linear_acceleration``, ``{condition}.angular_acceleration``. Targets are zero except
-the prescribed transition accelerations, which are read from the run's declared constraint
-(``equals`` at its ``indices``); a transition whose u/w rows were not declared is left out.
-
-Table 6 rows per condition kind: hover (w, p, q), climb/cruise/descent (u, w, q), transition
-(u, v, w, p, q, r), OEI (v, w, p, q, r), +3g/-1g (w): 64 of the 96 constraints for the 15
-conditions.
+``{condition}.linear_acceleration``, ``{condition}.angular_acceleration``. The rows and their
+targets (zero except the prescribed transition accelerations) are those the optimization
+problems declare: each condition kind's :meth:`~lpc_mdo.groups.condition_base.ConditionGroup.
+trim_rows`. The reference vehicle: hover (w, p, q), steady (u, w, q), transition (u, v, w, p, q,
+r), OEI (v, w, p, q, r), structural (w): 64 of the 96 constraints for its 15 conditions.
 """
 
 import numpy as np
 
+from lpc_mdo.constants import GRAVITY
+from lpc_mdo.groups.condition_base import ANGULAR_COMPONENTS, LINEAR_COMPONENTS
+from lpc_mdo.groups.condition_kinds import condition_class
 from lpc_mdo.post.tables import (
     MissingVariableError,
     Table,
@@ -31,31 +32,18 @@ from lpc_mdo.post.tables import (
     open_reader,
     read_value,
 )
-from lpc_mdo.vehicle import CONDITION_NAMES, condition_kind
+from lpc_mdo.vehicle import reference_vehicle
 
-__all__ = ["TABLE6_TRIM_ROWS", "trim_residuals", "trim_residual_table"]
-
-#: Table 6 trim rows by condition kind: linear (u, v, w) and angular (p, q, r) components.
-TABLE6_TRIM_ROWS = {
-    "hover": ("w", "p", "q"),
-    "steady": ("u", "w", "q"),
-    "transition": ("u", "v", "w", "p", "q", "r"),
-    "oei": ("v", "w", "p", "q", "r"),
-    "structural": ("w",),
-}
-_LINEAR, _ANGULAR = ("u", "v", "w"), ("p", "q", "r")
-G = 9.81
+__all__ = ["trim_residuals", "trim_residual_table"]
 
 
-def _declared_targets(metadata, name):
-    """Declared equality targets of constraint ``name`` by flat component index."""
+def _declared_indices(metadata, name):
+    """Flat component indices of the declared constraint ``name`` (empty if undeclared)."""
     meta = metadata.get(name)
-    if meta is None or meta.get("equals") is None:
-        return {}
+    if meta is None:
+        return set()
     indices = meta.get("indices")
-    indices = list(range(meta["size"])) if indices is None else list(np.ravel(indices))
-    equals = np.broadcast_to(np.asarray(meta["equals"], dtype=float).ravel(), (len(indices),))
-    return {int(i): float(e) for i, e in zip(indices, equals, strict=True)}
+    return set(range(meta["size"])) if indices is None else {int(i) for i in np.ravel(indices)}
 
 
 def _problem_case(source, case):
@@ -67,7 +55,7 @@ def _problem_case(source, case):
     return found
 
 
-def trim_residuals(source, case=None):
+def trim_residuals(source, case=None, vehicle=None):
     """
     Force and moment residuals of every Table 6 trim row of the conditions a case holds.
 
@@ -78,6 +66,9 @@ def trim_residuals(source, case=None):
     case : None, int, str or Case
         Which case (see :func:`lpc_mdo.post.tables.final_case`); None: the last problem case
         (``'final'``), which holds every output.
+    vehicle : Vehicle or None
+        The vehicle the run was made with (None: the reference vehicle): its conditions and
+        their trim rows.
 
     Returns
     -------
@@ -91,38 +82,35 @@ def trim_residuals(source, case=None):
     MissingVariableError
         When the case holds no condition's accelerations, or not ``gross_mass``/``inertia``.
     """
+    vehicle = vehicle or reference_vehicle()
     source = open_reader(source)   # once: every read_value below would reopen a path
     case = _problem_case(source, case)
     mass = float(read_value(source, "gross_mass", "kg", case)[0])
     inertia = read_value(source, "inertia", "kg*m**2", case).reshape(3, 3)
-    weight = mass * G
+    weight = mass * GRAVITY
     metadata = constraint_metadata(source)
     rows = []
-    for name in CONDITION_NAMES:
+    for condition in vehicle.conditions:
+        name = condition.name
         try:
-            linear = read_value(source, f"{name}.linear_acceleration", "m/s**2", case).ravel()
-            angular = read_value(source, f"{name}.angular_acceleration", "rad/s**2",
-                                 case).ravel()
+            values = {
+                "linear_acceleration": read_value(source, f"{name}.linear_acceleration",
+                                                  "m/s**2", case).ravel(),
+                "angular_acceleration": read_value(source, f"{name}.angular_acceleration",
+                                                   "rad/s**2", case).ravel(),
+            }
         except MissingVariableError:
             continue
-        lin_targets = _declared_targets(metadata, f"{name}.linear_acceleration")
-        ang_targets = _declared_targets(metadata, f"{name}.angular_acceleration")
-        moment = inertia @ angular
-        kind = condition_kind(name)
-        for component in TABLE6_TRIM_ROWS[kind]:
-            if component in _LINEAR:
-                k = _LINEAR.index(component)
-                declared = k in lin_targets
-                if kind == "transition" and component != "v" and not declared:
-                    continue   # the prescribed acceleration is unknown without the constraint
-                target = lin_targets.get(k, 0.0)
-                value, residual = linear[k], mass * (linear[k] - target)
+        moment = inertia @ values["angular_acceleration"]
+        for row in condition_class(condition.kind).trim_rows(vehicle, condition):
+            value = values[row.output][row.index]
+            declared = row.index in _declared_indices(metadata, f"{name}.{row.output}")
+            if row.output == "linear_acceleration":
+                residual = mass * (value - row.target)
             else:
-                k = _ANGULAR.index(component)
-                declared, target = k in ang_targets, ang_targets.get(k, 0.0)
-                value, residual = angular[k], moment[k]
-            rows.append(dict(condition=name, component=component, declared=declared,
-                             acceleration=float(value), target=float(target),
+                residual = moment[row.index]
+            rows.append(dict(condition=name, component=row.component, declared=declared,
+                             acceleration=float(value), target=float(row.target),
                              residual=float(residual),
                              percent_of_weight=100.0 * abs(float(residual)) / weight))
     if not rows:
@@ -131,7 +119,7 @@ def trim_residuals(source, case=None):
     return rows
 
 
-def trim_residual_table(source, case=None, limit_percent=0.1):
+def trim_residual_table(source, case=None, limit_percent=0.1, vehicle=None):
     """
     Table of the Table 6 trim rows per condition: largest force and moment residuals.
 
@@ -143,6 +131,8 @@ def trim_residual_table(source, case=None, limit_percent=0.1):
     limit_percent : float
         The residual, in % of the weight, above which a row counts as not trimmed (the
         optimization issue's criterion: 0.1 %).
+    vehicle : Vehicle or None
+        As :func:`trim_residuals`.
 
     Returns
     -------
@@ -152,13 +142,13 @@ def trim_residual_table(source, case=None, limit_percent=0.1):
     """
     source = open_reader(source)
     case = _problem_case(source, case)
-    rows = trim_residuals(source, case)
-    weight = float(read_value(source, "gross_mass", "kg", case)[0]) * G
+    rows = trim_residuals(source, case, vehicle)
+    weight = float(read_value(source, "gross_mass", "kg", case)[0]) * GRAVITY
     out, worst = [], max(rows, key=lambda r: r["percent_of_weight"])
     for name in dict.fromkeys(r["condition"] for r in rows):
         mine = [r for r in rows if r["condition"] == name]
-        forces = [abs(r["residual"]) for r in mine if r["component"] in _LINEAR]
-        moments = [abs(r["residual"]) for r in mine if r["component"] in _ANGULAR]
+        forces = [abs(r["residual"]) for r in mine if r["component"] in LINEAR_COMPONENTS]
+        moments = [abs(r["residual"]) for r in mine if r["component"] in ANGULAR_COMPONENTS]
         percent = max(r["percent_of_weight"] for r in mine)
         out.append([name, " ".join(r["component"] for r in mine),
                     " ".join(r["component"] for r in mine if r["declared"]) or "none",
