@@ -3,8 +3,9 @@
 Checked against OpenMDAO 3.45.1, the version pinned in ``pyproject.toml``
 (``openmdao>=3.45.1,<3.46``).  OpenMDAO does not promise that names with a leading underscore
 stay put: the driver autoscaler, for one, changed within 3.45.x.  When the pin moves, this
-module is the only one to re-check; :mod:`lpc_mdo.drivers.ipopt` and
-:mod:`lpc_mdo.drivers.slsqp` reach OpenMDAO's internals only through the names below.
+module is the only one to re-check; :mod:`lpc_mdo.drivers.ipopt`,
+:mod:`lpc_mdo.drivers.slsqp` and :mod:`lpc_mdo.progress` reach OpenMDAO's internals only
+through the names below.
 
 What is touched, and why
 ------------------------
@@ -36,7 +37,8 @@ Driver state read or written from outside OpenMDAO's own methods:
 * ``Driver._coloring_info`` - the total-derivative coloring declared with
   ``declare_coloring``, passed to ``Problem.get_total_coloring`` and read for the sparsity of the
   constraint Jacobian.
-* ``Driver._problem`` - weak reference to the owning problem.
+* ``Driver._problem`` - weak reference to the owning problem (the progress line reads the
+  declared constraint bounds from its model).
 * ``System._relevance`` (``nonlinear_active``, ``seeds_active``, ``is_relevant``) - restricts a
   model run to the systems the optimization needs, as ``ScipyOptimizeDriver`` does, and tells
   which design variables a constraint depends on when there is no coloring.
