@@ -8,7 +8,7 @@ from lpc_mdo.components.atmosphere import standard_atmosphere
 from lpc_mdo.components.design_deviation import DesignDeviationComp
 from lpc_mdo.components.energy.battery import BatteryComp
 from lpc_mdo.components.energy.mission_energy import MissionEnergyComp
-from lpc_mdo.components.gather import GatherComp
+from lpc_mdo.components.gather_across_conditions import GatherComp
 from lpc_mdo.components.ks import KSComp
 from lpc_mdo.groups.conditions import (
     HoverCondition,
