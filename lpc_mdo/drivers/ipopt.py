@@ -116,6 +116,7 @@ class IpoptDriver(omi.DriverHooks):
         self._reset_caches()
 
     def declare_options(self):
+        """Declare the options listed in the class docstring."""
         self.options.declare("max_iter", default=200, types=int, lower=0,
                              desc="Maximum number of IPOPT iterations.")
         self.options.declare("tol", default=1e-6, types=float, lower=0.0,
