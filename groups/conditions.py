@@ -48,6 +48,7 @@ from lpc_mdo.components.structures.load_transfer import DisplacementTransferComp
 from lpc_mdo.components.structures.mesh_deformation import MeshDeformationComp
 from lpc_mdo.groups.acoustics import RotorNoiseGroup
 from lpc_mdo.groups.beam import BoxBeamGroup
+from lpc_mdo.groups.bem_rotor import BEMRotorGroup
 from lpc_mdo.groups.condition_base import (
     ConditionConstraint,
     ConditionGroup,
@@ -57,8 +58,7 @@ from lpc_mdo.groups.condition_base import (
     linear_trim_ref,
 )
 from lpc_mdo.groups.motor import MotorGroup
-from lpc_mdo.groups.pitt_peters import PittPetersRotorGroup
-from lpc_mdo.groups.rotor import BEMRotorGroup
+from lpc_mdo.groups.pitt_peters_rotor import PittPetersRotorGroup
 from lpc_mdo.groups.vehicle import motor_loadings, motor_parameters
 from lpc_mdo.groups.vlm import VLMGroup, lpc_vlm_surfaces
 from lpc_mdo.vehicle import VehicleSpecError

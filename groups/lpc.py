@@ -14,7 +14,7 @@ from scipy.optimize import brentq
 from lpc_mdo.components.atmosphere import standard_atmosphere
 from lpc_mdo.components.energy.battery import BatteryComp
 from lpc_mdo.components.energy.mission_energy import MissionEnergyComp
-from lpc_mdo.components.gather import GatherComp
+from lpc_mdo.components.gather_across_conditions import GatherComp
 from lpc_mdo.components.ks import KSComp
 from lpc_mdo.groups.condition_base import condition_layout
 from lpc_mdo.groups.condition_kinds import condition_class

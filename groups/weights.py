@@ -8,8 +8,9 @@
 - :func:`calibrate_other_mass` finds W_other so that the initial design's gross mass is the
   vehicle's ``masses.target_gross_mass`` (3723.99 kg, paper Table 8), as the paper did;
   :func:`calibrate_other_mass_in_problem` does the same in any assembled problem.
-- :func:`mass_breakdown` reads the mass breakdown from a problem or a recorded case, and
-  :func:`format_mass_breakdown` prints it.
+- ``mass_breakdown`` and ``format_mass_breakdown`` (reading and printing the breakdown of a
+  problem or a recorded case) are plain post-processing, in :mod:`lpc_mdo.api.weights`; they
+  stay importable from here.
 """
 
 import math
@@ -17,7 +18,7 @@ import math
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.components.weights.gross_weight import BREAKDOWN_LABELS, GrossWeightComp
+from lpc_mdo.components.weights.gross_weight import GrossWeightComp
 from lpc_mdo.components.weights.mass_properties import MassItem, MassPropertiesComp
 from lpc_mdo.components.weights.regressions import (
     BoomRegressionComp,
@@ -388,41 +389,3 @@ def calibrate_other_mass(vehicle=None, *, wing_mass=None, motor_mass=None,
     prob.set_val("motor_mass", motors, units="kg")
     return calibrate_other_mass_in_problem(prob, target_gross_mass=target_gross_mass)
 
-
-def mass_breakdown(source, prefix=""):
-    """
-    Return the gross-mass breakdown (kg) of a problem or a recorded case as an ordered dict.
-
-    Reads the outputs ``{prefix}mass_breakdown``, ``{prefix}structures_mass``,
-    ``{prefix}powertrain_mass`` and ``{prefix}gross_mass`` of a :class:`WeightsGroup` (outputs
-    only, so a driver case needs them in the recorder's ``includes``).
-
-    Parameters
-    ----------
-    source : om.Problem or Case
-        Anything with ``get_val(name, units=...)``.
-    prefix : str
-        Path of the WeightsGroup with a trailing dot, e.g. ``'weights.'``; '' when promoted.
-
-    Returns
-    -------
-    dict
-        wing, fuselage, empennage, booms, battery, motors, power_electronics, payload, systems,
-        other, then the totals structures (eq. 32), powertrain (eq. 33) and gross (eq. 31).
-    """
-    values = np.asarray(source.get_val(f"{prefix}mass_breakdown", units="kg"), float).ravel()
-    out = {label: float(v) for label, v in zip(BREAKDOWN_LABELS, values, strict=True)}
-    for key in ("structures", "powertrain", "gross"):
-        out[key] = float(np.asarray(source.get_val(f"{prefix}{key}_mass", units="kg")).ravel()[0])
-    return out
-
-
-def format_mass_breakdown(breakdown):
-    """Return a text table of a :func:`mass_breakdown` dict: item, kg and % of the gross mass."""
-    gross = breakdown["gross"]
-    lines = [f"{'item':<20}{'mass (kg)':>12}{'share':>9}"]
-    for label, value in breakdown.items():
-        if label == "structures":
-            lines.append("-" * 41)
-        lines.append(f"{label.replace('_', ' '):<20}{value:>12.2f}{100.0 * value / gross:>8.1f}%")
-    return "\n".join(lines)

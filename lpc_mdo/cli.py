@@ -11,7 +11,7 @@ import numpy as np
 def _analyze(args):
     import openmdao.api as om
 
-    from lpc_mdo.groups.weights import format_mass_breakdown, mass_breakdown
+    from lpc_mdo.api.weights import format_mass_breakdown, mass_breakdown
     from lpc_mdo.post.tables import constraint_table
     from lpc_mdo.problems import build_analysis_problem
 

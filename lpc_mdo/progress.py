@@ -37,25 +37,27 @@ class ProgressLine(CaseRecorder):
         self.every = every
         self._start = None
         self._driver = None
+        self._iterations = 0  # driver iterations recorded since startup
 
     def startup(self, recording_requester, comm=None):
         super().startup(recording_requester, comm)
         self._start = time.perf_counter()
         self._driver = recording_requester
+        self._iterations = 0
 
     def record_iteration_driver(self, recording_requester, data, metadata):
-        # CaseRecorder.record_iteration counts the iterations (self._counter) before this.
-        if (self._counter - 1) % self.every:
+        self._iterations += 1
+        if (self._iterations - 1) % self.every:
             return
         driver = recording_requester
         if not metadata["success"]:   # an evaluation that raised AnalysisError
-            print(f"{self.label:>16}  iter {self._counter:5d}  evaluation failed: "
+            print(f"{self.label:>16}  iter {self._iterations:5d}  evaluation failed: "
                   f"{metadata['msg']}", file=self.stream or sys.stdout, flush=True)
             return
         objective = driver.get_objective_values(driver_scaling=False)
         obj = float(np.ravel(next(iter(objective.values())))[0]) if objective else float("nan")
         elapsed = time.perf_counter() - self._start
-        print(f"{self.label:>16}  iter {self._counter:5d}  objective {obj:12.6g}  "
+        print(f"{self.label:>16}  iter {self._iterations:5d}  objective {obj:12.6g}  "
               f"max violation {max_violation(driver):9.3e}  {elapsed:8.1f} s",
               file=self.stream or sys.stdout, flush=True)
 
@@ -84,10 +86,11 @@ class ProgressLine(CaseRecorder):
 
 def max_violation(driver):
     """Largest constraint violation of a driver's current point, in its scaled space."""
+    from lpc_mdo.drivers.openmdao_internals import owning_problem
     from lpc_mdo.trim import driver_scaling
 
     values = driver.get_constraint_values(driver_scaling=False)
-    meta = driver._problem().model.get_constraints()   # bounds as declared (unscaled)
+    meta = owning_problem(driver).model.get_constraints()   # bounds as declared (unscaled)
     worst = 0.0
     for name, value in values.items():
         m = meta.get(name)

@@ -29,7 +29,7 @@ import openmdao.api as om
 
 from lpc_mdo.components.rotor.pitt_peters_inflow import PittPetersInflowComp
 from lpc_mdo.components.rotor.pitt_peters_loads import PittPetersLoadsComp
-from lpc_mdo.groups.rotor import rotor_options
+from lpc_mdo.groups.bem_rotor import rotor_options
 from lpc_mdo.vehicle import reference_vehicle
 
 

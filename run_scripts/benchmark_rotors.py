@@ -24,7 +24,7 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.atmosphere import AtmosphereComp
-from lpc_mdo.groups.rotor import BEMRotorGroup
+from lpc_mdo.groups.bem_rotor import BEMRotorGroup
 from lpc_mdo.vehicle import reference_vehicle
 
 

@@ -13,11 +13,11 @@ import openmdao.api as om
 import pytest
 from openmdao.utils.assert_utils import assert_near_equal
 
+from lpc_mdo.api.acoustics import rotor_noise
 from lpc_mdo.components.acoustics.a_weighting import a_weighting
 from lpc_mdo.components.acoustics.broadband import GillLeeBroadbandComp
 from lpc_mdo.components.acoustics.thickness import BarryMagliozziThicknessComp
 from lpc_mdo.components.acoustics.total import energetic_sum
-from lpc_mdo.groups.acoustics import rotor_noise
 
 RADIUS, RPM, RHO, SOUND = 1.524, 1200.0, 1.213457, 339.885
 NRAD = 25

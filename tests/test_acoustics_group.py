@@ -9,13 +9,10 @@ from openmdao.utils.assert_utils import (
     assert_no_approx_partials,
 )
 
+from lpc_mdo.api.acoustics import rotor_noise
+from lpc_mdo.components.acoustics.a_weighting import a_weighting
 from lpc_mdo.components.acoustics.total import TotalNoiseComp, energetic_sum
-from lpc_mdo.groups.acoustics import (
-    HOVER_NOISE_LIMIT_DBA,
-    RotorNoiseGroup,
-    a_weighting,
-    rotor_noise,
-)
+from lpc_mdo.groups.acoustics import HOVER_NOISE_LIMIT_DBA, RotorNoiseGroup
 
 NRAD = 8
 RBAR = 0.2 + 0.8 * (np.arange(NRAD) + 0.5) / NRAD

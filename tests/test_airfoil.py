@@ -5,11 +5,11 @@ import pytest
 
 from lpc_mdo.components.aero.airfoil import (
     AIRFOIL_NAMES,
-    HermiteAxis,
     TablePolar,
     airfoil_table_path,
     get_polar,
 )
+from lpc_mdo.components.aero.hermite import HermiteAxis
 from lpc_mdo.components.aero.polar import LinearQuadraticPolar, viterna, viterna_coefficients
 
 DEG = np.pi / 180.0
@@ -283,7 +283,8 @@ def test_repeated_conditions_reuse_the_cached_re_mach_contraction():
     # other windows; the complex (complex-step) path never uses the cache. Pickling drops it.
     import pickle
 
-    from lpc_mdo.components.aero.airfoil import _alpha_hermite_weights, tensor_eval, wrap_angle
+    from lpc_mdo.components.aero.airfoil import _alpha_hermite_weights, wrap_angle
+    from lpc_mdo.components.aero.hermite import tensor_eval
 
     polar = TablePolar.from_npz(airfoil_table_path("ls417"))
     rng = np.random.default_rng(3)

@@ -1,4 +1,4 @@
-"""Tests for lpc_mdo.groups.rotor.BEMRotorGroup (assembly, totals, vectorization)."""
+"""Tests for lpc_mdo.groups.bem_rotor.BEMRotorGroup (assembly, totals, vectorization)."""
 
 import logging
 
@@ -7,7 +7,7 @@ import openmdao.api as om
 import pytest
 from openmdao.utils.assert_utils import assert_check_totals, assert_no_approx_partials
 
-from lpc_mdo.groups.rotor import BEMRotorGroup, rotor_options
+from lpc_mdo.groups.bem_rotor import BEMRotorGroup, rotor_options
 from lpc_mdo.vehicle import reference_vehicle
 
 VEHICLE = reference_vehicle()

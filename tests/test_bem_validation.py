@@ -9,7 +9,7 @@ from lpc_mdo.components.atmosphere import AtmosphereComp
 from lpc_mdo.components.geometry.blade import station_fractions
 from lpc_mdo.components.rotor.bem_inflow import BEMInflowComp
 from lpc_mdo.components.rotor.bem_loads import BEMLoadsComp, RotorPerformanceComp
-from lpc_mdo.groups.rotor import BEMRotorGroup
+from lpc_mdo.groups.bem_rotor import BEMRotorGroup
 from lpc_mdo.vehicle import reference_vehicle
 
 # APC Sport 14x13, UIUC Propeller Data Site, as redistributed in LSDOlab/lsdo_rotor

@@ -10,12 +10,11 @@ import openmdao.api as om
 import pytest
 from openmdao.core.driver import Driver
 
-from lpc_mdo import drivers
-from lpc_mdo.drivers import IpoptDriver, make_driver
+from lpc_mdo.drivers import IpoptDriver, factory, make_driver
 
 
 def test_make_driver_without_pyoptsparse(monkeypatch):
-    monkeypatch.setattr(drivers, "pyoptsparse_optimizers", lambda: set())
+    monkeypatch.setattr(factory, "pyoptsparse_optimizers", lambda: set())
     ipopt = make_driver("ipopt", max_iter=50, tol=1e-8, mu_strategy="adaptive")
     assert isinstance(ipopt, IpoptDriver)
     assert ipopt.options["max_iter"] == 50
@@ -42,8 +41,8 @@ def test_make_driver_with_pyoptsparse(monkeypatch):
             self.opt_settings = {}
             created.append(optimizer)
 
-    monkeypatch.setattr(drivers, "pyoptsparse_optimizers", lambda: {"IPOPT", "SNOPT"})
-    monkeypatch.setattr(drivers.om, "pyOptSparseDriver", FakePyOptSparseDriver)
+    monkeypatch.setattr(factory, "pyoptsparse_optimizers", lambda: {"IPOPT", "SNOPT"})
+    monkeypatch.setattr(factory.om, "pyOptSparseDriver", FakePyOptSparseDriver)
     snopt = make_driver("SNOPT", **{"Major iterations limit": 150})
     assert isinstance(snopt, FakePyOptSparseDriver)
     assert snopt.opt_settings == {"Major iterations limit": 150}
@@ -55,7 +54,7 @@ def test_make_driver_with_pyoptsparse(monkeypatch):
 
 def test_pyoptsparse_detection(monkeypatch):
     monkeypatch.setitem(sys.modules, "pyoptsparse", None)
-    assert drivers.pyoptsparse_optimizers() == set()
+    assert factory.pyoptsparse_optimizers() == set()
 
     fake = types.ModuleType("pyoptsparse")
 
@@ -68,4 +67,4 @@ def test_pyoptsparse_detection(monkeypatch):
 
     fake.IPOPT, fake.SNOPT = IPOPT, SNOPT
     monkeypatch.setitem(sys.modules, "pyoptsparse", fake)
-    assert drivers.pyoptsparse_optimizers() == {"IPOPT"}
+    assert factory.pyoptsparse_optimizers() == {"IPOPT"}

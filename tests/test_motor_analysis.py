@@ -1,5 +1,5 @@
 """Tests for the motor analysis: EM torque (eq. 24), losses, torque limit, margins, MotorGroup
-and the motor_analysis wrapper (lpc_mdo.groups.motor)."""
+and the motor_analysis wrapper (lpc_mdo.api.motor)."""
 
 import numpy as np
 import openmdao.api as om
@@ -11,9 +11,10 @@ from openmdao.utils.assert_utils import (
     assert_no_approx_partials,
 )
 
+from lpc_mdo.api.motor import motor_analysis
 from lpc_mdo.components.motor.efficiency import EMTorqueComp, MotorLossComp, MotorMarginComp
 from lpc_mdo.components.motor.torque_limit import TorqueLimitComp
-from lpc_mdo.groups.motor import MotorGroup, motor_analysis
+from lpc_mdo.groups.motor import MotorGroup
 
 pytestmark = pytest.mark.filterwarnings('ignore:.*nonlinear solver that computes gradients')
 

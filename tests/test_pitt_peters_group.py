@@ -6,7 +6,7 @@ import pytest
 from openmdao.utils.assert_utils import assert_check_totals, assert_no_approx_partials
 from openmdao.utils.logger_utils import TestLogger as RecordingLogger
 
-from lpc_mdo.groups.pitt_peters import PittPetersRotorGroup
+from lpc_mdo.groups.pitt_peters_rotor import PittPetersRotorGroup
 from lpc_mdo.vehicle import reference_vehicle
 
 pytestmark = pytest.mark.filterwarnings('ignore::openmdao.utils.om_warnings.DerivativesWarning')

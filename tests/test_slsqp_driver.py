@@ -12,7 +12,7 @@ from openmdao.utils.assert_utils import assert_near_equal
 from openmdao.utils.om_warnings import DriverWarning
 
 from lpc_mdo.drivers import SlsqpDriver, make_driver
-from lpc_mdo.post.tables import driver_cases, last_case
+from lpc_mdo.post.case_data import driver_cases, last_case
 from lpc_mdo.progress import ProgressLine
 
 

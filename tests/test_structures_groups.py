@@ -7,8 +7,9 @@ import openmdao.api as om
 import pytest
 from openmdao.utils.assert_utils import assert_check_totals, assert_near_equal
 
+from lpc_mdo.api.structures import beam, box_beam
 from lpc_mdo.components.structures.wing_box_geometry import WingBoxGeometryComp
-from lpc_mdo.groups.beam import BeamGroup, BoxBeamGroup, beam, box_beam
+from lpc_mdo.groups.beam import BeamGroup, BoxBeamGroup
 
 THICKNESSES = ('top_skin_thickness', 'bottom_skin_thickness', 'front_spar_thickness',
                'rear_spar_thickness')

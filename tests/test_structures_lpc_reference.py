@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 from openmdao.utils.assert_utils import assert_near_equal
 
-from lpc_mdo.groups.beam import box_beam
+from lpc_mdo.api.structures import box_beam
 
 # Inputs of reference/models_structures_motor_vehicle.md §6.9 (FD frame: x forward, z down).
 NODES = np.array([

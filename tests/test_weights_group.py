@@ -3,12 +3,11 @@ import openmdao.api as om
 import pytest
 from openmdao.utils.assert_utils import assert_check_totals, assert_near_equal
 
+from lpc_mdo.api.weights import format_mass_breakdown, mass_breakdown
 from lpc_mdo.groups.weights import (
     WeightsGroup,
     calibrate_other_mass,
     calibrate_other_mass_in_problem,
-    format_mass_breakdown,
-    mass_breakdown,
     motor_group_indices,
     placeholder_calibration_inputs,
     wing_cg_estimate,

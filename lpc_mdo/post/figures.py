@@ -4,13 +4,13 @@ parameter sweeps (paper Figs. 13-21).
 
 The figures are drawn on ``matplotlib.figure.Figure`` objects with the Agg canvas, so they need
 no display and never touch pyplot's global state or the user's chosen backend. Every function
-reads case files only (see :func:`lpc_mdo.post.tables.read_value` for where a variable is looked
+reads case files only (see :func:`lpc_mdo.post.case_data.read_value` for where a variable is looked
 up), writes one PNG and returns its path. Functions that compare designs take ``designs`` as
-accepted by :func:`lpc_mdo.post.tables.normalize_designs`: one case file, a mapping
+accepted by :func:`lpc_mdo.post.case_data.normalize_designs`: one case file, a mapping
 label -> case file, or a sequence of ``(label, case file)`` pairs.
 
 A variable absent from a case file raises
-:class:`~lpc_mdo.post.tables.MissingVariableError` naming it.
+:class:`~lpc_mdo.post.case_data.MissingVariableError` naming it.
 """
 
 from pathlib import Path
@@ -20,9 +20,8 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.patches import Circle
 
-from lpc_mdo.post.tables import (
+from lpc_mdo.post.case_data import (
     MissingVariableError,
-    constraint_rows,
     driver_cases,
     final_case,
     normalize_designs,
@@ -31,6 +30,7 @@ from lpc_mdo.post.tables import (
     read_value,
     recorded_units,
 )
+from lpc_mdo.post.tables import constraint_rows
 
 __all__ = [
     "convergence_history",
@@ -185,7 +185,7 @@ def plot_bars(designs, name, path, labels=None, units=None, ylabel=None, title=N
     """
     Bar chart of a recorded vector, grouped by design (e.g. a mass breakdown, paper Figs. 19-20).
 
-    Reads variable ``name`` from each design (:func:`~lpc_mdo.post.tables.read_value`).
+    Reads variable ``name`` from each design (:func:`~lpc_mdo.post.case_data.read_value`).
 
     Parameters
     ----------
@@ -202,7 +202,7 @@ def plot_bars(designs, name, path, labels=None, units=None, ylabel=None, title=N
     ylabel, title : str or None
         Axis label (default: name and units) and figure title.
     case : None, int or str
-        Restrict the look-up to this case (see :func:`~lpc_mdo.post.tables.final_case`).
+        Restrict the look-up to this case (see :func:`~lpc_mdo.post.case_data.final_case`).
 
     Returns
     -------
@@ -451,14 +451,14 @@ def objective_value(source, case=None):
     """
     The (first) objective of a run's final case, in its declared units.
 
-    Reads ``get_objectives()`` of :func:`~lpc_mdo.post.tables.final_case`.
+    Reads ``get_objectives()`` of :func:`~lpc_mdo.post.case_data.final_case`.
 
     Parameters
     ----------
     source : str, os.PathLike or CaseReader
         Case file or reader.
     case : None, int or str
-        Which case (see :func:`~lpc_mdo.post.tables.final_case`).
+        Which case (see :func:`~lpc_mdo.post.case_data.final_case`).
 
     Returns
     -------
@@ -476,7 +476,7 @@ def sweep_points(sources, x, group=None, x_units=None, group_units=None):
     """
     Read sweep parameters from the runs themselves.
 
-    Reads ``x`` (and ``group``) with :func:`~lpc_mdo.post.tables.read_value` from each case
+    Reads ``x`` (and ``group``) with :func:`~lpc_mdo.post.case_data.read_value` from each case
     file; names such as ``'lower:state_of_charge'`` read a declared bound instead. Runs that
     do not record ``x`` are left out.
 

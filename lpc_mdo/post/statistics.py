@@ -41,14 +41,14 @@ from pathlib import Path
 
 import numpy as np
 
-from lpc_mdo.post.tables import (
-    Table,
+from lpc_mdo.post.case_data import (
     constraint_metadata,
     design_var_metadata,
     normalize_designs,
     objective_metadata,
     open_reader,
 )
+from lpc_mdo.post.tables import Table
 
 __all__ = [
     "RUN_STATS_FILENAME",
@@ -396,7 +396,7 @@ def statistics_table(runs, run_stats="auto"):
     ----------
     runs : str, os.PathLike, CaseReader, Mapping or Sequence
         One case file, or labelled case files as accepted by
-        :func:`~lpc_mdo.post.tables.normalize_designs`.
+        :func:`~lpc_mdo.post.case_data.normalize_designs`.
     run_stats : 'auto' or None
         ``'auto'`` uses each run's ``run_stats.json`` when present; None ignores them.
 

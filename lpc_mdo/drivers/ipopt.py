@@ -1,27 +1,24 @@
-"""Optimizer layer: ``make_driver`` and an IPOPT driver that needs no pyoptsparse.
+"""IPOPT driver that needs no pyoptsparse: :class:`IpoptDriver` on top of the ``cyipopt`` module.
 
 pyoptsparse (the paper's route to IPOPT and SNOPT) is not on PyPI, so a plain ``pip install``
 cannot reach it.  :class:`IpoptDriver` is a small OpenMDAO ``Driver`` on top of the ``cyipopt``
 module (``pip install lpc-mdo[ipopt]`` brings the ``cyipopt-wheels`` build, conda users take
-conda-forge ``cyipopt``).  :func:`make_driver` picks pyoptsparse when it is importable and has the
-requested optimizer, and falls back to :class:`IpoptDriver` or :class:`SlsqpDriver` (OpenMDAO's
-``ScipyOptimizeDriver`` with SLSQP, backing off from failed model evaluations).
+conda-forge ``cyipopt``).
 
 The driver follows OpenMDAO's own ``ScipyOptimizeDriver`` (openmdao 3.45): design variables are
-written through ``self._vectors['design_var']`` in driver scaling, every model evaluation is
-recorded through ``RecordingDebugging``, and total derivatives come from ``_compute_totals``.
+written in driver scaling, every model evaluation is recorded as a driver case, and total
+derivatives come from the driver's total-derivative computation.  Every OpenMDAO internal it
+needs for that is reached through :mod:`lpc_mdo.drivers.openmdao_internals`.
 """
 
-import importlib
 import sys
 
 import numpy as np
 import openmdao.api as om
-from openmdao.core.driver import Driver, RecordingDebugging
-from openmdao.utils.om_warnings import DriverWarning, issue_warning
 
-__all__ = ["IpoptDriver", "IpoptMultipliers", "SlsqpDriver", "make_driver",
-           "pyoptsparse_optimizers"]
+from lpc_mdo.drivers import openmdao_internals as omi
+
+__all__ = ["DEFAULT_IPOPT_SETTINGS", "WARM_START_SETTINGS", "IpoptDriver", "IpoptMultipliers"]
 
 # IPOPT return codes 0 (Solve_Succeeded) and 1 (Solved_To_Acceptable_Level) count as success,
 # as in pyOptSparseDriver.
@@ -47,23 +44,6 @@ WARM_START_SETTINGS = {
 }
 
 
-class _FlagsFailedCases:
-    """
-    Driver mixin: a model evaluation that raised ``om.AnalysisError`` is recorded as a driver
-    case with ``success = 0`` and the error as ``msg`` (OpenMDAO records every evaluation with
-    success = 1), so post-processing can leave its stale outputs out (``case.success``).
-    """
-
-    _failure = None  # the AnalysisError of the evaluation being recorded, when caught
-
-    def _get_recorder_metadata(self, case_name):
-        meta = super()._get_recorder_metadata(case_name)
-        error = self._failure if self._failure is not None else sys.exc_info()[1]
-        if isinstance(error, om.AnalysisError):
-            meta["success"], meta["msg"] = 0, str(error)
-        return meta
-
-
 class IpoptMultipliers(dict):
     """
     Final IPOPT multipliers of a run, keyed by OpenMDAO name, for a later warm start.
@@ -75,7 +55,7 @@ class IpoptMultipliers(dict):
     """
 
 
-class IpoptDriver(_FlagsFailedCases, Driver):
+class IpoptDriver(omi.DriverHooks):
     """
     OpenMDAO driver for IPOPT through the ``cyipopt`` module.
 
@@ -113,22 +93,15 @@ class IpoptDriver(_FlagsFailedCases, Driver):
         its step back); the first place to look when IPOPT reports evaluation errors.
     """
 
+    driver_name = "IpoptDriver"
+
     def __init__(self, **kwargs):
         super().__init__(**kwargs)
-        self.supports._read_only = False
-        self.supports["optimization"] = True
-        self.supports["inequality_constraints"] = True
-        self.supports["equality_constraints"] = True
-        self.supports["two_sided_constraints"] = True
-        self.supports["linear_constraints"] = True
-        self.supports["simultaneous_derivatives"] = True
-        self.supports["total_jac_sparsity"] = True
-        self.supports["gradients"] = True
-        self.supports["multiple_objectives"] = False
-        self.supports["active_set"] = False
-        self.supports["integer_design_vars"] = False
-        self.supports["distributed_design_vars"] = False
-        self.supports._read_only = True
+        omi.set_supports(
+            self, optimization=True, inequality_constraints=True, equality_constraints=True,
+            two_sided_constraints=True, linear_constraints=True, simultaneous_derivatives=True,
+            total_jac_sparsity=True, gradients=True, multiple_objectives=False,
+            active_set=False, integer_design_vars=False, distributed_design_vars=False)
 
         self.opt_settings = {}
         self.analysis_errors = []
@@ -139,9 +112,11 @@ class IpoptDriver(_FlagsFailedCases, Driver):
         self._ipopt_iterations = 0
         self._status_msg = "NOT_RUN"
         self._user_stop = False
+        self._callback_error = None  # sys.exc_info() of a Python error inside a callback
         self._reset_caches()
 
-    def _declare_options(self):
+    def declare_options(self):
+        """Declare the options listed in the class docstring."""
         self.options.declare("max_iter", default=200, types=int, lower=0,
                              desc="Maximum number of IPOPT iterations.")
         self.options.declare("tol", default=1e-6, types=float, lower=0.0,
@@ -155,14 +130,12 @@ class IpoptDriver(_FlagsFailedCases, Driver):
                              desc="Multipliers of a previous run (driver.multipliers) to "
                                   "warm-start IPOPT from the current design point.")
 
-    def _get_name(self):
-        return "IpoptDriver"
-
-    def _setup_driver(self, problem):
-        super()._setup_driver(problem)
-        if len(self._objs) > 1:
+    def check_setup(self):
+        """Reject a problem with more than one objective before any model run."""
+        objectives = omi.objective_meta(self)
+        if len(objectives) > 1:
             raise RuntimeError(f"{self.msginfo}: IPOPT takes one objective, "
-                               f"got {len(self._objs)}: {list(self._objs)}.")
+                               f"got {len(objectives)}: {list(objectives)}.")
 
     def _reset_caches(self):
         self._x_model = None       # x at which the model was last run successfully
@@ -175,13 +148,14 @@ class IpoptDriver(_FlagsFailedCases, Driver):
 
     def _layout(self):
         """Size the design vector and constraint vector; gather scaled bounds."""
-        dv_bounds = self._autoscaler.get_bounds_scaling("design_var")
-        con_bounds = self._autoscaler.get_bounds_scaling("constraint")
+        dv_bounds = omi.scaled_bounds(self, "design_var")
+        con_bounds = omi.scaled_bounds(self, "constraint")
+        designvars, cons = omi.design_var_meta(self), omi.constraint_meta(self)
 
         self._dv_slices = {}
         lower, upper = [], []
         n = 0
-        for name, meta in self._designvars.items():
+        for name, meta in designvars.items():
             size = meta["size"]
             self._dv_slices[name] = slice(n, n + size)
             n += size
@@ -195,14 +169,13 @@ class IpoptDriver(_FlagsFailedCases, Driver):
         lower, upper = np.concatenate(lower).astype(float), np.concatenate(upper).astype(float)
         self._x_lower, self._x_upper = np.minimum(lower, upper), np.maximum(lower, upper)
 
-        self._nl_cons = [c for c, m in self._cons.items() if not m["linear"]]
-        self._lin_cons = [c for c, m in self._cons.items() if m["linear"]]
+        self._nl_cons = [c for c, m in cons.items() if not m["linear"]]
+        self._lin_cons = [c for c, m in cons.items() if m["linear"]]
         self._con_slices = {}
         g_lower, g_upper = [], []
         m = 0
         for name in self._nl_cons + self._lin_cons:
-            meta = self._cons[name]
-            size = meta["size"]
+            size = cons[name]["size"]
             self._con_slices[name] = slice(m, m + size)
             m += size
             b = con_bounds[name]
@@ -214,40 +187,37 @@ class IpoptDriver(_FlagsFailedCases, Driver):
             g_lower.append(lo)
             g_upper.append(up)
         self._m = int(m)
-        self._m_nl = int(sum(self._cons[c]["size"] for c in self._nl_cons))
+        self._m_nl = int(sum(cons[c]["size"] for c in self._nl_cons))
         g_lower = np.concatenate(g_lower).astype(float) if m else np.zeros(0)
         g_upper = np.concatenate(g_upper).astype(float) if m else np.zeros(0)
         self._g_lower, self._g_upper = np.minimum(g_lower, g_upper), np.maximum(g_lower, g_upper)
 
     def _jacobian_structure(self):
         """(rows, cols) of the nonlinear-constraint Jacobian entries IPOPT will be given."""
-        dv_names = list(self._designvars)
+        cons = omi.constraint_meta(self)
         blocks = None
-        coloring = self._coloring_info.coloring
+        coloring = omi.total_coloring(self)
         if coloring is not None:
             blocks = coloring.get_subjac_sparsity()
             if blocks is not None and not all(c in blocks for c in self._nl_cons):
                 blocks = None  # coloring names do not match ours: fall back to relevance
 
         rows, cols = [], []
-        relevance = self._problem().model._relevance
         for con in self._nl_cons:
             r0 = self._con_slices[con].start
-            meta = self._cons[con]
+            size = cons[con]["size"]
             if blocks is not None:
                 for dv, (nzr, nzc, _shape) in blocks[con].items():
                     if dv in self._dv_slices:
                         rows.append(r0 + np.asarray(nzr))
                         cols.append(self._dv_slices[dv].start + np.asarray(nzc))
                 continue
-            with relevance.seeds_active(rev_seeds=(meta["source"],)):
-                for dv in dv_names:
-                    if relevance.is_relevant(self._designvars[dv]["source"]):
-                        sl = self._dv_slices[dv]
-                        rr, cc = np.meshgrid(np.arange(meta["size"]),
-                                             np.arange(sl.start, sl.stop), indexing="ij")
-                        rows.append(r0 + rr.ravel())
-                        cols.append(cc.ravel())
+            for dv in omi.relevant_design_vars(self, con):
+                sl = self._dv_slices[dv]
+                rr, cc = np.meshgrid(np.arange(size), np.arange(sl.start, sl.stop),
+                                     indexing="ij")
+                rows.append(r0 + rr.ravel())
+                cols.append(cc.ravel())
         if not rows:
             return np.zeros(0, dtype=int), np.zeros(0, dtype=int)
         return np.concatenate(rows).astype(int), np.concatenate(cols).astype(int)
@@ -273,40 +243,36 @@ class IpoptDriver(_FlagsFailedCases, Driver):
             ) from err
 
         self.result.reset()
-        problem = self._problem()
-        model = problem.model
+        problem = omi.owning_problem(self)
         self.iter_count = 0
         self._ipopt_iterations = 0
         self._user_stop = False
-        self._exc_info = None
+        self._callback_error = None
         self.analysis_errors = []
-        self._total_jac = None
-        self._total_jac_linear = None
+        omi.reset_total_jacobians(self)
         self._reset_caches()
 
-        self._check_for_missing_objective()
-        self._check_for_invalid_desvar_values()
+        omi.check_ready_to_run(self)
 
         # Initial run: the design point IPOPT starts from, recorded like every evaluation.
-        with RecordingDebugging(self._get_name(), self.iter_count, self):
-            with model._relevance.nonlinear_active("iter"):
-                self._run_solve_nonlinear()
+        with omi.record_evaluation(self):
+            omi.run_model(self)
             self.iter_count += 1
 
         self._layout()
+        dv_names = list(omi.design_var_meta(self))
         dv_vals = self.get_design_var_values()
-        x0 = np.concatenate([np.atleast_1d(dv_vals[n]) for n in self._designvars]).astype(float)
+        x0 = np.concatenate([np.atleast_1d(dv_vals[n]) for n in dv_names]).astype(float)
         self._x_model = x0.copy()
         self._store_funcs()
 
-        problem.get_total_coloring(self._coloring_info, run_model=False)
+        omi.compute_total_coloring(self)
 
         # Linear constraints: Jacobian once, values from it for every x.
         self._lin_jac = np.zeros((0, self._n))
         self._lin_g0 = np.zeros(0)
         if self._lin_cons:
-            self._lin_jac = np.atleast_2d(self._compute_totals(
-                of=self._lin_cons, wrt=list(self._designvars), return_format="array"))
+            self._lin_jac = np.atleast_2d(omi.compute_totals(self, self._lin_cons, dv_names))
             lin_vals = self.get_constraint_values(lintype="linear")
             self._lin_g0 = np.concatenate([np.atleast_1d(lin_vals[c]) for c in self._lin_cons])
         self._x0_lin = x0.copy()
@@ -342,8 +308,9 @@ class IpoptDriver(_FlagsFailedCases, Driver):
 
         x_opt, info = nlp.solve(x0, **kwargs)
 
-        if self._exc_info is not None:
-            self._reraise()
+        if self._callback_error is not None:
+            error, self._callback_error = self._callback_error, None
+            raise error[1].with_traceback(error[2])
 
         # IPOPT relaxes bounds by ~1e-8; leave the model exactly inside them, at the optimum
         # IPOPT returned (the last evaluation may have been elsewhere).
@@ -360,15 +327,22 @@ class IpoptDriver(_FlagsFailedCases, Driver):
         self.fail = status not in _IPOPT_SUCCESS
         return self.fail
 
-    def _update_result(self, result):
+    def update_result(self, result):
+        """
+        Record IPOPT's iteration count and exit status in ``driver.result``.
+
+        Parameters
+        ----------
+        result : DriverResult
+            The result object of the driver.
+        """
         result.iter_count = self._ipopt_iterations
         result.exit_status = self._status_msg
 
     # ------------------------------------------------------------------ evaluations
 
     def _set_x(self, x):
-        self._vectors["design_var"].set_data(x, driver_scaling=True)
-        self._set_design_vars(driver_scaling=True)
+        omi.set_design_vector(self, x)
 
     def _store_funcs(self):
         obj = next(iter(self.get_objective_values().values()))
@@ -383,21 +357,19 @@ class IpoptDriver(_FlagsFailedCases, Driver):
             return True
         if self._x_failed is not None and np.array_equal(x, self._x_failed):
             return False
-        model = self._problem().model
         self._set_x(x)
         ok = True
-        with RecordingDebugging(self._get_name(), self.iter_count, self):
+        with omi.record_evaluation(self):
             self.iter_count += 1
             try:
-                with model._relevance.nonlinear_active("iter"):
-                    self._run_solve_nonlinear()
+                omi.run_model(self)
             except om.AnalysisError as err:
-                model._clear_iprint()
+                omi.clear_solver_print(self)
                 self.analysis_errors.append(str(err))
                 self._failure = err  # recorded as a failed case on leaving the block
                 ok = False
             except KeyboardInterrupt:
-                model._clear_iprint()
+                omi.clear_solver_print(self)
                 self._user_stop = True
                 ok = False
         self._failure = None
@@ -427,9 +399,8 @@ class IpoptDriver(_FlagsFailedCases, Driver):
             return self._jac_cache
         if not self._evaluate(x):
             return None
-        of = list(self._objs) + self._nl_cons
-        jac = np.atleast_2d(self._compute_totals(of=of, wrt=list(self._designvars),
-                                                 return_format="array"))
+        of = list(omi.objective_meta(self)) + self._nl_cons
+        jac = np.atleast_2d(omi.compute_totals(self, of, list(omi.design_var_meta(self))))
         self._x_jac = np.array(x, copy=True)
         self._jac_cache = jac
         return jac
@@ -476,12 +447,12 @@ class _IpoptCallbacks:
 
     def _guard(self, func, x):
         drv = self._driver
-        if drv._exc_info is not None:
+        if drv._callback_error is not None:
             raise self._error()
         try:
             out = func(x)
         except Exception:
-            drv._exc_info = sys.exc_info()
+            drv._callback_error = sys.exc_info()
             raise self._error() from None
         if out is None:  # AnalysisError or Ctrl-C at x: let IPOPT cut its step
             raise self._error()
@@ -521,156 +492,4 @@ class _IpoptCallbacks:
         drv = self._driver
         drv._ipopt_iterations = int(iter_count)
         # Returning False stops IPOPT cleanly (user interrupt or a Python error in a callback).
-        return not (drv._user_stop or drv._exc_info is not None)
-
-
-# ---------------------------------------------------------------------- driver factory
-
-def pyoptsparse_optimizers():
-    """
-    Optimizers that the importable pyoptsparse provides, or an empty set without pyoptsparse.
-
-    Returns
-    -------
-    set of str
-        Optimizer names such as ``'IPOPT'`` or ``'SNOPT'`` that import successfully.
-    """
-    try:
-        pyoptsparse = importlib.import_module("pyoptsparse")
-    except ImportError:
-        return set()
-    found = set()
-    for name in ("IPOPT", "SNOPT", "SLSQP", "ParOpt", "CONMIN", "PSQP", "NLPQLP"):
-        try:
-            getattr(pyoptsparse, name)()
-        except Exception:  # pyoptsparse raises its own Error when a library is missing
-            continue
-        found.add(name)
-    return found
-
-
-class SlsqpDriver(_FlagsFailedCases, om.ScipyOptimizeDriver):
-    """
-    OpenMDAO's ``ScipyOptimizeDriver`` with SLSQP that backs off from points where the model
-    fails.
-
-    SciPy's SLSQP has no notion of a failed evaluation, and ``ScipyOptimizeDriver`` re-raises
-    the first exception of the model, ending the run: an ``om.AnalysisError`` at one line-search
-    point (a trial step that stalls a motor or leaves a rotor without through-flow) would end a
-    full-problem optimization that a shorter step keeps feasible. Here an ``om.AnalysisError``
-    at a trial point returns the last successful point's objective plus ``failure_penalty``
-    (in the driver-scaled space) and that point's constraint values, so the merit function
-    rises and SLSQP's line search cuts the step (by at least 10x each time); an error at the
-    first evaluation, or any other exception, is re-raised as before. The messages are kept in
-    ``analysis_errors``, as :class:`IpoptDriver` does.
-
-    Options
-    -------
-    failure_penalty : float
-        Added to the last successful objective at a failed point (driver-scaled; >= 0).
-    """
-
-    def __init__(self, **kwargs):
-        super().__init__(**kwargs)
-        self.options["optimizer"] = "SLSQP"
-        self.analysis_errors = []
-        self._last_good = None     # (scaled objective, constraint values) of the last good point
-        self._last_failed = False  # whether the model holds a failed trial point
-
-    def _declare_options(self):
-        super()._declare_options()
-        self.options.declare("failure_penalty", default=1.0e6, lower=0.0,
-                             desc="added to the last successful scaled objective at a point "
-                                  "where the model raised om.AnalysisError")
-
-    def run(self):
-        self.analysis_errors = []
-        self._last_good = None
-        self._last_failed = False
-        fail = super().run()
-        if self._last_failed:  # the model holds a failed trial point: evaluate the result
-            super()._objfunc(self._scipy_optimize_result.x)
-            if self._exc_info is not None:
-                self._reraise()
-        return fail
-
-    def _objfunc(self, x_new):
-        value = super()._objfunc(x_new)
-        self._last_failed = False
-        if self._exc_info is None:
-            self._last_good = (value, self._con_cache)
-            return value
-        error = self._exc_info[1]
-        if not isinstance(error, om.AnalysisError) or self._last_good is None:
-            return value  # re-raised by the constraint callback, as in ScipyOptimizeDriver
-        self._exc_info = None
-        self._last_failed = True
-        self.analysis_errors.append(str(error))
-        issue_warning(f"model evaluation {self.iter_count} failed ({error}); SLSQP's line "
-                      "search is given the last good point's values plus failure_penalty",
-                      prefix=self.msginfo, category=DriverWarning)
-        value, self._con_cache = self._last_good
-        return value + self.options["failure_penalty"]
-
-
-_KNOWN = ("IPOPT", "SNOPT", "SLSQP")
-
-
-def make_driver(optimizer="IPOPT", **settings):
-    """
-    Return an OpenMDAO driver for ``optimizer``, preferring pyoptsparse when it has it.
-
-    Parameters
-    ----------
-    optimizer : str
-        ``'IPOPT'``, ``'SNOPT'`` or ``'SLSQP'`` (case-insensitive).
-    **settings
-        Driver options (e.g. ``max_iter``/``maxiter``, ``tol``, ``print_level``) are set as
-        options where the chosen driver has an option of that name; everything else goes into
-        ``driver.opt_settings`` (IPOPT/SNOPT native options).
-
-    Returns
-    -------
-    Driver
-        ``om.pyOptSparseDriver`` when pyoptsparse is importable and provides the optimizer;
-        otherwise :class:`IpoptDriver` for IPOPT and :class:`SlsqpDriver` (SciPy's SLSQP) for
-        SLSQP.
-
-    Raises
-    ------
-    ValueError
-        For an unknown optimizer name.
-    RuntimeError
-        For SNOPT without a pyoptsparse that has it, saying what to install.
-    """
-    if not isinstance(optimizer, str) or optimizer.upper() not in _KNOWN:
-        raise ValueError(f"optimizer = {optimizer!r} is not supported; choose one of {_KNOWN}.")
-    name = optimizer.upper()
-    available = pyoptsparse_optimizers()
-
-    if name in available:
-        driver = om.pyOptSparseDriver(optimizer=name)
-    elif name == "IPOPT":
-        driver = IpoptDriver()
-    elif name == "SLSQP":
-        driver = SlsqpDriver()
-    else:
-        raise RuntimeError(
-            "SNOPT is reached only through pyoptsparse, which is not importable here"
-            + (" (it is, but was built without SNOPT)" if available else "")
-            + ". SNOPT is licensed software: build pyoptsparse with your SNOPT source "
-            "(OpenMDAO's build_pyoptsparse, or conda-forge pyoptsparse plus SNOPT), or use "
-            "make_driver('IPOPT'), which needs only pip install 'lpc-mdo[ipopt]'.")
-
-    aliases = {"max_iter": "maxiter", "maxiter": "max_iter", "print_level": "disp"}
-    for key, value in settings.items():
-        if key in driver.options:
-            driver.options[key] = value
-        elif isinstance(driver, om.ScipyOptimizeDriver) and aliases.get(key) in driver.options:
-            target = aliases[key]
-            driver.options[target] = bool(value) if target == "disp" else value
-        elif isinstance(driver, IpoptDriver) and aliases.get(key) in driver.options:
-            driver.options[aliases[key]] = value
-        else:
-            driver.opt_settings[key] = value
-    return driver
+        return not (drv._user_stop or drv._callback_error is not None)

@@ -3,7 +3,7 @@
 
 from lpc_mdo.components.rotor.pitt_peters_inflow import PittPetersInflowComp
 from lpc_mdo.components.rotor.pitt_peters_loads import LOSS_PLACEMENTS, PittPetersLoadsComp
-from lpc_mdo.groups.rotor import RotorGroupBase
+from lpc_mdo.groups.bem_rotor import RotorGroupBase
 
 
 class PittPetersRotorGroup(RotorGroupBase):
@@ -11,8 +11,8 @@ class PittPetersRotorGroup(RotorGroupBase):
     Several rotors at several operating points by steady Pitt–Peters inflow (edgewise flight).
 
     Paper eq. 14-15, reference/models_aero_rotor_acoustics.md §9. The same interface as
-    :class:`~lpc_mdo.groups.rotor.BEMRotorGroup`, so a condition group can use either. Subsystems
-    (all variables promoted):
+    :class:`~lpc_mdo.groups.bem_rotor.BEMRotorGroup`, so a condition group can use either.
+    Subsystems (all variables promoted):
 
     - ``blade``: BladeGeometryGroup (stations, chord and twist B-splines; reference §7, §8.1);
     - ``velocity``: RotorVelocityComp (body velocity to each disk's axial and in-plane

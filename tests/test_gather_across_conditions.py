@@ -3,7 +3,7 @@ import openmdao.api as om
 import pytest
 from openmdao.utils.assert_utils import assert_check_partials, assert_near_equal
 
-from lpc_mdo.components.gather import GatherComp
+from lpc_mdo.components.gather_across_conditions import GatherComp
 
 
 def test_gather_with_gap_filled():
