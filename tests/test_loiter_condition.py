@@ -123,5 +123,5 @@ def test_loiter_appears_in_analyze_and_the_report(loiter_file, tmp_path, capsys)
     assert "loiter.linear_acceleration" in (out / "constraints.md").read_text()
     index = write_report(out, tmp_path / "report",
                          ReportSpec(vehicle=load_vehicle(loiter_file)))
-    trim_tables = list(index.parent.glob("trim_residuals_*.md"))
+    trim_tables = list(index.parent.rglob("trim_residuals_*.md"))
     assert trim_tables and "loiter" in trim_tables[0].read_text()

@@ -45,10 +45,12 @@ def test_swept_parameters_reach_the_model():
     import openmdao.api as om
 
     from lpc_mdo.groups.lpc import LPCGroup
+    from lpc_mdo.problems import declare_problem
 
     base = reference_vehicle()
     vehicle = sweep_vehicle(sweep_vehicle(base, "energy_density", 300.0), "final_soc", 0.3)
     prob = om.Problem(LPCGroup(vehicle=vehicle, conditions=["cruise"]), reports=False)
+    declare_problem(prob.model, vehicle)
     prob.setup()
     prob.run_model()
     mass = prob.get_val("battery_mass", units="kg")[0]
