@@ -1,5 +1,7 @@
 """
-Tabulated airfoil polars: smooth (C1) interpolation over alpha, Reynolds and Mach, Viterna to
+Tabulated airfoil polars over the whole circle of angles of attack.
+
+Smooth (C1) interpolation over alpha, Reynolds and Mach, Viterna to
 +-90 deg and reverse flow to +-180 deg (reference/models_aero_rotor_acoustics.md §6.2–6.4).
 
 :func:`get_polar` turns an airfoil name ('naca0012', 'naca0015', 'ls413', 'ls417'), a user table
@@ -73,9 +75,11 @@ _DEG = np.pi / 180.0
 
 class HermiteAxis:
     """
-    A 1-D grid with C1 cubic Hermite interpolation whose node slopes are 3-point finite
-    differences (the slope of the parabola through each node and its neighbours; one-sided
-    parabolas at the ends), so the interpolant is linear in the node values.
+    A 1-D grid with C1 cubic Hermite interpolation, linear in the node values.
+
+    The node slopes are 3-point finite differences (the slope of the parabola through each node
+    and its neighbours; one-sided parabolas at the ends), so the interpolant is linear in the
+    node values.
 
     The interpolant on interval k is sum_j W_kj(t) f_(s_k + j), j < width, with W_kj cubic in the
     local coordinate t; :meth:`weights` returns the window start s_k and the weights and their
@@ -517,7 +521,7 @@ class TablePolar(Polar):
     # ------------------------------------------------------------------------------ evaluation
 
     def _fixed_conditions(self, reynolds, mach):
-        """The cached :class:`_FixedConditions` of these query conditions (made if new)."""
+        """Return the cached :class:`_FixedConditions` of these query conditions (made if new)."""
         caches = self.__dict__.setdefault("_condition_caches", [])
         for k, cache in enumerate(caches):
             if cache.matches(reynolds, mach):
@@ -624,7 +628,7 @@ class TablePolar(Polar):
     def from_alpha_cl_cd(cls, alpha_deg, cl, cd, reynolds=1e6, mach=0.0, name="user table",
                          **kwargs):
         """
-        A single-(Re, M) polar from a table of alpha [deg], cl, cd (any order; sorted here).
+        Build a single-(Re, M) polar from a table of alpha [deg], cl, cd (any order; sorted).
 
         Reynolds and Mach derivatives are zero (the table holds for every Re and M).
         """
@@ -642,9 +646,11 @@ class TablePolar(Polar):
     @classmethod
     def from_text(cls, path, **kwargs):
         """
-        Read a polar text file: every line with at least three numbers gives alpha [deg], cl, cd
-        (its first three columns); other lines (headers, comments) are skipped, so XFOIL polar
-        files (alpha CL CD CDp CM ...) load as they are.
+        Read a polar from a text file of alpha [deg], cl, cd rows.
+
+        Every line with at least three numbers gives alpha [deg], cl, cd (its first three
+        columns); other lines (headers, comments) are skipped, so XFOIL polar files
+        (alpha CL CD CDp CM ...) load as they are.
         """
         rows = []
         with open(path, encoding="utf-8", errors="replace") as fh:
@@ -684,7 +690,7 @@ def _named_polar(key):
 
 def get_polar(airfoil):
     """
-    A :class:`~lpc_mdo.components.aero.polar.Polar` from an airfoil name, a table or a Polar.
+    Return a :class:`~lpc_mdo.components.aero.polar.Polar` from a name, a table or a Polar.
 
     Parameters
     ----------
