@@ -35,7 +35,7 @@ MOTOR_LOADING_UNITS = {"electric_loading": "A/m", "magnetic_loading": "T"}
 
 
 def motor_parameters(vehicle):
-    """The PMSM's fixed parameters from the vehicle file's [motor] table."""
+    """Return the PMSM's fixed parameters from the vehicle file's [motor] table."""
     m = vehicle.motor
     return MotorParameters(pole_pairs=m.pole_pairs, phases=m.num_phases, num_slots=m.num_slots,
                            rated_current=m.rated_current, voltage_limit=m.voltage_limit,
@@ -43,8 +43,11 @@ def motor_parameters(vehicle):
 
 
 def motor_loadings(vehicle):
-    """The electric and magnetic loadings (A/m, T) of the vehicle file's [motor] table, as
-    keyword arguments of :class:`~lpc_mdo.groups.motor.MotorGroup`."""
+    """
+    Return the electric and magnetic loadings (A/m, T) of the vehicle file's [motor] table.
+
+    They are keyword arguments of :class:`~lpc_mdo.groups.motor.MotorGroup`.
+    """
     m = vehicle.motor
     return {"electric_loading": m.electric_loading, "magnetic_loading": m.magnetic_loading}
 

@@ -49,8 +49,10 @@ WARM_START_SETTINGS = {
 
 class _FlagsFailedCases:
     """
-    Driver mixin: a model evaluation that raised ``om.AnalysisError`` is recorded as a driver
-    case with ``success = 0`` and the error as ``msg`` (OpenMDAO records every evaluation with
+    Driver mixin that records failed model evaluations as failed driver cases.
+
+    A model evaluation that raised ``om.AnalysisError`` is recorded as a driver case with
+    ``success = 0`` and the error as ``msg`` (OpenMDAO records every evaluation with
     success = 1), so post-processing can leave its stale outputs out (``case.success``).
     """
 
@@ -551,8 +553,7 @@ def pyoptsparse_optimizers():
 
 class SlsqpDriver(_FlagsFailedCases, om.ScipyOptimizeDriver):
     """
-    OpenMDAO's ``ScipyOptimizeDriver`` with SLSQP that backs off from points where the model
-    fails.
+    OpenMDAO's ``ScipyOptimizeDriver`` with SLSQP that backs off where the model fails.
 
     SciPy's SLSQP has no notion of a failed evaluation, and ``ScipyOptimizeDriver`` re-raises
     the first exception of the model, ending the run: an ``om.AnalysisError`` at one line-search
