@@ -15,8 +15,11 @@ THICKNESSES = ('top_skin_thickness', 'bottom_skin_thickness', 'front_spar_thickn
 
 
 def _wing_problem(mode='auto'):
-    """Reference half wing: geometry -> load transfer (lift strips, 2 booms, own weight at +3 g)
-    -> box beam with KS aggregates."""
+    """
+    Return the run reference half wing: geometry, load transfer and box beam with KS aggregates.
+
+    The loads are lift strips, 2 booms and the wing's own weight at +3 g.
+    """
     prob = om.Problem(reports=False)
     prob.model.add_subsystem('geometry', WingBoxGeometryComp(), promotes=['*'])
     prob.model.add_subsystem('wing_box', BoxBeamGroup(num_nodes=9, num_aero_points=12,
