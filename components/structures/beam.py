@@ -732,7 +732,7 @@ class BeamForcesComp(_FrameMixin, om.ExplicitComponent):
 
     @staticmethod
     def _outputs_from(k_loc, lam, u_e):
-        """Return the 30 per-element quantities (ne, 30[, k]) from K, λ and u_e (ne, 12[, k])."""
+        """Return the 30 per-element quantities (ne, 30[, k]) from local K, λ, u_e (ne, 12[, k])."""
         f_loc = np.einsum('eij,ej...->ei...', k_loc, to_local(lam, u_e))
         f_glob = to_global(lam, f_loc)
         ends = f_loc.reshape(f_loc.shape[0], 2, 2, 3, *f_loc.shape[2:])  # (e, end, F/M, xyz)
