@@ -40,9 +40,11 @@ ATMOSPHERE_CONSTANTS = {
 
 def standard_atmosphere(altitude, constants="icao"):
     """
-    Troposphere states at ``altitude`` (m): temperature (K), pressure (Pa), density (kg/m**3),
-    speed of sound (m/s) and dynamic viscosity (Pa s), with a constant set of
-    :data:`ATMOSPHERE_CONSTANTS`. Complex-step safe; no range check (AtmosphereComp checks).
+    Return the troposphere states at ``altitude`` (m).
+
+    The states are temperature (K), pressure (Pa), density (kg/m**3), speed of sound (m/s) and
+    dynamic viscosity (Pa s), with a constant set of :data:`ATMOSPHERE_CONSTANTS`. Complex-step
+    safe; no range check (AtmosphereComp checks).
     """
     c = ATMOSPHERE_CONSTANTS[constants]
     temperature = c['T0'] - c['L'] * altitude

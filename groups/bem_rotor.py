@@ -40,10 +40,12 @@ def rotor_options(rotors):
 
 class RotorGroupBase(om.Group):
     """
-    What every rotor assembly shares: the rotor options (from vehicle rotors or given), blade
-    geometry, body-frame velocity, performance, hub loads and the input defaults. Subclasses
-    add their inflow and loads components in :meth:`add_rotor_model` and may declare more
-    options in :meth:`declare_model_options`.
+    Base of the rotor assemblies: the parts every rotor model shares.
+
+    The shared parts are the rotor options (from vehicle rotors or given), blade geometry,
+    body-frame velocity, performance, hub loads and the input defaults. Subclasses add their
+    inflow and loads components in :meth:`add_rotor_model` and may declare more options in
+    :meth:`declare_model_options`.
     """
 
     num_azimuth_option = False  # whether the subclass resolves azimuthal stations

@@ -35,7 +35,7 @@ MOTOR_LOADING_UNITS = {"electric_loading": "A/m", "magnetic_loading": "T"}
 
 
 def motor_parameters(vehicle):
-    """The PMSM's fixed parameters from the vehicle file's [motor] table."""
+    """Return the PMSM's fixed parameters from the vehicle file's [motor] table."""
     m = vehicle.motor
     return MotorParameters(pole_pairs=m.pole_pairs, phases=m.num_phases, num_slots=m.num_slots,
                            rated_current=m.rated_current, voltage_limit=m.voltage_limit,
@@ -43,8 +43,11 @@ def motor_parameters(vehicle):
 
 
 def motor_loadings(vehicle):
-    """The electric and magnetic loadings (A/m, T) of the vehicle file's [motor] table, as
-    keyword arguments of :class:`~lpc_mdo.groups.motor.MotorGroup`."""
+    """
+    Return the electric and magnetic loadings (A/m, T) of the vehicle file's [motor] table.
+
+    They are keyword arguments of :class:`~lpc_mdo.groups.motor.MotorGroup`.
+    """
     m = vehicle.motor
     return {"electric_loading": m.electric_loading, "magnetic_loading": m.magnetic_loading}
 
@@ -186,27 +189,35 @@ class VehicleGroup(om.Group):
 @functools.lru_cache(maxsize=8)
 def calibrated_other_mass(vehicle):
     """
-    W_other and its cg such that the vehicle's initial design weighs
-    ``masses.target_gross_mass`` (and, with ``masses.other_cg_rule = 'hover_balance'``, has its
-    cg above the mean lift-hub x).
+    Return W_other and its cg such that the vehicle's initial design has its target gross mass.
+
+    This is lpc-mdo's one W_other calibration: :class:`VehicleGroup` (so the full model) uses
+    it, and :func:`lpc_mdo.groups.weights.calibrate_other_mass` (``lpc_mdo.api``) returns its
+    mass. The target is ``masses.target_gross_mass``; with ``masses.other_cg_rule =
+    'hover_balance'`` the cg of W_other also puts the vehicle's cg above the mean lift-hub x.
 
     The paper calibrates W_other at the initial design because the NASA reference does not
     itemise every weight (reference page §4.1). Gross mass and cg are affine in W_other and its
-    position, so one run of the vehicle group with W_other = 0 gives both exactly.
+    position, so one run of the vehicle group with W_other = 0 gives both exactly. Every other
+    item is held at its initial-design value as the model computes it: the wing mass from the
+    wing-box beam at the initial thicknesses, the motor masses from the motor sizing (paper
+    eq. 23), the fuselage, boom and empennage masses from the M4 regressions, and the fixed
+    masses of the vehicle file.
 
     Parameters
     ----------
     vehicle : Vehicle
+        The vehicle definition (hashable; results are cached per vehicle).
 
     Returns
     -------
-    tuple of (float, ndarray)
-        W_other in kg and its cg (3,) in m.
+    tuple of (float, tuple of 3 float)
+        W_other in kg and its cg in m (body frame).
 
     Raises
     ------
     ValueError
-        When the other masses already exceed the target (W_other would be negative).
+        When the other items already weigh the target or more (W_other would be <= 0).
     """
     prob = om.Problem(reports=False, comm=serial_comm())
     prob.model.add_subsystem("vehicle", VehicleGroup(vehicle=vehicle, other_mass=0.0,
@@ -218,9 +229,9 @@ def calibrated_other_mass(vehicle):
     bare_mass = float(prob.get_val("gross_mass", units="kg")[0])
     other = masses.target_gross_mass - bare_mass
     if other <= 0.0:
-        raise ValueError(f"calibrated W_other = {other:.2f} kg <= 0: the vehicle's other masses "
-                         f"exceed masses.target_gross_mass = {masses.target_gross_mass}"
-                         " kg at the initial design.")
+        raise ValueError(f"masses.target_gross_mass = {masses.target_gross_mass} kg; the other "
+                         f"items of the initial design weigh {bare_mass:.2f} kg, so W_other "
+                         f"would be {other:.2f} kg; allowed: a target above {bare_mass:.2f} kg.")
     cg = np.array(masses.other_cg, dtype=float)
     if masses.other_cg_rule == "hover_balance":
         target_x = np.mean([r.hub_position[0] for r in vehicle.lift_rotors])

@@ -20,7 +20,8 @@ __all__ = ["VLMGroup", "VLMSurface", "lpc_vlm_surfaces"]
 
 
 def lpc_vlm_surfaces(wing_span_panels=26, tail_span_panels=8, chord_panels=1):
-    """The LPC lattice of the public code: wing 26 x 1 and all-moving h-tail 8 x 1 panels.
+    """
+    Return the LPC lattice of the public code: wing 26 x 1 and all-moving h-tail 8 x 1 panels.
 
     reference/models_aero_rotor_acoustics.md §2 (VLM meshes). Returns a tuple of
     :class:`VLMSurface` named ``wing`` and ``horizontal_tail`` (deflectable).

@@ -5,12 +5,11 @@
   inertia tensor about the cg with the parallel-axis theorem) from a vehicle definition. The
   wing mass (wing-box beam) and the motor masses (paper eq. 23) are inputs, connected by the
   assembly.
-- :func:`calibrate_other_mass` finds W_other so that the initial design's gross mass is the
-  vehicle's ``masses.target_gross_mass`` (3723.99 kg, paper Table 8), as the paper did;
-  :func:`calibrate_other_mass_in_problem` does the same in any assembled problem.
+- :func:`calibrate_other_mass` returns the W_other that the vehicle model uses: the one that
+  makes the initial design's gross mass the vehicle's ``masses.target_gross_mass``
+  (3723.99 kg, paper Table 8), as the paper did.
 - ``mass_breakdown`` and ``format_mass_breakdown`` (reading and printing the breakdown of a
-  problem or a recorded case) are plain post-processing, in :mod:`lpc_mdo.api.weights`; they
-  stay importable from here.
+  problem or a recorded case) are plain post-processing, in :mod:`lpc_mdo.api.weights`.
 """
 
 import math
@@ -27,7 +26,6 @@ from lpc_mdo.components.weights.regressions import (
     WingRegressionComp,
     m4_coefficients,
 )
-from lpc_mdo.mpi import serial_comm
 
 #: Kinds of bodies of the vehicle's mass properties (inputs ``{name}_mass``, ``{name}_cg`` and,
 #: for parts with an own inertia, ``{name}_inertia``). ``motor`` has one row per motor.
@@ -86,7 +84,10 @@ def wing_cg_estimate(vehicle=None):
 
 def placeholder_calibration_inputs(vehicle=None):
     """
-    Return the wing and motor masses used to calibrate W_other until their models are connected.
+    Return the default wing and motor masses of a stand-alone :class:`WeightsGroup`.
+
+    The vehicle model connects the wing-box beam and the motor sizing instead; W_other is
+    calibrated with those (:func:`calibrate_other_mass`), not with these defaults.
 
     - ``wing_mass`` (kg): the M4 wing regression (ref §5.2, public-code alternative to the beam)
       at the vehicle's initial planform, battery mass and cruise speed; 283.3605 kg for the
@@ -96,8 +97,6 @@ def placeholder_calibration_inputs(vehicle=None):
       variables and the vehicle's motor constants; 10.681 kg per lift motor (L = 0.10 m) and
       36.050 kg for the pusher motor (L = 0.15 m) for the reference vehicle.
 
-    When the beam and motor models land, calibrate with their initial-design outputs instead
-    (:func:`calibrate_other_mass_in_problem` on the assembled model does that).
     """
     vehicle = _vehicle(vehicle)
     coeffs = m4_coefficients()["wing"]["mass"]
@@ -287,105 +286,35 @@ class WeightsGroup(om.Group):
 # Calibration of W_other and the mass breakdown
 
 
-def calibrate_other_mass_in_problem(prob, *, target_gross_mass=None, gross_mass="gross_mass",
-                                    other_mass="other_mass"):
+def calibrate_other_mass(vehicle=None):
     """
-    Set W_other in a set-up problem so that its gross mass equals the target; return W_other.
+    Return W_other (kg) such that the vehicle's initial design has its target gross mass.
 
-    The gross mass is affine in W_other with unit slope (paper eq. 31), so one model run gives
-    W_other = W_other,0 + (target - W0), then a second run makes every output consistent. Set
-    the initial design (and the wing and motor models' initial inputs) before calling.
-
-    Parameters
-    ----------
-    prob : om.Problem
-        A set-up problem containing a :class:`WeightsGroup` (alone or in the full model).
-    target_gross_mass : float or None
-        Target W0 in kg; None = the reference vehicle's ``masses.target_gross_mass``
-        (3723.99 kg, paper Table 8).
-    gross_mass, other_mass : str
-        Promoted names of the gross-mass output and the other-mass input, e.g.
-        ``'weights.gross_mass'``.
-
-    Returns
-    -------
-    float
-        The calibrated W_other in kg (also set in ``prob``).
-
-    Raises
-    ------
-    ValueError
-        If the calibrated W_other would be negative (the other masses already exceed the target)
-        or the target is not > 0.
-    """
-    if target_gross_mass is None:
-        target_gross_mass = _vehicle(None).masses.target_gross_mass
-    if not (np.isfinite(target_gross_mass) and target_gross_mass > 0.0):
-        raise ValueError(f"target_gross_mass = {target_gross_mass!r} kg is outside the allowed "
-                         "range (0, inf).")
-    prob.run_model()
-    current = float(prob.get_val(other_mass, units="kg")[0])
-    gross = float(prob.get_val(gross_mass, units="kg")[0])
-    calibrated = current + target_gross_mass - gross
-    if calibrated < 0.0:
-        raise ValueError(f"Calibrated other_mass = {calibrated:.2f} kg is negative: the other "
-                         f"items already weigh {gross - current:.2f} kg, more than the target "
-                         f"gross mass {target_gross_mass} kg.")
-    prob.set_val(other_mass, calibrated, units="kg")
-    prob.run_model()
-    return calibrated
-
-
-def calibrate_other_mass(vehicle=None, *, wing_mass=None, motor_mass=None,
-                         target_gross_mass=None, **options):
-    """
-    Return W_other such that the vehicle's initial design has the target gross mass.
-
-    The paper chose W_other "so that the initial gross weight computed by our computational
-    model matches closely with the NASA reference" (Sec. IV; ref §4.1, §9.3). This builds a
-    :class:`WeightsGroup` of the vehicle at its initial design, with the given wing and motor
-    masses, and solves eq. 31 for W_other. Re-run it whenever the wing or motor model (or any
-    other mass model) changes.
+    This is the W_other the model uses: :class:`~lpc_mdo.groups.vehicle.VehicleGroup` (and so
+    the full model) calibrates with the same function,
+    :func:`lpc_mdo.groups.vehicle.calibrated_other_mass`, which evaluates the vehicle at its
+    initial design with the wing mass from the wing-box beam and the motor masses from the motor
+    sizing (paper eq. 23). The paper chose W_other "so that the initial gross weight computed by
+    our computational model matches closely with the NASA reference" (Sec. IV).
 
     Parameters
     ----------
     vehicle : lpc_mdo.vehicle.Vehicle or None
-        None = the reference vehicle.
-    wing_mass : float or None
-        Initial wing mass of both halves, kg (the beam at the initial thicknesses). None = the
-        placeholder of :func:`placeholder_calibration_inputs` (M4 wing regression).
-    motor_mass : array_like or None
-        Initial motor masses, kg: 9 values (per motor, :func:`motor_group_indices` order) or 5
-        (per group: lift pairs 0..3, pusher). None = the eq. 23 placeholder.
-    target_gross_mass : float or None
-        Target W0, kg; None = ``vehicle.masses.target_gross_mass`` (3723.99 kg).
-    **options
-        Further :class:`WeightsGroup` options (e.g. ``regression_mass_factor``); ``wing_model``
-        is fixed to ``'input'``.
+        None = the reference vehicle. The target is its ``masses.target_gross_mass``
+        (3723.99 kg for the reference vehicle, paper Table 8).
 
     Returns
     -------
     float
         Calibrated W_other, kg.
-    """
-    vehicle = _vehicle(vehicle)
-    placeholder = placeholder_calibration_inputs(vehicle)
-    wing = placeholder["wing_mass"] if wing_mass is None else wing_mass
-    motors = placeholder["motor_mass"] if motor_mass is None else np.asarray(motor_mass, float)
-    if motors.shape == (5,):
-        motors = motors[motor_group_indices(vehicle)]
-    if motors.shape != (_NUM_MOTORS,):
-        raise ValueError(f"motor_mass has shape {motors.shape}; allowed shapes are (9,) per "
-                         "motor and (5,) per rotor group.")
-    if target_gross_mass is None:
-        target_gross_mass = vehicle.masses.target_gross_mass
-    options.pop("wing_model", None)
 
-    prob = om.Problem(reports=False, comm=serial_comm())
-    prob.model.add_subsystem("weights", WeightsGroup(vehicle=vehicle, **options),
-                             promotes=["*"])
-    prob.setup()
-    prob.set_val("wing_mass", wing, units="kg")
-    prob.set_val("motor_mass", motors, units="kg")
-    return calibrate_other_mass_in_problem(prob, target_gross_mass=target_gross_mass)
+    Raises
+    ------
+    ValueError
+        When the vehicle's other items already weigh more than the target (W_other <= 0).
+    """
+    # Imported here: lpc_mdo.groups.vehicle builds its mass model from this module.
+    from lpc_mdo.groups.vehicle import calibrated_other_mass
+
+    return calibrated_other_mass(_vehicle(vehicle))[0]
 

@@ -71,6 +71,7 @@ WRT = ['radius', 'rpm', 'thrust', 'chord', 'thrust_per_span', 'drag_per_span', '
 
 
 def main(repeats=20):
+    """Time ``repeats`` evaluations and linearizations, print the medians and return them (s)."""
     prob = build_problem()
     prob.run_model()
     prob.compute_totals(of=['total_spl_a'], wrt=WRT)        # warm-up

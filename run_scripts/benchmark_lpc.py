@@ -32,6 +32,7 @@ PAPER_DERIVATIVE_S = 24.84
 
 
 def build():
+    """Return the set-up full LPC model with a driver, so that totals use the driver scaling."""
     prob = om.Problem(reports=False)
     prob.model = LPCGroup()
     prob.driver = om.ScipyOptimizeDriver()  # only so compute_totals uses the driver's scaling
@@ -41,6 +42,7 @@ def build():
 
 
 def main(argv=None):
+    """Time the set-up, evaluation and total derivatives of the full model; print the table."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeats", type=int, default=5, help="timed repetitions (median)")
     parser.add_argument("--profile", action="store_true", help="profile one run + totals")

@@ -78,6 +78,7 @@ def _median_time(fn, repeats):
 
 
 def main(argv=None):
+    """Time the cold and warm evaluations, the linearization and the totals; return the times."""
     parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     parser.add_argument('--repeats', type=int, default=15, help='timed runs per measurement')
     parser.add_argument('--nodes', type=int, default=1, help='operating points per rotor')

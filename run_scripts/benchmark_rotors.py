@@ -88,6 +88,7 @@ def benchmark_bem(repeats, num_nodes):
 
 
 def main(argv=None):
+    """Run the BEM benchmark, then the Pitt–Peters benchmark, with the same settings."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument('--repeats', type=int, default=30, help='timed repetitions (>= 1)')
     parser.add_argument('--num-nodes', type=int, default=1, help='operating points (>= 1)')

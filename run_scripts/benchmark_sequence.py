@@ -29,6 +29,7 @@ PAPER_MINUTES = {"subproblem_1": 30.0, "subproblem_2": 3.0, "subproblem_3": 3.0,
 
 
 def main():
+    """Run the warm-start sequence, print the per-stage table and write it to Markdown."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--output-dir", default="sequence_out")
     parser.add_argument("--no-static-margin", action="store_true")

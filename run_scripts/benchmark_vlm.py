@@ -56,6 +56,7 @@ def build_problem(num_nodes=1):
 
 
 def median_ms(func, repeats):
+    """Return the median wall time of ``repeats`` calls of ``func``, in milliseconds."""
     times = []
     for _ in range(repeats):
         start = time.perf_counter()
@@ -65,6 +66,7 @@ def median_ms(func, repeats):
 
 
 def main(argv=None):
+    """Time the VLM set-up, evaluation, linearization and totals; print them, return the problem."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeats", type=int, default=30, help="timed repetitions (>= 1)")
     parser.add_argument("--num-nodes", type=int, default=1, help="flight conditions (>= 1)")

@@ -96,6 +96,7 @@ def naca4_symmetric(t, n=81):
 
 
 def load_coordinates(name, coordinates_dir):
+    """Return the Selig-order coordinates of airfoil ``name`` (read from a file or generated)."""
     spec = AIRFOILS[name]
     if spec["file"] is None:
         return naca4_symmetric(spec["t"])
@@ -136,7 +137,7 @@ def polar_tables(coords, symmetric):
 # ------------------------------------------------------------------------------ pressure (XFOIL)
 
 def _xfoil_alphas():
-    """The two sweeps (0 deg up, -0.5 deg down), in XFOIL_SUBSTEP steps."""
+    """Return the two sweeps (0 deg up, -0.5 deg down), in XFOIL_SUBSTEP steps."""
     up = np.arange(0.0, CP_ALPHA_DEG.max() + 1e-9, XFOIL_SUBSTEP)
     down = np.arange(-XFOIL_SUBSTEP, CP_ALPHA_DEG.min() - 1e-9, -XFOIL_SUBSTEP)
     return up, down
@@ -144,9 +145,11 @@ def _xfoil_alphas():
 
 class Xfoil:
     """
-    An interactive XFOIL process: each call sends commands plus an unknown marker command and
-    reads the output up to XFOIL's "not recognized" reply, so the script can react to each point
-    (re-initialise the boundary layer after a failure, stop a sweep after repeated failures).
+    An interactive XFOIL process, driven one point at a time.
+
+    Each call sends commands plus an unknown marker command and reads the output up to XFOIL's
+    "not recognized" reply, so the script can react to each point (re-initialise the boundary
+    layer after a failure, stop a sweep after repeated failures).
     """
 
     MARK = "ZZMARK"
@@ -250,6 +253,7 @@ def xfoil_session(args):
 
 
 def stations(n):
+    """Return ``n`` cosine-spaced chordwise stations x/c from 0 to 1."""
     beta = np.linspace(0.0, np.pi, n)
     return 0.5 * (1.0 - np.cos(beta))
 
@@ -308,6 +312,7 @@ def start_display():
 
 
 def pressure_tables(coords, jobs, name, display):
+    """Run XFOIL over the Cp table's angles, Reynolds and Mach numbers; return the arrays."""
     shape = (len(CP_ALPHA_DEG), len(CP_REYNOLDS), len(CP_MACH))
     x_st = stations(N_X)
     cp_u = np.full(shape + (N_X,), np.nan)
@@ -354,6 +359,7 @@ def pressure_tables(coords, jobs, name, display):
 
 
 def xfoil_version():
+    """Return the XFOIL version text recorded in the files (with the Debian package version)."""
     try:
         out = subprocess.run(["dpkg-query", "-W", "-f=${Version}", "xfoil"], capture_output=True,
                              text=True, check=False).stdout.strip()
@@ -363,6 +369,7 @@ def xfoil_version():
 
 
 def main(argv=None):
+    """Write ``airfoil_<name>.npz`` for the chosen airfoils (polars, then the Cp tables)."""
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--airfoils", nargs="+", default=list(AIRFOILS), choices=list(AIRFOILS))
     parser.add_argument("--coordinates", default=str(DEFAULT_COORDINATES),

@@ -26,6 +26,7 @@ from lpc_mdo.studies import structural_sizing_problem  # noqa: E402
 
 
 def run(aggregated, coupling, out, optimizer):
+    """Optimize one variant of the structural study; return the problem and its table row."""
     label = _label(aggregated, coupling)
     prob = structural_sizing_problem(aggregated=aggregated, optimizer=optimizer,
                                      coupling=coupling,
@@ -71,6 +72,7 @@ def _label(aggregated, coupling):
 
 
 def main(argv=None):
+    """Run the four variants, print their comparison table and write the figures."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", default="structural_study")
     # IPOPT's L-BFGS Hessian stalls on the KS-aggregated variant (300 iterations, buckling KS

@@ -53,6 +53,7 @@ def run_bem(geometry, advance_ratio, polar=POLAR, num_radial=30):
 
 
 def main(argv=None):
+    """Compare the BEM with the APC data over the advance ratios; print the errors, plot them."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument('--data-dir', type=Path, default=DEFAULT_DATA,
                         help='folder with APC_sport_14_13_{blade_geometry,performance}.txt')

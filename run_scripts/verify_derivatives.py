@@ -44,6 +44,7 @@ def jacobian(prob, method=None, step=None):
 
 
 def main(argv=None):
+    """Compare the adjoint totals with finite differences of each step and complex step."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--steps", type=float, nargs="+",
                         default=[1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7])

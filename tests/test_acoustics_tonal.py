@@ -14,7 +14,9 @@ from lpc_mdo.groups.acoustics import RotorNoiseGroup
 
 def _gutin_spl(num_blades, m, rpm, thrust, torque, r_eff, distance, theta, a):
     """
-    Gutin's steady-loading harmonic (Gutin 1936, NACA TM 1195, 1948), SI form, rms pressure:
+    Return the SPL of Gutin's steady-loading harmonic (Gutin 1936, NACA TM 1195, 1948).
+
+    The SI form of the rms pressure is
 
         p_m = m B Omega/(2 sqrt(2) pi a S) |T cos(theta) - Q a/(Omega R_e**2)| J_mB(m B Omega R_e
               sin(theta)/a),
@@ -140,15 +142,17 @@ def test_kvurt_stalnov_hover_directivity_against_matlab():
 def _lowson_quadrature(hub, n_hat, obs, rotation, rbar, weights, radius, rpm, a, num_blades, m,
                        thrust_fn, drag_fn, num_psi=720):
     """
-    Independent check: numerical quadrature of the far-field rotating-dipole radiation integral
-    before its Bessel expansion (Lowson 1965; Lowson & Ollerhead 1969),
+    Return the SPL of harmonic n = m B from a quadrature of the rotating-dipole integral.
+
+    An independent check: numerical quadrature of the far-field rotating-dipole radiation
+    integral before its Bessel expansion (Lowson 1965; Lowson & Ollerhead 1969),
 
         c_n = -i n Omega/(4 pi a S) (1/2 pi) int_0^2pi x.F(psi) exp(i n (psi - Omega x.y(psi)/a))
               dpsi,
 
     with the blade geometry in body coordinates (BladeAD rotor frame: e_y = projected body y,
     e_x = n x e_y, psi = 0 aft, increasing with rotation), F the force on the fluid (-T n +
-    D t) and y the blade station. Returns the SPL of harmonic n = m B of B coherent blades.
+    D t) and y the blade station; the B blades radiate coherently.
     """
     omega = rpm * np.pi / 30.0
     n = m * num_blades

@@ -68,7 +68,7 @@ def test_beyond_stall_uses_the_linear_continuation():
 
 @pytest.mark.parametrize("mode", ["fwd", "rev"])
 def test_totals_match_the_implicit_function_theorem(mode):
-    """d alpha*/d cl_VLM = 1/cl_alpha(alpha*), through solve_linear (no linear solver needed)."""
+    """Check d alpha*/d cl_VLM = 1/cl_alpha(alpha*), through solve_linear (no linear solver)."""
     prob = make_problem("ls413", 3, mode=mode)
     prob.set_val("lift_coefficient", [0.3, 0.8, 1.2])
     prob.set_val("reynolds", [2e6, 5e6, 8e6])

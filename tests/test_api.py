@@ -1,6 +1,7 @@
 """The lpc_mdo.api wrappers return the same numbers as the models they wrap."""
 
 import numpy as np
+import openmdao.api as om
 import pytest
 
 import lpc_mdo.api as lpc
@@ -38,3 +39,16 @@ def test_rotor_noise_wrapper_doubles_with_two_identical_rotors():
     for key in ("total_spl_a",):
         assert np.asarray(two[key]).item() == pytest.approx(
             np.asarray(one[key]).item() + 10 * np.log10(2), abs=1e-6)
+
+
+def test_calibrate_other_mass_is_the_models():
+    # One calibration path: the W_other the api returns is the one the vehicle model (and so
+    # the full model, which holds it) builds with, for the reference vehicle.
+    prob = om.Problem(reports=False)
+    prob.model.add_subsystem("vehicle", lpc.VehicleGroup(), promotes=["*"])
+    prob.setup()
+    prob.run_model()
+    model_other = prob.get_val("other_mass", units="kg")[0]
+    assert lpc.calibrate_other_mass() == pytest.approx(model_other, rel=1e-9)
+    assert lpc.calibrate_other_mass(lpc.reference_vehicle()) == pytest.approx(model_other,
+                                                                                rel=1e-9)

@@ -17,8 +17,6 @@ from openmdao.utils.assert_utils import assert_near_equal
 
 from lpc_mdo.drivers import IpoptDriver, IpoptMultipliers
 
-pytest.importorskip("cyipopt")
-
 
 class Paraboloid(om.ExplicitComponent):
     """f = (x - 3)^2 + x y + (y + 4)^2 - 3; optionally raises AnalysisError on chosen calls."""
@@ -107,6 +105,7 @@ def sellar_problem(driver, con2_upper=0.0):
     return prob
 
 
+@pytest.mark.requires_ipopt
 def test_sellar_reaches_known_optimum():
     prob = sellar_problem(IpoptDriver(print_level=0, tol=1e-9))
     result = prob.run_driver()
@@ -118,6 +117,7 @@ def test_sellar_reaches_known_optimum():
     assert 0 < result.iter_count < 50
 
 
+@pytest.mark.requires_ipopt
 def test_bounded_constrained_paraboloid_matches_closed_form():
     # With x <= 5 and x - y >= 15 both active: x = 5, y = -10, f = -13.  KKT: grad f = (-6, -7)
     # balanced by multipliers 13 (bound) and 7 (constraint), both >= 0; f is convex (Hessian
@@ -133,6 +133,7 @@ def test_bounded_constrained_paraboloid_matches_closed_form():
     assert mult["constraints"]["c"][0] == pytest.approx(-7.0, rel=1e-5)
 
 
+@pytest.mark.requires_ipopt
 def test_inequality_paraboloid_closed_form():
     # Only x - y >= 15 active: y = x - 15, df/dx = 6 x - 43 = 0 -> x = 43/6, y = -47/6,
     # f = -867/36 - 3.
@@ -143,6 +144,7 @@ def test_inequality_paraboloid_closed_form():
     assert_near_equal(prob.get_val("f"), -867.0 / 36.0 - 3.0, 1e-7)
 
 
+@pytest.mark.requires_ipopt
 @pytest.mark.parametrize("equality", [False, True])
 @pytest.mark.parametrize("linear", [False, True])
 def test_scaled_problems_agree_with_slsqp(equality, linear):
@@ -157,6 +159,7 @@ def test_scaled_problems_agree_with_slsqp(equality, linear):
     assert_near_equal(ipopt.get_val("c"), 15.0, 1e-7)
 
 
+@pytest.mark.requires_ipopt
 def test_negative_scaler_flips_bounds_correctly():
     # ref < ref0 gives a negative scaler, so scaled lower > scaled upper; SLSQP cannot take this,
     # IPOPT gets the bounds sorted and reaches the closed-form optimum of the inequality case.
@@ -165,6 +168,7 @@ def test_negative_scaler_flips_bounds_correctly():
     assert_near_equal(prob.get_val("y"), -47.0 / 6.0, 1e-7)
 
 
+@pytest.mark.requires_ipopt
 def test_linear_constraint_is_not_evaluated_by_the_model():
     prob = paraboloid_problem(IpoptDriver(print_level=0), linear=True)
     assert prob.run_driver().success
@@ -173,6 +177,7 @@ def test_linear_constraint_is_not_evaluated_by_the_model():
     assert prob.driver._m_nl == 0
 
 
+@pytest.mark.requires_ipopt
 def test_recorder_records_every_evaluation_and_final_case_loads(tmp_path):
     prob = sellar_problem(IpoptDriver(print_level=0))
     path = str(tmp_path / "cases.sql")
@@ -198,6 +203,7 @@ def test_recorder_records_every_evaluation_and_final_case_loads(tmp_path):
     assert_near_equal(fresh.get_val("z"), prob.get_val("z"), 1e-12)
 
 
+@pytest.mark.requires_ipopt
 def test_analysis_error_is_cut_back_and_optimization_converges(tmp_path):
     # Fail the 3rd and 5th model evaluations; IPOPT must back off and still converge.
     prob = paraboloid_problem(IpoptDriver(print_level=0, tol=1e-10), fail_on_calls=(3, 5))
@@ -222,6 +228,7 @@ def test_analysis_error_is_cut_back_and_optimization_converges(tmp_path):
     assert_near_equal(prob.get_val("f"), -867.0 / 36.0 - 3.0, 1e-7)
 
 
+@pytest.mark.requires_ipopt
 def test_error_in_model_is_reraised_not_swallowed():
     class Broken(Paraboloid):
         def compute(self, inputs, outputs):
@@ -240,6 +247,7 @@ def test_error_in_model_is_reraised_not_swallowed():
         prob.run_driver()
 
 
+@pytest.mark.requires_ipopt
 def test_warm_start_takes_fewer_iterations_than_cold_start(tmp_path):
     path = str(tmp_path / "cold.sql")
     cold = sellar_problem(IpoptDriver(print_level=0))
@@ -267,6 +275,7 @@ def test_warm_start_takes_fewer_iterations_than_cold_start(tmp_path):
     assert warm_result.iter_count <= cold_result.iter_count // 2
 
 
+@pytest.mark.requires_ipopt
 def test_warm_start_multipliers_of_wrong_size_are_rejected():
     prob = sellar_problem(IpoptDriver(print_level=0))
     prob.driver.options["warm_start"] = IpoptMultipliers(
@@ -275,6 +284,7 @@ def test_warm_start_multipliers_of_wrong_size_are_rejected():
         prob.run_driver()
 
 
+@pytest.mark.requires_ipopt
 def test_sparse_jacobian_from_coloring_and_relevance():
     n = 6
 
@@ -312,6 +322,7 @@ def test_sparse_jacobian_from_coloring_and_relevance():
     assert_near_equal(colored.get_val("y"), -0.5 * np.ones(n), 1e-6)
 
 
+@pytest.mark.requires_ipopt
 def test_opt_settings_pass_through_to_ipopt():
     prob = paraboloid_problem(IpoptDriver(print_level=0))
     prob.driver.opt_settings["max_iter"] = 2

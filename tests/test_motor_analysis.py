@@ -1,5 +1,8 @@
-"""Tests for the motor analysis: EM torque (eq. 24), losses, torque limit, margins, MotorGroup
-and the motor_analysis wrapper (lpc_mdo.api.motor)."""
+"""
+Tests for the motor analysis (lpc_mdo.groups.motor, lpc_mdo.api.motor).
+
+EM torque (eq. 24), losses, torque limit, margins, MotorGroup and the motor_analysis wrapper.
+"""
 
 import numpy as np
 import openmdao.api as om

@@ -56,7 +56,7 @@ def _chain(lengths, ratio=1.0 / 3.0, upto=None):
 
 
 def _isolated(comp, source):
-    """The component alone, its inputs (and state guess) taken from a run of the chain."""
+    """Return the component alone, its inputs (and state guess) taken from a run of the chain."""
     prob = om.Problem(reports=False)
     prob.model.add_subsystem('comp', comp, promotes=['*'])
     prob.setup(force_alloc_complex=True)

@@ -38,8 +38,12 @@ class ReMachPolar(Polar):
 
 
 def build(nr=2, nn=3, nrad=6, naz=7, **options):
-    """Two rotors (opposite spin), three nodes: hover-climb, edgewise with sideslip, and
-    high-advance-ratio with reverse flow on the retreating side."""
+    """
+    Return a problem of two rotors (opposite spin) at three nodes.
+
+    The nodes are hover-climb, edgewise with sideslip, and high advance ratio with reverse flow
+    on the retreating side.
+    """
     kw = dict(num_rotors=nr, num_nodes=nn, num_radial=nrad, num_azimuth=naz,
               num_blades=[2, 3], spin_direction=[1, -1], **options)
     prob = om.Problem()

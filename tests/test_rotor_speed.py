@@ -32,9 +32,12 @@ def test_bad_group():
 
 
 def test_roll_and_yaw_mixers_split_each_pair_about_its_mean():
-    """Closed form: rpm = pair speed + (side * roll + spin * yaw) / 2, so roll = mean left
-    minus mean right speed, yaw = mean spin(+1) minus mean spin(-1) speed, and each pair's
-    mean stays its group speed."""
+    """
+    Check the mixers against the closed form rpm = pair speed + (side * roll + spin * yaw) / 2.
+
+    So roll = mean left minus mean right speed, yaw = mean spin(+1) minus mean spin(-1) speed,
+    and each pair's mean stays its group speed.
+    """
     prob = om.Problem(reports=False)
     # LPC: rotors 0-3 on the left, 4-7 on the right; spins of the vehicle file.
     side = np.array([1, 1, 1, 1, -1, -1, -1, -1], dtype=float)

@@ -13,7 +13,11 @@ from lpc_mdo.groups.vlm import VLMGroup, VLMSurface
 
 def wing_problem(span_panels, chord_panels, spacing="uniform", span=8.0, root_chord=1.0,
                  tip_chord=1.0, sweep=0.0, dihedral=0.0, twist=None):
-    """A single mirrored wing meshed by PlanformMeshComp, V = 50 m/s, rho = 1.225, S = b c."""
+    """
+    Return a single mirrored wing meshed by PlanformMeshComp.
+
+    V = 50 m/s, rho = 1.225 kg/m**3, S = b c.
+    """
     prob = om.Problem(reports=False)
     prob.model.add_subsystem("planform", PlanformMeshComp(num_span_panels=span_panels,
                                                           num_chord_panels=chord_panels,

@@ -7,9 +7,8 @@ import pytest
 from lpc_mdo.vehicle import reference_vehicle
 from lpc_mdo.warm_start import magnitude_refs, run_sequence
 
-pytest.importorskip("cyipopt")
 
-
+@pytest.mark.requires_ipopt
 def test_planform_found_by_subproblem_4_carries_into_subproblem_3(tmp_path):
     results = run_sequence(str(tmp_path), names=("subproblem_4", "subproblem_3"),
                            driver_settings={"max_iter": 100, "print_level": 0},

@@ -4,10 +4,10 @@ import pytest
 from openmdao.utils.assert_utils import assert_check_totals, assert_near_equal
 
 from lpc_mdo.api.weights import format_mass_breakdown, mass_breakdown
+from lpc_mdo.groups.vehicle import VehicleGroup
 from lpc_mdo.groups.weights import (
     WeightsGroup,
     calibrate_other_mass,
-    calibrate_other_mass_in_problem,
     motor_group_indices,
     placeholder_calibration_inputs,
     wing_cg_estimate,
@@ -35,49 +35,44 @@ def test_placeholder_calibration_inputs():
     assert motor_group_indices() == [0, 1, 2, 3, 2, 3, 0, 1, 4]
 
 
-def test_calibration_reaches_target():
-    # Hand sum of the initial items (kg): wing 283.36053 + fuselage 316.51853 + empennage
-    # 56.53885 + booms 118.09657 + battery 800 + motors 121.50110 + power electronics 40.82
-    # + payload 540 + systems 270 = 2546.83558 -> W_other = 3723.99 - 2546.83558 = 1177.15442.
-    other = calibrate_other_mass()
-    assert_near_equal(other, 1177.15442, 1e-7)
-    prob = weights_problem(other_mass=other)
+def test_gross_mass_is_the_sum_of_the_breakdown_items():
+    # Stand-alone WeightsGroup at its defaults, hand sum of the items (kg): wing 283.36053 (M4
+    # placeholder) + fuselage 316.51853 + empennage 56.53885 + booms 118.09657 + battery 800
+    # + motors 121.50110 + power electronics 40.82 + payload 540 + systems 270 + other 880
+    # (the vehicle file's uncalibrated guess) = 3426.83558.
+    prob = weights_problem()
     prob.run_model()
-    assert_near_equal(prob.get_val("gross_mass"), TARGET, 1e-12)
-    assert_near_equal(prob.get_val("total_mass"), TARGET, 1e-12)
+    assert_near_equal(prob.get_val("gross_mass"), 3426.83558, 1e-8)
+    assert_near_equal(prob.get_val("total_mass"), prob.get_val("gross_mass"), 1e-12)
     # The mass breakdown sums to the gross mass and prints.
     breakdown = mass_breakdown(prob)
     items = [v for k, v in breakdown.items() if k not in ("structures", "powertrain", "gross")]
-    assert_near_equal(sum(items), TARGET, 1e-12)
-    assert_near_equal(breakdown["other"], other, 1e-12)
+    assert_near_equal(sum(items), breakdown["gross"], 1e-12)
+    assert_near_equal(breakdown["other"], 880.0, 1e-15)
     text = format_mass_breakdown(breakdown)
-    assert "other" in text and "3723.99" in text
+    assert "other" in text and "3426.84" in text
 
 
-def test_calibration_follows_the_wing_and_motor_models():
-    # W0 is affine in every mass with unit slope: a 100 kg beam wing instead of the 283.36 kg
-    # placeholder raises W_other by exactly the difference; per-group motor masses (5 values)
-    # are expanded to the 9 motors.
-    base = calibrate_other_mass()
-    placeholder = placeholder_calibration_inputs()
-    lighter = calibrate_other_mass(wing_mass=100.0)
-    assert_near_equal(lighter - base, placeholder["wing_mass"] - 100.0, 1e-10)
-    motors = calibrate_other_mass(motor_mass=[20.0, 20.0, 20.0, 20.0, 50.0])
-    assert_near_equal(base - motors, 8 * 20.0 + 50.0 - placeholder["motor_mass"].sum(), 1e-10)
-    # A different target and the public-code mass factor, in a problem that is already built.
-    prob = weights_problem(regression_mass_factor=1.3)
-    prob.set_val("wing_mass", 150.0)
-    other = calibrate_other_mass_in_problem(prob, target_gross_mass=3800.0)
-    assert_near_equal(prob.get_val("gross_mass"), 3800.0, 1e-12)
-    assert_near_equal(prob.get_val("other_mass"), other, 1e-15)
-    with pytest.raises(ValueError, match="Calibrated other_mass = .* is negative"):
-        calibrate_other_mass(target_gross_mass=2000.0)
-    with pytest.raises(ValueError, match=r"motor_mass has shape \(4,\)"):
-        calibrate_other_mass(motor_mass=[1.0, 2.0, 3.0, 4.0])
+def test_calibrated_other_mass_reaches_the_target():
+    """
+    Check that the calibrated W_other gives the target gross mass, 3723.99 kg (paper Table 8).
+
+    This is the calibration target, so it holds by construction; the tests next to it check
+    the build-up independently.
+    """
+    vehicle_prob = om.Problem(reports=False)
+    vehicle_prob.model.add_subsystem("vehicle", VehicleGroup(), promotes=["*"])
+    vehicle_prob.setup()
+    vehicle_prob.run_model()
+    prob = weights_problem(other_mass=calibrate_other_mass())
+    prob.set_val("wing_mass", vehicle_prob.get_val("wing_mass"))
+    prob.set_val("motor_mass", vehicle_prob.get_val("motor_mass"))
+    prob.run_model()
+    assert_near_equal(prob.get_val("gross_mass"), TARGET, 1e-12)
 
 
 def test_vehicle_mass_properties():
-    prob = weights_problem(other_mass=calibrate_other_mass())
+    prob = weights_problem()
     prob.run_model()
     vehicle = reference_vehicle()
     # Independent first-moment check: the cg is the mass-weighted mean of the item cgs.
@@ -85,7 +80,7 @@ def test_vehicle_mass_properties():
              "systems", "other"]
     moment = sum(prob.get_val(f"{n}_mass") * prob.get_val(f"{n}_cg") for n in names)
     moment = moment + prob.get_val("motor_mass") @ prob.get_val("motor_cg")
-    assert_near_equal(prob.get_val("cg"), moment / TARGET, 1e-12)
+    assert_near_equal(prob.get_val("cg"), moment / prob.get_val("total_mass"), 1e-12)
     # Symmetric vehicle: cg on the plane of symmetry, I_xy = I_yz = 0 up to the tiny asymmetry
     # of the boom regressions (< 0.1 kg m^2); inertia symmetric with positive principal values.
     inertia = prob.get_val("inertia")

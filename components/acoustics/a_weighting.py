@@ -10,8 +10,11 @@ _F1, _F2, _F3, _F4 = 20.598997, 107.65265, 737.86223, 12194.217
 
 
 def _log_response(frequency):
-    """ln R_A(f) up to a constant: R_A = f4**2 f**4/((f**2+f1**2) sqrt((f**2+f2**2)(f**2+f3**2))
-    (f**2+f4**2))."""
+    """
+    Return the natural logarithm of the A-weighting response R_A(f), up to a constant.
+
+    R_A = f4**2 f**4/((f**2+f1**2) sqrt((f**2+f2**2)(f**2+f3**2)) (f**2+f4**2)).
+    """
     f2 = frequency * frequency
     return (4.0 * np.log(frequency) - np.log(f2 + _F1**2) - 0.5 * np.log(f2 + _F2**2)
             - 0.5 * np.log(f2 + _F3**2) - np.log(f2 + _F4**2))

@@ -139,7 +139,7 @@ def spl_from_mean_square(mean_square):
 
 
 def dspl_dmean_square(mean_square):
-    """Derivative of :func:`spl_from_mean_square` with respect to the mean-square pressure."""
+    """Return the derivative of :func:`spl_from_mean_square` with respect to the mean square."""
     return DB_PER_NEPER / (mean_square + SPL_FLOOR * P_REF**2)
 
 

@@ -29,7 +29,7 @@ from .pressure_table import PressureTable
 
 
 def get_pressure_table(airfoil):
-    """The pressure table of an airfoil name, a TablePolar with one, or a PressureTable."""
+    """Return the pressure table of an airfoil name, a TablePolar with one, or a PressureTable."""
     if isinstance(airfoil, PressureTable):
         return airfoil
     polar = get_polar(airfoil)

@@ -9,8 +9,9 @@ from lpc_mdo.components.aero.vlm_lattice import Lattice, declare_lattice_options
 
 class VLMAICComp(om.ExplicitComponent):
     """
-    AIC matrix A of paper eq. 10: normal velocity at collocation point i per unit circulation of
-    ring j, the wake included.
+    AIC matrix A of paper eq. 10, the wake included.
+
+    A[n, i, j] is the normal velocity at collocation point i per unit circulation of ring j.
 
     reference/models_aero_rotor_acoustics.md §4.3–4.4:
 

@@ -12,7 +12,9 @@ SINGULAR_RCOND = 1.0e-13
 
 class VLMCirculationComp(om.ImplicitComponent):
     """
-    Ring circulations Gamma from the residual of paper eq. 10, one dense system per node:
+    Ring circulations Gamma from the residual of paper eq. 10, one dense system per node.
+
+    The residual of node n is
 
         R[n] = A[n] Gamma[n] + v_coll[n] . n'[n] = 0
 

@@ -6,9 +6,11 @@ import openmdao.api as om
 
 class AnglePerturbationComp(om.ExplicitComponent):
     """
-    alpha + delta: the angle of attack of a second aerodynamic solve (paper eq. 30 needs
-    dM/dalpha, which an optimizer cannot take as a derivative of a derivative; a second VLM
-    solve at alpha + delta gives it as a difference whose own derivatives are exact).
+    Angle of attack alpha + delta of a second aerodynamic solve.
+
+    Paper eq. 30 needs dM/dalpha, which an optimizer cannot take as a derivative of a
+    derivative; a second VLM solve at alpha + delta gives it as a difference whose own
+    derivatives are exact.
 
     Inputs
     ------

@@ -6,6 +6,8 @@ import openmdao.api as om
 
 class TotalPowerComp(om.ExplicitComponent):
     """
+    Electrical power of the vehicle: the sum of the motor input powers.
+
     P_elec = sum over all motors of the motor input power (paper Sec. III.G: the power of each
     mission segment; reference/models_structures_motor_vehicle.md §8.10 default).
 

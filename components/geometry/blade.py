@@ -201,7 +201,9 @@ class BladeStationsComp(om.ExplicitComponent):
 
 class BladeGeometryGroup(om.Group):
     """
-    Blade geometry of several rotors: stations (BladeStationsComp) and chord and twist at the
+    Blade geometry of several rotors: stations, and chord and twist at the stations.
+
+    The stations come from BladeStationsComp, the chord and twist at the
     stations from cubic B-splines (BsplineComp), reference/models_aero_rotor_acoustics.md §7.
 
     Chord and twist are order-4 clamped B-splines of ``num_cp`` control points each (4: a single

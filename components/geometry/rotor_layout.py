@@ -6,7 +6,9 @@ import openmdao.api as om
 
 class RotorLayoutComp(om.ExplicitComponent):
     """
-    Rotor hub positions and radii from the planform design variables, and the radius
+    Rotor hub positions and radii, and the radius intersection constraint.
+
+    Hub positions and radii follow the planform design variables, as does the radius
     intersection constraint (reference/models_structures_motor_vehicle.md §3.3).
 
     Each boom is attached to the wing at a fixed fraction of the semispan, eta_i = |y_i| / (b/2)

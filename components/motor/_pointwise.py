@@ -38,9 +38,10 @@ def _shape(comp, per_node):
 
 class PointwiseExplicitComp(om.ExplicitComponent):
     """
-    Explicit pointwise model; subclasses set ``_input_vars``, ``_output_vars``, ``_deps``,
-    ``_per_node`` and implement ``_evaluate(values) -> dict`` (and optionally
-    ``_check_values(values)``).
+    Explicit pointwise model, evaluated independently at every node.
+
+    Subclasses set ``_input_vars``, ``_output_vars``, ``_deps``, ``_per_node`` and implement
+    ``_evaluate(values) -> dict`` (and optionally ``_check_values(values)``).
     """
 
     _input_vars = ()

@@ -377,7 +377,7 @@ class EMTorqueComp(PointwiseImplicitComp):
         shaft_speed = v['rotor_rpm'] * par.gear_ratio * _RPM_TO_RAD_S  # motor omega_m, rad/s
 
         def balance(torque):
-            """h = omega_m (T - T_L) - P_loss and dh/dT (complex step)."""
+            """Return h = omega_m (T - T_L) - P_loss and dh/dT (complex step)."""
             loss = self._operating_point(v, torque + 1j * CS_STEP)['power_loss']
             value = shaft_speed * (torque - load) - loss.real
             return value, shaft_speed - loss.imag / CS_STEP

@@ -9,7 +9,7 @@ from lpc_mdo.components.motor.parameters import MotorParameters
 
 def mtpa_base(flux_linkage, inductance_d, inductance_q, pole_pairs):
     """
-    Base current and torque of the per-unit MTPA quartic (§7.7; complex-safe).
+    Return the base current and torque of the per-unit MTPA quartic (§7.7; complex-safe).
 
     I_base = -Psi_F/(L_d - L_q), T_base = 1.5 p Psi_F I_base.
     """

@@ -159,7 +159,7 @@ class MotorParameters:
 
     @property
     def slots_per_pole_per_phase(self):
-        """q = Z/(2 m p)."""
+        """Slots per pole per phase, q = Z/(2 m p)."""
         return self.num_slots / (2 * self.phases * self.pole_pairs)
 
     @property

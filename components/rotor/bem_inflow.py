@@ -138,8 +138,10 @@ def add_section_inputs(comp, num_rotors, num_nodes, num_radial):
 
 def check_section_inputs(comp, inputs, hub_loss):
     """
-    Check the physical range of the sectional inputs; raise om.AnalysisError naming the field,
-    the offending value and the allowed range (these may come from an optimizer).
+    Check the physical range of the sectional inputs.
+
+    Raise om.AnalysisError naming the field, the offending value and the allowed range (these
+    may come from an optimizer).
     """
     def fail(name, values, allowed):
         raise om.AnalysisError(f"{comp.msginfo}: input '{name}' = {np.asarray(values).tolist()} "
@@ -459,7 +461,7 @@ class BEMSections:
         return phi
 
     def newton_polish(self, phi, steps=2):
-        """A few plain Newton steps (used under complex step, from the real solution)."""
+        """Take a few plain Newton steps (used under complex step, from the real solution)."""
         for _ in range(steps):
             st = self.evaluate(phi)
             phi = phi - st['res'] / self.tangent(st, {'inflow_angle': 1.0})

@@ -139,8 +139,10 @@ def add_pitt_peters_inputs(comp, nr, nn, nrad):
 
 def check_pitt_peters_inputs(comp, inputs, hub_loss):
     """
-    Check the physical range of the inputs (real parts); raise om.AnalysisError naming the
-    field, the offending values and the allowed range (values may come from an optimizer).
+    Check the physical range of the inputs (real parts).
+
+    Raise om.AnalysisError naming the field, the offending values and the allowed range (values
+    may come from an optimizer).
     """
     def fail(name, values, allowed):
         raise om.AnalysisError(f"{comp.msginfo}: input '{name}' = {np.asarray(values).tolist()} "
@@ -341,9 +343,13 @@ class PittPetersBladeElements:
         return st
 
     def _section(self, geo, ute, derivatives=True):
-        """Blade-element loads at the stations for the tangential velocity ``ute`` = U_T - v_t;
-        with ``derivatives``, also the loss partials and d/d(ute) of the drag and of F (the
-        swirl Newton and the partials need them, a plain evaluation without swirl does not)."""
+        """
+        Evaluate the blade-element loads at the stations for the tangential velocity ``ute``.
+
+        ``ute`` = U_T - v_t. With ``derivatives``, also the loss partials and d/d(ute) of the
+        drag and of F (the swirl Newton and the partials need them, a plain evaluation without
+        swirl does not).
+        """
         sec = SimpleNamespace(ute=ute)
         up = geo.up
         sec.w2 = up * up + ute * ute
@@ -373,8 +379,12 @@ class PittPetersBladeElements:
         return sec
 
     def _swirl_residual(self, sec, vt, um, kappa):
-        """Annulus angular momentum: v_t U_m F_m - B d/(4 pi rho r) (F_m = F on the momentum
-        side with loss_placement='momentum', else 1) and its derivative in v_t."""
+        """
+        Return the annulus angular-momentum residual and its derivative in v_t.
+
+        The residual is v_t U_m F_m - B d/(4 pi rho r), with F_m = F on the momentum side with
+        loss_placement='momentum', else 1.
+        """
         f_m = sec.F if self.momentum_loss else 1.0
         res = vt * um * f_m - kappa * sec.d
         jac = um * f_m + kappa * sec.d_ute
@@ -383,8 +393,12 @@ class PittPetersBladeElements:
         return res, jac
 
     def _solve_swirl(self, geo, ut, um, kappa):
-        """Tangential induction v_t per station by Newton: from the last solution (the inflow
-        Newton and the optimizer evaluate nearby points; ~4x fewer steps), then from v_t = 0."""
+        """
+        Solve for the tangential induction v_t per station by Newton.
+
+        Newton starts from the last solution (the inflow Newton and the optimizer evaluate
+        nearby points; ~4x fewer steps), then, if that fails, from v_t = 0.
+        """
         starts = [0.0] if np.isscalar(self._vt_guess) else [self._vt_guess, 0.0]
         for k, guess in enumerate(starts):
             try:
@@ -494,7 +508,7 @@ class PittPetersBladeElements:
     # ---------------------------------------------------------------- chain rule to the inputs
     def chain(self, st, p, keys):
         """
-        Partials of a station field with respect to the component inputs (and inflow states).
+        Chain a station field's partials to the component inputs (and inflow states).
 
         ``p`` holds the primitive partials (from :meth:`evaluate`); returns name -> array of the
         station shape, with a trailing axis of 3 ('inflow_states') or 2 ('inplane_velocity').
@@ -543,8 +557,10 @@ class PittPetersBladeElements:
 
     def integrate_partials(self, st, name, chained):
         """
-        Partials of integral ``name`` with respect to the inputs in ``chained`` (the field's
-        :meth:`chain` output) plus station_radius and station_width (through the quadrature).
+        Return the partials of the integral ``name`` with respect to its inputs.
+
+        The inputs are those in ``chained`` (the field's :meth:`chain` output) plus
+        station_radius and station_width (through the quadrature).
 
         Returns name -> array (nr, nn) for per-op, per-rotor and per-node inputs, (nr, nn, k) for
         inflow_states and inplane_velocity, (nr, nn, num_radial) for per-station inputs.

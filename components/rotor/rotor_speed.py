@@ -6,9 +6,11 @@ import openmdao.api as om
 
 class RotorSpeedComp(om.ExplicitComponent):
     """
-    rpm of each rotor from the speed of its group (e.g. the mirror-symmetric lift-rotor pairs
-    of the LPC share one speed design variable, paper Table 6), optionally plus mixer inputs
-    that speed some rotors up and others down, as a multicopter's flight control does:
+    Speed (rpm) of each rotor from the speed of its group and optional mixer inputs.
+
+    Rotors of a group share one speed (e.g. the mirror-symmetric lift-rotor pairs
+    of the LPC share one speed design variable, paper Table 6); mixer inputs
+    speed some rotors up and others down, as a multicopter's flight control does:
 
         rpm[i, k] = group_speed[k, group[i]] + sum_j mixing[i, j] * mixer_speed[k, j]
 

@@ -315,7 +315,9 @@ class _FrameMixin:
     @staticmethod
     def _coordinate_blocks(start, end, func):
         """
-        d func(start, end)/d(6 end-node coordinates), by complex step (num_elements, m, 6).
+        Differentiate func(start, end) by the 6 end-node coordinates, by complex step.
+
+        The result has the shape (num_elements, m, 6).
 
         func(start, end) -> (num_elements, m) must be complex-safe. The node coordinates enter
         only through the element length and direction cosines of each element, so 6 vectorized
@@ -730,7 +732,7 @@ class BeamForcesComp(_FrameMixin, om.ExplicitComponent):
 
     @staticmethod
     def _outputs_from(k_loc, lam, u_e):
-        """The 30 per-element quantities (ne, 30[, k]) from local K, λ and u_e (ne, 12[, k])."""
+        """Return the 30 per-element quantities (ne, 30[, k]) from local K, λ, u_e (ne, 12[, k])."""
         f_loc = np.einsum('eij,ej...->ei...', k_loc, to_local(lam, u_e))
         f_glob = to_global(lam, f_loc)
         ends = f_loc.reshape(f_loc.shape[0], 2, 2, 3, *f_loc.shape[2:])  # (e, end, F/M, xyz)

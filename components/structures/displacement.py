@@ -6,7 +6,9 @@ import openmdao.api as om
 
 class VerticalDisplacementComp(om.ExplicitComponent):
     """
-    s w_i of every beam node: the body-z displacement (z down) signed so that the deflection
+    Vertical displacement s w_i of every beam node, positive in the direction of the load.
+
+    w_i is the body-z displacement (z down), signed with s so that the deflection
     under the load is positive (s = -1 at positive load factors, where the wing bends up).
     A KS of it gives the aggregated displacement constraint of the structural subproblem
     (paper Table 4; limit 0.5 m).

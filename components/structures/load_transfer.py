@@ -76,7 +76,7 @@ def _check_nodes(comp, nodes, axis):
 
 
 def _gravity_direction(pitch, roll):
-    """Unit vector of gravity in the body frame (3-2-1 Euler angles) and its partials."""
+    """Return the body-frame unit vector of gravity (3-2-1 Euler angles) and its partials."""
     st, ct, sp, cp = np.sin(pitch), np.cos(pitch), np.sin(roll), np.cos(roll)
     g = np.array([-st, sp * ct, cp * ct]).ravel()
     dg_dpitch = np.array([-ct, -sp * st, -cp * st]).ravel()

@@ -98,10 +98,10 @@ def _arc_radius(x, y):
 
 
 #: Section numbers of the two wing airfoils for the reference layout (spars at 25 % and 75 %,
-#: beam axis at 50 % chord), from the UIUC coordinate tables in shared/data/airfoils
-#: (ls413_gaw2.dat, ls417_gaw1.dat) with ``WingBoxSection.from_file``; the tables hold points at
+#: beam axis at 50 % chord), from the UIUC coordinate tables (ls413_gaw2.dat, ls417_gaw1.dat,
+#: shipped in tests/data/airfoils) with ``WingBoxSection.from_file``; the tables hold points at
 #: exactly x/c = 0.25, 0.5 and 0.75, so no interpolation enters. tests/test_structures_geometry.py
-#: recomputes them from the files when those are present.
+#: recomputes them from those files.
 WING_BOX_SECTIONS = {
     'ls413': WingBoxSection(0.25, 0.75, 0.5, thickness=0.1243, camber=0.02075,
                             top_radius=1.9089296147276130, bottom_radius=2.5495526693349944,

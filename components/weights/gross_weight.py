@@ -35,7 +35,9 @@ _MOTORS = BREAKDOWN_LABELS.index("motors")
 
 class GrossWeightComp(om.ExplicitComponent):
     """
-    Gross mass W0 and its build-up (paper eqs. 31-33, reference/paper.md Sec. IV;
+    Gross mass W0 and its build-up from the component masses.
+
+    The build-up of paper eqs. 31-33 (reference/paper.md Sec. IV;
     reference/models_structures_motor_vehicle.md §4.1).
 
     - W_structures = W_wing + W_fuselage + W_empennage + W_booms             (eq. 32)

@@ -1,6 +1,9 @@
-"""Figures (PNG) from recorder (SQLite case) files: convergence history, bar charts of recorded
-vectors, values per design condition, distributions along an index, planform outlines and
-parameter sweeps (paper Figs. 13-21).
+"""
+Figures (PNG) from recorder (SQLite case) files.
+
+The figures are the convergence history, bar charts of recorded vectors, values per design
+condition, distributions along an index, planform outlines and parameter sweeps (paper
+Figs. 13-21).
 
 The figures are drawn on ``matplotlib.figure.Figure`` objects with the Agg canvas, so they need
 no display and never touch pyplot's global state or the user's chosen backend. Every function
@@ -236,8 +239,9 @@ def _condition_value(cr, name, units, reduce):
 def plot_per_condition(designs, variable, conditions, path, units=None, reduce="sum",
                        ylabel=None, title=None):
     """
-    Bar chart of a value per design condition, grouped by design (power, figure of merit; paper
-    Fig. 16).
+    Plot a value per design condition as bars grouped by design (paper Fig. 16).
+
+    Typical values are the power and the figure of merit.
 
     Reads, for each design, either ``variable.format(condition=c)`` for each condition ``c``
     (a template such as ``'{condition}.electrical_power'``) or one vector ``variable`` with one
@@ -315,8 +319,9 @@ def plot_per_condition(designs, variable, conditions, path, units=None, reduce="
 def plot_distribution(designs, names, path, x=None, units=None, x_units=None, limit=None,
                       ylabel=None, xlabel=None, title=None):
     """
-    Line plot of recorded arrays along their index or along another recorded array (skin
-    thickness, stress distributions; paper Figs. 13, 14, 21).
+    Plot recorded arrays along their index or along another recorded array.
+
+    Typical arrays are skin thickness and stress distributions (paper Figs. 13, 14, 21).
 
     Reads each of ``names`` (and ``x``) from each design. A 2-D array gives one line per column
     (e.g. several stress recovery points per element).
@@ -381,8 +386,7 @@ def plot_distribution(designs, names, path, x=None, units=None, x_units=None, li
 
 def plot_planform(designs, meshes, path, rotors=(), units="m", mirror=False, title=None):
     """
-    Top view of lifting-surface outlines (and rotor disks) of several designs overlaid (paper
-    Fig. 15).
+    Plot the top view of several designs' lifting surfaces and rotor disks (paper Fig. 15).
 
     Reads each mesh, an array (nx, ny, 3) of chordwise x spanwise nodes with coordinates
     (x, y, z) and the leading edge at ``[0, :, :]``, and draws its outline (leading edge, tip,
@@ -449,7 +453,7 @@ def plot_planform(designs, meshes, path, rotors=(), units="m", mirror=False, tit
 
 def objective_value(source, case=None):
     """
-    The (first) objective of a run's final case, in its declared units.
+    Return the (first) objective of a run's final case, in its declared units.
 
     Reads ``get_objectives()`` of :func:`~lpc_mdo.post.case_data.final_case`.
 
@@ -508,8 +512,9 @@ def sweep_points(sources, x, group=None, x_units=None, group_units=None):
 def plot_sweep(runs, path, y=None, y_units=None, xlabel="parameter", ylabel=None,
                group_label=None, highlight=(), title=None):
     """
-    Objective (or any recorded scalar) against a parameter, one line per value of a second
-    parameter (paper Figs. 17-18).
+    Plot the objective (or any recorded scalar) against a parameter (paper Figs. 17-18).
+
+    One line per value of a second parameter.
 
     Reads, from each run's case file, the objective of the final case (or ``y``).
 

@@ -153,8 +153,10 @@ def write_run_stats(driver_result, path, peak_memory_mb=None):
 
 def find_run_stats(case_file):
     """
-    Return a case file's run statistics: ``<stem>.run_stats.json`` beside it (one per stage of
-    a sequence), else a ``run_stats.json`` in its folder; None when neither exists.
+    Return the path of a case file's run statistics, or None.
+
+    The statistics are ``<stem>.run_stats.json`` beside the case file (one per stage of a
+    sequence), else a ``run_stats.json`` in its folder; None when neither exists.
 
     Parameters
     ----------
@@ -174,7 +176,7 @@ def find_run_stats(case_file):
 
 
 def run_stats_path(case_file):
-    """The run-statistics sidecar of a case file: ``<stem>.run_stats.json``."""
+    """Return the run-statistics sidecar of a case file: ``<stem>.run_stats.json``."""
     return Path(case_file).with_suffix(".run_stats.json")
 
 

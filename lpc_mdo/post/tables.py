@@ -1,5 +1,8 @@
-"""Tables from recorder (SQLite case) files: constraints (paper Table 7), design variables and a
-design comparison (paper Table 8), written as Markdown and CSV.
+"""
+Tables from recorder (SQLite case) files, written as Markdown and CSV.
+
+The tables are the constraints (paper Table 7), the design variables and a design comparison
+(paper Table 8).
 
 The values come from case files only, read through :mod:`lpc_mdo.post.case_data`; the
 case-access names (:func:`open_reader`, :func:`final_case`, :func:`read_value`,
@@ -150,7 +153,7 @@ class Table:
 
 
 def _scalar_or_range(arr):
-    """A bound array as one float when uniform, as 'a..b' text otherwise, or None."""
+    """Return a bound array as one float when uniform, as 'a..b' text otherwise, or None."""
     if arr is None:
         return None
     finite = arr[~np.isnan(arr)]
@@ -160,7 +163,7 @@ def _scalar_or_range(arr):
 
 def limit_scale(meta, lower=None, upper=None, equals=None, ref=None):
     """
-    Reference magnitude r_i of each constraint entry (see the module docstring).
+    Return the reference magnitude r_i of each constraint entry (see the module docstring).
 
     Parameters
     ----------
@@ -360,8 +363,9 @@ def constraint_table(source, case=None, tol=DEFAULT_TOL, refs=None):
 
 def design_variable_table(source, tol=DEFAULT_TOL, expand=True):
     """
-    Design-variable table: initial (first driver case) and final (last driver case) values,
-    bounds and an at-bound flag.
+    Design-variable table: initial and final values, bounds and an at-bound flag.
+
+    The initial values are those of the first driver case, the final ones of the last.
 
     Reads ``case.get_design_vars()`` (declared units) of the first and last driver cases and the
     bounds from ``problem_metadata['design_vars']``. An entry is at a bound when within
