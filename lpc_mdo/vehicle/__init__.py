@@ -1,0 +1,237 @@
+"""The vehicle definition: typed, documented, validated data of the NASA lift-plus-cruise eVTOL.
+
+A vehicle is described by a TOML file; the packaged reference, ``lpc_mdo/data/lpc_reference.toml``,
+is the initial design of the paper study, with every value's source in a comment. A user may pass
+their own file with the same keys.
+
+Conventions
+-----------
+- SI units (m, m^2, kg, s, m/s, Pa, N*m, J). Angles are radians in the dataclasses. In the file,
+  angle keys end in ``_deg`` and hold degrees (``sweep_deg``, ``twist_cp_deg``, ``pitch_deg``, ...);
+  ``battery.energy_density_wh_per_kg`` holds Wh/kg and is stored in J/kg.
+- Body frame: x forward, y right, z down, origin at the fuselage nose. Vectors are tuples of floats
+  (use ``np.asarray``).
+- Conditions are data: each ``[[conditions]]`` entry has a ``name`` (any identifier), a ``kind``
+  (a key of :data:`lpc_mdo.groups.condition_kinds.CONDITION_KINDS`: ``hover``, ``oei``,
+  ``transition``, ``steady``, ``structural``), its flight state, its ``energy_weight`` in the
+  mission energy and the ``design_variable_prefix`` of the design variables it owns. The
+  reference vehicle has 15.
+- Rotor groups: the 8 lift rotors form 4 mirror-symmetric pairs (``Rotor.pair`` 0..3) that share
+  radius, blades, chord, twist and rpm; the pusher is group 4. Per-rotor design variables
+  (``rotor_radius``, ``blade_chord_cp``, ``blade_twist_cp``, ``motor_length``) have one row per
+  group in that order.
+
+Validation
+----------
+Every key is required. An unknown key, a missing key, a value of the wrong type (a bool is not a
+number; an integer field rejects 2.5 but accepts 2.0) or a non-physical value raises one
+:class:`VehicleSpecError` that names the dotted key (``wing.area``, ``lift_rotors[3].radius``), the
+value and what is allowed, before anything is built. The checks come from a small schema in the
+dataclass field metadata (units, range, file-key suffix, array shape); checks that involve several
+fields (symmetric pairs, unique condition names, each kind's own rules, design-variable bounds)
+follow.
+
+Design variables
+----------------
+``Vehicle.design_variables`` maps the design-variable names to :class:`DesignVariable`, in the
+order of the vehicle file's ``[design_variables]`` tables. The vehicle-level ones are fixed by the
+vehicle; each condition adds those its kind declares (rotor speeds, pitch, elevator), named
+``{design_variable_prefix}_{variable}`` and stacked as rows where conditions share a prefix
+(:class:`lpc_mdo.groups.condition_base.ConditionLayout`). The reference vehicle has the 31 below:
+the paper's 161
+(Table 6) and the 10 roll and yaw speed differentials of the transition lift rotors, which the
+paper does not have. Without them no trim variable acts on roll in transition, where the pusher's
+torque reaction rolls the vehicle (1.1-1.4e3 N m at our optimum, 3-4 % of the weight as a
+moment in N m; the paper's trim residuals of at most 25 N m, Table 7, imply that its model
+leaves that torque out). Rows of the per-group DVs: lift pairs 0..3, then the
+pusher.
+
+======================  =======  ================================================================
+name                    shape    meaning
+======================  =======  ================================================================
+wing_aspect_ratio       1        wing aspect ratio (initial: ``wing.aspect_ratio``)
+wing_area               1        wing reference area, m^2 (initial: ``wing.area``)
+htail_aspect_ratio      1        h-tail aspect ratio (initial: ``horizontal_tail.aspect_ratio``)
+htail_area              1        h-tail reference area, m^2 (initial: ``horizontal_tail.area``)
+fuselage_length         1        fuselage length, m (initial: ``fuselage.length``)
+rotor_radius            5        rotor radius per group, m (initial: the rotors)
+blade_chord_cp          5 x 4    blade chord control points, m (initial: the rotors)
+blade_twist_cp          5 x 4    blade twist control points, rad (initial: the rotors)
+battery_mass            1        battery mass, kg (initial: ``battery.mass``)
+motor_length            5        motor stack length per group, m
+hover_lift_rpm          4        lift-rotor speed per pair in hover, rpm
+transition_lift_rpm     5 x 4    lift-rotor speed per transition point and pair, rpm (the mean
+                                 of the pair's two rotors)
+transition_roll_yaw_rpm 5 x 2    lift-rotor speed differentials per transition point, rpm: left
+                                 minus right rotors, spin +1 minus spin -1 rotors (not in the
+                                 paper: the roll and yaw trim of transition)
+oei_lift_rpm            4 x 7    speed of the 7 working lift rotors per OEI case, rpm
+transition_pusher_rpm   5        pusher speed per transition point, rpm
+climb_pusher_rpm        1        pusher speed in climb, rpm (likewise cruise_, descent_)
+climb_pitch             1        pitch in climb, rad (likewise cruise_, descent_, plus_3g_,
+                                 minus_1g_; initial: the condition's pitch)
+transition_elevator     5        h-tail deflection per transition point, rad
+climb_elevator          1        h-tail deflection in climb, rad (likewise cruise_, descent_)
+front_spar_thickness    8        per wing-box bay, root to tip, m (likewise rear_spar_,
+                                 top_skin_, bottom_skin_; 8 = ``wing_box.num_bays``)
+======================  =======  ================================================================
+
+API
+---
+:func:`load_vehicle` (a path, or ``None`` for the reference), :func:`reference_vehicle` (cached),
+:func:`read_vehicle_file` (the raw dict), :func:`vehicle_from_dict` (validate and build from a dict)
+and :func:`design_variable_count` (also the method ``Vehicle.design_variable_count()``). The
+dataclasses are frozen: change a vehicle by editing the dict from :func:`read_vehicle_file` and
+calling :func:`vehicle_from_dict`. ``dataclasses.replace`` also works for quick experiments, but
+it skips validation and does not update the design-variable initial values that mirror vehicle
+data.
+"""
+
+
+from __future__ import annotations
+
+import functools
+import os
+import tomllib
+from collections.abc import Mapping
+from importlib import resources
+
+from lpc_mdo.vehicle.consistency import (
+    _check_conditions,
+    _check_lift_rotors,
+    _check_mission,
+    _check_pusher,
+)
+from lpc_mdo.vehicle.design_variables import _read_design_variables
+from lpc_mdo.vehicle.parts import (
+    AIRFOILS,
+    Airfoil,
+    Battery,
+    Booms,
+    ConstraintLimits,
+    DesignCondition,
+    DesignVariable,
+    FixedMasses,
+    Fuselage,
+    LiftingSurface,
+    Material,
+    Mission,
+    Motor,
+    NoiseObserver,
+    Rotor,
+    Vehicle,
+    WingBox,
+)
+from lpc_mdo.vehicle.schema import VehicleSpecError, _read_fields
+
+__all__ = [
+    "AIRFOILS",
+    "Airfoil",
+    "Battery",
+    "Booms",
+    "ConstraintLimits",
+    "DesignCondition",
+    "DesignVariable",
+    "FixedMasses",
+    "Fuselage",
+    "LiftingSurface",
+    "Material",
+    "Mission",
+    "Motor",
+    "NoiseObserver",
+    "Rotor",
+    "Vehicle",
+    "VehicleSpecError",
+    "WingBox",
+    "design_variable_count",
+    "load_vehicle",
+    "read_vehicle_file",
+    "reference_vehicle",
+    "vehicle_from_dict",
+]
+
+
+# ------------------------------------------------------------------------------------------------
+# Public API
+
+
+def read_vehicle_file(path: str | os.PathLike | None = None) -> dict:
+    """Parse a vehicle TOML file into a plain dict, without validation.
+
+    Parameters
+    ----------
+    path : str or os.PathLike or None
+        The file; ``None`` reads the packaged reference ``lpc_mdo/data/lpc_reference.toml``.
+
+    Returns
+    -------
+    dict
+        A fresh dict on every call, safe to modify and pass to :func:`vehicle_from_dict`.
+    """
+    if path is None:
+        resource = resources.files("lpc_mdo").joinpath("data", "lpc_reference.toml")
+        text, label = resource.read_text(encoding="utf-8"), "lpc_reference.toml"
+    else:
+        with open(path, encoding="utf-8") as fh:
+            text, label = fh.read(), os.fspath(path)
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise VehicleSpecError(f"vehicle file '{label}' is not valid TOML: {exc}") from exc
+
+
+def load_vehicle(path: str | os.PathLike | None = None) -> Vehicle:
+    """Read, validate and build a vehicle from a TOML file.
+
+    Parameters
+    ----------
+    path : str or os.PathLike or None
+        The file; ``None`` loads the packaged reference vehicle.
+
+    Raises
+    ------
+    VehicleSpecError
+        If the file is not valid TOML or any value is missing, unknown, mistyped or out of range.
+    """
+    return vehicle_from_dict(read_vehicle_file(path))
+
+
+@functools.cache
+def reference_vehicle() -> Vehicle:
+    """The packaged reference vehicle, loaded once (it is immutable)."""
+    return load_vehicle()
+
+
+def vehicle_from_dict(data: Mapping) -> Vehicle:
+    """Validate a vehicle description (the parsed TOML) and build the :class:`Vehicle`.
+
+    Raises
+    ------
+    VehicleSpecError
+        At the first problem, naming the dotted key, the value and what is allowed.
+    """
+    values = _read_fields(Vehicle, data, "", skip="design_variables")
+    _check_lift_rotors(values["lift_rotors"])
+    _check_pusher(values["pusher"])
+    _check_conditions(values)
+    wing_box = values["wing_box"]
+    if wing_box.rear_spar <= wing_box.front_spar:
+        raise VehicleSpecError(
+            f"'wing_box.rear_spar' = {wing_box.rear_spar!r} is out of range: must be > "
+            f"'wing_box.front_spar' = {wing_box.front_spar!r}"
+        )
+    _check_mission(values["mission"], values["conditions"])
+    values["design_variables"] = _read_design_variables(data["design_variables"], values)
+    return Vehicle(**values)
+
+
+def design_variable_count(vehicle: Vehicle | None = None) -> int:
+    """Total number of scalar design variables (171: the paper's 161 + 10 differentials).
+
+    Parameters
+    ----------
+    vehicle : Vehicle or None
+        The vehicle; ``None`` uses :func:`reference_vehicle`.
+    """
+    return (reference_vehicle() if vehicle is None else vehicle).design_variable_count()
+

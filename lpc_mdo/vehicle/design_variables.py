@@ -1,0 +1,203 @@
+"""The design-variable tables of a vehicle file (paper Table 6): shapes, units, bounds, refs.
+
+The vehicle-level design variables are fixed by the vehicle's parts; the conditions' come from
+their kinds' contracts (:class:`~lpc_mdo.groups.condition_base.ConditionLayout`). Each table of
+``[design_variables]`` is checked against its spec: units, shape, bounds around the initial
+value, the minimum gauge.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import numpy as np
+
+from lpc_mdo.vehicle.consistency import _PartialVehicle
+from lpc_mdo.vehicle.parts import DesignCondition, DesignVariable, _pairs, _ReadOnlyDict
+from lpc_mdo.vehicle.schema import (
+    VehicleSpecError,
+    _array,
+    _check_keys,
+    _fmt,
+    _is_number,
+    _number,
+    _show,
+    _Spec,
+    _spec,
+    _string,
+)
+
+# ------------------------------------------------------------------------------------------------
+# Design variables
+
+
+@dataclass(frozen=True)
+class _DVSpec:
+    """What the vehicle fixes about a design variable: units, shape and any linked initial value."""
+
+    description: str
+    units: str
+    shape: tuple[int, ...]
+    initial_from: str = ""
+    initial: tuple[float, ...] | None = None
+    lower_min: tuple[float, str] | None = None  # (value, key) the lower bound may not go below
+
+
+def _design_variable_specs(parts: dict) -> dict[str, _DVSpec]:
+    """The design variables (paper Table 6), sized from the built vehicle parts.
+
+    The vehicle-level ones (planform, rotors, battery, motors, wing box), then those the
+    conditions own (:class:`lpc_mdo.groups.condition_base.ConditionLayout`).
+    """
+    from lpc_mdo.groups.condition_base import ConditionLayout
+    wing, htail = parts["wing"], parts["horizontal_tail"]
+    groups = [parts["lift_rotors"][i] for i, _ in _pairs(parts["lift_rotors"])]
+    groups.append(parts["pusher"])
+    ng = len(groups)
+    n_bays = parts["wing_box"].num_bays
+    rotor_rows = "rows: lift pairs 0-3, pusher"
+    rotor_from = "lift_rotors[i].{0} (one rotor per pair) and pusher.{0}"
+    gauge = (parts["material"].min_gauge, "material.min_gauge")
+
+    def scalar(description, units, key, value):
+        return _DVSpec(description, units, (1,), key, (value,))
+
+    def thickness(what):
+        return _DVSpec(
+            f"{what} thickness per wing-box bay, root to tip", "m", (n_bays,), lower_min=gauge
+        )
+
+    specs = {
+        "wing_aspect_ratio": scalar(
+            "wing aspect ratio", "unitless", "wing.aspect_ratio", wing.aspect_ratio
+        ),
+        "wing_area": scalar("wing reference area", "m**2", "wing.area", wing.area),
+        "htail_aspect_ratio": scalar(
+            "h-tail aspect ratio", "unitless", "horizontal_tail.aspect_ratio", htail.aspect_ratio
+        ),
+        "htail_area": scalar("h-tail reference area", "m**2", "horizontal_tail.area", htail.area),
+        "fuselage_length": scalar(
+            "fuselage length", "m", "fuselage.length", parts["fuselage"].length
+        ),
+        "rotor_radius": _DVSpec(
+            f"rotor radius; {rotor_rows}",
+            "m",
+            (ng,),
+            rotor_from.format("radius"),
+            tuple(r.radius for r in groups),
+        ),
+        "blade_chord_cp": _DVSpec(
+            f"blade chord control points, root to tip; {rotor_rows}",
+            "m",
+            (ng, 4),
+            rotor_from.format("chord_cp"),
+            tuple(x for r in groups for x in r.chord_cp),
+        ),
+        "blade_twist_cp": _DVSpec(
+            f"blade twist control points, root to tip; {rotor_rows}",
+            "rad",
+            (ng, 4),
+            rotor_from.format("twist_cp_deg"),
+            tuple(x for r in groups for x in r.twist_cp),
+        ),
+        "battery_mass": scalar("battery mass", "kg", "battery.mass", parts["battery"].mass),
+        "motor_length": _DVSpec(f"motor stack length; {rotor_rows}", "m", (ng,)),
+        "front_spar_thickness": thickness("front-spar"),
+        "rear_spar_thickness": thickness("rear-spar"),
+        "top_skin_thickness": thickness("top-skin"),
+        "bottom_skin_thickness": thickness("bottom-skin"),
+    }
+    conditions = parts["conditions"]
+    index = {c.name: i for i, c in enumerate(conditions)}
+    suffix = {f.name: _spec(f).suffix for f in dataclasses.fields(DesignCondition)}
+    for name, dv in ConditionLayout(_PartialVehicle(parts)).design_variables.items():
+        if name in specs:
+            raise VehicleSpecError(
+                f"the design variable {name!r} of condition {dv.conditions[0]!r} (its "
+                f"design_variable_prefix + a variable of its kind) has the name of a "
+                f"vehicle-level design variable; choose another design_variable_prefix"
+            )
+        initial_from = ""
+        if dv.initial_from:
+            initial_from = ", ".join(f"conditions[{index[c]}].{dv.initial_from}"
+                                     f"{suffix[dv.initial_from]}" for c in dv.conditions)
+        specs[name] = _DVSpec(dv.description, dv.units, dv.shape, initial_from, dv.initial)
+    return specs
+
+
+def _dv_values(value, shape: tuple[int, ...], path: str) -> tuple[float, ...]:
+    """A number (the same for every entry) or a nested list of ``shape`` -> flat floats."""
+    if _is_number(value):
+        return (_number(value, _Spec(), path),) * math.prod(shape)
+    if isinstance(value, list):
+        return tuple(np.ravel(_array(value, shape, _Spec(), path)).tolist())
+    what = "a number" if shape == (1,) else f"a number or a nested list of shape {shape}"
+    raise VehicleSpecError(f"'{path}' must be {what}, got {_show(value)}")
+
+
+def _read_design_variables(data, parts: dict) -> dict[str, DesignVariable]:
+    specs = _design_variable_specs(parts)
+    _check_keys(data, dict.fromkeys(specs, "design-variable table"), "design_variables")
+    # In the file's order (the order of the model's design-variable outputs).
+    return _ReadOnlyDict(
+        (name, _read_design_variable(data[name], specs[name], f"design_variables.{name}"))
+        for name in data
+    )
+
+
+def _read_design_variable(data, spec: _DVSpec, path: str) -> DesignVariable:
+    if isinstance(data, Mapping) and "initial" in data and spec.initial is not None:
+        raise VehicleSpecError(
+            f"'{path}.initial' must not be given: the initial value is taken from "
+            f"'{spec.initial_from}'"
+        )
+    unit_choices = ("rad", "deg") if spec.units == "rad" else (spec.units,)
+    shape_text = "number" if spec.shape == (1,) else f"number or nested list of shape {spec.shape}"
+    allowed = {"units": "one of " + ", ".join(repr(u) for u in unit_choices)}
+    if spec.initial is None:
+        allowed["initial"] = shape_text
+    allowed |= {"lower": shape_text, "upper": shape_text, "ref": "number, > 0"}
+    _check_keys(data, allowed, path)
+
+    units = _string(data["units"], _Spec(choices=unit_choices), f"{path}.units")
+    scale = math.pi / 180.0 if units == "deg" else 1.0
+    values = {
+        key: tuple(x * scale for x in _dv_values(data[key], spec.shape, f"{path}.{key}"))
+        for key in ("initial", "lower", "upper")
+        if key in data
+    }
+    initial = values.get("initial", spec.initial)
+    lower, upper = values["lower"], values["upper"]
+    ref = _number(data["ref"], _Spec(units=units, gt=0), f"{path}.ref") * scale
+
+    def entry(key, k):
+        if len(initial) == 1:
+            return f"'{path}.{key}'"
+        return f"'{path}.{key}" + "".join(f"[{i}]" for i in np.unravel_index(k, spec.shape)) + "'"
+
+    source = f"; the initial value is taken from '{spec.initial_from}'" if spec.initial_from else ""
+    for k, (x0, lo, up) in enumerate(zip(initial, lower, upper, strict=True)):
+        if not lo <= x0 <= up:
+            raise VehicleSpecError(
+                f"{entry('initial', k)} = {_fmt(x0 / scale)} is out of range: must be in [lower, "
+                f"upper] = [{_fmt(lo / scale)}, {_fmt(up / scale)}] ({units}){source}"
+            )
+        if spec.lower_min is not None and lo < spec.lower_min[0]:
+            raise VehicleSpecError(
+                f"{entry('lower', k)} = {_fmt(lo)} is out of range: must be >= "
+                f"{spec.lower_min[1]} = {_fmt(spec.lower_min[0])} ({units})"
+            )
+    return DesignVariable(
+        initial=initial,
+        lower=lower,
+        upper=upper,
+        units="rad" if units == "deg" else units,
+        ref=ref,
+        shape=spec.shape,
+        description=spec.description,
+        initial_from=spec.initial_from,
+    )
+

@@ -1,0 +1,669 @@
+"""The vehicle's parts as frozen dataclasses: geometry, rotors, masses, conditions, limits.
+
+Every field declares its file key, units and range for the schema engine
+(:mod:`lpc_mdo.vehicle.schema`); the package docstring (:mod:`lpc_mdo.vehicle`) gives the
+conventions.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import numpy as np
+
+from lpc_mdo.vehicle.schema import _angle, _param
+
+# ------------------------------------------------------------------------------------------------
+# Airfoils and conditions
+
+
+@dataclass(frozen=True)
+class Airfoil:
+    """Section data the vehicle needs from an airfoil name.
+
+    Attributes
+    ----------
+    name : str
+        Key used in vehicle files.
+    thickness_to_chord : float
+        Maximum thickness over chord, t/c (-).
+    max_thickness_location : float
+        Chord-wise position of the maximum thickness, (x/c)_m (-), as used by the drag build-up.
+    description : str
+        Full name and coordinate file in ``shared/data/airfoils`` (if any).
+    """
+
+    name: str
+    thickness_to_chord: float
+    max_thickness_location: float
+    description: str
+
+
+#: Airfoils a vehicle file may name (aero §2, §5, §6.1).
+AIRFOILS: dict[str, Airfoil] = {
+    a.name: a
+    for a in (
+        Airfoil("ls413", 0.13, 0.4, "NASA LS(1)-0413 = GA(W)-2, paper wing (ls413_gaw2.dat)"),
+        Airfoil("ls417", 0.17, 0.4, "NASA LS(1)-0417 = GA(W)-1, public-code wing (ls417_gaw1.dat)"),
+        Airfoil("naca0012", 0.12, 0.3, "NACA 0012, rotor blades (naca0012.dat)"),
+        Airfoil("naca0015", 0.15, 0.3, "NACA 0015, tails (no coordinate table)"),
+    )
+}
+
+_NUM_LIFT_ROTORS = 8
+_NUM_PAIRS = 4
+_PUSHER_GROUP = 4
+_IDENTIFIER = "an identifier (letters, digits and '_', not starting with a digit)"
+_AIRFOIL_NAMES = tuple(AIRFOILS)
+
+
+# ------------------------------------------------------------------------------------------------
+# Vehicle dataclasses
+
+
+@dataclass(frozen=True)
+class LiftingSurface:
+    """A trapezoidal lifting surface (wing, horizontal or vertical tail).
+
+    The wing and the horizontal tail are mirrored about y = 0; the vertical tail is one surface
+    in the x-z plane whose span is its height, measured upwards from the root.
+
+    Attributes
+    ----------
+    area : float
+        Reference area S (m^2), both halves of a mirrored surface.
+    aspect_ratio : float
+        Aspect ratio b^2/S (-).
+    taper_ratio : float
+        Tip chord over root chord (-).
+    sweep : float
+        Leading-edge sweep (rad); file key ``sweep_deg``.
+    dihedral : float
+        Dihedral (rad), positive tip up; file key ``dihedral_deg``.
+    incidence : float
+        Root-chord incidence relative to the body x axis (rad), positive nose up; file key
+        ``incidence_deg``.
+    root_leading_edge : tuple of 3 float
+        Leading edge of the root chord, body frame (m).
+    airfoil : str
+        Section name, a key of :data:`AIRFOILS`.
+    laminar_fraction : float
+        Laminar part of the skin-friction build-up (-).
+    """
+
+    area: float = _param("m^2", gt=0)
+    aspect_ratio: float = _param(gt=0)
+    taper_ratio: float = _param(gt=0, le=1)
+    sweep: float = _angle(gt=-90, lt=90)
+    dihedral: float = _angle(gt=-90, lt=90)
+    incidence: float = _angle(ge=-30, le=30)
+    root_leading_edge: tuple[float, ...] = _param("m", shape=(3,))
+    airfoil: str = _param(choices=_AIRFOIL_NAMES)
+    laminar_fraction: float = _param(ge=0, le=1)
+
+    @property
+    def span(self) -> float:
+        """Span b = sqrt(AR S) (m); the height of the vertical tail."""
+        return math.sqrt(self.aspect_ratio * self.area)
+
+    @property
+    def root_chord(self) -> float:
+        """Root chord 2S/((1 + taper) b) (m)."""
+        return 2.0 * self.area / ((1.0 + self.taper_ratio) * self.span)
+
+    @property
+    def tip_chord(self) -> float:
+        """Tip chord (m)."""
+        return self.taper_ratio * self.root_chord
+
+    @property
+    def mean_aerodynamic_chord(self) -> float:
+        """Mean aerodynamic chord (2/3)(1 + λ + λ²)/(1 + λ) c_root (m)."""
+        lam = self.taper_ratio
+        return 2.0 / 3.0 * (1.0 + lam + lam**2) / (1.0 + lam) * self.root_chord
+
+    @property
+    def thickness_to_chord(self) -> float:
+        """Section t/c of :attr:`airfoil` (-)."""
+        return AIRFOILS[self.airfoil].thickness_to_chord
+
+    @property
+    def max_thickness_location(self) -> float:
+        """Section (x/c)_m of :attr:`airfoil` (-)."""
+        return AIRFOILS[self.airfoil].max_thickness_location
+
+
+@dataclass(frozen=True)
+class Fuselage:
+    """Fuselage dimensions; the nose is the origin of the body frame.
+
+    Attributes
+    ----------
+    length : float
+        Length (m).
+    max_height : float
+        Maximum height (m).
+    max_width : float
+        Maximum width (m).
+    """
+
+    length: float = _param("m", gt=0)
+    max_height: float = _param("m", gt=0)
+    max_width: float = _param("m", gt=0)
+
+    @property
+    def fineness_ratio(self) -> float:
+        """Length over the larger of height and width (-)."""
+        return self.length / max(self.max_height, self.max_width)
+
+
+@dataclass(frozen=True)
+class Rotor:
+    """A lift rotor or the pusher propeller.
+
+    Attributes
+    ----------
+    name : str
+        Label, e.g. ``"front_left_outer"``.
+    hub_position : tuple of 3 float
+        Hub centre, body frame (m).
+    radius : float
+        Tip radius R (m).
+    num_blades : int
+        Number of blades.
+    hub_radius_ratio : float
+        Hub radius over tip radius (-); see :attr:`hub_radius`.
+    chord_cp : tuple of 4 float
+        Blade chord B-spline control points, root to tip (m).
+    twist_cp : tuple of 4 float
+        Blade twist B-spline control points, root to tip (rad); file key ``twist_cp_deg``.
+    spin_direction : int
+        +1: rotation vector along :attr:`thrust_axis` (right-handed), -1: opposite.
+    thrust_axis : tuple of 3 float
+        Unit thrust direction, body frame: (0, 0, -1) for a lift rotor, (1, 0, 0) for the pusher.
+    pair : int
+        Group: 0..3 for the lift-rotor pairs, 4 for the pusher.
+    airfoil : str
+        Blade section, a key of :data:`AIRFOILS`, or a polar file (alpha [deg], cl, cd rows;
+        ``.npz`` in the shipped table format) that ``components.aero.airfoil.get_polar`` reads.
+    """
+
+    name: str = _param()
+    hub_position: tuple[float, ...] = _param("m", shape=(3,))
+    radius: float = _param("m", gt=0)
+    num_blades: int = _param(ge=1)
+    hub_radius_ratio: float = _param(ge=0, lt=1)
+    chord_cp: tuple[float, ...] = _param("m", gt=0, shape=(4,))
+    twist_cp: tuple[float, ...] = _angle(gt=-90, lt=90, shape=(4,))
+    spin_direction: int = _param(choices=(-1, 1))
+    thrust_axis: tuple[float, ...] = _param(shape=(3,), unit_vector=True)
+    pair: int = _param(ge=0, le=_PUSHER_GROUP)
+    airfoil: str = _param(choices=_AIRFOIL_NAMES, polar_file=True)
+
+    @property
+    def hub_radius(self) -> float:
+        """Hub radius (m)."""
+        return self.hub_radius_ratio * self.radius
+
+    @property
+    def thickness_to_chord(self) -> float | None:
+        """Section t/c of :attr:`airfoil` (-); None for a polar file, which gives no thickness."""
+        airfoil = AIRFOILS.get(self.airfoil)
+        return None if airfoil is None else airfoil.thickness_to_chord
+
+
+@dataclass(frozen=True)
+class Booms:
+    """The 8 lift-rotor booms ("Rotor_i_Support"), one per lift rotor.
+
+    Attributes
+    ----------
+    length : float
+        Characteristic length of each boom for the drag build-up (m).
+    form_factor : float
+        Drag form factor of each boom (-).
+    attach_points : tuple of 8 tuples of 3 float
+        Boom-wing junction of the boom of ``lift_rotors[i]``, body frame (m).
+    """
+
+    length: float = _param("m", gt=0)
+    form_factor: float = _param(gt=0)
+    attach_points: tuple[tuple[float, ...], ...] = _param("m", shape=(_NUM_LIFT_ROTORS, 3))
+
+
+@dataclass(frozen=True)
+class WingBox:
+    """Wing-box layout of the beam model (ref §6.7).
+
+    Attributes
+    ----------
+    front_spar : float
+        Front-spar chord fraction (-).
+    rear_spar : float
+        Rear-spar chord fraction (-), greater than ``front_spar``.
+    beam_axis : float
+        Chord fraction of the beam nodes (-).
+    num_bays : int
+        Bays (rib spaces) per half wing; each thickness design variable has this size.
+    """
+
+    front_spar: float = _param(gt=0, lt=1)
+    rear_spar: float = _param(gt=0, lt=1)
+    beam_axis: float = _param(gt=0, lt=1)
+    num_bays: int = _param(ge=1)
+
+
+@dataclass(frozen=True)
+class FixedMasses:
+    """Masses that are not sized by a model (paper eqs. 31 and 33) and their cg positions.
+
+    Attributes
+    ----------
+    payload, systems, other, power_electronics : float
+        Masses (kg). ``other`` is an initial guess, calibrated so that the initial gross mass
+        equals ``target_gross_mass``.
+    payload_cg, systems_cg, other_cg, power_electronics_cg : tuple of 3 float
+        Centres of gravity, body frame (m).
+    target_gross_mass : float
+        Gross mass of the initial design that ``other`` is calibrated to (kg).
+    other_cg_rule : str
+        'fixed': ``other_cg`` as given. 'hover_balance': the x of ``other_cg`` is an initial
+        guess, calibrated (like ``other``) so that the initial design's cg lies above the mean
+        lift-hub x, i.e. the lift rotors trim hover with equal thrust.
+    """
+
+    payload: float = _param("kg", ge=0)
+    payload_cg: tuple[float, ...] = _param("m", shape=(3,))
+    systems: float = _param("kg", ge=0)
+    systems_cg: tuple[float, ...] = _param("m", shape=(3,))
+    other: float = _param("kg", ge=0)
+    other_cg: tuple[float, ...] = _param("m", shape=(3,))
+    power_electronics: float = _param("kg", ge=0)
+    power_electronics_cg: tuple[float, ...] = _param("m", shape=(3,))
+    target_gross_mass: float = _param("kg", gt=0)
+    other_cg_rule: str = _param(choices=("fixed", "hover_balance"))
+
+
+@dataclass(frozen=True)
+class Material:
+    """Isotropic wing-box material.
+
+    Attributes
+    ----------
+    name : str
+        Label.
+    youngs_modulus : float
+        E (Pa).
+    shear_modulus : float
+        G (Pa).
+    density : float
+        Density (kg/m^3).
+    poisson_ratio : float
+        ν (-).
+    allowable_stress : float
+        Allowable von Mises stress (Pa), the stress limit of the structural subproblem.
+    min_gauge : float
+        Minimum skin and spar thickness (m); no thickness design variable may go below it.
+    """
+
+    name: str = _param()
+    youngs_modulus: float = _param("Pa", gt=0)
+    shear_modulus: float = _param("Pa", gt=0)
+    density: float = _param("kg/m^3", gt=0)
+    poisson_ratio: float = _param(gt=-1, lt=0.5)
+    allowable_stress: float = _param("Pa", gt=0)
+    min_gauge: float = _param("m", gt=0)
+
+
+@dataclass(frozen=True)
+class Battery:
+    """Energy-based battery.
+
+    Attributes
+    ----------
+    mass : float
+        Initial battery mass, the initial value of the ``battery_mass`` design variable (kg).
+    energy_density : float
+        Pack-level specific energy (J/kg); file key ``energy_density_wh_per_kg`` in Wh/kg.
+    initial_soc : float
+        State of charge at the start of the mission (-).
+    cg : tuple of 3 float
+        Centre of gravity, body frame (m).
+    """
+
+    mass: float = _param("kg", gt=0)
+    energy_density: float = _param("Wh/kg", gt=0, suffix="_wh_per_kg", scale=3600.0)
+    initial_soc: float = _param(gt=0, le=1)
+    cg: tuple[float, ...] = _param("m", shape=(3,))
+
+    @property
+    def energy(self) -> float:
+        """Stored energy at full charge, mass x energy density (J)."""
+        return self.mass * self.energy_density
+
+
+@dataclass(frozen=True)
+class Motor:
+    """Design constants shared by the 9 PMSM motors (ref §7.1-7.2).
+
+    Attributes
+    ----------
+    length_to_diameter : float
+        Stack length over outer stator diameter, L/D (-).
+    gear_ratio : float
+        Motor speed over rotor speed (-).
+    pole_pairs, num_phases, num_slots : int
+        Winding layout.
+    rated_current : float
+        Rated phase current (A).
+    voltage_limit : float
+        Supply voltage limit (V).
+    electric_loading : float
+        Specific electric loading Ā (A/m).
+    magnetic_loading : float
+        Specific magnetic loading B̄ (T).
+    torque_density : float
+        Torque per mass Q_sp used in the sizing mass (N*m/kg).
+    """
+
+    length_to_diameter: float = _param(gt=0)
+    gear_ratio: float = _param(gt=0)
+    pole_pairs: int = _param(ge=1)
+    num_phases: int = _param(ge=1)
+    num_slots: int = _param(ge=1)
+    rated_current: float = _param("A", gt=0)
+    voltage_limit: float = _param("V", gt=0)
+    electric_loading: float = _param("A/m", gt=0)
+    magnetic_loading: float = _param("T", gt=0)
+    torque_density: float = _param("N*m/kg", gt=0)
+
+
+@dataclass(frozen=True)
+class Mission:
+    """The mission-level choices of the sizing mission (paper Sec. IV).
+
+    The mission segments are the design conditions with a positive ``energy_weight`` (see
+    :attr:`Vehicle.mission_segments`); their durations and weights are in the conditions.
+
+    Attributes
+    ----------
+    cruise_condition : str
+        Name of the design cruise condition (a ``steady`` condition): the static margin is
+        evaluated and constrained there, the M4 weight regressions take its speed, and the
+        wing's sectional zero-lift angle is taken at its Reynolds and Mach numbers.
+    """
+
+    cruise_condition: str = _param()
+
+
+@dataclass(frozen=True)
+class DesignCondition:
+    """One design condition of the vehicle file.
+
+    Attributes
+    ----------
+    name : str
+        Condition name, an identifier unique in the vehicle; the subsystem's name in the model.
+    kind : str
+        Which group class builds it and declares its design variables, trim rows, constraints
+        and motors: a key of :data:`lpc_mdo.groups.condition_kinds.CONDITION_KINDS`
+        (``hover``, ``oei``, ``transition``, ``steady``, ``structural``).
+    altitude : float
+        Altitude for the atmosphere (m); the mean altitude in climb and descent.
+    speed : float
+        Flight speed (m/s); 0 in hover and OEI.
+    pitch : float
+        Pitch angle (rad): initial value where pitch is a design variable, prescribed in
+        transition, 0 in hover and OEI; file key ``pitch_deg``.
+    flight_path_angle : float
+        Flight-path angle γ (rad), positive climbing; file key ``flight_path_angle_deg``.
+    duration : float
+        Time the condition represents in the energy sum (s).
+    energy_weight : float
+        How many times the condition's energy (power x duration) counts in the mission energy
+        (-); 0 where it is not part of the mission. The paper's rule E_req = 2 (E_hover +
+        2 E_transition + E_climb + E_cruise + E_descent) + E_cruise gives hover 2, each
+        transition point 4, climb 2, cruise 3, descent 2, OEI and structural 0.
+    load_factor : float
+        Load factor n (-): 1 except in structural conditions.
+    failed_rotor : int
+        Index into ``Vehicle.lift_rotors`` of the failed rotor in an OEI case, else -1.
+    acceleration : float
+        Prescribed dV/dt (m/s^2) in transition (u̇ = a cos θ, ẇ = a sin θ), else 0.
+    design_variable_prefix : str
+        Prefix of the design variables the condition owns: its variable ``v`` is the vehicle
+        file's ``design_variables.{prefix}_{v}``. Conditions that share a prefix share the
+        tables, one row each in vehicle-file order (the reference's five transition points:
+        ``transition``); a prefix equal to the condition's name gives it tables of its own.
+    """
+
+    name: str = _param()
+    kind: str = _param()
+    altitude: float = _param("m", ge=0, le=11000)
+    speed: float = _param("m/s", ge=0, le=150)
+    pitch: float = _angle(gt=-90, lt=90)
+    flight_path_angle: float = _angle(gt=-90, lt=90)
+    duration: float = _param("s", ge=0, le=86400)
+    energy_weight: float = _param(ge=0, le=100)
+    load_factor: float = _param(ge=-5, le=5)
+    failed_rotor: int = _param(ge=-1, le=_NUM_LIFT_ROTORS - 1)
+    acceleration: float = _param("m/s^2", ge=-20, le=20)
+    design_variable_prefix: str = _param()
+
+
+@dataclass(frozen=True)
+class ConstraintLimits:
+    """Limits and targets of the paper's constraints (Tables 6-7).
+
+    The stress limit is ``Material.allowable_stress``; the minimum gauge is ``Material.min_gauge``.
+
+    Attributes
+    ----------
+    max_noise : float
+        Hover A-weighted sound pressure level limit (dBA).
+    min_static_margin : float
+        Static margin in cruise, fraction of the MAC (-).
+    min_torque_margin : float
+        Motor torque safety margin (-).
+    max_tip_mach : float
+        Hover lift-rotor tip Mach number (-).
+    radius_intersection : float
+        Target of the 2 radius-intersection equalities: a span fraction (-) or a clearance (m).
+    radius_intersection_definition : str
+        ``"span_fraction"``: (R_inner + R_outer)/b = target (default);
+        ``"clearance"``: |y_outer - y_inner| - (R_inner + R_outer) = target (ref §3.3).
+    max_buckling_ratio : float
+        Skin stress over critical buckling stress (-).
+    min_final_soc : float
+        State of charge at the end of the mission (-).
+    max_displacement : float
+        Wing-tip displacement in the structural subproblem (m).
+    """
+
+    max_noise: float = _param("dBA", gt=0, le=200)
+    min_static_margin: float = _param(gt=-1, lt=1)
+    min_torque_margin: float = _param(ge=0)
+    max_tip_mach: float = _param(gt=0, le=1)
+    radius_intersection: float = _param(ge=0)
+    radius_intersection_definition: str = _param(choices=("span_fraction", "clearance"))
+    max_buckling_ratio: float = _param(gt=0)
+    min_final_soc: float = _param(ge=0, lt=1)
+    max_displacement: float = _param("m", gt=0)
+
+
+@dataclass(frozen=True)
+class NoiseObserver:
+    """Observer of the hover noise constraint (aero §10.1).
+
+    Attributes
+    ----------
+    distance : float
+        Slant distance from the vehicle reference point (m).
+    elevation : float
+        Angle below the rotor plane (rad); file key ``elevation_deg``.
+    """
+
+    distance: float = _param("m", gt=0)
+    elevation: float = _angle(ge=-90, le=90)
+
+
+@dataclass(frozen=True)
+class DesignVariable:
+    """Bounds, initial value and scaling of one (vector) design variable.
+
+    Values are flattened in row-major order; :attr:`shape` restores them (the ``*_array``
+    properties do it).
+
+    Attributes
+    ----------
+    initial, lower, upper : tuple of float
+        Initial value and bounds, ``size`` entries each, in :attr:`units`.
+    units : str
+        OpenMDAO units (``"m"``, ``"m**2"``, ``"kg"``, ``"rad"``, ``"rpm"``, ``"unitless"``).
+    ref : float
+        OpenMDAO scaling reference (scaled value = value / ref).
+    shape : tuple of int
+        Shape, ``(1,)`` for a scalar.
+    description : str
+        What it is and how its rows and columns are ordered.
+    initial_from : str
+        The vehicle-file key the initial value is taken from (e.g. ``"wing.area"``), or ``""``
+        if the design-variable table gives it.
+    """
+
+    initial: tuple[float, ...]
+    lower: tuple[float, ...]
+    upper: tuple[float, ...]
+    units: str
+    ref: float
+    shape: tuple[int, ...]
+    description: str
+    initial_from: str
+
+    @property
+    def size(self) -> int:
+        """Number of entries."""
+        return math.prod(self.shape)
+
+    @property
+    def initial_array(self) -> np.ndarray:
+        """Initial value with :attr:`shape`."""
+        return np.reshape(self.initial, self.shape)
+
+    @property
+    def lower_array(self) -> np.ndarray:
+        """Lower bound with :attr:`shape`."""
+        return np.reshape(self.lower, self.shape)
+
+    @property
+    def upper_array(self) -> np.ndarray:
+        """Upper bound with :attr:`shape`."""
+        return np.reshape(self.upper, self.shape)
+
+
+class _ReadOnlyDict(dict):
+    """A dict that refuses changes, so that a cached vehicle cannot be modified by accident."""
+
+    def _refuse(self, *args, **kwargs):
+        raise TypeError("Vehicle.design_variables is read-only; build a new vehicle instead")
+
+    __setitem__ = __delitem__ = clear = pop = popitem = setdefault = update = __ior__ = _refuse
+
+    def __reduce__(self):
+        return (type(self), (dict(self),))
+
+    def __hash__(self):
+        return hash(tuple(self.items()))
+
+
+@dataclass(frozen=True)
+class Vehicle:
+    """The complete vehicle definition.
+
+    Attributes
+    ----------
+    name : str
+        Label.
+    wing, horizontal_tail, vertical_tail : LiftingSurface
+        Lifting surfaces.
+    fuselage : Fuselage
+        Fuselage.
+    lift_rotors : tuple of 8 Rotor
+        Lift rotors, 0..3 on the left, 4..7 on the right; see :attr:`lift_rotor_pairs`.
+    pusher : Rotor
+        Pusher propeller (group 4).
+    booms : Booms
+        Lift-rotor booms.
+    wing_box : WingBox
+        Wing-box layout.
+    masses : FixedMasses
+        Fixed masses and their cg.
+    material : Material
+        Wing-box material.
+    battery : Battery
+        Battery.
+    motor : Motor
+        Motor design constants.
+    mission : Mission
+        Energy-accounting rule.
+    conditions : tuple of DesignCondition
+        Design conditions, in vehicle-file order (15 in the reference vehicle).
+    constraints : ConstraintLimits
+        Constraint limits.
+    noise_observer : NoiseObserver
+        Hover noise observer.
+    design_variables : Mapping of str to DesignVariable
+        The 161 paper design variables and the 10 transition roll/yaw speed differentials by
+        name (read-only); see the module docstring.
+    """
+
+    name: str = _param()
+    wing: LiftingSurface = _param()
+    horizontal_tail: LiftingSurface = _param()
+    vertical_tail: LiftingSurface = _param()
+    fuselage: Fuselage = _param()
+    lift_rotors: tuple[Rotor, ...] = _param(
+        count=_NUM_LIFT_ROTORS,
+        count_note="the lift-plus-cruise layout: 4 mirror-symmetric pairs, [[lift_rotors]] tables",
+    )
+    pusher: Rotor = _param()
+    booms: Booms = _param()
+    wing_box: WingBox = _param()
+    masses: FixedMasses = _param()
+    material: Material = _param()
+    battery: Battery = _param()
+    motor: Motor = _param()
+    mission: Mission = _param()
+    conditions: tuple[DesignCondition, ...] = _param(count_note="at least one [[conditions]] table")
+    constraints: ConstraintLimits = _param()
+    noise_observer: NoiseObserver = _param()
+    design_variables: Mapping[str, DesignVariable] = _param()
+
+    @property
+    def lift_rotor_pairs(self) -> tuple[tuple[int, int], ...]:
+        """Indices into :attr:`lift_rotors` of the rotors of pairs 0..3."""
+        return _pairs(self.lift_rotors)
+
+    @property
+    def mission_segments(self) -> tuple[DesignCondition, ...]:
+        """The conditions that make up the mission energy, in flight order."""
+        return tuple(c for c in self.conditions if c.energy_weight > 0)
+
+    def design_variable_count(self) -> int:
+        """Total number of scalar design variables (171: the paper's 161 + 10 differentials)."""
+        return sum(dv.size for dv in self.design_variables.values())
+
+    def condition(self, name: str) -> DesignCondition:
+        """Return the design condition called ``name``."""
+        for c in self.conditions:
+            if c.name == name:
+                return c
+        names = [c.name for c in self.conditions]
+        raise KeyError(f"no design condition {name!r}; the vehicle's conditions are {names}")
+
+
+
+def _pairs(rotors: tuple[Rotor, ...]) -> tuple[tuple[int, int], ...]:
+    return tuple(tuple(i for i, r in enumerate(rotors) if r.pair == p) for p in range(_NUM_PAIRS))

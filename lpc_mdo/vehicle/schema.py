@@ -1,0 +1,265 @@
+"""The schema engine of vehicle files: typed fields with units, ranges and file-key suffixes.
+
+Each dataclass field of a vehicle part carries a :class:`_Spec` in its metadata (units, range,
+file-key suffix, array shape, allowed strings); :func:`_read_fields` checks a table's keys and
+converts every field, raising one :class:`VehicleSpecError` that names the dotted key, the value
+and what is allowed. The vehicle parts (:mod:`lpc_mdo.vehicle.parts`) and the design-variable
+tables (:mod:`lpc_mdo.vehicle.design_variables`) are read with it.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import math
+import os
+import typing
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+
+
+class VehicleSpecError(ValueError):
+    """An invalid vehicle file or dict; the message names the key, the value and what is allowed."""
+
+
+
+# ------------------------------------------------------------------------------------------------
+# Schema: each dataclass field carries a _Spec in its metadata.
+
+
+@dataclass(frozen=True)
+class _Spec:
+    """How a field is read from a vehicle file and checked.
+
+    Ranges (``gt``, ``ge``, ``lt``, ``le``) apply to the file value, before ``scale``.
+    """
+
+    units: str = ""  # units of the file value, for messages
+    gt: float | None = None
+    ge: float | None = None
+    lt: float | None = None
+    le: float | None = None
+    choices: tuple = ()
+    suffix: str = ""  # file key = field name + suffix
+    scale: float = 1.0  # stored value = file value * scale
+    shape: tuple[int, ...] = ()  # arrays of numbers
+    unit_vector: bool = False
+    count: int | None = None  # lists of tables
+    count_note: str = ""
+    derived: bool = False  # set by the loader, not read from the file
+    polar_file: bool = False  # a string may also name an existing airfoil polar file
+
+
+_POLAR_SUFFIXES = (".npz", ".txt", ".dat", ".csv", ".pol")
+
+
+def _param(units: str = "", **kw) -> typing.Any:
+    return field(metadata={"spec": _Spec(units=units, **kw)})
+
+
+def _angle(**kw) -> typing.Any:
+    return _param("deg", suffix="_deg", scale=math.pi / 180.0, **kw)
+
+
+def _spec(f: dataclasses.Field) -> _Spec:
+    return f.metadata.get("spec", _Spec())
+
+
+
+# ------------------------------------------------------------------------------------------------
+# Generic reading and checking
+
+
+def _join(path: str, key: str) -> str:
+    return f"{path}.{key}" if path else key
+
+
+def _show(value) -> str:
+    text = repr(value)
+    if len(text) > 60:
+        text = text[:57] + "..."
+    return f"{type(value).__name__} {text}"
+
+
+def _fmt(x: float) -> str:
+    return f"{x:.6g}"
+
+
+def _is_number(value) -> bool:
+    return isinstance(value, (int, float)) and not isinstance(value, bool)
+
+
+def _range_text(spec: _Spec) -> str:
+    """``"> 0"``, ``"in [0, 1)"``, ... for the range of a spec; ``""`` if unbounded."""
+    low = ("[", spec.ge) if spec.ge is not None else ("(", spec.gt) if spec.gt is not None else ()
+    high = ("]", spec.le) if spec.le is not None else (")", spec.lt) if spec.lt is not None else ()
+    if low and high:
+        return f"in {low[0]}{_fmt(low[1])}, {_fmt(high[1])}{high[0]}"
+    if low:
+        return f"{'>=' if low[0] == '[' else '>'} {_fmt(low[1])}"
+    if high:
+        return f"{'<=' if high[0] == ']' else '<'} {_fmt(high[1])}"
+    return ""
+
+
+def _units_suffix(spec: _Spec) -> str:
+    return f" ({spec.units})" if spec.units else ""
+
+
+def _describe(tp, spec: _Spec) -> str:
+    """Short description of what a key must hold, for 'missing key' messages."""
+    if dataclasses.is_dataclass(tp):
+        return "table"
+    if typing.get_origin(tp) is tuple and dataclasses.is_dataclass(typing.get_args(tp)[0]):
+        return f"list of {spec.count} tables"
+    if typing.get_origin(tp) is Mapping:
+        return "table of design-variable tables"
+    if spec.choices:
+        return "one of " + ", ".join(repr(c) for c in spec.choices)
+    parts = [spec.units] if spec.units else []
+    if spec.shape:
+        kind = " x ".join(str(n) for n in spec.shape) + " numbers"
+        parts.insert(0, kind)
+    elif tp is int:
+        parts.insert(0, "integer")
+    elif tp is str:
+        parts.insert(0, "string")
+    if spec.unit_vector:
+        parts.append("unit vector")
+    if _range_text(spec):
+        parts.append(_range_text(spec))
+    return ", ".join(parts) if parts else "number"
+
+
+@functools.cache
+def _hints(cls) -> dict:
+    return typing.get_type_hints(cls)
+
+
+def _check_keys(data, allowed: Mapping[str, str], path: str) -> None:
+    """Reject a non-table, unknown keys and missing keys; ``allowed`` maps key -> description."""
+    if not isinstance(data, Mapping):
+        what = f"'{path}'" if path else "a vehicle description"
+        raise VehicleSpecError(f"{what} must be a table, got {_show(data)}")
+    for key in data:
+        if key not in allowed:
+            names = ", ".join(repr(k) for k in sorted(allowed))
+            raise VehicleSpecError(f"unknown key '{_join(path, key)}'; allowed keys: {names}")
+    for key, description in allowed.items():
+        if key not in data:
+            raise VehicleSpecError(f"missing key '{_join(path, key)}' ({description})")
+
+
+def _read_fields(cls, data, path: str, skip: str = "") -> dict:
+    """Check the keys of a table and convert every file-backed field of ``cls`` except ``skip``."""
+    hints = _hints(cls)
+    fields = {f.name + _spec(f).suffix: f for f in dataclasses.fields(cls) if not _spec(f).derived}
+    _check_keys(data, {k: _describe(hints[f.name], _spec(f)) for k, f in fields.items()}, path)
+    return {
+        f.name: _convert(hints[f.name], _spec(f), data[key], _join(path, key))
+        for key, f in fields.items()
+        if f.name != skip
+    }
+
+
+def _convert(tp, spec: _Spec, value, path: str):
+    if dataclasses.is_dataclass(tp):
+        return tp(**_read_fields(tp, value, path))
+    if typing.get_origin(tp) is tuple:
+        item = typing.get_args(tp)[0]
+        if dataclasses.is_dataclass(item):
+            return _table_list(item, spec, value, path)
+        array = _array(value, spec.shape, spec, path)
+        if spec.unit_vector and not math.isclose(math.hypot(*array), 1.0, rel_tol=1e-6):
+            raise VehicleSpecError(
+                f"'{path}' = {value!r} is out of range: must be a unit vector "
+                f"(norm 1), got norm {_fmt(math.hypot(*array))}"
+            )
+        return array
+    if tp is float:
+        return _number(value, spec, path)
+    if tp is int:
+        return _integer(value, spec, path)
+    return _string(value, spec, path)
+
+
+def _out_of_range(path: str, value, spec: _Spec) -> VehicleSpecError:
+    return VehicleSpecError(
+        f"'{path}' = {value!r} is out of range: must be {_range_text(spec)}{_units_suffix(spec)}"
+    )
+
+
+def _in_range(x: float, spec: _Spec) -> bool:
+    return not (
+        (spec.gt is not None and x <= spec.gt)
+        or (spec.ge is not None and x < spec.ge)
+        or (spec.lt is not None and x >= spec.lt)
+        or (spec.le is not None and x > spec.le)
+    )
+
+
+def _number(value, spec: _Spec, path: str) -> float:
+    if not _is_number(value):
+        raise VehicleSpecError(f"'{path}' must be a number, got {_show(value)}")
+    x = float(value)
+    if not math.isfinite(x):
+        raise VehicleSpecError(f"'{path}' = {value!r} is out of range: must be a finite number")
+    if not _in_range(x, spec):
+        raise _out_of_range(path, value, spec)
+    return x * spec.scale
+
+
+def _integer(value, spec: _Spec, path: str) -> int:
+    if not (_is_number(value) and float(value).is_integer()):
+        raise VehicleSpecError(f"'{path}' must be an integer, got {_show(value)}")
+    n = int(value)
+    if spec.choices and n not in spec.choices:
+        allowed = ", ".join(str(c) for c in spec.choices)
+        raise VehicleSpecError(f"'{path}' = {value!r} is not allowed: must be one of {allowed}")
+    if not _in_range(n, spec):
+        raise _out_of_range(path, value, spec)
+    return n
+
+
+def _string(value, spec: _Spec, path: str) -> str:
+    if not isinstance(value, str):
+        raise VehicleSpecError(f"'{path}' must be a string, got {_show(value)}")
+    if spec.choices and value not in spec.choices:
+        if spec.polar_file and value.lower().endswith(_POLAR_SUFFIXES):
+            if not os.path.isfile(value):
+                raise VehicleSpecError(f"'{path}' = {value!r}: polar file not found")
+            return os.path.abspath(value)
+        allowed = ", ".join(repr(c) for c in spec.choices)
+        extra = (f", or a polar file ({', '.join(_POLAR_SUFFIXES)}: alpha [deg], cl, cd)"
+                 if spec.polar_file else "")
+        raise VehicleSpecError(f"'{path}' = {value!r} is not allowed: must be one of "
+                               f"{allowed}{extra}")
+    return value
+
+
+def _array(value, shape: tuple[int, ...], spec: _Spec, path: str) -> tuple:
+    """A nested list of numbers with ``shape`` -> nested tuples of converted floats."""
+    if not shape:
+        return _number(value, spec, path)
+    n = shape[0]
+    what = f"a list of {n} " + ("numbers" if len(shape) == 1 else "lists")
+    if not isinstance(value, list):
+        raise VehicleSpecError(f"'{path}' must be {what}, got {_show(value)}")
+    if len(value) != n:
+        raise VehicleSpecError(f"'{path}' must have {n} elements, got {len(value)}")
+    return tuple(_array(v, shape[1:], spec, f"{path}[{i}]") for i, v in enumerate(value))
+
+
+def _table_list(cls, spec: _Spec, value, path: str) -> tuple:
+    if not isinstance(value, list):
+        raise VehicleSpecError(
+            f"'{path}' must be a list of tables ([[{path}]]), got {_show(value)}"
+        )
+    if spec.count is not None and len(value) != spec.count:
+        raise VehicleSpecError(
+            f"'{path}' must have exactly {spec.count} entries ({spec.count_note}), got {len(value)}"
+        )
+    if not value:
+        raise VehicleSpecError(f"'{path}' must have at least one entry ({spec.count_note})")
+    return tuple(cls(**_read_fields(cls, v, f"{path}[{i}]")) for i, v in enumerate(value))
+
