@@ -20,8 +20,12 @@ def test_analyze_reference_vehicle(tmp_path, capsys):
     assert (tmp_path / "n2.html").stat().st_size > 0
     assert (tmp_path / "out" / "constraints.md").exists()
     case = om.CaseReader(str(tmp_path / "out" / "cases.sql")).get_case("final")
-    # Paper Table 8: the initial design weighs 3723.99 kg.
+    # The calibration target (true by construction: W_other is calibrated so that the initial
+    # design weighs the paper's 3723.99 kg, Table 8); what the analysis itself computes: the
+    # untrimmed hover's thrust is below the weight (85 %).
     assert_near_equal(case.get_val("gross_mass", units="kg"), 3723.99, 1e-8)
+    thrust = case.get_val("hover.lift_thrust", units="N").sum()
+    assert 0.5 < thrust / (3723.99 * 9.81) < 1.0
 
 
 def test_analyze_reports_a_bad_vehicle_file(tmp_path, capsys):

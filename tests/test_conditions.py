@@ -10,7 +10,6 @@ from lpc_mdo.components.dynamics.eom import GRAVITY
 from lpc_mdo.drivers import IpoptDriver
 from lpc_mdo.groups.lpc import LPCGroup
 
-pytest.importorskip("cyipopt")
 
 
 def condition_problem(name, design_vars=(), constraints=(), objective=None):
@@ -28,6 +27,7 @@ def condition_problem(name, design_vars=(), constraints=(), objective=None):
     return prob
 
 
+@pytest.mark.requires_ipopt
 def test_hover_trim_is_reachable_by_rpm_alone():
     prob = condition_problem(
         "hover", design_vars=[("hover_lift_rpm", dict(lower=500.0, upper=2500.0, ref=1e3))],
@@ -47,6 +47,7 @@ def test_hover_trim_is_reachable_by_rpm_alone():
                                atol=1e-6)
 
 
+@pytest.mark.requires_ipopt
 def test_cruise_trim_by_pitch_elevator_and_pusher_speed():
     prob = condition_problem(
         "cruise",
@@ -70,6 +71,7 @@ def test_cruise_trim_by_pitch_elevator_and_pusher_speed():
     assert -0.1 < prob.get_val("cruise.static_margin")[0] < 1.5
 
 
+@pytest.mark.requires_ipopt
 def test_plus_3g_trim_by_pitch_alone():
     prob = condition_problem(
         "plus_3g", design_vars=[("plus_3g_pitch", dict(lower=-0.2, upper=0.4, ref=0.1))],

@@ -24,7 +24,6 @@ from openmdao.test_suite.components.sellar import SellarImplicitDis1, SellarImpl
 from lpc_mdo.drivers import IpoptDriver
 from lpc_mdo.post import figures, report, statistics, tables
 
-pytest.importorskip("cyipopt")
 pytestmark = pytest.mark.filterwarnings("ignore:The following groups have a nonlinear solver")
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
@@ -146,7 +145,7 @@ def sellar_run(path):
 
 
 @pytest.fixture(scope="module")
-def runs(tmp_path_factory):
+def runs(tmp_path_factory, ipopt):
     """Case files of all runs, each in its own folder of one study folder."""
     root = tmp_path_factory.mktemp("study")
     with pytest.MonkeyPatch.context() as mp:
