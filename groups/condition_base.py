@@ -48,10 +48,9 @@ class ConditionVariable:
     Attributes
     ----------
     name : str
-        Suffix of the design variable: the vehicle file's design variable is
-        ``{design_variable_prefix}_{name}`` (see :func:`condition_layout`).
-    target : str
-        The condition group's promoted input it drives.
+        The condition group's promoted input it drives, and the suffix of the design variable:
+        the vehicle file's design variable is ``{design_variable_prefix}_{name}`` (see
+        :func:`condition_layout`), one name for the quantity through the model.
     target_shape : tuple of int
         Shape of that input; the condition's entries of the design variable are flattened into
         it.
@@ -70,7 +69,6 @@ class ConditionVariable:
     """
 
     name: str
-    target: str
     target_shape: tuple
     shape: tuple
     units: str

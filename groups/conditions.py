@@ -20,8 +20,11 @@ Kinds and their groups (the reference vehicle's conditions in parentheses):
 
 Variable names inside a condition (promoted): ``lift_radius`` (num_lift,), ``lift_chord_cp``,
 ``lift_twist_cp`` (num_lift, 4), ``lift_hub_position`` (num_lift, 3), ``lift_motor_length``
-(num_lift,), ``lift_rotor_speed`` (1, num_speed_groups) (in transition also
-``lift_roll_yaw_rpm``, (1, 2)) and the ``pusher_`` equivalents; outputs
+(num_lift,) and the ``pusher_`` equivalents. Each design variable a condition owns reaches it
+as an input of its suffix's name, one name per quantity (``transition_lift_rpm`` row k ->
+``transition_k.lift_rpm``): ``lift_rpm`` (1, num_speed_groups: per pair, or per working rotor
+in OEI), in transition ``roll_yaw_rpm`` (1, 2), ``pusher_rpm`` (1, 1), ``pitch``, ``elevator``
+(1,). Each lift rotor's own speed is ``lift_rotor_rpm`` (num_lift, 1). Outputs
 ``linear_acceleration``, ``angular_acceleration`` (1, 3), ``electrical_power`` (1,),
 ``lift_motor_em_torque``/``pusher_motor_em_torque``, and the discipline outputs.
 """
@@ -122,28 +125,28 @@ _WING_BOX_INPUTS = ("wing_box_nodes", "box_width", "box_height", "top_skin_thick
                     "top_skin_radius", "bottom_skin_radius")
 
 
-def _speed_variable(target, count, description, name="lift_rpm"):
-    """Rotor speeds as a (1, count) input of the condition."""
-    return ConditionVariable(name, target, (1, count), (count,), "rpm", description)
+def _speed_variable(count, description):
+    """Lift-rotor speeds per speed group as a (1, count) input ``lift_rpm`` of the condition."""
+    return ConditionVariable("lift_rpm", (1, count), (count,), "rpm", description)
 
 
-_PUSHER_RPM = ConditionVariable("pusher_rpm", "pusher_rpm", (1, 1), (1,), "rpm", "pusher speed")
-_ELEVATOR = ConditionVariable("elevator", "elevator", (1,), (1,), "rad", "h-tail deflection")
-_PITCH = ConditionVariable("pitch", "pitch", (1,), (1,), "rad", "aircraft pitch",
-                           initial_from="pitch")
+_PUSHER_RPM = ConditionVariable("pusher_rpm", (1, 1), (1,), "rpm", "pusher speed")
+_ELEVATOR = ConditionVariable("elevator", (1,), (1,), "rad", "h-tail deflection")
+_PITCH = ConditionVariable("pitch", (1,), (1,), "rad", "aircraft pitch", initial_from="pitch")
 
 
-def _add_motors(group, vehicle, prefix, num_motors):
+def _add_motors(group, vehicle, prefix, num_motors, rpm):
     """Motors of the ``prefix`` rotors (torque floored at idle), promoted as ``{prefix}_motor_*``.
 
-    Inputs ``{prefix}_torque`` (rotor shaft torque), ``{prefix}_rpm``, ``{prefix}_motor_length``.
+    Inputs ``{prefix}_torque`` (rotor shaft torque), ``rpm`` (each rotor's speed),
+    ``{prefix}_motor_length``.
     """
     group.add_subsystem(f"{prefix}_shaft", ShaftTorqueComp(num_motors=num_motors),
                         promotes_inputs=[("rotor_torque", f"{prefix}_torque")])
     group.add_subsystem(f"{prefix}_motors", MotorGroup(
         num_motors=num_motors, num_nodes=1, length_to_diameter=vehicle.motor.length_to_diameter,
         parameters=motor_parameters(vehicle), **motor_loadings(vehicle)),
-        promotes_inputs=[("length", f"{prefix}_motor_length"), ("rotor_rpm", f"{prefix}_rpm")],
+        promotes_inputs=[("length", f"{prefix}_motor_length"), ("rotor_rpm", rpm)],
         promotes_outputs=[(name, f"{prefix}_motor_{name}") for name in
                           ("input_power", "em_torque", "torque_margin", "peak_torque")])
     group.connect(f"{prefix}_shaft.motor_load_torque", f"{prefix}_motors.rotor_torque")
@@ -173,31 +176,31 @@ def _add_lift_rotors(group, vehicle, rotors, speed_groups, num_groups, edgewise,
     """Lift rotors (BEM or Pitt–Peters) with their speeds and motors, promoted as ``lift_*``.
 
     With ``roll_yaw`` the rotor speeds also take the roll and yaw differentials, input
-    ``lift_roll_yaw_rpm`` (1, 2) (:func:`roll_yaw_mixing`).
+    ``roll_yaw_rpm`` (1, 2) (:func:`roll_yaw_mixing`).
     """
     na = len(rotors)
     opts = group.options
-    promoted = [("group_speed", "lift_rotor_speed")]
+    promoted = [("group_speed", "lift_rpm")]
     if roll_yaw:
-        promoted.append(("mixer_speed", "lift_roll_yaw_rpm"))
+        promoted.append(("mixer_speed", "roll_yaw_rpm"))
     group.add_subsystem("lift_speed", RotorSpeedComp(
         group=speed_groups, num_groups=num_groups,
         mixing=roll_yaw_mixing(rotors) if roll_yaw else None),
-        promotes_inputs=promoted, promotes_outputs=[("rpm", "lift_rpm")])
+        promotes_inputs=promoted, promotes_outputs=[("rpm", "lift_rotor_rpm")])
     rotor_cls = PittPetersRotorGroup if edgewise else BEMRotorGroup
     kwargs = {"num_azimuth": opts["num_azimuth"]} if edgewise else {}
     group.add_subsystem("lift_rotors", rotor_cls(
         rotors=list(rotors), num_nodes=1, num_radial=opts["num_radial"],
         polar=opts["rotor_polar"], **kwargs),
         promotes_inputs=[("radius", "lift_radius"), ("chord_cp", "lift_chord_cp"),
-                         ("twist_cp", "lift_twist_cp"), ("rpm", "lift_rpm"),
+                         ("twist_cp", "lift_twist_cp"), ("rpm", "lift_rotor_rpm"),
                          ("hub_position", "lift_hub_position"), "velocity", "density",
                          "speed_of_sound", "dynamic_viscosity"],
         promotes_outputs=[("thrust", "lift_thrust"), ("torque", "lift_torque"),
                           ("power", "lift_power"), ("tip_mach", "lift_tip_mach"),
                           ("figure_of_merit", "lift_figure_of_merit"),
                           ("total_force", "lift_force"), ("total_moment", "lift_moment")])
-    _add_motors(group, vehicle, "lift", na)
+    _add_motors(group, vehicle, "lift", na, "lift_rotor_rpm")
     group.set_input_defaults("lift_radius", np.array([r.radius for r in rotors]), units="m")
     group.set_input_defaults("lift_hub_position", np.array([r.hub_position for r in rotors]),
                              units="m")
@@ -217,7 +220,7 @@ def _add_pusher(group, vehicle):
         promotes_outputs=[("thrust", "pusher_thrust"), ("torque", "pusher_torque"),
                           ("power", "pusher_power"), ("efficiency", "pusher_efficiency"),
                           ("total_force", "pusher_force"), ("total_moment", "pusher_moment")])
-    _add_motors(group, vehicle, "pusher", 1)
+    _add_motors(group, vehicle, "pusher", 1, "pusher_rpm")
     group.set_input_defaults("pusher_radius", np.array([pusher.radius]), units="m")
     group.set_input_defaults("pusher_hub_position", np.array([pusher.hub_position]), units="m")
 
@@ -372,9 +375,9 @@ class HoverCondition(ConditionGroup):
     def variables(cls, vehicle, condition):
         if condition.failed_rotor < 0:
             n = num_lift_pairs(vehicle.lift_rotors)
-            return (_speed_variable("lift_rotor_speed", n, "lift-rotor speed per pair"),)
+            return (_speed_variable(n, "lift-rotor speed per pair"),)
         n = len(vehicle.lift_rotors) - 1
-        return (_speed_variable("lift_rotor_speed", n, "speed of the working lift rotors, in "
+        return (_speed_variable(n, "speed of the working lift rotors, in "
                                 "lift_rotors order (the failed one skipped)"),)
 
     @classmethod
@@ -465,7 +468,7 @@ class HoverCondition(ConditionGroup):
             self.connect("lift_rotors.chord", "noise.chord")
             self.connect("lift_thrust", "noise.thrust", src_indices=np.arange(na),
                          flat_src_indices=True)
-            self.connect("lift_rpm", "noise.rpm", src_indices=np.arange(na),
+            self.connect("lift_rotor_rpm", "noise.rpm", src_indices=np.arange(na),
                          flat_src_indices=True)
 
 
@@ -559,8 +562,8 @@ class TransitionCondition(ConditionGroup):
     problem constrains u_dot and w_dot to the prescribed acceleration (dV/dt cos theta,
     dV/dt sin theta) and v_dot, p_dot, q_dot, r_dot to zero.
 
-    The rotors turn at their pair's ``lift_rotor_speed`` (1, 4; the paper's per-pair speed)
-    plus the roll and yaw differentials ``lift_roll_yaw_rpm`` (1, 2; not in the paper; left
+    The rotors turn at their pair's ``lift_rpm`` (1, 4; the paper's per-pair speed)
+    plus the roll and yaw differentials ``roll_yaw_rpm`` (1, 2; not in the paper; left
     minus right and spin +1 minus spin -1 rotor speed, :func:`roll_yaw_mixing`): the roll and
     yaw trim, since the pusher's torque reaction rolls the vehicle and the h-tail deflects
     symmetrically.
@@ -578,9 +581,9 @@ class TransitionCondition(ConditionGroup):
     @classmethod
     def variables(cls, vehicle, condition):
         n = num_lift_pairs(vehicle.lift_rotors)
-        return (_speed_variable("lift_rotor_speed", n, "lift-rotor speed, mean of the pair; "
+        return (_speed_variable(n, "lift-rotor speed, mean of the pair; "
                                 "columns: pairs"),
-                ConditionVariable("roll_yaw_rpm", "lift_roll_yaw_rpm", (1, 2), (2,), "rpm",
+                ConditionVariable("roll_yaw_rpm", (1, 2), (2,), "rpm",
                                   "lift-rotor speed differentials; columns: roll (left, y < 0, "
                                   "minus right rotors), yaw (spin +1 minus spin -1 rotors)"),
                 _PUSHER_RPM, _ELEVATOR)
@@ -620,7 +623,7 @@ class TransitionCondition(ConditionGroup):
         lower = np.ravel(lower)[entry.flat_indices][pairs]
         upper = np.ravel(upper)[entry.flat_indices][pairs]
         ref = dv.ref
-        return (ConditionConstraint("rotor_speed", "lift_rpm",
+        return (ConditionConstraint("rotor_speed", "lift_rotor_rpm",
                                     {"lower": lower, "upper": upper, "ref": ref,
                                      "units": "rpm", "linear": True}),)
 

@@ -127,7 +127,7 @@ class LPCGroup(om.Group):
             for entry in layout.entries[name].values():
                 v = entry.variable
                 # A tuple: one fancy index of the flattened source, shaped like the target.
-                self.connect(entry.design_variable, f"{name}.{v.target}",
+                self.connect(entry.design_variable, f"{name}.{v.name}",
                              src_indices=(entry.flat_indices.reshape(v.target_shape),),
                              flat_src_indices=True)
         for i, condition in enumerate(self._powered):

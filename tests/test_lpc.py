@@ -59,7 +59,7 @@ def _constraint_group(name, meta):
     cond = name.split(".")[0]
     if name == "hover.total_spl_a":
         return "hover noise"
-    if cond.startswith("transition") and name.endswith("lift_rpm"):
+    if cond.startswith("transition") and name.endswith("lift_rotor_rpm"):
         assert meta["linear"]
         return "transition lift rotor speed bounds"
     if name == "hover.lift_tip_mach":
@@ -119,7 +119,7 @@ def test_transition_rotor_speed_bounds_are_the_pair_bounds(lpc):
     # own speed (pair mean + the roll/yaw differentials' share) gets the same bounds, linear.
     cons = lpc.model.get_constraints()
     for k in range(1, 6):
-        meta = cons[f"transition_{k}.lift_rpm"]
+        meta = cons[f"transition_{k}.lift_rotor_rpm"]
         assert meta["linear"] and meta["size"] == 8 and meta["units"] == "rpm"
         assert_near_equal(meta["lower"], np.full(8, 100.0), 1e-12)
         assert_near_equal(meta["upper"], np.full(8, 2000.0), 1e-12)
