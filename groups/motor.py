@@ -45,7 +45,7 @@ class MotorGroup(om.Group):
     """
     Interior PMSM model of the lift-plus-cruise motors: sizing, equivalent circuit, operation.
 
-    reference/models_structures_motor_vehicle.md §7 and paper Sec. III.F (eqs. 23-26):
+    docs theory/motor and paper Sec. III.F (eqs. 23-26):
 
     - ``sizing`` (MotorSizingComp): D, mass (eq. 23), peak torque, internal geometry;
     - ``ecm_parameters`` (MotorECMParametersComp): magnet and circuit parameters, R_dc;
@@ -190,7 +190,7 @@ def motor_analysis(length, rotor_torque, rotor_rpm, length_to_diameter=0.5, gear
     Size a PMSM from its length and analyse it at given rotor torques and speeds.
 
     Builds a small Problem around :class:`MotorGroup`, runs it and returns plain numbers
-    (reference/models_structures_motor_vehicle.md §7; paper eqs. 23-26).
+    (docs theory/motor; paper eqs. 23-26).
 
     Parameters
     ----------

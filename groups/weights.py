@@ -87,7 +87,8 @@ def placeholder_calibration_inputs(vehicle=None):
     """
     Return the wing and motor masses used to calibrate W_other until their models are connected.
 
-    - ``wing_mass`` (kg): the M4 wing regression (ref §5.2, public-code alternative to the beam)
+    - ``wing_mass`` (kg): the M4 wing regression (docs theory/weights 'M4 regressions', public-code
+      alternative to the beam)
       at the vehicle's initial planform, battery mass and cruise speed; 283.3605 kg for the
       reference vehicle.
     - ``motor_mass`` (kg, 9 values in :func:`motor_group_indices` order): paper eq. 23,
@@ -134,12 +135,16 @@ class WeightsGroup(om.Group):
     Component masses, gross mass (paper eqs. 31-33) and mass properties of the whole vehicle.
 
     Subsystems (all variables promoted): ``fuselage``, ``booms``, ``empennage``
-    (M4 regressions, ref §5), ``wing`` (only with ``wing_model='regression'``), ``gross_weight``
-    (:class:`GrossWeightComp`) and ``mass_properties`` (:class:`MassPropertiesComp`, ref §4.3)
+    (M4 regressions, docs theory/weights 'M4 regressions'), ``wing`` (only with
+    ``wing_model='regression'``), ``gross_weight``
+    (:class:`GrossWeightComp`) and ``mass_properties`` (:class:`MassPropertiesComp`, docs
+    theory/weights 'Mass properties')
     over the bodies of :data:`VEHICLE_MASS_ITEMS`. Input defaults come from the vehicle.
 
-    Inputs (promoted)
-    -----------------
+    The inputs are promoted.
+
+    Inputs
+    ------
     wing_area, wing_aspect_ratio, fuselage_length : float, (1,), m**2 / - / m
         Planform design variables (regressors).
     htail_area, vtail_area : float, (1,), m**2
@@ -168,8 +173,10 @@ class WeightsGroup(om.Group):
     power_electronics_cg, payload_cg, systems_cg, other_cg : float, (3,), m
         Their cg, default ``vehicle.masses``.
 
-    Outputs (promoted)
-    ------------------
+    The outputs are promoted.
+
+    Outputs
+    -------
     fuselage_mass, boom_mass, empennage_mass : float, (1,), kg
         Regression masses (and ``wing_mass`` with ``wing_model='regression'``).
     fuselage_cg, boom_cg, empennage_cg : float, (3,), m
@@ -340,7 +347,8 @@ def calibrate_other_mass(vehicle=None, *, wing_mass=None, motor_mass=None,
     Return W_other such that the vehicle's initial design has the target gross mass.
 
     The paper chose W_other "so that the initial gross weight computed by our computational
-    model matches closely with the NASA reference" (Sec. IV; ref §4.1, §9.3). This builds a
+    model matches closely with the NASA reference" (Sec. IV; docs theory/weights 'Gross mass', docs
+    theory/optimization 'Objective and baseline'). This builds a
     :class:`WeightsGroup` of the vehicle at its initial design, with the given wing and motor
     masses, and solves eq. 31 for W_other. Re-run it whenever the wing or motor model (or any
     other mass model) changes.

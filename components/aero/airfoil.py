@@ -1,6 +1,7 @@
 """
 Tabulated airfoil polars: smooth (C1) interpolation over alpha, Reynolds and Mach, Viterna to
-+-90 deg and reverse flow to +-180 deg (reference/models_aero_rotor_acoustics.md §6.2–6.4).
++-90 deg and reverse flow to +-180 deg (docs theory/aerodynamics 'Airfoil polars',
+'Viterna extrapolation', 'Linear-quadratic polar').
 
 :func:`get_polar` turns an airfoil name ('naca0012', 'naca0015', 'ls413', 'ls417'), a user table
 of (alpha [deg], cl, cd) at one Reynolds and Mach number (array, dict or file) or a ready
@@ -200,12 +201,12 @@ def tensor_eval(table, index, weights, dweights):
     """
     Tensor-product interpolation over the 3 leading table axes, with the 3 partial derivatives.
 
-    value = sum_abc T[i_a, j_b, k_c, ...] u_a v_b w_c for each query; the derivative along an
+    ``value = sum_abc T[i_a, j_b, k_c, ...] u_a v_b w_c`` for each query; the derivative along an
     axis replaces that axis' weights by its derivative weights.
 
     Parameters
     ----------
-    table : ndarray, (n1, n2, n3, *value_shape)
+    table : ndarray, shape (n1, n2, n3) + value_shape
     index : sequence of three (N, width) int arrays
         Node indices of each query's window on each axis.
     weights, dweights : sequences of three (N, width) arrays
@@ -213,7 +214,7 @@ def tensor_eval(table, index, weights, dweights):
 
     Returns
     -------
-    tuple of ndarray, each (N, *value_shape)
+    tuple of ndarray, each of shape (N,) + value_shape
         (value, d/dq1, d/dq2, d/dq3).
     """
     i1, i2, i3 = index

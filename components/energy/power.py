@@ -7,7 +7,7 @@ import openmdao.api as om
 class TotalPowerComp(om.ExplicitComponent):
     """
     P_elec = sum over all motors of the motor input power (paper Sec. III.G: the power of each
-    mission segment; reference/models_structures_motor_vehicle.md §8.10 default).
+    mission segment; docs theory/energy default).
 
     Inputs
     ------

@@ -8,7 +8,7 @@ class SurfaceSizingComp(om.ExplicitComponent):
     """
     Span, root and tip chord and mean aerodynamic chord from area, aspect ratio and taper.
 
-    Trapezoidal planform (reference/models_structures_motor_vehicle.md §3.1, CADDEE wing
+    Trapezoidal planform (docs theory/geometry 'Reference vehicle', CADDEE wing
     formulas):
 
     - b = sqrt(AR S)
