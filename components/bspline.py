@@ -56,8 +56,8 @@ class BsplineComp(om.ExplicitComponent):
     Clamped B-spline: control points to curve values at normalized stations x in [0, 1].
 
     Implements BladeAD ``BsplineParameterization`` (docs theory/rotors 'Blade parameterization'):
-    curve(x) = sum_j N_j,order(x) cp_j with a clamped (open uniform) knot vector, so
-    curve(0) = cp_0 and curve(1) = cp_last. With the default num_cp = 4, order = 4 the knots are
+    curve(x) = sum_j N_j,order(x) cp_j with a clamped (open uniform) knot vector, so curve(0) = cp_0
+    and curve(1) = cp_last. With the default num_cp = 4, order = 4 the knots are
     [0,0,0,0,1,1,1,1] and the curve is the cubic Bezier sum_i C(3,i) x^i (1-x)^(3-i) cp_i;
     control points linear in their Greville abscissae (equally spaced when num_cp = order) give an
     exactly linear curve. Evaluated by default at x = linspace(0, 1, num_points), uniform in x;

@@ -2,8 +2,8 @@
 
 ``RotorNoiseGroup`` assembles the acoustic components of ``lpc_mdo.components.acoustics`` for
 ``num_rotors`` rotors heard by one observer (paper Sec. III.E; docs theory/acoustics).
-``a_weighting(frequency)`` and ``rotor_noise(...)`` are plain functions for use
-outside an OpenMDAO model.
+``a_weighting(frequency)`` and ``rotor_noise(...)`` are plain functions for use outside an OpenMDAO
+model.
 """
 
 import numpy as np
@@ -47,8 +47,8 @@ class RotorNoiseGroup(om.Group):
     -> ``loading`` (LowsonLoadingNoiseComp, eq. 21) · ``thickness`` (BarryMagliozziThicknessComp)
     · ``broadband`` (GillLeeBroadbandComp, eq. 22)
     -> ``tonal_weighting``/``broadband_weighting`` (AWeightingComp, docs theory/acoustics
-    'A-weighting')
-    -> ``total_a`` and ``total`` (TotalNoiseComp, docs theory/acoustics 'Total noise').
+    'A-weighting') -> ``total_a`` and ``total`` (TotalNoiseComp, docs theory/acoustics 'Total
+    noise').
 
     All variables are promoted. The hover constraint of the paper is ``total_spl_a`` <= 70 dBA
     (``HOVER_NOISE_LIMIT_DBA``) with the default observer (100 m from the rotor-hub centroid,

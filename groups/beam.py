@@ -87,8 +87,7 @@ class BoxBeamGroup(om.Group):
     """
     Wing-box beam: box section, frame FEM, stress recovery and skin-panel buckling.
 
-    docs theory/structures and paper eqs. 17-18. Subsystems, all
-    promoted, in execution order:
+    docs theory/structures and paper eqs. 17-18. Subsystems, all promoted, in execution order:
 
     - ``section`` (BoxSectionComp): A, I_y, I_z, J and the mean web thickness from the box
       width and height and the four wall thicknesses (per element = per bay);
@@ -359,9 +358,8 @@ def box_beam(nodes, width, height, top_skin_thickness, bottom_skin_thickness, we
     Solve a box beam of consecutive nodes from box dimensions and wall thicknesses.
 
     The same model as BoxBeamGroup: box section (docs theory/structures 'Box section'), frame FEM,
-    stresses at
-    five points per element (docs theory/structures 'Stress') and skin-panel buckling (paper eq.
-    18).
+    stresses at five points per element (docs theory/structures 'Stress') and skin-panel buckling
+    (paper eq. 18).
 
     Parameters
     ----------

@@ -14,8 +14,8 @@ class PittPetersRotorGroup(RotorGroupBase):
     :class:`~lpc_mdo.groups.rotor.BEMRotorGroup`, so a condition group can use either. Subsystems
     (all variables promoted):
 
-    - ``blade``: BladeGeometryGroup (stations, chord and twist B-splines; docs theory/rotors
-      'Blade parameterization', 'Stations and disk frame');
+    - ``blade``: BladeGeometryGroup (stations, chord and twist B-splines; docs theory/rotors 'Blade
+      parameterization', 'Stations and disk frame');
     - ``velocity``: RotorVelocityComp (body velocity to each disk's axial and in-plane
       velocity), if ``body_frame``;
     - ``inflow``: PittPetersInflowComp (the three inflow states per rotor and operating point,
@@ -83,14 +83,13 @@ class PittPetersRotorGroup(RotorGroupBase):
     num_nodes, num_radial, num_azimuth, num_cp : int
         Operating points (1), radial stations (25), azimuthal stations (25), control points (4).
     polar : Polar
-        Sectional polar. Default LinearQuadraticPolar() (docs theory/aerodynamics
-        'Linear-quadratic polar').
+        Sectional polar. Default LinearQuadraticPolar() (docs theory/aerodynamics 'Linear-quadratic
+        polar').
     tip_loss, hub_loss : bool
         Prandtl losses (default True).
     loss_placement : str
-        'momentum' (default, as the BEM) or 'blade_element' (docs theory/rotors
-        'Pitt-Peters inflow'); see
-        PittPetersInflowComp.
+        'momentum' (default, as the BEM) or 'blade_element' (docs theory/rotors 'Pitt-Peters
+        inflow'); see PittPetersInflowComp.
     tangential_induction : bool
         Wake swirl per station (default True; see PittPetersLoadsComp).
     quadrature, spline_stations : str

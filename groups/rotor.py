@@ -151,14 +151,14 @@ class BEMRotorGroup(RotorGroupBase):
 
     Subsystems (all variables promoted):
 
-    - ``blade``: BladeGeometryGroup (stations, chord and twist B-splines; docs theory/rotors
-      'Blade parameterization', 'Stations and disk frame');
+    - ``blade``: BladeGeometryGroup (stations, chord and twist B-splines; docs theory/rotors 'Blade
+      parameterization', 'Stations and disk frame');
     - ``velocity``: RotorVelocityComp (body velocity to each disk's axial velocity), if
       ``body_frame``;
     - ``inflow``: BEMInflowComp (inflow angle of every station, paper eq. 13, docs theory/rotors
       'BEM inflow residual');
-    - ``loads``: BEMLoadsComp (sectional loads, thrust, torque; eq. 12, docs theory/rotors
-      'Loads and coefficients');
+    - ``loads``: BEMLoadsComp (sectional loads, thrust, torque; eq. 12, docs theory/rotors 'Loads
+      and coefficients');
     - ``performance``: RotorPerformanceComp (power, C_T, C_P, J, eta, FoM, tip Mach; docs
       theory/rotors 'Loads and coefficients');
     - ``hub_loads``: HubLoadsComp (forces and moments in the body frame), if ``body_frame``.
@@ -212,8 +212,8 @@ class BEMRotorGroup(RotorGroupBase):
     num_nodes, num_radial, num_cp : int
         Operating points (1), radial stations (25), control points (4).
     polar : Polar
-        Sectional polar. Default LinearQuadraticPolar() (docs theory/aerodynamics
-        'Linear-quadratic polar').
+        Sectional polar. Default LinearQuadraticPolar() (docs theory/aerodynamics 'Linear-quadratic
+        polar').
     tip_loss, hub_loss : bool
         Prandtl losses (default True).
     tip_loss_form, quadrature, spline_stations : str

@@ -192,8 +192,7 @@ def calibrated_other_mass(vehicle):
 
     The paper calibrates W_other at the initial design because the NASA reference does not
     itemise every weight (docs theory/weights 'Gross mass'). Gross mass and cg are affine in W_other
-    and its
-    position, so one run of the vehicle group with W_other = 0 gives both exactly.
+    and its position, so one run of the vehicle group with W_other = 0 gives both exactly.
 
     Parameters
     ----------

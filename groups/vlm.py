@@ -34,8 +34,7 @@ class VLMGroup(om.Group):
     Steady vortex-lattice method for several lifting surfaces with mutual influence.
 
     Paper Sec. III.A, eqs. 10–11; docs theory/aerodynamics 'Vortex-lattice method'. One lattice
-    holds
-    all surfaces (wing and horizontal tail), so the tail sees the wing's wake and vice versa.
+    holds all surfaces (wing and horizontal tail), so the tail sees the wing's wake and vice versa.
     Vortex rings on the quarter-panel-shifted bound grid, wake a semi-infinite vortex pair per
     strip along the relative wind, a dense AIC system solved by LU in an ImplicitComponent
     (:class:`VLMCirculationComp`, whose own ``solve_linear`` reuses the factors, so the group

@@ -88,8 +88,8 @@ def placeholder_calibration_inputs(vehicle=None):
     Return the wing and motor masses used to calibrate W_other until their models are connected.
 
     - ``wing_mass`` (kg): the M4 wing regression (docs theory/weights 'M4 regressions', public-code
-      alternative to the beam)
-      at the vehicle's initial planform, battery mass and cruise speed; 283.3605 kg for the
+      alternative to the beam) at the vehicle's initial planform, battery mass and cruise speed;
+      283.3605 kg for the
       reference vehicle.
     - ``motor_mass`` (kg, 9 values in :func:`motor_group_indices` order): paper eq. 23,
       m = (pi/2) A_bar B_bar D**2 L/Q_sp with D = L/(L/D), at the initial ``motor_length`` design
@@ -136,10 +136,9 @@ class WeightsGroup(om.Group):
 
     Subsystems (all variables promoted): ``fuselage``, ``booms``, ``empennage``
     (M4 regressions, docs theory/weights 'M4 regressions'), ``wing`` (only with
-    ``wing_model='regression'``), ``gross_weight``
-    (:class:`GrossWeightComp`) and ``mass_properties`` (:class:`MassPropertiesComp`, docs
-    theory/weights 'Mass properties')
-    over the bodies of :data:`VEHICLE_MASS_ITEMS`. Input defaults come from the vehicle.
+    ``wing_model='regression'``), ``gross_weight`` (:class:`GrossWeightComp`) and
+    ``mass_properties`` (:class:`MassPropertiesComp`, docs theory/weights 'Mass properties') over
+    the bodies of :data:`VEHICLE_MASS_ITEMS`. Input defaults come from the vehicle.
 
     The inputs are promoted.
 

@@ -22,9 +22,9 @@ import openmdao.api as om
 from lpc_mdo.groups.acoustics import HOVER_NOISE_LIMIT_DBA, RotorNoiseGroup
 
 FT = 0.3048
-# Approximate LPC lift-rotor hubs (docs theory/geometry 'Reference vehicle', CADDEE
-# geometry in ft, x aft and z up) converted to the body frame (x forward, z down, origin at the
-# nose), in the rotor order [front_outer, rear_outer, front_inner, rear_inner, front_inner,
+# Approximate LPC lift-rotor hubs (docs theory/geometry 'Reference vehicle', CADDEE geometry in ft,
+# x aft and z up) converted to the body frame (x forward, z down, origin at the nose), in the rotor
+# order [front_outer, rear_outer, front_inner, rear_inner, front_inner,
 # rear_inner, front_outer, rear_outer].
 _HUBS_FT = np.array([[5.070, -18.750, 7.355], [19.200, -18.750, 9.635],
                      [4.630, -8.217, 7.659], [18.760, -8.537, 9.919],

@@ -28,8 +28,8 @@ class GillLeeBroadbandComp(om.ExplicitComponent):
     """
     One-third-octave broadband noise spectrum of each rotor by the Gill-Lee model (paper eq. 22).
 
-    docs theory/acoustics 'Broadband noise' (default, public-code function set; paper eq. 22
-    has f3 Delta**4 where f3 X**f4 with f4 = 1 is meant). Per rotor:
+    docs theory/acoustics 'Broadband noise' (default, public-code function set; paper eq. 22 has f3
+    Delta**4 where f3 X**f4 with f4 = 1 is meant). Per rotor:
 
     - blade area A_b = R sum_i w_i c_i; solidity sigma = B A_b/(pi R**2); solidity-weighted chord
       c_sw = A_b/R; C_T = T/(rho pi R**2 (Omega R)**2);

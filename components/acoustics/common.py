@@ -51,9 +51,9 @@ def radial_quadrature(num_radial, radial_stations=None, radial_weights=None,
 
     Integrals over the blade are R * sum_i w_i f(r_i). Defaults: stations at the centres of
     ``num_radial`` equal elements on [hub_radius_ratio, 1] (the BEM element centres of
-    docs theory/rotors 'Stations and disk frame') and, for any stations, weights equal to the
-    width of each station's cell, whose edges are the mid-points between stations and the hub
-    and tip (the midpoint rule for element centres; sum w = 1 - hub_radius_ratio).
+    docs theory/rotors 'Stations and disk frame') and, for any stations, weights equal to the width
+    of each station's cell, whose edges are the mid-points between stations and the hub and tip (the
+    midpoint rule for element centres; sum w = 1 - hub_radius_ratio).
 
     Raises ValueError naming the option if stations are not strictly increasing inside
     (hub_radius_ratio, 1], or weights are not positive or of the wrong length.

@@ -108,19 +108,19 @@ class ObserverGeometryComp(om.ExplicitComponent):
     Rotor-observer geometry and rotor kinematics for each rotor (steady observer).
 
     Equations (docs theory/acoustics 'Observer geometry' and 'Tonal loading noise' "common
-    geometry"), with
-    P = x_o - x_h the hub-to-observer vector and n = d/norm(d) the unit thrust axis:
+    geometry"), with P = x_o - x_h the hub-to-observer vector and n = d/norm(d) the unit thrust
+    axis:
 
     - distance S = norm(P); axial distance z = P.n (> 0 on the thrust side); in-plane distance
       Y = sqrt(S**2 - z**2 + 1e-12 m**2). The elevation of the observer above the rotor plane is
       arcsin(z/S) (theta_0 of docs theory/acoustics 'Observer geometry').
-    - Doppler (convective) distance r1 = S (1 - V.P/(S a)) = S - V.P/a, with V the vehicle
-      velocity in the body frame: shorter (louder) when the hub moves towards the observer.
+    - Doppler (convective) distance r1 = S (1 - V.P/(S a)) = S - V.P/a, with V the vehicle velocity
+      in the body frame: shorter (louder) when the hub moves towards the observer.
     - Observer azimuth phi_o in the rotor's azimuth frame (used by the edgewise Lowson path):
       e_y = normalised projection of the body y axis on the disk, e_x = n x e_y (as BladeAD,
       docs theory/rotors 'Stations and disk frame'); blade azimuth psi = 0 points aft (-e_x) and psi
-      grows in the direction of rotation,
-      right-handed about n for rotation_direction = +1 (counter-clockwise seen from above for a
+      grows in the direction of rotation, right-handed about n for rotation_direction = +1
+      (counter-clockwise seen from above for a
       lift rotor with n up), so the blade sits at r (-cos psi e_x + s sin psi e_y), s = +-1.
       cos phi_o = -P.e_x/Y and sin phi_o = s P.e_y/Y.
     - axial speed V.n and in-plane (edgewise) speed norm(V - (V.n) n) (with a 1e-12 (m/s)**2 floor

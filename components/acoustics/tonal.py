@@ -15,8 +15,8 @@ from lpc_mdo.components.acoustics.common import (
 )
 
 #: Smooth switch between the Sears (hover) and unsteady (edgewise) loading-noise paths
-#: (docs theory/acoustics 'Tonal loading noise'): weight of the unsteady path
-#: 0.5 tanh(SHARPNESS (v - THRESHOLD)) + 0.5, with v the in-plane flight speed in m/s.
+#: (docs theory/acoustics 'Tonal loading noise'): weight of the unsteady path 0.5 tanh(SHARPNESS (v
+#: - THRESHOLD)) + 0.5, with v the in-plane flight speed in m/s.
 PATH_SWITCH_THRESHOLD = 0.1
 PATH_SWITCH_SHARPNESS = 100.0
 
@@ -25,9 +25,9 @@ def sears_function(k):
     """
     Sears function S(k) = [J0(k) - i J1(k)] C(k) + i J1(k) and its k-derivative, as real pairs.
 
-    C(k) = F + iG is Theodorsen's function (docs theory/acoustics 'Sears path'):
-    F = (J1 (J1 + Y0) + Y1 (Y1 - J0))/den, G = -(Y1 Y0 + J1 J0)/den,
-    den = (J1 + Y0)**2 + (Y1 - J0)**2. Returns (Re S, Im S, dRe S/dk, dIm S/dk); k > 0.
+    C(k) = F + iG is Theodorsen's function (docs theory/acoustics 'Sears path'): F = (J1 (J1 + Y0) +
+    Y1 (Y1 - J0))/den, G = -(Y1 Y0 + J1 J0)/den, den = (J1 + Y0)**2 + (Y1 - J0)**2. Returns (Re S,
+    Im S, dRe S/dk, dIm S/dk); k > 0.
     S -> 1 as k -> 0 (quasi-steady) and abs(S) decays like 1/sqrt(2 pi k).
     """
     j0, j1, y0, y1 = bessel_j(0, k), bessel_j(1, k), bessel_y(0, k), bessel_y(1, k)
@@ -55,8 +55,8 @@ class SearsGustLoadsComp(om.ExplicitComponent):
     """
     Gust (unsteady) blade-load harmonics in hover from the Sears function (Kvurt & Stalnov).
 
-    docs theory/acoustics 'Sears path', load harmonics lambda = 1..L_g, per blade
-    and unit span, at each radial station r = rbar R:
+    docs theory/acoustics 'Sears path', load harmonics lambda = 1..L_g, per blade and unit span, at
+    each radial station r = rbar R:
 
     - U_t = Omega r; reduced frequency k = lambda Omega c/(2 U_t) = lambda c/(2 r);
     - gust amplitude w = q lambda_i Omega R/lambda with lambda_i = phi rbar, i.e. q phi U_t/lambda;
@@ -310,42 +310,41 @@ class LowsonLoadingNoiseComp(om.ExplicitComponent):
     Tonal loading noise of each rotor by Lowson & Ollerhead, with Sears-function gusts in hover.
 
     Frequency-domain far-field loading noise of rotating blade forces (Lowson & Ollerhead 1969;
-    paper Sec. III.E, eq. 21; docs theory/acoustics 'Tonal loading noise'). For the harmonic
-    n = m B (frequency m B rpm/60, m = 1..num_harmonics) and an observer at axial distance z and
-    in-plane distance Y of the hub, the blade loads per unit span with azimuthal Fourier
+    paper Sec. III.E, eq. 21; docs theory/acoustics 'Tonal loading noise'). For the harmonic n = m B
+    (frequency m B rpm/60, m = 1..num_harmonics) and an observer at axial distance z and in-plane
+    distance Y of the hub, the blade loads per unit span with azimuthal Fourier
     coefficients (a_lambda, b_lambda) (paper eq. 19) radiate the complex amplitude (one blade)
 
         p_n = 1/(2 pi r1) sum_lambda sum_i w_i R (-i)**k J_k(x_i) [-(n Omega z/(a r1)) T_lambda
               + (k/r_i) D_lambda],   k = n -+ lambda,  x_i = n Omega r_i Y/(a r1),
 
     with T_{-+lambda} = (a_lambda +- i b_lambda)/2, derived from the far-field compact dipole with
-    the Jacobi-Anger expansion; r1 is the Doppler-corrected distance (docs theory/acoustics
-    'Tonal loading noise' "common geometry"),
-    thrust is positive along the thrust axis and drag opposes rotation. This is the docs
-    theory/acoustics 'Tonal loading noise'
-    kernel with the (-i)**k phase written out; it reduces to Gutin's formula for steady loading
-    for every n (the public code's odd-(n - lambda) sign branch does not, see below). B equally
+    the Jacobi-Anger expansion; r1 is the Doppler-corrected distance (docs theory/acoustics 'Tonal
+    loading noise' "common geometry"), thrust is positive along the thrust axis and drag opposes
+    rotation. This is the docs theory/acoustics 'Tonal loading noise' kernel with the (-i)**k phase
+    written out; it reduces to Gutin's formula for steady loading for every n (the public code's
+    odd-(n - lambda) sign branch does not, see below). B equally
     spaced identical blades add coherently: abs(p) = B abs(p_n). SPL = 10 log10(abs(p)**2/(2
     p_ref**2))
     (paper eq. 21) with the smooth floor of ``common``.
 
-    Two load models, selected smoothly by the in-plane flight speed v (docs theory/acoustics
-    'Tonal loading noise' "path selection"):
-    SPL = SPL_Sears (1 - h) + SPL_unsteady h, h = 0.5 tanh(100 (v - 0.1 m/s)) + 0.5.
+    Two load models, selected smoothly by the in-plane flight speed v (docs theory/acoustics 'Tonal
+    loading noise' "path selection"): SPL = SPL_Sears (1 - h) + SPL_unsteady h, h = 0.5 tanh(100 (v
+    - 0.1 m/s)) + 0.5.
 
     - Sears path (hover): steady loads (the lambda = 0 coefficients) plus the Sears-function gust
       loads lambda = 1..L_g (SearsGustLoadsComp), summed coherently over lambda within each part;
       the steady and gust parts add energetically (docs theory/acoustics 'Sears path').
     - Unsteady path (edgewise flight): all load harmonics lambda = 0..L of the azimuthal loads
       (LoadFourierComp, paper eq. 20) added coherently, with the coefficients rotated into the
-      observer's azimuth: T_{+-lambda} exp(+-i lambda phi_o) (docs theory/acoustics
-      'Unsteady path').
+      observer's azimuth: T_{+-lambda} exp(+-i lambda phi_o) (docs theory/acoustics 'Unsteady
+      path').
 
     Deviations from the public code (lsdo_acoustics), on purpose:
 
     - Its odd-(n - lambda) sign branch (c1 = c2 = +1, docs theory/acoustics 'Tonal loading noise',
-      flagged there as unchecked) makes
-      the thrust and torque terms add on the thrust side for odd n, e.g. B = 3, m = 1, which
+      flagged there as unchecked) makes the thrust and torque terms add on the thrust side for odd
+      n, e.g. B = 3, m = 1, which
       contradicts Gutin's formula and mirrors the steady directivity through the disk plane.
       Here the phase (-i)**k is applied for every k, so steady loading reduces to Gutin's formula
       for all n (tests/test_acoustics_tonal.py), and the Kvurt-Stalnov hover case matches H. Gill's
@@ -353,8 +352,8 @@ class LowsonLoadingNoiseComp(om.ExplicitComponent):
     - The unsteady path adds the B blades coherently (abs(p) = B abs(p_n), as the Sears path of docs
       theory/acoustics 'Sears path'
       does) rather than energetically (+10 log10 B, docs theory/acoustics 'Unsteady path' as coded):
-      for identical, equally
-      spaced blades the harmonics m B are in phase, so steady hover loading gives the same level
+      for identical, equally spaced blades the harmonics m B are in phase, so steady hover loading
+      gives the same level
       on both paths.
     - Loads are per unit span and integrated with the acoustic quadrature weights in both paths.
 

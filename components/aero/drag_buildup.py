@@ -93,9 +93,9 @@ class LiftingSurfaceDrag:
 class BodyDrag:
     """A fuselage-like body; inputs ``{name}_length``, ``{name}_max_height``, ``{name}_max_width``.
 
-    Fineness f = L/max(H, W), form factor 1 + 60/f^3 + f/400 (docs theory/aerodynamics
-    'Drag build-up'), characteristic length L,
-    wetted area pi D L (1 - 2/f_e)^(2/3) (1 + 1/f_e^2) with the equivalent diameter
+    Fineness f = L/max(H, W), form factor 1 + 60/f^3 + f/400 (docs theory/aerodynamics 'Drag
+    build-up'), characteristic length L, wetted area pi D L (1 - 2/f_e)^(2/3) (1 + 1/f_e^2) with the
+    equivalent diameter
     D = sqrt(H W) and f_e = L/D (Torenbeek, Synthesis of Subsonic Airplane Design, 1982, App. F;
     valid for f_e > 2).
 
@@ -235,9 +235,9 @@ class DragBuildupComp(om.ExplicitComponent):
     """
     Parasite drag of the vehicle by component build-up, vectorized over flight conditions.
 
-    docs theory/aerodynamics 'Drag build-up' (CADDEE ``drag_buildup.py``, without its quirks
-    Q5–Q7), for each component i with characteristic length L_i, wetted area S_wet,i, form factor
-    FF_i, interference factor Q_i and laminar fraction p_i:
+    docs theory/aerodynamics 'Drag build-up' (CADDEE ``drag_buildup.py``, without its quirks Q5–Q7),
+    for each component i with characteristic length L_i, wetted area S_wet,i, form factor FF_i,
+    interference factor Q_i and laminar fraction p_i:
 
     - Re_i = rho V L_i / mu (floored smoothly: sqrt(Re^2 + Re_min^2), so V = 0 stays finite),
       M = V/a;
@@ -493,8 +493,8 @@ def max_thickness_sweep(surface, mirrored=True):
 
 
 def lpc_drag_components(vehicle=None, boom_diameter=LPC_BOOM_DIAMETER):
-    """Drag-build-up components and input values of the LPC vehicle (docs theory/aerodynamics
-    'Drag build-up').
+    """Drag-build-up components and input values of the LPC vehicle (docs theory/aerodynamics 'Drag
+    build-up').
 
     Components: wing, horizontal_tail, vertical_tail (LiftingSurfaceDrag with the vehicle's
     t/c, (x/c)_m, laminar fraction and maximum-thickness sweep), fuselage (BodyDrag) and booms

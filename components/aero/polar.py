@@ -87,8 +87,8 @@ def viterna_cd_max(aspect_ratio=10.0):
 
 def viterna_coefficients(alpha_stall, cl_stall, cd_stall, cd_max):
     """
-    Viterna–Corrigan coefficients A2, B2 of one stall point (docs theory/aerodynamics
-    'Viterna extrapolation').
+    Viterna–Corrigan coefficients A2, B2 of one stall point (docs theory/aerodynamics 'Viterna
+    extrapolation').
 
     A2 = (cl_s - CD_max sin a_s cos a_s) sin a_s/cos^2 a_s,  B2 = (cd_s - CD_max sin^2 a_s)/cos a_s;
     works elementwise on arrays of stall points.
@@ -101,8 +101,8 @@ def viterna_coefficients(alpha_stall, cl_stall, cd_stall, cd_max):
 
 def viterna(a, cd_max, a2, b2):
     """
-    Viterna–Corrigan post-stall law and its alpha slopes (docs theory/aerodynamics
-    'Viterna extrapolation'), to +-90 deg.
+    Viterna–Corrigan post-stall law and its alpha slopes (docs theory/aerodynamics 'Viterna
+    extrapolation'), to +-90 deg.
 
     cl = A1 sin 2a + A2 cos^2 a/sin a,  cd = B1 sin^2 a + B2 cos a,  A1 = CD_max/2, B1 = CD_max.
     Returns (cl, cd, dcl/da, dcd/da).

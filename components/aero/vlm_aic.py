@@ -21,8 +21,7 @@ class VLMAICComp(om.ExplicitComponent):
     (:mod:`~lpc_mdo.components.aero.vlm_biot_savart`). The wake of each strip is a
     semi-infinite vortex pair from the bound-grid trailing-edge nodes along the relative wind
     u = e_D (docs theory/aerodynamics 'Wake'), so A depends on the flight condition n. All VLM
-    surfaces are in one lattice,
-    so wing–tail interference is included.
+    surfaces are in one lattice, so wing–tail interference is included.
 
     Partials are analytic and sparse in the structure of the problem: A[n, i, j] depends on the
     12 corner coordinates of ring j, the collocation point and normal of panel i and (trailing-

@@ -1,8 +1,8 @@
 """Biot–Savart kernels of the vortex lattice and their exact derivatives (no OpenMDAO here).
 
-Reference: docs theory/aerodynamics 'Biot-Savart kernels'. Both kernels are written in the form
-used by AVL and OpenAeroStruct, which is singular only on the vortex line itself (not on its
-extension), so that bound segments collinear with a force point stay regular:
+Reference: docs theory/aerodynamics 'Biot-Savart kernels'. Both kernels are written in the form used
+by AVL and OpenAeroStruct, which is singular only on the vortex line itself (not on its extension),
+so that bound segments collinear with a force point stay regular:
 
 - straight segment A->B of unit strength at P, r1 = P - A, r2 = P - B, r0 = r1 - r2:
   v = (norm(r1) + norm(r2)) (r1 x r2) / (4 pi [norm(r1) norm(r2) (norm(r1) norm(r2) + r1.r2) + (eps

@@ -16,9 +16,9 @@ class VLMCirculationComp(om.ImplicitComponent):
 
         R[n] = A[n] Gamma[n] + v_coll[n] . n'[n] = 0
 
-    (docs theory/aerodynamics 'Circulation system'; v_coll is the relative wind at the
-    collocation points, n' the boundary normals). ``solve_nonlinear`` LU-factorises A[n]
-    (scipy ``lu_factor``) and back-substitutes; ``linearize`` gives the exact partials
+    (docs theory/aerodynamics 'Circulation system'; v_coll is the relative wind at the collocation
+    points, n' the boundary normals). ``solve_nonlinear`` LU-factorises A[n] (scipy ``lu_factor``)
+    and back-substitutes; ``linearize`` gives the exact partials
     (dR/dGamma = A, dR/dA = Gamma, dR/dv = n', dR/dn' = v) and keeps the factors, which
     ``solve_linear`` reuses in forward (A x = b) and reverse (A^T x = b) mode. A group holding
     this component therefore needs no linear solver of its own (the default LinearRunOnce is

@@ -189,8 +189,8 @@ class Lattice:
 
         Weight 0 drops (a) the trailing-edge segment p3->p4 of every trailing-edge ring (it
         cancels against the wake ring of the same strength, docs theory/aerodynamics 'Wake'), and
-        (b) the two segments that
-        pass through the force point itself: its own bound segment p1->p2 and the p3->p4 segment
+        (b) the two segments that pass through the force point itself: its own bound segment p1->p2
+        and the p3->p4 segment
         of the ring just upstream, which is the same vortex line. Both induce no velocity on
         their own midpoint; dropping them by topology keeps the kernel regular.
         """

@@ -25,8 +25,7 @@ class VLMTrefftzDragComp(om.ExplicitComponent):
     d_km = (a_k + b_k)/2 - Q_m. It uses the same sign convention as the near-field drag of
     :class:`VLMLoadsComp`, so the two agree on a converged planar lattice
     (docs theory/aerodynamics 'Forces and induced drag' has near field only; the Trefftz plane is
-    the
-    textbook check, Katz & Plotkin §12.2).
+    the textbook check, Katz & Plotkin §12.2).
 
     Inputs
     ------

@@ -28,8 +28,8 @@ class EquationsOfMotionComp(om.ExplicitComponent):
     """
     Accelerations of the rigid vehicle from forces and moments (Newton–Euler about the cg).
 
-    Paper eq. 34 (docs theory/dynamics 'Gravity', 'Equations of motion'), body frame x
-    forward, y right, z down, gravity m g n along the local vertical (n the load factor):
+    Paper eq. 34 (docs theory/dynamics 'Gravity', 'Equations of motion'), body frame x forward, y
+    right, z down, gravity m g n along the local vertical (n the load factor):
 
     - (X, Y, Z) + m g n (-sin th, cos th sin ph, cos th cos ph) = m (a + omega x V)
     - I omega_dot + omega x (I omega) = M_cg,  M_cg = M_ref - r_cg x F_aero

@@ -1,8 +1,8 @@
 """Rotor blade geometry: radial and azimuthal stations, chord and twist from B-splines.
 
 docs theory/rotors 'Blade parameterization' (BladeAD ``BsplineParameterization``) and docs
-theory/rotors 'Stations and disk frame'
-(stations). The names of the outputs (``hub_radius``, ``station_radius``, ``station_width``,
+theory/rotors 'Stations and disk frame' (stations). The names of the outputs (``hub_radius``,
+``station_radius``, ``station_width``,
 ``azimuth``, ``chord``, ``twist``) are the interface of the rotor models (BEM, Pitt–Peters) and of
 the rotor acoustics; keep them stable.
 """
@@ -12,8 +12,8 @@ import openmdao.api as om
 
 from lpc_mdo.components.bspline import BsplineComp
 
-#: Radial-quadrature choices of :class:`BladeStationsComp` (docs theory/rotors
-#: 'Stations and disk frame', 'Loads and coefficients', 'Public-code compatibility').
+#: Radial-quadrature choices of :class:`BladeStationsComp` (docs theory/rotors 'Stations and disk
+#: frame', 'Loads and coefficients', 'Public-code compatibility').
 QUADRATURES = ('midpoint', 'bladead')
 #: Where the B-spline values are placed (docs theory/rotors 'Blade parameterization').
 SPLINE_STATIONS = ('as_coded', 'element_centres')
@@ -91,9 +91,8 @@ def station_fractions(num_radial, quadrature='midpoint'):
 
     - 'midpoint' (default): q_i = 1/N, the midpoint rule;
     - 'bladead' (compatibility switch, docs theory/rotors 'Public-code compatibility'): q_i = 1/(N -
-      1) with halved end weights, the
-      public code's width and end-corrected sum, needed to reproduce the docs theory/rotors
-      'Validation' numbers.
+      1) with halved end weights, the public code's width and end-corrected sum, needed to reproduce
+      the docs theory/rotors 'Validation' numbers.
 
     Returns
     -------
@@ -117,12 +116,11 @@ class BladeStationsComp(om.ExplicitComponent):
     """
     Radial stations, quadrature widths and hub radius of each rotor from its tip radius.
 
-    docs theory/rotors 'Stations and disk frame': r_h = h R (h the hub-radius ratio, 0.2 in the
-    LPC study), element centres r_i = r_h + (R - r_h)(i + 1/2)/N_r, widths dr_i = (R - r_h)/N_r
+    docs theory/rotors 'Stations and disk frame': r_h = h R (h the hub-radius ratio, 0.2 in the LPC
+    study), element centres r_i = r_h + (R - r_h)(i + 1/2)/N_r, widths dr_i = (R - r_h)/N_r
     (midpoint rule) or, with quadrature='bladead', the public code's (R - r_h)/(N_r - 1) with
     halved end widths (docs theory/rotors 'Public-code compatibility'). Azimuthal stations psi_k = 2
-    pi k/N_psi. All outputs are linear in
-    R, so the partials are constants set in setup.
+    pi k/N_psi. All outputs are linear in R, so the partials are constants set in setup.
 
     Inputs
     ------
@@ -212,9 +210,9 @@ class BladeGeometryGroup(om.Group):
     stations from cubic B-splines (BsplineComp), docs theory/rotors 'Blade parameterization'.
 
     Chord and twist are order-4 clamped B-splines of ``num_cp`` control points each (4: a single
-    cubic Bezier segment). By default (spline_stations='as_coded', docs theory/rotors
-    'Blade parameterization') the spline is evaluated at
-    t = linspace(0, 1, N_r) and value i goes to element i, so cp_0 is the hub-element value and
+    cubic Bezier segment). By default (spline_stations='as_coded', docs theory/rotors 'Blade
+    parameterization') the spline is evaluated at t = linspace(0, 1, N_r) and value i goes to
+    element i, so cp_0 is the hub-element value and
     cp_last the tip-element value; this deliberate approximation of the public code is the
     default. 'element_centres' evaluates the spline at the element centres' normalized position
     t_i = (r_i - r_h)/(R - r_h) = (i + 1/2)/N_r instead. All partials are analytic constants.

@@ -11,8 +11,7 @@ def span_stations(num_span_panels, spacing):
 
     ``cosine``: eta_j = -cos(pi j/N), nodes clustered at the tips (the "half-cosine" span-wise
     spacing of the public LPC code, docs theory/aerodynamics 'Reference-vehicle defaults');
-    ``uniform``:
-    eta_j = -1 + 2 j/N.
+    ``uniform``: eta_j = -1 + 2 j/N.
     """
     j = np.arange(num_span_panels + 1)
     if spacing == "cosine":
@@ -39,9 +38,9 @@ class PlanformMeshComp(om.ExplicitComponent):
       about the leading edge:
       X[i, j] = (x_le - s_i c_j cos theta_j, y_j, z_le + s_i c_j sin theta_j).
 
-    The planform and its symbols follow docs theory/aerodynamics 'Drag build-up' and the
-    vehicle file (``lpc_mdo.vehicle.LiftingSurface``: leading-edge sweep, dihedral, root
-    incidence, root leading edge). Partials are analytic and sparse.
+    The planform and its symbols follow docs theory/aerodynamics 'Drag build-up' and the vehicle
+    file (``lpc_mdo.vehicle.LiftingSurface``: leading-edge sweep, dihedral, root incidence, root
+    leading edge). Partials are analytic and sparse.
 
     Inputs
     ------

@@ -1,15 +1,15 @@
 """PMSM equivalent-circuit parameters: magnet circuit, magnet MEC and d/q inductances.
 
 docs theory/motor 'Equivalent circuit', 'Magnet circuit', 'Inductances' (lsdo_motor
-``motor_ecm_parameters_model``,
-``magnet_mec_model``, ``inductance_model``). All quantities are per motor, shape (num_motors,).
+``motor_ecm_parameters_model``, ``magnet_mec_model``, ``inductance_model``). All quantities are per
+motor, shape (num_motors,).
 The two implicit solves (air-gap flux density of the magnet MEC, q-axis flux of the inductance
 iteration) are vectorized bisections on the reference brackets; the partials of every component
 are an exact vectorized complex step (see :mod:`._numerics`).
 
 Reproduced as coded, because the docs theory/motor 'Validation' reference numbers depend on it:
-lsdo_motor overwrites
-its air-gap flux ``phi_air = alpha_i tau_p l B_delta`` with the magnet operating flux
+lsdo_motor overwrites its air-gap flux ``phi_air = alpha_i tau_p l B_delta`` with the magnet
+operating flux
 ``phi_r - F_m lambda_m`` (equal to phi_air + phi_f + phi_s at the MEC solution) before the
 post-processing, so the "air-gap flux" that feeds K_sigma, lambda_theta, the back-EMF E_0, the
 q-axis bracket and Psi_F = W phi is the flux leaving the magnet, called ``pole_flux`` here
@@ -30,14 +30,14 @@ def _complex_safe_abs(x):
 
 
 # --------------------------------------------------------------------------------------------
-# Magnet circuit and equivalent-circuit parameters (explicit, docs theory/motor
-# 'Equivalent circuit')
+# Magnet circuit and equivalent-circuit parameters (explicit, docs theory/motor 'Equivalent
+# circuit')
 # --------------------------------------------------------------------------------------------
 
 class MotorECMParametersComp(PointwiseExplicitComp):
     """
-    Geometry-derived equivalent-circuit parameters of the PMSM (docs theory/motor
-    'Equivalent circuit'), per motor.
+    Geometry-derived equivalent-circuit parameters of the PMSM (docs theory/motor 'Equivalent
+    circuit'), per motor.
 
     - yoke pitch tau_y = pi (D_i + h_slot)/(2p); yoke path L_j1 = pi (D - h_ys)/(4p);
     - magnet: b_m = (D_2 - 0.002) pi theta_m/360 with theta_m = 0.78 * 360/(2p); A_m = b_m l;
@@ -49,8 +49,7 @@ class MotorECMParametersComp(PointwiseExplicitComp):
     - bridge area A_f2 = h_m l;
     - R_dc = 2 rho_cu W (l + 0.02 + 2 tau_p)/(A_cu N_p);
     - loss volumes (docs theory/motor 'Losses and efficiency'): iron V_s + V_s1 = pi l (D -
-      D_i)**2/4 - Z l A_cu
-      + pi l (D_2 - D_sh)**2/4, magnet V_t = 2 p l b_m h_m.
+      D_i)**2/4 - Z l A_cu + pi l (D_2 - D_sh)**2/4, magnet V_t = 2 p l b_m h_m.
 
     The effective length is l_ef = L (lsdo_motor dev_csdl_alpha). Partials: exact vectorized
     complex step, diagonal over the motors.

@@ -55,8 +55,8 @@ MOTOR_NAMES = tuple(name for name, *_ in MOTOR_INPUTS)
 
 def loss_model(v, par, with_partials=False):
     """
-    Currents, MTPA voltage, losses, powers and efficiency of docs theory/motor
-    'Losses and efficiency' (complex-safe, pointwise).
+    Currents, MTPA voltage, losses, powers and efficiency of docs theory/motor 'Losses and
+    efficiency' (complex-safe, pointwise).
 
     Parameters
     ----------
@@ -145,8 +145,8 @@ def loss_model(v, par, with_partials=False):
 
 class MotorLossComp(om.ExplicitComponent):
     """
-    PMSM currents, terminal voltage, losses, input power and efficiency (docs theory/motor
-    'Losses and efficiency', paper eq. 24).
+    PMSM currents, terminal voltage, losses, input power and efficiency (docs theory/motor 'Losses
+    and efficiency', paper eq. 24).
 
     With the MTPA q-axis current I_q (MTPAComp), the electrical speed omega = rpm G 2 pi/60 p,
     the load torque T_L = Q_r/G (G the gear ratio) and, as coded, f = omega p/60:
@@ -428,16 +428,15 @@ class EMTorqueComp(PointwiseImplicitComp):
 
 class MotorMarginComp(om.ExplicitComponent):
     """
-    Torque margin and voltage-limit report of each operating point (docs theory/motor
-    'Torque margin').
+    Torque margin and voltage-limit report of each operating point (docs theory/motor 'Torque
+    margin').
 
     - torque_margin = T_pk/T_em - 1 (paper: available/required - 1, constrained >= 0.10; the
       full problem aggregates T_em over a motor's conditions with KS before this ratio);
     - voltage_margin = 1 - abs(U)/V_lim (>= 0 when the MTPA point respects the voltage limit);
     - voltage_torque_margin = T_lim/T_em - 1 (only with ``include_torque_limit``): margin to the
       voltage-limited torque of docs theory/motor 'Voltage-limited torque', which needs flux
-      weakening to be reached when
-      voltage_margin < 0;
+      weakening to be reached when voltage_margin < 0;
     - beyond_voltage_limit = 1.0 where abs(U) > V_lim, else 0.0: flux weakening (out of scope, as in
       the paper) would be needed there. A report, not differentiable (no partials); constrain
       voltage_margin instead.

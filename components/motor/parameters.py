@@ -1,12 +1,10 @@
 """Design constants and material fits of the PMSM motor model (lsdo_motor, Cheng et al.).
 
-Everything here is data of docs theory/motor: the user-facing
-parameters of docs theory/motor 'Parameters' in the typed, validated :class:`MotorParameters`, and
-the fixed constants of
-the sizing (docs theory/motor 'Sizing'), equivalent circuit (docs theory/motor 'Equivalent circuit',
-'Magnet circuit', 'Inductances') and loss model (docs theory/motor 'Losses and efficiency') as
-module constants, named
-by their physical meaning with the reference symbol in the comment.
+Everything here is data of docs theory/motor: the user-facing parameters of docs theory/motor
+'Parameters' in the typed, validated :class:`MotorParameters`, and the fixed constants of the sizing
+(docs theory/motor 'Sizing'), equivalent circuit (docs theory/motor 'Equivalent circuit', 'Magnet
+circuit', 'Inductances') and loss model (docs theory/motor 'Losses and efficiency') as module
+constants, named by their physical meaning with the reference symbol in the comment.
 """
 
 import math
@@ -127,11 +125,10 @@ class MotorParameters:
         Specific torque Q_sp, N*m/kg (> 0), in the mass eq. 23. Default 15.
     peak_torque_coefficients : tuple of float
         Polynomial T_pk(mass) coefficients, highest power first (docs theory/motor 'Sizing' order-2
-        fit).
-        Default (0.4840, 3.3169, 60.8142): T_pk = 0.4840 m**2 + 3.3169 m + 60.8142.
+        fit). Default (0.4840, 3.3169, 60.8142): T_pk = 0.4840 m**2 + 3.3169 m + 60.8142.
     magnet_temperature : float
-        Magnet temperature, deg C, for the remanence and coercivity (docs theory/motor
-        'Equivalent circuit'). Default 75.
+        Magnet temperature, deg C, for the remanence and coercivity (docs theory/motor 'Equivalent
+        circuit'). Default 75.
     """
 
     pole_pairs: int = 6
@@ -197,8 +194,8 @@ class MotorParameters:
         B_r = (1 + (T - 20) alpha_Br/100) B_r20, T (1.1208 at 75 deg C).
 
         The corrected form (docs theory/motor 'Public-code compatibility'); lsdo_motor's slip 1 +
-        (T-20) alpha/100 B_r20 fed
-        nothing, and this value is what it hard-codes as B_r' in the inductance model.
+        (T-20) alpha/100 B_r20 fed nothing, and this value is what it hard-codes as B_r' in the
+        inductance model.
         """
         return self.temperature_factor * REMANENCE_20C
 

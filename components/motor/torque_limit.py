@@ -52,8 +52,8 @@ class TorqueLimitComp(PointwiseImplicitComp):
     The largest torque reachable on the voltage ellipse abs(U) = V_lim (no current limit) is where
     the quartic in I_q of the voltage constraint has a double root; its discriminant (divided by
     a T**2) is the quartic in T of docs theory/motor 'Voltage-limited torque' with the coefficients
-    A...E of lsdo_motor
-    ``torque_limit_model`` (omega the electrical speed, D = 3p(L_d - L_q)). The residual is that
+    A...E of lsdo_motor ``torque_limit_model`` (omega the electrical speed, D = 3p(L_d - L_q)). The
+    residual is that
     quartic divided by A T_s**4, in x = T/T_s with T_s = 1.5 p Psi_F I_w (same root, well
     scaled; the reference divides by E and 1e3, which is singular where E = 0):
 

@@ -17,11 +17,11 @@ forward, V_t = Omega r, sigma = B c/(2 pi r), alpha = theta - phi)::
 
 For phi > 0 (flow down through the disk, every normal operating point) this is paper eq. 13
 with Prandtl's F and the local advance ratio V_x/V_t = J/(pi r/R) written out (docs theory/rotors
-'BEM inflow residual';
-the paper's eq. 13 drops F and the r/R), i.e. V_t (sigma C_x - 4 F sin^2) + V_x (2 F sin 2phi +
+'BEM inflow residual'; the paper's eq. 13 drops F and the r/R), i.e. V_t (sigma C_x - 4 F sin^2) +
+V_x (2 F sin 2phi +
 sigma C_theta) of docs theory/rotors 'BEM inflow residual' divided by V_t. It is Ning's
-guaranteed-convergence residual (Ning 2014,
-Wind Energy 17, "A simple solution method for the blade element momentum equations with
+guaranteed-convergence residual (Ning 2014, Wind Energy 17, "A simple solution method for the blade
+element momentum equations with
 guaranteed convergence") in propeller form, R_N = sin(phi)(1 - k) - (V_x/V_t) cos(phi)(1 + k')
 with k = sigma C_x/(4 F sin^2 phi), k' = sigma C_theta/(4 F sin phi cos phi) (axial and swirl
 induction a = k/(1 - k), a' = k'/(1 + k'): wake rotation and drag in both inductions),
@@ -185,8 +185,8 @@ class BEMSections:
     ``loads=True`` branch the blade-element loads. All of it is complex-step safe.
 
     Loads at the converged inflow angle (docs theory/rotors 'Loads and coefficients'; blade-element
-    form, equal to the momentum
-    form there): the resultant velocity W = u_x/sin(phi) with u_x = 4 F V_t sin^2 phi / H and
+    form, equal to the momentum form there): the resultant velocity W = u_x/sin(phi) with u_x = 4 F
+    V_t sin^2 phi / H and
     H = 4 F abs(sin(phi)) cos(phi) + sigma C_theta gives W = 4 F V_t abs(sin(phi))/H, and per blade
     and
     unit span thrust t = rho W^2 c C_x / 2 and in-plane drag d = rho W^2 c C_theta / 2
@@ -490,9 +490,9 @@ class BEMInflowComp(om.ImplicitComponent):
     """
     Inflow angle of every blade station of several rotors at several operating points (BEM).
 
-    Paper eq. 13 with F and r/R written out (docs theory/rotors 'BEM inflow residual'), in
-    Ning's guaranteed-convergence form; see the module docstring for the residual and the
-    bracket. ``solve_nonlinear`` brackets and refines all stations at once (vectorized);
+    Paper eq. 13 with F and r/R written out (docs theory/rotors 'BEM inflow residual'), in Ning's
+    guaranteed-convergence form; see the module docstring for the residual and the bracket.
+    ``solve_nonlinear`` brackets and refines all stations at once (vectorized);
     ``linearize`` gives the exact partials (the residual of a station depends on its own inflow
     angle only, so dR/dphi is diagonal) and ``solve_linear`` divides by that diagonal, so no
     DirectSolver is needed (LinearRunOnce in the parent group is enough). Under complex step the

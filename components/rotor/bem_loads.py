@@ -1,7 +1,7 @@
 """BEM loads at the converged inflow angle, and rotor performance (coefficients, efficiencies).
 
-docs theory/rotors 'Loads and coefficients'. :class:`BEMLoadsComp` integrates the
-blade-element loads of :class:`~lpc_mdo.components.rotor.bem_inflow.BEMSections`;
+docs theory/rotors 'Loads and coefficients'. :class:`BEMLoadsComp` integrates the blade-element
+loads of :class:`~lpc_mdo.components.rotor.bem_inflow.BEMSections`;
 :class:`RotorPerformanceComp` turns any rotor model's thrust and torque (BEM or Pitt–Peters)
 into power, coefficients, efficiency, figure of merit and tip Mach number.
 """
@@ -26,9 +26,9 @@ class BEMLoadsComp(om.ExplicitComponent):
     """
     Sectional and total BEM loads of several rotors at several operating points.
 
-    docs theory/rotors 'Loads and coefficients' and paper eq. 12, at the inflow angle phi
-    solved by BEMInflowComp. Per blade and unit span (blade-element form; at the solution it
-    equals the momentum form dT = 4 pi r rho u_x (u_x - V_x) F dr,
+    docs theory/rotors 'Loads and coefficients' and paper eq. 12, at the inflow angle phi solved by
+    BEMInflowComp. Per blade and unit span (blade-element form; at the solution it equals the
+    momentum form dT = 4 pi r rho u_x (u_x - V_x) F dr,
     dQ = 2 pi r^2 rho u_x u_theta F dr):
 
     - W = 4 F V_t abs(sin phi) / (4 F abs(sin phi) cos(phi) + sigma C_theta)   (resultant velocity)
@@ -191,8 +191,7 @@ class RotorPerformanceComp(om.ExplicitComponent):
     Power, thrust and power coefficients, advance ratio, efficiency, figure of merit, tip Mach.
 
     docs theory/rotors 'Loads and coefficients' (also the Pitt–Peters outputs, docs theory/rotors
-    'Pitt-Peters inflow'),
-    with n = rpm/60 (rev/s), D = 2R, Omega = 2 pi n:
+    'Pitt-Peters inflow'), with n = rpm/60 (rev/s), D = 2R, Omega = 2 pi n:
 
     - P = Omega Q
     - C_T = T/(rho n^2 D^4),  C_P = P/(rho n^3 D^5)   (propeller coefficients; the rotorcraft

@@ -1,8 +1,8 @@
 """Steady Pitt–Peters inflow: three inflow states per rotor from L^-1 lambda - c = 0 by Newton.
 
-Paper eq. 14-15 and docs theory/rotors 'Pitt-Peters inflow' (with its correction of eq. 14:
-lambda = lambda_0 + lambda_c (r/R) cos psi + lambda_s (r/R) sin psi). For each rotor and operating
-point the states lambda = (lambda_0, lambda_c, lambda_s) (normalised by Omega R) satisfy the steady
+Paper eq. 14-15 and docs theory/rotors 'Pitt-Peters inflow' (with its correction of eq. 14: lambda =
+lambda_0 + lambda_c (r/R) cos psi + lambda_s (r/R) sin psi). For each rotor and operating point the
+states lambda = (lambda_0, lambda_c, lambda_s) (normalised by Omega R) satisfy the steady
 form of eq. 15 (M lambda_dot = 0)::
 
     R(lambda) = F_A V Lt^-1 lambda - c(lambda) = 0
@@ -11,11 +11,10 @@ form of eq. 15 (M lambda_dot = 0)::
   C_s = M_s/(...), with M_c = int r cos psi dT and M_s = int r sin psi dT the first-harmonic
   thrust moments of the blade-element loads at the current states (``pitt_peters_loads.py``;
   C_c = -C_My and C_s = C_Mx of docs theory/rotors 'Pitt-Peters inflow', psi measured in the
-  direction of rotation
-  from the downstream blade).
+  direction of rotation from the downstream blade).
 - Wake quantities (docs theory/rotors 'Pitt-Peters inflow' with the mean inflow lambda_0 itself; no
-  nested
-  momentum solve is needed because row 0 below is the momentum equation): lambda = mu_z + lambda_0
+  nested momentum solve is needed because row 0 below is the momentum equation): lambda = mu_z +
+  lambda_0
   (total normal inflow), mu^2 = mu_x^2 + mu_y^2, V_T = sqrt(mu^2 + lambda^2) (flow parameter),
   V_m = (mu^2 + lambda (lambda + lambda_0))/V_T (mass-flow parameter), wake skew
   chi = atan2(mu, lambda), tan(chi/2) = mu/(V_T + lambda).
@@ -25,8 +24,7 @@ form of eq. 15 (M lambda_dot = 0)::
   lambda_0 = C_T/(2 F_A V_T)
   (when the coupling below vanishes), where the as-coded 2/V_eff scaling doubles it.
 - Lt, the L matrix with the coupling at L10 (docs theory/rotors 'Pitt-Peters inflow' default,
-  literature placement), in
-  wind axes (lambda_c along the downstream direction)::
+  literature placement), in wind axes (lambda_c along the downstream direction)::
 
       [ 1/2            -k tan(chi/2)             0             ]
       [ k tan(chi/2)    4 cos chi/(1 + cos chi)   0             ],   k = 15 pi/64
@@ -46,8 +44,7 @@ form of eq. 15 (M lambda_dot = 0)::
   and the loads carry no F. With the tangential induction (``pitt_peters_loads.py``, default on)
   this matches the BEM's hover thrust to 0.02 % on the LPC blade; without the swirl
   (docs theory/rotors 'Pitt-Peters inflow') it is 6.5 % high ('momentum') or 2.4 % high
-  ('blade_element').
-  tests/test_pitt_peters_validation.py quantifies them.
+  ('blade_element'). tests/test_pitt_peters_validation.py quantifies them.
 
 Solver: Newton on each rotor's 3x3 system (vectorized over rotors and operating points) with a
 backtracking line search per rotor, from the previous solution and, if that fails, from a cold
@@ -147,9 +144,9 @@ class PittPetersInflowComp(om.ImplicitComponent):
     """
     Steady Pitt–Peters inflow states of several rotors at several operating points.
 
-    Paper eq. 14-15, docs theory/rotors 'Pitt-Peters inflow'; the residual
-    F_A V Lt^-1 lambda - c = 0, its L matrix, scaling and solver are in the module docstring, the
-    blade-element loads c(lambda) in :mod:`lpc_mdo.components.rotor.pitt_peters_loads`.
+    Paper eq. 14-15, docs theory/rotors 'Pitt-Peters inflow'; the residual F_A V Lt^-1 lambda - c =
+    0, its L matrix, scaling and solver are in the module docstring, the blade-element loads
+    c(lambda) in :mod:`lpc_mdo.components.rotor.pitt_peters_loads`.
 
     Inputs
     ------
@@ -186,8 +183,8 @@ class PittPetersInflowComp(om.ImplicitComponent):
     spin_direction : int or sequence of int
         +1 (right-handed about the thrust axis) or -1 per rotor. Default +1.
     polar : Polar
-        Sectional polar. Default LinearQuadraticPolar() (docs theory/aerodynamics
-        'Linear-quadratic polar').
+        Sectional polar. Default LinearQuadraticPolar() (docs theory/aerodynamics 'Linear-quadratic
+        polar').
     tip_loss, hub_loss : bool
         Prandtl losses (default True).
     loss_placement : str

@@ -1,7 +1,7 @@
 """Steady Pitt–Peters rotor: blade-element loads over radius and azimuth, and their integrals.
 
-docs theory/rotors 'Pitt-Peters inflow' (items 1-4 and 9) and paper eq. 14 (with the
-reference's correction: the last term is lambda_c r/R cos psi). This module holds
+docs theory/rotors 'Pitt-Peters inflow' (items 1-4 and 9) and paper eq. 14 (with the reference's
+correction: the last term is lambda_c r/R cos psi). This module holds
 
 - :class:`PittPetersBladeElements`, the blade-element field of every station (rotor, operating
   point, radial station, azimuth) for given inflow states, its integrals (thrust, moments,
@@ -10,9 +10,9 @@ reference's correction: the last term is lambda_c r/R cos psi). This module hold
 - :class:`PittPetersLoadsComp`, the sectional loads over (r, psi) and the hub loads at the
   converged inflow states.
 
-Disk frame and azimuth (the frame of ``hub_loads.rotor_frames`` and docs theory/rotors
-'Stations and disk frame'): n is the
-thrust axis, e_y the body y axis projected on the disk, e_x = n x e_y; the rotor spins with
+Disk frame and azimuth (the frame of ``hub_loads.rotor_frames`` and docs theory/rotors 'Stations and
+disk frame'): n is the thrust axis, e_y the body y axis projected on the disk, e_x = n x e_y; the
+rotor spins with
 angular velocity s Omega n (s = spin_direction). The azimuth psi_k = 2 pi k/N_psi of a blade is
 measured in the direction of rotation from the -e_x position, so the blade sits at
 r (-cos psi e_x + s sin psi e_y) and moves along t = sin psi e_x + s cos psi e_y. For a lift rotor
@@ -25,8 +25,8 @@ Station equations (per blade, per unit span):
   + s v_y cos psi (tangential; (V_x, v_x, v_y) = the hub's velocity relative to the air along
   (n, e_x, e_y), so V_x > 0 is climb for a lift rotor);
 - tangential induction (wake swirl; option tangential_induction, default on; docs theory/rotors
-  'Pitt-Peters inflow'
-  neglects it, the BEM has it): the blade sees U_T - v_t, where v_t balances the angular
+  'Pitt-Peters inflow' neglects it, the BEM has it): the blade sees U_T - v_t, where v_t balances
+  the angular
   momentum of the annulus, v_t U_m F_m = B d/(4 pi rho r), with the mass-flow velocity
   U_m = sqrt(U_P^2 + v_x^2 + v_y^2) (so the swirl fades in fast edgewise flight) and F_m = F
   with loss_placement='momentum' (else 1); solved per station by Newton from v_t = 0, its
@@ -42,8 +42,8 @@ Station equations (per blade, per unit span):
   d = (rho/2)(U_P^2 + (U_T - v_t)^2) c C_theta F_l (drag opposes the rotation;
   dQ/dr = B r d), where F_l = 1 with the default loss_placement='momentum' (F, Prandtl tip and
   hub loss in the docs theory/rotors 'BEM inflow residual' classical form, then scales the momentum
-  side of the inflow equation, as
-  in the BEM; see ``pitt_peters_inflow.py``) and F_l = F with loss_placement='blade_element'
+  side of the inflow equation, as in the BEM; see ``pitt_peters_inflow.py``) and F_l = F with
+  loss_placement='blade_element'
   (docs theory/rotors 'Pitt-Peters inflow').
 
 Integrals (docs theory/rotors 'Loads and coefficients' rule, (1/N_psi) sum over the azimuth, dr_i =
@@ -636,9 +636,9 @@ class PittPetersLoadsComp(om.ExplicitComponent):
     """
     Sectional loads over (r, psi) and hub loads of the steady Pitt–Peters rotor model.
 
-    docs theory/rotors 'Pitt-Peters inflow', paper eq. 14, at the inflow
-    states solved by :class:`~lpc_mdo.components.rotor.pitt_peters_inflow.PittPetersInflowComp`
-    (equations in the module docstring). The sectional loads over (r, psi) are what the tonal
+    docs theory/rotors 'Pitt-Peters inflow', paper eq. 14, at the inflow states solved by
+    :class:`~lpc_mdo.components.rotor.pitt_peters_inflow.PittPetersInflowComp` (equations in the
+    module docstring). The sectional loads over (r, psi) are what the tonal
     acoustics needs for the Fourier content of the azimuthal loading
     (:class:`~lpc_mdo.components.acoustics.loads.LoadFourierComp`, same azimuths
     psi_k = 2 pi k/N_psi). Analytic sparse partials.
@@ -693,15 +693,14 @@ class PittPetersLoadsComp(om.ExplicitComponent):
     spin_direction : int or sequence of int
         +1 (rotation right-handed about the thrust axis) or -1. Default +1.
     polar : Polar
-        Sectional polar. Default LinearQuadraticPolar() (docs theory/aerodynamics
-        'Linear-quadratic polar').
+        Sectional polar. Default LinearQuadraticPolar() (docs theory/aerodynamics 'Linear-quadratic
+        polar').
     tip_loss, hub_loss : bool
         Prandtl losses (default True).
     loss_placement : str
         'momentum' (default: F acts on the inflow equation and the swirl, the loads carry no
         F, as in the BEM) or 'blade_element' (docs theory/rotors 'Pitt-Peters inflow': the loads are
-        multiplied
-        by F).
+        multiplied by F).
     tangential_induction : bool
         Wake swirl per station (default True; module docstring).
     """

@@ -1,8 +1,8 @@
 """Euler-Bernoulli space-frame finite elements: stiffness solve K u = f, load recovery and mass.
 
-The element is the 12-DoF frame element of docs theory/structures 'Frame element'
-(aframe), assembled and solved as in docs theory/structures 'Assembly and solution'; the residual
-form R = K u - f is paper eq. 17.
+The element is the 12-DoF frame element of docs theory/structures 'Frame element' (aframe),
+assembled and solved as in docs theory/structures 'Assembly and solution'; the residual form R = K u
+- f is paper eq. 17.
 
 Frames and sign conventions
 ---------------------------
@@ -10,8 +10,8 @@ Frames and sign conventions
   z down). Each node has 6 DoF, translations (u, v, w) and small rotations (θx, θy, θz) about
   the global axes; they are the outputs ``displacements`` and ``rotations``.
 - Element frame (docs theory/structures 'Frame element'): local x along the element (node a to node
-  b); with direction cosines
-  (l, m, n) and D = sqrt(l² + m²), local y = (-m, l, 0)/D (horizontal) and
+  b); with direction cosines (l, m, n) and D = sqrt(l² + m²), local y = (-m, l, 0)/D (horizontal)
+  and
   local z = (-l n, -m n, D²)/D, whose global z component is >= 0. For a wing along +y in the
   body frame, local y points aft and local z down. A vertical element (D = 0) uses
   λ = [[0, 0, s], [0, 1, 0], [-s, 0, 0]], s = sign(n).
@@ -38,8 +38,8 @@ from scipy.sparse.linalg import splu
 _CS_STEP = 1e-30
 
 # Default material (aluminium, docs theory/structures 'Material, mesh and load transfer') and
-# section values shared by every component
-# that promotes the same input names, so their defaults agree.
+# section values shared by every component that promotes the same input names, so their defaults
+# agree.
 DEFAULT_YOUNGS_MODULUS = 69.0e9
 DEFAULT_SHEAR_MODULUS = 26.0e9
 DEFAULT_DENSITY = 2700.0
@@ -343,12 +343,12 @@ class BeamDisplacementComp(_FrameMixin, om.ImplicitComponent):
     """
     Static frame solve R = K u - f = 0 for the nodal displacements and rotations (paper eq. 17).
 
-    K is assembled from the 12-DoF Euler-Bernoulli frame elements of docs theory/structures
-    'Frame element' with
-    the direction-cosine transformation K_e = Tᵀ K_local T. The constrained DoF (clamped nodes,
+    K is assembled from the 12-DoF Euler-Bernoulli frame elements of docs theory/structures 'Frame
+    element' with the direction-cosine transformation K_e = Tᵀ K_local T. The constrained DoF
+    (clamped nodes,
     ``fixed_nodes``; single DoF, ``fixed_dofs``) are eliminated as in docs theory/structures
-    'Assembly and solution': their rows and
-    columns of K are replaced by the identity and their load entries by zero, so the residual of
+    'Assembly and solution': their rows and columns of K are replaced by the identity and their load
+    entries by zero, so the residual of
     a free DoF is (K u)_free - f_free with the constrained columns dropped and the residual of a
     constrained DoF is its displacement.
 
@@ -637,8 +637,8 @@ class BeamForcesComp(_FrameMixin, om.ExplicitComponent):
     Load recovery of the frame: element end forces, section resultants and support reactions.
 
     Reference docs theory/structures 'Assembly and solution': element end loads f = K_local T u_e
-    (12 per element, element frame);
-    section resultants averaged over the element, here as internal forces on the positive face,
+    (12 per element, element frame); section resultants averaged over the element, here as internal
+    forces on the positive face,
     (f[6:12] - f[0:6])/2 (see the module docstring for the sign convention); reactions
     r = K u - f in the global frame (non-zero only at constrained DoF, up to round-off).
 
@@ -807,8 +807,8 @@ class BeamForcesComp(_FrameMixin, om.ExplicitComponent):
 
 class BeamMassComp(_FrameMixin, om.ExplicitComponent):
     """
-    Element masses, total mass and centre of gravity of the frame (docs theory/structures
-    'Box section').
+    Element masses, total mass and centre of gravity of the frame (docs theory/structures 'Box
+    section').
 
     m_e = ρ A_e L_e; mass = Σ m_e; cg = Σ m_e (x_a + x_b)/2 / mass. Analytic partials.
 

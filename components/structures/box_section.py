@@ -8,8 +8,8 @@ TORSION_FORMULAS = ('polar', 'bredt')
 
 class BoxSectionComp(om.ExplicitComponent):
     """
-    Section properties of a rectangular box beam, per element (docs theory/structures
-    'Box section').
+    Section properties of a rectangular box beam, per element (docs theory/structures 'Box
+    section').
 
     The box has outer width w (spar to spar) and height h, skins t_top, t_bot and two webs
     (spars) t_front, t_rear. As in the reference model the beam uses one web thickness, the mean
@@ -25,8 +25,8 @@ class BoxSectionComp(om.ExplicitComponent):
 
       * ``'polar'`` (default): J = I_y + I_z, the polar moment of area. This is the form the
         reference model uses (the validation case of docs theory/structures 'Validation' depends on
-        it), so the defaults
-        reproduce the reference numbers. It treats the box like a solid section and is several
+        it), so the defaults reproduce the reference numbers. It treats the box like a solid section
+        and is several
         times stiffer in torsion than a closed thin-walled box (about 9x for the docs
         theory/structures 'Validation' root bay).
       * ``'bredt'``: Bredt-Batho closed thin-walled section, J = 4 A_m² / ∮ ds/t with the

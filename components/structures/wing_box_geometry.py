@@ -139,15 +139,15 @@ class WingBoxGeometryComp(om.ExplicitComponent):
     Box-beam geometry of one (the right) half wing from the trapezoidal planform.
 
     Planform (docs theory/geometry 'Reference vehicle'; docs theory/aerodynamics 'Drag build-up'):
-    span b = sqrt(AR S), root chord
-    c_r = 2 S/((1 + λ) b), chord c(η) = c_r (1 - (1 - λ) η) at η = y/(b/2). Leading edge at
+    span b = sqrt(AR S), root chord c_r = 2 S/((1 + λ) b), chord c(η) = c_r (1 - (1 - λ) η) at η =
+    y/(b/2). Leading edge at
     x_LE = x_0 - y tan Λ_LE, z_LE = z_0 - y tan Γ (body frame, z down; positive dihedral raises
     the tip). The section is pitched by the incidence i (nose up), so the chord runs along
     (-cos i, 0, sin i) and the section's "up" along (-sin i, 0, -cos i).
 
     Wing box (docs theory/structures 'Material, mesh and load transfer'): ``num_nodes`` nodes evenly
-    spaced in span from root to tip
-    (the ribs; 9 nodes = 8 bays), at the beam-axis chord fraction ξ_b and at mid-height of the
+    spaced in span from root to tip (the ribs; 9 nodes = 8 bays), at the beam-axis chord fraction
+    ξ_b and at mid-height of the
     outer mould line; spars at ξ_f and ξ_r. Per bay, with the mean chord c̄ of its two ribs:
 
     - box width w = (ξ_r - ξ_f) c̄ (chord-wise spar spacing, not projected normal to the beam);

@@ -85,8 +85,8 @@ class MassPropertiesComp(om.ExplicitComponent):
     """
     Total mass, centre of gravity and inertia tensor about the cg of a set of bodies.
 
-    Implements docs theory/weights 'Mass properties' (paper Sec. II.C, system mass
-    properties with the parallel-axis theorem), vectorized over all N bodies:
+    Implements docs theory/weights 'Mass properties' (paper Sec. II.C, system mass properties with
+    the parallel-axis theorem), vectorized over all N bodies:
 
     - m = sum_i m_i
     - cg = sum_i m_i p_i / m
