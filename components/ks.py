@@ -13,7 +13,7 @@ class KSComp(om.ExplicitComponent):
     """
     Smooth maximum (or minimum) of each row of ``g`` by the Kreisselmeier-Steinhauser function.
 
-    Paper eq. 7 with alpha = 1 (reference/paper.md; docs theory/structures 'KS aggregation'), in the
+    Paper eq. 7 with alpha = 1 (docs theory/structures 'KS aggregation'), in the
     numerically stable shifted form of csdl_alpha ``maximum``:
 
         KS_i = m_i + ln( sum_j exp(rho (g_ij - m_i)) ) / rho,   m_i = max_j Re(g_ij)

@@ -30,7 +30,7 @@ class MotorSizingComp(om.ExplicitComponent):
     Interior PMSM sizing from stack length, diameter and electric/magnetic loading.
 
     Implements docs theory/motor 'Sizing' (lsdo_motor ``motor_sizing_model``, torque mode) and paper
-    eq. 23 (reference/paper.md Sec. III.F):
+    eq. 23 (paper Sec. III.F):
 
     - D = L/(L/D) when the option ``length_to_diameter`` is set (the paper ties D to the length
       design variable), otherwise D is an input;

@@ -35,7 +35,7 @@ _MOTORS = BREAKDOWN_LABELS.index("motors")
 
 class GrossWeightComp(om.ExplicitComponent):
     """
-    Gross mass W0 and its build-up (paper eqs. 31-33, reference/paper.md Sec. IV;
+    Gross mass W0 and its build-up (paper eqs. 31-33 and Sec. IV;
     docs theory/weights 'Gross mass').
 
     - W_structures = W_wing + W_fuselage + W_empennage + W_booms             (eq. 32)

@@ -2,7 +2,7 @@
 
 The regressions (paper ref. [41], Sec. III.D) are linear in a few planform and sizing
 parameters; their coefficients live in ``lpc_mdo/data/m4_regressions.toml`` (copied from
-docs theory/weights 'M4 regressions') and are read once by
+the public CADDEE_alpha code; docs theory/weights 'M4 regressions') and are read once by
 :func:`m4_coefficients`. Each component returns the part's mass, its cg in the body frame and its
 inertia tensor about that cg in body axes, so :class:`MassPropertiesComp` can add it as one body.
 """
