@@ -107,9 +107,8 @@ class ObserverGeometryComp(om.ExplicitComponent):
     """
     Rotor-observer geometry and rotor kinematics for each rotor (steady observer).
 
-    Equations (docs theory/acoustics 'Observer geometry' and 'Tonal loading noise' "common
-    geometry"), with P = x_o - x_h the hub-to-observer vector and n = d/norm(d) the unit thrust
-    axis:
+    Equations (docs theory/acoustics 'Observer geometry'), with P = x_o - x_h the hub-to-observer
+    vector and n = d/norm(d) the unit thrust axis:
 
     - distance S = norm(P); axial distance z = P.n (> 0 on the thrust side); in-plane distance
       Y = sqrt(S**2 - z**2 + 1e-12 m**2). The elevation of the observer above the rotor plane is

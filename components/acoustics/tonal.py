@@ -319,18 +319,17 @@ class LowsonLoadingNoiseComp(om.ExplicitComponent):
               + (k/r_i) D_lambda],   k = n -+ lambda,  x_i = n Omega r_i Y/(a r1),
 
     with T_{-+lambda} = (a_lambda +- i b_lambda)/2, derived from the far-field compact dipole with
-    the Jacobi-Anger expansion; r1 is the Doppler-corrected distance (docs theory/acoustics 'Tonal
-    loading noise' "common geometry"), thrust is positive along the thrust axis and drag opposes
+    the Jacobi-Anger expansion; r1 is the Doppler-corrected distance (docs theory/acoustics
+    'Observer geometry'), thrust is positive along the thrust axis and drag opposes
     rotation. This is the docs theory/acoustics 'Tonal loading noise' kernel with the (-i)**k phase
     written out; it reduces to Gutin's formula for steady loading for every n (the public code's
-    odd-(n - lambda) sign branch does not, see below). B equally
-    spaced identical blades add coherently: abs(p) = B abs(p_n). SPL = 10 log10(abs(p)**2/(2
-    p_ref**2))
-    (paper eq. 21) with the smooth floor of ``common``.
+    odd-(n - lambda) sign branch does not, see below). B equally spaced identical blades add
+    coherently: abs(p) = B abs(p_n). SPL = 10 log10(abs(p)**2/(2 p_ref**2)) (paper eq. 21) with
+    the smooth floor of ``common``.
 
     Two load models, selected smoothly by the in-plane flight speed v (docs theory/acoustics 'Tonal
-    loading noise' "path selection"): SPL = SPL_Sears (1 - h) + SPL_unsteady h, h = 0.5 tanh(100 (v
-    - 0.1 m/s)) + 0.5.
+    loading noise'): SPL = SPL_Sears (1 - h) + SPL_unsteady h,
+    h = 0.5 tanh(100 (v - 0.1 m/s)) + 0.5.
 
     - Sears path (hover): steady loads (the lambda = 0 coefficients) plus the Sears-function gust
       loads lambda = 1..L_g (SearsGustLoadsComp), summed coherently over lambda within each part;

@@ -18,7 +18,7 @@ class TotalNoiseComp(om.ExplicitComponent):
     docs theory/acoustics 'Total noise' and paper eq. 21: with E = 10**(L/10),
 
     - tonal_spl_r = 10 log10 sum_m (E(loading_rm) + E(thickness_rm))   (docs theory/acoustics
-      'Thickness noise' "tonal total");
+      'Total noise');
     - broadband_oaspl_r = 10 log10 sum_b E(broadband_rb)               (docs theory/acoustics
       'Broadband noise' OASPL);
     - rotor_spl_r = 10 log10(E(tonal_r) + E(broadband_r));
