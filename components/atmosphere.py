@@ -21,9 +21,9 @@ ATMOSPHERE_CONSTANTS = {
         'T_mu_ref': 288.15,
         'S': 110.4,
     },
-    # CADDEE SimpleAtmosphereModel (reference/models_aero_rotor_acoustics.md §3): rounded
-    # constants; gives rho = 1.11174 kg/m**3 and a = 336.409 m/s at 1000 m
-    # (reference/models_structures_motor_vehicle.md §8.1). Kept only to reproduce those numbers.
+    # CADDEE SimpleAtmosphereModel (docs theory/atmosphere): rounded constants; gives rho = 1.11174
+    # kg/m**3 and a = 336.409 m/s at 1000 m (docs theory/atmosphere). Kept only to reproduce those
+    # numbers.
     'caddee': {
         'T0': 288.16,
         'p0': 101325.0,
@@ -60,8 +60,8 @@ class AtmosphereComp(om.ExplicitComponent):
     """
     Standard atmosphere in the troposphere (constant lapse rate, 0 to 11 km).
 
-    Equations (reference/models_aero_rotor_acoustics.md §3, with the constants of the option
-    ``constants``; ICAO by default):
+    Equations (docs theory/atmosphere, with the constants of the option ``constants``; ICAO by
+    default):
 
     - T = T0 - L h
     - p = p0 (T/T0)**(g0/(R L))

@@ -55,13 +55,14 @@ class BsplineComp(om.ExplicitComponent):
     """
     Clamped B-spline: control points to curve values at normalized stations x in [0, 1].
 
-    Implements BladeAD ``BsplineParameterization`` (reference/models_aero_rotor_acoustics.md §7):
-    curve(x) = sum_j N_j,order(x) cp_j with a clamped (open uniform) knot vector, so
-    curve(0) = cp_0 and curve(1) = cp_last. With the default num_cp = 4, order = 4 the knots are
+    Implements BladeAD ``BsplineParameterization`` (docs theory/rotors 'Blade parameterization'):
+    curve(x) = sum_j N_j,order(x) cp_j with a clamped (open uniform) knot vector, so curve(0) = cp_0
+    and curve(1) = cp_last. With the default num_cp = 4, order = 4 the knots are
     [0,0,0,0,1,1,1,1] and the curve is the cubic Bezier sum_i C(3,i) x^i (1-x)^(3-i) cp_i;
     control points linear in their Greville abscissae (equally spaced when num_cp = order) give an
     exactly linear curve. Evaluated by default at x = linspace(0, 1, num_points), uniform in x;
-    value i goes to station i (§7, the as-coded BladeAD mapping).
+    value i goes to station i (docs theory/rotors 'Blade parameterization', the as-coded BladeAD
+    mapping).
 
     The map is linear, output = B @ cp for each curve, so the Jacobian is the constant basis
     matrix B, block-diagonal over vec_size, declared once in setup with rows/cols/val.

@@ -8,8 +8,8 @@ class KinematicsComp(om.ExplicitComponent):
     """
     Body-frame kinematics of a quasi-steady flight condition, vectorized over conditions.
 
-    Equations (reference/models_structures_motor_vehicle.md §8.2, CADDEE condition kinematics;
-    body frame x forward, z down):
+    Equations (docs theory/dynamics 'Condition kinematics', CADDEE condition kinematics; body frame
+    x forward, z down):
 
     - angle of attack alpha = theta - gamma
     - u = V cos(alpha), w = V sin(alpha)        (body-axis velocity components)

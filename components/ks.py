@@ -13,8 +13,8 @@ class KSComp(om.ExplicitComponent):
     """
     Smooth maximum (or minimum) of each row of ``g`` by the Kreisselmeier-Steinhauser function.
 
-    Paper eq. 7 with alpha = 1 (reference/paper.md; reference/models_structures_motor_vehicle.md
-    §6.6), in the numerically stable shifted form of csdl_alpha ``maximum``:
+    Paper eq. 7 with alpha = 1 (docs theory/structures 'KS aggregation'), in the
+    numerically stable shifted form of csdl_alpha ``maximum``:
 
         KS_i = m_i + ln( sum_j exp(rho (g_ij - m_i)) ) / rho,   m_i = max_j Re(g_ij)
 
@@ -48,7 +48,7 @@ class KSComp(om.ExplicitComponent):
         (error at most ln(width)/rho) but less smooth. Default 50, suited to g of order one
         (normalised constraints such as sigma/sigma_allow - 1); scale g or rho for other
         magnitudes. The public LPC scripts use rho = 1 on stresses in Pa, a hard max in
-        practice (§6.6): do not copy that.
+        practice (docs theory/structures 'KS aggregation'): do not copy that.
     lower_flag : bool
         If True, aggregate the minimum instead of the maximum. Default False. (This is the
         ``minimum`` option of OpenMDAO's om.KSComp, whose ``lower_flag`` only flips the sign of g.)

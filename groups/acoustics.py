@@ -1,8 +1,8 @@
 """Rotor aeroacoustics at an observer: the group assembly.
 
 ``RotorNoiseGroup`` assembles the acoustic components of ``lpc_mdo.components.acoustics`` for
-``num_rotors`` rotors heard by one observer (paper Sec. III.E; reference/models_aero_rotor_
-acoustics.md §10). The plain functions for use outside an OpenMDAO model are
+``num_rotors`` rotors heard by one observer (paper Sec. III.E; docs
+theory/acoustics). The plain functions for use outside an OpenMDAO model are
 :func:`lpc_mdo.api.acoustics.rotor_noise` and
 :func:`lpc_mdo.components.acoustics.a_weighting.a_weighting`.
 """
@@ -38,7 +38,7 @@ class RotorNoiseGroup(om.Group):
     """
     Tonal, broadband and total A-weighted noise of ``num_rotors`` rotors at one observer.
 
-    Paper Sec. III.E (eqs. 19-22) with reference/models_aero_rotor_acoustics.md §10:
+    Paper Sec. III.E (eqs. 19-22) with docs theory/acoustics:
 
     ``observer_position`` (ObserverPositionComp; only if observer_input = 'relative')
     -> ``geometry`` (ObserverGeometryComp: S, z, Y, Doppler r1, observer azimuth, speeds)
@@ -46,8 +46,9 @@ class RotorNoiseGroup(om.Group):
     -> ``fourier`` (LoadFourierComp, eqs. 19-20) -> [``sears`` (SearsGustLoadsComp)]
     -> ``loading`` (LowsonLoadingNoiseComp, eq. 21) · ``thickness`` (BarryMagliozziThicknessComp)
     · ``broadband`` (GillLeeBroadbandComp, eq. 22)
-    -> ``tonal_weighting``/``broadband_weighting`` (AWeightingComp, §10.6)
-    -> ``total_a`` and ``total`` (TotalNoiseComp, §10.7).
+    -> ``tonal_weighting``/``broadband_weighting`` (AWeightingComp, docs theory/acoustics
+    'A-weighting') -> ``total_a`` and ``total`` (TotalNoiseComp, docs theory/acoustics 'Total
+    noise').
 
     All variables are promoted. The hover constraint of the paper is ``total_spl_a`` <= 70 dBA
     (``HOVER_NOISE_LIMIT_DBA``) with the default observer (100 m from the rotor-hub centroid,
@@ -62,7 +63,8 @@ class RotorNoiseGroup(om.Group):
     thrust_per_span, drag_per_span : float, (num_rotors, num_radial, num_azimuth), N/m
         Sectional loads of one blade per unit span at the acoustic stations (load_input =
         'sectional'). From the BEM/Pitt-Peters blade-element outputs (all blades, per element,
-        §8.3): thrust_per_span = dT/(B dr), drag_per_span = dQ/(B r dr).
+        docs theory/rotors 'Loads and coefficients'): thrust_per_span = dT/(B dr), drag_per_span =
+        dQ/(B r dr).
     inflow_angle : float, (num_rotors, num_radial, num_azimuth), rad
         Inflow angle at the stations (Sears gusts; load_input = 'sectional').
     chord : float, (num_rotors, num_radial), m
@@ -81,7 +83,9 @@ class RotorNoiseGroup(om.Group):
     density, speed_of_sound : float, (1,), kg/m**3 and m/s
         Atmosphere.
 
-    Outputs (main ones; dB re 20 uPa, units=None)
+    Outputs (main ones; dB re 20 uPa, units=None):
+
+    Outputs
     -------
     total_spl_a : (1,) dBA
         Total A-weighted level of all rotors (the hover constraint).

@@ -51,15 +51,19 @@ class BeamGroup(om.Group):
     group runs once and needs no Newton or DirectSolver; totals (fwd or adjoint) cost one
     triangular solve pair per right-hand side.
 
-    Inputs (promoted)
-    -----------------
+    The inputs are promoted.
+
+    Inputs
+    ------
     nodes : (num_nodes, 3), m; area : (num_elements,), m**2;
     bending_inertia_vertical, bending_inertia_inplane, torsion_constant : (num_elements,), m**4;
     youngs_modulus, shear_modulus : scalar, Pa; density : scalar, kg/m**3;
     node_forces : (num_nodes, 3), N; node_moments : (num_nodes, 3), N*m (global frame).
 
-    Outputs (promoted)
-    ------------------
+    The outputs are promoted.
+
+    Outputs
+    -------
     displacements : (num_nodes, 3), m; rotations : (num_nodes, 3), rad;
     element_end_forces, element_end_moments : (num_elements, 2, 3), N and N*m (element frame);
     section_forces : (num_elements, 3), N; section_moments : (num_elements, 3), N*m;
@@ -85,8 +89,7 @@ class BoxBeamGroup(om.Group):
     """
     Wing-box beam: box section, frame FEM, stress recovery and skin-panel buckling.
 
-    reference/models_structures_motor_vehicle.md §6 and paper eqs. 17-18. Subsystems, all
-    promoted, in execution order:
+    docs theory/structures and paper eqs. 17-18. Subsystems, all promoted, in execution order:
 
     - ``section`` (BoxSectionComp): A, I_y, I_z, J and the mean web thickness from the box
       width and height and the four wall thicknesses (per element = per bay);
@@ -109,8 +112,10 @@ class BoxBeamGroup(om.Group):
     ``bottom_skin_buckling_ratio`` <= 1 without the tip bay, ``stress_ratio`` <= 1 and the
     vertical displacement (or their KS aggregates).
 
-    Inputs (promoted)
-    -----------------
+    The inputs are promoted.
+
+    Inputs
+    ------
     nodes : (num_nodes, 3), m; box_width, box_height : (num_elements,), m;
     top_skin_thickness, bottom_skin_thickness, front_spar_thickness, rear_spar_thickness :
     (num_elements,), m; top_skin_radius, bottom_skin_radius : (num_elements,), m (curved panels);
@@ -119,8 +124,10 @@ class BoxBeamGroup(om.Group):
     aero_forces : (num_aero_points, 3), m, N; point_masses : (k,), kg;
     point_mass_locations : (k, 3), m; load_factor; pitch, roll : rad (with load transfer).
 
-    Outputs (promoted)
-    ------------------
+    The outputs are promoted.
+
+    Outputs
+    -------
     Those of BeamGroup, plus area, bending_inertia_vertical, bending_inertia_inplane,
     torsion_constant, web_thickness (num_elements,); von_mises_stress (num_elements, 5), Pa;
     top_skin_stress, bottom_skin_stress, top_skin_critical_stress,

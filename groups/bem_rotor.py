@@ -78,9 +78,11 @@ class RotorGroupBase(om.Group):
         self.options.declare('tip_loss', default=True, types=bool, desc='Prandtl tip loss')
         self.options.declare('hub_loss', default=True, types=bool, desc='Prandtl hub loss')
         self.options.declare('quadrature', default='midpoint', values=QUADRATURES,
-                             desc="Radial quadrature ('bladead': §11 Q8 compatibility)")
+                             desc="Radial quadrature ('bladead': as the public code, "
+                                  "docs theory/rotors 'Public-code compatibility')")
         self.options.declare('spline_stations', default='as_coded', values=SPLINE_STATIONS,
-                             desc='Where the chord and twist spline values are placed (§7)')
+                             desc='Where the chord and twist spline values are placed '
+                                  '(docs theory/rotors "Blade parameterization")')
         self.options.declare('body_frame', default=True, types=bool,
                              desc='Include body-frame velocity and hub loads')
         self.declare_model_options()
@@ -151,20 +153,26 @@ class BEMRotorGroup(RotorGroupBase):
 
     Subsystems (all variables promoted):
 
-    - ``blade``: BladeGeometryGroup (stations, chord and twist B-splines; reference §7, §8.1);
+    - ``blade``: BladeGeometryGroup (stations, chord and twist B-splines; docs theory/rotors 'Blade
+      parameterization', 'Stations and disk frame');
     - ``velocity``: RotorVelocityComp (body velocity to each disk's axial velocity), if
       ``body_frame``;
-    - ``inflow``: BEMInflowComp (inflow angle of every station, paper eq. 13, §8.2);
-    - ``loads``: BEMLoadsComp (sectional loads, thrust, torque; eq. 12, §8.3);
-    - ``performance``: RotorPerformanceComp (power, C_T, C_P, J, eta, FoM, tip Mach; §8.3);
+    - ``inflow``: BEMInflowComp (inflow angle of every station, paper eq. 13, docs theory/rotors
+      'BEM inflow residual');
+    - ``loads``: BEMLoadsComp (sectional loads, thrust, torque; eq. 12, docs theory/rotors 'Loads
+      and coefficients');
+    - ``performance``: RotorPerformanceComp (power, C_T, C_P, J, eta, FoM, tip Mach; docs
+      theory/rotors 'Loads and coefficients');
     - ``hub_loads``: HubLoadsComp (forces and moments in the body frame), if ``body_frame``.
 
     Solvers: the group is feed-forward (NonlinearRunOnce, LinearRunOnce). BEMInflowComp solves
     itself in ``solve_nonlinear`` and inverts its diagonal Jacobian in ``solve_linear``, so no
     DirectSolver is needed and a total derivative costs one pass.
 
-    Inputs (promoted)
-    -----------------
+    The inputs are promoted.
+
+    Inputs
+    ------
     radius : (num_rotors,), m
         Tip radius (design variable).
     chord_cp, twist_cp : (num_rotors, num_cp), m and rad
@@ -179,8 +187,10 @@ class BEMRotorGroup(RotorGroupBase):
     hub_position : (num_rotors, 3), m;  reference_point : (3,), m
         If ``body_frame``.
 
-    Outputs (promoted)
-    ------------------
+    The outputs are promoted.
+
+    Outputs
+    -------
     hub_radius, station_radius, station_width, chord, twist, azimuth
         Blade geometry (BladeGeometryGroup).
     axial_velocity, inplane_velocity
@@ -204,7 +214,8 @@ class BEMRotorGroup(RotorGroupBase):
     num_nodes, num_radial, num_cp : int
         Operating points (1), radial stations (25), control points (4).
     polar : Polar
-        Sectional polar. Default LinearQuadraticPolar() (reference §6.4).
+        Sectional polar. Default LinearQuadraticPolar() (docs theory/aerodynamics 'Linear-quadratic
+        polar').
     tip_loss, hub_loss : bool
         Prandtl losses (default True).
     tip_loss_form, quadrature, spline_stations : str
@@ -216,7 +227,8 @@ class BEMRotorGroup(RotorGroupBase):
 
     def declare_model_options(self):
         self.options.declare('tip_loss_form', default='classical', values=TIP_LOSS_FORMS,
-                             desc="Tip-loss form ('bladead': §11 Q9 compatibility)")
+                             desc="Tip-loss form ('bladead': compatibility with the public code, "
+                                  "docs theory/rotors 'Public-code compatibility')")
 
     def add_rotor_model(self, geo):
         opts = self.options

@@ -558,7 +558,7 @@ class SteadyFlightCondition(ConditionGroup):
 class TransitionCondition(ConditionGroup):
     """
     A quasi-steady transition point: prescribed speed and pitch, VLM + drag, Pitt–Peters lift
-    rotors, the BEM pusher and all nine motors (paper Sec. IV; reference page §8.4). The full
+    rotors, the BEM pusher and all nine motors (paper Sec. IV; docs theory/dynamics 'Design conditions'). The full
     problem constrains u_dot and w_dot to the prescribed acceleration (dV/dt cos theta,
     dV/dt sin theta) and v_dot, p_dot, q_dot, r_dot to zero.
 
@@ -652,7 +652,7 @@ class StructuralCondition(ConditionGroup):
     """
     +3g or -1g pull-up/push-over: VLM at the load factor, trim in F_z only, and the wing-box
     beam of the right half wing loaded by the VLM panel forces plus its own inertia at the load
-    factor, with stress and curved-panel buckling (paper Sec. III.D, IV; reference page §6).
+    factor, with stress and curved-panel buckling (paper Sec. III.D, IV; docs theory/structures).
     Pitch is an input (design variable); the elevator is held at zero. With ``ks_rho`` the
     stress ratios, the buckling ratios (all bays but the tip bay) and the vertical tip-ward
     displacement in the direction of the load (-w at positive, +w at negative load factor) are

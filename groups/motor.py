@@ -46,7 +46,7 @@ class MotorGroup(om.Group):
     """
     Interior PMSM model of the lift-plus-cruise motors: sizing, equivalent circuit, operation.
 
-    reference/models_structures_motor_vehicle.md §7 and paper Sec. III.F (eqs. 23-26):
+    docs theory/motor and paper Sec. III.F (eqs. 23-26):
 
     - ``sizing`` (MotorSizingComp): D, mass (eq. 23), peak torque, internal geometry;
     - ``ecm_parameters`` (MotorECMParametersComp): magnet and circuit parameters, R_dc;

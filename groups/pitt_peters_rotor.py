@@ -10,19 +10,20 @@ class PittPetersRotorGroup(RotorGroupBase):
     """
     Several rotors at several operating points by steady Pitt–Peters inflow (edgewise flight).
 
-    Paper eq. 14-15, reference/models_aero_rotor_acoustics.md §9. The same interface as
+    Paper eq. 14-15, docs theory/rotors 'Pitt-Peters inflow'. The same interface as
     :class:`~lpc_mdo.groups.bem_rotor.BEMRotorGroup`, so a condition group can use either.
     Subsystems (all variables promoted):
 
-    - ``blade``: BladeGeometryGroup (stations, chord and twist B-splines; reference §7, §8.1);
+    - ``blade``: BladeGeometryGroup (stations, chord and twist B-splines; docs theory/rotors 'Blade
+      parameterization', 'Stations and disk frame');
     - ``velocity``: RotorVelocityComp (body velocity to each disk's axial and in-plane
       velocity), if ``body_frame``;
     - ``inflow``: PittPetersInflowComp (the three inflow states per rotor and operating point,
       L^-1 lambda - c = 0 by Newton);
     - ``loads``: PittPetersLoadsComp (sectional loads over (r, psi), thrust, torque, in-plane hub
       force, hub moments);
-    - ``performance``: RotorPerformanceComp (power, C_T, C_P, J, eta, FoM, tip Mach; §8.3, §9.1
-      item 9);
+    - ``performance``: RotorPerformanceComp (power, C_T, C_P, J, eta, FoM, tip Mach; docs
+      theory/rotors 'Loads and coefficients', 'Pitt-Peters inflow');
     - ``hub_loads``: HubLoadsComp with the in-plane loads (body-frame forces and moments), if
       ``body_frame``.
 
@@ -30,8 +31,10 @@ class PittPetersRotorGroup(RotorGroupBase):
     solves itself in ``solve_nonlinear`` (Newton on 3x3 blocks) and inverts those blocks in
     ``solve_linear``, so no DirectSolver is needed and a total derivative costs one pass.
 
-    Inputs (promoted)
-    -----------------
+    The inputs are promoted.
+
+    Inputs
+    ------
     radius : (num_rotors,), m
         Tip radius (design variable).
     chord_cp, twist_cp : (num_rotors, num_cp), m and rad
@@ -47,8 +50,10 @@ class PittPetersRotorGroup(RotorGroupBase):
     hub_position : (num_rotors, 3), m;  reference_point : (3,), m
         If ``body_frame``.
 
-    Outputs (promoted)
-    ------------------
+    The outputs are promoted.
+
+    Outputs
+    -------
     hub_radius, station_radius, station_width, chord, twist, azimuth
         Blade geometry (BladeGeometryGroup).
     axial_velocity, inplane_velocity
@@ -78,12 +83,13 @@ class PittPetersRotorGroup(RotorGroupBase):
     num_nodes, num_radial, num_azimuth, num_cp : int
         Operating points (1), radial stations (25), azimuthal stations (25), control points (4).
     polar : Polar
-        Sectional polar. Default LinearQuadraticPolar() (reference §6.4).
+        Sectional polar. Default LinearQuadraticPolar() (docs theory/aerodynamics 'Linear-quadratic
+        polar').
     tip_loss, hub_loss : bool
         Prandtl losses (default True).
     loss_placement : str
-        'momentum' (default, as the BEM) or 'blade_element' (reference §9.1); see
-        PittPetersInflowComp.
+        'momentum' (default, as the BEM) or 'blade_element' (docs theory/rotors 'Pitt-Peters
+        inflow'); see PittPetersInflowComp.
     tangential_induction : bool
         Wake swirl per station (default True; see PittPetersLoadsComp).
     quadrature, spline_stations : str

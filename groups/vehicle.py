@@ -197,7 +197,7 @@ def calibrated_other_mass(vehicle):
     'hover_balance'`` the cg of W_other also puts the vehicle's cg above the mean lift-hub x.
 
     The paper calibrates W_other at the initial design because the NASA reference does not
-    itemise every weight (reference page §4.1). Gross mass and cg are affine in W_other and its
+    itemise every weight (docs theory/weights 'Gross mass'). Gross mass and cg are affine in W_other and its
     position, so one run of the vehicle group with W_other = 0 gives both exactly. Every other
     item is held at its initial-design value as the model computes it: the wing mass from the
     wing-box beam at the initial thicknesses, the motor masses from the motor sizing (paper

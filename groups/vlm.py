@@ -23,7 +23,7 @@ def lpc_vlm_surfaces(wing_span_panels=26, tail_span_panels=8, chord_panels=1):
     """
     Return the LPC lattice of the public code: wing 26 x 1 and all-moving h-tail 8 x 1 panels.
 
-    reference/models_aero_rotor_acoustics.md §2 (VLM meshes). Returns a tuple of
+    docs theory/aerodynamics 'Reference-vehicle defaults' (VLM meshes). Returns a tuple of
     :class:`VLMSurface` named ``wing`` and ``horizontal_tail`` (deflectable).
     """
     return (VLMSurface("wing", chord_panels, wing_span_panels),
@@ -34,8 +34,8 @@ class VLMGroup(om.Group):
     """
     Steady vortex-lattice method for several lifting surfaces with mutual influence.
 
-    Paper Sec. III.A, eqs. 10–11; reference/models_aero_rotor_acoustics.md §4. One lattice holds
-    all surfaces (wing and horizontal tail), so the tail sees the wing's wake and vice versa.
+    Paper Sec. III.A, eqs. 10–11; docs theory/aerodynamics 'Vortex-lattice method'. One lattice
+    holds all surfaces (wing and horizontal tail), so the tail sees the wing's wake and vice versa.
     Vortex rings on the quarter-panel-shifted bound grid, wake a semi-infinite vortex pair per
     strip along the relative wind, a dense AIC system solved by LU in an ImplicitComponent
     (:class:`VLMCirculationComp`, whose own ``solve_linear`` reuses the factors, so the group
@@ -49,7 +49,9 @@ class VLMGroup(om.Group):
     Subsystems (in order): geometry, freestream, normals, aic, circulation, induced_velocity,
     panel_forces, profile_drag, loads, sectional, trefftz.
 
-    Inputs (promoted; nn = num_nodes, ns = span-wise panels of a surface)
+    Inputs (promoted; nn = num_nodes, ns = span-wise panels of a surface):
+
+    Inputs
     ------
     {name}_mesh : (nx, ny, 3), m
         Mesh of each surface (e.g. from
@@ -72,7 +74,9 @@ class VLMGroup(om.Group):
     {name}_deflection : (nn,), rad
         Deflection of each deflectable (all-moving) surface, trailing edge down.
 
-    Outputs (promoted)
+    The outputs are promoted.
+
+    Outputs
     -------
     force : (nn, 3), N, body axes;  moment : (nn, 3), N*m about reference_point
     lift, drag, induced_drag, profile_drag, side_force, trefftz_induced_drag : (nn,), N

@@ -89,8 +89,9 @@ def placeholder_calibration_inputs(vehicle=None):
     The vehicle model connects the wing-box beam and the motor sizing instead; W_other is
     calibrated with those (:func:`calibrate_other_mass`), not with these defaults.
 
-    - ``wing_mass`` (kg): the M4 wing regression (ref §5.2, public-code alternative to the beam)
-      at the vehicle's initial planform, battery mass and cruise speed; 283.3605 kg for the
+    - ``wing_mass`` (kg): the M4 wing regression (docs theory/weights 'M4 regressions', public-code
+      alternative to the beam) at the vehicle's initial planform, battery mass and cruise speed;
+      283.3605 kg for the
       reference vehicle.
     - ``motor_mass`` (kg, 9 values in :func:`motor_group_indices` order): paper eq. 23,
       m = (pi/2) A_bar B_bar D**2 L/Q_sp with D = L/(L/D), at the initial ``motor_length`` design
@@ -135,12 +136,15 @@ class WeightsGroup(om.Group):
     Component masses, gross mass (paper eqs. 31-33) and mass properties of the whole vehicle.
 
     Subsystems (all variables promoted): ``fuselage``, ``booms``, ``empennage``
-    (M4 regressions, ref §5), ``wing`` (only with ``wing_model='regression'``), ``gross_weight``
-    (:class:`GrossWeightComp`) and ``mass_properties`` (:class:`MassPropertiesComp`, ref §4.3)
-    over the bodies of :data:`VEHICLE_MASS_ITEMS`. Input defaults come from the vehicle.
+    (M4 regressions, docs theory/weights 'M4 regressions'), ``wing`` (only with
+    ``wing_model='regression'``), ``gross_weight`` (:class:`GrossWeightComp`) and
+    ``mass_properties`` (:class:`MassPropertiesComp`, docs theory/weights 'Mass properties') over
+    the bodies of :data:`VEHICLE_MASS_ITEMS`. Input defaults come from the vehicle.
 
-    Inputs (promoted)
-    -----------------
+    The inputs are promoted.
+
+    Inputs
+    ------
     wing_area, wing_aspect_ratio, fuselage_length : float, (1,), m**2 / - / m
         Planform design variables (regressors).
     htail_area, vtail_area : float, (1,), m**2
@@ -169,8 +173,10 @@ class WeightsGroup(om.Group):
     power_electronics_cg, payload_cg, systems_cg, other_cg : float, (3,), m
         Their cg, default ``vehicle.masses``.
 
-    Outputs (promoted)
-    ------------------
+    The outputs are promoted.
+
+    Outputs
+    -------
     fuselage_mass, boom_mass, empennage_mass : float, (1,), kg
         Regression masses (and ``wing_mass`` with ``wing_model='regression'``).
     fuselage_cg, boom_cg, empennage_cg : float, (3,), m

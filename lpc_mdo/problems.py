@@ -234,7 +234,8 @@ def declare_problem(model, vehicle=None, *, static_margin=True, lateral_trim=Tru
 
 def attach_recorder(prob, path):
     """One SQLite recorder on the driver (every iteration) and the problem (``'final'``, every
-    variable), so a single case file holds the run and what post-processing needs."""
+    variable), so a single case file holds the run and what post-processing needs.
+    """
     recorder = om.SqliteRecorder(str(path))
     prob.driver.add_recorder(recorder)
     prob.add_recorder(recorder)

@@ -22,9 +22,9 @@ import openmdao.api as om
 from lpc_mdo.groups.acoustics import HOVER_NOISE_LIMIT_DBA, RotorNoiseGroup
 
 FT = 0.3048
-# Approximate LPC lift-rotor hubs (reference/models_structures_motor_vehicle.md §3.2, CADDEE
-# geometry in ft, x aft and z up) converted to the body frame (x forward, z down, origin at the
-# nose), in the rotor order [front_outer, rear_outer, front_inner, rear_inner, front_inner,
+# Approximate LPC lift-rotor hubs (docs theory/geometry 'Reference vehicle', CADDEE geometry in ft,
+# x aft and z up) converted to the body frame (x forward, z down, origin at the nose), in the rotor
+# order [front_outer, rear_outer, front_inner, rear_inner, front_inner,
 # rear_inner, front_outer, rear_outer].
 _HUBS_FT = np.array([[5.070, -18.750, 7.355], [19.200, -18.750, 9.635],
                      [4.630, -8.217, 7.659], [18.760, -8.537, 9.919],
@@ -48,7 +48,8 @@ def build_problem(num_rotors=8, num_radial=25):
     nr, nrad = num_rotors, num_radial
     rbar = 0.2 + 0.8 * (np.arange(nrad) + 0.5) / nrad
     radius, rpm, thrust, torque = 1.524, 1200.0, 4863.5, 803.4
-    # Sectional loads of one blade (N/m) with the totals of the reference BEM case (§8.6):
+    # Sectional loads of one blade (N/m) with the totals of the reference BEM case (docs
+    # theory/dynamics 'Gravity'):
     # thrust per span ~ r, drag per span ~ r, integrated with the element-midpoint rule.
     w = np.full(nrad, 0.8 / nrad)
     t_span = thrust * rbar / (2 * radius * np.sum(w * rbar))

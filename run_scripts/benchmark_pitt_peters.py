@@ -16,8 +16,8 @@ Usage::
 
     python run_scripts/benchmark_pitt_peters.py [--repeats 15] [--nodes 1] [--no-swirl]
 
-``--no-swirl`` runs the model without the tangential induction (reference §9.1), to see what the
-per-station swirl solve costs.
+``--no-swirl`` runs the model without the tangential induction (docs theory/rotors 'Pitt-Peters
+inflow'), to see what the per-station swirl solve costs.
 """
 
 import argparse

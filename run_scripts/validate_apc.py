@@ -7,8 +7,9 @@ APC_sport_14_13_blade_geometry.txt, interpolated linearly at the stations) is ru
 BEMInflowComp + BEMLoadsComp + RotorPerformanceComp at every measured advance ratio, with the
 project's default BEM settings (classical Prandtl tip and hub loss, hub 0.15 R, midpoint rule,
 30 stations) and a thin-airfoil-like polar: lift slope 2 pi, cl0 = 0.30 (alpha_L0 = -2.7 deg),
-cd0 = 0.028 (low Reynolds number, QPROP's default), otherwise the reference §6.4 polar. Prints
-the table of computed and measured C_T, C_P, eta and, with --plot, saves the three curves.
+cd0 = 0.028 (low Reynolds number, QPROP's default), otherwise docs theory/aerodynamics
+'Linear-quadratic polar' polar. Prints the table of computed and measured C_T, C_P, eta and, with
+--plot, saves the three curves.
 """
 
 import argparse

@@ -35,7 +35,7 @@ def test_iec_61672_table():
 
 
 def test_reference_page_check_values():
-    # reference/models_aero_rotor_acoustics.md §10.6 check values (2 decimals): 0.01 dB.
+    # docs theory/acoustics 'A-weighting' check values (2 decimals): 0.01 dB.
     freq = [40.0, 100.0, 500.0, 1000.0, 2000.0, 4000.0, 10000.0]
     ref = [-34.54, -19.14, -3.25, 0.00, 1.20, 0.96, -2.49]
     assert np.max(np.abs(a_weighting(freq) - ref)) < 0.01

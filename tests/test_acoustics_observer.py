@@ -1,4 +1,4 @@
-"""Observer position and rotor-observer geometry (models_aero_rotor_acoustics.md §10.1-10.2)."""
+"""Observer position and rotor-observer geometry (docs theory/acoustics 'Observer and constraint', 'Observer geometry')."""
 
 import numpy as np
 import openmdao.api as om
@@ -25,7 +25,7 @@ def _geometry(hub, direction, observer, velocity=(0.0, 0.0, 0.0), a=340.0, rotat
 
 
 def test_default_observer_is_paper_hover_observer():
-    # §10.1: 100 m from the rotors, 45 deg below the rotor plane; seen from the observer the
+    # docs theory/acoustics 'Observer and constraint': 100 m from the rotors, 45 deg below the rotor plane; seen from the observer the
     # vehicle is at (70.71, 0, -70.71) m, i.e. the observer is at centroid + (-70.71, 0, 70.71).
     hubs = np.array([[1.0, -5.0, -1.0], [6.0, -5.0, -1.5], [1.0, 5.0, -1.0], [6.0, 5.0, -1.5]])
     prob = om.Problem(reports=False)
@@ -57,7 +57,7 @@ def test_hover_geometry_and_azimuth_convention():
 
 
 def test_doppler_distance():
-    # §10.4: r1 = S (1 - V.P/(S a)). Hub moving at 50 m/s straight towards an observer 100 m
+    # docs theory/acoustics 'Tonal loading noise': r1 = S (1 - V.P/(S a)). Hub moving at 50 m/s straight towards an observer 100 m
     # ahead: r1 = 100 (1 - 50/340); moving away: 100 (1 + 50/340). Exact, 1e-12.
     for sign in (1.0, -1.0):
         prob = _geometry([0.0, 0.0, 0.0], [0.0, 0.0, -1.0], [100.0, 0.0, 0.0],

@@ -69,7 +69,7 @@ def test_reduces_to_gutin_in_hover(num_blades, path):
     assert np.max(np.abs(prob.get_val('loading_spl') - expected)) < 1e-9
 
 
-# Kvurt-Stalnov rotor in hover (reference/models_aero_rotor_acoustics.md §10.8-1; data of
+# Kvurt-Stalnov rotor in hover (docs theory/acoustics 'Validation'; data of
 # lsdo_acoustics main, core/models/tonal/Lowson/tests/test_Lowson_hover_verif.py): B = 3,
 # R = 0.3556 m, 1500 rpm, rho = 1.225, a = 340.3, 40 stations rbar = linspace(0.21, 0.99), m = 1.
 KS_CHORD = np.array([
@@ -134,7 +134,7 @@ def test_kvurt_stalnov_hover_directivity_against_matlab():
     prob.run_model()
     loading = prob.get_val('loading_spl')[:, 0]
     assert np.max(np.abs(loading - KS_MATLAB)) < 1.0
-    # The reference page's table (§10.8-1) at 0 / 90 / 180 deg from the axis: 56.09, 46.73,
+    # The reference page's table (docs theory/acoustics 'Validation') at 0 / 90 / 180 deg from the axis: 56.09, 46.73,
     # 56.09 dB (on-axis and in-plane values are the same in either pairing); within 0.2 dB.
     assert np.max(np.abs(loading[[0, 18, 36]] - [56.09, 46.73, 56.09])) < 0.2
 
@@ -252,7 +252,7 @@ def test_sears_function_closed_form():
 
 
 def test_loading_path_switch_is_smooth():
-    # §10.4 path selection: weight of the unsteady path 0.5 tanh(100 (v - 0.1)) + 0.5; at the
+    # docs theory/acoustics 'Tonal loading noise' path selection: weight of the unsteady path 0.5 tanh(100 (v - 0.1)) + 0.5; at the
     # threshold v = 0.1 m/s the level is the mean of the two paths (exact algebra, 1e-12 dB).
     levels = {}
     for path, speed in (('sears', 0.1), ('unsteady', 0.1), ('auto', 0.1)):

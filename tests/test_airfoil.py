@@ -1,4 +1,4 @@
-"""TablePolar, get_polar and the shipped airfoil tables (reference aero §6)."""
+"""TablePolar, get_polar and the shipped airfoil tables (reference docs theory/aerodynamics 'Airfoil polars')."""
 
 import numpy as np
 import pytest

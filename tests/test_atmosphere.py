@@ -62,8 +62,8 @@ def test_tropopause_values():
 
 
 def test_caddee_constants_reproduce_reference_numbers():
-    # reference/models_aero_rotor_acoustics.md §3 table (public CADDEE code, 100 m and 1000 m rows)
-    # and models_structures_motor_vehicle.md §8.1; the tables round to 6 significant digits
+    # docs theory/atmosphere table (public CADDEE code, 100 m and 1000 m rows)
+    # and docs theory/atmosphere; the tables round to 6 significant digits
     # (half a unit in the last digit is up to 5e-6 relative), so 5e-6 relative.
     prob = _run([100.0, 1000.0], constants='caddee')
     assert_near_equal(prob.get_val('temperature'), [287.51, 281.66], tolerance=5e-6)

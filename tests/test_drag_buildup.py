@@ -14,7 +14,7 @@ from lpc_mdo.components.aero.drag_buildup import (
     lpc_drag_components,
 )
 
-# Cruise (reference vehicle file): M 0.17 at 999.74 m, CADDEE atmosphere (reference page §3):
+# Cruise (reference vehicle file): M 0.17 at 999.74 m, CADDEE atmosphere (docs theory/atmosphere):
 # rho = 1.11177 kg/m^3, mu = 1.70443e-5 Pa s, a = 336.410 m/s, V = 57.1897 m/s.
 CRUISE = {"speed": 57.1897, "density": 1.11177, "dynamic_viscosity": 1.70443e-5,
           "speed_of_sound": 336.410, "angle_of_attack": math.radians(2.0)}
@@ -37,7 +37,7 @@ def make_problem(components=None, values=None, conditions=(CRUISE,), **options):
 
 
 def test_form_factors_against_reference_table():
-    # reference page §5 table (Raymer form, no sweep): wing LS(1)-0413 1.2236, LS(1)-0417
+    # docs theory/aerodynamics 'Drag build-up' table (Raymer form, no sweep): wing LS(1)-0413 1.2236, LS(1)-0417
     # 1.3385, tails (t/c 0.15, (x/c)_m 0.3) 1.3506; fuselage f = 9.144/1.688 = 5.417,
     # FF = 1.3910. Tolerance: the 4 printed decimals.
     comps = (LiftingSurfaceDrag("ls413", 0.13, 0.4), LiftingSurfaceDrag("ls417", 0.17, 0.4),
@@ -51,15 +51,15 @@ def test_form_factors_against_reference_table():
 
 def test_lpc_buildup_against_hand_calculation():
     comps, values = lpc_drag_components()
-    # MACs of the reference page §5 table (wing 1.4601, h-tail 0.9469, v-tail 1.6343 m).
+    # MACs of docs theory/aerodynamics 'Drag build-up' table (wing 1.4601, h-tail 0.9469, v-tail 1.6343 m).
     assert_near_equal([values["wing_mean_aerodynamic_chord"],
                        values["horizontal_tail_mean_aerodynamic_chord"],
                        values["vertical_tail_mean_aerodynamic_chord"]],
                       [1.4601, 0.9469, 1.6343], 1e-4)
     prob = make_problem()
-    # Independent evaluation of §5 with the math module: Raymer wetted areas 2 S (1 + 0.2 t/c),
+    # Independent evaluation of docs theory/aerodynamics 'Drag build-up' with the math module: Raymer wetted areas 2 S (1 + 0.2 t/c),
     # Torenbeek fuselage pi D L (1 - 2/f)^(2/3) (1 + 1/f^2) with D = sqrt(H W), booms
-    # 8 pi d L_c (d = 0.3048 m, our assumption), the §5 skin friction with the LPC laminar
+    # 8 pi d L_c (d = 0.3048 m, our assumption), the docs theory/aerodynamics 'Drag build-up' skin friction with the LPC laminar
     # fractions (wing 0.7, others 0.1), Q = 1.1, rotors 0.111484 m^2.
     v, rho, mu, a = (CRUISE[k] for k in ("speed", "density", "dynamic_viscosity",
                                          "speed_of_sound"))

@@ -6,7 +6,7 @@ from openmdao.utils.assert_utils import assert_check_partials, assert_near_equal
 from lpc_mdo.components.energy.battery import BatteryComp
 from lpc_mdo.components.energy.mission_energy import MissionEnergyComp
 
-# Paper rule (reference page §2/§8.10): hover 60 s x2, each transition point x4, climb x2,
+# Paper rule (docs theory/energy): hover 60 s x2, each transition point x4, climb x2,
 # cruise x3, descent x2; OEI and structural cases are not flown.
 PAPER_MULTIPLIERS = [2.0, 4.0, 4.0, 2.0, 3.0, 2.0, 0.0]
 

@@ -1,4 +1,4 @@
-"""EquationsOfMotionComp (paper eq. 34; reference page §8.6-8.7)."""
+"""EquationsOfMotionComp (paper eq. 34; docs theory/dynamics 'Gravity', 'Equations of motion')."""
 
 import numpy as np
 import openmdao.api as om
@@ -7,7 +7,7 @@ from openmdao.utils.assert_utils import assert_check_partials, assert_near_equal
 
 from lpc_mdo.components.dynamics.eom import GRAVITY, EquationsOfMotionComp
 
-# Reference page §8.7 check case (CADDEE code form, reference point = origin, inertia as given
+# Reference docs theory/dynamics 'Equations of motion' check case (CADDEE code form, reference point = origin, inertia as given
 # about the reference point, no gravity): m, cg, I, F = (100, 100, 100) N, M = (20, 20, 20) N m.
 MASS = 7126.1992
 CG = np.array([12.57675332, 0.0, 7.084392152])

@@ -29,7 +29,7 @@ def printed_tolerance(value):
     return 0.5 * 10.0 ** (int(exponent or 0) - decimals) / abs(value) * 1.01
 
 
-# reference/models_structures_motor_vehicle.md §7.11: lsdo_motor (dev_csdl_alpha) run unchanged.
+# docs theory/motor 'Validation': lsdo_motor (dev_csdl_alpha) run unchanged.
 # (length m, L/D, rotor torque N*m, rotor rpm) and the printed results.
 REFERENCE_CASES = {
     'A': ((0.131, 1.0 / 3.0, 1200.0, 1193.7),
@@ -50,7 +50,7 @@ REFERENCE_CASES = {
 @pytest.mark.parametrize('case', sorted(REFERENCE_CASES))
 def test_reference_operating_points(case):
     """
-    The three operating points of §7.11 (lsdo_motor run unchanged) through motor_analysis.
+    The three operating points of docs theory/motor 'Validation' (lsdo_motor run unchanged) through motor_analysis.
 
     Tolerance: the printed precision of each reference number (half a unit in its last digit),
     with a floor of 1e-9 relative. Every value agrees; no difference needs explaining. The floor
@@ -94,8 +94,8 @@ def test_voltage_limit_report():
 
 
 def test_torque_margin_definition():
-    # Torque margin = T_pk/T_em - 1 (paper Sec. V, §7.9): case C, T_pk 93.4297526 and T_em
-    # 77.42764173 from §7.11 -> 0.2066719, to the printed precision (1e-8).
+    # Torque margin = T_pk/T_em - 1 (paper Sec. V, docs theory/motor 'Torque margin'): case C, T_pk 93.4297526 and T_em
+    # 77.42764173 from docs theory/motor 'Validation' -> 0.2066719, to the printed precision (1e-8).
     result = motor_analysis(0.08, 300.0, 1500.0)
     assert_near_equal(result['torque_margin'], 93.4297526 / 77.42764173 - 1.0, tolerance=1e-8)
 
@@ -199,7 +199,7 @@ def test_component_partials(comp_class, method):
 
 
 def test_torque_limit_is_largest_quartic_root():
-    # T_lim (bracketed solve) equals the largest real root of the §7.6 quartic found by
+    # T_lim (bracketed solve) equals the largest real root of the docs theory/motor 'Voltage-limited torque' quartic found by
     # numpy.roots on the raw reference coefficients A..E: 1e-9 relative (root conditioning).
     from lpc_mdo.components.motor.parameters import MotorParameters
     from lpc_mdo.components.motor.torque_limit import _quartic

@@ -68,7 +68,7 @@ def _isolated(comp, source):
     return prob
 
 
-# reference/models_structures_motor_vehicle.md §7.11 case A (L = 0.131 m, L/D = 1/3): values from
+# docs theory/motor 'Validation' case A (L = 0.131 m, L/D = 1/3): values from
 # running lsdo_motor unchanged, printed to 4-9 significant digits; compared to the printed
 # precision (half a unit in the last digit; the model is the same arithmetic).
 CASE_A = {
@@ -100,12 +100,12 @@ CASE_A = {
 def test_case_a_reference_values():
     prob = _chain(np.array([0.131]))
     for name, expected in CASE_A.items():
-        # §7.11 case A, to the printed precision.
+        # docs theory/motor 'Validation' case A, to the printed precision.
         assert_near_equal(prob.get_val(name)[0], expected, tolerance=printed_tolerance(expected))
 
 
 def test_case_c_reference_values():
-    # §7.11 case C (L = 0.08 m, L/D = 0.5): R_dc 0.00506054 ohm to the printed precision.
+    # docs theory/motor 'Validation' case C (L = 0.08 m, L/D = 0.5): R_dc 0.00506054 ohm to the printed precision.
     prob = _chain(np.array([0.08]), ratio=0.5)
     assert_near_equal(prob.get_val('resistance')[0], 0.00506054,
                       tolerance=printed_tolerance(0.00506054))

@@ -8,7 +8,7 @@ from scipy.optimize import minimize_scalar
 
 from lpc_mdo.components.motor.mtpa import MTPAComp, mtpa_base, mtpa_current_pu, mtpa_residual
 
-# Case A motor of reference/models_structures_motor_vehicle.md §7.11 (L = 0.131 m, L/D = 1/3),
+# Case A motor of docs theory/motor 'Validation' (L = 0.131 m, L/D = 1/3),
 # equivalent-circuit values as computed by MotorGroup (they match the reference to its printed
 # digits, see test_motor_ecm.py).
 FLUX_LINKAGE = 0.2995817371190801
@@ -32,7 +32,7 @@ def _run(torque, flux=FLUX_LINKAGE, l_d=INDUCTANCE_D, l_q=INDUCTANCE_Q):
 
 
 def test_base_values_case_a():
-    # §7.11 case A: I_base 1003.07 A and T_base 2704.52 N*m (printed to 6 digits: 1e-5 relative).
+    # docs theory/motor 'Validation' case A: I_base 1003.07 A and T_base 2704.52 N*m (printed to 6 digits: 1e-5 relative).
     i_base, t_base = mtpa_base(FLUX_LINKAGE, INDUCTANCE_D, INDUCTANCE_Q, POLE_PAIRS)
     assert_near_equal(i_base, 1003.07, tolerance=1e-5)
     assert_near_equal(t_base, 2704.52, tolerance=1e-5)

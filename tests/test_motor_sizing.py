@@ -38,7 +38,7 @@ def _run(length, ratio=0.5, diameter=None, **inputs):
     return prob
 
 
-# reference/models_structures_motor_vehicle.md §7.11, case A (L = 0.131 m, L/D = 1/3): values
+# docs theory/motor 'Validation', case A (L = 0.131 m, L/D = 1/3): values
 # from running lsdo_motor unchanged, printed to 4-9 significant digits. The model here is the
 # same arithmetic, so the tolerance is the printed precision (half a unit in the last digit).
 CASE_A_SIZING = {
@@ -63,12 +63,12 @@ CASE_A_SIZING = {
 def test_case_a_reference_values():
     prob = _run(0.131, ratio=1.0 / 3.0)
     for name, expected in CASE_A_SIZING.items():
-        # §7.11 case A, to the printed precision.
+        # docs theory/motor 'Validation' case A, to the printed precision.
         assert_near_equal(prob.get_val(name)[0], expected, tolerance=printed_tolerance(expected))
 
 
 def test_case_c_reference_values():
-    # §7.11 case C (L = 0.08 m, L/D = 0.5): D 0.16, mass 5.46888449 kg, T_pk 93.4297526 N*m,
+    # docs theory/motor 'Validation' case C (L = 0.08 m, L/D = 0.5): D 0.16, mass 5.46888449 kg, T_pk 93.4297526 N*m,
     # to the printed precision.
     prob = _run(0.08, ratio=0.5)
     for name, expected in (('diameter', 0.16), ('mass', 5.46888449),
@@ -84,7 +84,7 @@ def test_mass_is_paper_eq_23():
                 magnetic_loading=b_bar)
     expected = np.pi * a_bar * b_bar * diameter ** 2 * length / (2.0 * 15.0)
     assert_near_equal(prob.get_val('mass')[0], expected, tolerance=1e-14)
-    # T_pk = 0.4840 m**2 + 3.3169 m + 60.8142 (§7.2), 1e-14 relative.
+    # T_pk = 0.4840 m**2 + 3.3169 m + 60.8142 (docs theory/motor 'Sizing'), 1e-14 relative.
     assert_near_equal(prob.get_val('peak_torque')[0],
                       0.4840 * expected ** 2 + 3.3169 * expected + 60.8142, tolerance=1e-14)
 
@@ -142,7 +142,7 @@ def test_bad_parameters_raise(field, value):
 
 
 def test_parameters_derived_values():
-    # §7.3/7.5 constants derived from the defaults: K_dp1 = 1 (q = 1), B_r(75 C) = 1.1208 T and
+    # docs theory/motor 'Equivalent circuit'/7.5 constants derived from the defaults: K_dp1 = 1 (q = 1), B_r(75 C) = 1.1208 T and
     # H_c(75 C) = 847138 A/m (the values lsdo_motor hard-codes), A_cu = 1.2e-5 m**2, f_i = 500 Hz.
     par = MotorParameters()
     assert_near_equal(par.winding_factor, 1.0, tolerance=1e-15)

@@ -1,10 +1,10 @@
 """Pitt–Peters: reference numbers, an independent transcription, hover momentum and BEM checks.
 
-The independent transcription below re-implements reference/models_aero_rotor_acoustics.md §9.1
+The independent transcription below re-implements docs theory/rotors 'Pitt-Peters inflow'
 for one rotor in edgewise flight with plain numpy and scipy.optimize.fsolve (phi = arctan, an
 explicit 3x3 L matrix, the residual in the form lambda - L c). Its switches select either the
-public BladeAD code as it is (to reproduce the §9.3 table) or the project defaults (to check the
-vectorized components to solver precision). The §11 quirks appear only here, in the test.
+public BladeAD code as it is (to reproduce the docs theory/rotors 'Validation' table) or the project defaults (to check the
+vectorized components to solver precision). The public-code quirks (docs theory/rotors 'Public-code compatibility') appear only here, in the test.
 """
 
 import numpy as np
@@ -22,11 +22,11 @@ from lpc_mdo.components.rotor.pitt_peters_inflow import (
 )
 from lpc_mdo.components.rotor.pitt_peters_loads import PittPetersLoadsComp
 
-POLAR = LinearQuadraticPolar()   # reference §6.4 example polar (the §9.3 polar)
-RHO_REF = 1.22518316             # density of the §8.6 / §9.3 runs
+POLAR = LinearQuadraticPolar()   # docs theory/aerodynamics 'Linear-quadratic polar' example polar (the docs theory/rotors 'Validation' polar)
+RHO_REF = 1.22518316             # density of the docs theory/rotors 'Validation' / docs theory/rotors 'Validation' runs
 BLADES = 2
 
-# Blade of BladeAD examples/ex_run_pitt_peters.py (reference §9.3 and §8.6).
+# Blade of BladeAD examples/ex_run_pitt_peters.py (docs theory/rotors 'Validation' and docs theory/rotors 'Validation').
 REF_BLADE = dict(radius=1.2, chord=np.linspace(0.25, 0.05, 35),
                  twist=np.radians(np.linspace(50.0, 20.0, 35)), rpm=2000.0)
 # LPC lift-rotor blade (vehicle file: chord 0.3 -> 0.1 m, twist 30 -> 10 deg, R = 1.524 m).
@@ -48,7 +48,7 @@ def transcription(radius, chord, twist, rpm, speed, axial=0.0, num_azimuth=40, r
     r = (rh + (radius - rh) * (np.arange(n) + 0.5) / n)[:, None]
     if v['quadrature'] == 'midpoint':
         w = np.full(n, (radius - rh) / n)
-    else:                                   # §11 Q8: 0.8 R/(N - 1), halved end weights
+    else:                                   # docs theory/rotors 'Public-code compatibility': 0.8 R/(N - 1), halved end weights
         w = np.full(n, 0.8 * radius / (n - 1))
         w[[0, -1]] *= 0.5
     w = w[:, None]
@@ -64,7 +64,7 @@ def transcription(radius, chord, twist, rpm, speed, axial=0.0, num_azimuth=40, r
         p = POLAR.evaluate(th - phi, 1e6, 0.1)
         cx = p.cl * np.cos(phi) - p.cd * np.sin(phi)
         ct = p.cl * np.sin(phi) + p.cd * np.cos(phi)
-        tip_den = r if v['tip_radius'] == 'r' else radius      # §11 Q9: R
+        tip_den = r if v['tip_radius'] == 'r' else radius      # docs theory/rotors 'Public-code compatibility': R
         sin_abs = np.abs(np.sin(phi))
         big_f = (2.0 / np.pi) ** 2 * (
             np.arccos(np.exp(-BLADES / 2 * (radius - r) / (tip_den * sin_abs)))
@@ -113,7 +113,7 @@ def transcription(radius, chord, twist, rpm, speed, axial=0.0, num_azimuth=40, r
         big_l = np.array([[0.5, -k, 0.0],
                           [0.0, 4 * np.cos(chi) / (1 + np.cos(chi)), 0.0],
                           [0.0, 0.0, 4 / (1 + np.cos(chi))]])
-        big_l[(1, 0) if v['coupling'] == 'L10' else (1, 2)] = k     # §11 Q10: L12
+        big_l[(1, 0) if v['coupling'] == 'L10' else (1, 2)] = k     # docs theory/rotors 'Public-code compatibility': L12
         if v['scaling'] == 'bladead':        # as coded: 2/V_eff on column 0, 1/V_T on 1 and 2
             big_l[:, 0] *= 2.0 / v_m
             big_l[:, 1:] /= v_t
@@ -160,7 +160,7 @@ def run_component(radius, chord, twist, rpm, speeds, axial=None, num_azimuth=40,
     return prob
 
 
-# Reference §9.3 (BladeAD ex_run_pitt_peters.py run as it is): V, T (N), Q (N m).
+# Reference docs theory/rotors 'Validation' (BladeAD ex_run_pitt_peters.py run as it is): V, T (N), Q (N m).
 TABLE_9_3 = [(0.0, 3432.127, 802.623), (10.0, 3432.798, 803.001), (20.0, 3452.643, 808.502),
              (30.0, 3505.957, 821.782), (40.0, 3585.331, 842.466), (50.0, 3679.070, 867.653)]
 STATES_9_3 = {0.0: (0.070012, 0.0, 0.0), 10.0: (0.074914, 0.000983, 0.010668),
@@ -169,7 +169,7 @@ STATES_9_3 = {0.0: (0.070012, 0.0, 0.0), 10.0: (0.074914, 0.000983, 0.010668),
 
 @pytest.mark.parametrize('speed, thrust, torque', TABLE_9_3)
 def test_transcription_reproduces_reference_table(speed, thrust, torque):
-    # Source: reference §9.3 table (3 decimals) and states (6 decimals). Tolerance: the printed
+    # Source: docs theory/rotors 'Validation' table (3 decimals) and states (6 decimals). Tolerance: the printed
     # digits (0.5 in the last place, plus margin for the fsolve tolerance).
     states, t, q, _ = transcription(**REF_BLADE, speed=speed, **AS_CODED)
     assert t == pytest.approx(thrust, abs=1e-3)
@@ -179,7 +179,7 @@ def test_transcription_reproduces_reference_table(speed, thrust, torque):
 
 
 def test_transcription_reference_l10_variant():
-    # Source: reference §9.3, "the same transcription with the default L10 placement gives, at
+    # Source: docs theory/rotors 'Validation', "the same transcription with the default L10 placement gives, at
     # V = 50: (0.051673, 0.066138, 0.034229) and T = 3669.32 N". Tolerance: printed digits.
     states, t, _, _ = transcription(**REF_BLADE, speed=50.0, **dict(AS_CODED, coupling='L10'))
     np.testing.assert_allclose(states, [0.051673, 0.066138, 0.034229], atol=1e-6)
@@ -261,7 +261,7 @@ def test_zero_moment_inflow_ratio(mu_x, mu_y, mu_z):
 
 
 def swirl_free_bem_hover(radius, chord, twist, rpm, rho=1.225):
-    """Independent classical hover BEM (reference §8.2, F/r tip loss, midpoint) without swirl."""
+    """Independent classical hover BEM (docs theory/rotors 'BEM inflow residual', F/r tip loss, midpoint) without swirl."""
     n = len(chord)
     rh, r, w = station_inputs(radius, n)
     omega = rpm * np.pi / 30
@@ -304,7 +304,7 @@ def test_hover_momentum_placement_matches_swirl_free_bem(blade):
 def test_hover_against_repository_bem(blade):
     # Issue acceptance: at zero edgewise speed Pitt–Peters (defaults: F on the momentum side,
     # tangential induction per station) reproduces the repository BEM's hover thrust (BEMInflowComp
-    # + BEMLoadsComp, reference §8.2-8.3 classical defaults, with wake swirl) within 2 % on the
+    # + BEMLoadsComp, docs theory/rotors 'BEM inflow residual', 'Loads and coefficients' classical defaults, with wake swirl) within 2 % on the
     # same blade, stations, polar and atmosphere. Measured (2026-11-22): thrust +0.02 % (LPC
     # blade) and -0.4 % (BladeAD example blade), torque -0.3 % and -2.0 %; the rest is the
     # uniform Pitt–Peters inflow against the BEM's local one. Without the swirl the same

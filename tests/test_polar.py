@@ -1,11 +1,11 @@
-"""LinearQuadraticPolar (reference/models_aero_rotor_acoustics.md §6.3-6.4)."""
+"""LinearQuadraticPolar (docs theory/aerodynamics 'Viterna extrapolation', 'Linear-quadratic polar')."""
 
 import numpy as np
 import pytest
 
 from lpc_mdo.components.aero.polar import LinearQuadraticPolar, wrap_angle
 
-POLAR = LinearQuadraticPolar()  # the reference page's example polar (§6.4 table)
+POLAR = LinearQuadraticPolar()  # the reference page's example polar (docs theory/aerodynamics 'Linear-quadratic polar' table)
 
 
 def values(alpha):
@@ -13,7 +13,7 @@ def values(alpha):
 
 
 def test_attached_flow_closed_form():
-    # §6.4: cl = cl0 + cl_alpha a, cd = cd0 + k (cl_alpha a)^2 with
+    # docs theory/aerodynamics 'Linear-quadratic polar': cl = cl0 + cl_alpha a, cd = cd0 + k (cl_alpha a)^2 with
     # k = [(0.06 - 0.008)/(0.5 - 1.5)^2 + (0.02 - 0.008)/(0.5 + 1)^2]/2 = 0.028667.
     a = np.radians([-5.0, 0.0, 5.0, 10.0])
     k = 0.5 * (0.052 / 1.0 + 0.012 / 2.25)
@@ -23,7 +23,7 @@ def test_attached_flow_closed_form():
 
 
 def test_viterna_closed_form_at_30_and_90_degrees():
-    # §6.3 with AR = 10: CD_max = 1.29, A1 = 0.645, B1 = 1.29; positive stall at 15 deg,
+    # docs theory/aerodynamics 'Viterna extrapolation' with AR = 10: CD_max = 1.29, A1 = 0.645, B1 = 1.29; positive stall at 15 deg,
     # cl_s = 1.5, cd_s = 0.06.
     s, c = np.sin(np.radians(15.0)), np.cos(np.radians(15.0))
     a2 = (1.5 - 1.29 * s * c) * s / c**2

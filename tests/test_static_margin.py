@@ -1,4 +1,4 @@
-"""Neutral point (paper eq. 30) and static margin (reference page §8.8)."""
+"""Neutral point (paper eq. 30) and static margin (docs theory/dynamics 'Neutral point and static margin')."""
 
 import openmdao.api as om
 import pytest

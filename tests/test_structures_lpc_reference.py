@@ -1,4 +1,4 @@
-"""The reference LPC half-wing box beam (reference page §6.9, aframe NASA_LPC_beam.py)."""
+"""The reference LPC half-wing box beam (docs theory/structures 'Validation', aframe NASA_LPC_beam.py)."""
 
 import numpy as np
 import pytest
@@ -6,7 +6,7 @@ from openmdao.utils.assert_utils import assert_near_equal
 
 from lpc_mdo.api.structures import box_beam
 
-# Inputs of reference/models_structures_motor_vehicle.md §6.9 (FD frame: x forward, z down).
+# Inputs of docs theory/structures 'Validation' (FD frame: x forward, z down).
 NODES = np.array([
     (-3.53927, 2.96057e-5, -2.63734), (-3.55440, 0.924183, -2.60233),
     (-3.57151, 1.88572, -2.56586), (-3.58867, 2.84852, -2.52935),
@@ -47,7 +47,7 @@ def test_mass_and_tip_deflection(result):
 
 
 def test_displacements(result):
-    # §6.9 nodal displacements, 6 significant digits (the root values are exactly 0).
+    # docs theory/structures 'Validation' nodal displacements, 6 significant digits (the root values are exactly 0).
     disp = result['displacements']
     assert_near_equal(disp[1:, 2], [-4.96114e-3, -1.97650e-2, -4.35881e-2, -7.55631e-2,
                                     -0.114449, -0.159419, -0.209445, -0.279624], 1e-5)
@@ -59,7 +59,7 @@ def test_displacements(result):
 
 
 def test_section_properties(result):
-    # §6.9 A, I_y, I_z, J (as printed: A to 5, the inertias to 7 significant digits).
+    # docs theory/structures 'Validation' A, I_y, I_z, J (as printed: A to 5, the inertias to 7 significant digits).
     assert_near_equal(result['area'], [0.010682, 0.009410, 0.007859, 0.006327, 0.004784,
                                        0.003065, 0.001846, 0.000212], 3e-4)
     assert_near_equal(result['bending_inertia_vertical'],
@@ -77,7 +77,7 @@ def test_section_properties(result):
 
 
 def test_corner_von_mises_stresses(result):
-    # §6.9 table, points 0-3: the reference's points 0, 1, 2, 3 are our points 2, 3, 0, 1 (its
+    # docs theory/structures 'Validation' table, points 0-3: the reference's points 0, 1, 2, 3 are our points 2, 3, 0, 1 (its
     # section loads have the opposite sign, see BoxStressComp); 6 digits printed -> 1e-5.
     ref = np.array([
         [1.01017e8, 1.01049e8, 1.01315e8, 1.01347e8], [8.76384e7, 8.76664e7, 8.79226e7, 8.79507e7],
@@ -88,7 +88,7 @@ def test_corner_von_mises_stresses(result):
 
 
 def test_web_point_follows_statics(result):
-    # The §6.9 point-4 column cannot be reproduced from the formula the reference page states
+    # The docs theory/structures 'Validation' point-4 column cannot be reproduced from the formula the reference page states
     # (it implies e.g. a 43 N shear in the tip element, which carries the 1475 N tip load).
     # Check instead against statics: the web shear uses V_z = the outboard load projected on the
     # element's local z axis, tau = V_z Q/(2 t_web I_y) + M_x (w/2)/J, σ = N/A - M_z (w/2)/I_z.

@@ -73,7 +73,7 @@ def test_reference_values():
     assert wing.area == 19.6
     assert wing.aspect_ratio == 12.12
     assert wing.span == pytest.approx(15.41, rel=1e-3)
-    assert wing.mean_aerodynamic_chord == pytest.approx(1.4601, abs=1e-4)  # aero §5
+    assert wing.mean_aerodynamic_chord == pytest.approx(1.4601, abs=1e-4)  # docs theory/aerodynamics 'Drag build-up'
     assert wing.airfoil == "ls413" and wing.thickness_to_chord == 0.13
     assert vehicle.horizontal_tail.root_chord == pytest.approx(1.1595, abs=1e-4)
     assert vehicle.vertical_tail.span == pytest.approx(1.7239, abs=1e-4)
@@ -121,7 +121,7 @@ def test_angles_are_radians_and_energy_weights_follow_the_paper_rule():
     assert min(accelerations) == pytest.approx(0.17, abs=0.01)  # paper Table 7 minimum
     assert [c.failed_rotor for c in vehicle.conditions if c.kind == "oei"] == [0, 1, 2, 3]
     assert vehicle.condition("plus_3g").load_factor == 3
-    assert vehicle.condition("cruise").speed == pytest.approx(57.19, abs=0.01)  # ref §8.2
+    assert vehicle.condition("cruise").speed == pytest.approx(57.19, abs=0.01)  # docs theory/dynamics 'Condition kinematics'
 
 
 def test_design_variables():

@@ -32,7 +32,7 @@ def test_initial_design_is_calibrated_to_the_paper_gross_mass():
     """
     Check the initial gross mass, 3723.99 kg (paper Table 8), and the motor and wing masses.
 
-    3723.99 kg is the calibration target of W_other (reference page §4.1), so the gross mass
+    3723.99 kg is the calibration target of W_other (docs theory/weights 'Gross mass'), so the gross mass
     holds by construction; the tests next to it check the build-up independently.
     """
     prob = vehicle_problem()
@@ -110,7 +110,7 @@ def test_totals_of_gross_mass_and_geometry():
                              wrt=wrt, method="cs", out_stream=None)
     assert_check_totals(data, atol=1e-8, rtol=1e-7)
     # A kilogram of battery adds itself plus what the M4 fuselage and boom regressions add for
-    # it (battery mass is one of their regressors, reference page §5), so slightly more than 1.
+    # it (battery mass is one of their regressors, docs theory/weights 'M4 regressions'), so slightly more than 1.
     totals = prob.compute_totals("gross_mass", "battery_mass")
     assert 1.0 < totals["gross_mass", "battery_mass"][0, 0] < 1.1
 

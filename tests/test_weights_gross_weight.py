@@ -5,7 +5,7 @@ from openmdao.utils.assert_utils import assert_check_partials, assert_near_equal
 
 from lpc_mdo.components.weights.gross_weight import BREAKDOWN_LABELS, GrossWeightComp
 
-# Public-code tally of ref §4.2 (kg): fuselage 411.8, booms 153.5, empennage 73.5, wing 375.7,
+# Public-code tally of docs theory/weights 'Gross mass' (kg): fuselage 411.8, booms 153.5, empennage 73.5, wing 375.7,
 # battery 800, motors 330.1, payload 1340 (540 + 800), systems 244 -> "about 3729 kg".
 TALLY = dict(wing_mass=375.7, fuselage_mass=411.8, empennage_mass=73.5, boom_mass=153.5,
              battery_mass=800.0, payload_mass=1340.0, systems_mass=244.0,
@@ -23,7 +23,7 @@ def run(num_motors=9, **values):
 
 
 def test_public_code_tally():
-    # Ref §4.2: the sum of the public-code masses is 3728.6 kg (hand sum of the printed items,
+    # Ref docs theory/weights 'Gross mass': the sum of the public-code masses is 3728.6 kg (hand sum of the printed items,
     # 1e-12); one motor entry of 330.1 kg stands for all motors.
     prob = run(num_motors=1, motor_mass=[330.1], **TALLY)
     assert_near_equal(prob.get_val("gross_mass"), 3728.6, 1e-12)

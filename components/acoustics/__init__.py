@@ -1,6 +1,6 @@
 """Acoustics models (installed as lpc_mdo.components.acoustics).
 
-Rotor noise at an observer (paper Sec. III.E; reference/models_aero_rotor_acoustics.md §10):
+Rotor noise at an observer (paper Sec. III.E; docs theory/acoustics):
 
 - ``observer``: ObserverPositionComp, ObserverGeometryComp (distances, Doppler, azimuth).
 - ``loads``: LoadFourierComp (paper eqs. 19-20), HoverLoadDistributionComp (assumed hover shape).

@@ -29,8 +29,8 @@ def a_weighting(frequency):
 
     A(f) = 20 log10(R_A(f)/R_A(1000 Hz)) with the analytic IEC 61672-1 response
     R_A(f) = f4**2 f**4/[(f**2 + f1**2) sqrt((f**2 + f2**2)(f**2 + f3**2)) (f**2 + f4**2)],
-    f1..f4 = 20.599, 107.65, 737.86, 12194.2 Hz (reference/models_aero_rotor_acoustics.md §10.6;
-    the normalisation is exact, so A(1000) = 0; IEC writes it as + 2.00 dB). Complex-step safe.
+    f1..f4 = 20.599, 107.65, 737.86, 12194.2 Hz (docs theory/acoustics 'A-weighting'; the
+    normalisation is exact, so A(1000) = 0; IEC writes it as + 2.00 dB). Complex-step safe.
     Examples: A(100) = -19.15, A(1000) = 0.0, A(10000) = -2.49 dB.
     """
     frequency = np.asarray(frequency)
@@ -53,9 +53,10 @@ class AWeightingComp(om.ExplicitComponent):
     """
     A-weighted levels SPL_A = SPL + A(f) for one or more level arrays of a common shape.
 
-    Implements reference/models_aero_rotor_acoustics.md §10.6 (project default): each tonal
-    harmonic is weighted at its own frequency m B rpm/60 and broadband noise per one-third-octave
-    band at the band centre (§10.3). The A(f) curve is :func:`a_weighting`.
+    Implements docs theory/acoustics 'A-weighting' (project default): each tonal harmonic is
+    weighted at its own frequency m B rpm/60 and broadband noise per one-third-octave band at the
+    band centre (docs theory/acoustics 'Broadband noise'). The A(f) curve is
+    :func:`a_weighting`.
 
     Inputs
     ------

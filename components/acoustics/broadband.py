@@ -28,12 +28,12 @@ class GillLeeBroadbandComp(om.ExplicitComponent):
     """
     One-third-octave broadband noise spectrum of each rotor by the Gill-Lee model (paper eq. 22).
 
-    reference/models_aero_rotor_acoustics.md §10.3 (default, public-code function set; paper eq. 22
-    has f3 Delta**4 where f3 X**f4 with f4 = 1 is meant). Per rotor:
+    docs theory/acoustics 'Broadband noise' (default, public-code function set; paper eq. 22 has f3
+    Delta**4 where f3 X**f4 with f4 = 1 is meant). Per rotor:
 
     - blade area A_b = R sum_i w_i c_i; solidity sigma = B A_b/(pi R**2); solidity-weighted chord
       c_sw = A_b/R; C_T = T/(rho pi R**2 (Omega R)**2);
-    - V_tip = Omega R - |V| (retreating-blade correction), M_t = V_tip/a; Strouhal number
+    - V_tip = Omega R - norm(V) (retreating-blade correction), M_t = V_tip/a; Strouhal number
       St = f c_sw/V_tip at each band centre f;
     - f0 = 10 log10(V_tip**7.84), f1 = sigma, f2 = 0.9 M_t sigma (M_t + 3.82), f5 = 2.06 - 2 M_t**2,
       f6 = 1 - C_T M_t (C_T - sin|theta_0| + 2.06), f7 = C_T,
@@ -41,12 +41,13 @@ class GillLeeBroadbandComp(om.ExplicitComponent):
     - X = St - (f1 log10 C_T + f2 log10 sigma);
       SPL_1/3(f) = f0 X**0.6/[(X + f5)**f6 + (f7 X)**f8] (f3 = f4 = 1).
 
-    |sin theta_0| = sqrt(z**2 + 1e-12 m**2)/S (smooth). Optional edgewise adjustment (newest
+    abs(sin theta_0) = sqrt(z**2 + 1e-12 m**2)/S (smooth). Optional edgewise adjustment (newest
     GL_model): Delta = g(mu_e) (0.5 tanh(1000 (mu_e - 0.05)) + 0.5) with the edgewise advance ratio
     mu_e = (in-plane speed)/(Omega R) and g = 14.8 mu_e - 0.74 (B = 2) or 10 mu_e - 0.5 (B != 2);
     it is added to every band, so it enters the A-weighted level too (the public code adds it to
     the unweighted OASPL only, which makes the weighted and unweighted levels inconsistent), and
-    mu_e uses the in-plane speed |V - (V.n) n| (the code's |V (x) b| element-wise product equals
+    mu_e uses the in-plane speed norm(V - (V.n) n) (the code's norm(V (x) b) element-wise product
+    equals
     it when V lies along a body axis). It vanishes in hover.
 
     Inputs
@@ -62,7 +63,7 @@ class GillLeeBroadbandComp(om.ExplicitComponent):
     distance, axial_distance : float, (num_rotors,), m
         Hub-observer distance S and the axial distance z (ObserverGeometryComp).
     axial_speed, inplane_speed : float, (num_rotors,), m/s
-        Flight speed along and across the thrust axis (|V| = sqrt of their squares).
+        Flight speed along and across the thrust axis (norm(V) = sqrt of their squares).
 
     Outputs
     -------
@@ -76,7 +77,8 @@ class GillLeeBroadbandComp(om.ExplicitComponent):
     num_blades : int or sequence of int
         Blades per rotor.
     num_bands : int
-        Number of one-third-octave bands. Default 38 (12.5 Hz to 63 kHz, §10.3).
+        Number of one-third-octave bands. Default 38 (12.5 Hz to 63 kHz, docs theory/acoustics
+        'Broadband noise').
     lowest_band_frequency : float
         Nominal centre of the first band, Hz. Default 12.5.
     edgewise_correction : bool

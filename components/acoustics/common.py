@@ -1,6 +1,6 @@
 """Shared constants, option checks and level arithmetic of the acoustics components.
 
-Level arithmetic (reference/models_aero_rotor_acoustics.md §10):
+Level arithmetic (docs theory/acoustics):
 
 - SPL = 10 log10(p_ms/p_ref**2 + SPL_FLOOR), p_ref = 20 uPa. The tiny relative floor SPL_FLOOR =
   1e-12 (a -120 dB floor, i.e. a pressure floor of 2e-11 Pa rms) keeps the logarithm finite and
@@ -29,7 +29,7 @@ def nominal_third_octave_bands(num_bands, lowest=12.5):
     Nominal one-third-octave band centre frequencies (Hz), ``num_bands`` bands from ``lowest``.
 
     The default (38 bands from 12.5 Hz to 63 kHz) is the Gill-Lee band set of
-    reference/models_aero_rotor_acoustics.md §10.3.
+    docs theory/acoustics 'Broadband noise'.
     """
     table = np.array([m * 10.0**k for k in range(0, 6) for m in _NOMINAL_MANTISSAS])
     matches = np.flatnonzero(np.isclose(table, lowest, rtol=1e-9))
@@ -51,9 +51,9 @@ def radial_quadrature(num_radial, radial_stations=None, radial_weights=None,
 
     Integrals over the blade are R * sum_i w_i f(r_i). Defaults: stations at the centres of
     ``num_radial`` equal elements on [hub_radius_ratio, 1] (the BEM element centres of
-    reference/models_aero_rotor_acoustics.md §8.1) and, for any stations, weights equal to the
-    width of each station's cell, whose edges are the mid-points between stations and the hub
-    and tip (the midpoint rule for element centres; sum w = 1 - hub_radius_ratio).
+    docs theory/rotors 'Stations and disk frame') and, for any stations, weights equal to the width
+    of each station's cell, whose edges are the mid-points between stations and the hub and tip (the
+    midpoint rule for element centres; sum w = 1 - hub_radius_ratio).
 
     Raises ValueError naming the option if stations are not strictly increasing inside
     (hub_radius_ratio, 1], or weights are not positive or of the wrong length.

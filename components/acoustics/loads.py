@@ -28,12 +28,12 @@ class LoadFourierComp(om.ExplicitComponent):
     Paper eq. 19 writes the load at each radial station as
     f(psi) = a_0 + sum_{lambda=1..L} a_lambda cos(lambda psi) + b_lambda sin(lambda psi), and eq. 20
     finds the coefficients a_f from the linear system H a_f = f_aero, H holding the cosines and
-    sines at the azimuths psi_k = 2 pi k/N_psi (k = 0..N_psi-1; reference/models_aero_rotor_
-    acoustics.md §10.4(a), without the endpoint quirk Q12). H is constant, so the system is
-    factorised once in setup: a_f = H^+ f_aero, the exact solution when 2L + 1 = N_psi and the
+    sines at the azimuths psi_k = 2 pi k/N_psi (k = 0..N_psi-1; docs theory/acoustics 'Unsteady
+    path', without the endpoint quirk Q12). H is constant, so the system is factorised once in
+    setup: a_f = H^+ f_aero, the exact solution when 2L + 1 = N_psi and the
     least-squares solution otherwise (which for equally spaced azimuths equals the trapezoidal
-    Fourier quadrature of §10.4(a)). The Jacobian is this constant, sparse matrix. With
-    N_psi = 1 (hover BEM) a_0 is the load itself.
+    Fourier quadrature of docs theory/acoustics 'Unsteady path'). The Jacobian is this constant,
+    sparse matrix. With N_psi = 1 (hover BEM) a_0 is the load itself.
 
     Inputs
     ------
@@ -131,7 +131,8 @@ class HoverLoadDistributionComp(om.ExplicitComponent):
     - drag per span (one blade) d_i = Q rbar_i/(B R**2 sum_j w_j rbar_j**2),
       B R**2 sum_i w_i rbar_i d_i = Q;
     - inflow angle phi_i = arctan(lambda_h/rbar_i), lambda_h = sqrt(C_T/2),
-      C_T = T/(rho pi R**2 (Omega R)**2) (hover momentum theory, §8.3 coefficient definition).
+      C_T = T/(rho pi R**2 (Omega R)**2) (hover momentum theory, docs theory/rotors 'Loads and
+      coefficients' coefficient definition).
 
     Inputs
     ------

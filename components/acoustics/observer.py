@@ -30,7 +30,7 @@ class ObserverPositionComp(om.ExplicitComponent):
         x_o = mean_k(x_h,k) + d (cos e cos az, cos e sin az, sin e)   (body frame, z down)
 
     Defaults are the paper's hover observer, 100 m away and 45 deg below the rotor plane
-    (reference/models_aero_rotor_acoustics.md §10.1), placed aft of the vehicle (azimuth 180 deg)
+    (docs theory/acoustics 'Observer and constraint'), placed aft of the vehicle (azimuth 180 deg)
     as in the reference geometry (vehicle at (70.71, 0, -70.71) m seen from the observer).
 
     Inputs
@@ -107,21 +107,22 @@ class ObserverGeometryComp(om.ExplicitComponent):
     """
     Rotor-observer geometry and rotor kinematics for each rotor (steady observer).
 
-    Equations (reference/models_aero_rotor_acoustics.md §10.2 and §10.4 "common geometry"), with
-    P = x_o - x_h the hub-to-observer vector and n = d/|d| the unit thrust axis:
+    Equations (docs theory/acoustics 'Observer geometry'), with P = x_o - x_h the hub-to-observer
+    vector and n = d/norm(d) the unit thrust axis:
 
-    - distance S = |P|; axial distance z = P.n (> 0 on the thrust side); in-plane distance
+    - distance S = norm(P); axial distance z = P.n (> 0 on the thrust side); in-plane distance
       Y = sqrt(S**2 - z**2 + 1e-12 m**2). The elevation of the observer above the rotor plane is
-      arcsin(z/S) (theta_0 of §10.2).
-    - Doppler (convective) distance r1 = S (1 - V.P/(S a)) = S - V.P/a, with V the vehicle
-      velocity in the body frame: shorter (louder) when the hub moves towards the observer.
+      arcsin(z/S) (theta_0 of docs theory/acoustics 'Observer geometry').
+    - Doppler (convective) distance r1 = S (1 - V.P/(S a)) = S - V.P/a, with V the vehicle velocity
+      in the body frame: shorter (louder) when the hub moves towards the observer.
     - Observer azimuth phi_o in the rotor's azimuth frame (used by the edgewise Lowson path):
       e_y = normalised projection of the body y axis on the disk, e_x = n x e_y (as BladeAD,
-      §8.1); blade azimuth psi = 0 points aft (-e_x) and psi grows in the direction of rotation,
-      right-handed about n for rotation_direction = +1 (counter-clockwise seen from above for a
+      docs theory/rotors 'Stations and disk frame'); blade azimuth psi = 0 points aft (-e_x) and psi
+      grows in the direction of rotation, right-handed about n for rotation_direction = +1
+      (counter-clockwise seen from above for a
       lift rotor with n up), so the blade sits at r (-cos psi e_x + s sin psi e_y), s = +-1.
       cos phi_o = -P.e_x/Y and sin phi_o = s P.e_y/Y.
-    - axial speed V.n and in-plane (edgewise) speed |V - (V.n) n| (with a 1e-12 (m/s)**2 floor
+    - axial speed V.n and in-plane (edgewise) speed norm(V - (V.n) n) (with a 1e-12 (m/s)**2 floor
       under the square root).
 
     Inputs
@@ -239,7 +240,8 @@ class ObserverGeometryComp(om.ExplicitComponent):
         g['z'] = z = np.sum(P * n, axis=1)
         g['Y'] = np.sqrt(g['S']**2 - z**2 + _EPS_DISTANCE2)
         g['r1'] = g['S'] - (P @ vel) / a
-        # Rotor azimuth frame (BladeAD §8.1): e_y = projected body y axis, e_x = n x e_y.
+        # Rotor azimuth frame (BladeAD docs theory/rotors 'Stations and disk frame'): e_y =
+        # projected body y axis, e_x = n x e_y.
         u = -n[:, 1:2] * n
         u[:, 1] += 1.0
         g['u'] = u

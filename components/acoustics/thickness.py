@@ -24,12 +24,13 @@ class BarryMagliozziThicknessComp(om.ExplicitComponent):
     """
     Thickness noise of each blade-passing harmonic by Barry & Magliozzi (hover and axial flight).
 
-    reference/models_aero_rotor_acoustics.md §10.5 (Gill, Lee, Ruh & Hwang form), for the harmonic
-    n = m B (m = 1..num_harmonics), with X = z the observer distance along the thrust axis, Y the
-    in-plane distance, M = V.n/a the axial flight Mach number and r = rbar R:
+    docs theory/acoustics 'Thickness noise' (Gill, Lee, Ruh & Hwang form), for the harmonic n = m B
+    (m = 1..num_harmonics), with X = z the observer distance along the thrust axis, Y the in-plane
+    distance, M = V.n/a the axial flight Mach number and r = rbar R:
 
     - S0 = sqrt(X**2 + (1 - M**2) Y**2); section area A_x = 0.6853 c h, h = (t/c) c;
-    - x = n Omega Y r/(a S0) (one common Bessel argument; §11 Q15 not reproduced);
+    - x = n Omega Y r/(a S0) (one common Bessel argument; docs theory/acoustics 'Public-code
+      compatibility' not reproduced);
     - I_m = sum_i w_i R A_x,i [J_n(x_i) + ((1 - M**2) Y r_i/(2 S0**2))
       (J_{n-1}(x_i) - J_{n+1}(x_i))];
     - P_m = rho (m Omega)**2 B**3 (S0 + M X)**2/(2 pi sqrt(2) (1 - M**2)**2 S0**3) I_m (rms, Pa);
@@ -50,7 +51,7 @@ class BarryMagliozziThicknessComp(om.ExplicitComponent):
     axial_distance, inplane_distance : float, (num_rotors,), m
         X and Y from ObserverGeometryComp.
     axial_speed : float, (num_rotors,), m/s
-        Flight speed along the thrust axis (|V.n| < a); zero in hover.
+        Flight speed along the thrust axis (abs(V.n) < a); zero in hover.
 
     Outputs
     -------

@@ -15,8 +15,8 @@ from lpc_mdo.components.acoustics.common import (
 )
 
 #: Smooth switch between the Sears (hover) and unsteady (edgewise) loading-noise paths
-#: (reference/models_aero_rotor_acoustics.md §10.4): weight of the unsteady path
-#: 0.5 tanh(SHARPNESS (v - THRESHOLD)) + 0.5, with v the in-plane flight speed in m/s.
+#: (docs theory/acoustics 'Tonal loading noise'): weight of the unsteady path 0.5 tanh(SHARPNESS (v
+#: - THRESHOLD)) + 0.5, with v the in-plane flight speed in m/s.
 PATH_SWITCH_THRESHOLD = 0.1
 PATH_SWITCH_SHARPNESS = 100.0
 
@@ -25,10 +25,10 @@ def sears_function(k):
     """
     Sears function S(k) = [J0(k) - i J1(k)] C(k) + i J1(k) and its k-derivative, as real pairs.
 
-    C(k) = F + iG is Theodorsen's function (reference/models_aero_rotor_acoustics.md §10.4(b)):
-    F = (J1 (J1 + Y0) + Y1 (Y1 - J0))/den, G = -(Y1 Y0 + J1 J0)/den,
-    den = (J1 + Y0)**2 + (Y1 - J0)**2. Returns (Re S, Im S, dRe S/dk, dIm S/dk); k > 0.
-    S -> 1 as k -> 0 (quasi-steady) and |S| decays like 1/sqrt(2 pi k).
+    C(k) = F + iG is Theodorsen's function (docs theory/acoustics 'Sears path'): F = (J1 (J1 + Y0) +
+    Y1 (Y1 - J0))/den, G = -(Y1 Y0 + J1 J0)/den, den = (J1 + Y0)**2 + (Y1 - J0)**2. Returns (Re S,
+    Im S, dRe S/dk, dIm S/dk); k > 0.
+    S -> 1 as k -> 0 (quasi-steady) and abs(S) decays like 1/sqrt(2 pi k).
     """
     j0, j1, y0, y1 = bessel_j(0, k), bessel_j(1, k), bessel_y(0, k), bessel_y(1, k)
     dj0, dy0 = -j1, -y1
@@ -55,8 +55,8 @@ class SearsGustLoadsComp(om.ExplicitComponent):
     """
     Gust (unsteady) blade-load harmonics in hover from the Sears function (Kvurt & Stalnov).
 
-    reference/models_aero_rotor_acoustics.md §10.4(b), load harmonics lambda = 1..L_g, per blade
-    and unit span, at each radial station r = rbar R:
+    docs theory/acoustics 'Sears path', load harmonics lambda = 1..L_g, per blade and unit span, at
+    each radial station r = rbar R:
 
     - U_t = Omega r; reduced frequency k = lambda Omega c/(2 U_t) = lambda c/(2 r);
     - gust amplitude w = q lambda_i Omega R/lambda with lambda_i = phi rbar, i.e. q phi U_t/lambda;
@@ -64,7 +64,8 @@ class SearsGustLoadsComp(om.ExplicitComponent):
     - a_T = Re S(k) L' cos phi, b_T = Im S(k) L' cos phi, a_D = Re S(k) L' sin phi,
       b_D = Im S(k) L' sin phi.
 
-    phi is the azimuthal mean of the input inflow angle. The loads of §11 Q13 are per blade.
+    phi is the azimuthal mean of the input inflow angle. The loads of docs theory/acoustics
+    'Public-code compatibility' are per blade.
 
     Inputs
     ------
@@ -229,7 +230,7 @@ class _LowsonSum:
         Psi = sum_lambda sum_{s = -1, +1} sum_i w_i (-i)**k J_k(n mu rbar_i)
               [-n nu T_{s lambda}(r_i) + (k/rbar_i) D_{s lambda}(r_i)],   k = n + s lambda
 
-    The amplitude of harmonic n of one blade is |Psi|/(2 pi r1) (times R, absorbed in mu and nu:
+    The amplitude of harmonic n of one blade is abs(Psi)/(2 pi r1) (times R, absorbed in mu and nu:
     mu = Omega R Y/(a r1), nu = Omega R z/(a r1)). All complex algebra is done on real pairs so
     the component is complex-step safe.
     """
@@ -252,7 +253,7 @@ class _LowsonSum:
         self.rbar = rbar
 
     def evaluate(self, jtab, jdtab, coeffs, nu, rotation=None, grad=False):
-        """Return |Psi|**2 (nr, nm) and, if ``grad``, its derivatives."""
+        """Return abs(Psi)**2 (nr, nm) and, if ``grad``, its derivatives."""
         J = jtab[..., self.q_index]                                   # (nr, nm, nrad, nl, 2)
         n, k = self.n, self.order
         nu4 = nu[:, None, None, None]
@@ -309,43 +310,49 @@ class LowsonLoadingNoiseComp(om.ExplicitComponent):
     Tonal loading noise of each rotor by Lowson & Ollerhead, with Sears-function gusts in hover.
 
     Frequency-domain far-field loading noise of rotating blade forces (Lowson & Ollerhead 1969;
-    paper Sec. III.E, eq. 21; reference/models_aero_rotor_acoustics.md §10.4). For the harmonic
-    n = m B (frequency m B rpm/60, m = 1..num_harmonics) and an observer at axial distance z and
-    in-plane distance Y of the hub, the blade loads per unit span with azimuthal Fourier
+    paper Sec. III.E, eq. 21; docs theory/acoustics 'Tonal loading noise'). For the harmonic n = m B
+    (frequency m B rpm/60, m = 1..num_harmonics) and an observer at axial distance z and in-plane
+    distance Y of the hub, the blade loads per unit span with azimuthal Fourier
     coefficients (a_lambda, b_lambda) (paper eq. 19) radiate the complex amplitude (one blade)
 
         p_n = 1/(2 pi r1) sum_lambda sum_i w_i R (-i)**k J_k(x_i) [-(n Omega z/(a r1)) T_lambda
               + (k/r_i) D_lambda],   k = n -+ lambda,  x_i = n Omega r_i Y/(a r1),
 
     with T_{-+lambda} = (a_lambda +- i b_lambda)/2, derived from the far-field compact dipole with
-    the Jacobi-Anger expansion; r1 is the Doppler-corrected distance (§10.4 "common geometry"),
-    thrust is positive along the thrust axis and drag opposes rotation. This is the §10.4
-    kernel with the (-i)**k phase written out; it reduces to Gutin's formula for steady loading
-    for every n (the public code's odd-(n - lambda) sign branch does not, see below). B equally
-    spaced identical blades add coherently: |p| = B |p_n|. SPL = 10 log10(|p|**2/(2 p_ref**2))
-    (paper eq. 21) with the smooth floor of ``common``.
+    the Jacobi-Anger expansion; r1 is the Doppler-corrected distance (docs theory/acoustics
+    'Observer geometry'), thrust is positive along the thrust axis and drag opposes
+    rotation. This is the docs theory/acoustics 'Tonal loading noise' kernel with the (-i)**k phase
+    written out; it reduces to Gutin's formula for steady loading for every n (the public code's
+    odd-(n - lambda) sign branch does not, see below). B equally spaced identical blades add
+    coherently: abs(p) = B abs(p_n). SPL = 10 log10(abs(p)**2/(2 p_ref**2)) (paper eq. 21) with
+    the smooth floor of ``common``.
 
-    Two load models, selected smoothly by the in-plane flight speed v (§10.4 "path selection"):
-    SPL = SPL_Sears (1 - h) + SPL_unsteady h, h = 0.5 tanh(100 (v - 0.1 m/s)) + 0.5.
+    Two load models, selected smoothly by the in-plane flight speed v (docs theory/acoustics 'Tonal
+    loading noise'): SPL = SPL_Sears (1 - h) + SPL_unsteady h,
+    h = 0.5 tanh(100 (v - 0.1 m/s)) + 0.5.
 
     - Sears path (hover): steady loads (the lambda = 0 coefficients) plus the Sears-function gust
       loads lambda = 1..L_g (SearsGustLoadsComp), summed coherently over lambda within each part;
-      the steady and gust parts add energetically (§10.4(b)).
+      the steady and gust parts add energetically (docs theory/acoustics 'Sears path').
     - Unsteady path (edgewise flight): all load harmonics lambda = 0..L of the azimuthal loads
       (LoadFourierComp, paper eq. 20) added coherently, with the coefficients rotated into the
-      observer's azimuth: T_{+-lambda} exp(+-i lambda phi_o) (§10.4(a)).
+      observer's azimuth: T_{+-lambda} exp(+-i lambda phi_o) (docs theory/acoustics 'Unsteady
+      path').
 
     Deviations from the public code (lsdo_acoustics), on purpose:
 
-    - Its odd-(n - lambda) sign branch (c1 = c2 = +1, §10.4, flagged there as unchecked) makes
-      the thrust and torque terms add on the thrust side for odd n, e.g. B = 3, m = 1, which
+    - Its odd-(n - lambda) sign branch (c1 = c2 = +1, docs theory/acoustics 'Tonal loading noise',
+      flagged there as unchecked) makes the thrust and torque terms add on the thrust side for odd
+      n, e.g. B = 3, m = 1, which
       contradicts Gutin's formula and mirrors the steady directivity through the disk plane.
       Here the phase (-i)**k is applied for every k, so steady loading reduces to Gutin's formula
       for all n (tests/test_acoustics_tonal.py), and the Kvurt-Stalnov hover case matches H. Gill's
       MATLAB directivity mirrored through the disk plane to 0.3 dB.
-    - The unsteady path adds the B blades coherently (|p| = B |p_n|, as the Sears path of §10.4(b)
-      does) rather than energetically (+10 log10 B, §10.4(a) as coded): for identical, equally
-      spaced blades the harmonics m B are in phase, so steady hover loading gives the same level
+    - The unsteady path adds the B blades coherently (abs(p) = B abs(p_n), as the Sears path of docs
+      theory/acoustics 'Sears path'
+      does) rather than energetically (+10 log10 B, docs theory/acoustics 'Unsteady path' as coded):
+      for identical, equally spaced blades the harmonics m B are in phase, so steady hover loading
+      gives the same level
       on both paths.
     - Loads are per unit span and integrated with the acoustic quadrature weights in both paths.
 
@@ -527,7 +534,7 @@ class LowsonLoadingNoiseComp(om.ExplicitComponent):
                                lam)
 
     def _paths(self, inputs, grad):
-        """Mean-square pressures of the Sears and unsteady paths and their |Psi|^2 gradients."""
+        """Mean-square pressures of the Sears and unsteady paths and their abs(Psi)^2 gradients."""
         mu, nu, scale = self._kinematics(inputs)
         r1 = inputs['convected_distance']
         jtab, jdtab = self._bessel(mu, grad)

@@ -15,10 +15,12 @@ class TotalNoiseComp(om.ExplicitComponent):
     """
     Incoherent sum over harmonics, sources and rotors to per-rotor and total levels.
 
-    reference/models_aero_rotor_acoustics.md §10.7 and paper eq. 21: with E = 10**(L/10),
+    docs theory/acoustics 'Total noise' and paper eq. 21: with E = 10**(L/10),
 
-    - tonal_spl_r = 10 log10 sum_m (E(loading_rm) + E(thickness_rm))   (§10.5 "tonal total");
-    - broadband_oaspl_r = 10 log10 sum_b E(broadband_rb)               (§10.3 OASPL);
+    - tonal_spl_r = 10 log10 sum_m (E(loading_rm) + E(thickness_rm))   (docs theory/acoustics
+      'Total noise');
+    - broadband_oaspl_r = 10 log10 sum_b E(broadband_rb)               (docs theory/acoustics
+      'Broadband noise' OASPL);
     - rotor_spl_r = 10 log10(E(tonal_r) + E(broadband_r));
     - total_spl = 10 log10 sum_r E(rotor_spl_r)  (the hover constraint: total_spl_a <= 70 dBA).
 
@@ -26,7 +28,9 @@ class TotalNoiseComp(om.ExplicitComponent):
     10 log10 2 = 3.0103 dB. The sums carry the -120 dB floor of ``common`` once, so they stay
     finite when every source is silent.
 
-    Inputs (names carry the suffix '_a' when option ``weighting`` is 'A')
+    Inputs (names carry the suffix '_a' when option ``weighting`` is 'A'):
+
+    Inputs
     ------
     loading_spl<sfx> : float, (num_rotors, num_harmonics), dB (units=None)
         Loading-noise level per harmonic, dB re 20 uPa.

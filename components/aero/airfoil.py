@@ -1,6 +1,7 @@
 """
 Tabulated airfoil polars: smooth (C1) interpolation over alpha, Reynolds and Mach, Viterna to
-+-90 deg and reverse flow to +-180 deg (reference/models_aero_rotor_acoustics.md §6.2–6.4).
++-90 deg and reverse flow to +-180 deg (docs theory/aerodynamics 'Airfoil polars', 'Viterna
+extrapolation', 'Linear-quadratic polar').
 
 :func:`get_polar` turns an airfoil name ('naca0012', 'naca0015', 'ls413', 'ls417'), a user table
 of (alpha [deg], cl, cd) at one Reynolds and Mach number (array, dict or file) or a ready

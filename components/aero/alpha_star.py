@@ -3,7 +3,7 @@ Section angle of attack alpha* from the VLM's sectional lift coefficient (paper 
 
 R(alpha*) = cl_VLM - cl_airfoil(alpha*, Re, M) = 0, solved per spanwise section by a bracketed
 safeguarded-Newton iteration between the stall angles of the airfoil at (Re, M)
-(reference/models_aero_rotor_acoustics.md §4.6 step 2: bracket [alpha_Clmin, alpha_Clmax]).
+(docs theory/aerodynamics 'Airfoil coupling' step 2: bracket [alpha_Clmin, alpha_Clmax]).
 """
 
 import numpy as np
@@ -58,7 +58,7 @@ class AlphaStarComp(om.ImplicitComponent):
     solve is in :attr:`num_beyond_stall`.
 
     ``solve_nonlinear`` solves each section by a bracketed Newton iteration (Newton steps kept
-    inside the bracket, bisection otherwise) to |R| < ``tolerance``; ``linearize`` gives the
+    inside the bracket, bisection otherwise) to abs(R) < ``tolerance``; ``linearize`` gives the
     exact diagonal Jacobian and ``solve_linear`` inverts it, so no linear solver is needed around
     the component (the implicit function theorem: d alpha*/d x = -(dR/d alpha*)^-1 dR/dx).
 

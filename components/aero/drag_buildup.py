@@ -6,9 +6,9 @@ from dataclasses import dataclass
 import numpy as np
 import openmdao.api as om
 
-#: Default interference factor Q of every component (reference/models_aero_rotor_acoustics.md §5).
+#: Default interference factor Q of every component (docs theory/aerodynamics 'Drag build-up').
 DEFAULT_INTERFERENCE = 1.1
-#: Rotor drag area of the public LPC model (§5), m**2.
+#: Rotor drag area of the public LPC model (docs theory/aerodynamics 'Drag build-up'), m**2.
 LPC_ROTOR_DRAG_AREA = 0.111484
 #: Boom diameter assumed for the LPC boom wetted area, m (not in the sources; 1 ft).
 LPC_BOOM_DIAMETER = 0.3048
@@ -93,8 +93,9 @@ class LiftingSurfaceDrag:
 class BodyDrag:
     """A fuselage-like body; inputs ``{name}_length``, ``{name}_max_height``, ``{name}_max_width``.
 
-    Fineness f = L/max(H, W), form factor 1 + 60/f^3 + f/400 (§5), characteristic length L,
-    wetted area pi D L (1 - 2/f_e)^(2/3) (1 + 1/f_e^2) with the equivalent diameter
+    Fineness f = L/max(H, W), form factor 1 + 60/f^3 + f/400 (docs theory/aerodynamics 'Drag
+    build-up'), characteristic length L, wetted area pi D L (1 - 2/f_e)^(2/3) (1 + 1/f_e^2) with the
+    equivalent diameter
     D = sqrt(H W) and f_e = L/D (Torenbeek, Synthesis of Subsonic Airplane Design, 1982, App. F;
     valid for f_e > 2).
 
@@ -234,9 +235,9 @@ class DragBuildupComp(om.ExplicitComponent):
     """
     Parasite drag of the vehicle by component build-up, vectorized over flight conditions.
 
-    reference/models_aero_rotor_acoustics.md §5 (CADDEE ``drag_buildup.py``, without its quirks
-    Q5–Q7), for each component i with characteristic length L_i, wetted area S_wet,i, form factor
-    FF_i, interference factor Q_i and laminar fraction p_i:
+    docs theory/aerodynamics 'Drag build-up' (CADDEE ``drag_buildup.py``, without its quirks Q5–Q7),
+    for each component i with characteristic length L_i, wetted area S_wet,i, form factor FF_i,
+    interference factor Q_i and laminar fraction p_i:
 
     - Re_i = rho V L_i / mu (floored smoothly: sqrt(Re^2 + Re_min^2), so V = 0 stays finite),
       M = V/a;
@@ -492,7 +493,8 @@ def max_thickness_sweep(surface, mirrored=True):
 
 
 def lpc_drag_components(vehicle=None, boom_diameter=LPC_BOOM_DIAMETER):
-    """Drag-build-up components and input values of the LPC vehicle (§5).
+    """Drag-build-up components and input values of the LPC vehicle (docs theory/aerodynamics 'Drag
+    build-up').
 
     Components: wing, horizontal_tail, vertical_tail (LiftingSurfaceDrag with the vehicle's
     t/c, (x/c)_m, laminar fraction and maximum-thickness sweep), fuselage (BodyDrag) and booms

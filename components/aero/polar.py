@@ -80,13 +80,15 @@ def _hermite(x, x0, x1, f0, d0, f1, d1):
 
 
 def viterna_cd_max(aspect_ratio=10.0):
-    """Viterna's maximum drag coefficient CD_max = 1.11 + 0.018 AR (§6.3; 1.29 for AR = 10)."""
+    """Viterna's maximum drag coefficient CD_max = 1.11 + 0.018 AR (docs theory/aerodynamics
+    'Viterna extrapolation'; 1.29 for AR = 10)."""
     return 1.11 + 0.018 * aspect_ratio
 
 
 def viterna_coefficients(alpha_stall, cl_stall, cd_stall, cd_max):
     """
-    Viterna–Corrigan coefficients A2, B2 of one stall point (reference §6.3).
+    Viterna–Corrigan coefficients A2, B2 of one stall point (docs theory/aerodynamics 'Viterna
+    extrapolation').
 
     A2 = (cl_s - CD_max sin a_s cos a_s) sin a_s/cos^2 a_s,  B2 = (cd_s - CD_max sin^2 a_s)/cos a_s;
     works elementwise on arrays of stall points.
@@ -99,7 +101,8 @@ def viterna_coefficients(alpha_stall, cl_stall, cd_stall, cd_max):
 
 def viterna(a, cd_max, a2, b2):
     """
-    Viterna–Corrigan post-stall law and its alpha slopes (reference §6.3), to +-90 deg.
+    Viterna–Corrigan post-stall law and its alpha slopes (docs theory/aerodynamics 'Viterna
+    extrapolation'), to +-90 deg.
 
     cl = A1 sin 2a + A2 cos^2 a/sin a,  cd = B1 sin^2 a + B2 cos a,  A1 = CD_max/2, B1 = CD_max.
     Returns (cl, cd, dcl/da, dcd/da).
@@ -141,7 +144,8 @@ class LinearQuadraticPolar(Polar):
     """
     Analytic polar: linear lift and quadratic drag before stall, Viterna–Corrigan after it.
 
-    reference/models_aero_rotor_acoustics.md §6.3–6.4 (BladeAD 0-D airfoil):
+    docs theory/aerodynamics 'Viterna extrapolation', 'Linear-quadratic polar' (BladeAD 0-D
+    airfoil):
 
     - pre-stall: cl = cl0 + cl_alpha alpha,  cd = cd0 + k (cl_alpha alpha)**2 with
       k = [(cd_s+ - cd0)/(cl0 - cl_s+)**2 + (cd_s- - cd0)/(cl0 - cl_s-)**2] / 2;
@@ -174,8 +178,8 @@ class LinearQuadraticPolar(Polar):
     aspect_ratio : float
         Viterna aspect ratio (sets CD_max); default 10.
 
-    The defaults are the example polar of the reference page (§6.4 table), used there for the
-    BEM and Pitt–Peters reference numbers.
+    The defaults are the example polar of the public BladeAD examples (docs theory/aerodynamics
+    'Linear-quadratic polar'), used there for the BEM and Pitt–Peters reference numbers.
     """
 
     name = "linear_quadratic"

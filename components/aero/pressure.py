@@ -3,7 +3,8 @@ Chordwise pressure of the wing sections at alpha* and the section loads from int
 
 Paper Sec. III.C, eq. 16b: q = f(alpha*, Re, M) with q the pressure distribution; the section
 force and pitching moment about the wing-box beam axis feed the structural model
-(reference/models_aero_rotor_acoustics.md §4.6 steps 3–4; models_structures_motor_vehicle.md §6.7).
+(docs theory/aerodynamics 'Airfoil coupling' steps 3–4; docs theory/structures 'Material, mesh and
+load transfer').
 
 The Cp tables (upper and lower surface over alpha, Re, M) ship with the wing airfoils' polar files
 ``lpc_mdo/data/airfoil_ls413.npz`` and ``airfoil_ls417.npz``; they come from XFOIL 6.99 (viscous,

@@ -13,7 +13,7 @@ class VLMAICComp(om.ExplicitComponent):
 
     A[n, i, j] is the normal velocity at collocation point i per unit circulation of ring j.
 
-    reference/models_aero_rotor_acoustics.md §4.3–4.4:
+    docs theory/aerodynamics 'Biot-Savart kernels', 'Circulation system':
 
         A[n, i, j] = (sum over the segments of ring j of v_seg(x_i)
                       + [j trailing edge] (v_inf(x_i; p3, u_n) - v_inf(x_i; p4, u_n))) . n'_i
@@ -21,8 +21,8 @@ class VLMAICComp(om.ExplicitComponent):
     with the AVL/OAS form of the Biot–Savart kernels
     (:mod:`~lpc_mdo.components.aero.vlm_biot_savart`). The wake of each strip is a
     semi-infinite vortex pair from the bound-grid trailing-edge nodes along the relative wind
-    u = e_D (§4.2), so A depends on the flight condition n. All VLM surfaces are in one lattice,
-    so wing–tail interference is included.
+    u = e_D (docs theory/aerodynamics 'Wake'), so A depends on the flight condition n. All VLM
+    surfaces are in one lattice, so wing–tail interference is included.
 
     Partials are analytic and sparse in the structure of the problem: A[n, i, j] depends on the
     12 corner coordinates of ring j, the collocation point and normal of panel i and (trailing-

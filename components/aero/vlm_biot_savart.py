@@ -1,14 +1,16 @@
 """Biot–Savart kernels of the vortex lattice and their exact derivatives (no OpenMDAO here).
 
-Reference: reference/models_aero_rotor_acoustics.md §4.3. Both kernels are written in the form
-used by AVL and OpenAeroStruct, which is singular only on the vortex line itself (not on its
-extension), so that bound segments collinear with a force point stay regular:
+Reference: docs theory/aerodynamics 'Biot-Savart kernels'. Both kernels are written in the form used
+by AVL and OpenAeroStruct, which is singular only on the vortex line itself (not on its extension),
+so that bound segments collinear with a force point stay regular:
 
 - straight segment A->B of unit strength at P, r1 = P - A, r2 = P - B, r0 = r1 - r2:
-  v = (|r1| + |r2|) (r1 x r2) / (4 pi [|r1||r2| (|r1||r2| + r1.r2) + (eps |r0|^2)^2])
-  (equal to the Katz–Plotkin form (r1 x r2)/|r1 x r2|^2 r0.(r1/|r1| - r2/|r2|) / (4 pi));
+  v = (norm(r1) + norm(r2)) (r1 x r2) / (4 pi [norm(r1) norm(r2) (norm(r1) norm(r2) + r1.r2) + (eps
+  norm(r0)^2)^2])
+  (equal to the Katz–Plotkin form (r1 x r2)/norm(r1 x r2)^2 r0.(r1/norm(r1) - r2/norm(r2)) / (4
+  pi));
 - semi-infinite line from A along the unit vector u (vorticity along +u), r = P - A:
-  v = (u x r) / (4 pi [|r| (|r| - u.r) + eps^2 |r|^2]).
+  v = (u x r) / (4 pi [norm(r) (norm(r) - u.r) + eps^2 norm(r)^2]).
 
 The eps terms (eps = 1e-6, relative to the segment length or the distance) only keep the kernels
 finite on the vortex lines; elsewhere their effect is below 1e-12 relative. All operations are
@@ -128,7 +130,7 @@ def lattice_velocities(points, ring_vertices, te_panels, wake_direction, segment
     Every ring contributes its four straight segments (each scaled by ``segment_weights``);
     the trailing-edge ring of each strip also sheds a semi-infinite pair along the wake
     direction: +u from its corner p3 and -u from p4 (the wake ring of the same strength,
-    §4.2, whose leading segment cancels the ring's p3->p4 segment).
+    docs theory/aerodynamics 'Wake', whose leading segment cancels the ring's p3->p4 segment).
 
     Parameters
     ----------

@@ -6,7 +6,7 @@ import numpy as np
 import openmdao.api as om
 import scipy.linalg
 
-#: Smallest accepted |U_kk| / max |U_kk| of the LU factors before the AIC counts as singular.
+#: Smallest accepted abs(U_kk) / max abs(U_kk) of the LU factors before the AIC counts as singular.
 SINGULAR_RCOND = 1.0e-13
 
 
@@ -18,9 +18,9 @@ class VLMCirculationComp(om.ImplicitComponent):
 
         R[n] = A[n] Gamma[n] + v_coll[n] . n'[n] = 0
 
-    (reference/models_aero_rotor_acoustics.md §4.4; v_coll is the relative wind at the
-    collocation points, n' the boundary normals). ``solve_nonlinear`` LU-factorises A[n]
-    (scipy ``lu_factor``) and back-substitutes; ``linearize`` gives the exact partials
+    (docs theory/aerodynamics 'Circulation system'; v_coll is the relative wind at the collocation
+    points, n' the boundary normals). ``solve_nonlinear`` LU-factorises A[n] (scipy ``lu_factor``)
+    and back-substitutes; ``linearize`` gives the exact partials
     (dR/dGamma = A, dR/dA = Gamma, dR/dv = n', dR/dn' = v) and keeps the factors, which
     ``solve_linear`` reuses in forward (A x = b) and reverse (A^T x = b) mode. A group holding
     this component therefore needs no linear solver of its own (the default LinearRunOnce is

@@ -11,9 +11,9 @@ class VLMPanelForcesComp(om.ExplicitComponent):
     """
     Inviscid panel forces F = rho Gamma_net (v + w) x l (paper eq. 11), body axes.
 
-    reference/models_aero_rotor_acoustics.md §4.5: the bound segment of ring (i, j) carries the
-    net circulation Gamma_net = Gamma[i, j] - Gamma[i-1, j] (Gamma[0, j] on the leading-edge row);
-    v is the relative wind and w the induced velocity at its midpoint (the force point), l the
+    docs theory/aerodynamics 'Forces and induced drag': the bound segment of ring (i, j) carries the
+    net circulation Gamma_net = Gamma[i, j] - Gamma[i-1, j] (Gamma[0, j] on the leading-edge row); v
+    is the relative wind and w the induced velocity at its midpoint (the force point), l the
     bound vector. Lift and near-field induced drag both come out of F.
 
     Inputs

@@ -12,14 +12,14 @@ class VLMFreestreamComp(om.ExplicitComponent):
 
     The vehicle moves with V_b = V (cos a cos b, sin b, sin a cos b) and rotates with the body
     rates w about ``rotation_center`` (body frame x forward, y right, z down). The air velocity
-    relative to a point r of the vehicle is (reference/models_aero_rotor_acoustics.md §4.1, the
-    negative of the mesh velocity)
+    relative to a point r of the vehicle is (docs theory/aerodynamics 'Lattice', the negative of the
+    mesh velocity)
 
         v(r) = V e_D - w x (r - r_c),   e_D = -(cos a cos b, sin b, sin a cos b).
 
-    Wind axes: e_D (drag, along the relative wind; also the wake direction, §4.2),
-    e_L = (sin a, 0, -cos a) (lift, up, normal to e_D in the body x-z plane) and
-    e_Y = (-cos a sin b, cos b, -sin a sin b) (side force, to the right).
+    Wind axes: e_D (drag, along the relative wind; also the wake direction, docs theory/aerodynamics
+    'Wake'), e_L = (sin a, 0, -cos a) (lift, up, normal to e_D in the body x-z plane) and e_Y =
+    (-cos a sin b, cos b, -sin a sin b) (side force, to the right).
 
     Inputs
     ------

@@ -11,11 +11,11 @@ class VLMGeometryComp(om.ExplicitComponent):
     """
     Lattice geometry of all VLM surfaces from their meshes (mesh coordinates are inputs).
 
-    Discretisation of reference/models_aero_rotor_acoustics.md §4.1 (see
-    :mod:`~lpc_mdo.components.aero.vlm_lattice`): vortex rings on the bound grid a quarter panel
-    aft of the mesh, collocation points at the ring centres (3/4 chord), force points at the
+    Discretisation of docs theory/aerodynamics 'Lattice' (see
+    :mod:`~lpc_mdo.components.aero.vlm_lattice`): vortex rings on the bound grid a quarter panel aft
+    of the mesh, collocation points at the ring centres (3/4 chord), force points at the
     bound-segment midpoints (1/4 chord), bound vectors l = p2 - p1. Panel areas are those of the
-    geometric mesh panels, |(X[i+1,j+1] - X[i,j]) x (X[i,j+1] - X[i+1,j])| / 2; strip areas sum
+    geometric mesh panels, norm((X[i+1,j+1] - X[i,j]) x (X[i,j+1] - X[i+1,j])) / 2; strip areas sum
     them chord-wise. Panels and strips of all surfaces are concatenated in ``surfaces`` order
     (np panels, nst strips in total).
 

@@ -13,9 +13,9 @@ class VLMInducedVelocityComp(om.ExplicitComponent):
 
         w[n, i] = sum_j Gamma[n, j] (v_ring_j(x_f,i) + [j trailing edge] v_wake_j(x_f,i; u_n))
 
-    reference/models_aero_rotor_acoustics.md §4.5. The two segments that pass through force
-    point i (its own bound segment and the coincident p3->p4 segment of the ring upstream) are
-    left out: they induce nothing there, and the kernel would be singular on them. Bound segments
+    docs theory/aerodynamics 'Forces and induced drag'. The two segments that pass through force
+    point i (its own bound segment and the coincident p3->p4 segment of the ring upstream) are left
+    out: they induce nothing there, and the kernel would be singular on them. Bound segments
     of neighbouring strips that are collinear with the force point are regular in the AVL/OAS
     kernel. Analytic partials (dense in the circulation and the ring corners, sparse in the
     force points).

@@ -2,7 +2,7 @@
 
 This module holds no OpenMDAO component. It turns the description of the lifting surfaces into
 index arrays and constant sparse matrices that every VLM component shares
-(reference/models_aero_rotor_acoustics.md §4.1):
+(docs theory/aerodynamics 'Lattice'):
 
 - a surface mesh has ``nx = num_chord_panels + 1`` chord-wise nodes (i = 0 is the leading edge)
   and ``ny = num_span_panels + 1`` span-wise nodes (j = 0 is the left tip, y < 0); a mesh
@@ -99,7 +99,9 @@ def _bound_grid_matrix(nx, ny):
 class Lattice:
     """Index arrays and constant mesh-to-lattice maps of a set of :class:`VLMSurface`.
 
-    Attributes (np = panels, nst = strips, nte = trailing-edge panels = nst)
+    Sizes: np = panels, nst = strips, nte = trailing-edge panels = nst.
+
+    Attributes
     ----------
     num_panels, num_strips : int
     panel_offset, strip_offset : list of int, per surface
@@ -186,8 +188,9 @@ class Lattice:
         """Segment weights (np_eval, np, 4) for induced velocities at the force points.
 
         Weight 0 drops (a) the trailing-edge segment p3->p4 of every trailing-edge ring (it
-        cancels against the wake ring of the same strength, §4.2), and (b) the two segments that
-        pass through the force point itself: its own bound segment p1->p2 and the p3->p4 segment
+        cancels against the wake ring of the same strength, docs theory/aerodynamics 'Wake'), and
+        (b) the two segments that pass through the force point itself: its own bound segment p1->p2
+        and the p3->p4 segment
         of the ring just upstream, which is the same vortex line. Both induce no velocity on
         their own midpoint; dropping them by topology keeps the kernel regular.
         """

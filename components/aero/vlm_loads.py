@@ -14,8 +14,8 @@ class VLMLoadsComp(om.ExplicitComponent):
     Sum of the panel forces and their moments, projected on wind axes.
 
     With F_k the inviscid Kutta–Joukowski force and F_v,k the strip-theory profile drag of panel
-    k, applied at its force point x_k (reference/models_aero_rotor_acoustics.md §4.5; paper
-    eq. 11):
+    k, applied at its force point x_k (docs theory/aerodynamics 'Forces and induced drag'; paper eq.
+    11):
 
     - force = sum_k (F_k + F_v,k);  moment = sum_k (x_k - x_ref) x (F_k + F_v,k)
     - lift = force . e_L; drag = force . e_D; side_force = force . e_Y;

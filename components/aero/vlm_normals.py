@@ -11,17 +11,17 @@ class VLMNormalsComp(om.ExplicitComponent):
     """
     Unit normals of the vortex rings, rotated about the span-wise axis by the section incidence.
 
-    Geometric normal (reference/models_aero_rotor_acoustics.md §4.1): n = (p3 - p1) x (p2 - p4),
-    normalised; it points up (-z) on a wing. Camber and control deflections enter the flat lattice
-    as an incidence increment of the boundary condition (the AVL treatment):
+    Geometric normal (docs theory/aerodynamics 'Lattice'): n = (p3 - p1) x (p2 - p4), normalised; it
+    points up (-z) on a wing. Camber and control deflections enter the flat lattice as an incidence
+    increment of the boundary condition (the AVL treatment):
 
         theta = -alpha_L0 (strip) + delta (deflectable surfaces),
         n' = n cos(theta) + (s x n) sin(theta) + s (s.n) (1 - cos(theta)),
 
-    a Rodrigues rotation about the unit bound vector s = (p2 - p1)/|p2 - p1|, positive nose up.
+    a Rodrigues rotation about the unit bound vector s = (p2 - p1)/norm(p2 - p1), positive nose up.
     A section with zero-lift angle alpha_L0 < 0 (positive camber) then carries lift at zero
-    geometric incidence, as in §4.6, and a trailing-edge-down deflection delta > 0 of an
-    all-moving tail adds incidence. The mesh itself is not moved.
+    geometric incidence, as in docs theory/aerodynamics 'Airfoil coupling', and a trailing-edge-down
+    deflection delta > 0 of an all-moving tail adds incidence. The mesh itself is not moved.
 
     Inputs
     ------

@@ -13,10 +13,10 @@ class VLMProfileDragComp(om.ExplicitComponent):
     Strip theory: every panel carries F_v = (1/2) rho V^2 c_d(strip) A_panel e_D, along the
     relative wind e_D, applied at its force point, so a strip's drag is q c_d A_strip. c_d is the
     airfoil's profile drag at the strip's Reynolds and Mach number (an input, from the airfoil
-    polar). reference/models_aero_rotor_acoustics.md §4.5 (the VLM itself has no viscous drag;
-    the public code computed this and dropped it, quirk Q3, which is not copied). A model that
-    books the wing and tail friction in the parasite-drag build-up (§5) sets c_d = 0 here (the
-    default) to avoid counting it twice.
+    polar). docs theory/aerodynamics 'Forces and induced drag' (the VLM itself has no viscous drag;
+    the public code computed this and dropped it, quirk Q3, which is not copied). A model that books
+    the wing and tail friction in the parasite-drag build-up (docs theory/aerodynamics 'Drag
+    build-up') sets c_d = 0 here (the default) to avoid counting it twice.
 
     Inputs
     ------

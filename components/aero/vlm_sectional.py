@@ -12,9 +12,9 @@ class VLMSectionalLiftComp(om.ExplicitComponent):
     """
     Sectional lift coefficient of every strip, the input of the airfoil alpha* inversion.
 
-    Paper eq. 16 and reference/models_aero_rotor_acoustics.md §4.6:
+    Paper eq. 16 and docs theory/aerodynamics 'Airfoil coupling':
 
-        c_l = sum_{k in strip} F_k . e_k / (q A_strip),   e_k = (e_D x l_k)/|e_D x l_k|,
+        c_l = sum_{k in strip} F_k . e_k / (q A_strip),   e_k = (e_D x l_k)/norm(e_D x l_k),
 
     with F_k the inviscid panel force, l_k the bound vector, e_D the relative-wind direction,
     q = rho V^2/2 (+1e-10 Pa so that V = 0 gives 0) and A_strip the strip area. e_k is the

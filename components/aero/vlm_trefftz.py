@@ -20,12 +20,12 @@ class VLMTrefftzDragComp(om.ExplicitComponent):
     (twice the wash at the lifting line, hence the factor 1/2) is
 
         D = (rho/2) sum_k Gamma_k w_k . (e_k x u),
-        w_k = sum_m gamma_m (u x d_km) / (2 pi (|d_km|^2 - (u.d_km)^2 + eps^2)),
+        w_k = sum_m gamma_m (u x d_km) / (2 pi (norm(d_km)^2 - (u.d_km)^2 + eps^2)),
 
     d_km = (a_k + b_k)/2 - Q_m. It uses the same sign convention as the near-field drag of
     :class:`VLMLoadsComp`, so the two agree on a converged planar lattice
-    (reference/models_aero_rotor_acoustics.md §4.5 has near field only; the Trefftz plane is the
-    textbook check, Katz & Plotkin §12.2).
+    (docs theory/aerodynamics 'Forces and induced drag' has near field only; the Trefftz plane is
+    the textbook check, Katz & Plotkin §12.2).
 
     Inputs
     ------

@@ -3,7 +3,7 @@
 import numpy as np
 import openmdao.api as om
 
-GRAVITY = 9.81  # m/s**2, as in the reference model (reference page §8.6)
+GRAVITY = 9.81  # m/s**2, as in the reference model (docs theory/dynamics 'Gravity')
 
 
 def _skew(v):
@@ -28,8 +28,8 @@ class EquationsOfMotionComp(om.ExplicitComponent):
     """
     Accelerations of the rigid vehicle from forces and moments (Newton–Euler about the cg).
 
-    Paper eq. 34 (reference/models_structures_motor_vehicle.md §8.6–8.7), body frame x
-    forward, y right, z down, gravity m g n along the local vertical (n the load factor):
+    Paper eq. 34 (docs theory/dynamics 'Gravity', 'Equations of motion'), body frame x forward, y
+    right, z down, gravity m g n along the local vertical (n the load factor):
 
     - (X, Y, Z) + m g n (-sin th, cos th sin ph, cos th cos ph) = m (a + omega x V)
     - I omega_dot + omega x (I omega) = M_cg,  M_cg = M_ref - r_cg x F_aero

@@ -10,7 +10,7 @@ class NeutralPointComp(om.ImplicitComponent):
     Neutral point, solved from the pitching-moment slope.
 
     The neutral point is the body-x station about which the pitching moment does not change with
-    angle of attack (paper eq. 30; reference/models_structures_motor_vehicle.md §8.8).
+    angle of attack (paper eq. 30; docs theory/dynamics 'Neutral point and static margin').
 
     The pitching moment about P = (x, 0, 0) is M_P = M_O + x F_z (body frame, z down), so the
     residual
@@ -92,7 +92,7 @@ class StaticMarginComp(om.ExplicitComponent):
     Static margin of the vehicle from its neutral point and cg.
 
     SM = (x_cg - x_np) / MAC in the body frame (x forward), i.e. the paper's
-    (x_np - x_cg)/MAC with x aft (reference/models_structures_motor_vehicle.md §8.8); the
+    (x_np - x_cg)/MAC with x aft (docs theory/dynamics 'Neutral point and static margin'); the
     constraint is SM >= 0.08.
 
     Inputs

@@ -7,8 +7,7 @@ class BatteryComp(om.ExplicitComponent):
     """
     Pack energy capacity from mass and specific energy, and the final state of charge.
 
-    Equations (paper eq. 27-28; reference/models_structures_motor_vehicle.md §8.10; eq. 28 as
-    corrected there):
+    Equations (paper eq. 27-28; docs theory/energy; eq. 28 as corrected there):
 
     - E_total = e_bat m_bat                        (e_bat in J/kg; 400 Wh/kg = 1.44e6 J/kg)
     - SoC_final = SoC_0 - E_used / E_total         (SoC_0 = 1: (E_total - E_used) / E_total)

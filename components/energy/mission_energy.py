@@ -13,9 +13,9 @@ class MissionEnergyComp(om.ExplicitComponent):
 
         E_used = sum_i k_i P_i t_i
 
-    The paper's rule (Sec. II and §8.10 of reference/models_structures_motor_vehicle.md): the
-    mission is flown twice plus one reserve cruise, with hover extended to 60 s and the outbound
-    transition energy doubled for the unmodelled inbound transition,
+    The paper's rule (Sec. II; docs theory/energy): the mission is flown twice plus one reserve
+    cruise, with hover extended to 60 s and the outbound transition energy doubled for the
+    unmodelled inbound transition,
 
         E_req = 2 (E_hover,60s + 2 E_transition + E_climb + E_cruise + E_descent) + E_cruise,
 

@@ -9,7 +9,7 @@ class TotalPowerComp(om.ExplicitComponent):
     Electrical power of the vehicle: the sum of the motor input powers.
 
     P_elec = sum over all motors of the motor input power (paper Sec. III.G: the power of each
-    mission segment; reference/models_structures_motor_vehicle.md §8.10 default).
+    mission segment; docs theory/energy default).
 
     Inputs
     ------

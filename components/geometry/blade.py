@@ -1,7 +1,8 @@
 """Rotor blade geometry: radial and azimuthal stations, chord and twist from B-splines.
 
-reference/models_aero_rotor_acoustics.md §7 (BladeAD ``BsplineParameterization``) and §8.1
-(stations). The names of the outputs (``hub_radius``, ``station_radius``, ``station_width``,
+docs theory/rotors 'Blade parameterization' (BladeAD ``BsplineParameterization``) and docs
+theory/rotors 'Stations and disk frame' (stations). The names of the outputs (``hub_radius``,
+``station_radius``, ``station_width``,
 ``azimuth``, ``chord``, ``twist``) are the interface of the rotor models (BEM, Pitt–Peters) and of
 the rotor acoustics; keep them stable.
 """
@@ -11,9 +12,10 @@ import openmdao.api as om
 
 from lpc_mdo.components.bspline import BsplineComp
 
-#: Radial-quadrature choices of :class:`BladeStationsComp` (reference §8.1, §8.3, §11 Q8).
+#: Radial-quadrature choices of :class:`BladeStationsComp` (docs theory/rotors 'Stations and disk
+#: frame', 'Loads and coefficients', 'Public-code compatibility').
 QUADRATURES = ('midpoint', 'bladead')
-#: Where the B-spline values are placed (reference §7).
+#: Where the B-spline values are placed (docs theory/rotors 'Blade parameterization').
 SPLINE_STATIONS = ('as_coded', 'element_centres')
 
 
@@ -75,7 +77,8 @@ def per_rotor(value, num_rotors, name, kind=float, lower=None, upper=None, upper
 
 
 def azimuth_angles(num_azimuth):
-    """Azimuthal stations psi_k = 2 pi k / N_psi, k = 0..N_psi-1, rad (reference §8.1)."""
+    """Azimuthal stations psi_k = 2 pi k / N_psi, k = 0..N_psi-1, rad (docs theory/rotors
+    'Stations and disk frame')."""
     return 2.0 * np.pi * np.arange(num_azimuth) / num_azimuth
 
 
@@ -84,11 +87,12 @@ def station_fractions(num_radial, quadrature='midpoint'):
     Element centres and quadrature weights as fractions of the blade length R - r_h.
 
     r_i = r_h + (R - r_h) eta_i and int f dr ~ (R - r_h) sum_i q_i f(r_i), with
-    eta_i = (i + 1/2)/N (reference §8.1) and
+    eta_i = (i + 1/2)/N (docs theory/rotors 'Stations and disk frame') and
 
     - 'midpoint' (default): q_i = 1/N, the midpoint rule;
-    - 'bladead' (compatibility switch for §11 Q8): q_i = 1/(N - 1) with halved end weights, the
-      public code's width and end-corrected sum, needed to reproduce the §8.6 numbers.
+    - 'bladead' (compatibility switch, docs theory/rotors 'Public-code compatibility'): q_i = 1/(N -
+      1) with halved end weights, the public code's width and end-corrected sum, needed to reproduce
+      the docs theory/rotors 'Validation' numbers.
 
     Returns
     -------
@@ -112,11 +116,11 @@ class BladeStationsComp(om.ExplicitComponent):
     """
     Radial stations, quadrature widths and hub radius of each rotor from its tip radius.
 
-    reference/models_aero_rotor_acoustics.md §8.1: r_h = h R (h the hub-radius ratio, 0.2 in the
-    LPC study), element centres r_i = r_h + (R - r_h)(i + 1/2)/N_r, widths dr_i = (R - r_h)/N_r
+    docs theory/rotors 'Stations and disk frame': r_h = h R (h the hub-radius ratio, 0.2 in the LPC
+    study), element centres r_i = r_h + (R - r_h)(i + 1/2)/N_r, widths dr_i = (R - r_h)/N_r
     (midpoint rule) or, with quadrature='bladead', the public code's (R - r_h)/(N_r - 1) with
-    halved end widths (§11 Q8). Azimuthal stations psi_k = 2 pi k/N_psi. All outputs are linear in
-    R, so the partials are constants set in setup.
+    halved end widths (docs theory/rotors 'Public-code compatibility'). Azimuthal stations psi_k = 2
+    pi k/N_psi. All outputs are linear in R, so the partials are constants set in setup.
 
     Inputs
     ------
@@ -145,7 +149,7 @@ class BladeStationsComp(om.ExplicitComponent):
     hub_radius_ratio : float or sequence of float
         h = r_h/R in [0, 1), one for all rotors or one per rotor. Default 0.2.
     quadrature : str
-        'midpoint' (default) or 'bladead' (§11 Q8 compatibility).
+        'midpoint' (default) or 'bladead' (docs theory/rotors 'Public-code compatibility').
     """
 
     def initialize(self):
@@ -158,7 +162,8 @@ class BladeStationsComp(om.ExplicitComponent):
                              types=(int, float, list, tuple, np.ndarray),
                              desc='Hub radius over tip radius, in [0, 1); scalar or per rotor')
         self.options.declare('quadrature', default='midpoint', values=QUADRATURES,
-                             desc="Radial quadrature: 'midpoint' or 'bladead' (§11 Q8)")
+                             desc="Radial quadrature: 'midpoint' or 'bladead' "
+                                  "(docs theory/rotors 'Public-code compatibility')")
 
     def setup(self):
         nr, nrad = self.options['num_rotors'], self.options['num_radial']
@@ -204,17 +209,20 @@ class BladeGeometryGroup(om.Group):
     Blade geometry of several rotors: stations, and chord and twist at the stations.
 
     The stations come from BladeStationsComp, the chord and twist at the
-    stations from cubic B-splines (BsplineComp), reference/models_aero_rotor_acoustics.md §7.
+    stations from cubic B-splines (BsplineComp), docs theory/rotors 'Blade parameterization'.
 
     Chord and twist are order-4 clamped B-splines of ``num_cp`` control points each (4: a single
-    cubic Bezier segment). By default (spline_stations='as_coded', §7) the spline is evaluated at
-    t = linspace(0, 1, N_r) and value i goes to element i, so cp_0 is the hub-element value and
+    cubic Bezier segment). By default (spline_stations='as_coded', docs theory/rotors 'Blade
+    parameterization') the spline is evaluated at t = linspace(0, 1, N_r) and value i goes to
+    element i, so cp_0 is the hub-element value and
     cp_last the tip-element value; this deliberate approximation of the public code is the
     default. 'element_centres' evaluates the spline at the element centres' normalized position
     t_i = (r_i - r_h)/(R - r_h) = (i + 1/2)/N_r instead. All partials are analytic constants.
 
-    Inputs (promoted)
-    -----------------
+    The inputs are promoted.
+
+    Inputs
+    ------
     radius : float, (num_rotors,), m
         Tip radius R.
     chord_cp : float, (num_rotors, num_cp), m
@@ -222,8 +230,10 @@ class BladeGeometryGroup(om.Group):
     twist_cp : float, (num_rotors, num_cp), rad
         Twist (blade pitch relative to the rotor plane) control points, root to tip.
 
-    Outputs (promoted)
-    ------------------
+    The outputs are promoted.
+
+    Outputs
+    -------
     hub_radius, station_radius, station_width, azimuth
         See BladeStationsComp.
     chord : float, (num_rotors, num_radial), m
@@ -251,7 +261,8 @@ class BladeGeometryGroup(om.Group):
                              types=(int, float, list, tuple, np.ndarray),
                              desc='Hub radius over tip radius, in [0, 1); scalar or per rotor')
         self.options.declare('quadrature', default='midpoint', values=QUADRATURES,
-                             desc="Radial quadrature: 'midpoint' or 'bladead' (§11 Q8)")
+                             desc="Radial quadrature: 'midpoint' or 'bladead' "
+                                  "(docs theory/rotors 'Public-code compatibility')")
         self.options.declare('num_cp', default=4, types=int, lower=4,
                              desc='Chord and twist control points per rotor')
         self.options.declare('spline_stations', default='as_coded', values=SPLINE_STATIONS,

@@ -10,8 +10,8 @@ def span_stations(num_span_panels, spacing):
     """Span-wise node stations eta in [-1, 1] (left tip to right tip), symmetric about 0.
 
     ``cosine``: eta_j = -cos(pi j/N), nodes clustered at the tips (the "half-cosine" span-wise
-    spacing of the public LPC code, reference/models_aero_rotor_acoustics.md §2); ``uniform``:
-    eta_j = -1 + 2 j/N.
+    spacing of the public LPC code, docs theory/aerodynamics 'Reference-vehicle defaults');
+    ``uniform``: eta_j = -1 + 2 j/N.
     """
     j = np.arange(num_span_panels + 1)
     if spacing == "cosine":
@@ -27,20 +27,20 @@ class PlanformMeshComp(om.ExplicitComponent):
     Mesh of a trapezoidal lifting surface mirrored about its root, from planform parameters.
 
     Body frame x forward, y right, z down. With eta_j in [-1, 1] the span-wise station
-    (``spacing``), h_j = |eta_j| b/2 the distance from the root, s_i = i/nc the chord fraction
+    (``spacing``), h_j = abs(eta_j) b/2 the distance from the root, s_i = i/nc the chord fraction
     and x0 the root leading edge:
 
     - leading edge: x_le = x0_x - h tan(sweep), y = x0_y + eta b/2, z_le = x0_z - h tan(dihedral)
       (sweep is the leading-edge sweep, positive aft; dihedral positive tip up; b the projected
       span);
-    - chord: c_j = c_root (1 - |eta_j|) + c_tip |eta_j|;
-    - section incidence theta_j = incidence + twist[|j - N/2|] (positive nose up), a rotation
+    - chord: c_j = c_root (1 - abs(eta_j)) + c_tip abs(eta_j);
+    - section incidence theta_j = incidence + twist[abs(j - N/2)] (positive nose up), a rotation
       about the leading edge:
       X[i, j] = (x_le - s_i c_j cos theta_j, y_j, z_le + s_i c_j sin theta_j).
 
-    The planform and its symbols follow reference/models_aero_rotor_acoustics.md §5 and the
-    vehicle file (``lpc_mdo.vehicle.LiftingSurface``: leading-edge sweep, dihedral, root
-    incidence, root leading edge). Partials are analytic and sparse.
+    The planform and its symbols follow docs theory/aerodynamics 'Drag build-up' and the vehicle
+    file (``lpc_mdo.vehicle.LiftingSurface``: leading-edge sweep, dihedral, root incidence, root
+    leading edge). Partials are analytic and sparse.
 
     Inputs
     ------
@@ -49,9 +49,9 @@ class PlanformMeshComp(om.ExplicitComponent):
     root_chord, tip_chord : float, scalar, m
         > 0 and >= 0.
     sweep : float, scalar, rad
-        Leading-edge sweep, |sweep| < 90 deg.
+        Leading-edge sweep, abs(sweep) < 90 deg.
     dihedral : float, scalar, rad
-        |dihedral| < 90 deg.
+        abs(dihedral) < 90 deg.
     incidence : float, scalar, rad
         Root incidence relative to the body x axis, positive nose up.
     twist : float, (N/2 + 1,), rad

@@ -9,13 +9,13 @@ class RotorLayoutComp(om.ExplicitComponent):
     Rotor hub positions and radii, and the radius intersection constraint.
 
     Hub positions and radii follow the planform design variables, as does the radius
-    intersection constraint (reference/models_structures_motor_vehicle.md §3.3).
+    intersection constraint (docs theory/geometry 'Rotor layout and radius intersection').
 
-    Each boom is attached to the wing at a fixed fraction of the semispan, eta_i = |y_i| / (b/2)
+    Each boom is attached to the wing at a fixed fraction of the semispan, eta_i = abs(y_i) / (b/2)
     of the reference vehicle. When the span changes, the junction slides along the wing's
     leading-edge direction (LE sweep Lambda, dihedral Gamma, z down):
 
-        attach_i(b) = attach_i,ref + (eta_i b/2 - |y_i,ref|) (tan Lambda, sign y_i, -tan Gamma)
+        attach_i(b) = attach_i,ref + (eta_i b/2 - abs(y_i,ref)) (tan Lambda, sign y_i, -tan Gamma)
 
     and the hub keeps its offset from the junction (front rotors ahead of and below the wing,
     rear rotors behind and above it). The pusher hub keeps its offset from the fuselage tail:
@@ -25,7 +25,7 @@ class RotorLayoutComp(om.ExplicitComponent):
 
     - ``span_fraction`` (default, the public code's form, which the paper's Table 8 satisfies):
       (R_inner + R_outer) / b
-    - ``clearance`` (literal reading, m): |y_outer - y_inner| - (R_inner + R_outer)
+    - ``clearance`` (literal reading, m): abs(y_outer - y_inner) - (R_inner + R_outer)
 
     Inputs
     ------

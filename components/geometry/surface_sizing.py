@@ -8,8 +8,7 @@ class SurfaceSizingComp(om.ExplicitComponent):
     """
     Span, root and tip chord and mean aerodynamic chord from area, aspect ratio and taper.
 
-    Trapezoidal planform (reference/models_structures_motor_vehicle.md §3.1, CADDEE wing
-    formulas):
+    Trapezoidal planform (docs theory/geometry 'Reference vehicle', CADDEE wing formulas):
 
     - b = sqrt(AR S)
     - c_root = 2 S / ((1 + lambda) b),  c_tip = lambda c_root

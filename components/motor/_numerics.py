@@ -132,7 +132,7 @@ def bisect(fun, lower, upper, *, owner, variable, units='', xtol_abs=0.0,
     units : str
         Units of the unknown, for error messages.
     xtol_abs, xtol_rel : float
-        Stop when every bracket is narrower than xtol_abs + xtol_rel |x|.
+        Stop when every bracket is narrower than xtol_abs + xtol_rel abs(x).
     maxiter : int
         Maximum number of halvings.
 
@@ -197,7 +197,7 @@ def newton_bracketed(fun, lower, upper, *, owner, variable, units='', xtol_abs=0
     owner, variable, units : str
         For error messages (component msginfo, unknown's name and units).
     xtol_abs, xtol_rel : float
-        Stop when every Newton/bisection step is below xtol_abs + xtol_rel |x|.
+        Stop when every Newton/bisection step is below xtol_abs + xtol_rel abs(x).
     maxiter : int
         Maximum number of iterations.
 

@@ -1,13 +1,15 @@
 """PMSM equivalent-circuit parameters: magnet circuit, magnet MEC and d/q inductances.
 
-reference/models_structures_motor_vehicle.md §7.3-7.5 (lsdo_motor ``motor_ecm_parameters_model``,
-``magnet_mec_model``, ``inductance_model``). All quantities are per motor, shape (num_motors,).
+docs theory/motor 'Equivalent circuit', 'Magnet circuit', 'Inductances' (lsdo_motor
+``motor_ecm_parameters_model``, ``magnet_mec_model``, ``inductance_model``). All quantities are per
+motor, shape (num_motors,).
 The two implicit solves (air-gap flux density of the magnet MEC, q-axis flux of the inductance
 iteration) are vectorized bisections on the reference brackets; the partials of every component
 are an exact vectorized complex step (see :mod:`._numerics`).
 
-Reproduced as coded, because the §7.11 reference numbers depend on it: lsdo_motor overwrites
-its air-gap flux ``phi_air = alpha_i tau_p l B_delta`` with the magnet operating flux
+Reproduced as coded, because the docs theory/motor 'Validation' reference numbers depend on it:
+lsdo_motor overwrites its air-gap flux ``phi_air = alpha_i tau_p l B_delta`` with the magnet
+operating flux
 ``phi_r - F_m lambda_m`` (equal to phi_air + phi_f + phi_s at the MEC solution) before the
 post-processing, so the "air-gap flux" that feeds K_sigma, lambda_theta, the back-EMF E_0, the
 q-axis bracket and Psi_F = W phi is the flux leaving the magnet, called ``pole_flux`` here
@@ -23,17 +25,19 @@ from lpc_mdo.components.motor._pointwise import PointwiseExplicitComp, Pointwise
 
 
 def _complex_safe_abs(x):
-    """|x| with the derivative sign(Re x) under complex step."""
+    """abs(x) with the derivative sign(Re x) under complex step."""
     return x * np.sign(np.asarray(x).real)
 
 
 # --------------------------------------------------------------------------------------------
-# Magnet circuit and equivalent-circuit parameters (explicit, §7.3)
+# Magnet circuit and equivalent-circuit parameters (explicit, docs theory/motor 'Equivalent
+# circuit')
 # --------------------------------------------------------------------------------------------
 
 class MotorECMParametersComp(PointwiseExplicitComp):
     """
-    Geometry-derived equivalent-circuit parameters of the PMSM (§7.3), per motor.
+    Geometry-derived equivalent-circuit parameters of the PMSM (docs theory/motor 'Equivalent
+    circuit'), per motor.
 
     - yoke pitch tau_y = pi (D_i + h_slot)/(2p); yoke path L_j1 = pi (D - h_ys)/(4p);
     - magnet: b_m = (D_2 - 0.002) pi theta_m/360 with theta_m = 0.78 * 360/(2p); A_m = b_m l;
@@ -44,8 +48,8 @@ class MotorECMParametersComp(PointwiseExplicitComp):
     - Carter factor K_theta = t_1 (4.4 delta + 0.75 b_sb)/(t_1 (4.4 delta + 0.75 b_sb) - b_sb**2);
     - bridge area A_f2 = h_m l;
     - R_dc = 2 rho_cu W (l + 0.02 + 2 tau_p)/(A_cu N_p);
-    - loss volumes (§7.8): iron V_s + V_s1 = pi l (D - D_i)**2/4 - Z l A_cu
-      + pi l (D_2 - D_sh)**2/4, magnet V_t = 2 p l b_m h_m.
+    - loss volumes (docs theory/motor 'Losses and efficiency'): iron V_s + V_s1 = pi l (D -
+      D_i)**2/4 - Z l A_cu + pi l (D_2 - D_sh)**2/4, magnet V_t = 2 p l b_m h_m.
 
     The effective length is l_ef = L (lsdo_motor dev_csdl_alpha). Partials: exact vectorized
     complex step, diagonal over the motors.
@@ -184,7 +188,7 @@ class MotorECMParametersComp(PointwiseExplicitComp):
 
 
 # --------------------------------------------------------------------------------------------
-# Magnet magnetic equivalent circuit (§7.4)
+# Magnet magnetic equivalent circuit (docs theory/motor 'Magnet circuit')
 # --------------------------------------------------------------------------------------------
 
 _MEC_INPUTS = (
@@ -211,7 +215,8 @@ _MAGNET_NAMES = tuple(name for name, *_ in _MAGNET_INPUTS)
 
 def magnet_circuit(b_delta, v):
     """
-    Evaluate the magnet MEC of §7.4 at the air-gap flux density ``b_delta`` (complex-safe).
+    Evaluate the magnet MEC of docs theory/motor 'Magnet circuit' at the air-gap flux density
+    ``b_delta`` (complex-safe).
 
     Returns a dict with the air-gap flux phi_air = alpha_i tau_p l B_delta, the air-gap and
     total MMFs, the bridge flux phi_f, the bridge leakage phi_s and the magnet flux
@@ -241,7 +246,8 @@ def magnet_circuit(b_delta, v):
 
 def magnet_operating_flux(circuit, v):
     """
-    Magnet operating flux phi_r - F_m lambda_m for the circuit of :func:`magnet_circuit` (§7.4).
+    Magnet operating flux phi_r - F_m lambda_m for the circuit of :func:`magnet_circuit` (docs
+    theory/motor 'Magnet circuit').
 
     F_m = F_tot + phi_mag/lambda_leak with the leakage permeance lambda_leak = l b_m mu_0/0.0005.
     """
@@ -252,7 +258,8 @@ def magnet_operating_flux(circuit, v):
 
 class MagnetCircuitComp(PointwiseImplicitComp):
     """
-    Magnet magnetic equivalent circuit: air-gap flux density B_delta (implicit, §7.4).
+    Magnet magnetic equivalent circuit: air-gap flux density B_delta (implicit, docs theory/motor
+    'Magnet circuit').
 
     For a trial B_delta the circuit gives the tooth, yoke and air-gap MMFs (iron B-H fit
     H(B) = (1.12832651 e^(B+1) + 200) B**1.4), the bridge flux (B(H) = 1.92e-3 tanh(H/300 -
@@ -312,7 +319,8 @@ class MagnetCircuitComp(PointwiseImplicitComp):
 
 class MagnetFluxComp(PointwiseExplicitComp):
     """
-    Magnet MEC post-processing (§7.4): pole flux, MMFs and per-unit permeances.
+    Magnet MEC post-processing (docs theory/motor 'Magnet circuit'): pole flux, MMFs and per-unit
+    permeances.
 
     With phi the flux per pole (as coded, the magnet operating flux phi_r - F_m lambda_m = phi_mag
     at the MEC solution; see the module docstring):
@@ -398,7 +406,7 @@ class MagnetFluxComp(PointwiseExplicitComp):
 
 
 # --------------------------------------------------------------------------------------------
-# Inductances (§7.5)
+# Inductances (docs theory/motor 'Inductances')
 # --------------------------------------------------------------------------------------------
 
 _Q_AXIS_INPUTS = (
@@ -421,7 +429,8 @@ _Q_AXIS_NAMES = tuple(name for name, *_ in _Q_AXIS_INPUTS)
 
 def q_axis_current(flux_q, v, par):
     """
-    Q-axis current I_q,tmp that drives the q-axis flux ``flux_q`` (§7.5; complex-safe).
+    Q-axis current I_q,tmp that drives the q-axis flux ``flux_q`` (docs theory/motor 'Inductances';
+    complex-safe).
 
     I_q,tmp = p (F_sigma,q + F_t1,q + F_j1,q)/(0.9 m K_aq K_dp1 W), K_aq = 0.36/K_f.
     """
@@ -439,7 +448,7 @@ def q_axis_current(flux_q, v, par):
 
 class QAxisFluxComp(PointwiseImplicitComp):
     """
-    Q-axis flux of the inductance iteration (implicit, §7.5).
+    Q-axis flux of the inductance iteration (implicit, docs theory/motor 'Inductances').
 
     With the rated d-axis current I_d,r = I_w sin(0.6283) and the q-axis current I_q,tmp(phi_aq)
     of :func:`q_axis_current`, the rated current circle closes:
@@ -498,7 +507,7 @@ class QAxisFluxComp(PointwiseImplicitComp):
 
 class InductanceComp(PointwiseExplicitComp):
     """
-    D/q-axis inductances and flux linkage (§7.5), per motor.
+    D/q-axis inductances and flux linkage (docs theory/motor 'Inductances'), per motor.
 
     With f_i = rated_speed p/60 and C_x = 4 pi f_i mu_0 l (K_dp1 W)**2/p:
 
@@ -507,7 +516,7 @@ class InductanceComp(PointwiseExplicitComp):
     - d axis: F_ad = 0.35 m K_dp1 W I_d,r/(K_f p); f_a = F_ad/(K_sigma h_m H_c);
       b_mN = lambda_n (1 - f_a)/(lambda_n + 1); phi_N = (b_mN - (1 - b_mN) lambda_leak,std) A_m B_r;
       E_0 = 4.44 f_i K_dp1 W phi K_phi, E_d likewise with phi_N;
-      X_ad = |E_0 - E_d|/(sqrt(2) I_d,r); L_d = (X_ad + X_1)/(2 pi f_i);
+      X_ad = abs(E_0 - E_d)/(sqrt(2) I_d,r); L_d = (X_ad + X_1)/(2 pi f_i);
     - q axis: X_aq = (phi_aq E_0/phi)/I_q,tmp(phi_aq); L_q = (X_aq + X_1)/(2 pi f_i);
     - flux linkage Psi_F = W phi.
 

@@ -55,7 +55,8 @@ MOTOR_NAMES = tuple(name for name, *_ in MOTOR_INPUTS)
 
 def loss_model(v, par, with_partials=False):
     """
-    Currents, MTPA voltage, losses, powers and efficiency of §7.8 (complex-safe, pointwise).
+    Currents, MTPA voltage, losses, powers and efficiency of docs theory/motor 'Losses and
+    efficiency' (complex-safe, pointwise).
 
     Parameters
     ----------
@@ -144,23 +145,25 @@ def loss_model(v, par, with_partials=False):
 
 class MotorLossComp(om.ExplicitComponent):
     """
-    PMSM currents, terminal voltage, losses, input power and efficiency (§7.8, paper eq. 24).
+    PMSM currents, terminal voltage, losses, input power and efficiency (docs theory/motor 'Losses
+    and efficiency', paper eq. 24).
 
     With the MTPA q-axis current I_q (MTPAComp), the electrical speed omega = rpm G 2 pi/60 p,
     the load torque T_L = Q_r/G (G the gear ratio) and, as coded, f = omega p/60:
 
-    - I_d = (T_em/(1.5 p I_q) - Psi_F)/(L_d - L_q); |I| = sqrt(I_q**2 + I_d**2);
+    - I_d = (T_em/(1.5 p I_q) - Psi_F)/(L_d - L_q); abs(I) = sqrt(I_q**2 + I_d**2);
     - U_d = R I_d - omega L_q I_q, U_q = omega L_d I_d + R I_q + omega Psi_F,
-      |U| = sqrt(U_d**2 + U_q**2) (MTPA terminal voltage amplitude, no flux weakening);
+      abs(U) = sqrt(U_d**2 + U_q**2) (MTPA terminal voltage amplitude, no flux weakening);
     - P_0 = T_L omega/p = Q_r rpm 2 pi/60 (shaft output power);
-    - copper P_cu = m R |I|**2;
+    - copper P_cu = m R abs(I)**2;
     - iron: eddy K_e (V_s + V_s1)(B_delta f)**2 + magnet eddy K_e V_t (B_delta f)**2 +
       hysteresis K_h (V_s + V_s1) f B_delta**2, K_e = (a_l pi)**2 sigma_c/60;
     - windage P_w = k_r pi f_r rho_air (2 pi f)**2 l D_2**4; stray 0.01 P_0; mechanical 100 W;
     - P_in = P_0 + losses; efficiency eta = P_0/P_in.
 
-    The as-coded omega and f are kept as the reference document requires (§10, §11: the §7.11
-    numbers depend on them). Partials are analytic and pointwise: diagonal over (motor, node),
+    The as-coded omega and f are kept as the reference document requires (the numbers of docs
+    theory/motor 'Validation' depend on them). Partials are analytic and pointwise: diagonal over
+    (motor, node),
     per-motor inputs broadcast over the nodes.
 
     Inputs
@@ -189,9 +192,9 @@ class MotorLossComp(om.ExplicitComponent):
     Outputs
     -------
     current_d, current : float, (num_motors, num_nodes), A
-        D-axis current and current amplitude |I|.
+        D-axis current and current amplitude abs(I).
     voltage : float, (num_motors, num_nodes), V
-        MTPA terminal voltage amplitude |U|.
+        MTPA terminal voltage amplitude abs(U).
     copper_loss, iron_loss, windage_loss, power_loss : float, (num_motors, num_nodes), W
         Copper, iron (eddy + magnet eddy + hysteresis), windage and total losses (the total
         also holds the stray and mechanical losses).
@@ -288,7 +291,8 @@ class MotorLossComp(om.ExplicitComponent):
 
 class EMTorqueComp(PointwiseImplicitComp):
     """
-    Electromagnetic torque from the efficiency residual (implicit; paper eq. 24, §7.8).
+    Electromagnetic torque from the efficiency residual (implicit; paper eq. 24, docs theory/motor
+    'Losses and efficiency').
 
         R = eta(T_em) T_em - T_L = 0,  T_L = rotor_torque/gear_ratio,
 
@@ -424,15 +428,16 @@ class EMTorqueComp(PointwiseImplicitComp):
 
 class MotorMarginComp(om.ExplicitComponent):
     """
-    Torque margin and voltage-limit report of each operating point (§7.9).
+    Torque margin and voltage-limit report of each operating point (docs theory/motor 'Torque
+    margin').
 
     - torque_margin = T_pk/T_em - 1 (paper: available/required - 1, constrained >= 0.10; the
       full problem aggregates T_em over a motor's conditions with KS before this ratio);
-    - voltage_margin = 1 - |U|/V_lim (>= 0 when the MTPA point respects the voltage limit);
+    - voltage_margin = 1 - abs(U)/V_lim (>= 0 when the MTPA point respects the voltage limit);
     - voltage_torque_margin = T_lim/T_em - 1 (only with ``include_torque_limit``): margin to the
-      voltage-limited torque of §7.6, which needs flux weakening to be reached when
-      voltage_margin < 0;
-    - beyond_voltage_limit = 1.0 where |U| > V_lim, else 0.0: flux weakening (out of scope, as in
+      voltage-limited torque of docs theory/motor 'Voltage-limited torque', which needs flux
+      weakening to be reached when voltage_margin < 0;
+    - beyond_voltage_limit = 1.0 where abs(U) > V_lim, else 0.0: flux weakening (out of scope, as in
       the paper) would be needed there. A report, not differentiable (no partials); constrain
       voltage_margin instead.
 

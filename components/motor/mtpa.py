@@ -9,7 +9,7 @@ from lpc_mdo.components.motor.parameters import MotorParameters
 
 def mtpa_base(flux_linkage, inductance_d, inductance_q, pole_pairs):
     """
-    Return the base current and torque of the per-unit MTPA quartic (§7.7; complex-safe).
+    Return the base current and torque of the per-unit MTPA quartic (docs theory/motor 'MTPA'; complex-safe).
 
     I_base = -Psi_F/(L_d - L_q), T_base = 1.5 p Psi_F I_base.
     """
@@ -46,7 +46,8 @@ def mtpa_current_pu(torque_pu, owner='MTPA'):
 
 class MTPAComp(om.ImplicitComponent):
     """
-    Q-axis current of maximum-torque-per-ampere control (implicit; paper eq. 26, §7.7).
+    Q-axis current of maximum-torque-per-ampere control (implicit; paper eq. 26, docs theory/motor
+    'MTPA').
 
     With I_base = -Psi_F/(L_d - L_q) and T_base = 1.5 p Psi_F I_base, the per-unit q-axis current
     I_q* = I_q/I_base at the per-unit EM torque T* = T_em/T_base solves

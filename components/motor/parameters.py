@@ -1,9 +1,10 @@
 """Design constants and material fits of the PMSM motor model (lsdo_motor, Cheng et al.).
 
-Everything here is data of reference/models_structures_motor_vehicle.md §7: the user-facing
-parameters of §7.1 in the typed, validated :class:`MotorParameters`, and the fixed constants of
-the sizing (§7.2), equivalent circuit (§7.3-7.5) and loss model (§7.8) as module constants, named
-by their physical meaning with the reference symbol in the comment.
+Everything here is data of docs theory/motor: the user-facing parameters of docs theory/motor
+'Parameters' in the typed, validated :class:`MotorParameters`, and the fixed constants of the sizing
+(docs theory/motor 'Sizing'), equivalent circuit (docs theory/motor 'Equivalent circuit', 'Magnet
+circuit', 'Inductances') and loss model (docs theory/motor 'Losses and efficiency') as module
+constants, named by their physical meaning with the reference symbol in the comment.
 """
 
 import math
@@ -13,7 +14,8 @@ import numpy as np
 
 MU_0 = 4.0e-7 * np.pi  # vacuum permeability, H/m
 
-# --- Sizing (§7.2) -------------------------------------------------------------------------
+# --- Sizing (docs theory/motor 'Sizing')
+# -------------------------------------------------------------------------
 STATOR_DIAMETER_RATIO = 1.25  # lambda_i = D / D_i
 AIR_GAP_FLUX_DENSITY_MAX = 0.85  # B_delta,max, T (design value; independent of B_bar as coded)
 DESIGN_EFFICIENCY = 0.96  # eta_0, assumed efficiency in the winding design
@@ -28,7 +30,8 @@ SLOT_LIP_HEIGHT = 0.8e-3  # h_k, m
 SLOT_OPENING_HEIGHT = 1.5 * SLOT_LIP_HEIGHT  # h_os, m
 SLOT_BOTTOM_ANGLE_FRACTION = 0.5 * 0.3  # theta_ssi = 0.3 theta_sso = 0.15 theta_t
 
-# --- Magnet and equivalent-circuit parameters (§7.3) -------------------------------------
+# --- Magnet and equivalent-circuit parameters (docs theory/motor 'Equivalent circuit')
+# -------------------------------------
 MAGNET_THICKNESS = 4.0e-3  # h_m, m
 MAGNET_EMBED_DEPTH = 2.0e-3  # m, D_m = D_2 - 0.002
 MAGNET_ARC_RATIO = 0.78  # theta_m / theta_p
@@ -39,13 +42,15 @@ MAGNET_RECOIL_PERMEABILITY = 1.05  # mu_r
 COPPER_RESISTIVITY = 0.0217e-6  # rho_cu, Ohm m
 COIL_STRAIGHT_EXTENSION = 0.02  # l_B = l_ef + 0.02, m
 
-# --- Magnet magnetic equivalent circuit (§7.4) ---------------------------------------------
+# --- Magnet magnetic equivalent circuit (docs theory/motor 'Magnet circuit')
+# ---------------------------------------------
 AIR_GAP_FRINGE_LENGTH = 1.0e-4  # m, F_delta = 1.6 B_delta (1e-4 + K_theta delta)/mu_0
 BRIDGE_LEAKAGE_PERMEANCE = 0.336e-6  # lambda_s, Wb/A: phi_s = F_tot * 0.336e-6
 LEAKAGE_GAP = 5.0e-4  # m, lambda_leak = l_ef b_m mu_0 / 0.0005
 AIR_GAP_FLUX_DENSITY_BRACKET = (1.0e-6, 1.2)  # T, bracket of the B_delta solve
 
-# --- Inductances (§7.5) ------------------------------------------------------------------
+# --- Inductances (docs theory/motor 'Inductances')
+# ------------------------------------------------------------------
 D_AXIS_CURRENT_ANGLE = 0.6283  # rad, I_d,r = I_w sin(0.6283)
 Q_AXIS_REACTION_FACTOR = 0.36  # K_aq = 0.36/K_f
 D_AXIS_REACTION_FACTOR = 0.35  # F_ad = 0.35 m K_ad K_dp1 W I_d,r / p
@@ -55,7 +60,8 @@ END_WINDING_FACTOR = 0.47  # X_E1 = 0.47 C_x (l_B - 0.64 tau_y)/(l_ef K_dp1**2)
 END_WINDING_PITCH_FACTOR = 0.64
 Q_AXIS_FLUX_LOWER = 1.0e-5  # Wb, lower bracket of the phi_aq solve (upper: the pole flux)
 
-# --- Losses (§7.8) -----------------------------------------------------------------------
+# --- Losses (docs theory/motor 'Losses and efficiency')
+# -----------------------------------------------------------------------
 LAMINATION_THICKNESS = 0.55e-3  # a_l, m
 IRON_CONDUCTIVITY = 2.0e6  # sigma_c, S/m
 EDDY_COEFFICIENT = (LAMINATION_THICKNESS * np.pi) ** 2 * IRON_CONDUCTIVITY / 60.0  # K_e
@@ -69,7 +75,8 @@ MECHANICAL_LOSS = 100.0  # P_m, W
 
 def field_strength_from_flux_density(b):
     """
-    Iron B-H fit H(B) = (a exp(b B + c) + 200) B**1.4, (a, b, c) = (1.12832651, 1, 1) (§7.4).
+    Iron B-H fit H(B) = (a exp(b B + c) + 200) B**1.4, (a, b, c) = (1.12832651, 1, 1) (docs
+    theory/motor 'Magnet circuit').
 
     Complex-step safe. ``b`` in T, returns A/m.
     """
@@ -78,7 +85,8 @@ def field_strength_from_flux_density(b):
 
 def bridge_flux_density(h):
     """
-    Magnet-bridge fit B(H) = a_H tanh(H/300 - 0.25) + 0.4, a_H = 1.92052530e-3 (§7.4).
+    Magnet-bridge fit B(H) = a_H tanh(H/300 - 0.25) + 0.4, a_H = 1.92052530e-3 (docs theory/motor
+    'Magnet circuit').
 
     Complex-step safe. ``h`` in A/m, returns T.
     """
@@ -94,7 +102,7 @@ def _check(name, value, ok, allowed):
 @dataclass(frozen=True)
 class MotorParameters:
     """
-    Fixed parameters of the interior PMSM (reference/models_structures_motor_vehicle.md §7.1).
+    Fixed parameters of the interior PMSM (docs theory/motor 'Parameters').
 
     Attributes
     ----------
@@ -116,10 +124,11 @@ class MotorParameters:
     torque_density : float
         Specific torque Q_sp, N*m/kg (> 0), in the mass eq. 23. Default 15.
     peak_torque_coefficients : tuple of float
-        Polynomial T_pk(mass) coefficients, highest power first (§7.2 order-2 fit).
-        Default (0.4840, 3.3169, 60.8142): T_pk = 0.4840 m**2 + 3.3169 m + 60.8142.
+        Polynomial T_pk(mass) coefficients, highest power first (docs theory/motor 'Sizing' order-2
+        fit). Default (0.4840, 3.3169, 60.8142): T_pk = 0.4840 m**2 + 3.3169 m + 60.8142.
     magnet_temperature : float
-        Magnet temperature, deg C, for the remanence and coercivity (§7.3). Default 75.
+        Magnet temperature, deg C, for the remanence and coercivity (docs theory/motor 'Equivalent
+        circuit'). Default 75.
     """
 
     pole_pairs: int = 6
@@ -184,8 +193,9 @@ class MotorParameters:
         """
         B_r = (1 + (T - 20) alpha_Br/100) B_r20, T (1.1208 at 75 deg C).
 
-        The corrected form of quirk S3 (§10); lsdo_motor's slip 1 + (T-20) alpha/100 B_r20 fed
-        nothing, and this value is what it hard-codes as B_r' in the inductance model.
+        The corrected form (docs theory/motor 'Public-code compatibility'); lsdo_motor's slip 1 +
+        (T-20) alpha/100 B_r20 fed nothing, and this value is what it hard-codes as B_r' in the
+        inductance model.
         """
         return self.temperature_factor * REMANENCE_20C
 

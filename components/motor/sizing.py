@@ -29,13 +29,14 @@ class MotorSizingComp(om.ExplicitComponent):
     """
     Interior PMSM sizing from stack length, diameter and electric/magnetic loading.
 
-    Implements reference/models_structures_motor_vehicle.md §7.2 (lsdo_motor
-    ``motor_sizing_model``, torque mode) and paper eq. 23 (reference/paper.md Sec. III.F):
+    Implements docs theory/motor 'Sizing' (lsdo_motor ``motor_sizing_model``, torque mode) and paper
+    eq. 23 (paper Sec. III.F):
 
     - D = L/(L/D) when the option ``length_to_diameter`` is set (the paper ties D to the length
       design variable), otherwise D is an input;
     - mass m = (pi/2) A_bar B_bar D**2 L/Q_sp  (eq. 23);
-    - peak (current-limited) torque T_pk = polynomial fit of the mass (§7.2, order 2 by default);
+    - peak (current-limited) torque T_pk = polynomial fit of the mass (docs theory/motor 'Sizing',
+      order 2 by default);
     - internal geometry, see the outputs. B_delta,max = 0.85 T is a fixed design value of the
       internal geometry, as coded: the magnetic loading enters the mass only. The slot count Z
       replaces the hard-coded 36 of lsdo_motor in b_s1 (identical for the default Z = 36).
@@ -65,7 +66,7 @@ class MotorSizingComp(om.ExplicitComponent):
     stator_inner_diameter, pole_pitch, tooth_pitch, air_gap, rotor_diameter, shaft_diameter,
     tooth_width, stator_yoke_height, slot_bottom_width, slot_height, slot_inner_width :
     float, (num_motors,), m
-        Internal geometry (§7.2), formulas in each output's desc.
+        Internal geometry (docs theory/motor 'Sizing'), formulas in each output's desc.
     turns_per_phase : float, (num_motors,), dimensionless
         Series turns per phase W.
 

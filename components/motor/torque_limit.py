@@ -11,7 +11,8 @@ _MAX_DOUBLINGS = 200
 
 def _quartic(v, par):
     """
-    Monic voltage-limit torque quartic in x = T/T_s, T_s = 1.5 p Psi_F I_w (§7.6).
+    Monic voltage-limit torque quartic in x = T/T_s, T_s = 1.5 p Psi_F I_w (docs theory/motor
+    'Voltage-limited torque').
 
     Returns (torque_scale, b, c, d, e) with P(x) = x**4 + b x**3 + c x**2 + d x + e, i.e. the
     reference quartic A T**4 + B T**3 + C T**2 + D T + E divided by A T_s**4 (A > 0 always).
@@ -45,12 +46,14 @@ def _quartic(v, par):
 
 class TorqueLimitComp(PointwiseImplicitComp):
     """
-    Voltage-limited EM torque T_lim at each operating speed (implicit, §7.6).
+    Voltage-limited EM torque T_lim at each operating speed (implicit, docs theory/motor
+    'Voltage-limited torque').
 
-    The largest torque reachable on the voltage ellipse |U| = V_lim (no current limit) is where
+    The largest torque reachable on the voltage ellipse abs(U) = V_lim (no current limit) is where
     the quartic in I_q of the voltage constraint has a double root; its discriminant (divided by
-    a T**2) is the quartic in T of §7.6 with the coefficients A...E of lsdo_motor
-    ``torque_limit_model`` (omega the electrical speed, D = 3p(L_d - L_q)). The residual is that
+    a T**2) is the quartic in T of docs theory/motor 'Voltage-limited torque' with the coefficients
+    A...E of lsdo_motor ``torque_limit_model`` (omega the electrical speed, D = 3p(L_d - L_q)). The
+    residual is that
     quartic divided by A T_s**4, in x = T/T_s with T_s = 1.5 p Psi_F I_w (same root, well
     scaled; the reference divides by E and 1e3, which is singular where E = 0):
 

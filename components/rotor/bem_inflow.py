@@ -1,6 +1,6 @@
 """Blade-element momentum (BEM) theory: sectional equations and the inflow-angle solve.
 
-reference/models_aero_rotor_acoustics.md §8 and paper eq. 12–13. This module holds
+docs theory/rotors 'Blade-element momentum' and paper eq. 12–13. This module holds
 
 - :class:`BEMSections`, the sectional BEM equations of every station of several rotors at
   several operating points (one flat array), with their exact forward derivatives; shared by
@@ -12,24 +12,27 @@ Residual (propeller convention: V_x > 0 is flow through the disk as for a propel
 forward, V_t = Omega r, sigma = B c/(2 pi r), alpha = theta - phi)::
 
     C_x = C_l cos(phi) - C_d sin(phi),        C_theta = C_l sin(phi) + C_d cos(phi)
-    R(phi) = sigma C_x - 4 F sin(phi)|sin(phi)|
-             + (V_x/V_t) (4 F |sin(phi)| cos(phi) + sigma C_theta)
+    R(phi) = sigma C_x - 4 F sin(phi)abs(sin(phi))
+             + (V_x/V_t) (4 F abs(sin(phi)) cos(phi) + sigma C_theta)
 
 For phi > 0 (flow down through the disk, every normal operating point) this is paper eq. 13
-with Prandtl's F and the local advance ratio V_x/V_t = J/(pi r/R) written out (reference §8.2;
-the paper's eq. 13 drops F and the r/R), i.e. V_t (sigma C_x - 4 F sin^2) + V_x (2 F sin 2phi +
-sigma C_theta) of §8.2 divided by V_t. It is Ning's guaranteed-convergence residual (Ning 2014,
-Wind Energy 17, "A simple solution method for the blade element momentum equations with
+with Prandtl's F and the local advance ratio V_x/V_t = J/(pi r/R) written out (docs theory/rotors
+'BEM inflow residual'; the paper's eq. 13 drops F and the r/R), i.e. V_t (sigma C_x - 4 F sin^2) +
+V_x (2 F sin 2phi +
+sigma C_theta) of docs theory/rotors 'BEM inflow residual' divided by V_t. It is Ning's
+guaranteed-convergence residual (Ning 2014, Wind Energy 17, "A simple solution method for the blade
+element momentum equations with
 guaranteed convergence") in propeller form, R_N = sin(phi)(1 - k) - (V_x/V_t) cos(phi)(1 + k')
 with k = sigma C_x/(4 F sin^2 phi), k' = sigma C_theta/(4 F sin phi cos phi) (axial and swirl
 induction a = k/(1 - k), a' = k'/(1 + k'): wake rotation and drag in both inductions),
 multiplied by -4 F sin(phi). The product keeps every root and removes the 1/sin(phi) pole, so R
 is continuous on the whole circle and hover (V_x = 0) is not a special case. For phi < 0 (flow
-up through the disk) the momentum mass flux is rho |u_x| (sin^2 -> sin|sin|,
-sin cos -> |sin| cos), which is Ning's sign flip of k in that region; without it the momentum
+up through the disk) the momentum mass flux is rho abs(u_x) (sin^2 -> sin abs(sin),
+sin cos -> abs(sin) cos), which is Ning's sign flip of k in that region; without it the momentum
 thrust would have the wrong sign there and those stations would have no root.
-F = F_tip F_hub with F_tip = (2/pi) arccos(exp(-(B/2)(R - r)/(r |sin phi|))) and
-F_hub = (2/pi) arccos(exp(-(B/2)(r - r_h)/(r_h |sin phi|))) (classical Prandtl, §8.2).
+F = F_tip F_hub with F_tip = (2/pi) arccos(exp(-(B/2)(R - r)/(r abs(sin phi)))) and
+F_hub = (2/pi) arccos(exp(-(B/2)(r - r_h)/(r_h abs(sin phi)))) (classical Prandtl, docs
+theory/rotors 'BEM inflow residual').
 
 Bracket: R(0) = sigma (C_l(theta) + (V_x/V_t) C_d(theta)), and
 R(+-pi/2) = -+(4 F + sigma C_d(theta -+ pi/2)) +- (V_x/V_t) sigma C_l(theta -+ pi/2), whose
@@ -45,7 +48,8 @@ om.AnalysisError.
 
 Limitation: in descent (V_x < 0) the momentum equations have several roots (vortex-ring state,
 where momentum theory does not hold); the search returns the root nearest phi = 0+, which is
-continuous with hover. The reference model (§8.2) excludes V_x < 0 altogether.
+continuous with hover. The reference model (docs theory/rotors 'BEM inflow residual') excludes V_x <
+0 altogether.
 """
 
 import numpy as np
@@ -54,7 +58,8 @@ import openmdao.api as om
 from lpc_mdo.components.aero.polar import LinearQuadraticPolar, Polar
 from lpc_mdo.components.geometry.blade import per_rotor
 
-#: Tip-loss forms (reference §8.2; 'bladead' divides by R instead of r, §11 Q9).
+#: Tip-loss forms (docs theory/rotors 'BEM inflow residual'; 'bladead' divides by R instead of r,
+#: docs theory/rotors 'Public-code compatibility').
 TIP_LOSS_FORMS = ('classical', 'bladead')
 
 _RPM_TO_RAD_S = np.pi / 30.0
@@ -103,7 +108,7 @@ def declare_bem_options(options):
     options.declare('hub_loss', default=True, types=bool, desc="Apply Prandtl's hub loss")
     options.declare('tip_loss_form', default='classical', values=TIP_LOSS_FORMS,
                     desc="'classical' (B/2)(R - r)/(r sin phi), or 'bladead' with R in place of "
-                         "r (§11 Q9 compatibility)")
+                         "r (docs theory/rotors 'Public-code compatibility')")
 
 
 def station_shapes(num_rotors, num_nodes, num_radial):
@@ -181,12 +186,15 @@ class BEMSections:
     chain rule of the equations in the module docstring), and :meth:`loads` and the tangent's
     ``loads=True`` branch the blade-element loads. All of it is complex-step safe.
 
-    Loads at the converged inflow angle (reference §8.3; blade-element form, equal to the momentum
-    form there): the resultant velocity W = u_x/sin(phi) with u_x = 4 F V_t sin^2 phi / H and
-    H = 4 F |sin(phi)| cos(phi) + sigma C_theta gives W = 4 F V_t |sin(phi)|/H, and per blade and
+    Loads at the converged inflow angle (docs theory/rotors 'Loads and coefficients'; blade-element
+    form, equal to the momentum form there): the resultant velocity W = u_x/sin(phi) with u_x = 4 F
+    V_t sin^2 phi / H and
+    H = 4 F abs(sin(phi)) cos(phi) + sigma C_theta gives W = 4 F V_t abs(sin(phi))/H, and per blade
+    and
     unit span thrust t = rho W^2 c C_x / 2 and in-plane drag d = rho W^2 c C_theta / 2
     (dQ/dr = B r d).
-    Reynolds and Mach numbers use the undisturbed resultant U = sqrt(V_x^2 + V_t^2) (§8.1).
+    Reynolds and Mach numbers use the undisturbed resultant U = sqrt(V_x^2 + V_t^2) (docs
+    theory/rotors 'Stations and disk frame').
     """
 
     def __init__(self, inputs, num_blades, polar, tip_loss=True, hub_loss=True,
@@ -225,7 +233,7 @@ class BEMSections:
 
     @staticmethod
     def _prandtl(k, abs_s):
-        """F = (2/pi) arccos(exp(-k/|sin phi|)), its exponent f and dF/df."""
+        """F = (2/pi) arccos(exp(-k/abs(sin phi))), its exponent f and dF/df."""
         f = k / abs_s
         e = np.exp(-f)
         big_f = _TWO_OVER_PI * np.arccos(e)
@@ -484,9 +492,9 @@ class BEMInflowComp(om.ImplicitComponent):
     """
     Inflow angle of every blade station of several rotors at several operating points (BEM).
 
-    Paper eq. 13 with F and r/R written out (reference/models_aero_rotor_acoustics.md §8.2), in
-    Ning's guaranteed-convergence form; see the module docstring for the residual and the
-    bracket. ``solve_nonlinear`` brackets and refines all stations at once (vectorized);
+    Paper eq. 13 with F and r/R written out (docs theory/rotors 'BEM inflow residual'), in Ning's
+    guaranteed-convergence form; see the module docstring for the residual and the bracket.
+    ``solve_nonlinear`` brackets and refines all stations at once (vectorized);
     ``linearize`` gives the exact partials (the residual of a station depends on its own inflow
     angle only, so dR/dphi is diagonal) and ``solve_linear`` divides by that diagonal, so no
     DirectSolver is needed (LinearRunOnce in the parent group is enough). Under complex step the
@@ -524,11 +532,12 @@ class BEMInflowComp(om.ImplicitComponent):
     num_blades : int or sequence of int
         Blades per rotor (>= 1). Default 2.
     polar : Polar
-        Sectional airfoil model. Default LinearQuadraticPolar() (reference §6.4).
+        Sectional airfoil model. Default LinearQuadraticPolar() (docs theory/aerodynamics
+        'Linear-quadratic polar').
     tip_loss, hub_loss : bool
         Prandtl tip and hub loss. Default True.
     tip_loss_form : str
-        'classical' (default) or 'bladead' (§11 Q9 compatibility switch).
+        'classical' (default) or 'bladead' (docs theory/rotors 'Public-code compatibility' switch).
     """
 
     def initialize(self):

@@ -1,7 +1,7 @@
 """BEM loads at the converged inflow angle, and rotor performance (coefficients, efficiencies).
 
-reference/models_aero_rotor_acoustics.md §8.3. :class:`BEMLoadsComp` integrates the
-blade-element loads of :class:`~lpc_mdo.components.rotor.bem_inflow.BEMSections`;
+docs theory/rotors 'Loads and coefficients'. :class:`BEMLoadsComp` integrates the blade-element
+loads of :class:`~lpc_mdo.components.rotor.bem_inflow.BEMSections`;
 :class:`RotorPerformanceComp` turns any rotor model's thrust and torque (BEM or Pitt–Peters)
 into power, coefficients, efficiency, figure of merit and tip Mach number.
 """
@@ -26,15 +26,16 @@ class BEMLoadsComp(om.ExplicitComponent):
     """
     Sectional and total BEM loads of several rotors at several operating points.
 
-    reference/models_aero_rotor_acoustics.md §8.3 and paper eq. 12, at the inflow angle phi
-    solved by BEMInflowComp. Per blade and unit span (blade-element form; at the solution it
-    equals the momentum form dT = 4 pi r rho u_x (u_x - V_x) F dr,
+    docs theory/rotors 'Loads and coefficients' and paper eq. 12, at the inflow angle phi solved by
+    BEMInflowComp. Per blade and unit span (blade-element form; at the solution it equals the
+    momentum form dT = 4 pi r rho u_x (u_x - V_x) F dr,
     dQ = 2 pi r^2 rho u_x u_theta F dr):
 
-    - W = 4 F V_t |sin phi| / (4 F |sin phi| cos(phi) + sigma C_theta)   (resultant velocity)
+    - W = 4 F V_t abs(sin phi) / (4 F abs(sin phi) cos(phi) + sigma C_theta)   (resultant velocity)
     - thrust_per_span = rho W^2 c C_x / 2,   drag_per_span = rho W^2 c C_theta / 2
     - thrust T = B sum_i thrust_per_span_i dr_i,  torque Q = B sum_i r_i drag_per_span_i dr_i
-      (dr_i = station_width: the midpoint rule, or the public code's end-corrected sum, §11 Q8)
+      (dr_i = station_width: the midpoint rule, or the public code's end-corrected sum, docs
+      theory/rotors 'Public-code compatibility')
 
     Partials are analytic (the hand-derived chain rule of BEMSections.tangent), sparse.
 
@@ -189,8 +190,8 @@ class RotorPerformanceComp(om.ExplicitComponent):
     """
     Power, thrust and power coefficients, advance ratio, efficiency, figure of merit, tip Mach.
 
-    reference/models_aero_rotor_acoustics.md §8.3 (also the Pitt–Peters outputs, §9.1 item 9),
-    with n = rpm/60 (rev/s), D = 2R, Omega = 2 pi n:
+    docs theory/rotors 'Loads and coefficients' (also the Pitt–Peters outputs, docs theory/rotors
+    'Pitt-Peters inflow'), with n = rpm/60 (rev/s), D = 2R, Omega = 2 pi n:
 
     - P = Omega Q
     - C_T = T/(rho n^2 D^4),  C_P = P/(rho n^3 D^5)   (propeller coefficients; the rotorcraft

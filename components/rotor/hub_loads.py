@@ -1,7 +1,8 @@
 """Rotor disk frames in the body frame: freestream velocity at each rotor, hub loads to the body.
 
-Body frame x forward, y right, z down, origin at the fuselage nose (ARCHITECTURE §3). Each
-rotor's disk frame (reference/models_aero_rotor_acoustics.md §8.1):
+Body frame x forward, y right, z down, origin at the fuselage nose (docs
+getting_started 'Conventions'). Each rotor's disk frame (docs theory/rotors 'Stations and disk
+frame'):
 
 - n = thrust axis (unit; (0, 0, -1) for a lift rotor, (1, 0, 0) for the pusher);
 - e_y = the body y axis projected onto the disk plane, normalised;
@@ -99,7 +100,8 @@ def _frames(comp):
 
 class RotorVelocityComp(om.ExplicitComponent):
     """
-    Freestream velocity of each rotor resolved in its disk frame (reference §8.1).
+    Freestream velocity of each rotor resolved in its disk frame (docs theory/rotors 'Stations and
+    disk frame').
 
     V_x = V . n (axial, positive through the disk as for a propeller moving forward, i.e. in
     climb for a lift rotor), and the in-plane components (V . e_x, V . e_y). V is the vehicle's

@@ -1,8 +1,8 @@
 """Steady Pitt–Peters inflow: three inflow states per rotor from L^-1 lambda - c = 0 by Newton.
 
-Paper eq. 14-15 and reference/models_aero_rotor_acoustics.md §9 (with its correction of eq. 14:
-lambda = lambda_0 + lambda_c (r/R) cos psi + lambda_s (r/R) sin psi). For each rotor and operating
-point the states lambda = (lambda_0, lambda_c, lambda_s) (normalised by Omega R) satisfy the steady
+Paper eq. 14-15 and docs theory/rotors 'Pitt-Peters inflow' (with its correction of eq. 14: lambda =
+lambda_0 + lambda_c (r/R) cos psi + lambda_s (r/R) sin psi). For each rotor and operating point the
+states lambda = (lambda_0, lambda_c, lambda_s) (normalised by Omega R) satisfy the steady
 form of eq. 15 (M lambda_dot = 0)::
 
     R(lambda) = F_A V Lt^-1 lambda - c(lambda) = 0
@@ -10,19 +10,21 @@ form of eq. 15 (M lambda_dot = 0)::
 - c = (C_T, C_c, C_s): C_T = T/(rho pi R^2 (Omega R)^2), C_c = M_c/(rho pi R^2 (Omega R)^2 R),
   C_s = M_s/(...), with M_c = int r cos psi dT and M_s = int r sin psi dT the first-harmonic
   thrust moments of the blade-element loads at the current states (``pitt_peters_loads.py``;
-  C_c = -C_My and C_s = C_Mx of reference §9.1 item 8, psi measured in the direction of rotation
-  from the downstream blade).
-- Wake quantities (reference §9.1 items 5-6 with the mean inflow lambda_0 itself; no nested
-  momentum solve is needed because row 0 below is the momentum equation): lambda = mu_z + lambda_0
+  C_c = -C_My and C_s = C_Mx of docs theory/rotors 'Pitt-Peters inflow', psi measured in the
+  direction of rotation from the downstream blade).
+- Wake quantities (docs theory/rotors 'Pitt-Peters inflow' with the mean inflow lambda_0 itself; no
+  nested momentum solve is needed because row 0 below is the momentum equation): lambda = mu_z +
+  lambda_0
   (total normal inflow), mu^2 = mu_x^2 + mu_y^2, V_T = sqrt(mu^2 + lambda^2) (flow parameter),
   V_m = (mu^2 + lambda (lambda + lambda_0))/V_T (mass-flow parameter), wake skew
   chi = atan2(mu, lambda), tan(chi/2) = mu/(V_T + lambda).
 - V = diag(V_T, V_m, V_m) (Peters & HaQuang 1988: the uniform state sees V_T, the harmonics V_m).
-  In hover V_T = lambda_0 and V_m = 2 lambda_0, as in the as-coded BladeAD scaling (reference §9.1
-  item 7); in edgewise flight the uniform state is the momentum value lambda_0 = C_T/(2 F_A V_T)
+  In hover V_T = lambda_0 and V_m = 2 lambda_0, as in the as-coded BladeAD scaling (docs
+  theory/rotors 'Pitt-Peters inflow'); in edgewise flight the uniform state is the momentum value
+  lambda_0 = C_T/(2 F_A V_T)
   (when the coupling below vanishes), where the as-coded 2/V_eff scaling doubles it.
-- Lt, the L matrix with the coupling at L10 (reference §9.1 default, literature placement), in
-  wind axes (lambda_c along the downstream direction)::
+- Lt, the L matrix with the coupling at L10 (docs theory/rotors 'Pitt-Peters inflow' default,
+  literature placement), in wind axes (lambda_c along the downstream direction)::
 
       [ 1/2            -k tan(chi/2)             0             ]
       [ k tan(chi/2)    4 cos chi/(1 + cos chi)   0             ],   k = 15 pi/64
@@ -34,15 +36,15 @@ form of eq. 15 (M lambda_dot = 0)::
   with g = tan(chi/2) d = (mu_x, -s mu_y)/(V_T + lambda) the entries are L01 = -k g^T,
   L10 = k g, and the 2x2 block (4/(1 + cos chi)) I - 4 g g^T. g is smooth through hover (mu = 0),
   so the model is differentiable at zero edgewise speed.
-- F_A = 1 with loss_placement='blade_element' (Prandtl's F multiplies the loads, reference
-  §9.1 item 3); then in hover lambda_0 = C_T/(2 V_T) exactly, the momentum value. With the
+- F_A = 1 with loss_placement='blade_element' (Prandtl's F multiplies the loads, docs theory/rotors
+  'Pitt-Peters inflow'); then in hover lambda_0 = C_T/(2 V_T) exactly, the momentum value. With the
   default loss_placement='momentum', F acts where the BEM puts it, on the momentum side: F_A is
   the Prandtl-loss-weighted disk area over pi R^2, F_A = (2/(N_psi R^2)) sum_i dr_i r_i sum_psi F
   (the BEM's annulus momentum with F integrated over the disk; in hover C_T = 2 F_A lambda_0^2),
   and the loads carry no F. With the tangential induction (``pitt_peters_loads.py``, default on)
   this matches the BEM's hover thrust to 0.02 % on the LPC blade; without the swirl
-  (reference §9.1) it is 6.5 % high ('momentum') or 2.4 % high ('blade_element').
-  tests/test_pitt_peters_validation.py quantifies them.
+  (docs theory/rotors 'Pitt-Peters inflow') it is 6.5 % high ('momentum') or 2.4 % high
+  ('blade_element'). tests/test_pitt_peters_validation.py quantifies them.
 
 Solver: Newton on each rotor's 3x3 system (vectorized over rotors and operating points) with a
 backtracking line search per rotor, from the previous solution and, if that fails, from a cold
@@ -142,9 +144,9 @@ class PittPetersInflowComp(om.ImplicitComponent):
     """
     Steady Pitt–Peters inflow states of several rotors at several operating points.
 
-    Paper eq. 14-15, reference/models_aero_rotor_acoustics.md §9.1-9.2; the residual
-    F_A V Lt^-1 lambda - c = 0, its L matrix, scaling and solver are in the module docstring, the
-    blade-element loads c(lambda) in :mod:`lpc_mdo.components.rotor.pitt_peters_loads`.
+    Paper eq. 14-15, docs theory/rotors 'Pitt-Peters inflow'; the residual F_A V Lt^-1 lambda - c =
+    0, its L matrix, scaling and solver are in the module docstring, the blade-element loads
+    c(lambda) in :mod:`lpc_mdo.components.rotor.pitt_peters_loads`.
 
     Inputs
     ------
@@ -181,17 +183,19 @@ class PittPetersInflowComp(om.ImplicitComponent):
     spin_direction : int or sequence of int
         +1 (right-handed about the thrust axis) or -1 per rotor. Default +1.
     polar : Polar
-        Sectional polar. Default LinearQuadraticPolar() (reference §6.4).
+        Sectional polar. Default LinearQuadraticPolar() (docs theory/aerodynamics 'Linear-quadratic
+        polar').
     tip_loss, hub_loss : bool
         Prandtl losses (default True).
     loss_placement : str
-        'momentum' (default) or 'blade_element' (reference §9.1); module docstring.
+        'momentum' (default) or 'blade_element' (docs theory/rotors 'Pitt-Peters inflow'); module
+        docstring.
     tangential_induction : bool
         Wake swirl per station (default True; ``pitt_peters_loads.py``).
     max_iterations : int
         Newton iterations per start (default 50).
     tolerance : float
-        Convergence: max |R| per rotor (load-coefficient units, C_T ~ 1e-2), default 1e-12.
+        Convergence: max abs(R) per rotor (load-coefficient units, C_T ~ 1e-2), default 1e-12.
 
     Raises
     ------

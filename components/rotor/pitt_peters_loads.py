@@ -1,7 +1,7 @@
 """Steady Pitt–Peters rotor: blade-element loads over radius and azimuth, and their integrals.
 
-reference/models_aero_rotor_acoustics.md §9.1 (items 1-4 and 9) and paper eq. 14 (with the
-reference's correction: the last term is lambda_c r/R cos psi). This module holds
+docs theory/rotors 'Pitt-Peters inflow' (items 1-4 and 9) and paper eq. 14 (with the reference's
+correction: the last term is lambda_c r/R cos psi). This module holds
 
 - :class:`PittPetersBladeElements`, the blade-element field of every station (rotor, operating
   point, radial station, azimuth) for given inflow states, its integrals (thrust, moments,
@@ -10,8 +10,9 @@ reference's correction: the last term is lambda_c r/R cos psi). This module hold
 - :class:`PittPetersLoadsComp`, the sectional loads over (r, psi) and the hub loads at the
   converged inflow states.
 
-Disk frame and azimuth (the frame of ``hub_loads.rotor_frames`` and reference §8.1): n is the
-thrust axis, e_y the body y axis projected on the disk, e_x = n x e_y; the rotor spins with
+Disk frame and azimuth (the frame of ``hub_loads.rotor_frames`` and docs theory/rotors 'Stations and
+disk frame'): n is the thrust axis, e_y the body y axis projected on the disk, e_x = n x e_y; the
+rotor spins with
 angular velocity s Omega n (s = spin_direction). The azimuth psi_k = 2 pi k/N_psi of a blade is
 measured in the direction of rotation from the -e_x position, so the blade sits at
 r (-cos psi e_x + s sin psi e_y) and moves along t = sin psi e_x + s cos psi e_y. For a lift rotor
@@ -23,8 +24,9 @@ Station equations (per blade, per unit span):
 - velocities: U_P = V_x + Omega R lambda (through the disk), U_T = Omega r + v_x sin psi
   + s v_y cos psi (tangential; (V_x, v_x, v_y) = the hub's velocity relative to the air along
   (n, e_x, e_y), so V_x > 0 is climb for a lift rotor);
-- tangential induction (wake swirl; option tangential_induction, default on; reference §9.1
-  neglects it, the BEM has it): the blade sees U_T - v_t, where v_t balances the angular
+- tangential induction (wake swirl; option tangential_induction, default on; docs theory/rotors
+  'Pitt-Peters inflow' neglects it, the BEM has it): the blade sees U_T - v_t, where v_t balances
+  the angular
   momentum of the annulus, v_t U_m F_m = B d/(4 pi rho r), with the mass-flow velocity
   U_m = sqrt(U_P^2 + v_x^2 + v_y^2) (so the swirl fades in fast edgewise flight) and F_m = F
   with loss_placement='momentum' (else 1); solved per station by Newton from v_t = 0, its
@@ -34,16 +36,18 @@ Station equations (per blade, per unit span):
 - phi = atan2(U_P, U_T - v_t) (four-quadrant: reverse flow on the retreating side is included;
   the polar covers -pi..pi), alpha = twist - phi;
 - Reynolds and Mach numbers from the undisturbed resultant U = sqrt(V_x^2 + U_T^2), as the BEM
-  (§8.1): Re = rho U c/mu, M = U/a;
+  (docs theory/rotors 'Stations and disk frame'): Re = rho U c/mu, M = U/a;
 - C_x = C_l cos phi - C_d sin phi, C_theta = C_l sin phi + C_d cos phi;
 - thrust_per_span t = (rho/2)(U_P^2 + (U_T - v_t)^2) c C_x F_l and drag_per_span
   d = (rho/2)(U_P^2 + (U_T - v_t)^2) c C_theta F_l (drag opposes the rotation;
   dQ/dr = B r d), where F_l = 1 with the default loss_placement='momentum' (F, Prandtl tip and
-  hub loss in the §8.2 classical form, then scales the momentum side of the inflow equation, as
-  in the BEM; see ``pitt_peters_inflow.py``) and F_l = F with loss_placement='blade_element'
-  (reference §9.1 item 3).
+  hub loss in the docs theory/rotors 'BEM inflow residual' classical form, then scales the momentum
+  side of the inflow equation, as in the BEM; see ``pitt_peters_inflow.py``) and F_l = F with
+  loss_placement='blade_element'
+  (docs theory/rotors 'Pitt-Peters inflow').
 
-Integrals (reference §8.3 rule, (1/N_psi) sum over the azimuth, dr_i = station_width):
+Integrals (docs theory/rotors 'Loads and coefficients' rule, (1/N_psi) sum over the azimuth, dr_i =
+station_width):
 
 - thrust T = (B/N_psi) sum dr t; torque Q = (B/N_psi) sum dr r d;
 - moments M_c = (B/N_psi) sum dr r cos psi t and M_s = (B/N_psi) sum dr r sin psi t (the
@@ -113,11 +117,12 @@ def declare_pitt_peters_options(options):
     options.declare('tip_loss', default=True, types=bool, desc="Apply Prandtl's tip loss")
     options.declare('hub_loss', default=True, types=bool, desc="Apply Prandtl's hub loss")
     options.declare('loss_placement', default='momentum', values=LOSS_PLACEMENTS,
-                    desc="Prandtl factor on the blade-element loads ('blade_element', reference "
-                         "§9.1) or on the momentum side of the inflow equation ('momentum')")
+                    desc="Prandtl factor on the blade-element loads ('blade_element', docs "
+                         "theory/rotors 'Pitt-Peters inflow') or on the momentum side of the "
+                         "inflow equation ('momentum')")
     options.declare('tangential_induction', default=True, types=bool,
                     desc='Include the wake swirl v_t = B d/(4 pi rho r U_m) per station (as the '
-                         'BEM does); False: neglect it (reference §9.1)')
+                         'BEM does); False: neglect it (docs theory/rotors "Pitt-Peters inflow")')
 
 
 def input_shape(kind, nr, nn, nrad):
@@ -253,7 +258,7 @@ class PittPetersBladeElements:
         shape) and, with ``partials``, their partials with respect to the station primitives
         (dicts ``dt``, ``dd``, ``dphi``, ``dF``; keys 'up', 'ut', 'vx', 'vip2', 'theta',
         'chord', 'r', 'radius', 'hub_radius', 'density', 'dynamic_viscosity',
-        'speed_of_sound'; 'vip2' is |inplane_velocity|^2, through the swirl's mass flow).
+        'speed_of_sound'; 'vip2' is norm(inplane_velocity)^2, through the swirl's mass flow).
         """
         st = SimpleNamespace()
         big_r = x['radius'][:, None, None, None]
@@ -458,7 +463,8 @@ class PittPetersBladeElements:
         return dute
 
     def _loss(self, phi, r, big_r, rh, partials):
-        """Prandtl factor F = F_tip F_hub (§8.2, classical) and its partials."""
+        """Prandtl factor F = F_tip F_hub (docs theory/rotors 'BEM inflow residual', classical) and
+        its partials."""
         ones = np.ones(np.broadcast_shapes(phi.shape, r.shape), dtype=phi.dtype)
         zero = np.zeros(ones.shape)
         d = {'phi': zero, 'r': zero, 'radius': zero, 'hub_radius': zero}
@@ -646,9 +652,9 @@ class PittPetersLoadsComp(om.ExplicitComponent):
     """
     Sectional loads over (r, psi) and hub loads of the steady Pitt–Peters rotor model.
 
-    reference/models_aero_rotor_acoustics.md §9.1 items 1-3 and 9, paper eq. 14, at the inflow
-    states solved by :class:`~lpc_mdo.components.rotor.pitt_peters_inflow.PittPetersInflowComp`
-    (equations in the module docstring). The sectional loads over (r, psi) are what the tonal
+    docs theory/rotors 'Pitt-Peters inflow', paper eq. 14, at the inflow states solved by
+    :class:`~lpc_mdo.components.rotor.pitt_peters_inflow.PittPetersInflowComp` (equations in the
+    module docstring). The sectional loads over (r, psi) are what the tonal
     acoustics needs for the Fourier content of the azimuthal loading
     (:class:`~lpc_mdo.components.acoustics.loads.LoadFourierComp`, same azimuths
     psi_k = 2 pi k/N_psi). Analytic sparse partials.
@@ -703,13 +709,14 @@ class PittPetersLoadsComp(om.ExplicitComponent):
     spin_direction : int or sequence of int
         +1 (rotation right-handed about the thrust axis) or -1. Default +1.
     polar : Polar
-        Sectional polar. Default LinearQuadraticPolar() (reference §6.4).
+        Sectional polar. Default LinearQuadraticPolar() (docs theory/aerodynamics 'Linear-quadratic
+        polar').
     tip_loss, hub_loss : bool
         Prandtl losses (default True).
     loss_placement : str
         'momentum' (default: F acts on the inflow equation and the swirl, the loads carry no
-        F, as in the BEM) or 'blade_element' (reference §9.1 item 3: the loads are multiplied
-        by F).
+        F, as in the BEM) or 'blade_element' (docs theory/rotors 'Pitt-Peters inflow': the loads are
+        multiplied by F).
     tangential_induction : bool
         Wake swirl per station (default True; module docstring).
     """

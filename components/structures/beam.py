@@ -1,15 +1,17 @@
 """Euler-Bernoulli space-frame finite elements: stiffness solve K u = f, load recovery and mass.
 
-The element is the 12-DoF frame element of reference/models_structures_motor_vehicle.md §6.1
-(aframe), assembled and solved as in §6.3; the residual form R = K u - f is paper eq. 17.
+The element is the 12-DoF frame element of docs theory/structures 'Frame element' (aframe),
+assembled and solved as in docs theory/structures 'Assembly and solution'; the residual form R = K u
+- f is paper eq. 17.
 
 Frames and sign conventions
 ---------------------------
 - Global frame: the frame of the node coordinates (lpc_mdo: body frame, x forward, y right,
   z down). Each node has 6 DoF, translations (u, v, w) and small rotations (θx, θy, θz) about
   the global axes; they are the outputs ``displacements`` and ``rotations``.
-- Element frame (§6.1): local x along the element (node a to node b); with direction cosines
-  (l, m, n) and D = sqrt(l² + m²), local y = (-m, l, 0)/D (horizontal) and
+- Element frame (docs theory/structures 'Frame element'): local x along the element (node a to node
+  b); with direction cosines (l, m, n) and D = sqrt(l² + m²), local y = (-m, l, 0)/D (horizontal)
+  and
   local z = (-l n, -m n, D²)/D, whose global z component is >= 0. For a wing along +y in the
   body frame, local y points aft and local z down. A vertical element (D = 0) uses
   λ = [[0, 0, s], [0, 1, 0], [-s, 0, 0]], s = sign(n).
@@ -18,7 +20,7 @@ Frames and sign conventions
 - Section resultants are the internal forces on the positive (node b) face, averaged over the
   element: N = (f_b - f_a)/2 for each of the 6 components, i.e. (axial force N, shear V_y, shear
   V_z, torque M_x, bending moments M_y, M_z) with tension and the right-hand rule positive. This
-  is the negative of the reference page's (f[0:6] - f[6:12])/2, so stresses come out with the
+  is the negative of the public aframe code's (f[0:6] - f[6:12])/2, so stresses come out with the
   usual signs (tension positive); their magnitudes, and so von Mises stresses, are the same.
 
 Bending inertias: ``bending_inertia_vertical`` I_y acts about local y, i.e. bending in the local
@@ -35,8 +37,9 @@ from scipy.sparse.linalg import splu
 # element matrices (exact to machine precision; see BeamDisplacementComp).
 _CS_STEP = 1e-30
 
-# Default material (aluminium, reference page §6.7) and section values shared by every component
-# that promotes the same input names, so their defaults agree.
+# Default material (aluminium, docs theory/structures 'Material, mesh and load transfer') and
+# section values shared by every component that promotes the same input names, so their defaults
+# agree.
 DEFAULT_YOUNGS_MODULUS = 69.0e9
 DEFAULT_SHEAR_MODULUS = 26.0e9
 DEFAULT_DENSITY = 2700.0
@@ -88,7 +91,7 @@ def _lengths(start, end):
 
 def element_frames(start, end):
     """
-    Return element lengths and rotation matrices (reference page §6.1).
+    Return element lengths and rotation matrices (docs theory/structures 'Frame element').
 
     Parameters
     ----------
@@ -126,7 +129,8 @@ def element_frames(start, end):
 
 
 # (row, col, kind, coefficient, power of L): upper triangle of the local stiffness matrix
-# (reference page §6.1). kind: A -> E A, J -> G J, Y -> E I_y, Z -> E I_z; entry = c kind / L**p.
+# (docs theory/structures 'Frame element'). kind: A -> E A, J -> G J, Y -> E I_y, Z -> E I_z; entry
+# = c kind / L**p.
 _K_ENTRIES = (
     (0, 0, 'A', 1.0, 1), (6, 6, 'A', 1.0, 1), (0, 6, 'A', -1.0, 1),
     (1, 1, 'Z', 12.0, 3), (7, 7, 'Z', 12.0, 3), (1, 7, 'Z', -12.0, 3),
@@ -142,7 +146,8 @@ _K_ENTRIES = (
 def local_stiffness(length, area, inertia_vertical, inertia_inplane, torsion_constant,
                     youngs_modulus, shear_modulus):
     """
-    Return the local 12 x 12 element stiffness matrices (num_elements, 12, 12), §6.1.
+    Return the local 12 x 12 element stiffness matrices (num_elements, 12, 12), docs
+    theory/structures 'Frame element'.
 
     The matrix is linear in each of E A, G J, E I_y and E I_z, so passing unit values of one
     property (and zeros for the others) gives its derivative.
@@ -340,10 +345,12 @@ class BeamDisplacementComp(_FrameMixin, om.ImplicitComponent):
     """
     Static frame solve R = K u - f = 0 for the nodal displacements and rotations (paper eq. 17).
 
-    K is assembled from the 12-DoF Euler-Bernoulli frame elements of reference page §6.1 with
-    the direction-cosine transformation K_e = Tᵀ K_local T. The constrained DoF (clamped nodes,
-    ``fixed_nodes``; single DoF, ``fixed_dofs``) are eliminated as in §6.3: their rows and
-    columns of K are replaced by the identity and their load entries by zero, so the residual of
+    K is assembled from the 12-DoF Euler-Bernoulli frame elements of docs theory/structures 'Frame
+    element' with the direction-cosine transformation K_e = Tᵀ K_local T. The constrained DoF
+    (clamped nodes,
+    ``fixed_nodes``; single DoF, ``fixed_dofs``) are eliminated as in docs theory/structures
+    'Assembly and solution': their rows and columns of K are replaced by the identity and their load
+    entries by zero, so the residual of
     a free DoF is (K u)_free - f_free with the constrained columns dropped and the residual of a
     constrained DoF is its displacement.
 
@@ -631,8 +638,9 @@ class BeamForcesComp(_FrameMixin, om.ExplicitComponent):
     """
     Load recovery of the frame: element end forces, section resultants and support reactions.
 
-    Reference page §6.3: element end loads f = K_local T u_e (12 per element, element frame);
-    section resultants averaged over the element, here as internal forces on the positive face,
+    Reference docs theory/structures 'Assembly and solution': element end loads f = K_local T u_e
+    (12 per element, element frame); section resultants averaged over the element, here as internal
+    forces on the positive face,
     (f[6:12] - f[0:6])/2 (see the module docstring for the sign convention); reactions
     r = K u - f in the global frame (non-zero only at constrained DoF, up to round-off).
 
@@ -801,7 +809,8 @@ class BeamForcesComp(_FrameMixin, om.ExplicitComponent):
 
 class BeamMassComp(_FrameMixin, om.ExplicitComponent):
     """
-    Element masses, total mass and centre of gravity of the frame (reference page §6.2).
+    Element masses, total mass and centre of gravity of the frame (docs theory/structures 'Box
+    section').
 
     m_e = ρ A_e L_e; mass = Σ m_e; cg = Σ m_e (x_a + x_b)/2 / mass. Analytic partials.
 

@@ -8,7 +8,8 @@ TORSION_FORMULAS = ('polar', 'bredt')
 
 class BoxSectionComp(om.ExplicitComponent):
     """
-    Section properties of a rectangular box beam, per element (reference page §6.2).
+    Section properties of a rectangular box beam, per element (docs theory/structures 'Box
+    section').
 
     The box has outer width w (spar to spar) and height h, skins t_top, t_bot and two webs
     (spars) t_front, t_rear. As in the reference model the beam uses one web thickness, the mean
@@ -23,17 +24,20 @@ class BoxSectionComp(om.ExplicitComponent):
     - Torsion constant J, option ``torsion_formula``:
 
       * ``'polar'`` (default): J = I_y + I_z, the polar moment of area. This is the form the
-        reference model uses (the validation case of §6.9 depends on it), so the defaults
-        reproduce the reference numbers. It treats the box like a solid section and is several
-        times stiffer in torsion than a closed thin-walled box (about 9x for the §6.9 root bay).
+        reference model uses (the validation case of docs theory/structures 'Validation' depends on
+        it), so the defaults reproduce the reference numbers. It treats the box like a solid section
+        and is several
+        times stiffer in torsion than a closed thin-walled box (about 9x for the docs
+        theory/structures 'Validation' root bay).
       * ``'bredt'``: Bredt-Batho closed thin-walled section, J = 4 A_m² / ∮ ds/t with the
         mid-line box A_m = w_m h_m, w_m = w - t_web, h_m = h - (t_top + t_bot)/2 and
         ∮ ds/t = w_m/t_top + w_m/t_bot + h_m/t_front + h_m/t_rear (each wall its own thickness).
         This is the physically right torsion constant of a single-cell box; with equal skins and
-        equal webs it equals the Bredt form quoted (commented out in aframe) in §6.2.
+        equal webs it equals the Bredt form quoted (commented out in aframe) in docs
+        theory/structures 'Box section'.
 
-    The neutral-axis shift z_c is the reference model's approximation (kept as the default, §6.2
-    and §10). All partials are analytic and diagonal over elements.
+    The neutral-axis shift z_c is the reference model's approximation (kept as the default, docs
+    theory/structures 'Box section'). All partials are analytic and diagonal over elements.
 
     Inputs
     ------

@@ -11,7 +11,7 @@ class PanelBucklingComp(om.ExplicitComponent):
     Critical buckling stress of the top and bottom skin panels and the ratio constraint values.
 
     ``panel='curved'`` (default): curved panel under axial compression after Roark, paper
-    eq. 18 (reference page §6.5):
+    eq. 18 (docs theory/structures 'Buckling'):
 
         σ' = E/(6 (1 - ν²)) [ sqrt(12 (1 - ν²) (t/r)² + (π t/b)⁴) + (π t/b)² ]
 

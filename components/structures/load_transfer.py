@@ -107,7 +107,7 @@ class LoadTransferComp(om.ExplicitComponent):
     are transferred like the aerodynamic forces. Their load is m n g ĝ: load factor n (the
     condition's, so a +3 g pull-up loads the structure with 3 g of weight, i.e. inertial
     relief) and gravity direction in body axes ĝ = (-sin θ, sin φ cos θ, cos φ cos θ)
-    (reference page §8.6).
+    (docs theory/dynamics 'Gravity').
 
     Analytic partials (dense between nodes and points, which may move between beam segments as
     the geometry changes).
@@ -148,7 +148,7 @@ class LoadTransferComp(om.ExplicitComponent):
     span_axis : int
         Coordinate used for the weights: 0, 1 (default, y) or 2.
     gravity : float
-        g in m/s**2 (> 0). Default 9.81 (reference page §8.6).
+        g in m/s**2 (> 0). Default 9.81 (docs theory/dynamics 'Gravity').
     """
 
     def initialize(self):

@@ -31,16 +31,17 @@ class BoxStressComp(om.ExplicitComponent):
     """
     Von Mises stress at the stress points of each box section, and the skin normal stresses.
 
-    Reference page §6.4, with the section resultants of BeamForcesComp (internal forces on the
-    positive face, element frame: axial N, shear V_z, torque M_x, bending M_y, M_z; local y
+    Reference docs theory/structures 'Stress', with the section resultants of BeamForcesComp
+    (internal forces on the positive face, element frame: axial N, shear V_z, torque M_x, bending
+    M_y, M_z; local y
     across the box width, local z vertical, down for a wing in the body frame):
 
     - normal stress at (y, z): σ = N/A + M_y z/I_y - M_z y/I_z (tension positive);
     - torsional shear: 'polar' (reference model, with J = I_y + I_z): τ_t = M_x r/J with
       r = sqrt(y² + z²); 'bredt': τ_t = M_x/(2 A_m t) in the wall of thickness t, with the
       mid-line area A_m = (w - t_web)(h - (t_top + t_bot)/2) (see BoxSectionComp);
-    - transverse shear in the webs (main-branch form of §6.4):
-      τ_s = V_z Q/(2 t_web I_y), Q = w t_cap h/2 + t_web h²/4, t_cap = (t_top + t_bot)/2;
+    - transverse shear in the webs (main-branch form of docs theory/structures 'Stress'): τ_s = V_z
+      Q/(2 t_web I_y), Q = w t_cap h/2 + t_web h²/4, t_cap = (t_top + t_bot)/2;
     - σ_vm = sqrt(σ² + 3 τ² + ε), ε = 1e-8 Pa².
 
     Points (y, z): 0 (-w/2, -h/2) top/front corner, 1 (+w/2, -h/2) top/rear, 2 (+w/2, +h/2)

@@ -20,7 +20,8 @@ class WingBoxSection:
         Chord fractions of the spars and of the beam nodes these numbers were computed for.
     thickness : float
         Outer-mould-line height (upper minus lower surface) at the beam axis, over c: the box
-        height is thickness * c (reference page §6.7: the height at the node).
+        height is thickness * c (docs theory/structures 'Material, mesh and load transfer': the
+        height at the node).
     camber : float
         Mid-height ((upper + lower)/2) at the beam axis over c: the node's vertical offset from
         the chord line.
@@ -137,14 +138,16 @@ class WingBoxGeometryComp(om.ExplicitComponent):
     """
     Box-beam geometry of one (the right) half wing from the trapezoidal planform.
 
-    Planform (reference page §3.1; aero §5): span b = sqrt(AR S), root chord
-    c_r = 2 S/((1 + λ) b), chord c(η) = c_r (1 - (1 - λ) η) at η = y/(b/2). Leading edge at
+    Planform (docs theory/geometry 'Reference vehicle'; docs theory/aerodynamics 'Drag build-up'):
+    span b = sqrt(AR S), root chord c_r = 2 S/((1 + λ) b), chord c(η) = c_r (1 - (1 - λ) η) at η =
+    y/(b/2). Leading edge at
     x_LE = x_0 - y tan Λ_LE, z_LE = z_0 - y tan Γ (body frame, z down; positive dihedral raises
     the tip). The section is pitched by the incidence i (nose up), so the chord runs along
     (-cos i, 0, sin i) and the section's "up" along (-sin i, 0, -cos i).
 
-    Wing box (reference page §6.7): ``num_nodes`` nodes evenly spaced in span from root to tip
-    (the ribs; 9 nodes = 8 bays), at the beam-axis chord fraction ξ_b and at mid-height of the
+    Wing box (docs theory/structures 'Material, mesh and load transfer'): ``num_nodes`` nodes evenly
+    spaced in span from root to tip (the ribs; 9 nodes = 8 bays), at the beam-axis chord fraction
+    ξ_b and at mid-height of the
     outer mould line; spars at ξ_f and ξ_r. Per bay, with the mean chord c̄ of its two ribs:
 
     - box width w = (ξ_r - ξ_f) c̄ (chord-wise spar spacing, not projected normal to the beam);
@@ -152,7 +155,7 @@ class WingBoxGeometryComp(om.ExplicitComponent):
     - skin radii r = (r/c) c̄, the radius of the circular arc through each skin at the front
       spar, mid-box and rear spar (see WingBoxSection).
 
-    The reference page's default for the radius is the point-wise radius (1 + y'²)^(3/2)/|y''|
+    The textbook default for the radius is the point-wise radius (1 + y'²)^(3/2)/abs(y'')
     averaged over 6 points; this component uses the three-point arc instead, because y'' of a
     4-digit coordinate table depends strongly on how it is smoothed and the aft-loaded lower
     surface of both LS(1) sections has an inflection point inside the box (x/c ≈ 0.65), where

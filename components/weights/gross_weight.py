@@ -38,7 +38,7 @@ class GrossWeightComp(om.ExplicitComponent):
     Gross mass W0 and its build-up from the component masses.
 
     The build-up of paper eqs. 31-33 (reference/paper.md Sec. IV;
-    reference/models_structures_motor_vehicle.md §4.1).
+    docs theory/weights 'Gross mass').
 
     - W_structures = W_wing + W_fuselage + W_empennage + W_booms             (eq. 32)
     - W_powertrain = sum_j W_motor,j + W_power_electronics                  (eq. 33)

@@ -13,7 +13,7 @@ def transport_inertia(r):
     Return the parallel-axis (transport) term P(r) = (r . r) 1 - r r^T and its derivative.
 
     A point mass m at offset r from a reference point adds m P(r) to the inertia tensor about
-    that point (reference/models_structures_motor_vehicle.md §4.3). Complex-safe.
+    that point (docs theory/weights 'Mass properties'). Complex-safe.
 
     Parameters
     ----------
@@ -85,8 +85,8 @@ class MassPropertiesComp(om.ExplicitComponent):
     """
     Total mass, centre of gravity and inertia tensor about the cg of a set of bodies.
 
-    Implements reference/models_structures_motor_vehicle.md §4.3 (paper Sec. II.C, system mass
-    properties with the parallel-axis theorem), vectorized over all N bodies:
+    Implements docs theory/weights 'Mass properties' (paper Sec. II.C, system mass properties with
+    the parallel-axis theorem), vectorized over all N bodies:
 
     - m = sum_i m_i
     - cg = sum_i m_i p_i / m

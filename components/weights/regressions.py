@@ -2,7 +2,7 @@
 
 The regressions (paper ref. [41], Sec. III.D) are linear in a few planform and sizing
 parameters; their coefficients live in ``lpc_mdo/data/m4_regressions.toml`` (copied from
-reference/models_structures_motor_vehicle.md §5.2) and are read once by
+the public CADDEE_alpha code; docs theory/weights 'M4 regressions') and are read once by
 :func:`m4_coefficients`. Each component returns the part's mass, its cg in the body frame and its
 inertia tensor about that cg in body axes, so :class:`MassPropertiesComp` can add it as one body.
 """
@@ -22,7 +22,8 @@ _FLIP = np.array([[1.0, -1.0, 1.0], [-1.0, 1.0, -1.0], [1.0, -1.0, 1.0]])
 _INERTIA_KEYS = {"inertia_xx": (0, 0), "inertia_yy": (1, 1), "inertia_zz": (2, 2),
                  "inertia_xy": (0, 1), "inertia_xz": (0, 2), "inertia_yz": (1, 2)}
 
-# (name, units, description, default, lower bound, strict) of the regressors (ref §5.1).
+# (name, units, description, default, lower bound, strict) of the regressors (docs theory/weights
+# 'M4 regressions').
 _MAIN_REGRESSORS = (
     ("wing_area", "m**2", "wing reference area S_w", 19.6, 0.0, True),
     ("wing_aspect_ratio", None, "wing aspect ratio AR", 12.12, 0.0, True),
@@ -41,8 +42,8 @@ def m4_coefficients():
     """
     Return the M4 regression data of ``lpc_mdo/data/m4_regressions.toml`` as a dict.
 
-    Coefficient lists follow the regressor order of ref §5.1: [S_w, AR, L_fus, m_batt, V, 1]
-    (fuselage, wing, booms) or [S_htail, S_vtail, 1] (empennage).
+    Coefficient lists follow the regressor order of docs theory/weights 'M4 regressions': [S_w, AR,
+    L_fus, m_batt, V, 1] (fuselage, wing, booms) or [S_htail, S_vtail, 1] (empennage).
     """
     text = resources.files("lpc_mdo").joinpath("data", "m4_regressions.toml").read_text()
     return tomllib.loads(text)
@@ -73,7 +74,8 @@ class _M4RegressionComp(om.ExplicitComponent):
     - m = f c_m . x~                                   (f = option mass_factor)
     - p_k = n + S C_k x~,  S = diag(-k_x, 1, -1)       (M4 frame -> body frame, n = nose)
     - cg = sum_k w_k p_k  (y set to 0 if several sub-parts, as coded; symmetric vehicle)
-    - I = sum_k [ f L_k x~ + w_k m P(p_k - cg) ]      (parallel axis, ref §4.3; not §10 S1)
+    - I = sum_k [ f L_k x~ + w_k m P(p_k - cg) ]      (parallel axis, docs theory/weights 'Mass
+      properties'; not docs theory/weights 'Public-code compatibility')
 
     L_k x~ is the sub-part's own inertia regression rotated to body axes. The inertia is the
     exact inertia of the sub-parts about ``cg``. All partials are analytic; only the inertia's
@@ -211,11 +213,12 @@ class FuselageRegressionComp(_SinglePartRegressionComp):
     """
     Fuselage structural mass, cg and inertia from the M4 regression.
 
-    Implements reference/models_structures_motor_vehicle.md §5.1-5.3 (paper Sec. III.D and
-    eq. 32; CADDEE_alpha ``m4_nasa_lpc.py``): q = c . [S_w, AR, L_fus, m_batt, V, 1] for the
-    mass, cg_X, cg_Z, Ixx, Iyy, Izz and Ixz; body-frame cg = (x_n - k_x cg_X, 0, z_n - cg_Z) with
-    k_x = 0.88 as coded (§5.3) and (x_n, z_n) the nose in the M4 frame (CAD (2.464, 5.113) ft).
-    The inertia is the regression's own (local) tensor rotated to body axes (I_xz keeps its
+    Implements docs theory/weights 'M4 regressions' (paper Sec. III.D and eq. 32; CADDEE_alpha
+    ``m4_nasa_lpc.py``): q = c . [S_w, AR, L_fus, m_batt, V, 1] for the mass, cg_X, cg_Z, Ixx, Iyy,
+    Izz and Ixz; body-frame cg = (x_n - k_x cg_X, 0, z_n - cg_Z) with
+    k_x = 0.88 as coded (docs theory/weights 'M4 regressions') and (x_n, z_n) the nose in the M4
+    frame (CAD (2.464, 5.113) ft). The inertia is the regression's own (local) tensor rotated to
+    body axes (I_xz keeps its
     sign), times ``mass_factor``.
 
     Inputs
@@ -266,9 +269,9 @@ class WingRegressionComp(_SinglePartRegressionComp):
     Wing structural mass, cg and inertia from the M4 regression (public-code alternative).
 
     The paper's wing mass comes from the wing-box beam (eq. 32); this regression
-    (reference/models_structures_motor_vehicle.md §5.2-5.3) is the older public-code estimate,
-    kept as an alternative and as the placeholder wing mass of the W_other calibration until the
-    beam model is connected. Same form as :class:`FuselageRegressionComp` with k_x = 0.9.
+    (docs theory/weights 'M4 regressions') is the older public-code estimate, kept as an alternative
+    and as the placeholder wing mass of the W_other calibration until the beam model is connected.
+    Same form as :class:`FuselageRegressionComp` with k_x = 0.9.
 
     Inputs
     ------
@@ -307,13 +310,14 @@ class BoomRegressionComp(_M4RegressionComp):
     """
     Mass, cg and inertia of the 8 lift-rotor booms from the M4 regressions.
 
-    Implements reference/models_structures_motor_vehicle.md §5.2-5.3: the total boom mass
-    regression, split equally over the 4 boom groups (inner/outer, port/starboard; each carries
-    a front and a rear rotor), each with its own cg and local Ixx, Iyy, Izz regressions. The
+    Implements docs theory/weights 'M4 regressions': the total boom mass regression, split equally
+    over the 4 boom groups (inner/outer, port/starboard; each carries a front and a rear rotor),
+    each with its own cg and local Ixx, Iyy, Izz regressions. The
     total cg is the mass-weighted mean with y set to 0 (as coded; the vehicle is symmetric). The
     inertia about that cg uses the parallel-axis theorem with each group's own offset,
-    I = sum_g [I_g + (m/4) P(cg_g - cg)], the project default of §10 S1 (the public code uses
-    P(cg_total) for every group instead, which is not reproduced).
+    I = sum_g [I_g + (m/4) P(cg_g - cg)], the project default of docs theory/weights 'Public-code
+    compatibility' (the public code uses P(cg_total) for every group instead, which is not
+    reproduced).
 
     Inputs
     ------
@@ -358,12 +362,13 @@ class EmpennageRegressionComp(_M4RegressionComp):
     """
     Mass, cg and inertia of the empennage (horizontal + vertical tail) from the M4 regressions.
 
-    Implements reference/models_structures_motor_vehicle.md §5.2-5.3 with the regressors
-    [S_htail, S_vtail, 1]: total mass regression; h-tail and v-tail cg and local inertia
-    regressions; the cg weights the h-tail by w_h = 0.65 and the v-tail by 0.35 (as coded),
+    Implements docs theory/weights 'M4 regressions' with the regressors [S_htail, S_vtail, 1]: total
+    mass regression; h-tail and v-tail cg and local inertia regressions; the cg weights the h-tail
+    by w_h = 0.65 and the v-tail by 0.35 (as coded),
     taken as their mass fractions, with y set to 0. The inertia about that cg is the
     parallel-axis sum I = I_h + I_v + w_h m P(cg_h - cg) + (1 - w_h) m P(cg_v - cg), the same
-    correction as for the booms (§10 S1; the code adds m P(cg) about the origin instead).
+    correction as for the booms (docs theory/weights 'Public-code compatibility'; the code adds m
+    P(cg) about the origin instead).
 
     Inputs
     ------

@@ -44,7 +44,7 @@ def motor_analysis(length, rotor_torque, rotor_rpm, length_to_diameter=0.5, gear
     Size a PMSM from its length and analyse it at given rotor torques and speeds.
 
     Builds a small Problem around :class:`MotorGroup`, runs it and returns plain numbers
-    (reference/models_structures_motor_vehicle.md §7; paper eqs. 23-26).
+    (docs theory/motor; paper eqs. 23-26).
 
     Parameters
     ----------

@@ -114,7 +114,7 @@ def bem(radius, hub_radius, num_blades, radial_stations, chord, twist_deg, rpm, 
     """
     Blade element momentum analysis of one rotor in axial flow (hover, climb, propeller).
 
-    Paper eq. 12-13, reference/models_aero_rotor_acoustics.md §8 (Ning's guaranteed-convergence
+    Paper eq. 12-13, docs theory/rotors 'Blade-element momentum' (Ning's guaranteed-convergence
     residual with Prandtl tip and hub loss and wake swirl): :class:`BEMInflowComp`,
     :class:`BEMLoadsComp` and :class:`RotorPerformanceComp`.
 
@@ -200,7 +200,7 @@ def pitt_peters(radius, hub_radius, num_blades, radial_stations, chord, twist_de
     """
     Steady Pitt–Peters analysis of one rotor in edgewise (or any non-axial) flight.
 
-    Paper eq. 14-15, reference/models_aero_rotor_acoustics.md §9:
+    Paper eq. 14-15, docs theory/rotors 'Pitt-Peters inflow':
     :class:`PittPetersInflowComp` and :class:`PittPetersLoadsComp`.
 
     The flight speed V = ``edgewise_velocity`` meets the disk at the disk angle of attack
@@ -222,7 +222,7 @@ def pitt_peters(radius, hub_radius, num_blades, radial_stations, chord, twist_de
     tip_loss, hub_loss : bool
     loss_placement : str
         'momentum' (default: Prandtl's F on the momentum side, as in the BEM) or
-        'blade_element' (F on the loads, reference §9.1).
+        'blade_element' (F on the loads, docs theory/rotors 'Pitt-Peters inflow').
     tangential_induction : bool
         Include the wake swirl per station (default, as the BEM).
     spin_direction : int

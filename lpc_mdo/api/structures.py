@@ -151,8 +151,8 @@ def box_beam(nodes, width, height, top_skin_thickness, bottom_skin_thickness, we
     """
     Solve a box beam of consecutive nodes from box dimensions and wall thicknesses.
 
-    The same model as BoxBeamGroup: box section (reference page §6.2), frame FEM, stresses at
-    five points per element (§6.4) and skin-panel buckling (paper eq. 18).
+    The same model as BoxBeamGroup: box section (docs theory/structures 'Box section'), frame FEM, stresses at
+    five points per element (docs theory/structures 'Stress') and skin-panel buckling (paper eq. 18).
 
     Parameters
     ----------

@@ -131,7 +131,8 @@ LPC_THICKNESS_DISTRIBUTIONS = (
 def lpc_distributions(vehicle):
     """The wing-box thicknesses and, per structural condition of the vehicle, the beam stress
     (BeamGroup ``von_mises_stress``, (num_elements, 5) recovery points; limit: the material's
-    allowable)."""
+    allowable).
+    """
     allowable = vehicle.material.allowable_stress / 1e6
     return LPC_THICKNESS_DISTRIBUTIONS + tuple(
         DistributionSpec(f"stress_{c.name}", (f"{c.name}.von_mises_stress",), units="MPa",
@@ -167,7 +168,7 @@ class ReportSpec:
 
     The defaults are the lift-plus-cruise names as far as they are settled (VehicleGroup design
     variables, WeightsGroup, RotorLayoutComp, VLM ``{surface}_mesh``, ``electrical_power`` of
-    the power sum, condition groups of ARCHITECTURE.md §2); override any field when the
+    the power sum, condition groups of docs theory/dynamics 'Design conditions'); override any field when the
     assembled model promotes differently. :meth:`generic` switches every LPC part off. Names
     may be anything :func:`~lpc_mdo.post.tables.read_value` accepts.
 

@@ -11,13 +11,13 @@ case-access names (:func:`open_reader`, :func:`final_case`, :func:`read_value`,
 Activity and feasibility tolerance
 ----------------------------------
 An entry g_i of a constraint is compared with its limit(s) in the constraint's own units (the
-units given to ``add_constraint``, else the output's units). With the reference magnitude
+units given to ``add_constraint``, else the output's units). With the reference magnitude::
 
-    r_i = max(|finite limits of entry i|, s)  for a constraint scaled by ref/ref0 or scaler,
-          with s = |ref - ref0| (or 1/|scaler|), the magnitude its optimizer's tolerance
+    r_i = max(abs(finite limits of entry i), s)  for a constraint scaled by ref/ref0 or scaler,
+          with s = abs(ref - ref0) (or 1/abs(scaler)), the magnitude its optimizer's tolerance
           is measured in (a small target, e.g. a prescribed acceleration of 0.017 m/s^2 on
           a row scaled by g, then does not make the band absurdly narrow),
-    r_i = max |finite limits of entry i|     for an unscaled one, if that is > 0,
+    r_i = max abs(finite limits of entry i)     for an unscaled one, if that is > 0,
     r_i = 1                                  otherwise,
 
 (or ``refs[name]`` when given), an entry is *violated* when it lies beyond a limit by more than
@@ -369,7 +369,7 @@ def design_variable_table(source, tol=DEFAULT_TOL, expand=True):
 
     Reads ``case.get_design_vars()`` (declared units) of the first and last driver cases and the
     bounds from ``problem_metadata['design_vars']``. An entry is at a bound when within
-    ``tol * (upper - lower)`` of it (``tol * max(|bound|, 1)`` for a one-sided variable).
+    ``tol * (upper - lower)`` of it (``tol * max(abs(bound), 1)`` for a one-sided variable).
 
     Parameters
     ----------

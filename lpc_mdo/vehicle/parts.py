@@ -41,7 +41,7 @@ class Airfoil:
     description: str
 
 
-#: Airfoils a vehicle file may name (aero §2, §5, §6.1).
+#: Airfoils a vehicle file may name (docs theory/aerodynamics 'Reference-vehicle defaults', docs theory/weights 'M4 regressions', docs theory/structures 'Frame element').
 AIRFOILS: dict[str, Airfoil] = {
     a.name: a
     for a in (
@@ -235,7 +235,7 @@ class Booms:
 
 @dataclass(frozen=True)
 class WingBox:
-    """Wing-box layout of the beam model (ref §6.7).
+    """Wing-box layout of the beam model (docs theory/structures 'Material, mesh and load transfer').
 
     Attributes
     ----------
@@ -346,7 +346,7 @@ class Battery:
 
 @dataclass(frozen=True)
 class Motor:
-    """Design constants shared by the 9 PMSM motors (ref §7.1-7.2).
+    """Design constants shared by the 9 PMSM motors (docs theory/motor 'Parameters', 'Sizing').
 
     Attributes
     ----------
@@ -473,7 +473,7 @@ class ConstraintLimits:
         Target of the 2 radius-intersection equalities: a span fraction (-) or a clearance (m).
     radius_intersection_definition : str
         ``"span_fraction"``: (R_inner + R_outer)/b = target (default);
-        ``"clearance"``: |y_outer - y_inner| - (R_inner + R_outer) = target (ref §3.3).
+        ``"clearance"``: |y_outer - y_inner| - (R_inner + R_outer) = target (docs theory/geometry 'Rotor layout and radius intersection').
     max_buckling_ratio : float
         Skin stress over critical buckling stress (-).
     min_final_soc : float
@@ -495,7 +495,7 @@ class ConstraintLimits:
 
 @dataclass(frozen=True)
 class NoiseObserver:
-    """Observer of the hover noise constraint (aero §10.1).
+    """Observer of the hover noise constraint (docs theory/acoustics 'Observer and constraint').
 
     Attributes
     ----------
