@@ -17,6 +17,7 @@ import math
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import RangeCheck
 from lpc_mdo.components.weights.gross_weight import BREAKDOWN_LABELS, GrossWeightComp
 from lpc_mdo.components.weights.mass_properties import MassItem, MassPropertiesComp
 from lpc_mdo.components.weights.regressions import (
@@ -118,15 +119,8 @@ def _check_wing_model(name, value):
                          "regression).")
 
 
-def _check_nonnegative(name, value):
-    if value is not None and (isinstance(value, bool) or not np.isfinite(value) or value < 0.0):
-        raise ValueError(f"Option '{name}' = {value!r} is outside the allowed range [0, inf) "
-                         "(or None).")
-
-
-def _check_positive(name, value):
-    if isinstance(value, bool) or not np.isfinite(value) or value <= 0.0:
-        raise ValueError(f"Option '{name}' = {value!r} is outside the allowed range (0, inf).")
+_check_nonnegative = RangeCheck(lower=0.0)
+_check_positive = RangeCheck(lower=0.0, lower_open=True)
 
 
 class WeightsGroup(om.Group):

@@ -84,7 +84,8 @@ def test_flat_partials():
 
 
 def test_bad_values():
-    with pytest.raises(ValueError, match="'flat_plate_coefficient' must be > 0, got -1.0"):
+    with pytest.raises(ValueError, match="'flat_plate_coefficient' = -1.0 is out "
+                                         "of range: must be > 0"):
         _run(1e-3, 0.5, panel='flat', k=-1.0)
     with pytest.raises(om.AnalysisError, match=r"'poisson_ratio' = 0.6; allowed range"):
         _run(1e-3, 0.5, 2.0, nu=0.6)

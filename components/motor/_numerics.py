@@ -254,28 +254,6 @@ def newton_bracketed(fun, lower, upper, *, owner, variable, units='', xtol_abs=0
                            f'{maxiter} iterations.')
 
 
-def check_range(owner, name, value, units, lower=None, upper=None, lower_open=True):
-    """
-    Raise om.AnalysisError if any entry of ``value`` is not finite or outside the range.
-
-    Only the real part is checked (range checks are not on the derivative path).
-    """
-    val = np.asarray(value).real
-    bad = ~np.isfinite(val)
-    if lower is not None:
-        bad |= (val <= lower) if lower_open else (val < lower)
-    if upper is not None:
-        bad |= val > upper
-    if np.any(bad):
-        idx = np.flatnonzero(bad.ravel())
-        lo_txt = '(' if lower_open else '['
-        lo_val = '-inf' if lower is None else f'{lower:g}'
-        hi_txt = 'inf)' if upper is None else f'{upper:g}]'
-        raise om.AnalysisError(
-            f"{owner}: {name} = {val.ravel()[idx].tolist()} {units} at flat index(es) "
-            f"{idx.tolist()} is outside the allowed range {lo_txt}{lo_val}, {hi_txt}.")
-
-
 def check_saliency(owner, inductance_d, inductance_q, detail=''):
     """Raise AnalysisError naming the motors whose L_q - L_d is not > 0 (MTPA needs it).
 

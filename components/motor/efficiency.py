@@ -3,10 +3,10 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_range
 from lpc_mdo.components.motor import parameters as mp
 from lpc_mdo.components.motor._numerics import (
     CS_STEP,
-    check_range,
     check_saliency,
     declare_pointwise_partials,
     newton_bracketed,
@@ -274,7 +274,8 @@ class MotorLossComp(om.ExplicitComponent):
 
     def compute(self, inputs, outputs):
         for name, units, _, _ in self._node_inputs:
-            check_range(self.msginfo, name, inputs[name], units, lower=0.0)
+            check_range(name, inputs[name], lower=0.0, lower_open=True,
+                        units=units, error=om.AnalysisError, where=self.msginfo)
         for name, value in loss_model(self._values(inputs), self.options['parameters']).items():
             outputs[name] = value
 
@@ -349,8 +350,10 @@ class EMTorqueComp(PointwiseImplicitComp):
     _maxiter = 100
 
     def _check_values(self, values):
-        check_range(self.msginfo, 'rotor_torque', values['rotor_torque'], 'N*m', lower=0.0)
-        check_range(self.msginfo, 'rotor_rpm', values['rotor_rpm'], 'rpm', lower=0.0)
+        check_range('rotor_torque', values['rotor_torque'], lower=0.0, lower_open=True,
+                    units='N*m', error=om.AnalysisError, where=self.msginfo)
+        check_range('rotor_rpm', values['rotor_rpm'], lower=0.0, lower_open=True,
+                    units='rpm', error=om.AnalysisError, where=self.msginfo)
         check_saliency(
             self.msginfo, values['inductance_d'], values['inductance_q'],
             lambda idx: (f' (length {values["length"].real[idx].tolist()} m) is outside the '
@@ -510,7 +513,8 @@ class MotorMarginComp(om.ExplicitComponent):
                                   rows=rows, cols=rows)
 
     def compute(self, inputs, outputs):
-        check_range(self.msginfo, 'em_torque', inputs['em_torque'], 'N*m', lower=0.0)
+        check_range('em_torque', inputs['em_torque'], lower=0.0, lower_open=True,
+                    units='N*m', error=om.AnalysisError, where=self.msginfo)
         v_lim = self.options['parameters'].voltage_limit
         torque = inputs['em_torque']
         outputs['torque_margin'] = inputs['peak_torque'][:, np.newaxis] / torque - 1.0

@@ -3,7 +3,8 @@
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.components.motor._numerics import check_range, check_saliency, newton_bracketed
+from lpc_mdo.checks import check_range
+from lpc_mdo.components.motor._numerics import check_saliency, newton_bracketed
 from lpc_mdo.components.motor.parameters import MotorParameters
 
 
@@ -125,9 +126,12 @@ class MTPAComp(om.ImplicitComponent):
         return current_q / i_base, inputs['em_torque'] / t_base, i_base, t_base
 
     def _check_values(self, inputs):
-        check_range(self.msginfo, 'em_torque', inputs['em_torque'], 'N*m', lower=0.0)
-        check_range(self.msginfo, 'flux_linkage', inputs['flux_linkage'], 'Wb', lower=0.0)
-        check_range(self.msginfo, 'inductance_d', inputs['inductance_d'], 'H', lower=0.0)
+        check_range('em_torque', inputs['em_torque'], lower=0.0, lower_open=True,
+                    units='N*m', error=om.AnalysisError, where=self.msginfo)
+        check_range('flux_linkage', inputs['flux_linkage'], lower=0.0, lower_open=True,
+                    units='Wb', error=om.AnalysisError, where=self.msginfo)
+        check_range('inductance_d', inputs['inductance_d'], lower=0.0, lower_open=True,
+                    units='H', error=om.AnalysisError, where=self.msginfo)
         check_saliency(self.msginfo, inputs['inductance_d'], inputs['inductance_q'],
                        ' is outside the allowed range (0, inf): the MTPA quartic needs '
                        'L_q > L_d.')

@@ -3,6 +3,8 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import RangeCheck
+
 PANEL_MODELS = ('curved', 'flat')
 
 
@@ -158,6 +160,4 @@ class PanelBucklingComp(om.ExplicitComponent):
             partials[rname, f'{skin}_skin_stress'] = -1.0 / crit
 
 
-def _check_positive(name, value):
-    if not value > 0.0:
-        raise ValueError(f"PanelBucklingComp option '{name}' must be > 0, got {value}.")
+_check_positive = RangeCheck(lower=0.0, lower_open=True, where="PanelBucklingComp")
