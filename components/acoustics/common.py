@@ -13,6 +13,8 @@ import numpy as np
 import openmdao.api as om
 from scipy.special import jv, yv
 
+from lpc_mdo.checks import check_range
+
 #: Reference pressure, Pa (20 uPa).
 P_REF = 2.0e-5
 #: Relative mean-square floor added inside every log10 (a -120 dB floor), see module docstring.
@@ -114,23 +116,11 @@ def check_input_range(comp, name, value, lower=None, upper=None, lower_open=True
     """
     Raise om.AnalysisError if any entry of input ``name`` is not finite or lies outside the range.
 
-    Only the real part is checked, so the check is complex-step safe.
+    :func:`lpc_mdo.checks.check_range` with open bounds by default and the component's
+    ``msginfo`` in front; only the real part is checked, so the check is complex-step safe.
     """
-    val = np.asarray(value).real
-    bad = ~np.isfinite(val)
-    if lower is not None:
-        bad |= (val <= lower) if lower_open else (val < lower)
-    if upper is not None:
-        bad |= (val >= upper) if upper_open else (val > upper)
-    if np.any(bad):
-        lo = '(' if lower_open else '['
-        hi = ')' if upper_open else ']'
-        rng = (f"{lo}{'-inf' if lower is None else f'{lower:g}'}, "
-               f"{'inf' if upper is None else f'{upper:g}'}{hi}")
-        idx = np.argwhere(bad)
-        shown = ', '.join(f"{tuple(int(j) for j in i)}: {val[tuple(i)]:g}" for i in idx[:5])
-        raise om.AnalysisError(f"{comp.msginfo}: '{name}' is outside its valid range {rng} "
-                               f"at index {shown}" + (' ...' if len(idx) > 5 else '') + '.')
+    check_range(name, value, lower=lower, upper=upper, lower_open=lower_open,
+                upper_open=upper_open, error=om.AnalysisError, where=comp.msginfo)
 
 
 def spl_from_mean_square(mean_square):
