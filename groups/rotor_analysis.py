@@ -10,6 +10,7 @@ the airfoil is a packaged name, a user polar or a :class:`~lpc_mdo.components.ae
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_integer, check_number, check_range
 from lpc_mdo.components.aero.airfoil import get_polar
 from lpc_mdo.components.geometry.blade import azimuth_angles, station_fractions
 from lpc_mdo.components.rotor.bem_inflow import BEMInflowComp
@@ -22,10 +23,7 @@ RPM_TO_RAD_S = np.pi / 30.0
 
 
 def _positive(name, value):
-    value = np.asarray(value, dtype=float)
-    if not np.all(np.isfinite(value)) or np.any(value <= 0.0):
-        raise ValueError(f"{name} = {value.tolist()}; allowed: finite values > 0")
-    return value
+    return np.asarray(check_range(name, value, lower=0.0, lower_open=True), dtype=float)
 
 
 def blade_stations(radius, hub_radius, radial_stations):
@@ -47,15 +45,10 @@ def blade_stations(radius, hub_radius, radial_stations):
         Station radii and widths (m), which sum to radius - hub_radius.
     """
     radius = float(_positive("radius", radius))
-    hub_radius = float(np.asarray(hub_radius, dtype=float))
-    if not 0.0 < hub_radius < radius:
-        raise ValueError(f"hub_radius = {hub_radius}; allowed: 0 < hub_radius < radius "
-                         f"({radius})")
+    hub_radius = check_number("hub_radius", hub_radius, lower=0.0, upper=radius,
+                              lower_open=True, upper_open=True, units="m")
     if np.ndim(radial_stations) == 0:
-        n = int(radial_stations)
-        if n != radial_stations or n < 1:
-            raise ValueError(f"radial_stations = {radial_stations!r}; allowed: an int >= 1 or "
-                             "the station radii")
+        n = check_integer("radial_stations", radial_stations, lower=1)
         eta, q = station_fractions(n)
         return hub_radius + (radius - hub_radius) * eta, (radius - hub_radius) * q
     r = np.asarray(radial_stations, dtype=float).ravel()
