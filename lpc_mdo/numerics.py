@@ -47,7 +47,9 @@ def newton_step(fun, x):
 
 
 def _index_text(shape, flat):
-    return str(list(np.unravel_index(int(flat), shape))) if len(shape) > 1 else f"[{int(flat)}]"
+    if len(shape) > 1:
+        return str([int(i) for i in np.unravel_index(int(flat), shape)])
+    return f"[{int(flat)}]"
 
 
 def safeguarded_newton(fun, lower, upper, *, f_lower=None, f_upper=None, x0=None, xtol_abs=0.0,

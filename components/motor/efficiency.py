@@ -9,11 +9,11 @@ from lpc_mdo.components.motor._numerics import (
     CS_STEP,
     check_saliency,
     declare_pointwise_partials,
-    newton_bracketed,
 )
 from lpc_mdo.components.motor._pointwise import PointwiseImplicitComp
 from lpc_mdo.components.motor.mtpa import mtpa_base, mtpa_current_pu
 from lpc_mdo.components.motor.parameters import MotorParameters
+from lpc_mdo.numerics import safeguarded_newton
 
 _WINDAGE_COEFFICIENT = (mp.ROTOR_ROUGHNESS * np.pi * mp.ROTOR_FRICTION * mp.WINDAGE_AIR_DENSITY
                         * (2.0 * np.pi) ** 2)  # P_w = C f**2 l D_2**4
@@ -419,8 +419,8 @@ class EMTorqueComp(PointwiseImplicitComp):
                 return torque
         if np.all(np.isfinite(upper)):
             # Slow convergence: finish on the brackets.
-            return newton_bracketed(balance, lower, upper, owner=self.msginfo,
-                                    variable='em_torque', units='N*m')
+            return safeguarded_newton(balance, lower, upper, where=self.msginfo,
+                                      variable='em_torque', units='N*m')
         raise om.AnalysisError(f'{self.msginfo}: the em_torque Newton iteration did not '
                                f'converge in {self._maxiter} iterations.')
 

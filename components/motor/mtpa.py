@@ -4,8 +4,9 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.checks import check_range
-from lpc_mdo.components.motor._numerics import check_saliency, newton_bracketed
+from lpc_mdo.components.motor._numerics import check_saliency
 from lpc_mdo.components.motor.parameters import MotorParameters
+from lpc_mdo.numerics import safeguarded_newton
 
 
 def mtpa_base(flux_linkage, inductance_d, inductance_q, pole_pairs):
@@ -36,9 +37,9 @@ def mtpa_current_pu(torque_pu, owner='MTPA'):
     torque_pu = np.asarray(torque_pu)
     t_real = torque_pu.real
     upper = np.minimum(t_real, np.sqrt(t_real))
-    current_pu = newton_bracketed(
+    current_pu = safeguarded_newton(
         lambda x: (mtpa_residual(x, t_real), 4.0 * x ** 3 + t_real),
-        np.zeros_like(t_real), upper, owner=owner, variable='current_q (per unit)')
+        np.zeros_like(t_real), upper, where=owner, variable='current_q (per unit)')
     if np.iscomplexobj(torque_pu):
         current_pu = current_pu - (mtpa_residual(current_pu, torque_pu)
                                    / (4.0 * current_pu ** 3 + t_real))

@@ -53,6 +53,7 @@ import openmdao.api as om
 
 from lpc_mdo.components.aero.polar import LinearQuadraticPolar, Polar
 from lpc_mdo.components.geometry.blade import per_rotor
+from lpc_mdo.numerics import safeguarded_newton
 
 #: Tip-loss forms (reference §8.2; 'bladead' divides by R instead of r, §11 Q9).
 TIP_LOSS_FORMS = ('classical', 'bladead')
@@ -413,45 +414,18 @@ class BEMSections:
         return self._refine(lo, hi, f_lo, f_hi, owner)
 
     def _refine(self, lo, hi, f_lo, f_hi, owner):
-        """Vectorized safeguarded Newton (rtsafe) inside the brackets [lo, hi]."""
-        n = self.size
-        phi = np.empty(n)
-        exact = f_lo == 0.0
-        phi[exact] = lo[exact]
-        exact_hi = (f_hi == 0.0) & ~exact
-        phi[exact_hi] = hi[exact_hi]
-        act = np.flatnonzero(~(exact | exact_hi))
-        lo, hi, f_lo = lo[act], hi[act], f_lo[act]
-        denom = f_hi[act] - f_lo
-        x = np.where(denom != 0.0, lo - f_lo * (hi - lo) / np.where(denom != 0.0, denom, 1.0),
-                     0.5 * (lo + hi))
-        x = np.where((x > lo) & (x < hi), x, 0.5 * (lo + hi))
-        step_old = hi - lo
-        for _ in range(_MAX_ITER):
-            if act.size == 0:
-                break
-            st = self.evaluate(x, act)
-            f = st['res']
-            df = self.tangent(st, {'inflow_angle': 1.0})
-            low_side = np.sign(f) == np.sign(f_lo)
-            lo = np.where(low_side, x, lo)
-            f_lo = np.where(low_side, f, f_lo)
-            hi = np.where(low_side, hi, x)
-            with np.errstate(divide='ignore', invalid='ignore'):
-                step = f / df
-            x_newton = x - step
-            small = np.abs(step) <= _PHI_TOL
-            narrow = hi - lo <= _PHI_TOL
-            done = (f == 0.0) | small | narrow
-            phi[act[done]] = np.where(f == 0.0, x, np.where(small, x_newton, 0.5 * (lo + hi)))[done]
-            newton = (np.isfinite(x_newton) & (x_newton > lo) & (x_newton < hi)
-                      & (np.abs(step) < 0.5 * np.abs(step_old)))
-            x_new = np.where(newton, x_newton, 0.5 * (lo + hi))
-            step_old = np.where(newton, step, 0.5 * (hi - lo))
-            keep = ~done
-            act, x, lo, hi, f_lo, step_old = (v[keep] for v in (act, x_new, lo, hi, f_lo, step_old))
-        if act.size:
-            self._fail(act, f'no convergence in {_MAX_ITER} iterations', owner)
+        """Safeguarded Newton (:func:`lpc_mdo.numerics.safeguarded_newton`) in [lo, hi]."""
+        def residual(phi, idx):
+            st = self.evaluate(phi, idx)
+            return st['res'], self.tangent(st, {'inflow_angle': 1.0})
+
+        def fail(stations, why):
+            self._fail(stations, why, owner)
+
+        phi = safeguarded_newton(residual, lo, hi, f_lower=f_lo, f_upper=f_hi,
+                                 xtol_abs=_PHI_TOL, xtol_rel=0.0, maxiter=_MAX_ITER,
+                                 indexed=True, variable='inflow_angle', units='rad',
+                                 where=owner, fail=fail)
         res = self.residual(phi)
         bad = ~(np.abs(res) <= _RES_TOL)
         if np.any(bad):
