@@ -3,6 +3,8 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.constants import SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
+
 
 class KinematicsComp(om.ExplicitComponent):
     """
@@ -59,8 +61,9 @@ class KinematicsComp(om.ExplicitComponent):
         self.add_input("pitch", np.zeros(nn), units="rad", desc="pitch angle")
         self.add_input("flight_path_angle", np.zeros(nn), units="rad",
                        desc="flight-path angle, positive climbing")
-        self.add_input("density", np.full(nn, 1.225), units="kg/m**3", desc="air density")
-        self.add_input("speed_of_sound", np.full(nn, 340.294), units="m/s",
+        self.add_input("density", np.full(nn, SEA_LEVEL_DENSITY), units="kg/m**3",
+                       desc="air density")
+        self.add_input("speed_of_sound", np.full(nn, SEA_LEVEL_SPEED_OF_SOUND), units="m/s",
                        desc="speed of sound")
         self.add_input("dynamic_viscosity", np.full(nn, 1.7894e-5), units="Pa*s",
                        desc="dynamic viscosity of air")

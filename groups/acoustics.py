@@ -26,6 +26,7 @@ from lpc_mdo.components.acoustics.observer import ObserverGeometryComp, Observer
 from lpc_mdo.components.acoustics.thickness import BarryMagliozziThicknessComp
 from lpc_mdo.components.acoustics.tonal import LowsonLoadingNoiseComp, SearsGustLoadsComp
 from lpc_mdo.components.acoustics.total import TotalNoiseComp
+from lpc_mdo.constants import SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
 from lpc_mdo.mpi import serial_comm
 
 __all__ = ['RotorNoiseGroup', 'a_weighting', 'rotor_noise', 'HOVER_NOISE_LIMIT_DBA']
@@ -224,8 +225,8 @@ class RotorNoiseGroup(om.Group):
         self.set_input_defaults('radius', np.full(nr, 1.524), units='m')
         self.set_input_defaults('rpm', np.full(nr, 1200.0), units='rpm')
         self.set_input_defaults('chord', np.full((nr, nrad), 0.2), units='m')
-        self.set_input_defaults('density', 1.225, units='kg/m**3')
-        self.set_input_defaults('speed_of_sound', 340.294, units='m/s')
+        self.set_input_defaults('density', SEA_LEVEL_DENSITY, units='kg/m**3')
+        self.set_input_defaults('speed_of_sound', SEA_LEVEL_SPEED_OF_SOUND, units='m/s')
         self.set_input_defaults('thrust', np.full(nr, 5000.0), units='N')
         self.set_input_defaults('hub_position', np.zeros((nr, 3)), units='m')
         if opt['load_input'] == 'sectional' and path != 'unsteady':
@@ -237,8 +238,9 @@ def rotor_noise(radius, rpm, thrust, chord, *, num_blades=2, torque=None,
                 thickness_to_chord=0.12, radial_stations=None, radial_weights=None,
                 hub_radius_ratio=0.2, hub_position=None, thrust_direction=(0.0, 0.0, -1.0),
                 observer_position=None, observer_distance=100.0, observer_elevation_deg=45.0,
-                observer_azimuth_deg=180.0, flight_velocity=(0.0, 0.0, 0.0), density=1.225,
-                speed_of_sound=340.294, num_harmonics=3, num_bands=38,
+                observer_azimuth_deg=180.0, flight_velocity=(0.0, 0.0, 0.0),
+                density=SEA_LEVEL_DENSITY, speed_of_sound=SEA_LEVEL_SPEED_OF_SOUND,
+                num_harmonics=3, num_bands=38,
                 loading_path='auto', **group_options):
     """
     Noise of one or more rotors at an observer: tonal, broadband and total levels.

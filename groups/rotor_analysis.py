@@ -17,9 +17,8 @@ from lpc_mdo.components.rotor.bem_inflow import BEMInflowComp
 from lpc_mdo.components.rotor.bem_loads import BEMLoadsComp, RotorPerformanceComp
 from lpc_mdo.components.rotor.pitt_peters_inflow import PittPetersInflowComp
 from lpc_mdo.components.rotor.pitt_peters_loads import PittPetersLoadsComp
+from lpc_mdo.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY
 from lpc_mdo.mpi import serial_comm
-
-RPM_TO_RAD_S = np.pi / 30.0
 
 
 def _positive(name, value):
@@ -102,8 +101,8 @@ def _squeeze(result, scalar):
 
 
 def bem(radius, hub_radius, num_blades, radial_stations, chord, twist_deg, rpm, axial_velocity,
-        airfoil, density=1.225, viscosity=1.81e-5, speed_of_sound=340.3, tip_loss=True,
-        hub_loss=True):
+        airfoil, density=SEA_LEVEL_DENSITY, viscosity=1.81e-5, speed_of_sound=340.3,
+        tip_loss=True, hub_loss=True):
     """
     Blade element momentum analysis of one rotor in axial flow (hover, climb, propeller).
 
@@ -187,8 +186,9 @@ def bem(radius, hub_radius, num_blades, radial_stations, chord, twist_deg, rpm, 
 
 
 def pitt_peters(radius, hub_radius, num_blades, radial_stations, chord, twist_deg, rpm,
-                edgewise_velocity, disk_angle_deg, airfoil, num_azimuth=25, density=1.225,
-                viscosity=1.81e-5, speed_of_sound=340.3, tip_loss=True, hub_loss=True,
+                edgewise_velocity, disk_angle_deg, airfoil, num_azimuth=25,
+                density=SEA_LEVEL_DENSITY, viscosity=1.81e-5, speed_of_sound=340.3,
+                tip_loss=True, hub_loss=True,
                 loss_placement='momentum', tangential_induction=True, spin_direction=1):
     """
     Steady Pitt–Peters analysis of one rotor in edgewise (or any non-axial) flight.

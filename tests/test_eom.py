@@ -5,7 +5,8 @@ import openmdao.api as om
 import pytest
 from openmdao.utils.assert_utils import assert_check_partials, assert_near_equal
 
-from lpc_mdo.components.dynamics.eom import GRAVITY, EquationsOfMotionComp
+from lpc_mdo.components.dynamics.eom import EquationsOfMotionComp
+from lpc_mdo.constants import GRAVITY
 
 # Reference page §8.7 check case (CADDEE code form, reference point = origin, inertia as given
 # about the reference point, no gravity): m, cg, I, F = (100, 100, 100) N, M = (20, 20, 20) N m.

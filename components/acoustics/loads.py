@@ -9,6 +9,7 @@ from lpc_mdo.components.acoustics.common import (
     declare_radial_options,
     radial_quadrature,
 )
+from lpc_mdo.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY
 
 
 def max_load_harmonics(num_azimuth):
@@ -181,7 +182,7 @@ class HoverLoadDistributionComp(om.ExplicitComponent):
                                   ('radius', 'm', 'Rotor radius'),
                                   ('rpm', 'rpm', 'Rotor speed')):
             self.add_input(name, val=np.ones(nr), units=units, desc=desc)
-        self.add_input('density', val=1.225, units='kg/m**3', desc='Air density')
+        self.add_input('density', val=SEA_LEVEL_DENSITY, units='kg/m**3', desc='Air density')
         shape = (nr, nrad, 1)
         self.add_output('thrust_per_span', val=np.zeros(shape), units='N/m',
                         desc='Sectional thrust per unit span of one blade (assumed shape)')
@@ -204,7 +205,7 @@ class HoverLoadDistributionComp(om.ExplicitComponent):
     def _parts(self, inputs):
         rbar, w, B = self._rbar, self._w, self._blades
         R = inputs['radius']
-        omega = inputs['rpm'] * (np.pi / 30.0)
+        omega = inputs['rpm'] * RPM_TO_RAD_S
         ct = inputs['thrust'] / (inputs['density'][0] * np.pi * R**2 * (omega * R)**2)
         lam_h = np.sqrt(0.5 * ct)
         ratio = lam_h[:, None] / rbar[None, :]

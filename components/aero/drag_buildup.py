@@ -7,6 +7,7 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.checks import check_integer, check_number, check_range
+from lpc_mdo.constants import SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
 
 #: Default interference factor Q of every component (reference/models_aero_rotor_acoustics.md §5).
 DEFAULT_INTERFERENCE = 1.1
@@ -307,9 +308,9 @@ class DragBuildupComp(om.ExplicitComponent):
         self.add_input("reference_area", 1.0, units="m**2", desc="reference area of C_D0")
         for name, units, default, desc in (
                 ("speed", "m/s", 0.0, "airspeed"),
-                ("density", "kg/m**3", 1.225, "air density"),
+                ("density", "kg/m**3", SEA_LEVEL_DENSITY, "air density"),
                 ("dynamic_viscosity", "Pa*s", 1.7894e-5, "dynamic viscosity of air"),
-                ("speed_of_sound", "m/s", 340.294, "speed of sound"),
+                ("speed_of_sound", "m/s", SEA_LEVEL_SPEED_OF_SOUND, "speed of sound"),
                 ("angle_of_attack", "rad", 0.0, "angle of attack"),
                 ("sideslip_angle", "rad", 0.0, "sideslip angle")):
             self.add_input(name, np.full(nn, default), units=units, desc=desc)

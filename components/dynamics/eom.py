@@ -3,7 +3,8 @@
 import numpy as np
 import openmdao.api as om
 
-GRAVITY = 9.81  # m/s**2, as in the reference model (reference page §8.6)
+# GRAVITY is defined once in lpc_mdo.constants; importing it from this module keeps working.
+from lpc_mdo.constants import GRAVITY
 
 
 def _skew(v):

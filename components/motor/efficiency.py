@@ -13,11 +13,12 @@ from lpc_mdo.components.motor._numerics import (
 from lpc_mdo.components.motor._pointwise import PointwiseImplicitComp
 from lpc_mdo.components.motor.mtpa import mtpa_base, mtpa_current_pu
 from lpc_mdo.components.motor.parameters import MotorParameters
+from lpc_mdo.constants import RPM_TO_RAD_S
 from lpc_mdo.numerics import safeguarded_newton
 
 _WINDAGE_COEFFICIENT = (mp.ROTOR_ROUGHNESS * np.pi * mp.ROTOR_FRICTION * mp.WINDAGE_AIR_DENSITY
                         * (2.0 * np.pi) ** 2)  # P_w = C f**2 l D_2**4
-_RPM_TO_RAD_S = 2.0 * np.pi / 60.0
+_RPM_TO_RAD_S = RPM_TO_RAD_S
 
 
 def _declare_shape_options(comp):

@@ -11,6 +11,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from lpc_mdo.constants import SEA_LEVEL_DENSITY
+
 MU_0 = 4.0e-7 * np.pi  # vacuum permeability, H/m
 
 # --- Sizing (§7.2) -------------------------------------------------------------------------
@@ -63,7 +65,7 @@ HYSTERESIS_COEFFICIENT = 100.0  # K_h (n_h = 2)
 STRAY_LOSS_FRACTION = 0.01  # P_stress = 0.01 P_0
 ROTOR_ROUGHNESS = 4.0  # k_r
 ROTOR_FRICTION = 3.0e-3  # f_r
-WINDAGE_AIR_DENSITY = 1.225  # rho_air, kg/m**3
+WINDAGE_AIR_DENSITY = SEA_LEVEL_DENSITY  # rho_air, kg/m**3
 MECHANICAL_LOSS = 100.0  # P_m, W
 
 

@@ -53,12 +53,13 @@ import openmdao.api as om
 
 from lpc_mdo.components.aero.polar import LinearQuadraticPolar, Polar
 from lpc_mdo.components.geometry.blade import per_rotor
+from lpc_mdo.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
 from lpc_mdo.numerics import safeguarded_newton
 
 #: Tip-loss forms (reference §8.2; 'bladead' divides by R instead of r, §11 Q9).
 TIP_LOSS_FORMS = ('classical', 'bladead')
 
-_RPM_TO_RAD_S = np.pi / 30.0
+_RPM_TO_RAD_S = RPM_TO_RAD_S
 _TWO_OVER_PI = 2.0 / np.pi
 _ABS_SIN_FLOOR = 1.0e-9      # |sin phi| floor in the Prandtl exponent (F = 1 to all digits there)
 _GRID_INTERVALS = 12         # bracket-search intervals per quadrant (7.5 deg)
@@ -83,8 +84,8 @@ SECTION_INPUTS = {
     'chord': ('rotor_station', 'm', 0.1, 'Blade chord at the stations'),
     'twist': ('rotor_station', 'rad', 0.2,
               'Blade twist (pitch to the rotor plane) at the stations'),
-    'density': ('node', 'kg/m**3', 1.225, 'Air density'),
-    'speed_of_sound': ('node', 'm/s', 340.294, 'Speed of sound'),
+    'density': ('node', 'kg/m**3', SEA_LEVEL_DENSITY, 'Air density'),
+    'speed_of_sound': ('node', 'm/s', SEA_LEVEL_SPEED_OF_SOUND, 'Speed of sound'),
     'dynamic_viscosity': ('node', 'Pa*s', 1.7894e-5, 'Dynamic viscosity of air'),
 }
 

@@ -18,8 +18,9 @@ from lpc_mdo.components.rotor.bem_inflow import (
     declare_bem_options,
     station_columns,
 )
+from lpc_mdo.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
 
-_RPM_TO_RAD_S = np.pi / 30.0
+_RPM_TO_RAD_S = RPM_TO_RAD_S
 
 
 class BEMLoadsComp(om.ExplicitComponent):
@@ -255,8 +256,9 @@ class RotorPerformanceComp(om.ExplicitComponent):
         self.add_input('axial_velocity', val=np.zeros(shape), units='m/s',
                        desc='Freestream velocity along the thrust axis')
         self.add_input('radius', val=np.ones(nr), units='m', desc='Rotor tip radius')
-        self.add_input('density', val=np.full(nn, 1.225), units='kg/m**3', desc='Air density')
-        self.add_input('speed_of_sound', val=np.full(nn, 340.294), units='m/s',
+        self.add_input('density', val=np.full(nn, SEA_LEVEL_DENSITY), units='kg/m**3',
+                       desc='Air density')
+        self.add_input('speed_of_sound', val=np.full(nn, SEA_LEVEL_SPEED_OF_SOUND), units='m/s',
                        desc='Speed of sound')
         for name, units, desc in self._OUTPUTS:
             self.add_output(name, val=np.zeros(shape), units=units, desc=desc)

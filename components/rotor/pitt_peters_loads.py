@@ -60,11 +60,11 @@ import openmdao.api as om
 
 from lpc_mdo.components.aero.polar import LinearQuadraticPolar, Polar
 from lpc_mdo.components.geometry.blade import azimuth_angles, per_rotor
+from lpc_mdo.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
 
 #: Where Prandtl's loss factor acts: on the momentum (inflow) side or on the blade loads.
 LOSS_PLACEMENTS = ('momentum', 'blade_element')
 
-RPM_TO_RAD_S = np.pi / 30.0
 _TWO_OVER_PI = 2.0 / np.pi
 _ABS_SIN_FLOOR = 1.0e-9  # |sin phi| floor in the Prandtl exponent (F = 1 to all digits there)
 _SWIRL_MAX_ITERATIONS = 30
@@ -85,8 +85,8 @@ PITT_PETERS_INPUTS = {
     'station_width': ('radial', 'm', None, 'Radial quadrature width of each blade element'),
     'chord': ('radial', 'm', 0.1, 'Blade chord at the stations'),
     'twist': ('radial', 'rad', 0.2, 'Blade pitch relative to the rotor plane at the stations'),
-    'density': ('node', 'kg/m**3', 1.225, 'Air density'),
-    'speed_of_sound': ('node', 'm/s', 340.294, 'Speed of sound'),
+    'density': ('node', 'kg/m**3', SEA_LEVEL_DENSITY, 'Air density'),
+    'speed_of_sound': ('node', 'm/s', SEA_LEVEL_SPEED_OF_SOUND, 'Speed of sound'),
     'dynamic_viscosity': ('node', 'Pa*s', 1.7894e-5, 'Dynamic viscosity of air'),
 }
 
