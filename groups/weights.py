@@ -29,21 +29,35 @@ from lpc_mdo.components.weights.regressions import (
 )
 from lpc_mdo.mpi import serial_comm
 
-#: Kinds of bodies of the vehicle's mass properties (inputs ``{name}_mass``, ``{name}_cg`` and,
-#: for parts with an own inertia, ``{name}_inertia``). ``motor`` has one row per motor.
-_NUM_MOTORS = 9
-VEHICLE_MASS_ITEMS = (
-    MassItem("wing", own_inertia=True),
-    MassItem("fuselage", own_inertia=True),
-    MassItem("empennage", own_inertia=True),
-    MassItem("boom", own_inertia=True),
-    MassItem("battery"),
-    MassItem("motor", count=_NUM_MOTORS),
-    MassItem("power_electronics"),
-    MassItem("payload"),
-    MassItem("systems"),
-    MassItem("other"),
-)
+
+def num_motors(vehicle=None):
+    """Number of motors of a vehicle: one per lift rotor and one for the pusher."""
+    return len(_vehicle(vehicle).lift_rotors) + 1
+
+
+def num_motor_groups(vehicle=None):
+    """Number of motor designs (rotor groups) of a vehicle: one per lift pair and the pusher."""
+    return len(_vehicle(vehicle).lift_rotor_pairs) + 1
+
+
+def vehicle_mass_items(vehicle=None):
+    """
+    Kinds of bodies of a vehicle's mass properties, as :class:`MassItem` (inputs
+    ``{name}_mass``, ``{name}_cg`` and, for parts with an own inertia, ``{name}_inertia``).
+    ``motor`` has one row per motor (:func:`num_motors`).
+    """
+    return (
+        MassItem("wing", own_inertia=True),
+        MassItem("fuselage", own_inertia=True),
+        MassItem("empennage", own_inertia=True),
+        MassItem("boom", own_inertia=True),
+        MassItem("battery"),
+        MassItem("motor", count=num_motors(vehicle)),
+        MassItem("power_electronics"),
+        MassItem("payload"),
+        MassItem("systems"),
+        MassItem("other"),
+    )
 
 
 def _vehicle(vehicle):
@@ -130,7 +144,7 @@ class WeightsGroup(om.Group):
     Subsystems (all variables promoted): ``fuselage``, ``booms``, ``empennage``
     (M4 regressions, ref §5), ``wing`` (only with ``wing_model='regression'``), ``gross_weight``
     (:class:`GrossWeightComp`) and ``mass_properties`` (:class:`MassPropertiesComp`, ref §4.3)
-    over the bodies of :data:`VEHICLE_MASS_ITEMS`. Input defaults come from the vehicle.
+    over the bodies of :func:`vehicle_mass_items`. Input defaults come from the vehicle.
 
     Inputs (promoted)
     -----------------
@@ -236,9 +250,10 @@ class WeightsGroup(om.Group):
                            promotes=["*"])
         if wing_model == "regression":
             self.add_subsystem("wing", WingRegressionComp(), promotes=["*"])
-        self.add_subsystem("gross_weight", GrossWeightComp(num_motors=_NUM_MOTORS),
+        self.add_subsystem("gross_weight", GrossWeightComp(num_motors=num_motors(vehicle)),
                            promotes=["*"])
-        self.add_subsystem("mass_properties", MassPropertiesComp(items=list(VEHICLE_MASS_ITEMS)),
+        self.add_subsystem("mass_properties",
+                           MassPropertiesComp(items=list(vehicle_mass_items(vehicle))),
                            promotes=["*"])
 
         masses = vehicle.masses
@@ -364,11 +379,12 @@ def calibrate_other_mass(vehicle=None, *, wing_mass=None, motor_mass=None,
     placeholder = placeholder_calibration_inputs(vehicle)
     wing = placeholder["wing_mass"] if wing_mass is None else wing_mass
     motors = placeholder["motor_mass"] if motor_mass is None else np.asarray(motor_mass, float)
-    if motors.shape == (5,):
+    if motors.shape == (num_motor_groups(vehicle),):
         motors = motors[motor_group_indices(vehicle)]
-    if motors.shape != (_NUM_MOTORS,):
-        raise ValueError(f"motor_mass has shape {motors.shape}; allowed shapes are (9,) per "
-                         "motor and (5,) per rotor group.")
+    if motors.shape != (num_motors(vehicle),):
+        raise ValueError(f"motor_mass has shape {motors.shape}; allowed shapes are "
+                         f"({num_motors(vehicle)},) per motor and ({num_motor_groups(vehicle)},) "
+                         "per rotor group.")
     if target_gross_mass is None:
         target_gross_mass = vehicle.masses.target_gross_mass
     options.pop("wing_model", None)
