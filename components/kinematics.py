@@ -3,6 +3,7 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_range
 from lpc_mdo.constants import SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
 
 
@@ -94,8 +95,8 @@ class KinematicsComp(om.ExplicitComponent):
 
     def compute(self, inputs, outputs):
         speed = inputs["speed"]
-        if np.any(speed.real < 0.0):
-            raise om.AnalysisError(f"{self.msginfo}: speed = {speed.real} m/s; must be >= 0.")
+        check_range("speed", speed, lower=0.0, units="m/s", error=om.AnalysisError,
+                    where=self.msginfo)
         alpha = inputs["pitch"] - inputs["flight_path_angle"]
         rho = inputs["density"]
         outputs["angle_of_attack"] = alpha

@@ -99,7 +99,7 @@ def test_partials():
 def test_bad_inputs():
     prob = problem()
     prob.set_val("mass", 0.0)
-    with pytest.raises(om.AnalysisError, match="mass = 0.0 kg; must be > 0"):
+    with pytest.raises(om.AnalysisError, match=r"'mass' = 0.0 is out of range: must be > 0 \(kg\)"):
         prob.run_model()
     prob = problem()
     prob.set_val("inertia", np.zeros((3, 3)))

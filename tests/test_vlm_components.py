@@ -153,11 +153,13 @@ def test_singular_system_is_an_analysis_error():
 def test_bad_flight_inputs_are_analysis_errors():
     prob = make_problem()
     prob.set_val("speed", [-1.0, 30.0])
-    with pytest.raises(om.AnalysisError, match=r"speed = \[-1\. 30\.\] m/s; must be >= 0"):
+    with pytest.raises(om.AnalysisError, match=r"'speed\[0\]' = -1.0"
+                                               r" is out of range: must be >= 0 \(m/s\)"):
         prob.run_model()
     prob.set_val("speed", [0.0, 30.0])  # hover node: no circulation, finite coefficients
     prob.set_val("reference_area", 0.0)
-    with pytest.raises(om.AnalysisError, match="reference_area = 0.0 m\\*\\*2; must be > 0"):
+    with pytest.raises(om.AnalysisError, match=r"'reference_area' = 0.0"
+                                               r" is out of range: must be > 0 \(m\*\*2\)"):
         prob.run_model()
     prob.set_val("reference_area", 8.0)
     prob.set_val("angular_velocity", [[0.0, 0.0, 0.0], [0.0, 0.1, -0.1]])

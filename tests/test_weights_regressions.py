@@ -158,8 +158,8 @@ def test_partials_off_design():
 
 
 def test_bad_inputs_and_options():
-    with pytest.raises(om.AnalysisError, match=r"wing_area = -1.0 m\*\*2 is outside the "
-                                               r"allowed range \(0.0, inf\)"):
+    with pytest.raises(om.AnalysisError, match=r"'wing_area' = -1.0 is out of range: "
+                                               r"must be > 0 \(m\*\*2\)"):
         run(FuselageRegressionComp(), wing_area=-1.0)
     # A 1 m fuselage extrapolates to a negative mass: 42.6 x 1 - 116.7 + ... < 0.
     with pytest.raises(om.AnalysisError, match="fuselage_mass = .* must be > 0"):

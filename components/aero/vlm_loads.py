@@ -3,6 +3,7 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_range
 from lpc_mdo.components.aero.vlm_biot_savart import skew
 from lpc_mdo.constants import SEA_LEVEL_DENSITY
 
@@ -125,9 +126,8 @@ class VLMLoadsComp(om.ExplicitComponent):
                               cols=np.zeros(nn, int))
 
     def compute(self, inputs, outputs):
-        if not inputs["reference_area"].real[0] > 0.0:
-            raise om.AnalysisError(f"{self.msginfo}: reference_area = "
-                                   f"{inputs['reference_area'].real[0]} m**2; must be > 0.")
+        check_range("reference_area", inputs["reference_area"][0], lower=0.0, lower_open=True,
+                    units="m**2", error=om.AnalysisError, where=self.msginfo)
         f_inv = np.sum(inputs["panel_forces"], axis=1)
         f_vis = np.sum(inputs["viscous_panel_forces"], axis=1)
         total = f_inv + f_vis

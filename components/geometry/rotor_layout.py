@@ -3,6 +3,8 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_range
+
 
 class RotorLayoutComp(om.ExplicitComponent):
     """
@@ -126,8 +128,8 @@ class RotorLayoutComp(om.ExplicitComponent):
 
     def compute(self, inputs, outputs):
         span = inputs["wing_span"][0]
-        if span.real <= 0.0:
-            raise om.AnalysisError(f"{self.msginfo}: wing_span = {span.real} m; must be > 0.")
+        check_range("wing_span", span, lower=0.0, lower_open=True, units="m",
+                    error=om.AnalysisError, where=self.msginfo)
         radius = inputs["rotor_radius"]
         outputs["lift_hub_position"] = self._base + span * self._slope
         outputs["pusher_hub_position"] = self._pusher_offset - np.array(

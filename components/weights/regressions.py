@@ -140,11 +140,8 @@ class _M4RegressionComp(om.ExplicitComponent):
         values = []
         for name, units, _, _, lower, strict in self._regressors:
             value = inputs[name][0]
-            bad = (value.real <= lower) if strict else (value.real < lower)
-            if not np.isfinite(value) or bad:
-                bound = f"({lower}, inf)" if strict else f"[{lower}, inf)"
-                raise om.AnalysisError(f"{self.msginfo}: {name} = {value.real} "
-                                       f"{units or ''} is outside the allowed range {bound}.")
+            check_range(name, value, lower=lower, lower_open=strict, units=units,
+                        error=om.AnalysisError, where=self.msginfo)
             values.append(value)
         xt = np.array(values + [1.0])
         mass = self._mass_map @ xt
