@@ -128,8 +128,10 @@ def check_range(name, value, *, lower=None, upper=None, lower_open=False, upper_
         Name of the argument, option, field or input, as the user wrote it.
     value : float or array_like
         The value; a complex value (complex step) is checked by its real part.
-    lower, upper : float or None
-        Bounds; ``None`` leaves that side unbounded (finite is still required).
+    lower, upper : float, array_like or None
+        Bounds; ``None`` leaves that side unbounded (finite is still required). An array bound
+        broadcasts against ``value`` (e.g. a hub radius below each rotor's radius); the message
+        shows the bound of the offending entry.
     lower_open, upper_open : bool
         Whether the bound itself is excluded (``> lower`` instead of ``>= lower``).
     units : str or None
@@ -156,11 +158,13 @@ def check_range(name, value, *, lower=None, upper=None, lower_open=False, upper_
     arr = _as_real_array(name, value, error, where)
     finite = np.isfinite(arr)
     bad = ~finite
+    bounds = [None if b is None else np.real(np.broadcast_to(b, arr.shape))
+              for b in (lower, upper)]
     with np.errstate(invalid="ignore"):
         if lower is not None:
-            bad |= (arr <= lower) if lower_open else (arr < lower)
+            bad |= (arr <= bounds[0]) if lower_open else (arr < bounds[0])
         if upper is not None:
-            bad |= (arr >= upper) if upper_open else (arr > upper)
+            bad |= (arr >= bounds[1]) if upper_open else (arr > bounds[1])
     if np.any(bad):
         index = _first_bad(bad)
         entry = _plain(arr[index])
@@ -168,7 +172,8 @@ def check_range(name, value, *, lower=None, upper=None, lower_open=False, upper_
         if not finite[index]:
             need = "a finite number"
         else:
-            text = allowed or range_text(lower, upper, lower_open=lower_open,
+            low, high = (None if b is None else _plain(b[index]) for b in bounds)
+            text = allowed or range_text(low, high, lower_open=lower_open,
                                          upper_open=upper_open)
             need = f"{text}{units_suffix(units)}"
         raise error(f"{_prefix(where)}'{label}' = {entry!r} is out of range: must be {need}")

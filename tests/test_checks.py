@@ -144,3 +144,12 @@ def test_range_check_as_openmdao_check_valid():
     comp.options["ratio"] = 0.5
     pickle.loads(pickle.dumps(comp.options["rho"]))
     pickle.dumps(RangeCheck(lower=0))
+
+
+def test_array_bounds_show_the_bound_of_the_offending_entry():
+    radius = np.array([1.5, 2.0])
+    station = np.array([[0.5, 1.4], [0.5, 2.1]])
+    assert _message(check_range, "station_radius", station, lower=0.3,
+                    upper=radius[:, None], lower_open=True, upper_open=True, units="m")[1] == (
+        "'station_radius[1, 1]' = 2.1 is out of range: must be in (0.3, 2) (m)")
+    check_range("station_radius", station[:1], upper=radius[:1, None], upper_open=True)

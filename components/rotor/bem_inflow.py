@@ -51,6 +51,7 @@ continuous with hover. The reference model (§8.2) excludes V_x < 0 altogether.
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_range
 from lpc_mdo.components.aero.polar import LinearQuadraticPolar, Polar
 from lpc_mdo.components.geometry.blade import per_rotor
 from lpc_mdo.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
@@ -138,32 +139,30 @@ def add_section_inputs(comp, num_rotors, num_nodes, num_radial):
         comp.add_input(name, val=np.array(val, dtype=float), units=units, desc=desc)
 
 
-def check_section_inputs(comp, inputs, hub_loss):
+def check_section_inputs(comp, inputs, hub_loss, names=None,
+                         positive=('rpm', 'radius', 'chord', 'density', 'speed_of_sound',
+                                   'dynamic_viscosity')):
     """
-    Check the physical range of the sectional inputs; raise om.AnalysisError naming the field,
-    the offending value and the allowed range (these may come from an optimizer).
-    """
-    def fail(name, values, allowed):
-        raise om.AnalysisError(f"{comp.msginfo}: input '{name}' = {np.asarray(values).tolist()} "
-                               f"is outside the allowed range {allowed}.")
+    Check the physical range of the sectional inputs of a rotor component (BEM or Pitt-Peters).
 
-    for name in SECTION_INPUTS:
-        value = inputs[name].real
-        if not np.all(np.isfinite(value)):
-            fail(name, value[~np.isfinite(value)], '(finite values)')
-    for name in ('rpm', 'radius', 'chord', 'density', 'speed_of_sound', 'dynamic_viscosity'):
-        value = inputs[name].real
-        if np.any(value <= 0.0):
-            fail(name, value[value <= 0.0], '(0, inf)')
-    rh, big_r = inputs['hub_radius'].real, inputs['radius'].real
-    bad = ((rh <= 0.0) if hub_loss else (rh < 0.0)) | (rh >= big_r)
-    if np.any(bad):
-        fail('hub_radius', rh[bad], '(0, radius)' if hub_loss else '[0, radius)')
-    r = inputs['station_radius'].real
-    bad = (r <= rh[:, None]) | (r >= big_r[:, None])
-    if np.any(bad):
-        rotor = np.flatnonzero(np.any(bad, axis=1))
-        fail('station_radius', r[bad], f"(hub_radius, radius) (rotors {rotor.tolist()})")
+    Every input of ``names`` (a table like :data:`SECTION_INPUTS`, the default) must be finite,
+    those of ``positive`` > 0, ``0 < hub_radius < radius`` (``0 <=`` without hub loss) and
+    ``hub_radius < station_radius < radius``; otherwise om.AnalysisError names the input, the
+    first offending entry and the allowed range (:func:`lpc_mdo.checks.check_range`; the
+    values may come from an optimizer).
+    """
+    def check(name, **bounds):
+        check_range(name, inputs[name], error=om.AnalysisError, where=comp.msginfo, **bounds)
+
+    table = SECTION_INPUTS if names is None else names
+    for name in table:
+        check(name)
+    for name in positive:
+        check(name, lower=0.0, lower_open=True, units=table[name][1])
+    rh, big_r = np.real(inputs['hub_radius']), np.real(inputs['radius'])
+    check('hub_radius', lower=0.0, upper=big_r, lower_open=hub_loss, upper_open=True, units='m')
+    check('station_radius', lower=rh[:, None], upper=big_r[:, None], lower_open=True,
+          upper_open=True, units='m')
 
 
 def _cs_sign(x):

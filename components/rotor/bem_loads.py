@@ -9,6 +9,7 @@ into power, coefficients, efficiency, figure of merit and tip Mach number.
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_range
 from lpc_mdo.components.geometry.blade import per_rotor
 from lpc_mdo.components.rotor.bem_inflow import (
     SECTION_INPUTS,
@@ -279,14 +280,10 @@ class RotorPerformanceComp(om.ExplicitComponent):
 
     def _values(self, inputs):
         rpm = inputs['rpm']
-        if np.any(rpm.real <= 0.0):
-            raise om.AnalysisError(f"{self.msginfo}: input 'rpm' = {rpm.real.tolist()} is "
-                                   "outside the allowed range (0, inf).")
-        for name in ('radius', 'density', 'speed_of_sound'):
-            if np.any(inputs[name].real <= 0.0):
-                raise om.AnalysisError(f"{self.msginfo}: input '{name}' = "
-                                       f"{inputs[name].real.tolist()} is outside the allowed "
-                                       "range (0, inf).")
+        for name, units in (('rpm', 'rpm'), ('radius', 'm'), ('density', 'kg/m**3'),
+                            ('speed_of_sound', 'm/s')):
+            check_range(name, inputs[name], lower=0.0, lower_open=True, units=units,
+                        error=om.AnalysisError, where=self.msginfo)
         v = {'T': inputs['thrust'], 'Q': inputs['torque'], 'rpm': rpm,
              'vx': inputs['axial_velocity'], 'R': inputs['radius'][:, None],
              'rho': inputs['density'][None, :], 'a': inputs['speed_of_sound'][None, :]}

@@ -60,6 +60,7 @@ import openmdao.api as om
 
 from lpc_mdo.components.aero.polar import LinearQuadraticPolar, Polar
 from lpc_mdo.components.geometry.blade import azimuth_angles, per_rotor
+from lpc_mdo.components.rotor.bem_inflow import check_section_inputs
 from lpc_mdo.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
 
 #: Where Prandtl's loss factor acts: on the momentum (inflow) side or on the blade loads.
@@ -139,31 +140,13 @@ def add_pitt_peters_inputs(comp, nr, nn, nrad):
 
 def check_pitt_peters_inputs(comp, inputs, hub_loss):
     """
-    Check the physical range of the inputs (real parts); raise om.AnalysisError naming the
-    field, the offending values and the allowed range (values may come from an optimizer).
+    Check the physical range of the inputs (real parts) with the BEM section check
+    (:func:`~lpc_mdo.components.rotor.bem_inflow.check_section_inputs`): om.AnalysisError
+    names the input, the first offending entry and the allowed range.
     """
-    def fail(name, values, allowed):
-        raise om.AnalysisError(f"{comp.msginfo}: input '{name}' = {np.asarray(values).tolist()} "
-                               f"is outside the allowed range {allowed}.")
-
-    for name in PITT_PETERS_INPUTS:
-        value = np.real(inputs[name])
-        if not np.all(np.isfinite(value)):
-            fail(name, value[~np.isfinite(value)], '(finite values)')
-    for name in ('rpm', 'radius', 'chord', 'station_width', 'density', 'speed_of_sound',
-                 'dynamic_viscosity'):
-        value = np.real(inputs[name])
-        if np.any(value <= 0.0):
-            fail(name, value[value <= 0.0], '(0, inf)')
-    rh, big_r = np.real(inputs['hub_radius']), np.real(inputs['radius'])
-    bad = ((rh <= 0.0) if hub_loss else (rh < 0.0)) | (rh >= big_r)
-    if np.any(bad):
-        fail('hub_radius', rh[bad], '(0, radius)' if hub_loss else '[0, radius)')
-    r = np.real(inputs['station_radius'])
-    bad = (r <= rh[:, None]) | (r >= big_r[:, None])
-    if np.any(bad):
-        rotors = np.flatnonzero(np.any(bad, axis=1))
-        fail('station_radius', r[bad], f"(hub_radius, radius) (rotors {rotors.tolist()})")
+    check_section_inputs(comp, inputs, hub_loss, names=PITT_PETERS_INPUTS,
+                         positive=('rpm', 'radius', 'chord', 'station_width', 'density',
+                                   'speed_of_sound', 'dynamic_viscosity'))
 
 
 def atan2_cs(y, x):
