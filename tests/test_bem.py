@@ -245,5 +245,5 @@ def test_bad_inputs_raise():
         _bem_problem(polar=NaNPolar(), performance=False)
     prob = om.Problem()
     prob.model.add_subsystem('i', BEMInflowComp(num_rotors=2, num_blades=[2, 0]))
-    with pytest.raises(ValueError, match=r"num_blades' = \[2, 0\] is outside the allowed range"):
+    with pytest.raises(ValueError, match=r"'num_blades\[1\]' = 0 is out of range: must be >= 1"):
         prob.setup()
