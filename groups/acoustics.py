@@ -9,6 +9,7 @@ outside an OpenMDAO model.
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_integer
 from lpc_mdo.components.acoustics.a_weighting import AWeightingComp, a_weighting
 from lpc_mdo.components.acoustics.broadband import GillLeeBroadbandComp
 from lpc_mdo.components.acoustics.common import (
@@ -168,9 +169,9 @@ class RotorNoiseGroup(om.Group):
         L = opt['num_load_harmonics']
         if L is None:
             L = default_load_harmonics(naz)
-        if not 0 <= L <= max_load_harmonics(naz):
-            raise ValueError(f"{self.msginfo}: option 'num_load_harmonics' must be in "
-                             f"[0, (num_azimuth - 1)//2 = {max_load_harmonics(naz)}], got {L}.")
+        check_integer("num_load_harmonics", L, lower=0, upper=max_load_harmonics(naz),
+                      allowed=f"in [0, (num_azimuth - 1)//2 = {max_load_harmonics(naz)}]",
+                      where=self.msginfo)
         if opt['load_input'] == 'totals' and naz != 1:
             raise ValueError(f"{self.msginfo}: load_input = 'totals' (assumed hover load shape) "
                              f"needs num_azimuth = 1, got {naz}.")

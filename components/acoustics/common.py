@@ -13,7 +13,7 @@ import numpy as np
 import openmdao.api as om
 from scipy.special import jv, yv
 
-from lpc_mdo.checks import check_range
+from lpc_mdo.checks import check_integer, check_number, check_range, check_shape
 
 #: Reference pressure, Pa (20 uPa).
 P_REF = 2.0e-5
@@ -40,9 +40,8 @@ def nominal_third_octave_bands(num_bands, lowest=12.5):
                          f"frequency between 10 Hz and 800 kHz (e.g. 12.5, 16, 20, 25, 31.5 ...), "
                          f"got {lowest}.")
     start = matches[0]
-    if not 1 <= num_bands <= table.size - start:
-        raise ValueError(f"num_bands must be in [1, {table.size - start}] when starting at "
-                         f"{lowest} Hz, got {num_bands}.")
+    check_integer("num_bands", num_bands, lower=1, upper=table.size - start,
+                  allowed=f"in [1, {table.size - start}] when starting at {lowest} Hz")
     return table[start:start + num_bands].copy()
 
 
@@ -60,8 +59,7 @@ def radial_quadrature(num_radial, radial_stations=None, radial_weights=None,
     Raises ValueError naming the option if stations are not strictly increasing inside
     (hub_radius_ratio, 1], or weights are not positive or of the wrong length.
     """
-    if not 0.0 <= hub_radius_ratio < 1.0:
-        raise ValueError(f"hub_radius_ratio must be in [0, 1), got {hub_radius_ratio}.")
+    check_number("hub_radius_ratio", hub_radius_ratio, lower=0.0, upper=1.0, upper_open=True)
     if radial_stations is None:
         stations = hub_radius_ratio + (1.0 - hub_radius_ratio) * (
             np.arange(num_radial) + 0.5) / num_radial
@@ -80,9 +78,8 @@ def radial_quadrature(num_radial, radial_stations=None, radial_weights=None,
         weights = np.diff(edges)
     else:
         weights = np.asarray(radial_weights, dtype=float).ravel()
-        if weights.size != num_radial or np.any(weights <= 0.0):
-            raise ValueError(f"radial_weights must have num_radial = {num_radial} positive "
-                             f"entries, got {weights.tolist()}.")
+        check_shape("radial_weights", weights, (num_radial,))
+        check_range("radial_weights", weights, lower=0.0, lower_open=True)
     return stations, weights
 
 

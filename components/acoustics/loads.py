@@ -3,6 +3,7 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_integer
 from lpc_mdo.components.acoustics.common import (
     blade_counts,
     check_input_range,
@@ -74,9 +75,9 @@ class LoadFourierComp(om.ExplicitComponent):
         L = self.options['num_load_harmonics']
         if L is None:
             L = default_load_harmonics(naz)
-        if not 0 <= L <= max_load_harmonics(naz):
-            raise ValueError(f"{self.msginfo}: option 'num_load_harmonics' must be in "
-                             f"[0, (num_azimuth - 1)//2 = {max_load_harmonics(naz)}], got {L}.")
+        check_integer("num_load_harmonics", L, lower=0, upper=max_load_harmonics(naz),
+                      allowed=f"in [0, (num_azimuth - 1)//2 = {max_load_harmonics(naz)}]",
+                      where=self.msginfo)
         nl = L + 1
         psi = 2.0 * np.pi * np.arange(naz) / naz
         lam = np.arange(nl)

@@ -5,6 +5,8 @@ from dataclasses import dataclass
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_range
+
 _EYE = np.eye(3)
 
 
@@ -176,13 +178,9 @@ class MassPropertiesComp(om.ExplicitComponent):
             name = item.name
             mass = inputs[f"{name}_mass"]
             cg = inputs[f"{name}_cg"].reshape(item.count, 3)
-            for var, value in ((f"{name}_mass", mass), (f"{name}_cg", cg)):
-                if not np.all(np.isfinite(value)):
-                    raise om.AnalysisError(f"{self.msginfo}: {var} = {value.real.tolist()}; "
-                                           "must be finite.")
-            if np.any(mass.real < 0.0):
-                raise om.AnalysisError(f"{self.msginfo}: {name}_mass = {mass.real.tolist()} "
-                                       "kg; every mass must be >= 0.")
+            check_range(f"{name}_cg", cg, units="m", error=om.AnalysisError, where=self.msginfo)
+            check_range(f"{name}_mass", mass, lower=0.0, units="kg", error=om.AnalysisError,
+                        where=self.msginfo)
             masses.append(mass)
             cgs.append(cg)
         return np.concatenate(masses), np.concatenate(cgs)
@@ -190,8 +188,8 @@ class MassPropertiesComp(om.ExplicitComponent):
     def compute(self, inputs, outputs):
         masses, points = self._gather(inputs)
         total = np.sum(masses)
-        if total.real <= 0.0:
-            raise om.AnalysisError(f"{self.msginfo}: total mass = {total.real} kg; must be > 0.")
+        check_range("total mass", total, lower=0.0, lower_open=True, units="kg",
+                    error=om.AnalysisError, where=self.msginfo)
         cg = masses @ points / total
         p, _ = transport_inertia(points - cg)
         inertia = np.einsum("i,iab->ab", masses, p)
