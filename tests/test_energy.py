@@ -71,7 +71,8 @@ def test_partials():
 
 
 def test_bad_inputs():
-    with pytest.raises(ValueError, match=r"energy_multipliers = \[1.0, -2.0\]; must be"):
+    with pytest.raises(ValueError, match=r"'energy_multipliers\[1\]' = -2.0 is out of range: "
+                                     r"must be >= 0"):
         prob = om.Problem(reports=False)
         prob.model.add_subsystem("m", MissionEnergyComp(energy_multipliers=[1.0, -2.0]))
         prob.setup()

@@ -6,6 +6,7 @@ import math
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_number
 from lpc_mdo.vehicle import LiftingSurface, reference_vehicle
 
 
@@ -57,9 +58,10 @@ class WingBoxSection:
         source : str
             Label stored with the numbers.
         """
-        if not 0.0 < front_spar < beam_axis < rear_spar < 1.0:
-            raise ValueError(f"need 0 < front_spar < beam_axis < rear_spar < 1, got front_spar="
-                             f"{front_spar}, beam_axis={beam_axis}, rear_spar={rear_spar}.")
+        check_number("front_spar", front_spar, lower=0.0, upper=beam_axis, lower_open=True,
+                     upper_open=True, allowed=f"in (0, beam_axis = {beam_axis:g})")
+        check_number("rear_spar", rear_spar, lower=beam_axis, upper=1.0, lower_open=True,
+                     upper_open=True, allowed=f"in (beam_axis = {beam_axis:g}, 1)")
         xy = np.asarray(coordinates, dtype=float)
         if xy.ndim != 2 or xy.shape[1] != 2 or xy.shape[0] < 5:
             raise ValueError(f"coordinates must have shape (n >= 5, 2), got {xy.shape}.")
