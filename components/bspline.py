@@ -4,7 +4,7 @@ import numpy as np
 import openmdao.api as om
 from scipy.interpolate import BSpline
 
-from lpc_mdo.checks import check_range, check_shape
+from lpc_mdo.checks import check_integer, check_range, check_shape
 
 
 def clamped_knots(num_cp, order):
@@ -133,9 +133,8 @@ class BsplineComp(om.ExplicitComponent):
         opts = self.options
         num_cp, order = opts['num_cp'], opts['order']
         num_points, vec_size = opts['num_points'], opts['vec_size']
-        if num_cp < order:
-            raise ValueError(f"{self.msginfo}: option 'num_cp' = {num_cp} must be >= option "
-                             f"'order' = {order}.")
+        check_integer("num_cp", num_cp, lower=order, allowed=f">= option 'order' = {order}",
+                      where=self.msginfo)
         in_name, out_name = opts['in_name'], opts['out_name']
         if in_name == out_name:
             raise ValueError(f"{self.msginfo}: options 'in_name' and 'out_name' are both "

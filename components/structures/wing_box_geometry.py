@@ -6,7 +6,7 @@ import math
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_number
+from lpc_mdo.checks import check_number, check_range
 from lpc_mdo.vehicle import LiftingSurface, reference_vehicle
 
 
@@ -257,12 +257,10 @@ class WingBoxGeometryComp(om.ExplicitComponent):
     def _planform(self, inputs):
         area, ar, taper = inputs['wing_area'], inputs['wing_aspect_ratio'], \
             inputs['wing_taper_ratio']
-        for name, val, ok, allowed in (('wing_area', area, area.real > 0, '> 0'),
-                                       ('wing_aspect_ratio', ar, ar.real > 0, '> 0'),
-                                       ('wing_taper_ratio', taper, taper.real > 0, '> 0')):
-            if not np.all(ok):
-                raise om.AnalysisError(f"{self.msginfo}: input '{name}' = {val.real}; allowed "
-                                       f"{allowed}.")
+        for name, val, units in (('wing_area', area, 'm**2'), ('wing_aspect_ratio', ar, None),
+                                 ('wing_taper_ratio', taper, None)):
+            check_range(name, val, lower=0.0, lower_open=True, units=units,
+                        error=om.AnalysisError, where=self.msginfo)
         span = np.sqrt(ar * area)
         root_chord = 2.0 * area / ((1.0 + taper) * span)
         chord = root_chord * (1.0 - (1.0 - taper) * self._eta)
