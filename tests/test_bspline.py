@@ -113,7 +113,8 @@ def test_custom_names_and_units():
 def test_num_cp_less_than_order_raises():
     prob = om.Problem()
     prob.model.add_subsystem('spline', BsplineComp(num_cp=3, order=4))
-    with pytest.raises(ValueError, match=r"'num_cp' = 3 is out of range: must be >= option 'order' = 4"):
+    with pytest.raises(ValueError, match=r"'num_cp' = 3"
+                                         r" is out of range: must be >= option 'order' = 4"):
         prob.setup()
 
 
