@@ -128,7 +128,7 @@ def test_lattice_bookkeeping():
     w = lat.force_point_segment_weights()
     assert w[5, 5, 0] == 0.0 and w[5, 1, 2] == 0.0  # own bound segment; upstream ring's p3->p4
     assert w[5, 4, 0] == 1.0 and np.all(w[:, lat.te_panels, 2] == 0.0)
-    with pytest.raises(ValueError, match="num_span_panels = 0; must be an integer >= 1"):
+    with pytest.raises(ValueError, match="'num_span_panels' = 0 is out of range: must be >= 1"):
         VLMSurface("wing", 1, 0)
     with pytest.raises(ValueError, match="names .* must be unique"):
         Lattice((VLMSurface("a", 1, 2), VLMSurface("a", 1, 2)))

@@ -120,7 +120,8 @@ def test_bad_inputs_and_options():
         run([MassItem("battery")], battery_mass=1.0, battery_cg=[np.nan, 0.0, 0.0])
     with pytest.raises(ValueError, match=r"duplicate MassItem names \['a'\]"):
         MassPropertiesComp(items=[MassItem("a"), MassItem("a")])
-    with pytest.raises(ValueError, match=r"MassItem 'motor': count = 0; must be an integer"):
+    with pytest.raises(ValueError, match=r"MassItem 'motor': 'count' = 0 is out of range: "
+                                     r"must be >= 1"):
         MassItem("motor", count=0)
     with pytest.raises(ValueError, match=r"MassItem.name = 'wing mass'; must be a Python"):
         MassItem("wing mass")

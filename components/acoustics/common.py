@@ -101,10 +101,10 @@ def blade_counts(num_blades, num_rotors):
     counts = np.atleast_1d(np.asarray(num_blades))
     if counts.size == 1:
         counts = np.full(num_rotors, counts[0])
-    if (counts.size != num_rotors or not np.issubdtype(counts.dtype, np.integer)
-            or np.any(counts < 1)):
-        raise ValueError(f"num_blades must be an int >= 1 or a sequence of num_rotors = "
-                         f"{num_rotors} ints >= 1, got {num_blades!r}.")
+    if counts.size != num_rotors or not np.issubdtype(counts.dtype, np.integer):
+        raise ValueError(f"'num_blades' = {num_blades!r} is not allowed: must be an int >= 1 "
+                         f"or a sequence of num_rotors = {num_rotors} ints >= 1")
+    check_range("num_blades", counts, lower=1)
     return counts.astype(int)
 
 

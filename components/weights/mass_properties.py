@@ -5,7 +5,7 @@ from dataclasses import dataclass
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_range
+from lpc_mdo.checks import check_integer, check_range
 
 _EYE = np.eye(3)
 
@@ -62,9 +62,10 @@ class MassItem:
     def __post_init__(self):
         if not (isinstance(self.name, str) and self.name.isidentifier()):
             raise ValueError(f"MassItem.name = {self.name!r}; must be a Python identifier.")
-        if isinstance(self.count, bool) or not isinstance(self.count, int) or self.count < 1:
-            raise ValueError(f"MassItem '{self.name}': count = {self.count!r}; must be an "
-                             "integer >= 1.")
+        if not isinstance(self.count, int):
+            raise ValueError(f"MassItem '{self.name}': 'count' must be an integer, got "
+                             f"{type(self.count).__name__} {self.count!r}")
+        check_integer("count", self.count, lower=1, where=f"MassItem '{self.name}'")
         if not isinstance(self.own_inertia, bool):
             raise ValueError(f"MassItem '{self.name}': own_inertia = {self.own_inertia!r}; "
                              "must be True or False.")
