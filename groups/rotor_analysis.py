@@ -10,7 +10,7 @@ the airfoil is a packaged name, a user polar or a :class:`~lpc_mdo.components.ae
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_integer, check_number, check_range
+from lpc_mdo.checks import check_integer, check_number, check_range, check_shape
 from lpc_mdo.components.aero.airfoil import get_polar
 from lpc_mdo.components.geometry.blade import azimuth_angles, station_fractions
 from lpc_mdo.components.rotor.bem_inflow import BEMInflowComp
@@ -60,13 +60,10 @@ def blade_stations(radius, hub_radius, radial_stations):
 
 
 def _station_values(name, value, n):
-    value = np.asarray(value, dtype=float)
+    value = np.asarray(check_range(name, value), dtype=float)
     if value.ndim == 0:
         value = np.full(n, float(value))
-    if value.shape != (n,) or not np.all(np.isfinite(value)):
-        raise ValueError(f"{name}: shape {value.shape}, values {value.ravel()[:5].tolist()}; "
-                         f"allowed: a finite scalar or one value per radial station ({n})")
-    return value
+    return check_shape(name, value, (n,))  # a scalar or one value per radial station
 
 
 def _operating_points(**arrays):
@@ -79,8 +76,10 @@ def _operating_points(**arrays):
     scalar = values[0].ndim == 0
     out = {}
     for name, v in zip(arrays, values, strict=True):
-        if v.ndim > 1 or not np.all(np.isfinite(v)):
-            raise ValueError(f"{name} = {v.tolist()}; allowed: finite scalars or 1-D arrays")
+        if v.ndim > 1:
+            raise ValueError(f"'{name}' = {v.tolist()} is not allowed: must be a scalar or a "
+                             "1-D array")
+        check_range(name, v)
         out[name] = np.atleast_1d(v)
     return out, scalar
 
