@@ -20,6 +20,8 @@ import openmdao.api as om
 from openmdao.core.driver import Driver, RecordingDebugging
 from openmdao.utils.om_warnings import DriverWarning, issue_warning
 
+from lpc_mdo.checks import check_choice
+
 __all__ = ["IpoptDriver", "IpoptMultipliers", "SlsqpDriver", "make_driver",
            "pyoptsparse_optimizers"]
 
@@ -644,7 +646,7 @@ def make_driver(optimizer="IPOPT", **settings):
         For SNOPT without a pyoptsparse that has it, saying what to install.
     """
     if not isinstance(optimizer, str) or optimizer.upper() not in _KNOWN:
-        raise ValueError(f"optimizer = {optimizer!r} is not supported; choose one of {_KNOWN}.")
+        check_choice("optimizer", optimizer, _KNOWN)  # raises, naming the allowed names
     name = optimizer.upper()
     available = pyoptsparse_optimizers()
 

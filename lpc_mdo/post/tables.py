@@ -45,6 +45,8 @@ from pathlib import Path
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_choice
+
 __all__ = [
     "DEFAULT_TOL",
     "MissingVariableError",
@@ -158,8 +160,7 @@ def last_case(source, kind="driver"):
     Case or None
         None when that source recorded no case.
     """
-    if kind not in ("driver", "problem"):
-        raise ValueError(f"kind = {kind!r}; allowed values are 'driver' and 'problem'.")
+    check_choice("kind", kind, ("driver", "problem"))
     cr = open_reader(source)
     for case_id in reversed(_source_ids(cr, kind)):
         case = cr.get_case(case_id)
