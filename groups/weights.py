@@ -17,7 +17,7 @@ import math
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import RangeCheck
+from lpc_mdo.checks import RangeCheck, check_choice
 from lpc_mdo.components.weights.gross_weight import BREAKDOWN_LABELS, GrossWeightComp
 from lpc_mdo.components.weights.mass_properties import MassItem, MassPropertiesComp
 from lpc_mdo.components.weights.regressions import (
@@ -127,10 +127,8 @@ def placeholder_calibration_inputs(vehicle=None):
 
 
 def _check_wing_model(name, value):
-    if value not in ("input", "regression"):
-        raise ValueError(f"Option '{name}' = {value!r}; allowed values are 'input' (wing mass, "
-                         "cg and inertia from the beam model) and 'regression' (M4 wing "
-                         "regression).")
+    # 'input': wing mass, cg and inertia from the beam model; 'regression': M4 wing regression.
+    check_choice(name, value, ("input", "regression"))
 
 
 _check_nonnegative = RangeCheck(lower=0.0)

@@ -138,7 +138,7 @@ def test_bad_inputs_raise_clear_errors(name, value, pattern):
 
 @pytest.mark.parametrize('option, value, pattern', [
     ('num_blades', 0, "'num_blades\\[0\\]' = 0 is out of range: must be >= 1"),
-    ('spin_direction', 0, "option 'spin_direction' = \\[0\\]; allowed values: \\+1 or -1"),
+    ('spin_direction', 0, "'spin_direction\\[0\\]' = 0 is not allowed: must be one of 1, -1"),
     ('spin_direction', [1, 1], "option 'spin_direction'.*num_rotors = 1"),
 ])
 def test_bad_options_raise_clear_errors(option, value, pattern):

@@ -58,6 +58,7 @@ from types import SimpleNamespace
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_choice
 from lpc_mdo.components.aero.polar import LinearQuadraticPolar, Polar
 from lpc_mdo.components.geometry.blade import azimuth_angles, per_rotor
 from lpc_mdo.components.rotor.bem_inflow import check_section_inputs
@@ -164,9 +165,8 @@ def rotor_blade_options(comp):
                        owner=comp.msginfo)
     spin = per_rotor(comp.options['spin_direction'], nr, 'spin_direction', kind=int, lower=-1,
                      upper=1, owner=comp.msginfo)
-    if np.any(spin == 0):
-        raise ValueError(f"{comp.msginfo}: option 'spin_direction' = {spin.tolist()}; allowed "
-                         "values: +1 or -1.")
+    for i, s in enumerate(spin.tolist()):
+        check_choice(f"spin_direction[{i}]", s, (1, -1), where=comp.msginfo)
     return blades.astype(float), spin.astype(float)
 
 
