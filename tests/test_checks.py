@@ -54,15 +54,26 @@ def test_scalar_message_forms():
         "'x' = 2.0 is out of range: must be <= 1")
 
 
-def test_message_matches_the_vehicle_file_form():
-    from lpc_mdo.vehicle import VehicleSpecError, _out_of_range, _Spec
+@pytest.mark.parametrize("func, args, kwargs, expected", [
+    # The messages lpc_mdo.vehicle gives for the same faults (_number, _integer, _string).
+    (check_number, ("wing.area", -3), dict(lower=0.0, lower_open=True, units="m**2"),
+     "'wing.area' = -3 is out of range: must be > 0 (m**2)"),
+    (check_number, ("wing.area", float("nan")), dict(lower=0.0, lower_open=True),
+     "'wing.area' = nan is out of range: must be a finite number"),
+    (check_number, ("wing.area", "3"), {}, "'wing.area' must be a number, got str '3'"),
+    (check_integer, ("num_blades", 2.5), {}, "'num_blades' must be an integer, got float 2.5"),
+    (check_integer, ("num_radial", 1), dict(lower=2),
+     "'num_radial' = 1 is out of range: must be >= 2"),
+    (check_choice, ("num_blades", 3, (2, 4, 5)), {},
+     "'num_blades' = 3 is not allowed: must be one of 2, 4, 5"),
+    (check_choice, ("airfoil", "x", ("a", "b")), {},
+     "'airfoil' = 'x' is not allowed: must be one of 'a', 'b'"),
+])
+def test_messages_match_the_vehicle_file_form(func, args, kwargs, expected):
+    from lpc_mdo.vehicle import VehicleSpecError
 
-    spec = _Spec(units="m**2", gt=0.0)
-    expected = str(_out_of_range("wing.area", -3.0, spec))
-    assert isinstance(_out_of_range("a", 1, spec), VehicleSpecError)
-    got = _message(check_range, "wing.area", -3.0, lower=0.0, lower_open=True, units="m**2",
-                   error=VehicleSpecError)
-    assert got == (VehicleSpecError, expected)
+    assert _message(func, *args, error=VehicleSpecError, **kwargs) == (VehicleSpecError,
+                                                                       expected)
 
 
 @pytest.mark.parametrize("bad", [np.nan, np.inf, -np.inf])
