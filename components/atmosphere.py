@@ -3,6 +3,8 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_range
+
 # Constant sets. Each entry: sea-level temperature T0 (K), sea-level pressure p0 (Pa), lapse rate
 # L (K/m), gravity g0 (m/s**2), specific gas constant R (J/(kg K)), ratio of specific heats gamma,
 # and the Sutherland law mu = mu_ref (T/T_mu_ref)**1.5 (T_mu_ref + S)/(T + S).
@@ -148,14 +150,9 @@ class AtmosphereComp(om.ExplicitComponent):
             self.declare_partials(name, 'altitude', rows=ar, cols=ar)
 
     def _check_altitude(self, h):
-        h_real = h.real  # range check only; not on the derivative path
-        bad = ~np.isfinite(h_real) | (h_real < self.altitude_min) | (h_real > self.altitude_max)
-        if np.any(bad):
-            idx = np.flatnonzero(bad)
-            raise om.AnalysisError(
-                f"{self.msginfo}: altitude {h_real[idx].tolist()} m at node(s) {idx.tolist()} is "
-                f"outside the troposphere model's valid range "
-                f"[{self.altitude_min:g}, {self.altitude_max:g}] m.")
+        # Range check only (real part); the troposphere model's valid range.
+        check_range("altitude", h, lower=self.altitude_min, upper=self.altitude_max, units="m",
+                    error=om.AnalysisError, where=self.msginfo)
 
     def _states(self, h):
         return standard_atmosphere(h, self.options['constants'])

@@ -4,6 +4,8 @@ import numpy as np
 import openmdao.api as om
 from scipy.interpolate import BSpline
 
+from lpc_mdo.checks import check_integer, check_range, check_shape
+
 
 def clamped_knots(num_cp, order):
     """
@@ -123,23 +125,17 @@ class BsplineComp(om.ExplicitComponent):
         x = self.options['x_interp']
         if x is None:
             return np.linspace(0.0, 1.0, num_points)
-        x = np.asarray(x, dtype=float)
-        if x.shape != (num_points,):
-            raise ValueError(f"{self.msginfo}: option 'x_interp' has shape {x.shape}; expected "
-                             f"({num_points},) to match option 'num_points' = {num_points}.")
-        bad = ~np.isfinite(x) | (x < 0.0) | (x > 1.0)
-        if np.any(bad):
-            raise ValueError(f"{self.msginfo}: option 'x_interp' values {x[bad].tolist()} are "
-                             f"outside the allowed range [0, 1].")
+        x = check_shape("x_interp", np.asarray(x, dtype=float), (num_points,),
+                        where=f"{self.msginfo} (option 'num_points' = {num_points})")
+        check_range("x_interp", x, lower=0.0, upper=1.0, where=self.msginfo)
         return x
 
     def setup(self):
         opts = self.options
         num_cp, order = opts['num_cp'], opts['order']
         num_points, vec_size = opts['num_points'], opts['vec_size']
-        if num_cp < order:
-            raise ValueError(f"{self.msginfo}: option 'num_cp' = {num_cp} must be >= option "
-                             f"'order' = {order}.")
+        check_integer("num_cp", num_cp, lower=order, allowed=f">= option 'order' = {order}",
+                      where=self.msginfo)
         in_name, out_name = opts['in_name'], opts['out_name']
         if in_name == out_name:
             raise ValueError(f"{self.msginfo}: options 'in_name' and 'out_name' are both "

@@ -11,6 +11,8 @@ connected), each with its initial value x0.
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_range
+
 
 class DesignDeviationComp(om.ExplicitComponent):
     """
@@ -55,9 +57,8 @@ class DesignDeviationComp(om.ExplicitComponent):
 
     def setup(self):
         opts = self.options
-        if not opts["objective_ref"] > 0.0:
-            raise ValueError(f"{self.msginfo}: option 'objective_ref' = {opts['objective_ref']}; "
-                             "allowed: > 0.")
+        check_range("objective_ref", opts["objective_ref"], lower=0.0, lower_open=True,
+                    where=self.msginfo)
         self._x0 = {}
         for name, (x0, units) in opts["references"].items():
             x0 = np.atleast_1d(np.asarray(x0, dtype=float))

@@ -3,6 +3,9 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_range
+from lpc_mdo.constants import SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
+
 
 class KinematicsComp(om.ExplicitComponent):
     """
@@ -59,8 +62,9 @@ class KinematicsComp(om.ExplicitComponent):
         self.add_input("pitch", np.zeros(nn), units="rad", desc="pitch angle")
         self.add_input("flight_path_angle", np.zeros(nn), units="rad",
                        desc="flight-path angle, positive climbing")
-        self.add_input("density", np.full(nn, 1.225), units="kg/m**3", desc="air density")
-        self.add_input("speed_of_sound", np.full(nn, 340.294), units="m/s",
+        self.add_input("density", np.full(nn, SEA_LEVEL_DENSITY), units="kg/m**3",
+                       desc="air density")
+        self.add_input("speed_of_sound", np.full(nn, SEA_LEVEL_SPEED_OF_SOUND), units="m/s",
                        desc="speed of sound")
         self.add_input("dynamic_viscosity", np.full(nn, 1.7894e-5), units="Pa*s",
                        desc="dynamic viscosity of air")
@@ -91,8 +95,8 @@ class KinematicsComp(om.ExplicitComponent):
 
     def compute(self, inputs, outputs):
         speed = inputs["speed"]
-        if np.any(speed.real < 0.0):
-            raise om.AnalysisError(f"{self.msginfo}: speed = {speed.real} m/s; must be >= 0.")
+        check_range("speed", speed, lower=0.0, units="m/s", error=om.AnalysisError,
+                    where=self.msginfo)
         alpha = inputs["pitch"] - inputs["flight_path_angle"]
         rho = inputs["density"]
         outputs["angle_of_attack"] = alpha

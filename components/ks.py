@@ -3,10 +3,9 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import RangeCheck
 
-def _check_positive(name, value):
-    if not value > 0.0:
-        raise ValueError(f"KSComp option '{name}' must be > 0, got {value}.")
+_check_positive = RangeCheck(lower=0.0, lower_open=True, where="KSComp")
 
 
 class KSComp(om.ExplicitComponent):

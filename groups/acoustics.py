@@ -10,6 +10,7 @@ theory/acoustics). The plain functions for use outside an OpenMDAO model are
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_integer
 from lpc_mdo.components.acoustics.a_weighting import AWeightingComp
 from lpc_mdo.components.acoustics.broadband import GillLeeBroadbandComp
 from lpc_mdo.components.acoustics.common import (
@@ -27,6 +28,7 @@ from lpc_mdo.components.acoustics.observer import ObserverGeometryComp, Observer
 from lpc_mdo.components.acoustics.thickness import BarryMagliozziThicknessComp
 from lpc_mdo.components.acoustics.tonal import LowsonLoadingNoiseComp, SearsGustLoadsComp
 from lpc_mdo.components.acoustics.total import TotalNoiseComp
+from lpc_mdo.constants import SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
 
 __all__ = ['RotorNoiseGroup', 'HOVER_NOISE_LIMIT_DBA']
 
@@ -171,9 +173,9 @@ class RotorNoiseGroup(om.Group):
         L = opt['num_load_harmonics']
         if L is None:
             L = default_load_harmonics(naz)
-        if not 0 <= L <= max_load_harmonics(naz):
-            raise ValueError(f"{self.msginfo}: option 'num_load_harmonics' must be in "
-                             f"[0, (num_azimuth - 1)//2 = {max_load_harmonics(naz)}], got {L}.")
+        check_integer("num_load_harmonics", L, lower=0, upper=max_load_harmonics(naz),
+                      allowed=f"in [0, (num_azimuth - 1)//2 = {max_load_harmonics(naz)}]",
+                      where=self.msginfo)
         if opt['load_input'] == 'totals' and naz != 1:
             raise ValueError(f"{self.msginfo}: load_input = 'totals' (assumed hover load shape) "
                              f"needs num_azimuth = 1, got {naz}.")
@@ -228,8 +230,8 @@ class RotorNoiseGroup(om.Group):
         self.set_input_defaults('radius', np.full(nr, 1.524), units='m')
         self.set_input_defaults('rpm', np.full(nr, 1200.0), units='rpm')
         self.set_input_defaults('chord', np.full((nr, nrad), 0.2), units='m')
-        self.set_input_defaults('density', 1.225, units='kg/m**3')
-        self.set_input_defaults('speed_of_sound', 340.294, units='m/s')
+        self.set_input_defaults('density', SEA_LEVEL_DENSITY, units='kg/m**3')
+        self.set_input_defaults('speed_of_sound', SEA_LEVEL_SPEED_OF_SOUND, units='m/s')
         self.set_input_defaults('thrust', np.full(nr, 5000.0), units='N')
         self.set_input_defaults('hub_position', np.zeros((nr, 3)), units='m')
         if opt['load_input'] == 'sectional' and path != 'unsteady':

@@ -6,6 +6,7 @@ The plain-function wrappers ``beam`` and ``box_beam`` are in :mod:`lpc_mdo.api.s
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_integer
 from lpc_mdo.components.ks import KSComp
 from lpc_mdo.components.structures.beam import (
     BeamDisplacementComp,
@@ -204,9 +205,8 @@ class BoxBeamGroup(om.Group):
         rho = self.options['ks_rho']
         nb = self.options['num_buckling_bays']
         nb = max(ne - 1, 1) if nb is None else nb
-        if not 1 <= nb <= ne:
-            raise ValueError(f"{self.msginfo}: option 'num_buckling_bays' = {nb}; allowed range "
-                             f"[1, {ne}] (num_nodes - 1).")
+        check_integer("num_buckling_bays", nb, lower=1, upper=ne,
+                      allowed=f"in [1, {ne}] (num_nodes - 1)", where=self.msginfo)
         npts = 5 if self.options['web_points'] == 'one' else 6
         self.add_subsystem('stress_ks', KSComp(width=ne * npts, rho=rho),
                            promotes_outputs=[('KS', 'stress_ratio_ks')])

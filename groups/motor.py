@@ -7,6 +7,7 @@ The plain-function wrapper ``motor_analysis`` is in :mod:`lpc_mdo.api.motor`.
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import RangeCheck
 from lpc_mdo.components.motor.ecm import (
     InductanceComp,
     MagnetCircuitComp,
@@ -20,17 +21,8 @@ from lpc_mdo.components.motor.parameters import MotorParameters
 from lpc_mdo.components.motor.sizing import MotorSizingComp
 from lpc_mdo.components.motor.torque_limit import TorqueLimitComp
 
-
-def _check_ratio(name, value):
-    if value is not None and not (np.isfinite(value) and value > 0.0):
-        raise ValueError(f"MotorGroup option '{name}' = {value!r} is outside the allowed range "
-                         "(0, inf) (or None to make diameter an input).")
-
-
-def _check_loading(name, value):
-    if isinstance(value, bool) or not (np.isfinite(value) and value > 0.0):
-        raise ValueError(f"MotorGroup option '{name}' = {value!r} is outside the allowed range "
-                         "(0, inf).")
+_check_ratio = RangeCheck(lower=0.0, lower_open=True, where="MotorGroup")
+_check_loading = RangeCheck(lower=0.0, lower_open=True, where="MotorGroup")
 
 
 def _declare_options(group):

@@ -164,7 +164,7 @@ class VehicleGroup(om.Group):
         self.add_subsystem("wing_mirror", WingMirrorComp(), promotes=["*"])
 
         groups = motor_group_indices(vehicle)
-        num_groups = 5  # motor designs: one per rotor group (four lift pairs, the pusher)
+        num_groups = len(vehicle.lift_rotor_pairs) + 1  # motor designs: one per lift pair, pusher
         self.add_subsystem("motor_sizing", MotorSizingComp(
             num_motors=num_groups, length_to_diameter=vehicle.motor.length_to_diameter,
             parameters=motor_parameters(vehicle)),

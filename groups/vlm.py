@@ -15,6 +15,7 @@ from lpc_mdo.components.aero.vlm_normals import VLMNormalsComp
 from lpc_mdo.components.aero.vlm_profile_drag import VLMProfileDragComp
 from lpc_mdo.components.aero.vlm_sectional import VLMSectionalLiftComp
 from lpc_mdo.components.aero.vlm_trefftz import VLMTrefftzDragComp
+from lpc_mdo.constants import SEA_LEVEL_DENSITY
 
 __all__ = ["VLMGroup", "VLMSurface", "lpc_vlm_surfaces"]
 
@@ -118,5 +119,5 @@ class VLMGroup(om.Group):
         self.add_subsystem("sectional", VLMSectionalLiftComp(**kw), promotes=["*"])
         self.add_subsystem("trefftz", VLMTrefftzDragComp(**kw), promotes=["*"])
 
-        self.set_input_defaults("density", np.full(nn, 1.225), units="kg/m**3")
+        self.set_input_defaults("density", np.full(nn, SEA_LEVEL_DENSITY), units="kg/m**3")
         self.set_input_defaults("speed", np.zeros(nn), units="m/s")

@@ -17,6 +17,7 @@ import math
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import RangeCheck, check_choice
 from lpc_mdo.components.weights.gross_weight import GrossWeightComp
 from lpc_mdo.components.weights.mass_properties import MassItem, MassPropertiesComp
 from lpc_mdo.components.weights.regressions import (
@@ -27,21 +28,35 @@ from lpc_mdo.components.weights.regressions import (
     m4_coefficients,
 )
 
-#: Kinds of bodies of the vehicle's mass properties (inputs ``{name}_mass``, ``{name}_cg`` and,
-#: for parts with an own inertia, ``{name}_inertia``). ``motor`` has one row per motor.
-_NUM_MOTORS = 9
-VEHICLE_MASS_ITEMS = (
-    MassItem("wing", own_inertia=True),
-    MassItem("fuselage", own_inertia=True),
-    MassItem("empennage", own_inertia=True),
-    MassItem("boom", own_inertia=True),
-    MassItem("battery"),
-    MassItem("motor", count=_NUM_MOTORS),
-    MassItem("power_electronics"),
-    MassItem("payload"),
-    MassItem("systems"),
-    MassItem("other"),
-)
+
+def num_motors(vehicle=None):
+    """Number of motors of a vehicle: one per lift rotor and one for the pusher."""
+    return len(_vehicle(vehicle).lift_rotors) + 1
+
+
+def num_motor_groups(vehicle=None):
+    """Number of motor designs (rotor groups) of a vehicle: one per lift pair and the pusher."""
+    return len(_vehicle(vehicle).lift_rotor_pairs) + 1
+
+
+def vehicle_mass_items(vehicle=None):
+    """
+    Kinds of bodies of a vehicle's mass properties, as :class:`MassItem` (inputs
+    ``{name}_mass``, ``{name}_cg`` and, for parts with an own inertia, ``{name}_inertia``).
+    ``motor`` has one row per motor (:func:`num_motors`).
+    """
+    return (
+        MassItem("wing", own_inertia=True),
+        MassItem("fuselage", own_inertia=True),
+        MassItem("empennage", own_inertia=True),
+        MassItem("boom", own_inertia=True),
+        MassItem("battery"),
+        MassItem("motor", count=num_motors(vehicle)),
+        MassItem("power_electronics"),
+        MassItem("payload"),
+        MassItem("systems"),
+        MassItem("other"),
+    )
 
 
 def _vehicle(vehicle):
@@ -114,21 +129,12 @@ def placeholder_calibration_inputs(vehicle=None):
 
 
 def _check_wing_model(name, value):
-    if value not in ("input", "regression"):
-        raise ValueError(f"Option '{name}' = {value!r}; allowed values are 'input' (wing mass, "
-                         "cg and inertia from the beam model) and 'regression' (M4 wing "
-                         "regression).")
+    # 'input': wing mass, cg and inertia from the beam model; 'regression': M4 wing regression.
+    check_choice(name, value, ("input", "regression"))
 
 
-def _check_nonnegative(name, value):
-    if value is not None and (isinstance(value, bool) or not np.isfinite(value) or value < 0.0):
-        raise ValueError(f"Option '{name}' = {value!r} is outside the allowed range [0, inf) "
-                         "(or None).")
-
-
-def _check_positive(name, value):
-    if isinstance(value, bool) or not np.isfinite(value) or value <= 0.0:
-        raise ValueError(f"Option '{name}' = {value!r} is outside the allowed range (0, inf).")
+_check_nonnegative = RangeCheck(lower=0.0)
+_check_positive = RangeCheck(lower=0.0, lower_open=True)
 
 
 class WeightsGroup(om.Group):
@@ -139,7 +145,7 @@ class WeightsGroup(om.Group):
     (M4 regressions, docs theory/weights 'M4 regressions'), ``wing`` (only with
     ``wing_model='regression'``), ``gross_weight`` (:class:`GrossWeightComp`) and
     ``mass_properties`` (:class:`MassPropertiesComp`, docs theory/weights 'Mass properties') over
-    the bodies of :data:`VEHICLE_MASS_ITEMS`. Input defaults come from the vehicle.
+    the bodies of :func:`vehicle_mass_items`. Input defaults come from the vehicle.
 
     The inputs are promoted.
 
@@ -249,9 +255,10 @@ class WeightsGroup(om.Group):
                            promotes=["*"])
         if wing_model == "regression":
             self.add_subsystem("wing", WingRegressionComp(), promotes=["*"])
-        self.add_subsystem("gross_weight", GrossWeightComp(num_motors=_NUM_MOTORS),
+        self.add_subsystem("gross_weight", GrossWeightComp(num_motors=num_motors(vehicle)),
                            promotes=["*"])
-        self.add_subsystem("mass_properties", MassPropertiesComp(items=list(VEHICLE_MASS_ITEMS)),
+        self.add_subsystem("mass_properties",
+                           MassPropertiesComp(items=list(vehicle_mass_items(vehicle))),
                            promotes=["*"])
 
         masses = vehicle.masses

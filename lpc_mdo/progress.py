@@ -13,6 +13,8 @@ import time
 import numpy as np
 from openmdao.recorders.case_recorder import CaseRecorder
 
+from lpc_mdo.checks import check_integer
+
 
 class ProgressLine(CaseRecorder):
     """
@@ -30,8 +32,7 @@ class ProgressLine(CaseRecorder):
 
     def __init__(self, label, stream=None, every=1):
         super().__init__(record_viewer_data=False)
-        if not isinstance(every, int) or every < 1:
-            raise ValueError(f"ProgressLine: every = {every!r}; allowed: an int >= 1.")
+        check_integer("every", every, lower=1, where="ProgressLine")
         self.label = label
         self.stream = stream
         self.every = every

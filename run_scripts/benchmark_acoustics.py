@@ -39,8 +39,12 @@ def hub_positions():
     return np.column_stack([-rel[:, 0], rel[:, 1], -rel[:, 2]])
 
 
-def build_problem(num_rotors=8, num_radial=25):
-    """Problem with the LPC-like hover case (R = 1.524 m, 1200 rpm, chord 0.3 -> 0.1 m)."""
+def build_problem(num_rotors=None, num_radial=25):
+    """Problem with the LPC-like hover case (R = 1.524 m, 1200 rpm, chord 0.3 -> 0.1 m).
+
+    ``num_rotors`` defaults to the number of hubs of the layout table (the 8 lift rotors).
+    """
+    num_rotors = len(_HUBS_FT) if num_rotors is None else num_rotors
     prob = om.Problem(RotorNoiseGroup(num_rotors=num_rotors, num_radial=num_radial,
                                       num_azimuth=1, num_harmonics=3, num_bands=38),
                       reports=False)
@@ -87,7 +91,7 @@ def main(repeats=20):
         t_lin.append(t2 - t1)
     t_eval, t_lin = np.array(t_eval), np.array(t_lin)
     total = prob.get_val('total_spl_a')[0]
-    print(f"8 lift rotors in hover, 25 radial stations, 3 harmonics, 38 bands "
+    print(f"{len(_HUBS_FT)} lift rotors in hover, 25 radial stations, 3 harmonics, 38 bands "
           f"(median of {repeats} runs, {os.cpu_count()} CPUs):")
     print(f"  evaluate  (run_model)      {1e3 * np.median(t_eval):7.2f} ms")
     print(f"  linearize (compute_totals) {1e3 * np.median(t_lin):7.2f} ms")

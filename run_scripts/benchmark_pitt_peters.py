@@ -88,7 +88,8 @@ def main(argv=None):
 
     prob = build_problem(num_nodes=args.nodes, tangential_induction=not args.no_swirl)
     comp = prob.model.inflow
-    cold = np.tile([0.05, 0.0, 0.0], (8, args.nodes, 1))
+    num_rotors = prob.get_val('inflow_states').shape[0]
+    cold = np.tile([0.05, 0.0, 0.0], (num_rotors, args.nodes, 1))
     rpm = prob.get_val('rpm').copy()
     iterations = {}
 

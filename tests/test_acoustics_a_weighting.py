@@ -50,7 +50,8 @@ def test_derivative_matches_complex_step():
 
 
 def test_bad_frequency():
-    with pytest.raises(ValueError, match='frequency must be > 0'):
+    with pytest.raises(ValueError, match=r"'frequency\[.*\]' = .*"
+                                         r" is out of range: must be > 0 \(Hz\)"):
         a_weighting([100.0, 0.0])
 
 

@@ -108,7 +108,8 @@ def test_altitude_outside_troposphere_raises(altitude):
     prob.model.add_subsystem('atmos', AtmosphereComp(num_nodes=2), promotes=['*'])
     prob.setup()
     prob.set_val('altitude', [1000.0, altitude])
-    with pytest.raises(om.AnalysisError, match=r'altitude .* node\(s\) \[1\].*\[0, 11000\] m'):
+    with pytest.raises(om.AnalysisError, match=r"'altitude\[1\]' = .* is out of range: "
+                                               r"must be (in \[0, 11000\] \(m\)|a finite number)"):
         prob.run_model()
 
 

@@ -110,16 +110,18 @@ def test_helpers():
 
 
 def test_bad_options_and_inputs():
-    with pytest.raises(ValueError, match=r"hub_radius_ratio' = \[0.2, 1.0\].*\[0, 1\)"):
+    with pytest.raises(ValueError, match=r"'hub_radius_ratio\[1\]' = 1.0 is out of range: "
+                                         r"must be in \[0, 1\)"):
         prob = om.Problem()
         prob.model.add_subsystem('s', BladeStationsComp(num_rotors=2,
                                                         hub_radius_ratio=[0.2, 1.0]))
         prob.setup()
     with pytest.raises(ValueError, match="num_blades' = .* must be a scalar or have"):
         per_rotor([2, 3], 3, 'num_blades', kind=int)
-    with pytest.raises(ValueError, match="must hold integers"):
+    with pytest.raises(ValueError, match=r"'num_blades\[0\]' must be an integer, got float 2.5"):
         per_rotor(2.5, 1, 'num_blades', kind=int)
-    with pytest.raises(ValueError, match="num_radial' = 1"):
+    with pytest.raises(ValueError, match=r"'num_radial' = 1"
+                                         r" is out of range: must be >= 2 \(quadrature"):
         station_fractions(1, 'bladead')
     prob = om.Problem()
     prob.model.add_subsystem('s', BladeStationsComp(num_rotors=2), promotes=['*'])

@@ -11,7 +11,6 @@ from lpc_mdo.drivers import IpoptDriver
 from lpc_mdo.groups.lpc import LPCGroup
 
 
-
 def condition_problem(name, design_vars=(), constraints=(), objective=None):
     prob = om.Problem(reports=False)
     prob.model = LPCGroup(conditions=[name],

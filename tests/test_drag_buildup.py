@@ -112,9 +112,10 @@ def test_hover_drag_factor_and_partials():
 
 
 def test_bad_specs_and_inputs():
-    with pytest.raises(ValueError, match="thickness_to_chord = 0.7; must be in \\(0.0, 0.5\\]"):
+    with pytest.raises(ValueError, match="'thickness_to_chord' = 0.7 is out of range: "
+                                         "must be in \\(0, 0.5\\]"):
         LiftingSurfaceDrag("wing", 0.7, 0.4)
-    with pytest.raises(ValueError, match="count = 0; must be an integer >= 1"):
+    with pytest.raises(ValueError, match="'count' = 0 is out of range: must be >= 1"):
         FixedFormFactorDrag("booms", 1.1, count=0)
     prob = make_problem((BodyDrag("pod"),), {"pod_length": 5.0, "pod_max_height": 1.0,
                                              "pod_max_width": 0.8})
@@ -124,5 +125,6 @@ def test_bad_specs_and_inputs():
                        r" = 1.67705; .* fineness ratio > 2"):
         prob.run_model()
     prob.set_val("pod_length", -1.0)
-    with pytest.raises(om.AnalysisError, match="pod_length = -1; must be > 0"):
+    with pytest.raises(om.AnalysisError, match=r"'pod_length\[0\]' = -1.0 is out of range: "
+                                               r"must be > 0"):
         prob.run_model()

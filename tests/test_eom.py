@@ -5,7 +5,8 @@ import openmdao.api as om
 import pytest
 from openmdao.utils.assert_utils import assert_check_partials, assert_near_equal
 
-from lpc_mdo.components.dynamics.eom import GRAVITY, EquationsOfMotionComp
+from lpc_mdo.components.dynamics.eom import EquationsOfMotionComp
+from lpc_mdo.constants import GRAVITY
 
 # Reference docs theory/dynamics 'Equations of motion' check case (CADDEE code form, reference point = origin, inertia as given
 # about the reference point, no gravity): m, cg, I, F = (100, 100, 100) N, M = (20, 20, 20) N m.
@@ -98,7 +99,7 @@ def test_partials():
 def test_bad_inputs():
     prob = problem()
     prob.set_val("mass", 0.0)
-    with pytest.raises(om.AnalysisError, match="mass = 0.0 kg; must be > 0"):
+    with pytest.raises(om.AnalysisError, match=r"'mass' = 0.0 is out of range: must be > 0 \(kg\)"):
         prob.run_model()
     prob = problem()
     prob.set_val("inertia", np.zeros((3, 3)))

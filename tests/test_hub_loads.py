@@ -101,8 +101,10 @@ def test_reference_vehicle_hover_balance():
 
 
 def test_bad_options():
-    for options, message in (({'spin_direction': 0}, "spin_direction' = \\[0\\]"),
-                             ({'spin_direction': 2}, "outside the allowed range \\[-1, 1\\]"),
+    for options, message in (({'spin_direction': 0}, "'spin_direction\\[0\\]' = 0 is not "
+                                                     "allowed: must be one of 1, -1"),
+                             ({'spin_direction': 2}, "'spin_direction\\[0\\]' = 2 is out of range: "
+                                                             "must be in \\[-1, 1\\]"),
                              ({'thrust_axis': [[0.0, 0.0]]}, "thrust_axis' has shape")):
         prob = om.Problem()
         prob.model.add_subsystem('h', HubLoadsComp(**options))

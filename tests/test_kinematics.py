@@ -46,5 +46,6 @@ def test_partials():
 def test_negative_speed_is_an_analysis_error():
     prob = make_problem()
     prob.set_val("speed", [-1.0, 10.0, 20.0])
-    with pytest.raises(om.AnalysisError, match=r"speed = \[-1\. 10\. 20\.\] m/s; must be >= 0"):
+    with pytest.raises(om.AnalysisError, match=r"'speed\[0\]' = -1.0"
+                                               r" is out of range: must be >= 0 \(m/s\)"):
         prob.run_model()

@@ -117,7 +117,7 @@ def test_sparsity_matches_fd():
 
 @pytest.mark.parametrize('rho', [0.0, -1.0])
 def test_bad_rho_raises(rho):
-    with pytest.raises(ValueError, match=rf"'rho' must be > 0, got {rho}"):
+    with pytest.raises(ValueError, match=rf"KSComp: 'rho' = {rho} is out of range: must be > 0$"):
         KSComp(rho=rho)
 
 

@@ -27,7 +27,7 @@ def test_make_driver_without_pyoptsparse(monkeypatch):
 
     with pytest.raises(RuntimeError, match="SNOPT is reached only through pyoptsparse"):
         make_driver("SNOPT")
-    with pytest.raises(ValueError, match="optimizer = 'BFGS' is not supported"):
+    with pytest.raises(ValueError, match="'optimizer' = 'BFGS' is not allowed: must be one of"):
         make_driver("BFGS")
 
 

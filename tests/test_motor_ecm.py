@@ -178,8 +178,8 @@ def test_too_small_rotor_raises():
     prob.model.add_subsystem('ecm', MotorECMParametersComp(), promotes=['*'])
     prob.setup()
     prob.set_val('rotor_diameter', 0.0015)
-    with pytest.raises(om.AnalysisError, match=r"rotor_diameter = \[0.0015\] m .* allowed range "
-                                               r"\(0.002, inf\)"):
+    with pytest.raises(om.AnalysisError, match=r"'rotor_diameter\[0\]' = 0.0015 is out of range: "
+                                               r"must be > 0.002 \(m\)"):
         prob.run_model()
 
 

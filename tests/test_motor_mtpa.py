@@ -105,8 +105,8 @@ def test_complex_step_through_solve():
 
 
 @pytest.mark.parametrize('name, value, pattern', [
-    ('em_torque', 0.0, r'em_torque = \[0.0\] N\*m .* allowed range \(0, inf\)'),
-    ('flux_linkage', -0.3, r'flux_linkage = \[-0.3\] Wb .* allowed range \(0, inf\)'),
+    ('em_torque', 0.0, r"'em_torque\[0, 0\]' = 0.0 is out of range: must be > 0 \(N\*m\)"),
+    ('flux_linkage', -0.3, r"'flux_linkage\[0.*\]' = -0.3 is out of range: must be > 0 \(Wb\)"),
     ('inductance_q', 5.0e-4, r'inductance_q - inductance_d = .* allowed range \(0, inf\)'),
 ])
 def test_bad_inputs_raise(name, value, pattern):

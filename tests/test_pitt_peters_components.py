@@ -121,10 +121,13 @@ def test_states_outside_model_raise_instead_of_nan():
 
 
 @pytest.mark.parametrize('name, value, pattern', [
-    ('hub_radius', [1.6], "input 'hub_radius' = \\[1.6\\].*allowed range \\(0, radius\\)"),
-    ('chord', np.full((1, NRAD), -0.1), "input 'chord'.*allowed range \\(0, inf\\)"),
-    ('rpm', [[0.0]], "input 'rpm' = \\[0.0\\].*allowed range \\(0, inf\\)"),
-    ('axial_velocity', [[np.nan]], "input 'axial_velocity'.*finite"),
+    ('hub_radius', [1.6],
+     "'hub_radius\\[0\\]' = 1.6 is out of range: must be in \\(0, 1.524\\) \\(m\\)"),
+    ('chord', np.full((1, NRAD), -0.1),
+     "'chord\\[0, 0\\]' = -0.1 is out of range: must be > 0 \\(m\\)"),
+    ('rpm', [[0.0]], "'rpm\\[0, 0\\]' = 0.0 is out of range: must be > 0 \\(rpm\\)"),
+    ('axial_velocity', [[np.nan]],
+     "'axial_velocity\\[0, 0\\]' = nan is out of range: must be a finite number"),
 ])
 def test_bad_inputs_raise_clear_errors(name, value, pattern):
     prob = build()
@@ -134,8 +137,8 @@ def test_bad_inputs_raise_clear_errors(name, value, pattern):
 
 
 @pytest.mark.parametrize('option, value, pattern', [
-    ('num_blades', 0, "option 'num_blades' = \\[0\\] is outside the allowed range"),
-    ('spin_direction', 0, "option 'spin_direction' = \\[0\\]; allowed values: \\+1 or -1"),
+    ('num_blades', 0, "'num_blades\\[0\\]' = 0 is out of range: must be >= 1"),
+    ('spin_direction', 0, "'spin_direction\\[0\\]' = 0 is not allowed: must be one of 1, -1"),
     ('spin_direction', [1, 1], "option 'spin_direction'.*num_rotors = 1"),
 ])
 def test_bad_options_raise_clear_errors(option, value, pattern):

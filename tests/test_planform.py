@@ -70,7 +70,7 @@ def test_partials():
 
 
 def test_bad_inputs_and_options():
-    with pytest.raises(ValueError, match="num_span_panels' = 5; must be even"):
+    with pytest.raises(ValueError, match="'num_span_panels' = 5 is out of range: must be even"):
         PlanformMeshComp(num_span_panels=5)
     prob = make_problem(4, 1)
     prob.set_val("span", -1.0)

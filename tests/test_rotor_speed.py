@@ -27,7 +27,7 @@ def test_pairs_share_speed():
 def test_bad_group():
     prob = om.Problem(reports=False)
     prob.model.add_subsystem("s", RotorSpeedComp(group=[0, 4], num_groups=4))
-    with pytest.raises(ValueError, match=r"group = \[0, 4\]; each entry must be in 0..3"):
+    with pytest.raises(ValueError, match=r"'group\[1\]' = 4 is out of range: must be in \[0, 3\]"):
         prob.setup()
 
 

@@ -228,7 +228,9 @@ def test_errors():
                        fixed_dofs=((0, 0), (0, 1), (0, 2)))
     bad = nodes.copy()
     bad[3] = bad[2]
-    with pytest.raises(om.AnalysisError, match=r"elements \[2\] a length of \[0\.0\] m"):
+    with pytest.raises(om.AnalysisError, match=r"'element length \(from input 'nodes'\)\[2\]' "
+                                               r"= 0\.0 is out of range: must be > 0 \(m\)"):
         _frame_problem(bad, np.zeros((7, 6)))
-    with pytest.raises(om.AnalysisError, match=r"'torsion_constant' = \[-1\.0\]"):
+    with pytest.raises(om.AnalysisError, match=r"'torsion_constant\[.*\]' = -1\.0 is out of "
+                                               r"range: must be > 0 \(m\*\*4\)"):
         _frame_problem(nodes, np.zeros((7, 6)), props={'j': np.r_[J, J, -1.0, J, J, J]})

@@ -84,9 +84,12 @@ def test_flat_partials():
 
 
 def test_bad_values():
-    with pytest.raises(ValueError, match="'flat_plate_coefficient' must be > 0, got -1.0"):
+    with pytest.raises(ValueError, match="'flat_plate_coefficient' = -1.0 is out "
+                                         "of range: must be > 0"):
         _run(1e-3, 0.5, panel='flat', k=-1.0)
-    with pytest.raises(om.AnalysisError, match=r"'poisson_ratio' = 0.6; allowed range"):
+    with pytest.raises(om.AnalysisError, match=r"'poisson_ratio' = 0.6"
+                                               r" is out of range: must be in \(-1, 0.5\)"):
         _run(1e-3, 0.5, 2.0, nu=0.6)
-    with pytest.raises(om.AnalysisError, match=r"'top_skin_radius' = \[0.0\] m"):
+    with pytest.raises(om.AnalysisError, match=r"'top_skin_radius\[0\]' = 0.0"
+                                               r" is out of range: must be > 0 \(m\)"):
         _run(1e-3, 0.5, 0.0)

@@ -103,7 +103,9 @@ def test_partials():
 
 
 def test_bad_inputs():
-    with pytest.raises(om.AnalysisError, match=r"'wing_area' = \[-1.\]; allowed > 0"):
+    with pytest.raises(om.AnalysisError, match=r"'wing_area\[0\]' = -1.0 is out of range: "
+                                               r"must be > 0 \(m\*\*2\)"):
         _run(wing_area=-1.0)
-    with pytest.raises(ValueError, match='need 0 < front_spar < beam_axis < rear_spar < 1'):
+    with pytest.raises(ValueError, match=r"'front_spar' = 0.6"
+                                         r" is out of range: must be in \(0, beam_axis"):
         WingBoxSection.from_coordinates(np.zeros((10, 2)), front_spar=0.6)

@@ -154,7 +154,7 @@ def test_box_beam_wrapper_options():
 def test_wrapper_errors_name_the_field():
     nodes = np.column_stack([np.zeros(3), np.arange(3.0), np.zeros(3)])
     loads = np.zeros((3, 6))
-    with pytest.raises(ValueError, match=r"'area' = -1.0 m\*\*2 is outside the allowed range"):
+    with pytest.raises(ValueError, match=r"'area' = -1.0 is out of range: must be > 0 \(m\*\*2\)"):
         beam(nodes, -1.0, 1e-6, 1e-6, 1e-6, 70e9, 27e9, 2700.0, loads)
     with pytest.raises(ValueError, match=r"'loads' must have shape \(3, 6\)"):
         beam(nodes, 1e-3, 1e-6, 1e-6, 1e-6, 70e9, 27e9, 2700.0, np.zeros((3, 3)))

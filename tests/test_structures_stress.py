@@ -89,5 +89,6 @@ def test_partials(torsion_formula, web_points):
 
 
 def test_bad_input():
-    with pytest.raises(om.AnalysisError, match="'allowable_stress' = 0.0 Pa"):
+    with pytest.raises(om.AnalysisError, match=r"'allowable_stress' = 0.0"
+                                               r" is out of range: must be > 0 \(Pa\)"):
         _run([1, 0, 0], [0, 0, 0], allowable=0.0)

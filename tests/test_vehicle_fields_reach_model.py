@@ -147,10 +147,10 @@ def test_motor_group_loading_options():
     assert_near_equal(loaded.get_val("mass"), (40.0e3 * 0.95) / (30.0e3 * 0.85)
                       * default.get_val("mass"), 1e-12)
 
-    with pytest.raises(ValueError, match=r"MotorGroup option 'electric_loading' = -1.0 is "
-                                         r"outside the allowed range \(0, inf\)"):
+    with pytest.raises(ValueError, match=r"MotorGroup: 'electric_loading' = -1.0 is out of range: "
+                                         r"must be > 0"):
         MotorGroup(electric_loading=-1.0)
-    with pytest.raises(ValueError, match=r"'magnetic_loading' = 0.0 is outside the allowed"):
+    with pytest.raises(ValueError, match=r"'magnetic_loading' = 0.0 is out of range: must be > 0"):
         MotorGroup(magnetic_loading=0.0)
 
 

@@ -128,7 +128,7 @@ def test_lattice_bookkeeping():
     w = lat.force_point_segment_weights()
     assert w[5, 5, 0] == 0.0 and w[5, 1, 2] == 0.0  # own bound segment; upstream ring's p3->p4
     assert w[5, 4, 0] == 1.0 and np.all(w[:, lat.te_panels, 2] == 0.0)
-    with pytest.raises(ValueError, match="num_span_panels = 0; must be an integer >= 1"):
+    with pytest.raises(ValueError, match="'num_span_panels' = 0 is out of range: must be >= 1"):
         VLMSurface("wing", 1, 0)
     with pytest.raises(ValueError, match="names .* must be unique"):
         Lattice((VLMSurface("a", 1, 2), VLMSurface("a", 1, 2)))
@@ -153,11 +153,13 @@ def test_singular_system_is_an_analysis_error():
 def test_bad_flight_inputs_are_analysis_errors():
     prob = make_problem()
     prob.set_val("speed", [-1.0, 30.0])
-    with pytest.raises(om.AnalysisError, match=r"speed = \[-1\. 30\.\] m/s; must be >= 0"):
+    with pytest.raises(om.AnalysisError, match=r"'speed\[0\]' = -1.0"
+                                               r" is out of range: must be >= 0 \(m/s\)"):
         prob.run_model()
     prob.set_val("speed", [0.0, 30.0])  # hover node: no circulation, finite coefficients
     prob.set_val("reference_area", 0.0)
-    with pytest.raises(om.AnalysisError, match="reference_area = 0.0 m\\*\\*2; must be > 0"):
+    with pytest.raises(om.AnalysisError, match=r"'reference_area' = 0.0"
+                                               r" is out of range: must be > 0 \(m\*\*2\)"):
         prob.run_model()
     prob.set_val("reference_area", 8.0)
     prob.set_val("angular_velocity", [[0.0, 0.0, 0.0], [0.0, 0.1, -0.1]])

@@ -56,7 +56,9 @@ def test_partials():
 
 
 def test_bad_inputs():
-    with pytest.raises(om.AnalysisError, match=r"other_mass = \[-5.0\] kg; must be finite"):
+    with pytest.raises(om.AnalysisError, match=r"'other_mass\[0\]' = -5.0 is out of range: "
+                                               r"must be >= 0 \(kg\)"):
         run(other_mass=-5.0)
-    with pytest.raises(om.AnalysisError, match=r"motor_mass = .*nan"):
+    with pytest.raises(om.AnalysisError, match=r"'motor_mass\[0\]' = nan"
+                                               r" is out of range: must be a finite"):
         run(motor_mass=[np.nan] * 9)

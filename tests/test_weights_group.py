@@ -120,11 +120,13 @@ def test_totals():
 
 
 def test_bad_options():
-    with pytest.raises(ValueError, match=r"'wing_model' = 'beam'; allowed values are 'input'"):
+    with pytest.raises(ValueError, match=r"'wing_model' = 'beam' is not allowed: must be one of "
+                                         r"'input', 'regression'"):
         WeightsGroup(wing_model="beam")
-    with pytest.raises(ValueError, match=r"'other_mass' = -1.0 is outside the allowed range"):
+    with pytest.raises(ValueError, match=r"'other_mass' = -1.0 is out of range: must be >= 0"):
         WeightsGroup(other_mass=-1.0)
-    with pytest.raises(ValueError, match=r"'regression_mass_factor' = 0 is outside"):
+    with pytest.raises(ValueError, match=r"'regression_mass_factor' = 0 is out of "
+                                         r"range: must be > 0"):
         WeightsGroup(regression_mass_factor=0)
 
 

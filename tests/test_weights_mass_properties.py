@@ -110,16 +110,18 @@ def test_partials():
 
 
 def test_bad_inputs_and_options():
-    with pytest.raises(om.AnalysisError, match=r"motor_mass = \[1.0, -2.0\] kg; every mass "
-                                               r"must be >= 0"):
+    with pytest.raises(om.AnalysisError, match=r"'motor_mass\[1\]' = -2.0 is out of range: "
+                                               r"must be >= 0 \(kg\)"):
         run([MassItem("motor", count=2)], motor_mass=[1.0, -2.0])
-    with pytest.raises(om.AnalysisError, match=r"total mass = 0.0 kg; must be > 0"):
+    with pytest.raises(om.AnalysisError, match=r"'total mass' = 0.0 is out of range: "
+                                               r"must be > 0 \(kg\)"):
         run([MassItem("motor", count=2)], motor_mass=[0.0, 0.0])
-    with pytest.raises(om.AnalysisError, match="battery_cg = .* must be finite"):
+    with pytest.raises(om.AnalysisError, match=r"'battery_cg\[.*\]' = .* must be a finite number"):
         run([MassItem("battery")], battery_mass=1.0, battery_cg=[np.nan, 0.0, 0.0])
     with pytest.raises(ValueError, match=r"duplicate MassItem names \['a'\]"):
         MassPropertiesComp(items=[MassItem("a"), MassItem("a")])
-    with pytest.raises(ValueError, match=r"MassItem 'motor': count = 0; must be an integer"):
+    with pytest.raises(ValueError, match=r"MassItem 'motor': 'count' = 0 is out of range: "
+                                     r"must be >= 1"):
         MassItem("motor", count=0)
     with pytest.raises(ValueError, match=r"MassItem.name = 'wing mass'; must be a Python"):
         MassItem("wing mass")

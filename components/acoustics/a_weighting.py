@@ -3,6 +3,7 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_range
 from lpc_mdo.components.acoustics.common import DB_PER_NEPER
 
 # Pole frequencies of the IEC 61672-1 (Annex E) A-weighting, Hz.
@@ -34,9 +35,8 @@ def a_weighting(frequency):
     Examples: A(100) = -19.15, A(1000) = 0.0, A(10000) = -2.49 dB.
     """
     frequency = np.asarray(frequency)
-    if np.any(~(frequency.real > 0.0)):
-        raise ValueError(f"a_weighting: frequency must be > 0 Hz, got "
-                         f"{frequency.real[~(frequency.real > 0.0)].tolist()}.")
+    check_range("frequency", frequency, lower=0.0, lower_open=True, units="Hz",
+                where="a_weighting")
     return 2.0 * DB_PER_NEPER * (_log_response(frequency) - _LOG_RESPONSE_1000)
 
 
@@ -117,9 +117,8 @@ class AWeightingComp(om.ExplicitComponent):
     def compute(self, inputs, outputs):
         if self.options['frequencies'] is None:
             freq = inputs['frequency']
-            if np.any(~(freq.real > 0.0)):
-                raise om.AnalysisError(f"{self.msginfo}: 'frequency' must be > 0 Hz, got "
-                                       f"{freq.real[~(freq.real > 0.0)].tolist()}.")
+            check_range("frequency", freq, lower=0.0, lower_open=True, units="Hz",
+                        error=om.AnalysisError, where=self.msginfo)
             weights = a_weighting(freq)
         else:
             weights = self._weights

@@ -10,6 +10,7 @@ from lpc_mdo.components.acoustics.common import (
     nominal_third_octave_bands,
     radial_quadrature,
 )
+from lpc_mdo.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
 
 # Squared-length floor under sqrt(z**2) for a smooth |sin(theta_0)| (m**2).
 _EPS_Z2 = 1.0e-12
@@ -122,8 +123,9 @@ class GillLeeBroadbandComp(om.ExplicitComponent):
                                   ('thrust', 'N', 'Rotor thrust')):
             self.add_input(name, val=np.ones(nr), units=units, desc=desc)
         self.add_input('chord', val=np.full((nr, nrad), 0.1), units='m', desc='Blade chord')
-        self.add_input('density', val=1.225, units='kg/m**3', desc='Air density')
-        self.add_input('speed_of_sound', val=340.294, units='m/s', desc='Speed of sound')
+        self.add_input('density', val=SEA_LEVEL_DENSITY, units='kg/m**3', desc='Air density')
+        self.add_input('speed_of_sound', val=SEA_LEVEL_SPEED_OF_SOUND, units='m/s',
+                       desc='Speed of sound')
         self.add_input('distance', val=np.full(nr, 100.0), units='m',
                        desc='Hub-observer distance S')
         self.add_input('axial_distance', val=np.full(nr, -70.0), units='m',
@@ -153,7 +155,7 @@ class GillLeeBroadbandComp(om.ExplicitComponent):
     def _intermediates(self, inputs, grad):
         R = inputs['radius']
         rpm = inputs['rpm']
-        omega = rpm * (np.pi / 30.0)
+        omega = rpm * RPM_TO_RAD_S
         rho = inputs['density'][0]
         a = inputs['speed_of_sound'][0]
         S, z = inputs['distance'], inputs['axial_distance']
@@ -175,7 +177,7 @@ class GillLeeBroadbandComp(om.ExplicitComponent):
         one = np.ones_like(R)
         # d(intermediate)/d(base), each a dict base -> (nr,) array.
         d = {}
-        d['vtip'] = {'radius': omega * one, 'rpm': (np.pi / 30.0) * R,
+        d['vtip'] = {'radius': omega * one, 'rpm': RPM_TO_RAD_S * R,
                      'axial_speed': -va / speed, 'inplane_speed': -vp / speed}
         d['mt'] = {k: val / a for k, val in d['vtip'].items()}
         d['mt']['speed_of_sound'] = -v['mt'] / a
@@ -230,7 +232,7 @@ class GillLeeBroadbandComp(om.ExplicitComponent):
         return p, dpb
 
     def _edgewise(self, inputs):
-        omega_r = inputs['rpm'] * (np.pi / 30.0) * inputs['radius']
+        omega_r = inputs['rpm'] * RPM_TO_RAD_S * inputs['radius']
         mu = inputs['inplane_speed'] / omega_r
         t = np.tanh(1000.0 * (mu - 0.05))
         g = self._edge_slope * mu + self._edge_offset
@@ -290,7 +292,7 @@ class GillLeeBroadbandComp(om.ExplicitComponent):
         if self.options['edgewise_correction']:
             _, ddelta, mu = self._edgewise(inputs)
             dd = ddelta[:, None]
-            omega_r = inputs['rpm'] * (np.pi / 30.0) * inputs['radius']
+            omega_r = inputs['rpm'] * RPM_TO_RAD_S * inputs['radius']
             total['inplane_speed'] = total['inplane_speed'] + dd / omega_r[:, None]
             total['rpm'] = total['rpm'] - dd * (mu / inputs['rpm'])[:, None]
             total['radius'] = total['radius'] - dd * (mu / inputs['radius'])[:, None]

@@ -13,6 +13,8 @@ import numpy as np
 import openmdao.api as om
 from scipy.special import jv, yv
 
+from lpc_mdo.checks import check_integer, check_number, check_range, check_shape
+
 #: Reference pressure, Pa (20 uPa).
 P_REF = 2.0e-5
 #: Relative mean-square floor added inside every log10 (a -120 dB floor), see module docstring.
@@ -38,9 +40,8 @@ def nominal_third_octave_bands(num_bands, lowest=12.5):
                          f"frequency between 10 Hz and 800 kHz (e.g. 12.5, 16, 20, 25, 31.5 ...), "
                          f"got {lowest}.")
     start = matches[0]
-    if not 1 <= num_bands <= table.size - start:
-        raise ValueError(f"num_bands must be in [1, {table.size - start}] when starting at "
-                         f"{lowest} Hz, got {num_bands}.")
+    check_integer("num_bands", num_bands, lower=1, upper=table.size - start,
+                  allowed=f"in [1, {table.size - start}] when starting at {lowest} Hz")
     return table[start:start + num_bands].copy()
 
 
@@ -58,8 +59,7 @@ def radial_quadrature(num_radial, radial_stations=None, radial_weights=None,
     Raises ValueError naming the option if stations are not strictly increasing inside
     (hub_radius_ratio, 1], or weights are not positive or of the wrong length.
     """
-    if not 0.0 <= hub_radius_ratio < 1.0:
-        raise ValueError(f"hub_radius_ratio must be in [0, 1), got {hub_radius_ratio}.")
+    check_number("hub_radius_ratio", hub_radius_ratio, lower=0.0, upper=1.0, upper_open=True)
     if radial_stations is None:
         stations = hub_radius_ratio + (1.0 - hub_radius_ratio) * (
             np.arange(num_radial) + 0.5) / num_radial
@@ -78,9 +78,8 @@ def radial_quadrature(num_radial, radial_stations=None, radial_weights=None,
         weights = np.diff(edges)
     else:
         weights = np.asarray(radial_weights, dtype=float).ravel()
-        if weights.size != num_radial or np.any(weights <= 0.0):
-            raise ValueError(f"radial_weights must have num_radial = {num_radial} positive "
-                             f"entries, got {weights.tolist()}.")
+        check_shape("radial_weights", weights, (num_radial,))
+        check_range("radial_weights", weights, lower=0.0, lower_open=True)
     return stations, weights
 
 
@@ -102,10 +101,10 @@ def blade_counts(num_blades, num_rotors):
     counts = np.atleast_1d(np.asarray(num_blades))
     if counts.size == 1:
         counts = np.full(num_rotors, counts[0])
-    if (counts.size != num_rotors or not np.issubdtype(counts.dtype, np.integer)
-            or np.any(counts < 1)):
-        raise ValueError(f"num_blades must be an int >= 1 or a sequence of num_rotors = "
-                         f"{num_rotors} ints >= 1, got {num_blades!r}.")
+    if counts.size != num_rotors or not np.issubdtype(counts.dtype, np.integer):
+        raise ValueError(f"'num_blades' = {num_blades!r} is not allowed: must be an int >= 1 "
+                         f"or a sequence of num_rotors = {num_rotors} ints >= 1")
+    check_range("num_blades", counts, lower=1)
     return counts.astype(int)
 
 
@@ -114,23 +113,11 @@ def check_input_range(comp, name, value, lower=None, upper=None, lower_open=True
     """
     Raise om.AnalysisError if any entry of input ``name`` is not finite or lies outside the range.
 
-    Only the real part is checked, so the check is complex-step safe.
+    :func:`lpc_mdo.checks.check_range` with open bounds by default and the component's
+    ``msginfo`` in front; only the real part is checked, so the check is complex-step safe.
     """
-    val = np.asarray(value).real
-    bad = ~np.isfinite(val)
-    if lower is not None:
-        bad |= (val <= lower) if lower_open else (val < lower)
-    if upper is not None:
-        bad |= (val >= upper) if upper_open else (val > upper)
-    if np.any(bad):
-        lo = '(' if lower_open else '['
-        hi = ')' if upper_open else ']'
-        rng = (f"{lo}{'-inf' if lower is None else f'{lower:g}'}, "
-               f"{'inf' if upper is None else f'{upper:g}'}{hi}")
-        idx = np.argwhere(bad)
-        shown = ', '.join(f"{tuple(int(j) for j in i)}: {val[tuple(i)]:g}" for i in idx[:5])
-        raise om.AnalysisError(f"{comp.msginfo}: '{name}' is outside its valid range {rng} "
-                               f"at index {shown}" + (' ...' if len(idx) > 5 else '') + '.')
+    check_range(name, value, lower=lower, upper=upper, lower_open=lower_open,
+                upper_open=upper_open, error=om.AnalysisError, where=comp.msginfo)
 
 
 def spl_from_mean_square(mean_square):

@@ -3,12 +3,14 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_integer
 from lpc_mdo.components.acoustics.common import (
     blade_counts,
     check_input_range,
     declare_radial_options,
     radial_quadrature,
 )
+from lpc_mdo.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY
 
 
 def max_load_harmonics(num_azimuth):
@@ -73,9 +75,9 @@ class LoadFourierComp(om.ExplicitComponent):
         L = self.options['num_load_harmonics']
         if L is None:
             L = default_load_harmonics(naz)
-        if not 0 <= L <= max_load_harmonics(naz):
-            raise ValueError(f"{self.msginfo}: option 'num_load_harmonics' must be in "
-                             f"[0, (num_azimuth - 1)//2 = {max_load_harmonics(naz)}], got {L}.")
+        check_integer("num_load_harmonics", L, lower=0, upper=max_load_harmonics(naz),
+                      allowed=f"in [0, (num_azimuth - 1)//2 = {max_load_harmonics(naz)}]",
+                      where=self.msginfo)
         nl = L + 1
         psi = 2.0 * np.pi * np.arange(naz) / naz
         lam = np.arange(nl)
@@ -182,7 +184,7 @@ class HoverLoadDistributionComp(om.ExplicitComponent):
                                   ('radius', 'm', 'Rotor radius'),
                                   ('rpm', 'rpm', 'Rotor speed')):
             self.add_input(name, val=np.ones(nr), units=units, desc=desc)
-        self.add_input('density', val=1.225, units='kg/m**3', desc='Air density')
+        self.add_input('density', val=SEA_LEVEL_DENSITY, units='kg/m**3', desc='Air density')
         shape = (nr, nrad, 1)
         self.add_output('thrust_per_span', val=np.zeros(shape), units='N/m',
                         desc='Sectional thrust per unit span of one blade (assumed shape)')
@@ -205,7 +207,7 @@ class HoverLoadDistributionComp(om.ExplicitComponent):
     def _parts(self, inputs):
         rbar, w, B = self._rbar, self._w, self._blades
         R = inputs['radius']
-        omega = inputs['rpm'] * (np.pi / 30.0)
+        omega = inputs['rpm'] * RPM_TO_RAD_S
         ct = inputs['thrust'] / (inputs['density'][0] * np.pi * R**2 * (omega * R)**2)
         lam_h = np.sqrt(0.5 * ct)
         ratio = lam_h[:, None] / rbar[None, :]

@@ -4,6 +4,7 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.acoustics.common import check_input_range
+from lpc_mdo.constants import SEA_LEVEL_SPEED_OF_SOUND
 
 # Small squared lengths/speeds under square roots (smooth, complex-step safe magnitudes):
 # in-plane distance (m**2, as lsdo_acoustics) and in-plane speed ((m/s)**2).
@@ -194,7 +195,8 @@ class ObserverGeometryComp(om.ExplicitComponent):
                        units='m', desc='Observer position, body frame')
         self.add_input('flight_velocity', val=np.zeros(3), units='m/s',
                        desc='Vehicle velocity, body frame')
-        self.add_input('speed_of_sound', val=340.294, units='m/s', desc='Speed of sound')
+        self.add_input('speed_of_sound', val=SEA_LEVEL_SPEED_OF_SOUND, units='m/s',
+                       desc='Speed of sound')
 
         outs = {
             'distance': ('m', 'Hub-observer distance S'),

@@ -12,6 +12,7 @@ from lpc_mdo.components.acoustics.common import (
     radial_quadrature,
     spl_from_mean_square,
 )
+from lpc_mdo.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
 
 #: Airfoil cross-section area / (chord * thickness) (lsdo_acoustics; NACA 00xx: 0.685).
 SECTION_AREA_FACTOR = 0.6853
@@ -95,8 +96,9 @@ class BarryMagliozziThicknessComp(om.ExplicitComponent):
         self.add_input('chord', val=np.full((nr, nrad), 0.1), units='m', desc='Blade chord')
         self.add_input('thickness_to_chord', val=np.full((nr, nrad), 0.12), units=None,
                        desc='Section thickness-to-chord ratio t/c')
-        self.add_input('density', val=1.225, units='kg/m**3', desc='Air density')
-        self.add_input('speed_of_sound', val=340.294, units='m/s', desc='Speed of sound')
+        self.add_input('density', val=SEA_LEVEL_DENSITY, units='kg/m**3', desc='Air density')
+        self.add_input('speed_of_sound', val=SEA_LEVEL_SPEED_OF_SOUND, units='m/s',
+                       desc='Speed of sound')
         self.add_input('axial_distance', val=np.full(nr, -70.0), units='m',
                        desc='Observer distance along the thrust axis X')
         self.add_input('inplane_distance', val=np.full(nr, 70.0), units='m',
@@ -122,7 +124,7 @@ class BarryMagliozziThicknessComp(om.ExplicitComponent):
     def _evaluate(self, inputs, grad):
         rbar, w = self._rbar, self._w
         R = inputs['radius']
-        omega = inputs['rpm'] * (np.pi / 30.0)
+        omega = inputs['rpm'] * RPM_TO_RAD_S
         a = inputs['speed_of_sound'][0]
         rho = inputs['density'][0]
         X, Y = inputs['axial_distance'], inputs['inplane_distance']

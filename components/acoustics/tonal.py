@@ -13,6 +13,7 @@ from lpc_mdo.components.acoustics.common import (
     radial_quadrature,
     spl_from_mean_square,
 )
+from lpc_mdo.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
 
 #: Smooth switch between the Sears (hover) and unsteady (edgewise) loading-noise paths
 #: (docs theory/acoustics 'Tonal loading noise'): weight of the unsteady path 0.5 tanh(SHARPNESS (v
@@ -123,7 +124,7 @@ class SearsGustLoadsComp(om.ExplicitComponent):
         self.add_input('chord', val=np.full((nr, nrad), 0.1), units='m', desc='Blade chord')
         self.add_input('radius', val=np.ones(nr), units='m', desc='Rotor radius')
         self.add_input('rpm', val=np.full(nr, 1000.0), units='rpm', desc='Rotor speed')
-        self.add_input('density', val=1.225, units='kg/m**3', desc='Air density')
+        self.add_input('density', val=SEA_LEVEL_DENSITY, units='kg/m**3', desc='Air density')
 
         shape = (nr, nrad, ng)
         size = nr * nrad * ng
@@ -150,7 +151,7 @@ class SearsGustLoadsComp(om.ExplicitComponent):
         phi = np.mean(inputs['inflow_angle'], axis=2)[:, :, None]          # (nr, nrad, 1)
         chord = inputs['chord'][:, :, None]
         R = inputs['radius'][:, None, None]
-        omega = inputs['rpm'][:, None, None] * (np.pi / 30.0)
+        omega = inputs['rpm'][:, None, None] * RPM_TO_RAD_S
         rho = inputs['density'][0]
         k = lam * chord / (2.0 * rbar[None, :, None] * R)                   # (nr, nrad, ng)
         # L' = phi * amp with amp = pi rho q U_t**2 c/lambda.
@@ -440,7 +441,8 @@ class LowsonLoadingNoiseComp(om.ExplicitComponent):
 
         self.add_input('radius', val=np.ones(nr), units='m', desc='Rotor radius')
         self.add_input('rpm', val=np.full(nr, 1000.0), units='rpm', desc='Rotor speed')
-        self.add_input('speed_of_sound', val=340.294, units='m/s', desc='Speed of sound')
+        self.add_input('speed_of_sound', val=SEA_LEVEL_SPEED_OF_SOUND, units='m/s',
+                       desc='Speed of sound')
         for name, desc in (('axial_distance', 'Observer distance along the thrust axis z'),
                            ('inplane_distance', 'Observer distance from the thrust axis Y'),
                            ('convected_distance', 'Doppler-corrected distance r1')):
@@ -501,7 +503,7 @@ class LowsonLoadingNoiseComp(om.ExplicitComponent):
     # ------------------------------------------------------------------ evaluation helpers
     def _kinematics(self, inputs):
         R = inputs['radius']
-        omega = inputs['rpm'] * (np.pi / 30.0)
+        omega = inputs['rpm'] * RPM_TO_RAD_S
         a = inputs['speed_of_sound'][0]
         r1 = inputs['convected_distance']
         scale = omega * R / (a * r1)

@@ -9,8 +9,12 @@ safeguarded-Newton iteration between the stall angles of the airfoil at (Re, M)
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.numerics import safeguarded_newton
+
 from .airfoil import get_polar
 from .polar import LinearQuadraticPolar
+
+_EPS = np.finfo(float).eps
 
 _SCAN = np.radians(np.arange(-40.0, 40.0 + 1e-9, 0.25))
 
@@ -170,31 +174,15 @@ class AlphaStarComp(om.ImplicitComponent):
 
     def _bracketed_newton(self, target, re, m, a_lo, a_hi, f_lo, f_hi):
         """Solve cl(alpha) = target on [a_lo, a_hi] with cl(a_lo) < target < cl(a_hi)."""
-        tol = self.options["tolerance"]
-        f_lo, f_hi = f_lo - target, f_hi - target
-        x = a_lo - f_lo * (a_hi - a_lo) / (f_hi - f_lo)   # regula falsi start
-        done = np.zeros(x.shape, dtype=bool)
-        for _ in range(self.options["max_iter"]):
-            v = self._polar.evaluate(x, re, m)
-            f = v.cl - target
-            done = np.abs(f) <= tol
-            if np.all(done):
-                return x
-            neg = f < 0.0
-            a_lo = np.where(neg, x, a_lo)
-            a_hi = np.where(neg, a_hi, x)
-            slope = v.dcl_dalpha
-            with np.errstate(divide="ignore", invalid="ignore"):
-                newton = x - f / slope
-            ok = (slope > 0.0) & (newton > a_lo) & (newton < a_hi)
-            x_new = np.where(ok, newton, 0.5 * (a_lo + a_hi))
-            done |= (a_hi - a_lo) <= 4.0 * np.finfo(float).eps * np.maximum(1.0, np.abs(x))
-            x = np.where(done, x, x_new)
-            if np.all(done):
-                return x
-        raise om.AnalysisError(f"{self.msginfo}: alpha* solve did not converge in "
-                               f"{self.options['max_iter']} iterations at sections "
-                               f"{np.flatnonzero(~done).tolist()}")
+        def residual(alpha, idx):
+            v = self._polar.evaluate(alpha, re[idx], m[idx])
+            return v.cl - target[idx], v.dcl_dalpha
+
+        return safeguarded_newton(residual, a_lo, a_hi, f_lower=f_lo - target,
+                                  f_upper=f_hi - target, ftol=self.options["tolerance"],
+                                  xtol_abs=4.0 * _EPS, xtol_rel=4.0 * _EPS,
+                                  maxiter=self.options["max_iter"], indexed=True,
+                                  variable="alpha*", units="rad", where=self.msginfo)
 
     def linearize(self, inputs, outputs, partials):
         _, dg_da, dg_dre, dg_dm = self._lift(outputs["alpha_star"], inputs["reynolds"],

@@ -6,7 +6,10 @@ from dataclasses import dataclass
 import numpy as np
 import openmdao.api as om
 
-#: Default interference factor Q of every component (docs theory/aerodynamics 'Drag build-up').
+from lpc_mdo.checks import check_integer, check_number, check_range
+from lpc_mdo.constants import SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
+
+#: Default interference factor Q of every component (reference/models_aero_rotor_acoustics.md §5).
 DEFAULT_INTERFERENCE = 1.1
 #: Rotor drag area of the public LPC model (docs theory/aerodynamics 'Drag build-up'), m**2.
 LPC_ROTOR_DRAG_AREA = 0.111484
@@ -15,10 +18,7 @@ LPC_BOOM_DIAMETER = 0.3048
 
 
 def _check_fraction(owner, field, value, low=0.0, high=1.0, open_low=False):
-    ok = (low < value if open_low else low <= value) and value <= high
-    if not ok:
-        bracket = "(" if open_low else "["
-        raise ValueError(f"{owner}: {field} = {value!r}; must be in {bracket}{low}, {high}].")
+    check_number(field, value, lower=low, upper=high, lower_open=open_low, where=owner)
 
 
 @dataclass(frozen=True)
@@ -61,8 +61,8 @@ class LiftingSurfaceDrag:
         _check_fraction(owner, "laminar_fraction", self.laminar_fraction)
         _check_fraction(owner, "exposed_fraction", self.exposed_fraction, 0.0, 1.0, True)
         _check_fraction(owner, "interference_factor", self.interference_factor, 0.0, 10.0, True)
-        if not abs(self.sweep) < math.pi / 2:
-            raise ValueError(f"{owner}: sweep = {self.sweep!r} rad; must be in (-pi/2, pi/2).")
+        check_number("sweep", self.sweep, lower=-math.pi / 2, upper=math.pi / 2,
+                     lower_open=True, upper_open=True, units="rad", where=owner)
 
     @property
     def inputs(self):
@@ -189,8 +189,7 @@ class FixedFormFactorDrag:
         _check_fraction(owner, "laminar_fraction", self.laminar_fraction)
         _check_fraction(owner, "interference_factor", self.interference_factor, 0.0, 10.0, True)
         _check_fraction(owner, "form_factor", self.form_factor, 0.0, 10.0, True)
-        if isinstance(self.count, bool) or not isinstance(self.count, int) or self.count < 1:
-            raise ValueError(f"{owner}: count = {self.count!r}; must be an integer >= 1.")
+        check_integer("count", self.count, lower=1, where=owner)
 
     @property
     def inputs(self):
@@ -212,8 +211,8 @@ class FixedFormFactorDrag:
 
 def _check_positive(owner, pairs):
     for field, value in pairs:
-        if not value.real[0] > 0.0:
-            raise om.AnalysisError(f"{owner}_{field} = {value.real[0]:.6g}; must be > 0.")
+        check_range(f"{owner}_{field}", value, lower=0.0, lower_open=True,
+                    error=om.AnalysisError)
 
 
 _SPEC_TYPES = (LiftingSurfaceDrag, BodyDrag, FixedFormFactorDrag)
@@ -310,9 +309,9 @@ class DragBuildupComp(om.ExplicitComponent):
         self.add_input("reference_area", 1.0, units="m**2", desc="reference area of C_D0")
         for name, units, default, desc in (
                 ("speed", "m/s", 0.0, "airspeed"),
-                ("density", "kg/m**3", 1.225, "air density"),
+                ("density", "kg/m**3", SEA_LEVEL_DENSITY, "air density"),
                 ("dynamic_viscosity", "Pa*s", 1.7894e-5, "dynamic viscosity of air"),
-                ("speed_of_sound", "m/s", 340.294, "speed of sound"),
+                ("speed_of_sound", "m/s", SEA_LEVEL_SPEED_OF_SOUND, "speed of sound"),
                 ("angle_of_attack", "rad", 0.0, "angle of attack"),
                 ("sideslip_angle", "rad", 0.0, "sideslip angle")):
             self.add_input(name, np.full(nn, default), units=units, desc=desc)

@@ -5,6 +5,7 @@ import openmdao.api as om
 
 from lpc_mdo.components.aero.vlm_biot_savart import cross, skew
 from lpc_mdo.components.aero.vlm_lattice import Lattice, declare_lattice_options
+from lpc_mdo.constants import SEA_LEVEL_DENSITY
 
 
 class VLMPanelForcesComp(om.ExplicitComponent):
@@ -50,7 +51,8 @@ class VLMPanelForcesComp(om.ExplicitComponent):
                        desc="induced velocity at the force points")
         self.add_input("bound_vectors", np.zeros((npn, 3)), units="m",
                        desc="bound segment vectors")
-        self.add_input("density", np.full(nn, 1.225), units="kg/m**3", desc="air density")
+        self.add_input("density", np.full(nn, SEA_LEVEL_DENSITY), units="kg/m**3",
+                       desc="air density")
         self.add_output("panel_forces", np.zeros((nn, npn, 3)), units="N",
                         desc="Kutta-Joukowski force on each bound segment, body axes")
 

@@ -3,6 +3,7 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_range
 from lpc_mdo.components.aero.vlm_biot_savart import cross, skew
 
 
@@ -117,8 +118,8 @@ class VLMFreestreamComp(om.ExplicitComponent):
 
     def compute(self, inputs, outputs):
         speed = inputs["speed"]
-        if np.any(speed.real < 0.0):
-            raise om.AnalysisError(f"{self.msginfo}: speed = {speed.real} m/s; must be >= 0.")
+        check_range("speed", speed, lower=0.0, units="m/s", error=om.AnalysisError,
+                    where=self.msginfo)
         (e_d, e_l, e_y), _ = self._axes(inputs["angle_of_attack"], inputs["sideslip_angle"])
         outputs["freestream_direction"] = e_d
         outputs["lift_direction"] = e_l

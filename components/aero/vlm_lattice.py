@@ -23,6 +23,8 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 
+from lpc_mdo.checks import check_integer
+
 
 @dataclass(frozen=True)
 class VLMSurface:
@@ -52,9 +54,10 @@ class VLMSurface:
             raise ValueError(f"VLMSurface.name = {self.name!r}; must be a Python identifier.")
         for field in ("num_chord_panels", "num_span_panels"):
             value = getattr(self, field)
-            if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 1:
-                raise ValueError(f"VLMSurface '{self.name}': {field} = {value!r}; must be an "
-                                 "integer >= 1.")
+            if not isinstance(value, (int, np.integer)):
+                raise ValueError(f"VLMSurface '{self.name}': '{field}' must be an integer, got "
+                                 f"{type(value).__name__} {value!r}")
+            check_integer(field, value, lower=1, where=f"VLMSurface '{self.name}'")
 
     @property
     def mesh_shape(self):

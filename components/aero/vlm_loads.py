@@ -3,7 +3,9 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_range
 from lpc_mdo.components.aero.vlm_biot_savart import skew
+from lpc_mdo.constants import SEA_LEVEL_DENSITY
 
 #: Dynamic-pressure floor (Pa) of the coefficients, so that hover (V = 0) gives 0, not NaN.
 Q_FLOOR = 1.0e-10
@@ -71,7 +73,8 @@ class VLMLoadsComp(om.ExplicitComponent):
         self.add_input("side_direction", np.zeros((nn, 3)), units=None,
                        desc="side-force direction e_Y")
         self.add_input("speed", np.zeros(nn), units="m/s", desc="airspeed")
-        self.add_input("density", np.full(nn, 1.225), units="kg/m**3", desc="air density")
+        self.add_input("density", np.full(nn, SEA_LEVEL_DENSITY), units="kg/m**3",
+                       desc="air density")
         self.add_input("reference_area", 1.0, units="m**2",
                        desc="reference area of the coefficients")
 
@@ -123,9 +126,8 @@ class VLMLoadsComp(om.ExplicitComponent):
                               cols=np.zeros(nn, int))
 
     def compute(self, inputs, outputs):
-        if not inputs["reference_area"].real[0] > 0.0:
-            raise om.AnalysisError(f"{self.msginfo}: reference_area = "
-                                   f"{inputs['reference_area'].real[0]} m**2; must be > 0.")
+        check_range("reference_area", inputs["reference_area"][0], lower=0.0, lower_open=True,
+                    units="m**2", error=om.AnalysisError, where=self.msginfo)
         f_inv = np.sum(inputs["panel_forces"], axis=1)
         f_vis = np.sum(inputs["viscous_panel_forces"], axis=1)
         total = f_inv + f_vis

@@ -4,6 +4,7 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.aero.vlm_lattice import Lattice, declare_lattice_options
+from lpc_mdo.constants import SEA_LEVEL_DENSITY
 
 
 class VLMProfileDragComp(om.ExplicitComponent):
@@ -46,7 +47,8 @@ class VLMProfileDragComp(om.ExplicitComponent):
         npn = lat.num_panels
         self.add_input("panel_areas", np.zeros(npn), units="m**2", desc="panel areas")
         self.add_input("speed", np.zeros(nn), units="m/s", desc="airspeed")
-        self.add_input("density", np.full(nn, 1.225), units="kg/m**3", desc="air density")
+        self.add_input("density", np.full(nn, SEA_LEVEL_DENSITY), units="kg/m**3",
+                       desc="air density")
         self.add_input("freestream_direction", np.zeros((nn, 3)), units=None,
                        desc="unit vector along the relative wind")
         self.add_output("viscous_panel_forces", np.zeros((nn, npn, 3)), units="N",

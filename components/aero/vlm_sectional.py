@@ -6,6 +6,7 @@ import openmdao.api as om
 from lpc_mdo.components.aero.vlm_biot_savart import cross, dot, outer, skew
 from lpc_mdo.components.aero.vlm_lattice import Lattice, declare_lattice_options
 from lpc_mdo.components.aero.vlm_loads import Q_FLOOR
+from lpc_mdo.constants import SEA_LEVEL_DENSITY
 
 
 class VLMSectionalLiftComp(om.ExplicitComponent):
@@ -56,7 +57,8 @@ class VLMSectionalLiftComp(om.ExplicitComponent):
                        desc="unit vector along the relative wind")
         self.add_input("strip_areas", np.zeros(nst), units="m**2", desc="strip areas")
         self.add_input("speed", np.zeros(nn), units="m/s", desc="airspeed")
-        self.add_input("density", np.full(nn, 1.225), units="kg/m**3", desc="air density")
+        self.add_input("density", np.full(nn, SEA_LEVEL_DENSITY), units="kg/m**3",
+                       desc="air density")
 
         for isurf, s in enumerate(lat.surfaces):
             ns, nc = s.num_span_panels, s.num_chord_panels

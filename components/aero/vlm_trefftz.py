@@ -5,6 +5,7 @@ import openmdao.api as om
 
 from lpc_mdo.components.aero.vlm_biot_savart import cross, dot
 from lpc_mdo.components.aero.vlm_lattice import Lattice, declare_lattice_options
+from lpc_mdo.constants import SEA_LEVEL_DENSITY
 
 #: Squared core radius (m**2) of the 2-D Trefftz-plane vortices (finite if two legs coincide).
 TREFFTZ_CORE_SQ = 1.0e-12
@@ -57,7 +58,8 @@ class VLMTrefftzDragComp(om.ExplicitComponent):
                        desc="ring circulations")
         self.add_input("freestream_direction", np.zeros((nn, 3)), units=None,
                        desc="unit vector along the relative wind (wake direction)")
-        self.add_input("density", np.full(nn, 1.225), units="kg/m**3", desc="air density")
+        self.add_input("density", np.full(nn, SEA_LEVEL_DENSITY), units="kg/m**3",
+                       desc="air density")
         self.add_output("trefftz_induced_drag", np.zeros(nn), units="N",
                         desc="induced drag from the Trefftz plane")
         te = lat.te_panels

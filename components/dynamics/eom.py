@@ -3,7 +3,10 @@
 import numpy as np
 import openmdao.api as om
 
-GRAVITY = 9.81  # m/s**2, as in the reference model (docs theory/dynamics 'Gravity')
+from lpc_mdo.checks import check_range
+
+# GRAVITY is defined once in lpc_mdo.constants; importing it from this module keeps working.
+from lpc_mdo.constants import GRAVITY
 
 
 def _skew(v):
@@ -124,8 +127,8 @@ class EquationsOfMotionComp(om.ExplicitComponent):
 
     def compute(self, inputs, outputs):
         mass = inputs["mass"][0]
-        if mass.real <= 0.0:
-            raise om.AnalysisError(f"{self.msginfo}: mass = {mass.real} kg; must be > 0.")
+        check_range("mass", mass, lower=0.0, lower_open=True, units="kg",
+                    error=om.AnalysisError, where=self.msginfo)
         force, moment = inputs["force"], inputs["moment"]
         inertia = inputs["inertia"]
         inv = self._inverse_inertia(inertia)

@@ -3,6 +3,8 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_range
+
 
 class AnglePerturbationComp(om.ExplicitComponent):
     """
@@ -35,9 +37,8 @@ class AnglePerturbationComp(om.ExplicitComponent):
 
     def setup(self):
         nn = self.options["num_nodes"]
-        if not 0.0 < self.options["delta"] < 0.1:
-            raise ValueError(f"{self.msginfo}: delta = {self.options['delta']} rad; must be in "
-                             "(0, 0.1).")
+        check_range("delta", self.options["delta"], lower=0.0, upper=0.1, lower_open=True,
+                    upper_open=True, units="rad", where=self.msginfo)
         self.add_input("angle_of_attack", np.zeros(nn), units="rad", desc="angle of attack")
         self.add_output("perturbed_angle_of_attack", np.zeros(nn), units="rad",
                         desc="angle of attack plus the perturbation")

@@ -4,6 +4,8 @@ import numpy as np
 import openmdao.api as om
 from scipy.optimize import brentq
 
+from lpc_mdo.checks import check_range
+
 
 class NeutralPointComp(om.ImplicitComponent):
     """
@@ -116,9 +118,8 @@ class StaticMarginComp(om.ExplicitComponent):
 
     def compute(self, inputs, outputs):
         mac = inputs["mean_aerodynamic_chord"]
-        if mac.real[0] <= 0.0:
-            raise om.AnalysisError(f"{self.msginfo}: mean_aerodynamic_chord = {mac.real[0]} m; "
-                                   "must be > 0.")
+        check_range("mean_aerodynamic_chord", mac[0], lower=0.0, lower_open=True, units="m",
+                    error=om.AnalysisError, where=self.msginfo)
         outputs["static_margin"] = (inputs["cg_x"] - inputs["neutral_point"]) / mac
 
     def compute_partials(self, inputs, partials):

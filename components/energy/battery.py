@@ -2,6 +2,8 @@
 
 import openmdao.api as om
 
+from lpc_mdo.checks import check_range
+
 
 class BatteryComp(om.ExplicitComponent):
     """
@@ -56,13 +58,13 @@ class BatteryComp(om.ExplicitComponent):
     def compute(self, inputs, outputs):
         mass = inputs["battery_mass"]
         density = inputs["specific_energy"]
-        for name, value in (("battery_mass", mass), ("specific_energy", density)):
-            if value.real[0] <= 0.0:
-                raise om.AnalysisError(f"{self.msginfo}: {name} = {value.real[0]}; must be > 0.")
+        for name, value, units in (("battery_mass", mass, "kg"),
+                                   ("specific_energy", density, "J/kg")):
+            check_range(name, value[0], lower=0.0, lower_open=True, units=units,
+                        error=om.AnalysisError, where=self.msginfo)
         soc0 = inputs["initial_soc"]
-        if not 0.0 < soc0.real[0] <= 1.0:
-            raise om.AnalysisError(f"{self.msginfo}: initial_soc = {soc0.real[0]}; allowed: "
-                                   f"(0, 1].")
+        check_range("initial_soc", soc0[0], lower=0.0, upper=1.0, lower_open=True,
+                    error=om.AnalysisError, where=self.msginfo)
         capacity = mass * density
         outputs["energy_capacity"] = capacity
         outputs["state_of_charge"] = soc0 - inputs["energy_used"] / capacity

@@ -3,6 +3,8 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_range
+
 
 class MissionEnergyComp(om.ExplicitComponent):
     """
@@ -49,9 +51,10 @@ class MissionEnergyComp(om.ExplicitComponent):
 
     def setup(self):
         k = np.asarray(self.options["energy_multipliers"], dtype=float)
-        if k.ndim != 1 or k.size == 0 or np.any(k < 0.0) or not np.all(np.isfinite(k)):
-            raise ValueError(f"{self.msginfo}: energy_multipliers = {k.tolist()}; must be a "
-                             "non-empty 1-D sequence of finite values >= 0.")
+        if k.ndim != 1 or k.size == 0:
+            raise ValueError(f"{self.msginfo}: 'energy_multipliers' = {k.tolist()} is not "
+                             "allowed: must be a non-empty 1-D sequence of numbers >= 0")
+        check_range("energy_multipliers", k, lower=0.0, where=self.msginfo)
         self._k = k
         n = k.size
         self.add_input("electrical_power", np.zeros(n), units="W",

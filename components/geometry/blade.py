@@ -10,6 +10,7 @@ the rotor acoustics; keep them stable.
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_choice, check_integer, check_range
 from lpc_mdo.components.bspline import BsplineComp
 
 #: Radial-quadrature choices of :class:`BladeStationsComp` (docs theory/rotors 'Stations and disk
@@ -57,23 +58,12 @@ def per_rotor(value, num_rotors, name, kind=float, lower=None, upper=None, upper
     if arr.shape != (num_rotors,):
         raise ValueError(f"{where}option '{name}' = {np.asarray(value).tolist()} must be a "
                          f"scalar or have num_rotors = {num_rotors} entries.")
+    check_range(name, arr, lower=lower, upper=upper, upper_open=upper_open, where=owner)
     if kind is int:
-        if not np.all(np.isfinite(arr.astype(float))) or np.any(arr != np.round(arr)):
-            raise ValueError(f"{where}option '{name}' = {arr.tolist()} must hold integers.")
-        arr = arr.astype(int)
-    else:
-        arr = arr.astype(float)
-    bad = ~np.isfinite(arr.astype(float))
-    if lower is not None:
-        bad |= arr < lower
-    if upper is not None:
-        bad |= (arr >= upper) if upper_open else (arr > upper)
-    if np.any(bad):
-        hi = 'inf' if upper is None else f"{upper:g}"
-        rng = f"[{'-inf' if lower is None else f'{lower:g}'}, {hi}{')' if upper_open else ']'}"
-        raise ValueError(f"{where}option '{name}' = {arr.tolist()} is outside the allowed "
-                         f"range {rng}.")
-    return arr
+        for i, entry in enumerate(arr.tolist()):
+            check_integer(f"{name}[{i}]", entry, where=owner)
+        return arr.astype(int)
+    return arr.astype(float)
 
 
 def azimuth_angles(num_azimuth):
@@ -98,15 +88,13 @@ def station_fractions(num_radial, quadrature='midpoint'):
     -------
     eta, q : ndarray, (num_radial,)
     """
-    if quadrature not in QUADRATURES:
-        raise ValueError(f"option 'quadrature' = {quadrature!r}; allowed: {QUADRATURES}.")
+    check_choice("quadrature", quadrature, QUADRATURES)
     eta = (np.arange(num_radial) + 0.5) / num_radial
     if quadrature == 'midpoint':
         q = np.full(num_radial, 1.0 / num_radial)
     else:
-        if num_radial < 2:
-            raise ValueError("option 'num_radial' = 1 is outside the allowed range [2, inf) for "
-                             "quadrature 'bladead'.")
+        check_integer("num_radial", num_radial, lower=2,
+                      allowed=">= 2 (quadrature 'bladead')")
         q = np.full(num_radial, 1.0 / (num_radial - 1))
         q[[0, -1]] *= 0.5
     return eta, q

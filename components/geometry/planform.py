@@ -3,6 +3,8 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_integer
+
 SPACINGS = ("cosine", "uniform")
 
 
@@ -175,9 +177,8 @@ class PlanformMeshComp(om.ExplicitComponent):
 
 
 def _check_even(name, value):
-    if value % 2:
-        raise ValueError(f"PlanformMeshComp option '{name}' = {value}; must be even (a node "
-                         "on the root of the mirrored surface).")
+    check_integer(name, value, allowed="even (a node on the root of the mirrored surface)",
+                  upper=None if value % 2 == 0 else value - 1, where="PlanformMeshComp")
 
 
 def planform_values(surface):

@@ -3,6 +3,8 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_range
+
 
 class RotorLayoutComp(om.ExplicitComponent):
     """
@@ -31,16 +33,16 @@ class RotorLayoutComp(om.ExplicitComponent):
     ------
     wing_span : scalar, m
     fuselage_length : scalar, m
-    rotor_radius : (5,), m
-        Radius per rotor group: lift pairs 0..3 (front outer, rear outer, front inner,
-        rear inner), then the pusher.
+    rotor_radius : (num_pairs + 1,), m
+        Radius per rotor group: the lift pairs of ``vehicle.lift_rotor_pairs`` (reference
+        vehicle: 0..3 = front outer, rear outer, front inner, rear inner), then the pusher.
 
     Outputs
     -------
-    lift_hub_position : (8, 3), m
+    lift_hub_position : (num_lift, 3), m
         Hub positions of the lift rotors, body frame.
     pusher_hub_position : (3,), m
-    lift_rotor_radius : (8,), m
+    lift_rotor_radius : (num_lift,), m
         Radius of each lift rotor (its pair's).
     radius_intersection : (2,), - or m
         Front and rear values of the chosen definition.
@@ -72,8 +74,10 @@ class RotorLayoutComp(om.ExplicitComponent):
         self._sign = np.sign(attach[:, 1])
         half_span_ref = 0.5 * wing.span
         self._eta = np.abs(attach[:, 1]) / half_span_ref
-        self._direction = np.stack([np.full(8, np.tan(wing.sweep)), self._sign,
-                                    np.full(8, -np.tan(wing.dihedral))], axis=1)
+        num_lift = len(rotors)
+        num_pairs = len(vehicle.lift_rotor_pairs)
+        self._direction = np.stack([np.full(num_lift, np.tan(wing.sweep)), self._sign,
+                                    np.full(num_lift, -np.tan(wing.dihedral))], axis=1)
         # Position at span b: hub_ref + (eta b/2 - |y_ref|) * direction = base + b * slope.
         self._base = hubs - (np.abs(attach[:, 1]))[:, None] * self._direction
         self._slope = 0.5 * self._eta[:, None] * self._direction
@@ -85,7 +89,7 @@ class RotorLayoutComp(om.ExplicitComponent):
         self._outer = np.array([0, 1])
         left = self._sign < 0
         self._rotor_of_pair = np.array([np.flatnonzero(left & (self._pair == p))[0]
-                                        for p in range(4)])
+                                        for p in range(num_pairs)])
 
         self.add_input("wing_span", wing.span, units="m", desc="wing span")
         self.add_input("fuselage_length", vehicle.fuselage.length, units="m",
@@ -103,7 +107,7 @@ class RotorLayoutComp(om.ExplicitComponent):
         self.add_output("lift_hub_position", hubs, units="m", desc="lift-rotor hubs, body frame")
         self.add_output("pusher_hub_position", np.array(vehicle.pusher.hub_position), units="m",
                         desc="pusher hub, body frame")
-        self.add_output("lift_rotor_radius", np.full(8, 1.0), units="m",
+        self.add_output("lift_rotor_radius", np.full(num_lift, 1.0), units="m",
                         desc="radius of each lift rotor")
         self.add_output("radius_intersection", np.zeros(2),
                         units="m" if definition == "clearance" else None,
@@ -112,7 +116,7 @@ class RotorLayoutComp(om.ExplicitComponent):
         self.declare_partials("lift_hub_position", "wing_span", val=self._slope.ravel())
         self.declare_partials("pusher_hub_position", "fuselage_length", rows=[0], cols=[0],
                               val=-1.0)
-        self.declare_partials("lift_rotor_radius", "rotor_radius", rows=np.arange(8),
+        self.declare_partials("lift_rotor_radius", "rotor_radius", rows=np.arange(num_lift),
                               cols=self._pair, val=1.0)
         rows = np.array([0, 0, 1, 1])
         cols = np.array([self._inner[0], self._outer[0], self._inner[1], self._outer[1]])
@@ -126,8 +130,8 @@ class RotorLayoutComp(om.ExplicitComponent):
 
     def compute(self, inputs, outputs):
         span = inputs["wing_span"][0]
-        if span.real <= 0.0:
-            raise om.AnalysisError(f"{self.msginfo}: wing_span = {span.real} m; must be > 0.")
+        check_range("wing_span", span, lower=0.0, lower_open=True, units="m",
+                    error=om.AnalysisError, where=self.msginfo)
         radius = inputs["rotor_radius"]
         outputs["lift_hub_position"] = self._base + span * self._slope
         outputs["pusher_hub_position"] = self._pusher_offset - np.array(
@@ -143,6 +147,8 @@ class RotorLayoutComp(om.ExplicitComponent):
         span = inputs["wing_span"][0]
         radius = inputs["rotor_radius"]
         if self._definition == "span_fraction":
-            partials["radius_intersection", "rotor_radius"] = np.full(4, 1.0 / span)
+            partials["radius_intersection", "rotor_radius"] = np.full(self._inner.size
+                                                                      + self._outer.size,
+                                                                      1.0 / span)
             pair_sum = radius[self._inner] + radius[self._outer]
             partials["radius_intersection", "wing_span"] = -pair_sum / span**2

@@ -3,6 +3,8 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_range
+
 
 class SurfaceSizingComp(om.ExplicitComponent):
     """
@@ -37,8 +39,8 @@ class SurfaceSizingComp(om.ExplicitComponent):
 
     def setup(self):
         taper = self.options["taper_ratio"]
-        if taper <= 0.0:
-            raise ValueError(f"{self.msginfo}: taper_ratio = {taper}; must be in (0, 1].")
+        check_range("taper_ratio", taper, lower=0.0, upper=1.0, lower_open=True,
+                    where=self.msginfo)
         self.add_input("area", 1.0, units="m**2", desc="planform reference area")
         self.add_input("aspect_ratio", 1.0, units=None, desc="aspect ratio b^2/S")
         self.add_output("span", 1.0, units="m", desc="span")
@@ -49,9 +51,9 @@ class SurfaceSizingComp(om.ExplicitComponent):
 
     def compute(self, inputs, outputs):
         area, ar = inputs["area"], inputs["aspect_ratio"]
-        for name, value in (("area", area), ("aspect_ratio", ar)):
-            if value.real[0] <= 0.0:
-                raise om.AnalysisError(f"{self.msginfo}: {name} = {value.real[0]}; must be > 0.")
+        for name, value, units in (("area", area, "m**2"), ("aspect_ratio", ar, None)):
+            check_range(name, value[0], lower=0.0, lower_open=True, units=units,
+                        error=om.AnalysisError, where=self.msginfo)
         lam = self.options["taper_ratio"]
         # c_root = 2 S/((1+lam) b) = 2 sqrt(S/AR)/(1+lam)
         root = 2.0 * np.sqrt(area / ar) / (1.0 + lam)

@@ -12,13 +12,13 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.motor._numerics import (
-    bisect,
     complex_step_partials,
     declare_pointwise_partials,
     polish_complex,
     state_derivative,
 )
 from lpc_mdo.components.motor.parameters import MotorParameters
+from lpc_mdo.numerics import safeguarded_newton
 
 
 def _declare_common_options(comp, per_node):
@@ -142,8 +142,9 @@ class PointwiseImplicitComp(om.ImplicitComponent):
     def _solve(self, real):
         """Real root of the residual for the real inputs ``real`` (default: bisection)."""
         lower, upper = self._bracket(real)
-        return bisect(lambda x: self._residual(real, x), lower, upper, owner=self.msginfo,
-                      variable=self._state_name, units=self._state_units)
+        return safeguarded_newton(lambda x: (self._residual(real, x), None), lower, upper,
+                                  maxiter=200, variable=self._state_name,
+                                  units=self._state_units, where=self.msginfo)
 
     def linearize(self, inputs, outputs, partials):
         name = self._state_name

@@ -18,9 +18,10 @@ air-gap flux instead, Psi_F would be 9.7 % lower (0.2706 Wb) than the reference 
 """
 
 import numpy as np
+from openmdao.api import AnalysisError
 
+from lpc_mdo.checks import check_range
 from lpc_mdo.components.motor import parameters as mp
-from lpc_mdo.components.motor._numerics import check_range
 from lpc_mdo.components.motor._pointwise import PointwiseExplicitComp, PointwiseImplicitComp
 
 
@@ -147,8 +148,8 @@ class MotorECMParametersComp(PointwiseExplicitComp):
     }
 
     def _check_values(self, values):
-        check_range(self.msginfo, 'rotor_diameter', values['rotor_diameter'], 'm',
-                    lower=mp.MAGNET_EMBED_DEPTH)
+        check_range('rotor_diameter', values['rotor_diameter'], lower=mp.MAGNET_EMBED_DEPTH,
+                    lower_open=True, units='m', error=AnalysisError, where=self.msginfo)
 
     def _evaluate(self, v):
         par = self.options['parameters']

@@ -3,21 +3,22 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_range
 from lpc_mdo.components.motor import parameters as mp
 from lpc_mdo.components.motor._numerics import (
     CS_STEP,
-    check_range,
     check_saliency,
     declare_pointwise_partials,
-    newton_bracketed,
 )
 from lpc_mdo.components.motor._pointwise import PointwiseImplicitComp
 from lpc_mdo.components.motor.mtpa import mtpa_base, mtpa_current_pu
 from lpc_mdo.components.motor.parameters import MotorParameters
+from lpc_mdo.constants import RPM_TO_RAD_S
+from lpc_mdo.numerics import safeguarded_newton
 
 _WINDAGE_COEFFICIENT = (mp.ROTOR_ROUGHNESS * np.pi * mp.ROTOR_FRICTION * mp.WINDAGE_AIR_DENSITY
                         * (2.0 * np.pi) ** 2)  # P_w = C f**2 l D_2**4
-_RPM_TO_RAD_S = 2.0 * np.pi / 60.0
+_RPM_TO_RAD_S = RPM_TO_RAD_S
 
 
 def _declare_shape_options(comp):
@@ -277,7 +278,8 @@ class MotorLossComp(om.ExplicitComponent):
 
     def compute(self, inputs, outputs):
         for name, units, _, _ in self._node_inputs:
-            check_range(self.msginfo, name, inputs[name], units, lower=0.0)
+            check_range(name, inputs[name], lower=0.0, lower_open=True,
+                        units=units, error=om.AnalysisError, where=self.msginfo)
         for name, value in loss_model(self._values(inputs), self.options['parameters']).items():
             outputs[name] = value
 
@@ -353,8 +355,10 @@ class EMTorqueComp(PointwiseImplicitComp):
     _maxiter = 100
 
     def _check_values(self, values):
-        check_range(self.msginfo, 'rotor_torque', values['rotor_torque'], 'N*m', lower=0.0)
-        check_range(self.msginfo, 'rotor_rpm', values['rotor_rpm'], 'rpm', lower=0.0)
+        check_range('rotor_torque', values['rotor_torque'], lower=0.0, lower_open=True,
+                    units='N*m', error=om.AnalysisError, where=self.msginfo)
+        check_range('rotor_rpm', values['rotor_rpm'], lower=0.0, lower_open=True,
+                    units='rpm', error=om.AnalysisError, where=self.msginfo)
         check_saliency(
             self.msginfo, values['inductance_d'], values['inductance_q'],
             lambda idx: (f' (length {values["length"].real[idx].tolist()} m) is outside the '
@@ -420,8 +424,8 @@ class EMTorqueComp(PointwiseImplicitComp):
                 return torque
         if np.all(np.isfinite(upper)):
             # Slow convergence: finish on the brackets.
-            return newton_bracketed(balance, lower, upper, owner=self.msginfo,
-                                    variable='em_torque', units='N*m')
+            return safeguarded_newton(balance, lower, upper, where=self.msginfo,
+                                      variable='em_torque', units='N*m')
         raise om.AnalysisError(f'{self.msginfo}: the em_torque Newton iteration did not '
                                f'converge in {self._maxiter} iterations.')
 
@@ -515,7 +519,8 @@ class MotorMarginComp(om.ExplicitComponent):
                                   rows=rows, cols=rows)
 
     def compute(self, inputs, outputs):
-        check_range(self.msginfo, 'em_torque', inputs['em_torque'], 'N*m', lower=0.0)
+        check_range('em_torque', inputs['em_torque'], lower=0.0, lower_open=True,
+                    units='N*m', error=om.AnalysisError, where=self.msginfo)
         v_lim = self.options['parameters'].voltage_limit
         torque = inputs['em_torque']
         outputs['torque_margin'] = inputs['peak_torque'][:, np.newaxis] / torque - 1.0

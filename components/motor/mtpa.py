@@ -3,8 +3,10 @@
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.components.motor._numerics import check_range, check_saliency, newton_bracketed
+from lpc_mdo.checks import check_range
+from lpc_mdo.components.motor._numerics import check_saliency
 from lpc_mdo.components.motor.parameters import MotorParameters
+from lpc_mdo.numerics import safeguarded_newton
 
 
 def mtpa_base(flux_linkage, inductance_d, inductance_q, pole_pairs):
@@ -35,9 +37,9 @@ def mtpa_current_pu(torque_pu, owner='MTPA'):
     torque_pu = np.asarray(torque_pu)
     t_real = torque_pu.real
     upper = np.minimum(t_real, np.sqrt(t_real))
-    current_pu = newton_bracketed(
+    current_pu = safeguarded_newton(
         lambda x: (mtpa_residual(x, t_real), 4.0 * x ** 3 + t_real),
-        np.zeros_like(t_real), upper, owner=owner, variable='current_q (per unit)')
+        np.zeros_like(t_real), upper, where=owner, variable='current_q (per unit)')
     if np.iscomplexobj(torque_pu):
         current_pu = current_pu - (mtpa_residual(current_pu, torque_pu)
                                    / (4.0 * current_pu ** 3 + t_real))
@@ -126,9 +128,12 @@ class MTPAComp(om.ImplicitComponent):
         return current_q / i_base, inputs['em_torque'] / t_base, i_base, t_base
 
     def _check_values(self, inputs):
-        check_range(self.msginfo, 'em_torque', inputs['em_torque'], 'N*m', lower=0.0)
-        check_range(self.msginfo, 'flux_linkage', inputs['flux_linkage'], 'Wb', lower=0.0)
-        check_range(self.msginfo, 'inductance_d', inputs['inductance_d'], 'H', lower=0.0)
+        check_range('em_torque', inputs['em_torque'], lower=0.0, lower_open=True,
+                    units='N*m', error=om.AnalysisError, where=self.msginfo)
+        check_range('flux_linkage', inputs['flux_linkage'], lower=0.0, lower_open=True,
+                    units='Wb', error=om.AnalysisError, where=self.msginfo)
+        check_range('inductance_d', inputs['inductance_d'], lower=0.0, lower_open=True,
+                    units='H', error=om.AnalysisError, where=self.msginfo)
         check_saliency(self.msginfo, inputs['inductance_d'], inputs['inductance_q'],
                        ' is outside the allowed range (0, inf): the MTPA quartic needs '
                        'L_q > L_d.')

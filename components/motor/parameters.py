@@ -7,10 +7,12 @@ circuit', 'Inductances') and loss model (docs theory/motor 'Losses and efficienc
 constants, named by their physical meaning with the reference symbol in the comment.
 """
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
+
+from lpc_mdo.checks import check_integer, check_number
+from lpc_mdo.constants import SEA_LEVEL_DENSITY
 
 MU_0 = 4.0e-7 * np.pi  # vacuum permeability, H/m
 
@@ -69,7 +71,7 @@ HYSTERESIS_COEFFICIENT = 100.0  # K_h (n_h = 2)
 STRAY_LOSS_FRACTION = 0.01  # P_stress = 0.01 P_0
 ROTOR_ROUGHNESS = 4.0  # k_r
 ROTOR_FRICTION = 3.0e-3  # f_r
-WINDAGE_AIR_DENSITY = 1.225  # rho_air, kg/m**3
+WINDAGE_AIR_DENSITY = SEA_LEVEL_DENSITY  # rho_air, kg/m**3
 MECHANICAL_LOSS = 100.0  # P_m, W
 
 
@@ -93,10 +95,7 @@ def bridge_flux_density(h):
     return 1.92052530e-3 * np.tanh(h / 300.0 - 0.25) + 0.4
 
 
-def _check(name, value, ok, allowed):
-    if not ok:
-        raise ValueError(f"MotorParameters field '{name}' = {value!r} is outside the allowed "
-                         f"range {allowed}.")
+_WHERE = "MotorParameters"
 
 
 @dataclass(frozen=True)
@@ -145,26 +144,29 @@ class MotorParameters:
     def __post_init__(self):
         for name in ('pole_pairs', 'phases', 'num_slots'):
             value = getattr(self, name)
-            _check(name, value, isinstance(value, (int, np.integer)) and not isinstance(
-                value, bool) and value >= 1, 'integer >= 1')
+            if not isinstance(value, (int, np.integer)):
+                raise ValueError(f"{_WHERE}: '{name}' must be an integer, got "
+                                 f"{type(value).__name__} {value!r}")
+            check_integer(name, value, lower=1, where=_WHERE)
         for name in ('rated_current', 'voltage_limit', 'gear_ratio', 'rated_speed',
                      'torque_density'):
-            value = getattr(self, name)
-            _check(name, value, isinstance(value, (int, float, np.number))
-                   and not isinstance(value, bool) and math.isfinite(value) and value > 0.0,
-                   '(0, inf)')
+            check_number(name, getattr(self, name), lower=0.0, lower_open=True, where=_WHERE)
         coeffs = self.peak_torque_coefficients
-        _check('peak_torque_coefficients', coeffs,
-               isinstance(coeffs, (tuple, list)) and len(coeffs) >= 1
-               and all(isinstance(c, (int, float)) and math.isfinite(c) for c in coeffs),
-               'a non-empty tuple of finite floats (highest power first)')
+        if not isinstance(coeffs, (tuple, list)) or len(coeffs) < 1:
+            raise ValueError(f"{_WHERE}: 'peak_torque_coefficients' = {coeffs!r} is not "
+                             "allowed: must be a non-empty tuple of finite floats (highest "
+                             "power first)")
+        for i, c in enumerate(coeffs):
+            check_number(f"peak_torque_coefficients[{i}]", c, where=_WHERE)
         t = self.magnet_temperature
-        _check('magnet_temperature', t, isinstance(t, (int, float)) and -50.0 <= t <= 200.0,
-               '[-50, 200] deg C')
+        check_number('magnet_temperature', t, lower=-50.0, upper=200.0, units='degC',
+                     where=_WHERE)
         q = self.num_slots / (2 * self.phases * self.pole_pairs)
-        _check('num_slots', self.num_slots, q >= 1.0 and float(q).is_integer(),
-               f'multiples of 2*phases*pole_pairs = {2 * self.phases * self.pole_pairs} '
-               '(integral-slot winding, q = Z/(2 m p) integer)')
+        if not (q >= 1.0 and float(q).is_integer()):
+            raise ValueError(f"{_WHERE}: 'num_slots' = {self.num_slots!r} is not allowed: must "
+                             f"be a multiple of 2*phases*pole_pairs = "
+                             f"{2 * self.phases * self.pole_pairs} (integral-slot winding, "
+                             "q = Z/(2 m p) integer)")
 
     @property
     def slots_per_pole_per_phase(self):

@@ -3,8 +3,8 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import RangeCheck, check_range
 from lpc_mdo.components.motor import parameters as mp
-from lpc_mdo.components.motor._numerics import check_range
 from lpc_mdo.components.motor.parameters import MotorParameters
 
 # (name, units, description) of the geometry outputs, in output order.
@@ -137,12 +137,15 @@ class MotorSizingComp(om.ExplicitComponent):
         return inputs['length'] / ratio
 
     def _check_inputs(self, inputs):
-        check_range(self.msginfo, 'length', inputs['length'], 'm', lower=0.0)
+        check_range('length', inputs['length'], lower=0.0, lower_open=True,
+                    units='m', error=om.AnalysisError, where=self.msginfo)
         if self.options['length_to_diameter'] is None:
-            check_range(self.msginfo, 'diameter', inputs['diameter'], 'm', lower=0.0)
-        check_range(self.msginfo, 'electric_loading', inputs['electric_loading'], 'A/m',
-                    lower=0.0)
-        check_range(self.msginfo, 'magnetic_loading', inputs['magnetic_loading'], 'T', lower=0.0)
+            check_range('diameter', inputs['diameter'], lower=0.0, lower_open=True,
+                        units='m', error=om.AnalysisError, where=self.msginfo)
+        check_range('electric_loading', inputs['electric_loading'], lower=0.0, lower_open=True,
+                    units='A/m', error=om.AnalysisError, where=self.msginfo)
+        check_range('magnetic_loading', inputs['magnetic_loading'], lower=0.0, lower_open=True,
+                    units='T', error=om.AnalysisError, where=self.msginfo)
 
     def _geometry(self, diameter, electric_loading):
         """Return {name: (value, d/dD, d/dA_bar)} of the geometry outputs."""
@@ -225,7 +228,4 @@ class MotorSizingComp(om.ExplicitComponent):
                 partials[name, 'electric_loading'] = d_da
 
 
-def _check_ratio(name, value):
-    if value is not None and not (np.isfinite(value) and value > 0.0):
-        raise ValueError(f"MotorSizingComp option '{name}' = {value!r} is outside the allowed "
-                         "range (0, inf) (or None to make diameter an input).")
+_check_ratio = RangeCheck(lower=0.0, lower_open=True, where="MotorSizingComp")

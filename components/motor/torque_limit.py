@@ -3,7 +3,7 @@
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.components.motor._numerics import check_range
+from lpc_mdo.checks import check_range
 from lpc_mdo.components.motor._pointwise import PointwiseImplicitComp
 
 _MAX_DOUBLINGS = 200
@@ -110,10 +110,12 @@ class TorqueLimitComp(PointwiseImplicitComp):
     _state_ref = 100.0
 
     def _check_values(self, values):
-        check_range(self.msginfo, 'rotor_rpm', values['rotor_rpm'], 'rpm', lower=0.0)
+        check_range('rotor_rpm', values['rotor_rpm'], lower=0.0, lower_open=True,
+                    units='rpm', error=om.AnalysisError, where=self.msginfo)
         for name, units in (('resistance', 'ohm'), ('inductance_d', 'H'), ('inductance_q', 'H'),
                             ('flux_linkage', 'Wb')):
-            check_range(self.msginfo, name, values[name], units, lower=0.0)
+            check_range(name, values[name], lower=0.0, lower_open=True,
+                        units=units, error=om.AnalysisError, where=self.msginfo)
 
     def _residual(self, v, torque):
         scale, b, c, d, e = _quartic(v, self.options['parameters'])

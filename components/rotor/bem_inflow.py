@@ -55,14 +55,17 @@ continuous with hover. The reference model (docs theory/rotors 'BEM inflow resid
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_range
 from lpc_mdo.components.aero.polar import LinearQuadraticPolar, Polar
 from lpc_mdo.components.geometry.blade import per_rotor
+from lpc_mdo.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
+from lpc_mdo.numerics import safeguarded_newton
 
 #: Tip-loss forms (docs theory/rotors 'BEM inflow residual'; 'bladead' divides by R instead of r,
 #: docs theory/rotors 'Public-code compatibility').
 TIP_LOSS_FORMS = ('classical', 'bladead')
 
-_RPM_TO_RAD_S = np.pi / 30.0
+_RPM_TO_RAD_S = RPM_TO_RAD_S
 _TWO_OVER_PI = 2.0 / np.pi
 _ABS_SIN_FLOOR = 1.0e-9      # |sin phi| floor in the Prandtl exponent (F = 1 to all digits there)
 _GRID_INTERVALS = 12         # bracket-search intervals per quadrant (7.5 deg)
@@ -87,8 +90,8 @@ SECTION_INPUTS = {
     'chord': ('rotor_station', 'm', 0.1, 'Blade chord at the stations'),
     'twist': ('rotor_station', 'rad', 0.2,
               'Blade twist (pitch to the rotor plane) at the stations'),
-    'density': ('node', 'kg/m**3', 1.225, 'Air density'),
-    'speed_of_sound': ('node', 'm/s', 340.294, 'Speed of sound'),
+    'density': ('node', 'kg/m**3', SEA_LEVEL_DENSITY, 'Air density'),
+    'speed_of_sound': ('node', 'm/s', SEA_LEVEL_SPEED_OF_SOUND, 'Speed of sound'),
     'dynamic_viscosity': ('node', 'Pa*s', 1.7894e-5, 'Dynamic viscosity of air'),
 }
 
@@ -141,34 +144,30 @@ def add_section_inputs(comp, num_rotors, num_nodes, num_radial):
         comp.add_input(name, val=np.array(val, dtype=float), units=units, desc=desc)
 
 
-def check_section_inputs(comp, inputs, hub_loss):
+def check_section_inputs(comp, inputs, hub_loss, names=None,
+                         positive=('rpm', 'radius', 'chord', 'density', 'speed_of_sound',
+                                   'dynamic_viscosity')):
     """
-    Check the physical range of the sectional inputs.
+    Check the physical range of the sectional inputs of a rotor component (BEM or Pitt-Peters).
 
-    Raise om.AnalysisError naming the field, the offending value and the allowed range (these
-    may come from an optimizer).
+    Every input of ``names`` (a table like :data:`SECTION_INPUTS`, the default) must be finite,
+    those of ``positive`` > 0, ``0 < hub_radius < radius`` (``0 <=`` without hub loss) and
+    ``hub_radius < station_radius < radius``; otherwise om.AnalysisError names the input, the
+    first offending entry and the allowed range (:func:`lpc_mdo.checks.check_range`; the
+    values may come from an optimizer).
     """
-    def fail(name, values, allowed):
-        raise om.AnalysisError(f"{comp.msginfo}: input '{name}' = {np.asarray(values).tolist()} "
-                               f"is outside the allowed range {allowed}.")
+    def check(name, **bounds):
+        check_range(name, inputs[name], error=om.AnalysisError, where=comp.msginfo, **bounds)
 
-    for name in SECTION_INPUTS:
-        value = inputs[name].real
-        if not np.all(np.isfinite(value)):
-            fail(name, value[~np.isfinite(value)], '(finite values)')
-    for name in ('rpm', 'radius', 'chord', 'density', 'speed_of_sound', 'dynamic_viscosity'):
-        value = inputs[name].real
-        if np.any(value <= 0.0):
-            fail(name, value[value <= 0.0], '(0, inf)')
-    rh, big_r = inputs['hub_radius'].real, inputs['radius'].real
-    bad = ((rh <= 0.0) if hub_loss else (rh < 0.0)) | (rh >= big_r)
-    if np.any(bad):
-        fail('hub_radius', rh[bad], '(0, radius)' if hub_loss else '[0, radius)')
-    r = inputs['station_radius'].real
-    bad = (r <= rh[:, None]) | (r >= big_r[:, None])
-    if np.any(bad):
-        rotor = np.flatnonzero(np.any(bad, axis=1))
-        fail('station_radius', r[bad], f"(hub_radius, radius) (rotors {rotor.tolist()})")
+    table = SECTION_INPUTS if names is None else names
+    for name in table:
+        check(name)
+    for name in positive:
+        check(name, lower=0.0, lower_open=True, units=table[name][1])
+    rh, big_r = np.real(inputs['hub_radius']), np.real(inputs['radius'])
+    check('hub_radius', lower=0.0, upper=big_r, lower_open=hub_loss, upper_open=True, units='m')
+    check('station_radius', lower=rh[:, None], upper=big_r[:, None], lower_open=True,
+          upper_open=True, units='m')
 
 
 def _cs_sign(x):
@@ -423,45 +422,18 @@ class BEMSections:
         return self._refine(lo, hi, f_lo, f_hi, owner)
 
     def _refine(self, lo, hi, f_lo, f_hi, owner):
-        """Vectorized safeguarded Newton (rtsafe) inside the brackets [lo, hi]."""
-        n = self.size
-        phi = np.empty(n)
-        exact = f_lo == 0.0
-        phi[exact] = lo[exact]
-        exact_hi = (f_hi == 0.0) & ~exact
-        phi[exact_hi] = hi[exact_hi]
-        act = np.flatnonzero(~(exact | exact_hi))
-        lo, hi, f_lo = lo[act], hi[act], f_lo[act]
-        denom = f_hi[act] - f_lo
-        x = np.where(denom != 0.0, lo - f_lo * (hi - lo) / np.where(denom != 0.0, denom, 1.0),
-                     0.5 * (lo + hi))
-        x = np.where((x > lo) & (x < hi), x, 0.5 * (lo + hi))
-        step_old = hi - lo
-        for _ in range(_MAX_ITER):
-            if act.size == 0:
-                break
-            st = self.evaluate(x, act)
-            f = st['res']
-            df = self.tangent(st, {'inflow_angle': 1.0})
-            low_side = np.sign(f) == np.sign(f_lo)
-            lo = np.where(low_side, x, lo)
-            f_lo = np.where(low_side, f, f_lo)
-            hi = np.where(low_side, hi, x)
-            with np.errstate(divide='ignore', invalid='ignore'):
-                step = f / df
-            x_newton = x - step
-            small = np.abs(step) <= _PHI_TOL
-            narrow = hi - lo <= _PHI_TOL
-            done = (f == 0.0) | small | narrow
-            phi[act[done]] = np.where(f == 0.0, x, np.where(small, x_newton, 0.5 * (lo + hi)))[done]
-            newton = (np.isfinite(x_newton) & (x_newton > lo) & (x_newton < hi)
-                      & (np.abs(step) < 0.5 * np.abs(step_old)))
-            x_new = np.where(newton, x_newton, 0.5 * (lo + hi))
-            step_old = np.where(newton, step, 0.5 * (hi - lo))
-            keep = ~done
-            act, x, lo, hi, f_lo, step_old = (v[keep] for v in (act, x_new, lo, hi, f_lo, step_old))
-        if act.size:
-            self._fail(act, f'no convergence in {_MAX_ITER} iterations', owner)
+        """Safeguarded Newton (:func:`lpc_mdo.numerics.safeguarded_newton`) in [lo, hi]."""
+        def residual(phi, idx):
+            st = self.evaluate(phi, idx)
+            return st['res'], self.tangent(st, {'inflow_angle': 1.0})
+
+        def fail(stations, why):
+            self._fail(stations, why, owner)
+
+        phi = safeguarded_newton(residual, lo, hi, f_lower=f_lo, f_upper=f_hi,
+                                 xtol_abs=_PHI_TOL, xtol_rel=0.0, maxiter=_MAX_ITER,
+                                 indexed=True, variable='inflow_angle', units='rad',
+                                 where=owner, fail=fail)
         res = self.residual(phi)
         bad = ~(np.abs(res) <= _RES_TOL)
         if np.any(bad):

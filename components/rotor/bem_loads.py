@@ -9,6 +9,7 @@ into power, coefficients, efficiency, figure of merit and tip Mach number.
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_range
 from lpc_mdo.components.geometry.blade import per_rotor
 from lpc_mdo.components.rotor.bem_inflow import (
     SECTION_INPUTS,
@@ -18,8 +19,9 @@ from lpc_mdo.components.rotor.bem_inflow import (
     declare_bem_options,
     station_columns,
 )
+from lpc_mdo.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
 
-_RPM_TO_RAD_S = np.pi / 30.0
+_RPM_TO_RAD_S = RPM_TO_RAD_S
 
 
 class BEMLoadsComp(om.ExplicitComponent):
@@ -256,8 +258,9 @@ class RotorPerformanceComp(om.ExplicitComponent):
         self.add_input('axial_velocity', val=np.zeros(shape), units='m/s',
                        desc='Freestream velocity along the thrust axis')
         self.add_input('radius', val=np.ones(nr), units='m', desc='Rotor tip radius')
-        self.add_input('density', val=np.full(nn, 1.225), units='kg/m**3', desc='Air density')
-        self.add_input('speed_of_sound', val=np.full(nn, 340.294), units='m/s',
+        self.add_input('density', val=np.full(nn, SEA_LEVEL_DENSITY), units='kg/m**3',
+                       desc='Air density')
+        self.add_input('speed_of_sound', val=np.full(nn, SEA_LEVEL_SPEED_OF_SOUND), units='m/s',
                        desc='Speed of sound')
         for name, units, desc in self._OUTPUTS:
             self.add_output(name, val=np.zeros(shape), units=units, desc=desc)
@@ -278,14 +281,10 @@ class RotorPerformanceComp(om.ExplicitComponent):
 
     def _values(self, inputs):
         rpm = inputs['rpm']
-        if np.any(rpm.real <= 0.0):
-            raise om.AnalysisError(f"{self.msginfo}: input 'rpm' = {rpm.real.tolist()} is "
-                                   "outside the allowed range (0, inf).")
-        for name in ('radius', 'density', 'speed_of_sound'):
-            if np.any(inputs[name].real <= 0.0):
-                raise om.AnalysisError(f"{self.msginfo}: input '{name}' = "
-                                       f"{inputs[name].real.tolist()} is outside the allowed "
-                                       "range (0, inf).")
+        for name, units in (('rpm', 'rpm'), ('radius', 'm'), ('density', 'kg/m**3'),
+                            ('speed_of_sound', 'm/s')):
+            check_range(name, inputs[name], lower=0.0, lower_open=True, units=units,
+                        error=om.AnalysisError, where=self.msginfo)
         v = {'T': inputs['thrust'], 'Q': inputs['torque'], 'rpm': rpm,
              'vx': inputs['axial_velocity'], 'R': inputs['radius'][:, None],
              'rho': inputs['density'][None, :], 'a': inputs['speed_of_sound'][None, :]}

@@ -20,6 +20,7 @@ reference point, summed over the rotors for trim.
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_choice
 from lpc_mdo.components.geometry.blade import per_rotor
 
 
@@ -220,9 +221,8 @@ class HubLoadsComp(om.ExplicitComponent):
         self._frames = _frames(self)
         spin = per_rotor(self.options['spin_direction'], nr, 'spin_direction', kind=int,
                          lower=-1, upper=1, owner=self.msginfo)
-        if np.any(spin == 0):
-            raise ValueError(f"{self.msginfo}: option 'spin_direction' = {spin.tolist()}; "
-                             "allowed values: +1 or -1.")
+        for i, s in enumerate(spin.tolist()):
+            check_choice(f"spin_direction[{i}]", s, (1, -1), where=self.msginfo)
         self._spin = spin
         inplane = self.options['inplane_loads']
 

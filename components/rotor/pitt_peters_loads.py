@@ -62,13 +62,15 @@ from types import SimpleNamespace
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_choice
 from lpc_mdo.components.aero.polar import LinearQuadraticPolar, Polar
 from lpc_mdo.components.geometry.blade import azimuth_angles, per_rotor
+from lpc_mdo.components.rotor.bem_inflow import check_section_inputs
+from lpc_mdo.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
 
 #: Where Prandtl's loss factor acts: on the momentum (inflow) side or on the blade loads.
 LOSS_PLACEMENTS = ('momentum', 'blade_element')
 
-RPM_TO_RAD_S = np.pi / 30.0
 _TWO_OVER_PI = 2.0 / np.pi
 _ABS_SIN_FLOOR = 1.0e-9  # |sin phi| floor in the Prandtl exponent (F = 1 to all digits there)
 _SWIRL_MAX_ITERATIONS = 30
@@ -89,8 +91,8 @@ PITT_PETERS_INPUTS = {
     'station_width': ('radial', 'm', None, 'Radial quadrature width of each blade element'),
     'chord': ('radial', 'm', 0.1, 'Blade chord at the stations'),
     'twist': ('radial', 'rad', 0.2, 'Blade pitch relative to the rotor plane at the stations'),
-    'density': ('node', 'kg/m**3', 1.225, 'Air density'),
-    'speed_of_sound': ('node', 'm/s', 340.294, 'Speed of sound'),
+    'density': ('node', 'kg/m**3', SEA_LEVEL_DENSITY, 'Air density'),
+    'speed_of_sound': ('node', 'm/s', SEA_LEVEL_SPEED_OF_SOUND, 'Speed of sound'),
     'dynamic_viscosity': ('node', 'Pa*s', 1.7894e-5, 'Dynamic viscosity of air'),
 }
 
@@ -144,33 +146,13 @@ def add_pitt_peters_inputs(comp, nr, nn, nrad):
 
 def check_pitt_peters_inputs(comp, inputs, hub_loss):
     """
-    Check the physical range of the inputs (real parts).
-
-    Raise om.AnalysisError naming the field, the offending values and the allowed range (values
-    may come from an optimizer).
+    Check the physical range of the inputs (real parts) with the BEM section check
+    (:func:`~lpc_mdo.components.rotor.bem_inflow.check_section_inputs`): om.AnalysisError
+    names the input, the first offending entry and the allowed range.
     """
-    def fail(name, values, allowed):
-        raise om.AnalysisError(f"{comp.msginfo}: input '{name}' = {np.asarray(values).tolist()} "
-                               f"is outside the allowed range {allowed}.")
-
-    for name in PITT_PETERS_INPUTS:
-        value = np.real(inputs[name])
-        if not np.all(np.isfinite(value)):
-            fail(name, value[~np.isfinite(value)], '(finite values)')
-    for name in ('rpm', 'radius', 'chord', 'station_width', 'density', 'speed_of_sound',
-                 'dynamic_viscosity'):
-        value = np.real(inputs[name])
-        if np.any(value <= 0.0):
-            fail(name, value[value <= 0.0], '(0, inf)')
-    rh, big_r = np.real(inputs['hub_radius']), np.real(inputs['radius'])
-    bad = ((rh <= 0.0) if hub_loss else (rh < 0.0)) | (rh >= big_r)
-    if np.any(bad):
-        fail('hub_radius', rh[bad], '(0, radius)' if hub_loss else '[0, radius)')
-    r = np.real(inputs['station_radius'])
-    bad = (r <= rh[:, None]) | (r >= big_r[:, None])
-    if np.any(bad):
-        rotors = np.flatnonzero(np.any(bad, axis=1))
-        fail('station_radius', r[bad], f"(hub_radius, radius) (rotors {rotors.tolist()})")
+    check_section_inputs(comp, inputs, hub_loss, names=PITT_PETERS_INPUTS,
+                         positive=('rpm', 'radius', 'chord', 'station_width', 'density',
+                                   'speed_of_sound', 'dynamic_viscosity'))
 
 
 def atan2_cs(y, x):
@@ -188,9 +170,8 @@ def rotor_blade_options(comp):
                        owner=comp.msginfo)
     spin = per_rotor(comp.options['spin_direction'], nr, 'spin_direction', kind=int, lower=-1,
                      upper=1, owner=comp.msginfo)
-    if np.any(spin == 0):
-        raise ValueError(f"{comp.msginfo}: option 'spin_direction' = {spin.tolist()}; allowed "
-                         "values: +1 or -1.")
+    for i, s in enumerate(spin.tolist()):
+        check_choice(f"spin_direction[{i}]", s, (1, -1), where=comp.msginfo)
     return blades.astype(float), spin.astype(float)
 
 

@@ -3,6 +3,8 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_range
+
 
 class RotorSpeedComp(om.ExplicitComponent):
     """
@@ -53,9 +55,10 @@ class RotorSpeedComp(om.ExplicitComponent):
     def setup(self):
         group = np.asarray(self.options["group"], dtype=int)
         ng, nn = self.options["num_groups"], self.options["num_nodes"]
-        if group.ndim != 1 or group.size == 0 or group.min() < 0 or group.max() >= ng:
-            raise ValueError(f"{self.msginfo}: group = {group.tolist()}; each entry must be in "
-                             f"0..{ng - 1}.")
+        if group.ndim != 1 or group.size == 0:
+            raise ValueError(f"{self.msginfo}: 'group' = {group.tolist()} is not allowed: must "
+                             "be a non-empty 1-D sequence of rotor-group indices")
+        check_range("group", group, lower=0, upper=ng - 1, where=self.msginfo)
         nr = group.size
         self._group = group
         self.add_input("group_speed", np.full((nn, ng), 1000.0), units="rpm",

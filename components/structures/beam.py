@@ -33,6 +33,8 @@ import openmdao.api as om
 import scipy.sparse as sp
 from scipy.sparse.linalg import splu
 
+from lpc_mdo.checks import check_range
+
 # Complex step used inside linearize/compute_partials for the node-coordinate partials of the
 # element matrices (exact to machine precision; see BeamDisplacementComp).
 _CS_STEP = 1e-30
@@ -295,19 +297,12 @@ class _FrameMixin:
         return nodes[self._conn[:, 0]], nodes[self._conn[:, 1]]
 
     def _check_geometry(self, length, section=None):
-        bad = np.flatnonzero(~(length.real > 0.0))
-        if bad.size:
-            raise om.AnalysisError(
-                f"{self.msginfo}: input 'nodes' gives elements {bad.tolist()} a length of "
-                f"{length.real[bad].tolist()} m; element lengths must be > 0.")
+        check_range("element length (from input 'nodes')", length, lower=0.0, lower_open=True,
+                    units="m", error=om.AnalysisError, where=self.msginfo)
         if section is not None:
-            for name, _, _ in _SECTION_INPUTS:
-                val = section[name]
-                bad = np.flatnonzero(~(val.real > 0.0))
-                if bad.size:
-                    raise om.AnalysisError(
-                        f"{self.msginfo}: input '{name}' = {val.real[bad].tolist()} at elements "
-                        f"{bad.tolist()}; section properties must be > 0.")
+            for name, units, _ in _SECTION_INPUTS:
+                check_range(name, section[name], lower=0.0, lower_open=True, units=units,
+                            error=om.AnalysisError, where=self.msginfo)
 
     def _element_stiffness(self, start, end, props, modulus, shear, frame='global'):
         """Element stiffness matrices (global or local frame) and the rotation matrices."""
@@ -567,9 +562,8 @@ class BeamDisplacementComp(_FrameMixin, om.ImplicitComponent):
         start, end = self._element_ends(inputs['nodes'])
         self._check_geometry(_lengths(start, end), {s[0]: inputs[s[0]] for s in _SECTION_INPUTS})
         for name in ('youngs_modulus', 'shear_modulus'):
-            if not inputs[name].real[0] > 0.0:
-                raise om.AnalysisError(f"{self.msginfo}: input '{name}' = {inputs[name].real[0]}"
-                                       " Pa; must be > 0.")
+            check_range(name, inputs[name][0], lower=0.0, lower_open=True, units="Pa",
+                        error=om.AnalysisError, where=self.msginfo)
         k_elem, _ = self._element_stiffness(start, end, props, inputs['youngs_modulus'],
                                             inputs['shear_modulus'])
         loads = np.concatenate([inputs['node_forces'].ravel(), inputs['node_moments'].ravel()])

@@ -3,6 +3,8 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_range
+
 TORSION_FORMULAS = ('polar', 'bredt')
 
 
@@ -105,10 +107,8 @@ class BoxSectionComp(om.ExplicitComponent):
         for name, val in (('box_width', w), ('box_height', h), ('top_skin_thickness', tt),
                           ('bottom_skin_thickness', tb), ('front_spar_thickness', tf),
                           ('rear_spar_thickness', tr)):
-            bad = np.flatnonzero(~(val.real > 0.0))
-            if bad.size:
-                raise om.AnalysisError(f"{self.msginfo}: input '{name}' = {val.real[bad].tolist()}"
-                                       f" m at elements {bad.tolist()}; must be > 0.")
+            check_range(name, val, lower=0.0, lower_open=True, units="m",
+                        error=om.AnalysisError, where=self.msginfo)
         tw = 0.5 * (tf + tr)
         bad = np.flatnonzero(~((h - tt - tb).real > 0.0) | ~((w - 2.0 * tw).real > 0.0))
         if bad.size:

@@ -3,6 +3,8 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import RangeCheck, check_range
+
 PANEL_MODELS = ('curved', 'flat')
 
 
@@ -127,18 +129,15 @@ class PanelBucklingComp(om.ExplicitComponent):
 
     def compute(self, inputs, outputs):
         modulus, nu = inputs['youngs_modulus'], inputs['poisson_ratio']
-        if not (-1.0 < nu.real[0] < 0.5):
-            raise om.AnalysisError(f"{self.msginfo}: input 'poisson_ratio' = {nu.real[0]}; "
-                                   "allowed range (-1, 0.5).")
+        check_range("poisson_ratio", nu[0], lower=-1.0, upper=0.5, lower_open=True,
+                    upper_open=True, error=om.AnalysisError, where=self.msginfo)
         for skin in self._skins:
             t, b, r = self._geometry(inputs, skin)
             for name, val in ((f'{skin}_skin_thickness', t), ('box_width', b),
                               (f'{skin}_skin_radius', r)):
-                if val is not None and np.any(~(val.real > 0.0)):
-                    bad = np.flatnonzero(~(val.real > 0.0))
-                    raise om.AnalysisError(f"{self.msginfo}: input '{name}' = "
-                                           f"{val.real[bad].tolist()} m at panels {bad.tolist()};"
-                                           " must be > 0.")
+                if val is not None:
+                    check_range(name, val, lower=0.0, lower_open=True, units="m",
+                                error=om.AnalysisError, where=self.msginfo)
             crit, _ = self._critical(t, b, r, modulus, nu)
             outputs[f'{skin}_skin_critical_stress'] = crit
             outputs[f'{skin}_skin_buckling_ratio'] = -inputs[f'{skin}_skin_stress'] / crit
@@ -158,6 +157,4 @@ class PanelBucklingComp(om.ExplicitComponent):
             partials[rname, f'{skin}_skin_stress'] = -1.0 / crit
 
 
-def _check_positive(name, value):
-    if not value > 0.0:
-        raise ValueError(f"PanelBucklingComp option '{name}' must be > 0, got {value}.")
+_check_positive = RangeCheck(lower=0.0, lower_open=True, where="PanelBucklingComp")

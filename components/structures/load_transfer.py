@@ -4,6 +4,7 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.structures.beam import default_nodes
+from lpc_mdo.constants import GRAVITY
 
 _AXES = ('x', 'y', 'z')
 
@@ -148,7 +149,7 @@ class LoadTransferComp(om.ExplicitComponent):
     span_axis : int
         Coordinate used for the weights: 0, 1 (default, y) or 2.
     gravity : float
-        g in m/s**2 (> 0). Default 9.81 (docs theory/dynamics 'Gravity').
+        g in m/s**2 (> 0). Default :data:`lpc_mdo.constants.GRAVITY` (9.81).
     """
 
     def initialize(self):
@@ -160,7 +161,7 @@ class LoadTransferComp(om.ExplicitComponent):
                              desc="Add the beam's own weight at the load factor")
         self.options.declare('span_axis', default=1, values=(0, 1, 2),
                              desc='Coordinate along the span used for the weights')
-        self.options.declare('gravity', default=9.81, types=float, lower=1e-12,
+        self.options.declare('gravity', default=GRAVITY, types=float, lower=1e-12,
                              desc='Gravitational acceleration g, m/s**2')
 
     def setup(self):

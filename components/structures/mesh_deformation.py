@@ -3,6 +3,8 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_integer
+
 
 class MeshDeformationComp(om.ExplicitComponent):
     """
@@ -38,9 +40,8 @@ class MeshDeformationComp(om.ExplicitComponent):
 
     def setup(self):
         nx, ny = self.options["num_chord_nodes"], self.options["num_span_nodes"]
-        if ny % 2 == 0:
-            raise ValueError(f"{self.msginfo}: num_span_nodes = {ny}; must be odd (a node on "
-                             "the symmetry plane).")
+        check_integer("num_span_nodes", ny, upper=None if ny % 2 else ny - 1,
+                      allowed="odd (a node on the symmetry plane)", where=self.msginfo)
         half = ny // 2
         nr = half + 1
         self.add_input("mesh", np.zeros((nx, ny, 3)), units="m", desc="undeformed mesh")

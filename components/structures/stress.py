@@ -3,6 +3,7 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_range
 from lpc_mdo.components.structures.box_section import TORSION_FORMULAS
 
 # Stress points (sign of local y, sign of local z): corners top-front, top-rear, bottom-rear,
@@ -175,11 +176,8 @@ class BoxStressComp(om.ExplicitComponent):
     def _check(self, x):
         for var in ('w', 'h', 'tt', 'tb', 'tw', 'A', 'Iy', 'Iz', 'J'):
             if var in x:
-                bad = np.flatnonzero(~(x[var].real > 0.0))
-                if bad.size:
-                    raise om.AnalysisError(
-                        f"{self.msginfo}: input '{_INPUT_OF[var][0]}' = "
-                        f"{x[var].real[bad].tolist()} at elements {bad.tolist()}; must be > 0.")
+                check_range(_INPUT_OF[var][0], x[var], lower=0.0, lower_open=True,
+                            error=om.AnalysisError, where=self.msginfo)
 
     def _terms(self, x, derivs):
         """σ, τ (ne, npts) and, if derivs, their partials {var: (ne, npts)}."""
@@ -263,9 +261,8 @@ class BoxStressComp(om.ExplicitComponent):
         self._check(x)
         sigma, tau, _, _ = self._terms(x, derivs=False)
         allowable = inputs['allowable_stress']
-        if not allowable.real[0] > 0.0:
-            raise om.AnalysisError(f"{self.msginfo}: input 'allowable_stress' = "
-                                   f"{allowable.real[0]} Pa; must be > 0.")
+        check_range("allowable_stress", allowable[0], lower=0.0, lower_open=True, units="Pa",
+                    error=om.AnalysisError, where=self.msginfo)
         vm = np.sqrt(sigma**2 + 3.0 * tau**2 + _VM_EPS)
         outputs['von_mises_stress'] = vm
         outputs['stress_ratio'] = vm / allowable

@@ -6,6 +6,7 @@ import math
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_number, check_range
 from lpc_mdo.vehicle import LiftingSurface, reference_vehicle
 
 
@@ -58,9 +59,10 @@ class WingBoxSection:
         source : str
             Label stored with the numbers.
         """
-        if not 0.0 < front_spar < beam_axis < rear_spar < 1.0:
-            raise ValueError(f"need 0 < front_spar < beam_axis < rear_spar < 1, got front_spar="
-                             f"{front_spar}, beam_axis={beam_axis}, rear_spar={rear_spar}.")
+        check_number("front_spar", front_spar, lower=0.0, upper=beam_axis, lower_open=True,
+                     upper_open=True, allowed=f"in (0, beam_axis = {beam_axis:g})")
+        check_number("rear_spar", rear_spar, lower=beam_axis, upper=1.0, lower_open=True,
+                     upper_open=True, allowed=f"in (beam_axis = {beam_axis:g}, 1)")
         xy = np.asarray(coordinates, dtype=float)
         if xy.ndim != 2 or xy.shape[1] != 2 or xy.shape[0] < 5:
             raise ValueError(f"coordinates must have shape (n >= 5, 2), got {xy.shape}.")
@@ -258,12 +260,10 @@ class WingBoxGeometryComp(om.ExplicitComponent):
     def _planform(self, inputs):
         area, ar, taper = inputs['wing_area'], inputs['wing_aspect_ratio'], \
             inputs['wing_taper_ratio']
-        for name, val, ok, allowed in (('wing_area', area, area.real > 0, '> 0'),
-                                       ('wing_aspect_ratio', ar, ar.real > 0, '> 0'),
-                                       ('wing_taper_ratio', taper, taper.real > 0, '> 0')):
-            if not np.all(ok):
-                raise om.AnalysisError(f"{self.msginfo}: input '{name}' = {val.real}; allowed "
-                                       f"{allowed}.")
+        for name, val, units in (('wing_area', area, 'm**2'), ('wing_aspect_ratio', ar, None),
+                                 ('wing_taper_ratio', taper, None)):
+            check_range(name, val, lower=0.0, lower_open=True, units=units,
+                        error=om.AnalysisError, where=self.msginfo)
         span = np.sqrt(ar * area)
         root_chord = 2.0 * area / ((1.0 + taper) * span)
         chord = root_chord * (1.0 - (1.0 - taper) * self._eta)

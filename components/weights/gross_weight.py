@@ -3,6 +3,8 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_range
+
 #: Order of the entries of the ``mass_breakdown`` output of :class:`GrossWeightComp`.
 BREAKDOWN_LABELS = (
     "wing",
@@ -118,10 +120,8 @@ class GrossWeightComp(om.ExplicitComponent):
             breakdown[index] = inputs[name][0]
         breakdown[_MOTORS] = np.sum(inputs["motor_mass"])
         for name in [n for n, _, _ in _SCALAR_MASSES] + ["motor_mass"]:
-            value = inputs[name]
-            if not np.all(np.isfinite(value)) or np.any(value.real < 0.0):
-                raise om.AnalysisError(f"{self.msginfo}: {name} = {value.real.tolist()} kg; "
-                                       "must be finite and >= 0.")
+            check_range(name, inputs[name], lower=0.0, units="kg", error=om.AnalysisError,
+                        where=self.msginfo)
         outputs["mass_breakdown"] = breakdown
         outputs["structures_mass"] = np.sum(breakdown[:4])
         outputs["powertrain_mass"] = breakdown[_MOTORS] + inputs["power_electronics_mass"]

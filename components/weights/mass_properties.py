@@ -5,6 +5,8 @@ from dataclasses import dataclass
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_integer, check_range
+
 _EYE = np.eye(3)
 
 
@@ -60,9 +62,10 @@ class MassItem:
     def __post_init__(self):
         if not (isinstance(self.name, str) and self.name.isidentifier()):
             raise ValueError(f"MassItem.name = {self.name!r}; must be a Python identifier.")
-        if isinstance(self.count, bool) or not isinstance(self.count, int) or self.count < 1:
-            raise ValueError(f"MassItem '{self.name}': count = {self.count!r}; must be an "
-                             "integer >= 1.")
+        if not isinstance(self.count, int):
+            raise ValueError(f"MassItem '{self.name}': 'count' must be an integer, got "
+                             f"{type(self.count).__name__} {self.count!r}")
+        check_integer("count", self.count, lower=1, where=f"MassItem '{self.name}'")
         if not isinstance(self.own_inertia, bool):
             raise ValueError(f"MassItem '{self.name}': own_inertia = {self.own_inertia!r}; "
                              "must be True or False.")
@@ -176,13 +179,9 @@ class MassPropertiesComp(om.ExplicitComponent):
             name = item.name
             mass = inputs[f"{name}_mass"]
             cg = inputs[f"{name}_cg"].reshape(item.count, 3)
-            for var, value in ((f"{name}_mass", mass), (f"{name}_cg", cg)):
-                if not np.all(np.isfinite(value)):
-                    raise om.AnalysisError(f"{self.msginfo}: {var} = {value.real.tolist()}; "
-                                           "must be finite.")
-            if np.any(mass.real < 0.0):
-                raise om.AnalysisError(f"{self.msginfo}: {name}_mass = {mass.real.tolist()} "
-                                       "kg; every mass must be >= 0.")
+            check_range(f"{name}_cg", cg, units="m", error=om.AnalysisError, where=self.msginfo)
+            check_range(f"{name}_mass", mass, lower=0.0, units="kg", error=om.AnalysisError,
+                        where=self.msginfo)
             masses.append(mass)
             cgs.append(cg)
         return np.concatenate(masses), np.concatenate(cgs)
@@ -190,8 +189,8 @@ class MassPropertiesComp(om.ExplicitComponent):
     def compute(self, inputs, outputs):
         masses, points = self._gather(inputs)
         total = np.sum(masses)
-        if total.real <= 0.0:
-            raise om.AnalysisError(f"{self.msginfo}: total mass = {total.real} kg; must be > 0.")
+        check_range("total mass", total, lower=0.0, lower_open=True, units="kg",
+                    error=om.AnalysisError, where=self.msginfo)
         cg = masses @ points / total
         p, _ = transport_inertia(points - cg)
         inertia = np.einsum("i,iab->ab", masses, p)

@@ -14,6 +14,7 @@ from importlib import resources
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import RangeCheck, check_range, check_shape
 from lpc_mdo.components.weights.mass_properties import transport_inertia
 
 # Body-frame sign of each inertia-tensor entry after the M4 -> body rotation diag(-1, 1, -1)
@@ -49,20 +50,13 @@ def m4_coefficients():
     return tomllib.loads(text)
 
 
-def _positive(name, value):
-    if isinstance(value, bool) or not np.isfinite(value) or value <= 0.0:
-        raise ValueError(f"Option '{name}' = {value!r} is outside the allowed range (0, inf).")
-
-
-def _fraction(name, value):
-    if isinstance(value, bool) or not np.isfinite(value) or not 0.0 <= value <= 1.0:
-        raise ValueError(f"Option '{name}' = {value!r} is outside the allowed range [0, 1].")
+_positive = RangeCheck(lower=0.0, lower_open=True)
+_fraction = RangeCheck(lower=0.0, upper=1.0)
 
 
 def _point(name, value):
-    arr = np.asarray(value, dtype=float) if isinstance(value, (list, tuple, np.ndarray)) else None
-    if arr is None or arr.shape != (3,) or not np.all(np.isfinite(arr)):
-        raise ValueError(f"Option '{name}' = {value!r}; must be 3 finite numbers (m).")
+    check_shape(name, value, (3,))
+    check_range(name, value, units="m")
 
 
 class _M4RegressionComp(om.ExplicitComponent):
@@ -148,11 +142,8 @@ class _M4RegressionComp(om.ExplicitComponent):
         values = []
         for name, units, _, _, lower, strict in self._regressors:
             value = inputs[name][0]
-            bad = (value.real <= lower) if strict else (value.real < lower)
-            if not np.isfinite(value) or bad:
-                bound = f"({lower}, inf)" if strict else f"[{lower}, inf)"
-                raise om.AnalysisError(f"{self.msginfo}: {name} = {value.real} "
-                                       f"{units or ''} is outside the allowed range {bound}.")
+            check_range(name, value, lower=lower, lower_open=strict, units=units,
+                        error=om.AnalysisError, where=self.msginfo)
             values.append(value)
         xt = np.array(values + [1.0])
         mass = self._mass_map @ xt

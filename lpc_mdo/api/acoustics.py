@@ -7,6 +7,7 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.constants import SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
 from lpc_mdo.groups.acoustics import RotorNoiseGroup
 from lpc_mdo.mpi import serial_comm
 
@@ -18,8 +19,9 @@ def rotor_noise(radius, rpm, thrust, chord, *, num_blades=2, torque=None,
                 thickness_to_chord=0.12, radial_stations=None, radial_weights=None,
                 hub_radius_ratio=0.2, hub_position=None, thrust_direction=(0.0, 0.0, -1.0),
                 observer_position=None, observer_distance=100.0, observer_elevation_deg=45.0,
-                observer_azimuth_deg=180.0, flight_velocity=(0.0, 0.0, 0.0), density=1.225,
-                speed_of_sound=340.294, num_harmonics=3, num_bands=38,
+                observer_azimuth_deg=180.0, flight_velocity=(0.0, 0.0, 0.0),
+                density=SEA_LEVEL_DENSITY, speed_of_sound=SEA_LEVEL_SPEED_OF_SOUND,
+                num_harmonics=3, num_bands=38,
                 loading_path='auto', **group_options):
     """
     Noise of one or more rotors at an observer: tonal, broadband and total levels.

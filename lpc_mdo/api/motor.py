@@ -9,6 +9,7 @@ import dataclasses
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_range
 from lpc_mdo.components.motor.parameters import MotorParameters
 from lpc_mdo.groups.motor import MotorGroup
 from lpc_mdo.mpi import serial_comm
@@ -26,16 +27,8 @@ _RESULT_NAMES = (
 
 
 def _positive_array(name, value, units):
-    try:
-        arr = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        raise ValueError(f"motor: '{name}' = {value!r} must be a number or an array of numbers "
-                         f"in {units}.") from None
-    bad = ~np.isfinite(arr) | (arr <= 0.0)
-    if np.any(bad):
-        raise ValueError(f"motor: '{name}' = {arr[bad].tolist()} {units} is outside the allowed "
-                         "range (0, inf).")
-    return arr
+    return np.asarray(check_range(name, value, lower=0.0, lower_open=True, units=units,
+                                  where="motor"), dtype=float)
 
 
 def motor_analysis(length, rotor_torque, rotor_rpm, length_to_diameter=0.5, gear_ratio=4.0,
@@ -82,8 +75,8 @@ def motor_analysis(length, rotor_torque, rotor_rpm, length_to_diameter=0.5, gear
     length_arr = _positive_array('length', length, 'm')
     torque_arr = _positive_array('rotor_torque', rotor_torque, 'N*m')
     rpm_arr = _positive_array('rotor_rpm', rotor_rpm, 'rpm')
-    ratio = _positive_array('length_to_diameter', length_to_diameter, '(dimensionless)')
-    gear = _positive_array('gear_ratio', gear_ratio, '(dimensionless)')
+    ratio = _positive_array('length_to_diameter', length_to_diameter, None)
+    gear = _positive_array('gear_ratio', gear_ratio, None)
     if ratio.ndim or gear.ndim:
         raise ValueError("motor: 'length_to_diameter' and 'gear_ratio' must be scalars.")
     if parameters is None:

@@ -10,22 +10,19 @@ the airfoil is a packaged name, a user polar or a :class:`~lpc_mdo.components.ae
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_integer, check_number, check_range, check_shape
 from lpc_mdo.components.aero.airfoil import get_polar
 from lpc_mdo.components.geometry.blade import azimuth_angles, station_fractions
 from lpc_mdo.components.rotor.bem_inflow import BEMInflowComp
 from lpc_mdo.components.rotor.bem_loads import BEMLoadsComp, RotorPerformanceComp
 from lpc_mdo.components.rotor.pitt_peters_inflow import PittPetersInflowComp
 from lpc_mdo.components.rotor.pitt_peters_loads import PittPetersLoadsComp
+from lpc_mdo.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY
 from lpc_mdo.mpi import serial_comm
-
-RPM_TO_RAD_S = np.pi / 30.0
 
 
 def _positive(name, value):
-    value = np.asarray(value, dtype=float)
-    if not np.all(np.isfinite(value)) or np.any(value <= 0.0):
-        raise ValueError(f"{name} = {value.tolist()}; allowed: finite values > 0")
-    return value
+    return np.asarray(check_range(name, value, lower=0.0, lower_open=True), dtype=float)
 
 
 def blade_stations(radius, hub_radius, radial_stations):
@@ -47,15 +44,10 @@ def blade_stations(radius, hub_radius, radial_stations):
         Station radii and widths (m), which sum to radius - hub_radius.
     """
     radius = float(_positive("radius", radius))
-    hub_radius = float(np.asarray(hub_radius, dtype=float))
-    if not 0.0 < hub_radius < radius:
-        raise ValueError(f"hub_radius = {hub_radius}; allowed: 0 < hub_radius < radius "
-                         f"({radius})")
+    hub_radius = check_number("hub_radius", hub_radius, lower=0.0, upper=radius,
+                              lower_open=True, upper_open=True, units="m")
     if np.ndim(radial_stations) == 0:
-        n = int(radial_stations)
-        if n != radial_stations or n < 1:
-            raise ValueError(f"radial_stations = {radial_stations!r}; allowed: an int >= 1 or "
-                             "the station radii")
+        n = check_integer("radial_stations", radial_stations, lower=1)
         eta, q = station_fractions(n)
         return hub_radius + (radius - hub_radius) * eta, (radius - hub_radius) * q
     r = np.asarray(radial_stations, dtype=float).ravel()
@@ -68,13 +60,10 @@ def blade_stations(radius, hub_radius, radial_stations):
 
 
 def _station_values(name, value, n):
-    value = np.asarray(value, dtype=float)
+    value = np.asarray(check_range(name, value), dtype=float)
     if value.ndim == 0:
         value = np.full(n, float(value))
-    if value.shape != (n,) or not np.all(np.isfinite(value)):
-        raise ValueError(f"{name}: shape {value.shape}, values {value.ravel()[:5].tolist()}; "
-                         f"allowed: a finite scalar or one value per radial station ({n})")
-    return value
+    return check_shape(name, value, (n,))  # a scalar or one value per radial station
 
 
 def _operating_points(**arrays):
@@ -87,8 +76,10 @@ def _operating_points(**arrays):
     scalar = values[0].ndim == 0
     out = {}
     for name, v in zip(arrays, values, strict=True):
-        if v.ndim > 1 or not np.all(np.isfinite(v)):
-            raise ValueError(f"{name} = {v.tolist()}; allowed: finite scalars or 1-D arrays")
+        if v.ndim > 1:
+            raise ValueError(f"'{name}' = {v.tolist()} is not allowed: must be a scalar or a "
+                             "1-D array")
+        check_range(name, v)
         out[name] = np.atleast_1d(v)
     return out, scalar
 
@@ -109,8 +100,8 @@ def _squeeze(result, scalar):
 
 
 def bem(radius, hub_radius, num_blades, radial_stations, chord, twist_deg, rpm, axial_velocity,
-        airfoil, density=1.225, viscosity=1.81e-5, speed_of_sound=340.3, tip_loss=True,
-        hub_loss=True):
+        airfoil, density=SEA_LEVEL_DENSITY, viscosity=1.81e-5, speed_of_sound=340.3,
+        tip_loss=True, hub_loss=True):
     """
     Blade element momentum analysis of one rotor in axial flow (hover, climb, propeller).
 
@@ -194,8 +185,9 @@ def bem(radius, hub_radius, num_blades, radial_stations, chord, twist_deg, rpm, 
 
 
 def pitt_peters(radius, hub_radius, num_blades, radial_stations, chord, twist_deg, rpm,
-                edgewise_velocity, disk_angle_deg, airfoil, num_azimuth=25, density=1.225,
-                viscosity=1.81e-5, speed_of_sound=340.3, tip_loss=True, hub_loss=True,
+                edgewise_velocity, disk_angle_deg, airfoil, num_azimuth=25,
+                density=SEA_LEVEL_DENSITY, viscosity=1.81e-5, speed_of_sound=340.3,
+                tip_loss=True, hub_loss=True,
                 loss_placement='momentum', tangential_induction=True, spin_direction=1):
     """
     Steady Pitt–Peters analysis of one rotor in edgewise (or any non-axial) flight.

@@ -8,6 +8,7 @@ it and returns plain numbers.
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_number, check_range, check_shape
 from lpc_mdo.components.structures.box_section import TORSION_FORMULAS
 from lpc_mdo.groups.beam import BeamGroup, BoxBeamGroup
 from lpc_mdo.mpi import serial_comm
@@ -16,14 +17,11 @@ __all__ = ["beam", "box_beam"]
 
 
 def _array(name, value, shape=None, positive=False, units=''):
-    arr = np.asarray(value, dtype=float)
-    if shape is not None and arr.shape != shape:
-        raise ValueError(f"'{name}' must have shape {shape}, got shape {arr.shape}.")
-    if not np.all(np.isfinite(arr)):
-        raise ValueError(f"'{name}' = {value!r} must be finite.")
-    if positive and not np.all(arr > 0.0):
-        raise ValueError(f"'{name}' = {value!r} {units} is outside the allowed range (0, inf).")
-    return arr
+    if shape is not None:
+        check_shape(name, value, shape)
+    arr = check_range(name, value, lower=0.0 if positive else None, lower_open=True,
+                      units=units or None)
+    return np.asarray(arr, dtype=float)
 
 
 def _per_element(name, value, num_elements, units):
@@ -37,11 +35,8 @@ def _per_element(name, value, num_elements, units):
 
 
 def _scalar(name, value, units, low=0.0, high=np.inf):
-    arr = _array(name, value)
-    if arr.ndim != 0 or not low < float(arr) < high:
-        raise ValueError(f"'{name}' = {value!r} {units} must be a scalar in the open range "
-                         f"({low}, {high}).")
-    return float(arr)
+    return check_number(name, value, lower=low, upper=None if np.isinf(high) else high,
+                        lower_open=True, upper_open=True, units=units or None)
 
 
 def _frame_arguments(nodes, loads, fixed_nodes):

@@ -4,6 +4,7 @@ import importlib
 
 import openmdao.api as om
 
+from lpc_mdo.checks import check_choice
 from lpc_mdo.drivers.ipopt import IpoptDriver
 from lpc_mdo.drivers.slsqp import SlsqpDriver
 
@@ -64,8 +65,7 @@ def make_driver(optimizer="IPOPT", **settings):
         For SNOPT without a pyoptsparse that has it, saying what to install.
     """
     if not isinstance(optimizer, str) or optimizer.upper() not in KNOWN_OPTIMIZERS:
-        raise ValueError(f"optimizer = {optimizer!r} is not supported; "
-                         f"choose one of {KNOWN_OPTIMIZERS}.")
+        check_choice("optimizer", optimizer, KNOWN_OPTIMIZERS)  # raises, naming the names
     name = optimizer.upper()
     available = pyoptsparse_optimizers()
 

@@ -22,6 +22,8 @@ from pathlib import Path
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.checks import check_choice
+
 __all__ = [
     "MissingVariableError",
     "Quantity",
@@ -136,8 +138,7 @@ def last_case(source, kind="driver"):
     Case or None
         None when that source recorded no case.
     """
-    if kind not in ("driver", "problem"):
-        raise ValueError(f"kind = {kind!r}; allowed values are 'driver' and 'problem'.")
+    check_choice("kind", kind, ("driver", "problem"))
     cr = open_reader(source)
     for case_id in reversed(source_case_ids(cr, kind)):
         case = cr.get_case(case_id)

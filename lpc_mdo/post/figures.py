@@ -23,6 +23,7 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.patches import Circle
 
+from lpc_mdo.checks import check_choice
 from lpc_mdo.post.case_data import (
     MissingVariableError,
     driver_cases,
@@ -275,8 +276,7 @@ def plot_per_condition(designs, variable, conditions, path, units=None, reduce="
     MissingVariableError
         When no condition (or the vector) is recorded in any design.
     """
-    if reduce is not None and reduce not in _REDUCE:
-        raise ValueError(f"reduce = {reduce!r}; allowed: {sorted(_REDUCE)} or None.")
+    check_choice("reduce", reduce, [*sorted(_REDUCE), None])
     designs = normalize_designs(designs)
     conditions = list(conditions)
     if "{condition}" in variable:
