@@ -17,6 +17,8 @@ import typing
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
+from lpc_mdo.checks import _fmt, _show, check_integer, check_number, check_range, range_text
+
 
 class VehicleSpecError(ValueError):
     """An invalid vehicle file or dict; the message names the key, the value and what is allowed."""
@@ -74,36 +76,19 @@ def _join(path: str, key: str) -> str:
     return f"{path}.{key}" if path else key
 
 
-def _show(value) -> str:
-    text = repr(value)
-    if len(text) > 60:
-        text = text[:57] + "..."
-    return f"{type(value).__name__} {text}"
-
-
-def _fmt(x: float) -> str:
-    return f"{x:.6g}"
-
-
 def _is_number(value) -> bool:
     return isinstance(value, (int, float)) and not isinstance(value, bool)
 
 
+def _bounds(spec: _Spec) -> dict:
+    """The range of a spec as :func:`lpc_mdo.checks.check_range` keywords."""
+    return dict(lower=spec.gt if spec.gt is not None else spec.ge, lower_open=spec.gt is not None,
+                upper=spec.lt if spec.lt is not None else spec.le, upper_open=spec.lt is not None)
+
+
 def _range_text(spec: _Spec) -> str:
     """``"> 0"``, ``"in [0, 1)"``, ... for the range of a spec; ``""`` if unbounded."""
-    low = ("[", spec.ge) if spec.ge is not None else ("(", spec.gt) if spec.gt is not None else ()
-    high = ("]", spec.le) if spec.le is not None else (")", spec.lt) if spec.lt is not None else ()
-    if low and high:
-        return f"in {low[0]}{_fmt(low[1])}, {_fmt(high[1])}{high[0]}"
-    if low:
-        return f"{'>=' if low[0] == '[' else '>'} {_fmt(low[1])}"
-    if high:
-        return f"{'<=' if high[0] == ']' else '<'} {_fmt(high[1])}"
-    return ""
-
-
-def _units_suffix(spec: _Spec) -> str:
-    return f" ({spec.units})" if spec.units else ""
+    return range_text(**_bounds(spec))
 
 
 def _describe(tp, spec: _Spec) -> str:
@@ -183,41 +168,18 @@ def _convert(tp, spec: _Spec, value, path: str):
     return _string(value, spec, path)
 
 
-def _out_of_range(path: str, value, spec: _Spec) -> VehicleSpecError:
-    return VehicleSpecError(
-        f"'{path}' = {value!r} is out of range: must be {_range_text(spec)}{_units_suffix(spec)}"
-    )
-
-
-def _in_range(x: float, spec: _Spec) -> bool:
-    return not (
-        (spec.gt is not None and x <= spec.gt)
-        or (spec.ge is not None and x < spec.ge)
-        or (spec.lt is not None and x >= spec.lt)
-        or (spec.le is not None and x > spec.le)
-    )
-
-
 def _number(value, spec: _Spec, path: str) -> float:
-    if not _is_number(value):
-        raise VehicleSpecError(f"'{path}' must be a number, got {_show(value)}")
-    x = float(value)
-    if not math.isfinite(x):
-        raise VehicleSpecError(f"'{path}' = {value!r} is out of range: must be a finite number")
-    if not _in_range(x, spec):
-        raise _out_of_range(path, value, spec)
+    bounds = _bounds(spec)
+    x = check_number(path, value, units=spec.units or None, error=VehicleSpecError, **bounds)
     return x * spec.scale
 
 
 def _integer(value, spec: _Spec, path: str) -> int:
-    if not (_is_number(value) and float(value).is_integer()):
-        raise VehicleSpecError(f"'{path}' must be an integer, got {_show(value)}")
-    n = int(value)
+    n = check_integer(path, value, error=VehicleSpecError)
     if spec.choices and n not in spec.choices:
         allowed = ", ".join(str(c) for c in spec.choices)
         raise VehicleSpecError(f"'{path}' = {value!r} is not allowed: must be one of {allowed}")
-    if not _in_range(n, spec):
-        raise _out_of_range(path, value, spec)
+    check_range(path, n, units=spec.units or None, error=VehicleSpecError, **_bounds(spec))
     return n
 
 
