@@ -33,7 +33,9 @@ root_doc = "index"
 # without editing a list; see docs/api.rst.
 autosummary_generate = True
 autosummary_imported_members = False
-autodoc_default_options = {"members": True, "show-inheritance": True}
+# A package that re-exports names in __all__ (lpc_mdo.vehicle, lpc_mdo.api, lpc_mdo.drivers)
+# documents only what it defines: each object is described once, on its own module's page.
+autodoc_default_options = {"members": True, "show-inheritance": True, "ignore-module-all": True}
 autodoc_member_order = "bysource"
 autodoc_typehints = "description"
 autoclass_content = "class"

@@ -94,7 +94,7 @@ class TrimRow:
     target : float
         Required acceleration: 0, or the prescribed one of a transition point.
     ref : float
-        Constraint scaling reference (g |n| for the linear rows, 1 rad/s**2 for the angular).
+        Constraint scaling reference (g abs(n) for the linear rows, 1 rad/s**2 for the angular).
     degenerate : bool
         True for a row that vanishes for every design or that no trim variable controls on its
         own: declared only when a problem asks for every row (``lateral_trim``); the
@@ -394,5 +394,5 @@ class ConditionGroup(om.Group):
 
 
 def linear_trim_ref(load_factor=1.0):
-    """Scaling reference of a linear trim row: g |n| (m/s**2; paper eq. 29)."""
+    """Scaling reference of a linear trim row: g abs(n) (m/s**2; paper eq. 29)."""
     return GRAVITY * abs(load_factor)

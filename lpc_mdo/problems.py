@@ -412,7 +412,7 @@ def trust_region_bounds(vehicle, fractions):
     ----------
     vehicle : Vehicle
     fractions : dict
-        name -> f: bounds initial * (1 -+ f) (of |initial|), intersected with the vehicle file's.
+        name -> f: bounds initial * (1 -+ f) (of abs(initial)), intersected with the vehicle file's.
 
     Returns
     -------

@@ -61,7 +61,7 @@ class StageResult:
 
 def magnitude_refs(case, vehicle, floor=1e-6):
     """
-    Design-variable refs from optimized magnitudes: |x| per entry (floored), paper Sec. II.F.
+    Design-variable refs from optimized magnitudes: abs(x) per entry (floored), paper Sec. II.F.
 
     Parameters
     ----------

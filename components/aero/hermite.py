@@ -149,7 +149,7 @@ def tensor_eval(table, index, weights, dweights):
 
     Parameters
     ----------
-    table : ndarray, (n1, n2, n3, *value_shape)
+    table : ndarray, (n1, n2, n3, ...)
     index : sequence of three (N, width) int arrays
         Node indices of each query's window on each axis.
     weights, dweights : sequences of three (N, width) arrays

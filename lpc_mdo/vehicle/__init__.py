@@ -38,43 +38,44 @@ order of the vehicle file's ``[design_variables]`` tables. The vehicle-level one
 vehicle; each condition adds those its kind declares (rotor speeds, pitch, elevator), named
 ``{design_variable_prefix}_{variable}`` and stacked as rows where conditions share a prefix
 (:class:`lpc_mdo.groups.condition_base.ConditionLayout`). The reference vehicle has the 31 below:
-the paper's 161
-(Table 6) and the 10 roll and yaw speed differentials of the transition lift rotors, which the
+the paper's 161 (Table 6) and the 10 roll and yaw speed differentials of the transition lift rotors, which the
 paper does not have. Without them no trim variable acts on roll in transition, where the pusher's
 torque reaction rolls the vehicle (1.1-1.4e3 N m at our optimum, 3-4 % of the weight as a
 moment in N m; the paper's trim residuals of at most 25 N m, Table 7, imply that its model
 leaves that torque out). Rows of the per-group DVs: lift pairs 0..3, then the
 pusher.
 
-======================  =======  ================================================================
-name                    shape    meaning
-======================  =======  ================================================================
-wing_aspect_ratio       1        wing aspect ratio (initial: ``wing.aspect_ratio``)
-wing_area               1        wing reference area, m^2 (initial: ``wing.area``)
-htail_aspect_ratio      1        h-tail aspect ratio (initial: ``horizontal_tail.aspect_ratio``)
-htail_area              1        h-tail reference area, m^2 (initial: ``horizontal_tail.area``)
-fuselage_length         1        fuselage length, m (initial: ``fuselage.length``)
-rotor_radius            5        rotor radius per group, m (initial: the rotors)
-blade_chord_cp          5 x 4    blade chord control points, m (initial: the rotors)
-blade_twist_cp          5 x 4    blade twist control points, rad (initial: the rotors)
-battery_mass            1        battery mass, kg (initial: ``battery.mass``)
-motor_length            5        motor stack length per group, m
-hover_lift_rpm          4        lift-rotor speed per pair in hover, rpm
-transition_lift_rpm     5 x 4    lift-rotor speed per transition point and pair, rpm (the mean
-                                 of the pair's two rotors)
-transition_roll_yaw_rpm 5 x 2    lift-rotor speed differentials per transition point, rpm: left
-                                 minus right rotors, spin +1 minus spin -1 rotors (not in the
-                                 paper: the roll and yaw trim of transition)
-oei_lift_rpm            4 x 7    speed of the 7 working lift rotors per OEI case, rpm
-transition_pusher_rpm   5        pusher speed per transition point, rpm
-climb_pusher_rpm        1        pusher speed in climb, rpm (likewise cruise_, descent_)
-climb_pitch             1        pitch in climb, rad (likewise cruise_, descent_, plus_3g_,
-                                 minus_1g_; initial: the condition's pitch)
-transition_elevator     5        h-tail deflection per transition point, rad
-climb_elevator          1        h-tail deflection in climb, rad (likewise cruise_, descent_)
-front_spar_thickness    8        per wing-box bay, root to tip, m (likewise rear_spar_,
-                                 top_skin_, bottom_skin_; 8 = ``wing_box.num_bays``)
-======================  =======  ================================================================
+=======================  =======  ================================================================
+name                     shape    meaning
+=======================  =======  ================================================================
+wing_aspect_ratio        1        wing aspect ratio (initial: ``wing.aspect_ratio``)
+wing_area                1        wing reference area, m^2 (initial: ``wing.area``)
+htail_aspect_ratio       1        h-tail aspect ratio (initial: ``horizontal_tail.aspect_ratio``)
+htail_area               1        h-tail reference area, m^2 (initial: ``horizontal_tail.area``)
+fuselage_length          1        fuselage length, m (initial: ``fuselage.length``)
+rotor_radius             5        rotor radius per group, m (initial: the rotors)
+blade_chord_cp           5 x 4    blade chord control points, m (initial: the rotors)
+blade_twist_cp           5 x 4    blade twist control points, rad (initial: the rotors)
+battery_mass             1        battery mass, kg (initial: ``battery.mass``)
+motor_length             5        motor stack length per group, m
+hover_lift_rpm           4        lift-rotor speed per pair in hover, rpm
+transition_lift_rpm      5 x 4    lift-rotor speed per transition point and pair, rpm (the mean
+                                  of the pair's two rotors)
+transition_roll_yaw_rpm  5 x 2    lift-rotor speed differentials per transition point, rpm: left
+                                  minus right rotors, spin +1 minus spin -1 rotors (not in the
+                                  paper: the roll and yaw trim of transition)
+oei_lift_rpm             4 x 7    speed of the 7 working lift rotors per OEI case, rpm
+transition_pusher_rpm    5        pusher speed per transition point, rpm
+climb_pusher_rpm         1        pusher speed in climb, rpm (likewise ``cruise_``,
+                                  ``descent_``)
+climb_pitch              1        pitch in climb, rad (likewise ``cruise_``, ``descent_``,
+                                  ``plus_3g_``, ``minus_1g_``; initial: the condition's pitch)
+transition_elevator      5        h-tail deflection per transition point, rad
+climb_elevator           1        h-tail deflection in climb, rad (likewise ``cruise_``,
+                                  ``descent_``)
+front_spar_thickness     8        per wing-box bay, root to tip, m (likewise ``rear_spar_``,
+                                  ``top_skin_``, ``bottom_skin_``; 8 = ``wing_box.num_bays``)
+=======================  =======  ================================================================
 
 API
 ---

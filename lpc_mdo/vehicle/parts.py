@@ -473,7 +473,8 @@ class ConstraintLimits:
         Target of the 2 radius-intersection equalities: a span fraction (-) or a clearance (m).
     radius_intersection_definition : str
         ``"span_fraction"``: (R_inner + R_outer)/b = target (default);
-        ``"clearance"``: |y_outer - y_inner| - (R_inner + R_outer) = target (docs theory/geometry 'Rotor layout and radius intersection').
+        ``"clearance"``: abs(y_outer - y_inner) - (R_inner + R_outer) = target (docs
+        theory/geometry 'Rotor layout and radius intersection').
     max_buckling_ratio : float
         Skin stress over critical buckling stress (-).
     min_final_soc : float
