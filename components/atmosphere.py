@@ -12,30 +12,30 @@ ATMOSPHERE_CONSTANTS = {
     # ICAO standard atmosphere (ICAO Doc 7488/3, 1993) = U.S. Standard Atmosphere 1976 below 11 km:
     # R = R*/M0 = 8.31432/0.0289644, g0 = 9.80665, Sutherland beta_s = 1.458e-6 kg/(m s K**0.5),
     # S = 110.4 K, i.e. mu_ref = 1.458e-6 * 288.15**1.5/(288.15 + 110.4) = 1.7894e-5 Pa s.
-    'icao': {
-        'T0': 288.15,
-        'p0': 101325.0,
-        'L': 6.5e-3,
-        'g0': 9.80665,
-        'R': 8.31432 / 0.0289644,
-        'gamma': 1.4,
-        'mu_ref': 1.458e-6 * 288.15**1.5 / (288.15 + 110.4),
-        'T_mu_ref': 288.15,
-        'S': 110.4,
+    "icao": {
+        "T0": 288.15,
+        "p0": 101325.0,
+        "L": 6.5e-3,
+        "g0": 9.80665,
+        "R": 8.31432 / 0.0289644,
+        "gamma": 1.4,
+        "mu_ref": 1.458e-6 * 288.15**1.5 / (288.15 + 110.4),
+        "T_mu_ref": 288.15,
+        "S": 110.4,
     },
     # CADDEE SimpleAtmosphereModel (docs theory/atmosphere): rounded constants; gives rho = 1.11174
     # kg/m**3 and a = 336.409 m/s at 1000 m (docs theory/atmosphere). Kept only to reproduce those
     # numbers.
-    'caddee': {
-        'T0': 288.16,
-        'p0': 101325.0,
-        'L': 6.5e-3,
-        'g0': 9.81,
-        'R': 287.0,
-        'gamma': 1.4,
-        'mu_ref': 1.735e-5,
-        'T_mu_ref': 288.16,
-        'S': 110.4,
+    "caddee": {
+        "T0": 288.16,
+        "p0": 101325.0,
+        "L": 6.5e-3,
+        "g0": 9.81,
+        "R": 287.0,
+        "gamma": 1.4,
+        "mu_ref": 1.735e-5,
+        "T_mu_ref": 288.16,
+        "S": 110.4,
     },
 }
 
@@ -49,12 +49,16 @@ def standard_atmosphere(altitude, constants="icao"):
     safe; no range check (AtmosphereComp checks).
     """
     c = ATMOSPHERE_CONSTANTS[constants]
-    temperature = c['T0'] - c['L'] * altitude
-    pressure = c['p0'] * (temperature / c['T0']) ** (c['g0'] / (c['R'] * c['L']))
-    density = pressure / (c['R'] * temperature)
-    speed_of_sound = np.sqrt(c['gamma'] * c['R'] * temperature)
-    mu = (c['mu_ref'] * (temperature / c['T_mu_ref']) ** 1.5
-          * (c['T_mu_ref'] + c['S']) / (temperature + c['S']))
+    temperature = c["T0"] - c["L"] * altitude
+    pressure = c["p0"] * (temperature / c["T0"]) ** (c["g0"] / (c["R"] * c["L"]))
+    density = pressure / (c["R"] * temperature)
+    speed_of_sound = np.sqrt(c["gamma"] * c["R"] * temperature)
+    mu = (
+        c["mu_ref"]
+        * (temperature / c["T_mu_ref"]) ** 1.5
+        * (c["T_mu_ref"] + c["S"])
+        / (temperature + c["S"])
+    )
     return temperature, pressure, density, speed_of_sound, mu
 
 
@@ -114,73 +118,105 @@ class AtmosphereComp(om.ExplicitComponent):
     altitude_max = 11000.0
 
     def initialize(self):
-        self.options.declare('num_nodes', default=1, types=int, lower=1,
-                             desc='Number of flight-condition nodes')
-        self.options.declare('constants', default='icao', values=tuple(ATMOSPHERE_CONSTANTS),
-                             desc="Constant set: 'icao' (standard atmosphere) or 'caddee' "
-                                  '(rounded constants of the public reference code)')
+        self.options.declare(
+            "num_nodes", default=1, types=int, lower=1, desc="Number of flight-condition nodes"
+        )
+        self.options.declare(
+            "constants",
+            default="icao",
+            values=tuple(ATMOSPHERE_CONSTANTS),
+            desc="Constant set: 'icao' (standard atmosphere) or 'caddee' "
+            "(rounded constants of the public reference code)",
+        )
 
     def setup(self):
-        nn = self.options['num_nodes']
-        c = ATMOSPHERE_CONSTANTS[self.options['constants']]
+        nn = self.options["num_nodes"]
+        c = ATMOSPHERE_CONSTANTS[self.options["constants"]]
         self._c = c
-        self._exponent = c['g0'] / (c['R'] * c['L'])
+        self._exponent = c["g0"] / (c["R"] * c["L"])
 
-        self.add_input('altitude', val=np.zeros(nn), units='m',
-                       desc='Geometric altitude above mean sea level, valid in [0, 11000] m')
+        self.add_input(
+            "altitude",
+            val=np.zeros(nn),
+            units="m",
+            desc="Geometric altitude above mean sea level, valid in [0, 11000] m",
+        )
 
-        self.add_output('temperature', val=c['T0'] * np.ones(nn), units='K',
-                        desc='Static air temperature')
-        self.add_output('pressure', val=c['p0'] * np.ones(nn), units='Pa',
-                        desc='Static air pressure')
-        self.add_output('density', val=1.225 * np.ones(nn), units='kg/m**3', desc='Air density')
-        self.add_output('speed_of_sound', val=340.0 * np.ones(nn), units='m/s',
-                        desc='Speed of sound')
-        self.add_output('dynamic_viscosity', val=1.8e-5 * np.ones(nn), units='Pa*s',
-                        desc="Dynamic viscosity of air (Sutherland's law)")
-        self.add_output('kinematic_viscosity', val=1.5e-5 * np.ones(nn), units='m**2/s',
-                        desc='Kinematic viscosity of air (dynamic viscosity / density)')
+        self.add_output(
+            "temperature", val=c["T0"] * np.ones(nn), units="K", desc="Static air temperature"
+        )
+        self.add_output(
+            "pressure", val=c["p0"] * np.ones(nn), units="Pa", desc="Static air pressure"
+        )
+        self.add_output("density", val=1.225 * np.ones(nn), units="kg/m**3", desc="Air density")
+        self.add_output(
+            "speed_of_sound", val=340.0 * np.ones(nn), units="m/s", desc="Speed of sound"
+        )
+        self.add_output(
+            "dynamic_viscosity",
+            val=1.8e-5 * np.ones(nn),
+            units="Pa*s",
+            desc="Dynamic viscosity of air (Sutherland's law)",
+        )
+        self.add_output(
+            "kinematic_viscosity",
+            val=1.5e-5 * np.ones(nn),
+            units="m**2/s",
+            desc="Kinematic viscosity of air (dynamic viscosity / density)",
+        )
 
         ar = np.arange(nn)
         # dT/dh = -L is constant: set once here.
-        self.declare_partials('temperature', 'altitude', rows=ar, cols=ar,
-                              val=-c['L'] * np.ones(nn))
-        for name in ('pressure', 'density', 'speed_of_sound', 'dynamic_viscosity',
-                     'kinematic_viscosity'):
-            self.declare_partials(name, 'altitude', rows=ar, cols=ar)
+        self.declare_partials(
+            "temperature", "altitude", rows=ar, cols=ar, val=-c["L"] * np.ones(nn)
+        )
+        for name in (
+            "pressure",
+            "density",
+            "speed_of_sound",
+            "dynamic_viscosity",
+            "kinematic_viscosity",
+        ):
+            self.declare_partials(name, "altitude", rows=ar, cols=ar)
 
     def _check_altitude(self, h):
         # Range check only (real part); the troposphere model's valid range.
-        check_range("altitude", h, lower=self.altitude_min, upper=self.altitude_max, units="m",
-                    error=om.AnalysisError, where=self.msginfo)
+        check_range(
+            "altitude",
+            h,
+            lower=self.altitude_min,
+            upper=self.altitude_max,
+            units="m",
+            error=om.AnalysisError,
+            where=self.msginfo,
+        )
 
     def _states(self, h):
-        return standard_atmosphere(h, self.options['constants'])
+        return standard_atmosphere(h, self.options["constants"])
 
     def compute(self, inputs, outputs):
-        h = inputs['altitude']
+        h = inputs["altitude"]
         self._check_altitude(h)
         temperature, pressure, density, speed_of_sound, mu = self._states(h)
-        outputs['temperature'] = temperature
-        outputs['pressure'] = pressure
-        outputs['density'] = density
-        outputs['speed_of_sound'] = speed_of_sound
-        outputs['dynamic_viscosity'] = mu
-        outputs['kinematic_viscosity'] = mu / density
+        outputs["temperature"] = temperature
+        outputs["pressure"] = pressure
+        outputs["density"] = density
+        outputs["speed_of_sound"] = speed_of_sound
+        outputs["dynamic_viscosity"] = mu
+        outputs["kinematic_viscosity"] = mu / density
 
     def compute_partials(self, inputs, partials):
         c = self._c
         n = self._exponent
-        temperature, pressure, density, speed_of_sound, mu = self._states(inputs['altitude'])
-        dT_dh = -c['L']
+        temperature, pressure, density, speed_of_sound, mu = self._states(inputs["altitude"])
+        dT_dh = -c["L"]
 
         # p ~ T**n, rho ~ T**(n-1), a ~ T**0.5, mu ~ T**1.5/(T + S): logarithmic derivatives in T.
         dlnrho_dT = (n - 1.0) / temperature
-        dlnmu_dT = 1.5 / temperature - 1.0 / (temperature + c['S'])
+        dlnmu_dT = 1.5 / temperature - 1.0 / (temperature + c["S"])
 
-        partials['pressure', 'altitude'] = pressure * n / temperature * dT_dh
-        partials['density', 'altitude'] = density * dlnrho_dT * dT_dh
-        partials['speed_of_sound', 'altitude'] = 0.5 * speed_of_sound / temperature * dT_dh
-        partials['dynamic_viscosity', 'altitude'] = mu * dlnmu_dT * dT_dh
-        partials['kinematic_viscosity', 'altitude'] = (
-            mu / density * (dlnmu_dT - dlnrho_dT) * dT_dh)
+        partials["pressure", "altitude"] = pressure * n / temperature * dT_dh
+        partials["density", "altitude"] = density * dlnrho_dT * dT_dh
+        partials["speed_of_sound", "altitude"] = 0.5 * speed_of_sound / temperature * dT_dh
+        partials["dynamic_viscosity", "altitude"] = mu * dlnmu_dT * dT_dh
+        partials["kinematic_viscosity", "altitude"] = mu / density * (dlnmu_dT - dlnrho_dT) * dT_dh

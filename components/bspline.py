@@ -24,8 +24,9 @@ def clamped_knots(num_cp, order):
         ``order`` zeros, the uniform interior knots, ``order`` ones.
     """
     degree = order - 1
-    return np.concatenate([np.zeros(degree), np.linspace(0.0, 1.0, num_cp - degree + 1),
-                           np.ones(degree)])
+    return np.concatenate(
+        [np.zeros(degree), np.linspace(0.0, 1.0, num_cp - degree + 1), np.ones(degree)]
+    )
 
 
 def bspline_basis(x, num_cp, order):
@@ -46,8 +47,9 @@ def bspline_basis(x, num_cp, order):
     scipy.sparse.csr_array
         Basis matrix with explicit zeros removed.
     """
-    basis = BSpline.design_matrix(np.asarray(x, dtype=float), clamped_knots(num_cp, order),
-                                  order - 1)
+    basis = BSpline.design_matrix(
+        np.asarray(x, dtype=float), clamped_knots(num_cp, order), order - 1
+    )
     basis = basis.tocsr()
     basis.eliminate_zeros()
     return basis
@@ -101,53 +103,94 @@ class BsplineComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare('num_cp', default=4, types=int, lower=1,
-                             desc='Number of control points per curve (>= order)')
-        self.options.declare('num_points', default=10, types=int, lower=1,
-                             desc='Number of evaluation stations')
-        self.options.declare('order', default=4, types=int, lower=1,
-                             desc='B-spline order = degree + 1 (4 = cubic)')
-        self.options.declare('vec_size', default=1, types=int, lower=1,
-                             desc='Number of independent curves sharing the basis')
-        self.options.declare('x_interp', default=None, types=(list, tuple, np.ndarray),
-                             allow_none=True,
-                             desc='Normalized stations in [0, 1] (num_points,); '
-                                  'None: linspace(0, 1, num_points)')
-        self.options.declare('in_name', default='control_points', types=str,
-                             desc='Name of the control-point input')
-        self.options.declare('out_name', default='curve', types=str,
-                             desc='Name of the curve output')
-        self.options.declare('units', default=None, types=str, allow_none=True,
-                             desc='Units of the control points and the curve (None: dimensionless)')
+        self.options.declare(
+            "num_cp",
+            default=4,
+            types=int,
+            lower=1,
+            desc="Number of control points per curve (>= order)",
+        )
+        self.options.declare(
+            "num_points", default=10, types=int, lower=1, desc="Number of evaluation stations"
+        )
+        self.options.declare(
+            "order", default=4, types=int, lower=1, desc="B-spline order = degree + 1 (4 = cubic)"
+        )
+        self.options.declare(
+            "vec_size",
+            default=1,
+            types=int,
+            lower=1,
+            desc="Number of independent curves sharing the basis",
+        )
+        self.options.declare(
+            "x_interp",
+            default=None,
+            types=(list, tuple, np.ndarray),
+            allow_none=True,
+            desc="Normalized stations in [0, 1] (num_points,); None: linspace(0, 1, num_points)",
+        )
+        self.options.declare(
+            "in_name", default="control_points", types=str, desc="Name of the control-point input"
+        )
+        self.options.declare(
+            "out_name", default="curve", types=str, desc="Name of the curve output"
+        )
+        self.options.declare(
+            "units",
+            default=None,
+            types=str,
+            allow_none=True,
+            desc="Units of the control points and the curve (None: dimensionless)",
+        )
 
     def _stations(self):
-        num_points = self.options['num_points']
-        x = self.options['x_interp']
+        num_points = self.options["num_points"]
+        x = self.options["x_interp"]
         if x is None:
             return np.linspace(0.0, 1.0, num_points)
-        x = check_shape("x_interp", np.asarray(x, dtype=float), (num_points,),
-                        where=f"{self.msginfo} (option 'num_points' = {num_points})")
+        x = check_shape(
+            "x_interp",
+            np.asarray(x, dtype=float),
+            (num_points,),
+            where=f"{self.msginfo} (option 'num_points' = {num_points})",
+        )
         check_range("x_interp", x, lower=0.0, upper=1.0, where=self.msginfo)
         return x
 
     def setup(self):
         opts = self.options
-        num_cp, order = opts['num_cp'], opts['order']
-        num_points, vec_size = opts['num_points'], opts['vec_size']
-        check_integer("num_cp", num_cp, lower=order, allowed=f">= option 'order' = {order}",
-                      where=self.msginfo)
-        in_name, out_name = opts['in_name'], opts['out_name']
+        num_cp, order = opts["num_cp"], opts["order"]
+        num_points, vec_size = opts["num_points"], opts["vec_size"]
+        check_integer(
+            "num_cp",
+            num_cp,
+            lower=order,
+            allowed=f">= option 'order' = {order}",
+            where=self.msginfo,
+        )
+        in_name, out_name = opts["in_name"], opts["out_name"]
         if in_name == out_name:
-            raise ValueError(f"{self.msginfo}: options 'in_name' and 'out_name' are both "
-                             f"'{in_name}'; they must differ.")
+            raise ValueError(
+                f"{self.msginfo}: options 'in_name' and 'out_name' are both "
+                f"'{in_name}'; they must differ."
+            )
 
         self.x_interp = self._stations()
         self.basis = bspline_basis(self.x_interp, num_cp, order)
 
-        self.add_input(in_name, val=np.zeros((vec_size, num_cp)), units=opts['units'],
-                       desc='B-spline control points, one row per curve')
-        self.add_output(out_name, val=np.zeros((vec_size, num_points)), units=opts['units'],
-                        desc='B-spline curve values at the stations x_interp, one row per curve')
+        self.add_input(
+            in_name,
+            val=np.zeros((vec_size, num_cp)),
+            units=opts["units"],
+            desc="B-spline control points, one row per curve",
+        )
+        self.add_output(
+            out_name,
+            val=np.zeros((vec_size, num_points)),
+            units=opts["units"],
+            desc="B-spline curve values at the stations x_interp, one row per curve",
+        )
 
         # Block-diagonal constant Jacobian: block c maps cp[c, :] to curve[c, :].
         coo = self.basis.tocoo()
@@ -158,5 +201,5 @@ class BsplineComp(om.ExplicitComponent):
         self.declare_partials(out_name, in_name, rows=rows, cols=cols, val=vals)
 
     def compute(self, inputs, outputs):
-        cp = inputs[self.options['in_name']]
-        outputs[self.options['out_name']] = (self.basis @ cp.T).T
+        cp = inputs[self.options["in_name"]]
+        outputs[self.options["out_name"]] = (self.basis @ cp.T).T

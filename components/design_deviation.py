@@ -46,42 +46,61 @@ class DesignDeviationComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare("references", types=dict,
-                             desc="name -> (x0 array, units) of the variables of the set S")
-        self.options.declare("alpha", default=100.0, types=(int, float), lower=0.0,
-                             desc="penalty weight (paper: 100)")
-        self.options.declare("objective_ref", types=(int, float), lower=0.0,
-                             desc="scale of the objective (> 0)")
-        self.options.declare("objective_units", default="kg", types=str, allow_none=True,
-                             desc="units of the objective input")
+        self.options.declare(
+            "references", types=dict, desc="name -> (x0 array, units) of the variables of the set S"
+        )
+        self.options.declare(
+            "alpha",
+            default=100.0,
+            types=(int, float),
+            lower=0.0,
+            desc="penalty weight (paper: 100)",
+        )
+        self.options.declare(
+            "objective_ref", types=(int, float), lower=0.0, desc="scale of the objective (> 0)"
+        )
+        self.options.declare(
+            "objective_units",
+            default="kg",
+            types=str,
+            allow_none=True,
+            desc="units of the objective input",
+        )
 
     def setup(self):
         opts = self.options
-        check_range("objective_ref", opts["objective_ref"], lower=0.0, lower_open=True,
-                    where=self.msginfo)
+        check_range(
+            "objective_ref", opts["objective_ref"], lower=0.0, lower_open=True, where=self.msginfo
+        )
         self._x0 = {}
         for name, (x0, units) in opts["references"].items():
             x0 = np.atleast_1d(np.asarray(x0, dtype=float))
             if np.any(x0 == 0.0) or not np.all(np.isfinite(x0)):
-                raise ValueError(f"{self.msginfo}: reference value of '{name}' = {x0.tolist()}; "
-                                 "the deviation is relative, so every entry must be finite and "
-                                 "nonzero.")
+                raise ValueError(
+                    f"{self.msginfo}: reference value of '{name}' = {x0.tolist()}; "
+                    "the deviation is relative, so every entry must be finite and "
+                    "nonzero."
+                )
             self._x0[name] = x0
             self.add_input(name, val=x0, units=units, desc=f"Design variable '{name}' (set S)")
             self.declare_partials("baseline_objective", name)
             self.declare_partials("deviation", name)
-        self.add_input("objective", val=opts["objective_ref"], units=opts["objective_units"],
-                       desc="Design objective f")
+        self.add_input(
+            "objective",
+            val=opts["objective_ref"],
+            units=opts["objective_units"],
+            desc="Design objective f",
+        )
         self.add_output("baseline_objective", val=1.0, desc="f/f_ref + alpha * deviation")
         self.add_output("deviation", val=0.0, desc="sum of squared relative deviations")
-        self.declare_partials("baseline_objective", "objective",
-                              val=1.0 / opts["objective_ref"])
+        self.declare_partials("baseline_objective", "objective", val=1.0 / opts["objective_ref"])
 
     def compute(self, inputs, outputs):
         deviation = sum(np.sum(((inputs[n] - x0) / x0) ** 2) for n, x0 in self._x0.items())
         outputs["deviation"] = deviation
-        outputs["baseline_objective"] = (inputs["objective"] / self.options["objective_ref"]
-                                         + self.options["alpha"] * deviation)
+        outputs["baseline_objective"] = (
+            inputs["objective"] / self.options["objective_ref"] + self.options["alpha"] * deviation
+        )
 
     def compute_partials(self, inputs, partials):
         alpha = self.options["alpha"]

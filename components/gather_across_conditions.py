@@ -43,19 +43,31 @@ class GatherComp(om.ExplicitComponent):
         self.options.declare("sources", types=(list, tuple), desc="input names")
         self.options.declare("items", types=(list, tuple), desc="item index of each entry")
         self.options.declare("num_items", types=int, lower=1, desc="number of items")
-        self.options.declare("units", default=None, types=str, allow_none=True,
-                             desc="units of the inputs and the output")
-        self.options.declare("absent_value", default=None, types=float, allow_none=True,
-                             desc="value of items that no source has")
+        self.options.declare(
+            "units",
+            default=None,
+            types=str,
+            allow_none=True,
+            desc="units of the inputs and the output",
+        )
+        self.options.declare(
+            "absent_value",
+            default=None,
+            types=float,
+            allow_none=True,
+            desc="value of items that no source has",
+        )
 
     def setup(self):
         opts = self.options
         sources, ni = list(opts["sources"]), opts["num_items"]
         items = [np.asarray(i, dtype=int) for i in opts["items"]]
         if len(items) != len(sources) or any(i.min() < 0 or i.max() >= ni for i in items):
-            raise ValueError(f"{self.msginfo}: items = {[i.tolist() for i in items]} must give "
-                             f"one index array per source ({len(sources)}) with values in "
-                             f"0..{ni - 1}.")
+            raise ValueError(
+                f"{self.msginfo}: items = {[i.tolist() for i in items]} must give "
+                f"one index array per source ({len(sources)}) with values in "
+                f"0..{ni - 1}."
+            )
         ns = len(sources)
         owner = {}
         for name, idx in zip(sources, items, strict=True):
@@ -63,18 +75,24 @@ class GatherComp(om.ExplicitComponent):
                 owner.setdefault(int(item), (name, j))
         missing = sorted(set(range(ni)) - set(owner))
         if missing and opts["absent_value"] is None:
-            raise ValueError(f"{self.msginfo}: items {missing} are in no source; give "
-                             "absent_value to fill them.")
+            raise ValueError(
+                f"{self.msginfo}: items {missing} are in no source; give absent_value to fill them."
+            )
         self._constant = np.zeros((ni, ns))
         for item in missing:
             self._constant[item, :] = opts["absent_value"]
         self._plan = []
         for k, (name, idx) in enumerate(zip(sources, items, strict=True)):
-            self.add_input(name, np.zeros((idx.size, 1)), units=opts["units"],
-                           desc=f"values from {name}")
+            self.add_input(
+                name, np.zeros((idx.size, 1)), units=opts["units"], desc=f"values from {name}"
+            )
             self._plan.append((name, idx, k))
-        self.add_output(opts["name"], np.zeros((ni, ns)), units=opts["units"],
-                        desc="values per item (rows) and source (columns)")
+        self.add_output(
+            opts["name"],
+            np.zeros((ni, ns)),
+            units=opts["units"],
+            desc="values per item (rows) and source (columns)",
+        )
         # Build the (row, col) -> (source, entry) map including filled gaps.
         self._maps = {name: ([], []) for name in sources}
         for name, idx, k in self._plan:

@@ -53,50 +53,75 @@ class KinematicsComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare("num_nodes", default=1, types=int, lower=1,
-                             desc="Number of flight conditions.")
+        self.options.declare(
+            "num_nodes", default=1, types=int, lower=1, desc="Number of flight conditions."
+        )
 
     def setup(self):
         nn = self.options["num_nodes"]
         self.add_input("speed", np.zeros(nn), units="m/s", desc="airspeed")
         self.add_input("pitch", np.zeros(nn), units="rad", desc="pitch angle")
-        self.add_input("flight_path_angle", np.zeros(nn), units="rad",
-                       desc="flight-path angle, positive climbing")
-        self.add_input("density", np.full(nn, SEA_LEVEL_DENSITY), units="kg/m**3",
-                       desc="air density")
-        self.add_input("speed_of_sound", np.full(nn, SEA_LEVEL_SPEED_OF_SOUND), units="m/s",
-                       desc="speed of sound")
-        self.add_input("dynamic_viscosity", np.full(nn, 1.7894e-5), units="Pa*s",
-                       desc="dynamic viscosity of air")
+        self.add_input(
+            "flight_path_angle",
+            np.zeros(nn),
+            units="rad",
+            desc="flight-path angle, positive climbing",
+        )
+        self.add_input(
+            "density", np.full(nn, SEA_LEVEL_DENSITY), units="kg/m**3", desc="air density"
+        )
+        self.add_input(
+            "speed_of_sound",
+            np.full(nn, SEA_LEVEL_SPEED_OF_SOUND),
+            units="m/s",
+            desc="speed of sound",
+        )
+        self.add_input(
+            "dynamic_viscosity",
+            np.full(nn, 1.7894e-5),
+            units="Pa*s",
+            desc="dynamic viscosity of air",
+        )
 
-        self.add_output("angle_of_attack", np.zeros(nn), units="rad",
-                        desc="angle of attack, pitch minus flight-path angle")
+        self.add_output(
+            "angle_of_attack",
+            np.zeros(nn),
+            units="rad",
+            desc="angle of attack, pitch minus flight-path angle",
+        )
         self.add_output("u", np.zeros(nn), units="m/s", desc="body-axis x velocity")
         self.add_output("w", np.zeros(nn), units="m/s", desc="body-axis z velocity (down)")
-        self.add_output("velocity", np.zeros((nn, 3)), units="m/s",
-                        desc="body-axis velocity vector (u, 0, w)")
+        self.add_output(
+            "velocity", np.zeros((nn, 3)), units="m/s", desc="body-axis velocity vector (u, 0, w)"
+        )
         self.add_output("mach", np.zeros(nn), units=None, desc="Mach number")
         self.add_output("dynamic_pressure", np.zeros(nn), units="Pa", desc="dynamic pressure")
-        self.add_output("reynolds_per_length", np.zeros(nn), units="1/m",
-                        desc="Reynolds number per metre of reference length")
+        self.add_output(
+            "reynolds_per_length",
+            np.zeros(nn),
+            units="1/m",
+            desc="Reynolds number per metre of reference length",
+        )
 
         self.declare_partials("angle_of_attack", "pitch", diagonal=True, val=1.0)
         self.declare_partials("angle_of_attack", "flight_path_angle", diagonal=True, val=-1.0)
-        self.declare_partials(["u", "w"], ["speed", "pitch", "flight_path_angle"],
-                              diagonal=True)
+        self.declare_partials(["u", "w"], ["speed", "pitch", "flight_path_angle"], diagonal=True)
         rows = np.concatenate([3 * np.arange(nn), 3 * np.arange(nn) + 2])
         cols = np.concatenate([np.arange(nn), np.arange(nn)])
-        self.declare_partials("velocity", ["speed", "pitch", "flight_path_angle"], rows=rows,
-                              cols=cols)
+        self.declare_partials(
+            "velocity", ["speed", "pitch", "flight_path_angle"], rows=rows, cols=cols
+        )
         self.declare_partials("mach", ["speed", "speed_of_sound"], diagonal=True)
         self.declare_partials("dynamic_pressure", ["speed", "density"], diagonal=True)
-        self.declare_partials("reynolds_per_length", ["speed", "density", "dynamic_viscosity"],
-                              diagonal=True)
+        self.declare_partials(
+            "reynolds_per_length", ["speed", "density", "dynamic_viscosity"], diagonal=True
+        )
 
     def compute(self, inputs, outputs):
         speed = inputs["speed"]
-        check_range("speed", speed, lower=0.0, units="m/s", error=om.AnalysisError,
-                    where=self.msginfo)
+        check_range(
+            "speed", speed, lower=0.0, units="m/s", error=om.AnalysisError, where=self.msginfo
+        )
         alpha = inputs["pitch"] - inputs["flight_path_angle"]
         rho = inputs["density"]
         outputs["angle_of_attack"] = alpha

@@ -56,35 +56,60 @@ class KSComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare('vec_size', default=1, types=int, lower=1,
-                             desc='Number of independent aggregations (rows of g)')
-        self.options.declare('width', default=1, types=int, lower=1,
-                             desc='Number of values aggregated per row')
-        self.options.declare('rho', default=50.0, types=(int, float), check_valid=_check_positive,
-                             desc='KS aggregation parameter (> 0), in 1/(units of g)')
-        self.options.declare('lower_flag', default=False, types=bool,
-                             desc='If True, aggregate the minimum instead of the maximum')
-        self.options.declare('units', default=None, types=str, allow_none=True,
-                             desc='Units of g and KS (None: dimensionless)')
+        self.options.declare(
+            "vec_size",
+            default=1,
+            types=int,
+            lower=1,
+            desc="Number of independent aggregations (rows of g)",
+        )
+        self.options.declare(
+            "width", default=1, types=int, lower=1, desc="Number of values aggregated per row"
+        )
+        self.options.declare(
+            "rho",
+            default=50.0,
+            types=(int, float),
+            check_valid=_check_positive,
+            desc="KS aggregation parameter (> 0), in 1/(units of g)",
+        )
+        self.options.declare(
+            "lower_flag",
+            default=False,
+            types=bool,
+            desc="If True, aggregate the minimum instead of the maximum",
+        )
+        self.options.declare(
+            "units",
+            default=None,
+            types=str,
+            allow_none=True,
+            desc="Units of g and KS (None: dimensionless)",
+        )
 
     def setup(self):
-        n = self.options['vec_size']
-        w = self.options['width']
-        units = self.options['units']
+        n = self.options["vec_size"]
+        w = self.options["width"]
+        units = self.options["units"]
 
-        self.add_input('g', val=np.zeros((n, w)), units=units,
-                       desc='Values to aggregate, one row per output')
-        self.add_output('KS', val=np.zeros(n), units=units,
-                        desc='Smooth maximum (minimum if lower_flag) of each row of g')
+        self.add_input(
+            "g", val=np.zeros((n, w)), units=units, desc="Values to aggregate, one row per output"
+        )
+        self.add_output(
+            "KS",
+            val=np.zeros(n),
+            units=units,
+            desc="Smooth maximum (minimum if lower_flag) of each row of g",
+        )
 
         rows = np.repeat(np.arange(n), w)
         cols = np.arange(n * w)
-        self.declare_partials('KS', 'g', rows=rows, cols=cols)
+        self.declare_partials("KS", "g", rows=rows, cols=cols)
 
     def _weights(self, g):
         """Return the signed values s*g, their row shift and the exponentials."""
-        sign = -1.0 if self.options['lower_flag'] else 1.0
-        rho = self.options['rho']
+        sign = -1.0 if self.options["lower_flag"] else 1.0
+        rho = self.options["rho"]
         sg = sign * g
         # Shift by the real row maximum: exact cancellation, so derivatives are unaffected.
         shift = np.max(sg.real, axis=1)
@@ -92,11 +117,11 @@ class KSComp(om.ExplicitComponent):
         return sign, shift, expo
 
     def compute(self, inputs, outputs):
-        rho = self.options['rho']
-        sign, shift, expo = self._weights(inputs['g'])
-        outputs['KS'] = sign * (shift + np.log(np.sum(expo, axis=1)) / rho)
+        rho = self.options["rho"]
+        sign, shift, expo = self._weights(inputs["g"])
+        outputs["KS"] = sign * (shift + np.log(np.sum(expo, axis=1)) / rho)
 
     def compute_partials(self, inputs, partials):
-        _, _, expo = self._weights(inputs['g'])
+        _, _, expo = self._weights(inputs["g"])
         # d(sign * KS_max(sign g))/dg = sign * sign * softmax = softmax.
-        partials['KS', 'g'] = (expo / np.sum(expo, axis=1)[:, np.newaxis]).ravel()
+        partials["KS", "g"] = (expo / np.sum(expo, axis=1)[:, np.newaxis]).ravel()

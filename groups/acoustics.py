@@ -30,7 +30,7 @@ from lpc_mdo.components.acoustics.tonal import LowsonLoadingNoiseComp, SearsGust
 from lpc_mdo.components.acoustics.total import TotalNoiseComp
 from lpc_mdo.constants import SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
 
-__all__ = ['RotorNoiseGroup', 'HOVER_NOISE_LIMIT_DBA']
+__all__ = ["RotorNoiseGroup", "HOVER_NOISE_LIMIT_DBA"]
 
 #: Paper hover noise constraint: total A-weighted SPL <= 70 dBA at the observer.
 HOVER_NOISE_LIMIT_DBA = 70.0
@@ -130,109 +130,220 @@ class RotorNoiseGroup(om.Group):
 
     def initialize(self):
         opt = self.options
-        opt.declare('num_rotors', default=1, types=int, lower=1, desc='Number of rotors')
-        opt.declare('num_blades', default=2, types=(int, tuple, list, np.ndarray),
-                    desc='Blades per rotor (int or one per rotor)')
-        opt.declare('num_radial', default=25, types=int, lower=1,
-                    desc='Number of acoustic radial stations')
-        opt.declare('num_azimuth', default=1, types=int, lower=1,
-                    desc='Number of azimuthal stations of the sectional loads')
-        opt.declare('num_harmonics', default=3, types=int, lower=1,
-                    desc='Number of blade-passing harmonics')
-        opt.declare('num_bands', default=38, types=int, lower=1,
-                    desc='Number of one-third-octave bands')
-        opt.declare('lowest_band_frequency', default=12.5, types=(int, float),
-                    desc='Nominal centre of the first band, Hz')
-        opt.declare('num_load_harmonics', default=None, types=int, allow_none=True,
-                    desc='Highest azimuthal load harmonic (None: all resolvable, <= 10)')
-        opt.declare('num_gust_harmonics', default=10, types=int, lower=1,
-                    desc='Highest Sears gust load harmonic')
-        opt.declare('gust_factor', default=0.06, types=(int, float), lower=0.0,
-                    desc='Sears gust amplification factor q')
-        opt.declare('loading_path', default='auto', values=('auto', 'sears', 'unsteady'),
-                    desc='Loading-noise load model')
-        opt.declare('load_input', default='sectional', values=('sectional', 'totals'),
-                    desc="'sectional' loads or rotor 'totals' (thrust, torque)")
-        opt.declare('observer_input', default='relative', values=('relative', 'position'),
-                    desc="Observer given 'relative' to the hub centroid or as a 'position'")
-        opt.declare('radial_stations', default=None, types=(np.ndarray, list, tuple),
-                    allow_none=True, desc='Radial stations r/R')
-        opt.declare('radial_weights', default=None, types=(np.ndarray, list, tuple),
-                    allow_none=True, desc='Radial quadrature weights (fractions of R)')
-        opt.declare('hub_radius_ratio', default=0.2, types=(int, float),
-                    desc='Hub radius / tip radius')
-        opt.declare('rotation_direction', default=None, types=(tuple, list), allow_none=True,
-                    desc='+1/-1 per rotor')
-        opt.declare('edgewise_broadband_correction', default=True, types=bool,
-                    desc='Gill-Lee edgewise adjustment')
+        opt.declare("num_rotors", default=1, types=int, lower=1, desc="Number of rotors")
+        opt.declare(
+            "num_blades",
+            default=2,
+            types=(int, tuple, list, np.ndarray),
+            desc="Blades per rotor (int or one per rotor)",
+        )
+        opt.declare(
+            "num_radial", default=25, types=int, lower=1, desc="Number of acoustic radial stations"
+        )
+        opt.declare(
+            "num_azimuth",
+            default=1,
+            types=int,
+            lower=1,
+            desc="Number of azimuthal stations of the sectional loads",
+        )
+        opt.declare(
+            "num_harmonics", default=3, types=int, lower=1, desc="Number of blade-passing harmonics"
+        )
+        opt.declare(
+            "num_bands", default=38, types=int, lower=1, desc="Number of one-third-octave bands"
+        )
+        opt.declare(
+            "lowest_band_frequency",
+            default=12.5,
+            types=(int, float),
+            desc="Nominal centre of the first band, Hz",
+        )
+        opt.declare(
+            "num_load_harmonics",
+            default=None,
+            types=int,
+            allow_none=True,
+            desc="Highest azimuthal load harmonic (None: all resolvable, <= 10)",
+        )
+        opt.declare(
+            "num_gust_harmonics",
+            default=10,
+            types=int,
+            lower=1,
+            desc="Highest Sears gust load harmonic",
+        )
+        opt.declare(
+            "gust_factor",
+            default=0.06,
+            types=(int, float),
+            lower=0.0,
+            desc="Sears gust amplification factor q",
+        )
+        opt.declare(
+            "loading_path",
+            default="auto",
+            values=("auto", "sears", "unsteady"),
+            desc="Loading-noise load model",
+        )
+        opt.declare(
+            "load_input",
+            default="sectional",
+            values=("sectional", "totals"),
+            desc="'sectional' loads or rotor 'totals' (thrust, torque)",
+        )
+        opt.declare(
+            "observer_input",
+            default="relative",
+            values=("relative", "position"),
+            desc="Observer given 'relative' to the hub centroid or as a 'position'",
+        )
+        opt.declare(
+            "radial_stations",
+            default=None,
+            types=(np.ndarray, list, tuple),
+            allow_none=True,
+            desc="Radial stations r/R",
+        )
+        opt.declare(
+            "radial_weights",
+            default=None,
+            types=(np.ndarray, list, tuple),
+            allow_none=True,
+            desc="Radial quadrature weights (fractions of R)",
+        )
+        opt.declare(
+            "hub_radius_ratio", default=0.2, types=(int, float), desc="Hub radius / tip radius"
+        )
+        opt.declare(
+            "rotation_direction",
+            default=None,
+            types=(tuple, list),
+            allow_none=True,
+            desc="+1/-1 per rotor",
+        )
+        opt.declare(
+            "edgewise_broadband_correction",
+            default=True,
+            types=bool,
+            desc="Gill-Lee edgewise adjustment",
+        )
 
     def setup(self):
         opt = self.options
-        nr, nrad, naz = opt['num_rotors'], opt['num_radial'], opt['num_azimuth']
-        nm, nb = opt['num_harmonics'], opt['num_bands']
-        L = opt['num_load_harmonics']
+        nr, nrad, naz = opt["num_rotors"], opt["num_radial"], opt["num_azimuth"]
+        nm, nb = opt["num_harmonics"], opt["num_bands"]
+        L = opt["num_load_harmonics"]
         if L is None:
             L = default_load_harmonics(naz)
-        check_integer("num_load_harmonics", L, lower=0, upper=max_load_harmonics(naz),
-                      allowed=f"in [0, (num_azimuth - 1)//2 = {max_load_harmonics(naz)}]",
-                      where=self.msginfo)
-        if opt['load_input'] == 'totals' and naz != 1:
-            raise ValueError(f"{self.msginfo}: load_input = 'totals' (assumed hover load shape) "
-                             f"needs num_azimuth = 1, got {naz}.")
-        blades = blade_counts(opt['num_blades'], nr)
-        radial = {'num_radial': nrad, 'radial_stations': opt['radial_stations'],
-                  'radial_weights': opt['radial_weights'],
-                  'hub_radius_ratio': opt['hub_radius_ratio']}
-        radial_quadrature(nrad, opt['radial_stations'], opt['radial_weights'],
-                          opt['hub_radius_ratio'])          # validate once, early
-        self.band_frequencies = nominal_third_octave_bands(nb, float(opt['lowest_band_frequency']))
-        path = opt['loading_path']
-        common = {'num_rotors': nr, 'num_blades': tuple(int(b) for b in blades)}
+        check_integer(
+            "num_load_harmonics",
+            L,
+            lower=0,
+            upper=max_load_harmonics(naz),
+            allowed=f"in [0, (num_azimuth - 1)//2 = {max_load_harmonics(naz)}]",
+            where=self.msginfo,
+        )
+        if opt["load_input"] == "totals" and naz != 1:
+            raise ValueError(
+                f"{self.msginfo}: load_input = 'totals' (assumed hover load shape) "
+                f"needs num_azimuth = 1, got {naz}."
+            )
+        blades = blade_counts(opt["num_blades"], nr)
+        radial = {
+            "num_radial": nrad,
+            "radial_stations": opt["radial_stations"],
+            "radial_weights": opt["radial_weights"],
+            "hub_radius_ratio": opt["hub_radius_ratio"],
+        }
+        radial_quadrature(
+            nrad, opt["radial_stations"], opt["radial_weights"], opt["hub_radius_ratio"]
+        )  # validate once, early
+        self.band_frequencies = nominal_third_octave_bands(nb, float(opt["lowest_band_frequency"]))
+        path = opt["loading_path"]
+        common = {"num_rotors": nr, "num_blades": tuple(int(b) for b in blades)}
 
-        if opt['observer_input'] == 'relative':
-            self.add_subsystem('observer_position', ObserverPositionComp(num_rotors=nr),
-                               promotes=['*'])
-        self.add_subsystem('geometry', ObserverGeometryComp(
-            num_rotors=nr, rotation_direction=opt['rotation_direction']), promotes=['*'])
-        if opt['load_input'] == 'totals':
-            self.add_subsystem('hover_loads', HoverLoadDistributionComp(**common, **radial),
-                               promotes=['*'])
-        self.add_subsystem('fourier', LoadFourierComp(num_rotors=nr, num_radial=nrad,
-                                                      num_azimuth=naz, num_load_harmonics=L),
-                           promotes=['*'])
-        if path != 'unsteady':
-            self.add_subsystem('sears', SearsGustLoadsComp(
-                num_rotors=nr, num_azimuth=naz, num_gust_harmonics=opt['num_gust_harmonics'],
-                gust_factor=opt['gust_factor'], **radial), promotes=['*'])
-        self.add_subsystem('loading', LowsonLoadingNoiseComp(
-            **common, num_harmonics=nm, num_load_harmonics=L,
-            num_gust_harmonics=opt['num_gust_harmonics'], loading_path=path, **radial),
-            promotes=['*'])
-        self.add_subsystem('thickness', BarryMagliozziThicknessComp(
-            **common, num_harmonics=nm, **radial), promotes=['*'])
-        self.add_subsystem('broadband', GillLeeBroadbandComp(
-            **common, num_bands=nb, lowest_band_frequency=opt['lowest_band_frequency'],
-            edgewise_correction=opt['edgewise_broadband_correction'], **radial),
-            promotes=['*'])
-        self.add_subsystem('tonal_weighting', AWeightingComp(
-            shape=(nr, nm), names=['loading_spl', 'thickness_spl']),
-            promotes=[('frequency', 'harmonic_frequency'), '*'])
-        self.add_subsystem('broadband_weighting', AWeightingComp(
-            shape=(nr, nb), names=['broadband_spl'], frequencies=self.band_frequencies),
-            promotes=['*'])
-        total_sizes = {'num_rotors': nr, 'num_harmonics': nm, 'num_bands': nb}
-        self.add_subsystem('total_a', TotalNoiseComp(**total_sizes, weighting='A'),
-                           promotes=['*'])
-        self.add_subsystem('total', TotalNoiseComp(**total_sizes, weighting='none'),
-                           promotes=['*'])
+        if opt["observer_input"] == "relative":
+            self.add_subsystem(
+                "observer_position", ObserverPositionComp(num_rotors=nr), promotes=["*"]
+            )
+        self.add_subsystem(
+            "geometry",
+            ObserverGeometryComp(num_rotors=nr, rotation_direction=opt["rotation_direction"]),
+            promotes=["*"],
+        )
+        if opt["load_input"] == "totals":
+            self.add_subsystem(
+                "hover_loads", HoverLoadDistributionComp(**common, **radial), promotes=["*"]
+            )
+        self.add_subsystem(
+            "fourier",
+            LoadFourierComp(num_rotors=nr, num_radial=nrad, num_azimuth=naz, num_load_harmonics=L),
+            promotes=["*"],
+        )
+        if path != "unsteady":
+            self.add_subsystem(
+                "sears",
+                SearsGustLoadsComp(
+                    num_rotors=nr,
+                    num_azimuth=naz,
+                    num_gust_harmonics=opt["num_gust_harmonics"],
+                    gust_factor=opt["gust_factor"],
+                    **radial,
+                ),
+                promotes=["*"],
+            )
+        self.add_subsystem(
+            "loading",
+            LowsonLoadingNoiseComp(
+                **common,
+                num_harmonics=nm,
+                num_load_harmonics=L,
+                num_gust_harmonics=opt["num_gust_harmonics"],
+                loading_path=path,
+                **radial,
+            ),
+            promotes=["*"],
+        )
+        self.add_subsystem(
+            "thickness",
+            BarryMagliozziThicknessComp(**common, num_harmonics=nm, **radial),
+            promotes=["*"],
+        )
+        self.add_subsystem(
+            "broadband",
+            GillLeeBroadbandComp(
+                **common,
+                num_bands=nb,
+                lowest_band_frequency=opt["lowest_band_frequency"],
+                edgewise_correction=opt["edgewise_broadband_correction"],
+                **radial,
+            ),
+            promotes=["*"],
+        )
+        self.add_subsystem(
+            "tonal_weighting",
+            AWeightingComp(shape=(nr, nm), names=["loading_spl", "thickness_spl"]),
+            promotes=[("frequency", "harmonic_frequency"), "*"],
+        )
+        self.add_subsystem(
+            "broadband_weighting",
+            AWeightingComp(
+                shape=(nr, nb), names=["broadband_spl"], frequencies=self.band_frequencies
+            ),
+            promotes=["*"],
+        )
+        total_sizes = {"num_rotors": nr, "num_harmonics": nm, "num_bands": nb}
+        self.add_subsystem("total_a", TotalNoiseComp(**total_sizes, weighting="A"), promotes=["*"])
+        self.add_subsystem("total", TotalNoiseComp(**total_sizes, weighting="none"), promotes=["*"])
 
         # Inputs shared by several components: one default value and unit each.
-        self.set_input_defaults('radius', np.full(nr, 1.524), units='m')
-        self.set_input_defaults('rpm', np.full(nr, 1200.0), units='rpm')
-        self.set_input_defaults('chord', np.full((nr, nrad), 0.2), units='m')
-        self.set_input_defaults('density', SEA_LEVEL_DENSITY, units='kg/m**3')
-        self.set_input_defaults('speed_of_sound', SEA_LEVEL_SPEED_OF_SOUND, units='m/s')
-        self.set_input_defaults('thrust', np.full(nr, 5000.0), units='N')
-        self.set_input_defaults('hub_position', np.zeros((nr, 3)), units='m')
-        if opt['load_input'] == 'sectional' and path != 'unsteady':
-            self.set_input_defaults('inflow_angle', np.full((nr, nrad, naz), 0.1), units='rad')
+        self.set_input_defaults("radius", np.full(nr, 1.524), units="m")
+        self.set_input_defaults("rpm", np.full(nr, 1200.0), units="rpm")
+        self.set_input_defaults("chord", np.full((nr, nrad), 0.2), units="m")
+        self.set_input_defaults("density", SEA_LEVEL_DENSITY, units="kg/m**3")
+        self.set_input_defaults("speed_of_sound", SEA_LEVEL_SPEED_OF_SOUND, units="m/s")
+        self.set_input_defaults("thrust", np.full(nr, 5000.0), units="N")
+        self.set_input_defaults("hub_position", np.zeros((nr, 3)), units="m")
+        if opt["load_input"] == "sectional" and path != "unsteady":
+            self.set_input_defaults("inflow_angle", np.full((nr, nrad, naz), 0.1), units="rad")

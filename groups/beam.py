@@ -20,25 +20,39 @@ from lpc_mdo.components.structures.stress import BoxStressComp
 
 
 def _declare_frame_options(group):
-    group.options.declare('num_nodes', types=int, lower=2, desc='Number of beam nodes (>= 2)')
-    group.options.declare('connectivity', default=None, allow_none=True,
-                          desc='Element node pairs (num_elements, 2); None: consecutive nodes')
-    group.options.declare('fixed_nodes', default=(0,), types=(tuple, list),
-                          desc='Clamped nodes (all 6 DoF fixed)')
-    group.options.declare('fixed_dofs', default=(), types=(tuple, list),
-                          desc='Further constrained (node, dof) pairs, dof 0..5')
+    group.options.declare("num_nodes", types=int, lower=2, desc="Number of beam nodes (>= 2)")
+    group.options.declare(
+        "connectivity",
+        default=None,
+        allow_none=True,
+        desc="Element node pairs (num_elements, 2); None: consecutive nodes",
+    )
+    group.options.declare(
+        "fixed_nodes", default=(0,), types=(tuple, list), desc="Clamped nodes (all 6 DoF fixed)"
+    )
+    group.options.declare(
+        "fixed_dofs",
+        default=(),
+        types=(tuple, list),
+        desc="Further constrained (node, dof) pairs, dof 0..5",
+    )
 
 
 def _add_frame(group, with_mass=True):
     """Add mass, stiffness solve and load recovery, everything promoted."""
-    opts = {'num_nodes': group.options['num_nodes'],
-            'connectivity': group.options['connectivity']}
+    opts = {"num_nodes": group.options["num_nodes"], "connectivity": group.options["connectivity"]}
     if with_mass:
-        group.add_subsystem('mass', BeamMassComp(**opts), promotes=['*'])
-    group.add_subsystem('fem', BeamDisplacementComp(
-        fixed_nodes=tuple(group.options['fixed_nodes']),
-        fixed_dofs=tuple(tuple(p) for p in group.options['fixed_dofs']), **opts), promotes=['*'])
-    group.add_subsystem('internal_loads', BeamForcesComp(**opts), promotes=['*'])
+        group.add_subsystem("mass", BeamMassComp(**opts), promotes=["*"])
+    group.add_subsystem(
+        "fem",
+        BeamDisplacementComp(
+            fixed_nodes=tuple(group.options["fixed_nodes"]),
+            fixed_dofs=tuple(tuple(p) for p in group.options["fixed_dofs"]),
+            **opts,
+        ),
+        promotes=["*"],
+    )
+    group.add_subsystem("internal_loads", BeamForcesComp(**opts), promotes=["*"])
 
 
 class BeamGroup(om.Group):
@@ -150,73 +164,147 @@ class BoxBeamGroup(om.Group):
 
     def initialize(self):
         _declare_frame_options(self)
-        self.options.declare('torsion_formula', default='polar', values=TORSION_FORMULAS,
-                             desc="Torsion constant and torsional shear: 'polar' or 'bredt'")
-        self.options.declare('web_points', default='one', values=('one', 'both'),
-                             desc="Stress points on the webs: 'one' (five points) or 'both'")
-        self.options.declare('panel', default='curved', values=PANEL_MODELS,
-                             desc="Skin-panel buckling model: 'curved' (eq. 18) or 'flat'")
-        self.options.declare('flat_plate_coefficient', default=4.0, types=(int, float),
-                             desc='Buckling coefficient k of flat panels')
-        self.options.declare('num_aero_points', default=0, types=int, lower=0,
-                             desc='Aerodynamic force points for the load transfer (0: nodal '
-                                  'loads are inputs)')
-        self.options.declare('num_point_masses', default=0, types=int, lower=0,
-                             desc='Point masses carried by the wing box (load transfer)')
-        self.options.declare('include_weight', default=True, types=bool,
-                             desc="With load transfer: add the box's own weight at the load "
-                                  'factor')
-        self.options.declare('span_axis', default=1, values=(0, 1, 2),
-                             desc='Span coordinate of the load transfer')
-        self.options.declare('ks_rho', default=None, types=(int, float), allow_none=True,
-                             desc='KS parameter of the stress and buckling aggregates (None: '
-                                  'no aggregation)')
-        self.options.declare('num_buckling_bays', default=None, types=int, allow_none=True,
-                             desc='Bays from the root in the buckling aggregate (None: all but '
-                                  'the tip bay, as the paper)')
+        self.options.declare(
+            "torsion_formula",
+            default="polar",
+            values=TORSION_FORMULAS,
+            desc="Torsion constant and torsional shear: 'polar' or 'bredt'",
+        )
+        self.options.declare(
+            "web_points",
+            default="one",
+            values=("one", "both"),
+            desc="Stress points on the webs: 'one' (five points) or 'both'",
+        )
+        self.options.declare(
+            "panel",
+            default="curved",
+            values=PANEL_MODELS,
+            desc="Skin-panel buckling model: 'curved' (eq. 18) or 'flat'",
+        )
+        self.options.declare(
+            "flat_plate_coefficient",
+            default=4.0,
+            types=(int, float),
+            desc="Buckling coefficient k of flat panels",
+        )
+        self.options.declare(
+            "num_aero_points",
+            default=0,
+            types=int,
+            lower=0,
+            desc="Aerodynamic force points for the load transfer (0: nodal loads are inputs)",
+        )
+        self.options.declare(
+            "num_point_masses",
+            default=0,
+            types=int,
+            lower=0,
+            desc="Point masses carried by the wing box (load transfer)",
+        )
+        self.options.declare(
+            "include_weight",
+            default=True,
+            types=bool,
+            desc="With load transfer: add the box's own weight at the load factor",
+        )
+        self.options.declare(
+            "span_axis", default=1, values=(0, 1, 2), desc="Span coordinate of the load transfer"
+        )
+        self.options.declare(
+            "ks_rho",
+            default=None,
+            types=(int, float),
+            allow_none=True,
+            desc="KS parameter of the stress and buckling aggregates (None: no aggregation)",
+        )
+        self.options.declare(
+            "num_buckling_bays",
+            default=None,
+            types=int,
+            allow_none=True,
+            desc="Bays from the root in the buckling aggregate (None: all but "
+            "the tip bay, as the paper)",
+        )
 
     def setup(self):
-        if self.options['connectivity'] is not None:
-            raise ValueError(f"{self.msginfo}: option 'connectivity' must be None; the box "
-                             "beam is a chain of consecutive nodes.")
-        n = self.options['num_nodes']
+        if self.options["connectivity"] is not None:
+            raise ValueError(
+                f"{self.msginfo}: option 'connectivity' must be None; the box "
+                "beam is a chain of consecutive nodes."
+            )
+        n = self.options["num_nodes"]
         ne = n - 1
-        formula = self.options['torsion_formula']
-        self.add_subsystem('section', BoxSectionComp(num_elements=ne, torsion_formula=formula),
-                           promotes=['*'])
-        self.add_subsystem('mass', BeamMassComp(num_nodes=n), promotes=['*'])
-        if self.options['num_aero_points'] or self.options['num_point_masses']:
-            self.add_subsystem('load_transfer', LoadTransferComp(
-                num_nodes=n, num_points=self.options['num_aero_points'],
-                num_point_masses=self.options['num_point_masses'],
-                include_weight=self.options['include_weight'],
-                span_axis=self.options['span_axis']), promotes=['*'])
+        formula = self.options["torsion_formula"]
+        self.add_subsystem(
+            "section", BoxSectionComp(num_elements=ne, torsion_formula=formula), promotes=["*"]
+        )
+        self.add_subsystem("mass", BeamMassComp(num_nodes=n), promotes=["*"])
+        if self.options["num_aero_points"] or self.options["num_point_masses"]:
+            self.add_subsystem(
+                "load_transfer",
+                LoadTransferComp(
+                    num_nodes=n,
+                    num_points=self.options["num_aero_points"],
+                    num_point_masses=self.options["num_point_masses"],
+                    include_weight=self.options["include_weight"],
+                    span_axis=self.options["span_axis"],
+                ),
+                promotes=["*"],
+            )
         _add_frame(self, with_mass=False)
-        self.add_subsystem('stress', BoxStressComp(num_elements=ne, torsion_formula=formula,
-                                                   web_points=self.options['web_points']),
-                           promotes=['*'])
-        self.add_subsystem('buckling', PanelBucklingComp(
-            num_elements=ne, panel=self.options['panel'],
-            flat_plate_coefficient=self.options['flat_plate_coefficient']), promotes=['*'])
-        if self.options['ks_rho'] is not None:
+        self.add_subsystem(
+            "stress",
+            BoxStressComp(
+                num_elements=ne, torsion_formula=formula, web_points=self.options["web_points"]
+            ),
+            promotes=["*"],
+        )
+        self.add_subsystem(
+            "buckling",
+            PanelBucklingComp(
+                num_elements=ne,
+                panel=self.options["panel"],
+                flat_plate_coefficient=self.options["flat_plate_coefficient"],
+            ),
+            promotes=["*"],
+        )
+        if self.options["ks_rho"] is not None:
             self._add_aggregates(ne)
 
     def _add_aggregates(self, ne):
-        rho = self.options['ks_rho']
-        nb = self.options['num_buckling_bays']
+        rho = self.options["ks_rho"]
+        nb = self.options["num_buckling_bays"]
         nb = max(ne - 1, 1) if nb is None else nb
-        check_integer("num_buckling_bays", nb, lower=1, upper=ne,
-                      allowed=f"in [1, {ne}] (num_nodes - 1)", where=self.msginfo)
-        npts = 5 if self.options['web_points'] == 'one' else 6
-        self.add_subsystem('stress_ks', KSComp(width=ne * npts, rho=rho),
-                           promotes_outputs=[('KS', 'stress_ratio_ks')])
-        self.connect('stress_ratio', 'stress_ks.g',
-                     src_indices=np.arange(ne * npts), flat_src_indices=True)
-        for skin in ('top', 'bottom'):
-            self.add_subsystem(f'{skin}_buckling_ks', KSComp(width=nb, rho=rho),
-                               promotes_outputs=[('KS', f'{skin}_skin_buckling_ratio_ks')])
-            self.connect(f'{skin}_skin_buckling_ratio', f'{skin}_buckling_ks.g',
-                         src_indices=np.arange(nb), flat_src_indices=True)
+        check_integer(
+            "num_buckling_bays",
+            nb,
+            lower=1,
+            upper=ne,
+            allowed=f"in [1, {ne}] (num_nodes - 1)",
+            where=self.msginfo,
+        )
+        npts = 5 if self.options["web_points"] == "one" else 6
+        self.add_subsystem(
+            "stress_ks",
+            KSComp(width=ne * npts, rho=rho),
+            promotes_outputs=[("KS", "stress_ratio_ks")],
+        )
+        self.connect(
+            "stress_ratio", "stress_ks.g", src_indices=np.arange(ne * npts), flat_src_indices=True
+        )
+        for skin in ("top", "bottom"):
+            self.add_subsystem(
+                f"{skin}_buckling_ks",
+                KSComp(width=nb, rho=rho),
+                promotes_outputs=[("KS", f"{skin}_skin_buckling_ratio_ks")],
+            )
+            self.connect(
+                f"{skin}_skin_buckling_ratio",
+                f"{skin}_buckling_ks.g",
+                src_indices=np.arange(nb),
+                flat_src_indices=True,
+            )
 
 
-__all__ = ['BeamGroup', 'BoxBeamGroup']
+__all__ = ["BeamGroup", "BoxBeamGroup"]

@@ -10,8 +10,13 @@ from lpc_mdo.components.rotor.bem_loads import BEMLoadsComp, RotorPerformanceCom
 from lpc_mdo.components.rotor.hub_loads import HubLoadsComp, RotorVelocityComp
 
 # Options that the `rotors` option can supply, with their values without it.
-_ROTOR_DERIVED = {'num_rotors': 1, 'num_blades': 2, 'hub_radius_ratio': 0.2,
-                  'thrust_axis': None, 'spin_direction': 1}
+_ROTOR_DERIVED = {
+    "num_rotors": 1,
+    "num_blades": 2,
+    "hub_radius_ratio": 0.2,
+    "thrust_axis": None,
+    "spin_direction": 1,
+}
 
 
 def rotor_options(rotors):
@@ -31,11 +36,13 @@ def rotor_options(rotors):
     rotors = tuple(rotors)
     if not rotors:
         raise ValueError("option 'rotors' is empty; give at least one lpc_mdo.vehicle.Rotor.")
-    return {'num_rotors': len(rotors),
-            'num_blades': [r.num_blades for r in rotors],
-            'hub_radius_ratio': [r.hub_radius_ratio for r in rotors],
-            'thrust_axis': np.array([r.thrust_axis for r in rotors], dtype=float),
-            'spin_direction': [r.spin_direction for r in rotors]}
+    return {
+        "num_rotors": len(rotors),
+        "num_blades": [r.num_blades for r in rotors],
+        "hub_radius_ratio": [r.hub_radius_ratio for r in rotors],
+        "thrust_axis": np.array([r.thrust_axis for r in rotors], dtype=float),
+        "spin_direction": [r.spin_direction for r in rotors],
+    }
 
 
 class RotorGroupBase(om.Group):
@@ -51,40 +58,80 @@ class RotorGroupBase(om.Group):
     num_azimuth_option = False  # whether the subclass resolves azimuthal stations
 
     def initialize(self):
-        self.options.declare('rotors', default=None, types=(list, tuple), allow_none=True,
-                             desc='lpc_mdo.vehicle.Rotor objects supplying the rotor options')
-        self.options.declare('num_rotors', default=None, types=int, lower=1, allow_none=True,
-                             desc='Number of rotors (None: from rotors, else 1)')
-        self.options.declare('num_blades', default=None, allow_none=True,
-                             types=(int, list, tuple, np.ndarray),
-                             desc='Blades per rotor (None: from rotors, else 2)')
-        self.options.declare('hub_radius_ratio', default=None, allow_none=True,
-                             types=(int, float, list, tuple, np.ndarray),
-                             desc='Hub radius over tip radius (None: from rotors, else 0.2)')
-        self.options.declare('thrust_axis', default=None, allow_none=True,
-                             types=(list, tuple, np.ndarray),
-                             desc='Thrust axes (num_rotors, 3) (None: from rotors, else lift)')
-        self.options.declare('spin_direction', default=None, allow_none=True,
-                             types=(int, list, tuple, np.ndarray),
-                             desc='+1 or -1 per rotor (None: from rotors, else +1)')
-        self.options.declare('num_nodes', default=1, types=int, lower=1,
-                             desc='Number of operating points per rotor')
-        self.options.declare('num_radial', default=25, types=int, lower=1,
-                             desc='Number of radial stations')
-        self.options.declare('num_cp', default=4, types=int, lower=4,
-                             desc='Chord and twist control points per rotor')
-        self.options.declare('polar', default=LinearQuadraticPolar(), types=Polar,
-                             desc='Sectional airfoil polar')
-        self.options.declare('tip_loss', default=True, types=bool, desc='Prandtl tip loss')
-        self.options.declare('hub_loss', default=True, types=bool, desc='Prandtl hub loss')
-        self.options.declare('quadrature', default='midpoint', values=QUADRATURES,
-                             desc="Radial quadrature ('bladead': as the public code, "
-                                  "docs theory/rotors 'Public-code compatibility')")
-        self.options.declare('spline_stations', default='as_coded', values=SPLINE_STATIONS,
-                             desc='Where the chord and twist spline values are placed '
-                                  '(docs theory/rotors "Blade parameterization")')
-        self.options.declare('body_frame', default=True, types=bool,
-                             desc='Include body-frame velocity and hub loads')
+        self.options.declare(
+            "rotors",
+            default=None,
+            types=(list, tuple),
+            allow_none=True,
+            desc="lpc_mdo.vehicle.Rotor objects supplying the rotor options",
+        )
+        self.options.declare(
+            "num_rotors",
+            default=None,
+            types=int,
+            lower=1,
+            allow_none=True,
+            desc="Number of rotors (None: from rotors, else 1)",
+        )
+        self.options.declare(
+            "num_blades",
+            default=None,
+            allow_none=True,
+            types=(int, list, tuple, np.ndarray),
+            desc="Blades per rotor (None: from rotors, else 2)",
+        )
+        self.options.declare(
+            "hub_radius_ratio",
+            default=None,
+            allow_none=True,
+            types=(int, float, list, tuple, np.ndarray),
+            desc="Hub radius over tip radius (None: from rotors, else 0.2)",
+        )
+        self.options.declare(
+            "thrust_axis",
+            default=None,
+            allow_none=True,
+            types=(list, tuple, np.ndarray),
+            desc="Thrust axes (num_rotors, 3) (None: from rotors, else lift)",
+        )
+        self.options.declare(
+            "spin_direction",
+            default=None,
+            allow_none=True,
+            types=(int, list, tuple, np.ndarray),
+            desc="+1 or -1 per rotor (None: from rotors, else +1)",
+        )
+        self.options.declare(
+            "num_nodes", default=1, types=int, lower=1, desc="Number of operating points per rotor"
+        )
+        self.options.declare(
+            "num_radial", default=25, types=int, lower=1, desc="Number of radial stations"
+        )
+        self.options.declare(
+            "num_cp", default=4, types=int, lower=4, desc="Chord and twist control points per rotor"
+        )
+        self.options.declare(
+            "polar", default=LinearQuadraticPolar(), types=Polar, desc="Sectional airfoil polar"
+        )
+        self.options.declare("tip_loss", default=True, types=bool, desc="Prandtl tip loss")
+        self.options.declare("hub_loss", default=True, types=bool, desc="Prandtl hub loss")
+        self.options.declare(
+            "quadrature",
+            default="midpoint",
+            values=QUADRATURES,
+            desc="Radial quadrature ('bladead': as the public code, "
+            "docs theory/rotors 'Public-code compatibility')",
+        )
+        self.options.declare(
+            "spline_stations",
+            default="as_coded",
+            values=SPLINE_STATIONS,
+            desc="Where the chord and twist spline values are placed "
+            '(docs theory/rotors "Blade parameterization")',
+        )
+        self.options.declare(
+            "body_frame", default=True, types=bool, desc="Include body-frame velocity and hub loads"
+        )
         self.declare_model_options()
 
     def declare_model_options(self):
@@ -97,54 +144,70 @@ class RotorGroupBase(om.Group):
     def _resolved(self):
         opts = self.options
         values = {name: opts[name] for name in _ROTOR_DERIVED}
-        rotors = opts['rotors']
+        rotors = opts["rotors"]
         if rotors is not None:
             derived = rotor_options(rotors)
             given = [name for name, value in values.items() if value is not None]
             if given:
-                raise ValueError(f"{self.msginfo}: options {given} must be left at None when "
-                                 "option 'rotors' is given (they are taken from the rotors).")
+                raise ValueError(
+                    f"{self.msginfo}: options {given} must be left at None when "
+                    "option 'rotors' is given (they are taken from the rotors)."
+                )
             return derived
-        return {name: (_ROTOR_DERIVED[name] if value is None else value)
-                for name, value in values.items()}
+        return {
+            name: (_ROTOR_DERIVED[name] if value is None else value)
+            for name, value in values.items()
+        }
 
     def setup(self):
         opts = self.options
         geo = self._resolved()
-        nr, nn = geo['num_rotors'], opts['num_nodes']
-        frame = {'num_rotors': nr, 'num_nodes': nn, 'thrust_axis': geo['thrust_axis']}
+        nr, nn = geo["num_rotors"], opts["num_nodes"]
+        frame = {"num_rotors": nr, "num_nodes": nn, "thrust_axis": geo["thrust_axis"]}
 
-        self.add_subsystem('blade', BladeGeometryGroup(
-            num_rotors=nr, num_radial=opts['num_radial'],
-            num_azimuth=opts['num_azimuth'] if self.num_azimuth_option else 1,
-            num_cp=opts['num_cp'], hub_radius_ratio=geo['hub_radius_ratio'],
-            quadrature=opts['quadrature'], spline_stations=opts['spline_stations']),
-            promotes=['*'])
-        if opts['body_frame']:
-            self.add_subsystem('velocity', RotorVelocityComp(**frame), promotes=['*'])
+        self.add_subsystem(
+            "blade",
+            BladeGeometryGroup(
+                num_rotors=nr,
+                num_radial=opts["num_radial"],
+                num_azimuth=opts["num_azimuth"] if self.num_azimuth_option else 1,
+                num_cp=opts["num_cp"],
+                hub_radius_ratio=geo["hub_radius_ratio"],
+                quadrature=opts["quadrature"],
+                spline_stations=opts["spline_stations"],
+            ),
+            promotes=["*"],
+        )
+        if opts["body_frame"]:
+            self.add_subsystem("velocity", RotorVelocityComp(**frame), promotes=["*"])
         inplane = self.add_rotor_model(geo)
-        self.add_subsystem('performance', RotorPerformanceComp(num_rotors=nr, num_nodes=nn),
-                           promotes=['*'])
-        if opts['body_frame']:
-            self.add_subsystem('hub_loads', HubLoadsComp(
-                spin_direction=geo['spin_direction'], inplane_loads=inplane, **frame),
-                promotes=['*'])
+        self.add_subsystem(
+            "performance", RotorPerformanceComp(num_rotors=nr, num_nodes=nn), promotes=["*"]
+        )
+        if opts["body_frame"]:
+            self.add_subsystem(
+                "hub_loads",
+                HubLoadsComp(spin_direction=geo["spin_direction"], inplane_loads=inplane, **frame),
+                promotes=["*"],
+            )
 
-        rotors = opts['rotors']
+        rotors = opts["rotors"]
         if rotors is not None:
-            if opts['num_cp'] != 4:
-                raise ValueError(f"{self.msginfo}: option 'num_cp' = {opts['num_cp']}; the "
-                                 "vehicle rotors have 4 chord and twist control points, so it "
-                                 "must be 4 when option 'rotors' is given.")
-            self.set_input_defaults('radius', np.array([r.radius for r in rotors]), units='m')
-            self.set_input_defaults('chord_cp', np.array([r.chord_cp for r in rotors]), units='m')
-            self.set_input_defaults('twist_cp', np.array([r.twist_cp for r in rotors]),
-                                    units='rad')
-            if opts['body_frame']:
-                self.set_input_defaults('hub_position',
-                                        np.array([r.hub_position for r in rotors]), units='m')
+            if opts["num_cp"] != 4:
+                raise ValueError(
+                    f"{self.msginfo}: option 'num_cp' = {opts['num_cp']}; the "
+                    "vehicle rotors have 4 chord and twist control points, so it "
+                    "must be 4 when option 'rotors' is given."
+                )
+            self.set_input_defaults("radius", np.array([r.radius for r in rotors]), units="m")
+            self.set_input_defaults("chord_cp", np.array([r.chord_cp for r in rotors]), units="m")
+            self.set_input_defaults("twist_cp", np.array([r.twist_cp for r in rotors]), units="rad")
+            if opts["body_frame"]:
+                self.set_input_defaults(
+                    "hub_position", np.array([r.hub_position for r in rotors]), units="m"
+                )
         else:
-            self.set_input_defaults('radius', np.ones(nr), units='m')
+            self.set_input_defaults("radius", np.ones(nr), units="m")
 
 
 class BEMRotorGroup(RotorGroupBase):
@@ -226,16 +289,26 @@ class BEMRotorGroup(RotorGroupBase):
     """
 
     def declare_model_options(self):
-        self.options.declare('tip_loss_form', default='classical', values=TIP_LOSS_FORMS,
-                             desc="Tip-loss form ('bladead': compatibility with the public code, "
-                                  "docs theory/rotors 'Public-code compatibility')")
+        self.options.declare(
+            "tip_loss_form",
+            default="classical",
+            values=TIP_LOSS_FORMS,
+            desc="Tip-loss form ('bladead': compatibility with the public code, "
+            "docs theory/rotors 'Public-code compatibility')",
+        )
 
     def add_rotor_model(self, geo):
         opts = self.options
-        bem = {'num_rotors': geo['num_rotors'], 'num_nodes': opts['num_nodes'],
-               'num_radial': opts['num_radial'], 'num_blades': geo['num_blades'],
-               'polar': opts['polar'], 'tip_loss': opts['tip_loss'],
-               'hub_loss': opts['hub_loss'], 'tip_loss_form': opts['tip_loss_form']}
-        self.add_subsystem('inflow', BEMInflowComp(**bem), promotes=['*'])
-        self.add_subsystem('loads', BEMLoadsComp(**bem), promotes=['*'])
+        bem = {
+            "num_rotors": geo["num_rotors"],
+            "num_nodes": opts["num_nodes"],
+            "num_radial": opts["num_radial"],
+            "num_blades": geo["num_blades"],
+            "polar": opts["polar"],
+            "tip_loss": opts["tip_loss"],
+            "hub_loss": opts["hub_loss"],
+            "tip_loss_form": opts["tip_loss_form"],
+        }
+        self.add_subsystem("inflow", BEMInflowComp(**bem), promotes=["*"])
+        self.add_subsystem("loads", BEMLoadsComp(**bem), promotes=["*"])
         return False  # axial model: no in-plane hub loads

@@ -242,8 +242,9 @@ class ConditionLayout:
             first = self.entries[conds[0].name]
             var = next(e.variable for e in first.values() if e.design_variable == name)
             for c in conds[1:]:
-                other = next(e.variable for e in self.entries[c.name].values()
-                             if e.design_variable == name)
+                other = next(
+                    e.variable for e in self.entries[c.name].values() if e.design_variable == name
+                )
                 if (other.shape, other.units) != (var.shape, var.units):
                     raise VehicleSpecError(
                         f"conditions {conds[0].name!r} and {c.name!r} share the design variable "
@@ -252,16 +253,24 @@ class ConditionLayout:
                         f"design_variable_prefix"
                     )
             stacked = first[var.name].row is not None
-            shape = ((len(conds),) + (() if var.shape == (1,) else var.shape)
-                     if stacked else var.shape)
+            shape = (
+                (len(conds),) + (() if var.shape == (1,) else var.shape) if stacked else var.shape
+            )
             initial = None
             if var.initial_from:
-                initial = tuple(float(getattr(c, var.initial_from)) for c in conds
-                                for _ in range(var.size))
-            rows_text = (f"; rows: {', '.join(members)}" if stacked else "")
+                initial = tuple(
+                    float(getattr(c, var.initial_from)) for c in conds for _ in range(var.size)
+                )
+            rows_text = f"; rows: {', '.join(members)}" if stacked else ""
             self.design_variables[name] = DesignVariableShape(
-                name, shape, var.units, var.description + rows_text, initial, var.initial_from,
-                tuple(members))
+                name,
+                shape,
+                var.units,
+                var.description + rows_text,
+                initial,
+                var.initial_from,
+                tuple(members),
+            )
 
     def entry(self, condition, variable):
         """The :class:`LayoutEntry` of ``variable`` of condition ``condition`` (names)."""
@@ -269,8 +278,11 @@ class ConditionLayout:
 
     def trim_variables(self, condition):
         """(design-variable name, flat indices) of the trim variables of ``condition``."""
-        return [(e.design_variable, e.flat_indices)
-                for e in self.entries[condition].values() if e.variable.trim]
+        return [
+            (e.design_variable, e.flat_indices)
+            for e in self.entries[condition].values()
+            if e.variable.trim
+        ]
 
 
 def vehicle_condition(vehicle, name):
@@ -290,7 +302,7 @@ def condition_layout(vehicle):
     """The :class:`ConditionLayout` of a vehicle (cached per vehicle)."""
     try:
         return _cached_layout(vehicle)
-    except TypeError:   # an unhashable, partly built vehicle
+    except TypeError:  # an unhashable, partly built vehicle
         return ConditionLayout(vehicle)
 
 
@@ -313,13 +325,23 @@ class ConditionGroup(om.Group):
     def initialize(self):
         self.options.declare("vehicle", desc="lpc_mdo.vehicle.Vehicle")
         self.options.declare("condition", types=str, desc="condition name in the vehicle file")
-        self.options.declare("rotor_polar", default=LinearQuadraticPolar(), types=Polar,
-                             desc="blade-section polar of the lift rotors (and of the pusher "
-                                  "when 'pusher_polar' is None)")
-        self.options.declare("pusher_polar", default=None, types=Polar, allow_none=True,
-                             desc="blade-section polar of the pusher (None: 'rotor_polar')")
-        self.options.declare("num_radial", default=25, types=int, lower=2,
-                             desc="radial stations of the rotor models")
+        self.options.declare(
+            "rotor_polar",
+            default=LinearQuadraticPolar(),
+            types=Polar,
+            desc="blade-section polar of the lift rotors (and of the pusher "
+            "when 'pusher_polar' is None)",
+        )
+        self.options.declare(
+            "pusher_polar",
+            default=None,
+            types=Polar,
+            allow_none=True,
+            desc="blade-section polar of the pusher (None: 'rotor_polar')",
+        )
+        self.options.declare(
+            "num_radial", default=25, types=int, lower=2, desc="radial stations of the rotor models"
+        )
 
     # -------------------------------------------------------------- the contract (defaults)
 
@@ -362,8 +384,11 @@ class ConditionGroup(om.Group):
         ``source`` is a promoted output of the assembly, ``target`` an input of the condition
         (relative to it), ``src_indices`` None or indices as ``connect`` takes them.
         """
-        return (("gross_mass", "gross_mass", None), ("cg", "cg", None),
-                ("inertia", "inertia", None))
+        return (
+            ("gross_mass", "gross_mass", None),
+            ("cg", "cg", None),
+            ("inertia", "inertia", None),
+        )
 
     @classmethod
     def trim_rows(cls, vehicle, condition):

@@ -40,8 +40,10 @@ def register_condition_kind(kind, cls):
     if not (isinstance(kind, str) and kind.isidentifier()):
         raise ValueError(f"'kind' = {kind!r} is not allowed: must be a Python identifier")
     if not (isinstance(cls, type) and issubclass(cls, ConditionGroup)):
-        raise ValueError(f"'cls' = {cls!r} is not allowed: must be a subclass of "
-                         f"lpc_mdo.groups.condition_base.ConditionGroup")
+        raise ValueError(
+            f"'cls' = {cls!r} is not allowed: must be a subclass of "
+            f"lpc_mdo.groups.condition_base.ConditionGroup"
+        )
     CONDITION_KINDS[kind] = cls
 
 
@@ -50,5 +52,7 @@ def condition_class(kind):
     try:
         return CONDITION_KINDS[kind]
     except KeyError:
-        raise KeyError(f"condition kind {kind!r} is not registered; registered kinds: "
-                       f"{sorted(CONDITION_KINDS)}") from None
+        raise KeyError(
+            f"condition kind {kind!r} is not registered; registered kinds: "
+            f"{sorted(CONDITION_KINDS)}"
+        ) from None

@@ -76,8 +76,12 @@ _NO_FAILURE = (lambda x: x == -1, "-1")
 
 
 def _declare_aero(group):
-    group.options.declare("wing_zero_lift_angle", default=0.0, types=float,
-                          desc="sectional zero-lift angle of the wing airfoil, rad")
+    group.options.declare(
+        "wing_zero_lift_angle",
+        default=0.0,
+        types=float,
+        desc="sectional zero-lift angle of the wing airfoil, rad",
+    )
     group.options.declare("wing_panels", default=26, types=int, desc="wing VLM panels")
     group.options.declare("tail_panels", default=8, types=int, desc="tail VLM panels")
 
@@ -96,33 +100,54 @@ def _lift_inputs(vehicle, active):
     """Vehicle-level inputs of the lift rotors ``active`` (indices into ``lift_rotors``)."""
     active = np.asarray(active)
     rows = _rotor_group_rows(vehicle, active)
-    return (("lift_rotor_radius", "lift_radius", active),
-            ("blade_chord_cp", "lift_chord_cp", om.slicer[rows, :]),
-            ("blade_twist_cp", "lift_twist_cp", om.slicer[rows, :]),
-            ("lift_hub_position", "lift_hub_position", om.slicer[active, :]),
-            ("motor_length", "lift_motor_length", rows))
+    return (
+        ("lift_rotor_radius", "lift_radius", active),
+        ("blade_chord_cp", "lift_chord_cp", om.slicer[rows, :]),
+        ("blade_twist_cp", "lift_twist_cp", om.slicer[rows, :]),
+        ("lift_hub_position", "lift_hub_position", om.slicer[active, :]),
+        ("motor_length", "lift_motor_length", rows),
+    )
 
 
 def _pusher_inputs(vehicle):
     """Vehicle-level inputs of the pusher (its row follows the lift pairs)."""
     row = num_lift_pairs(vehicle.lift_rotors)
-    return (("rotor_radius", "pusher_radius", [row]),
-            ("blade_chord_cp", "pusher_chord_cp", om.slicer[[row], :]),
-            ("blade_twist_cp", "pusher_twist_cp", om.slicer[[row], :]),
-            ("pusher_hub_position", "pusher_hub_position", om.slicer[np.arange(3)[None, :],]),
-            ("motor_length", "pusher_motor_length", [row]))
+    return (
+        ("rotor_radius", "pusher_radius", [row]),
+        ("blade_chord_cp", "pusher_chord_cp", om.slicer[[row], :]),
+        ("blade_twist_cp", "pusher_twist_cp", om.slicer[[row], :]),
+        ("pusher_hub_position", "pusher_hub_position", om.slicer[np.arange(3)[None, :],]),
+        ("motor_length", "pusher_motor_length", [row]),
+    )
 
 
 #: Vehicle-level inputs of the aerodynamics (VLM meshes, reference quantities, drag build-up).
-_AERO_INPUTS = tuple((name, name, None) for name in (
-    "wing_mesh", "horizontal_tail_mesh", "wing_area", "wing_mac", "htail_area", "htail_mac",
-    "fuselage_length"))
+_AERO_INPUTS = tuple(
+    (name, name, None)
+    for name in (
+        "wing_mesh",
+        "horizontal_tail_mesh",
+        "wing_area",
+        "wing_mac",
+        "htail_area",
+        "htail_mac",
+        "fuselage_length",
+    )
+)
 
 
 #: Wing-box inputs of a structural condition (vehicle-level outputs of the same name).
-_WING_BOX_INPUTS = ("wing_box_nodes", "box_width", "box_height", "top_skin_thickness",
-                    "bottom_skin_thickness", "front_spar_thickness", "rear_spar_thickness",
-                    "top_skin_radius", "bottom_skin_radius")
+_WING_BOX_INPUTS = (
+    "wing_box_nodes",
+    "box_width",
+    "box_height",
+    "top_skin_thickness",
+    "bottom_skin_thickness",
+    "front_spar_thickness",
+    "rear_spar_thickness",
+    "top_skin_radius",
+    "bottom_skin_radius",
+)
 
 
 def _speed_variable(count, description):
@@ -141,14 +166,26 @@ def _add_motors(group, vehicle, prefix, num_motors, rpm):
     Inputs ``{prefix}_torque`` (rotor shaft torque), ``rpm`` (each rotor's speed),
     ``{prefix}_motor_length``.
     """
-    group.add_subsystem(f"{prefix}_shaft", ShaftTorqueComp(num_motors=num_motors),
-                        promotes_inputs=[("rotor_torque", f"{prefix}_torque")])
-    group.add_subsystem(f"{prefix}_motors", MotorGroup(
-        num_motors=num_motors, num_nodes=1, length_to_diameter=vehicle.motor.length_to_diameter,
-        parameters=motor_parameters(vehicle), **motor_loadings(vehicle)),
+    group.add_subsystem(
+        f"{prefix}_shaft",
+        ShaftTorqueComp(num_motors=num_motors),
+        promotes_inputs=[("rotor_torque", f"{prefix}_torque")],
+    )
+    group.add_subsystem(
+        f"{prefix}_motors",
+        MotorGroup(
+            num_motors=num_motors,
+            num_nodes=1,
+            length_to_diameter=vehicle.motor.length_to_diameter,
+            parameters=motor_parameters(vehicle),
+            **motor_loadings(vehicle),
+        ),
         promotes_inputs=[("length", f"{prefix}_motor_length"), ("rotor_rpm", rpm)],
-        promotes_outputs=[(name, f"{prefix}_motor_{name}") for name in
-                          ("input_power", "em_torque", "torque_margin", "peak_torque")])
+        promotes_outputs=[
+            (name, f"{prefix}_motor_{name}")
+            for name in ("input_power", "em_torque", "torque_margin", "peak_torque")
+        ],
+    )
     group.connect(f"{prefix}_shaft.motor_load_torque", f"{prefix}_motors.rotor_torque")
 
 
@@ -171,8 +208,7 @@ def roll_yaw_mixing(rotors):
     return 0.5 * np.column_stack([side, spin])
 
 
-def _add_lift_rotors(group, vehicle, rotors, speed_groups, num_groups, edgewise,
-                     roll_yaw=False):
+def _add_lift_rotors(group, vehicle, rotors, speed_groups, num_groups, edgewise, roll_yaw=False):
     """Lift rotors (BEM or Pitt–Peters) with their speeds and motors, promoted as ``lift_*``.
 
     With ``roll_yaw`` the rotor speeds also take the roll and yaw differentials, input
@@ -183,27 +219,53 @@ def _add_lift_rotors(group, vehicle, rotors, speed_groups, num_groups, edgewise,
     promoted = [("group_speed", "lift_rpm")]
     if roll_yaw:
         promoted.append(("mixer_speed", "roll_yaw_rpm"))
-    group.add_subsystem("lift_speed", RotorSpeedComp(
-        group=speed_groups, num_groups=num_groups,
-        mixing=roll_yaw_mixing(rotors) if roll_yaw else None),
-        promotes_inputs=promoted, promotes_outputs=[("rpm", "lift_rotor_rpm")])
+    group.add_subsystem(
+        "lift_speed",
+        RotorSpeedComp(
+            group=speed_groups,
+            num_groups=num_groups,
+            mixing=roll_yaw_mixing(rotors) if roll_yaw else None,
+        ),
+        promotes_inputs=promoted,
+        promotes_outputs=[("rpm", "lift_rotor_rpm")],
+    )
     rotor_cls = PittPetersRotorGroup if edgewise else BEMRotorGroup
     kwargs = {"num_azimuth": opts["num_azimuth"]} if edgewise else {}
-    group.add_subsystem("lift_rotors", rotor_cls(
-        rotors=list(rotors), num_nodes=1, num_radial=opts["num_radial"],
-        polar=opts["rotor_polar"], **kwargs),
-        promotes_inputs=[("radius", "lift_radius"), ("chord_cp", "lift_chord_cp"),
-                         ("twist_cp", "lift_twist_cp"), ("rpm", "lift_rotor_rpm"),
-                         ("hub_position", "lift_hub_position"), "velocity", "density",
-                         "speed_of_sound", "dynamic_viscosity"],
-        promotes_outputs=[("thrust", "lift_thrust"), ("torque", "lift_torque"),
-                          ("power", "lift_power"), ("tip_mach", "lift_tip_mach"),
-                          ("figure_of_merit", "lift_figure_of_merit"),
-                          ("total_force", "lift_force"), ("total_moment", "lift_moment")])
+    group.add_subsystem(
+        "lift_rotors",
+        rotor_cls(
+            rotors=list(rotors),
+            num_nodes=1,
+            num_radial=opts["num_radial"],
+            polar=opts["rotor_polar"],
+            **kwargs,
+        ),
+        promotes_inputs=[
+            ("radius", "lift_radius"),
+            ("chord_cp", "lift_chord_cp"),
+            ("twist_cp", "lift_twist_cp"),
+            ("rpm", "lift_rotor_rpm"),
+            ("hub_position", "lift_hub_position"),
+            "velocity",
+            "density",
+            "speed_of_sound",
+            "dynamic_viscosity",
+        ],
+        promotes_outputs=[
+            ("thrust", "lift_thrust"),
+            ("torque", "lift_torque"),
+            ("power", "lift_power"),
+            ("tip_mach", "lift_tip_mach"),
+            ("figure_of_merit", "lift_figure_of_merit"),
+            ("total_force", "lift_force"),
+            ("total_moment", "lift_moment"),
+        ],
+    )
     _add_motors(group, vehicle, "lift", na, "lift_rotor_rpm")
     group.set_input_defaults("lift_radius", np.array([r.radius for r in rotors]), units="m")
-    group.set_input_defaults("lift_hub_position", np.array([r.hub_position for r in rotors]),
-                             units="m")
+    group.set_input_defaults(
+        "lift_hub_position", np.array([r.hub_position for r in rotors]), units="m"
+    )
 
 
 def _add_pusher(group, vehicle):
@@ -211,22 +273,37 @@ def _add_pusher(group, vehicle):
     opts = group.options
     pusher = vehicle.pusher
     polar = opts["rotor_polar"] if opts["pusher_polar"] is None else opts["pusher_polar"]
-    group.add_subsystem("pusher", BEMRotorGroup(
-        rotors=[pusher], num_nodes=1, num_radial=opts["num_radial"], polar=polar),
-        promotes_inputs=[("radius", "pusher_radius"), ("chord_cp", "pusher_chord_cp"),
-                         ("twist_cp", "pusher_twist_cp"), ("rpm", "pusher_rpm"),
-                         ("hub_position", "pusher_hub_position"), "velocity", "density",
-                         "speed_of_sound", "dynamic_viscosity"],
-        promotes_outputs=[("thrust", "pusher_thrust"), ("torque", "pusher_torque"),
-                          ("power", "pusher_power"), ("efficiency", "pusher_efficiency"),
-                          ("total_force", "pusher_force"), ("total_moment", "pusher_moment")])
+    group.add_subsystem(
+        "pusher",
+        BEMRotorGroup(rotors=[pusher], num_nodes=1, num_radial=opts["num_radial"], polar=polar),
+        promotes_inputs=[
+            ("radius", "pusher_radius"),
+            ("chord_cp", "pusher_chord_cp"),
+            ("twist_cp", "pusher_twist_cp"),
+            ("rpm", "pusher_rpm"),
+            ("hub_position", "pusher_hub_position"),
+            "velocity",
+            "density",
+            "speed_of_sound",
+            "dynamic_viscosity",
+        ],
+        promotes_outputs=[
+            ("thrust", "pusher_thrust"),
+            ("torque", "pusher_torque"),
+            ("power", "pusher_power"),
+            ("efficiency", "pusher_efficiency"),
+            ("total_force", "pusher_force"),
+            ("total_moment", "pusher_moment"),
+        ],
+    )
     _add_motors(group, vehicle, "pusher", 1, "pusher_rpm")
     group.set_input_defaults("pusher_radius", np.array([pusher.radius]), units="m")
     group.set_input_defaults("pusher_hub_position", np.array([pusher.hub_position]), units="m")
 
 
-def _add_aerodynamics(group, vehicle, condition, wing_zero_lift_angle, stability=False,
-                      wing_mesh="wing_mesh"):
+def _add_aerodynamics(
+    group, vehicle, condition, wing_zero_lift_angle, stability=False, wing_mesh="wing_mesh"
+):
     """Kinematics, wing + tail VLM and the parasite-drag build-up.
 
     Outputs ``aero_force``/``aero_moment`` (about the body origin) and ``drag_force``; with
@@ -234,70 +311,124 @@ def _add_aerodynamics(group, vehicle, condition, wing_zero_lift_angle, stability
     """
     opts = group.options
     surfaces = lpc_vlm_surfaces(opts["wing_panels"], opts["tail_panels"])
-    vlm_inputs = [("wing_mesh", wing_mesh), "horizontal_tail_mesh", "speed", "density",
-                  ("reference_area", "wing_area"), ("horizontal_tail_deflection", "elevator"),
-                  "wing_zero_lift_angle"]
+    vlm_inputs = [
+        ("wing_mesh", wing_mesh),
+        "horizontal_tail_mesh",
+        "speed",
+        "density",
+        ("reference_area", "wing_area"),
+        ("horizontal_tail_deflection", "elevator"),
+        "wing_zero_lift_angle",
+    ]
     group.add_subsystem("kinematics", KinematicsComp(num_nodes=1), promotes=["*"])
-    group.add_subsystem("vlm", VLMGroup(surfaces=surfaces, num_nodes=1),
-                        promotes_inputs=vlm_inputs + ["angle_of_attack"],
-                        promotes_outputs=[("force", "aero_force"), ("moment", "aero_moment"),
-                                          "lift", "CL", "induced_drag", "wing_sectional_cl",
-                                          "panel_forces", "force_points"])
-    group.set_input_defaults("wing_zero_lift_angle",
-                             np.full((1, opts["wing_panels"]), wing_zero_lift_angle),
-                             units="rad")
+    group.add_subsystem(
+        "vlm",
+        VLMGroup(surfaces=surfaces, num_nodes=1),
+        promotes_inputs=vlm_inputs + ["angle_of_attack"],
+        promotes_outputs=[
+            ("force", "aero_force"),
+            ("moment", "aero_moment"),
+            "lift",
+            "CL",
+            "induced_drag",
+            "wing_sectional_cl",
+            "panel_forces",
+            "force_points",
+        ],
+    )
+    group.set_input_defaults(
+        "wing_zero_lift_angle", np.full((1, opts["wing_panels"]), wing_zero_lift_angle), units="rad"
+    )
     group.set_input_defaults("elevator", np.zeros(1), units="rad")
 
     components, values = lpc_drag_components(vehicle)
-    renames = {"wing_mean_aerodynamic_chord": "wing_mac", "horizontal_tail_area": "htail_area",
-               "horizontal_tail_mean_aerodynamic_chord": "htail_mac",
-               "reference_area": "wing_area"}
-    group.add_subsystem("drag", DragBuildupComp(components=components, num_nodes=1),
-                        promotes_inputs=[(k, renames.get(k, f"drag_{k}")) for k in values
-                                         if k not in ("wing_area", "fuselage_length")]
-                        + ["wing_area", "fuselage_length", "speed", "density",
-                           "dynamic_viscosity", "speed_of_sound", "angle_of_attack"],
-                        promotes_outputs=[("parasite_drag_force", "drag_force"),
-                                          "parasite_drag", "CD0"])
+    renames = {
+        "wing_mean_aerodynamic_chord": "wing_mac",
+        "horizontal_tail_area": "htail_area",
+        "horizontal_tail_mean_aerodynamic_chord": "htail_mac",
+        "reference_area": "wing_area",
+    }
+    group.add_subsystem(
+        "drag",
+        DragBuildupComp(components=components, num_nodes=1),
+        promotes_inputs=[
+            (k, renames.get(k, f"drag_{k}"))
+            for k in values
+            if k not in ("wing_area", "fuselage_length")
+        ]
+        + [
+            "wing_area",
+            "fuselage_length",
+            "speed",
+            "density",
+            "dynamic_viscosity",
+            "speed_of_sound",
+            "angle_of_attack",
+        ],
+        promotes_outputs=[("parasite_drag_force", "drag_force"), "parasite_drag", "CD0"],
+    )
     for name, value in values.items():
         if name not in renames and name not in ("wing_area", "fuselage_length"):
             group.set_input_defaults(f"drag_{name}", value)
 
     group.set_input_defaults("speed", np.array([condition.speed]), units="m/s")
     group.set_input_defaults("pitch", np.array([condition.pitch]), units="rad")
-    group.set_input_defaults("flight_path_angle", np.array([condition.flight_path_angle]),
-                             units="rad")
+    group.set_input_defaults(
+        "flight_path_angle", np.array([condition.flight_path_angle]), units="rad"
+    )
 
     if stability:
         delta = 1e-3
         group.add_subsystem("perturbation", AnglePerturbationComp(delta=delta), promotes=["*"])
-        group.add_subsystem("vlm_perturbed", VLMGroup(surfaces=surfaces, num_nodes=1),
-                            promotes_inputs=vlm_inputs + [("angle_of_attack",
-                                                           "perturbed_angle_of_attack")],
-                            promotes_outputs=[("force", "perturbed_aero_force"),
-                                              ("moment", "perturbed_aero_moment")])
-        group.add_subsystem("stability_derivatives", StabilityDerivativeComp(delta=delta),
-                            promotes_inputs=[("force", "aero_force"),
-                                             ("moment", "aero_moment"),
-                                             ("perturbed_force", "perturbed_aero_force"),
-                                             ("perturbed_moment", "perturbed_aero_moment")],
-                            promotes_outputs=["normal_force_slope", "pitching_moment_slope"])
+        group.add_subsystem(
+            "vlm_perturbed",
+            VLMGroup(surfaces=surfaces, num_nodes=1),
+            promotes_inputs=vlm_inputs + [("angle_of_attack", "perturbed_angle_of_attack")],
+            promotes_outputs=[
+                ("force", "perturbed_aero_force"),
+                ("moment", "perturbed_aero_moment"),
+            ],
+        )
+        group.add_subsystem(
+            "stability_derivatives",
+            StabilityDerivativeComp(delta=delta),
+            promotes_inputs=[
+                ("force", "aero_force"),
+                ("moment", "aero_moment"),
+                ("perturbed_force", "perturbed_aero_force"),
+                ("perturbed_moment", "perturbed_aero_moment"),
+            ],
+            promotes_outputs=["normal_force_slope", "pitching_moment_slope"],
+        )
         nose_to_tail = (0.0, -1.5 * vehicle.fuselage.length)
-        group.add_subsystem("neutral_point", NeutralPointComp(bracket=nose_to_tail),
-                            promotes=["*"])
-        group.add_subsystem("static_margin", StaticMarginComp(),
-                            promotes_inputs=["neutral_point", "cg_x",
-                                             ("mean_aerodynamic_chord", "wing_mac")],
-                            promotes_outputs=["static_margin"])
+        group.add_subsystem("neutral_point", NeutralPointComp(bracket=nose_to_tail), promotes=["*"])
+        group.add_subsystem(
+            "static_margin",
+            StaticMarginComp(),
+            promotes_inputs=["neutral_point", "cg_x", ("mean_aerodynamic_chord", "wing_mac")],
+            promotes_outputs=["static_margin"],
+        )
 
 
 def _add_equations_of_motion(group, sources, forces_only=(), load_factor=1.0):
-    group.add_subsystem("loads", ForceSumComp(sources=sources, forces_only=forces_only),
-                        promotes=["*"])
-    group.add_subsystem("eom", EquationsOfMotionComp(num_nodes=1),
-                        promotes_inputs=[("mass", "gross_mass"), "cg", "inertia", "force",
-                                         "moment", "pitch", "velocity", "load_factor"],
-                        promotes_outputs=["linear_acceleration", "angular_acceleration"])
+    group.add_subsystem(
+        "loads", ForceSumComp(sources=sources, forces_only=forces_only), promotes=["*"]
+    )
+    group.add_subsystem(
+        "eom",
+        EquationsOfMotionComp(num_nodes=1),
+        promotes_inputs=[
+            ("mass", "gross_mass"),
+            "cg",
+            "inertia",
+            "force",
+            "moment",
+            "pitch",
+            "velocity",
+            "load_factor",
+        ],
+        promotes_outputs=["linear_acceleration", "angular_acceleration"],
+    )
     group.set_input_defaults("load_factor", np.array([load_factor]))
 
 
@@ -330,16 +461,29 @@ class HoverCondition(ConditionGroup):
     """
 
     field_rules = {
-        "hover": {"speed": _ZERO, "failed_rotor": _NO_FAILURE, "acceleration": _ZERO,
-                  "load_factor": _ONE},
-        "oei": {"speed": _ZERO, "failed_rotor": (lambda x: x >= 0, "a lift-rotor index (>= 0)"),
-                "acceleration": _ZERO, "load_factor": _ONE},
+        "hover": {
+            "speed": _ZERO,
+            "failed_rotor": _NO_FAILURE,
+            "acceleration": _ZERO,
+            "load_factor": _ONE,
+        },
+        "oei": {
+            "speed": _ZERO,
+            "failed_rotor": (lambda x: x >= 0, "a lift-rotor index (>= 0)"),
+            "acceleration": _ZERO,
+            "load_factor": _ONE,
+        },
     }
 
     def initialize(self):
         super().initialize()
-        self.options.declare("acoustics", default=None, types=bool, allow_none=True,
-                             desc="add the noise model (None: without a failed rotor)")
+        self.options.declare(
+            "acoustics",
+            default=None,
+            types=bool,
+            allow_none=True,
+            desc="add the noise model (None: without a failed rotor)",
+        )
 
     @classmethod
     def check(cls, index, condition, vehicle):
@@ -377,13 +521,17 @@ class HoverCondition(ConditionGroup):
             n = num_lift_pairs(vehicle.lift_rotors)
             return (_speed_variable(n, "lift-rotor speed per pair"),)
         n = len(vehicle.lift_rotors) - 1
-        return (_speed_variable(n, "speed of the working lift rotors, in "
-                                "lift_rotors order (the failed one skipped)"),)
+        return (
+            _speed_variable(
+                n, "speed of the working lift rotors, in lift_rotors order (the failed one skipped)"
+            ),
+        )
 
     @classmethod
     def vehicle_inputs(cls, vehicle, condition):
-        return (super().vehicle_inputs(vehicle, condition)
-                + _lift_inputs(vehicle, cls.active_lift_rotors(vehicle, condition)))
+        return super().vehicle_inputs(vehicle, condition) + _lift_inputs(
+            vehicle, cls.active_lift_rotors(vehicle, condition)
+        )
 
     @classmethod
     def trim_rows(cls, vehicle, condition):
@@ -392,8 +540,13 @@ class HoverCondition(ConditionGroup):
             # p_dot: the pairs share speeds and spin in opposite senses, so it vanishes.
             return (TrimRow("w", ref=g), TrimRow("p", degenerate=True), TrimRow("q"))
         # v_dot: no side force acts in hover (rotor thrust only, no edgewise flow).
-        return (TrimRow("v", ref=g, degenerate=True), TrimRow("w", ref=g), TrimRow("p"),
-                TrimRow("q"), TrimRow("r"))
+        return (
+            TrimRow("v", ref=g, degenerate=True),
+            TrimRow("w", ref=g),
+            TrimRow("p"),
+            TrimRow("q"),
+            TrimRow("r"),
+        )
 
     @classmethod
     def constraints(cls, vehicle, condition, bounds):
@@ -403,11 +556,14 @@ class HoverCondition(ConditionGroup):
         active = cls.active_lift_rotors(vehicle, condition)
         pairs = [vehicle.lift_rotors[i].pair for i in active]
         one_per_pair = [pairs.index(p) for p in sorted(set(pairs))]
-        return (ConditionConstraint("noise", "total_spl_a",
-                                    {"upper": limits.max_noise, "ref": 10.0}),
-                ConditionConstraint("tip_mach", "lift_tip_mach",
-                                    {"indices": one_per_pair, "flat_indices": True,
-                                     "upper": limits.max_tip_mach}))
+        return (
+            ConditionConstraint("noise", "total_spl_a", {"upper": limits.max_noise, "ref": 10.0}),
+            ConditionConstraint(
+                "tip_mach",
+                "lift_tip_mach",
+                {"indices": one_per_pair, "flat_indices": True, "upper": limits.max_tip_mach},
+            ),
+        )
 
     @classmethod
     def motor_sets(cls, vehicle, condition):
@@ -440,25 +596,38 @@ class HoverCondition(ConditionGroup):
         if acoustics:
             nrad = self.options["num_radial"]
             na = len(rotors)
-            self.add_subsystem("noise", RotorNoiseGroup(
-                num_rotors=na, num_radial=nrad, num_azimuth=1,
-                num_blades=[r.num_blades for r in rotors],
-                hub_radius_ratio=rotors[0].hub_radius_ratio, load_input="sectional",
-                rotation_direction=tuple(float(r.spin_direction) for r in rotors)),
-                promotes_inputs=[("radius", "lift_radius"), ("hub_position", "lift_hub_position"),
-                                 "density", "speed_of_sound", "observer_distance",
-                                 "observer_elevation",
-                                 ("thickness_to_chord", "lift_thickness_to_chord")],
-                promotes_outputs=["total_spl_a", "total_spl", "rotor_spl_a"])
+            self.add_subsystem(
+                "noise",
+                RotorNoiseGroup(
+                    num_rotors=na,
+                    num_radial=nrad,
+                    num_azimuth=1,
+                    num_blades=[r.num_blades for r in rotors],
+                    hub_radius_ratio=rotors[0].hub_radius_ratio,
+                    load_input="sectional",
+                    rotation_direction=tuple(float(r.spin_direction) for r in rotors),
+                ),
+                promotes_inputs=[
+                    ("radius", "lift_radius"),
+                    ("hub_position", "lift_hub_position"),
+                    "density",
+                    "speed_of_sound",
+                    "observer_distance",
+                    "observer_elevation",
+                    ("thickness_to_chord", "lift_thickness_to_chord"),
+                ],
+                promotes_outputs=["total_spl_a", "total_spl", "rotor_spl_a"],
+            )
             observer = vehicle.noise_observer
-            self.set_input_defaults("observer_distance", np.array([observer.distance]),
-                                    units="m")
-            self.set_input_defaults("observer_elevation", np.array([observer.elevation]),
-                                    units="rad")
+            self.set_input_defaults("observer_distance", np.array([observer.distance]), units="m")
+            self.set_input_defaults(
+                "observer_elevation", np.array([observer.elevation]), units="rad"
+            )
             # Each rotor's section t/c at every acoustic station (rotor, station).
             thickness = [_rotor_thickness_to_chord(vehicle, i) for i in self.active_rotors]
-            self.set_input_defaults("lift_thickness_to_chord",
-                                    np.repeat(np.array(thickness)[:, None], nrad, axis=1))
+            self.set_input_defaults(
+                "lift_thickness_to_chord", np.repeat(np.array(thickness)[:, None], nrad, axis=1)
+            )
             # (rotor, node = 0, station) of the BEM -> (rotor, station, azimuth = 0) of the
             # acoustics: a fancy index of the source shaped like the target.
             rotor, station = np.meshgrid(np.arange(na), np.arange(nrad), indexing="ij")
@@ -466,10 +635,12 @@ class HoverCondition(ConditionGroup):
             for name in ("thrust_per_span", "drag_per_span", "inflow_angle"):
                 self.connect(f"lift_rotors.{name}", f"noise.{name}", src_indices=reshape)
             self.connect("lift_rotors.chord", "noise.chord")
-            self.connect("lift_thrust", "noise.thrust", src_indices=np.arange(na),
-                         flat_src_indices=True)
-            self.connect("lift_rotor_rpm", "noise.rpm", src_indices=np.arange(na),
-                         flat_src_indices=True)
+            self.connect(
+                "lift_thrust", "noise.thrust", src_indices=np.arange(na), flat_src_indices=True
+            )
+            self.connect(
+                "lift_rotor_rpm", "noise.rpm", src_indices=np.arange(na), flat_src_indices=True
+            )
 
 
 def _rotor_thickness_to_chord(vehicle, index):
@@ -482,9 +653,11 @@ def _rotor_thickness_to_chord(vehicle, index):
     rotor = vehicle.lift_rotors[index]
     if rotor.thickness_to_chord is not None:
         return rotor.thickness_to_chord
-    om.issue_warning(f"'lift_rotors[{index}].airfoil' = {rotor.airfoil!r} is a polar file, "
-                     f"which gives no thickness: the thickness noise uses t/c = "
-                     f"{DEFAULT_ROTOR_THICKNESS_TO_CHORD} (NACA 0012)")
+    om.issue_warning(
+        f"'lift_rotors[{index}].airfoil' = {rotor.airfoil!r} is a polar file, "
+        f"which gives no thickness: the thickness noise uses t/c = "
+        f"{DEFAULT_ROTOR_THICKNESS_TO_CHORD} (NACA 0012)"
+    )
     return DEFAULT_ROTOR_THICKNESS_TO_CHORD
 
 
@@ -497,15 +670,26 @@ class SteadyFlightCondition(ConditionGroup):
     margin (paper eq. 30) are added.
     """
 
-    field_rules = {"steady": {"speed": _POSITIVE, "failed_rotor": _NO_FAILURE,
-                              "acceleration": _ZERO, "load_factor": _ONE}}
+    field_rules = {
+        "steady": {
+            "speed": _POSITIVE,
+            "failed_rotor": _NO_FAILURE,
+            "acceleration": _ZERO,
+            "load_factor": _ONE,
+        }
+    }
 
     def initialize(self):
         super().initialize()
         _declare_aero(self)
-        self.options.declare("stability", default=None, types=bool, allow_none=True,
-                             desc="add the neutral point and static margin (None: in the "
-                                  "vehicle's cruise condition)")
+        self.options.declare(
+            "stability",
+            default=None,
+            types=bool,
+            allow_none=True,
+            desc="add the neutral point and static margin (None: in the "
+            "vehicle's cruise condition)",
+        )
 
     @staticmethod
     def has_stability(vehicle, condition):
@@ -518,8 +702,7 @@ class SteadyFlightCondition(ConditionGroup):
 
     @classmethod
     def vehicle_inputs(cls, vehicle, condition):
-        inputs = (super().vehicle_inputs(vehicle, condition) + _pusher_inputs(vehicle)
-                  + _AERO_INPUTS)
+        inputs = super().vehicle_inputs(vehicle, condition) + _pusher_inputs(vehicle) + _AERO_INPUTS
         if cls.has_stability(vehicle, condition):
             inputs += (("cg", "cg_x", [0]),)
         return inputs
@@ -533,9 +716,13 @@ class SteadyFlightCondition(ConditionGroup):
     def constraints(cls, vehicle, condition, bounds):
         if not cls.has_stability(vehicle, condition):
             return ()
-        return (ConditionConstraint("static_margin", "static_margin",
-                                    {"lower": vehicle.constraints.min_static_margin,
-                                     "ref": 0.1}),)
+        return (
+            ConditionConstraint(
+                "static_margin",
+                "static_margin",
+                {"lower": vehicle.constraints.min_static_margin, "ref": 0.1},
+            ),
+        )
 
     @classmethod
     def motor_sets(cls, vehicle, condition):
@@ -548,8 +735,9 @@ class SteadyFlightCondition(ConditionGroup):
         stability = self.options["stability"]
         if stability is None:
             stability = self.has_stability(vehicle, condition)
-        _add_aerodynamics(self, vehicle, condition, self.options["wing_zero_lift_angle"],
-                          stability=stability)
+        _add_aerodynamics(
+            self, vehicle, condition, self.options["wing_zero_lift_angle"], stability=stability
+        )
         _add_pusher(self, vehicle)
         _add_power(self, {"pusher": 1})
         _add_equations_of_motion(self, ["aero", "drag", "pusher"], forces_only=["drag"])
@@ -569,30 +757,46 @@ class TransitionCondition(ConditionGroup):
     symmetrically.
     """
 
-    field_rules = {"transition": {"speed": _POSITIVE, "failed_rotor": _NO_FAILURE,
-                                  "load_factor": _ONE}}
+    field_rules = {
+        "transition": {"speed": _POSITIVE, "failed_rotor": _NO_FAILURE, "load_factor": _ONE}
+    }
 
     def initialize(self):
         super().initialize()
         _declare_aero(self)
-        self.options.declare("num_azimuth", default=25, types=int, lower=3,
-                             desc="azimuthal stations of the Pitt-Peters rotors")
+        self.options.declare(
+            "num_azimuth",
+            default=25,
+            types=int,
+            lower=3,
+            desc="azimuthal stations of the Pitt-Peters rotors",
+        )
 
     @classmethod
     def variables(cls, vehicle, condition):
         n = num_lift_pairs(vehicle.lift_rotors)
-        return (_speed_variable(n, "lift-rotor speed, mean of the pair; "
-                                "columns: pairs"),
-                ConditionVariable("roll_yaw_rpm", (1, 2), (2,), "rpm",
-                                  "lift-rotor speed differentials; columns: roll (left, y < 0, "
-                                  "minus right rotors), yaw (spin +1 minus spin -1 rotors)"),
-                _PUSHER_RPM, _ELEVATOR)
+        return (
+            _speed_variable(n, "lift-rotor speed, mean of the pair; columns: pairs"),
+            ConditionVariable(
+                "roll_yaw_rpm",
+                (1, 2),
+                (2,),
+                "rpm",
+                "lift-rotor speed differentials; columns: roll (left, y < 0, "
+                "minus right rotors), yaw (spin +1 minus spin -1 rotors)",
+            ),
+            _PUSHER_RPM,
+            _ELEVATOR,
+        )
 
     @classmethod
     def vehicle_inputs(cls, vehicle, condition):
-        return (super().vehicle_inputs(vehicle, condition)
-                + _lift_inputs(vehicle, range(len(vehicle.lift_rotors)))
-                + _pusher_inputs(vehicle) + _AERO_INPUTS)
+        return (
+            super().vehicle_inputs(vehicle, condition)
+            + _lift_inputs(vehicle, range(len(vehicle.lift_rotors)))
+            + _pusher_inputs(vehicle)
+            + _AERO_INPUTS
+        )
 
     @classmethod
     def trim_rows(cls, vehicle, condition):
@@ -600,9 +804,14 @@ class TransitionCondition(ConditionGroup):
         a, theta = condition.acceleration, condition.pitch
         # v_dot: only the rotors' net side force under the yaw differential moves it, with no
         # trim variable of its own: a degenerate row.
-        return (TrimRow("u", a * np.cos(theta), ref=g), TrimRow("v", ref=g, degenerate=True),
-                TrimRow("w", a * np.sin(theta), ref=g), TrimRow("p"), TrimRow("q"),
-                TrimRow("r"))
+        return (
+            TrimRow("u", a * np.cos(theta), ref=g),
+            TrimRow("v", ref=g, degenerate=True),
+            TrimRow("w", a * np.sin(theta), ref=g),
+            TrimRow("p"),
+            TrimRow("q"),
+            TrimRow("r"),
+        )
 
     @classmethod
     def constraints(cls, vehicle, condition, bounds):
@@ -617,15 +826,22 @@ class TransitionCondition(ConditionGroup):
         """
         entry = condition_layout(vehicle).entry(condition.name, "lift_rpm")
         dv = vehicle.design_variables[entry.design_variable]
-        lower, upper = (bounds(entry.design_variable) if bounds is not None
-                        else (dv.lower_array, dv.upper_array))
+        lower, upper = (
+            bounds(entry.design_variable)
+            if bounds is not None
+            else (dv.lower_array, dv.upper_array)
+        )
         pairs = [r.pair for r in vehicle.lift_rotors]
         lower = np.ravel(lower)[entry.flat_indices][pairs]
         upper = np.ravel(upper)[entry.flat_indices][pairs]
         ref = dv.ref
-        return (ConditionConstraint("rotor_speed", "lift_rotor_rpm",
-                                    {"lower": lower, "upper": upper, "ref": ref,
-                                     "units": "rpm", "linear": True}),)
+        return (
+            ConditionConstraint(
+                "rotor_speed",
+                "lift_rotor_rpm",
+                {"lower": lower, "upper": upper, "ref": ref, "units": "rpm", "linear": True},
+            ),
+        )
 
     @classmethod
     def motor_sets(cls, vehicle, condition):
@@ -639,13 +855,18 @@ class TransitionCondition(ConditionGroup):
         self.speed_groups = num_lift_pairs(rotors)
         _add_atmosphere(self, condition)
         _add_aerodynamics(self, vehicle, condition, self.options["wing_zero_lift_angle"])
-        _add_lift_rotors(self, vehicle, rotors, [r.pair for r in rotors], self.speed_groups,
-                         edgewise=True,
-                         roll_yaw=True)
+        _add_lift_rotors(
+            self,
+            vehicle,
+            rotors,
+            [r.pair for r in rotors],
+            self.speed_groups,
+            edgewise=True,
+            roll_yaw=True,
+        )
         _add_pusher(self, vehicle)
         _add_power(self, {"lift": len(rotors), "pusher": 1})
-        _add_equations_of_motion(self, ["aero", "drag", "lift", "pusher"],
-                                 forces_only=["drag"])
+        _add_equations_of_motion(self, ["aero", "drag", "lift", "pusher"], forces_only=["drag"])
 
 
 class StructuralCondition(ConditionGroup):
@@ -664,18 +885,32 @@ class StructuralCondition(ConditionGroup):
     """
 
     power_output = None
-    field_rules = {"structural": {"speed": _POSITIVE, "failed_rotor": _NO_FAILURE,
-                                  "acceleration": _ZERO,
-                                  "load_factor": (lambda x: x != 0, "non-zero")}}
+    field_rules = {
+        "structural": {
+            "speed": _POSITIVE,
+            "failed_rotor": _NO_FAILURE,
+            "acceleration": _ZERO,
+            "load_factor": (lambda x: x != 0, "non-zero"),
+        }
+    }
 
     def initialize(self):
         super().initialize()
         _declare_aero(self)
-        self.options.declare("ks_rho", default=None, types=(int, float), allow_none=True,
-                             desc="KS parameter of the structural aggregates (None: none)")
-        self.options.declare("coupling", default="one_way", values=("one_way", "two_way"),
-                             desc="one-way (loads only) or two-way (the beam deforms the VLM "
-                                  "wing mesh; block Gauss-Seidel)")
+        self.options.declare(
+            "ks_rho",
+            default=None,
+            types=(int, float),
+            allow_none=True,
+            desc="KS parameter of the structural aggregates (None: none)",
+        )
+        self.options.declare(
+            "coupling",
+            default="one_way",
+            values=("one_way", "two_way"),
+            desc="one-way (loads only) or two-way (the beam deforms the VLM "
+            "wing mesh; block Gauss-Seidel)",
+        )
 
     @staticmethod
     def compressed_skin(condition):
@@ -688,8 +923,11 @@ class StructuralCondition(ConditionGroup):
 
     @classmethod
     def vehicle_inputs(cls, vehicle, condition):
-        return (super().vehicle_inputs(vehicle, condition) + _AERO_INPUTS
-                + tuple((name, name, None) for name in _WING_BOX_INPUTS))
+        return (
+            super().vehicle_inputs(vehicle, condition)
+            + _AERO_INPUTS
+            + tuple((name, name, None) for name in _WING_BOX_INPUTS)
+        )
 
     @classmethod
     def trim_rows(cls, vehicle, condition):
@@ -697,11 +935,19 @@ class StructuralCondition(ConditionGroup):
 
     @classmethod
     def constraints(cls, vehicle, condition, bounds):
-        bays = list(range(vehicle.wing_box.num_bays - 1))   # all bays but the tip bay
+        bays = list(range(vehicle.wing_box.num_bays - 1))  # all bays but the tip bay
         skin = cls.compressed_skin(condition)
-        return (ConditionConstraint("buckling", f"{skin}_skin_buckling_ratio",
-                                    {"indices": bays, "flat_indices": True,
-                                     "upper": vehicle.constraints.max_buckling_ratio}),)
+        return (
+            ConditionConstraint(
+                "buckling",
+                f"{skin}_skin_buckling_ratio",
+                {
+                    "indices": bays,
+                    "flat_indices": True,
+                    "upper": vehicle.constraints.max_buckling_ratio,
+                },
+            ),
+        )
 
     def setup(self):
         vehicle = self.options["vehicle"]
@@ -713,49 +959,90 @@ class StructuralCondition(ConditionGroup):
         two_way = self.options["coupling"] == "two_way"
         if two_way:
             self._add_mesh_deformation(nodes, n_wing)
-        _add_aerodynamics(self, vehicle, condition, self.options["wing_zero_lift_angle"],
-                          wing_mesh="deformed_wing_mesh" if two_way else "wing_mesh")
-        _add_equations_of_motion(self, ["aero", "drag"], forces_only=["drag"],
-                                 load_factor=condition.load_factor)
+        _add_aerodynamics(
+            self,
+            vehicle,
+            condition,
+            self.options["wing_zero_lift_angle"],
+            wing_mesh="deformed_wing_mesh" if two_way else "wing_mesh",
+        )
+        _add_equations_of_motion(
+            self, ["aero", "drag"], forces_only=["drag"], load_factor=condition.load_factor
+        )
         rho = self.options["ks_rho"]
-        self.add_subsystem("beam", BoxBeamGroup(num_nodes=nodes, num_aero_points=right.size,
-                                                ks_rho=rho),
-                           promotes_inputs=[("nodes", "wing_box_nodes"), "box_width",
-                                            "box_height", "top_skin_thickness",
-                                            "bottom_skin_thickness", "front_spar_thickness",
-                                            "rear_spar_thickness", "top_skin_radius",
-                                            "bottom_skin_radius", "load_factor", "pitch"],
-                           promotes_outputs=["von_mises_stress", "top_skin_buckling_ratio",
-                                             "bottom_skin_buckling_ratio", "displacements",
-                                             "rotations", "stress_ratio"])
-        self.connect("force_points", "beam.aero_points",
-                     src_indices=om.slicer[n_wing // 2:n_wing, :])
-        self.connect("panel_forces", "beam.aero_forces",
-                     src_indices=om.slicer[0, n_wing // 2:n_wing, :])
+        self.add_subsystem(
+            "beam",
+            BoxBeamGroup(num_nodes=nodes, num_aero_points=right.size, ks_rho=rho),
+            promotes_inputs=[
+                ("nodes", "wing_box_nodes"),
+                "box_width",
+                "box_height",
+                "top_skin_thickness",
+                "bottom_skin_thickness",
+                "front_spar_thickness",
+                "rear_spar_thickness",
+                "top_skin_radius",
+                "bottom_skin_radius",
+                "load_factor",
+                "pitch",
+            ],
+            promotes_outputs=[
+                "von_mises_stress",
+                "top_skin_buckling_ratio",
+                "bottom_skin_buckling_ratio",
+                "displacements",
+                "rotations",
+                "stress_ratio",
+            ],
+        )
+        self.connect(
+            "force_points", "beam.aero_points", src_indices=om.slicer[n_wing // 2 : n_wing, :]
+        )
+        self.connect(
+            "panel_forces", "beam.aero_forces", src_indices=om.slicer[0, n_wing // 2 : n_wing, :]
+        )
         material = vehicle.material
-        for name, units in (("youngs_modulus", "Pa"), ("shear_modulus", "Pa"),
-                            ("density", "kg/m**3"), ("poisson_ratio", None),
-                            ("allowable_stress", "Pa")):
+        for name, units in (
+            ("youngs_modulus", "Pa"),
+            ("shear_modulus", "Pa"),
+            ("density", "kg/m**3"),
+            ("poisson_ratio", None),
+            ("allowable_stress", "Pa"),
+        ):
             self.promotes("beam", inputs=[(name, f"material_{name}")])
             self.set_input_defaults(f"material_{name}", getattr(material, name), units=units)
         if rho is not None:
-            self.promotes("beam", outputs=["stress_ratio_ks", "top_skin_buckling_ratio_ks",
-                                           "bottom_skin_buckling_ratio_ks"])
+            self.promotes(
+                "beam",
+                outputs=[
+                    "stress_ratio_ks",
+                    "top_skin_buckling_ratio_ks",
+                    "bottom_skin_buckling_ratio_ks",
+                ],
+            )
             sign = -1.0 if condition.load_factor > 0 else 1.0
-            self.add_subsystem("displacement_sign",
-                               VerticalDisplacementComp(num_nodes=nodes, sign=sign))
-            self.add_subsystem("displacement_ks", KSComp(width=nodes, rho=rho * 10.0,
-                                                         units="m"),
-                               promotes_outputs=[("KS", "displacement_ks")])
+            self.add_subsystem(
+                "displacement_sign", VerticalDisplacementComp(num_nodes=nodes, sign=sign)
+            )
+            self.add_subsystem(
+                "displacement_ks",
+                KSComp(width=nodes, rho=rho * 10.0, units="m"),
+                promotes_outputs=[("KS", "displacement_ks")],
+            )
             self.connect("displacements", "displacement_sign.displacements")
             self.connect("displacement_sign.vertical_displacement", "displacement_ks.g")
         if two_way:
             # The loop VLM -> beam -> mesh -> VLM: Newton on the coupled system (each implicit
             # component still solves itself first); a failure to converge is an AnalysisError
             # so an optimizer can back off.
-            self.nonlinear_solver = om.NewtonSolver(solve_subsystems=True, maxiter=30,
-                                                    atol=1e-8, rtol=1e-8, iprint=-1,
-                                                    err_on_non_converge=True)
+            self.nonlinear_solver = om.NewtonSolver(
+                solve_subsystems=True,
+                maxiter=30,
+                atol=1e-8,
+                rtol=1e-8,
+                iprint=-1,
+                err_on_non_converge=True,
+            )
             self.linear_solver = om.DirectSolver()
 
     def _add_mesh_deformation(self, nodes, n_wing):
@@ -764,15 +1051,23 @@ class StructuralCondition(ConditionGroup):
         half = ny // 2
         chord, span = np.meshgrid(np.arange(nx), np.arange(half, ny), indexing="ij")
         points = chord.size
-        self.add_subsystem("displacement_transfer", DisplacementTransferComp(
-            num_nodes=nodes, num_points=points),
-            promotes_inputs=[("nodes", "wing_box_nodes"), "displacements", "rotations"])
+        self.add_subsystem(
+            "displacement_transfer",
+            DisplacementTransferComp(num_nodes=nodes, num_points=points),
+            promotes_inputs=[("nodes", "wing_box_nodes"), "displacements", "rotations"],
+        )
         xyz = np.arange(3)[np.newaxis, :]
-        self.connect("wing_mesh", "displacement_transfer.aero_points",
-                     src_indices=om.slicer[chord.reshape(-1, 1), span.reshape(-1, 1), xyz])
-        self.add_subsystem("mesh_deformation", MeshDeformationComp(
-            num_chord_nodes=nx, num_span_nodes=ny),
+        self.connect(
+            "wing_mesh",
+            "displacement_transfer.aero_points",
+            src_indices=om.slicer[chord.reshape(-1, 1), span.reshape(-1, 1), xyz],
+        )
+        self.add_subsystem(
+            "mesh_deformation",
+            MeshDeformationComp(num_chord_nodes=nx, num_span_nodes=ny),
             promotes_inputs=[("mesh", "wing_mesh")],
-            promotes_outputs=[("deformed_mesh", "deformed_wing_mesh")])
-        self.connect("displacement_transfer.aero_displacements",
-                     "mesh_deformation.right_displacements")
+            promotes_outputs=[("deformed_mesh", "deformed_wing_mesh")],
+        )
+        self.connect(
+            "displacement_transfer.aero_displacements", "mesh_deformation.right_displacements"
+        )

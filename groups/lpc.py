@@ -70,42 +70,77 @@ class LPCGroup(om.Group):
     """
 
     def initialize(self):
-        self.options.declare("vehicle", default=None, allow_none=True,
-                             desc="lpc_mdo.vehicle.Vehicle; None = reference vehicle")
-        self.options.declare("conditions", default=None, types=(list, tuple), allow_none=True,
-                             desc="names of the design conditions to include (None: all)")
-        self.options.declare("rotor_polar", default=None, allow_none=True,
-                             desc="blade-section polar (None: from the rotor airfoil)")
-        self.options.declare("wing_zero_lift_angle", default=None, allow_none=True,
-                             types=float, desc="wing sectional zero-lift angle, rad")
-        self.options.declare("ks_rho", default=50.0, types=float,
-                             desc="KS parameter of the torque-margin aggregates")
-        self.options.declare("structural_coupling", default="one_way",
-                             values=("one_way", "two_way"),
-                             desc="aerostructural coupling of the structural conditions")
-        self.options.declare("structural_ks_rho", default=None, types=(int, float),
-                             allow_none=True,
-                             desc="KS parameter of the structural aggregates (None: none)")
+        self.options.declare(
+            "vehicle",
+            default=None,
+            allow_none=True,
+            desc="lpc_mdo.vehicle.Vehicle; None = reference vehicle",
+        )
+        self.options.declare(
+            "conditions",
+            default=None,
+            types=(list, tuple),
+            allow_none=True,
+            desc="names of the design conditions to include (None: all)",
+        )
+        self.options.declare(
+            "rotor_polar",
+            default=None,
+            allow_none=True,
+            desc="blade-section polar (None: from the rotor airfoil)",
+        )
+        self.options.declare(
+            "wing_zero_lift_angle",
+            default=None,
+            allow_none=True,
+            types=float,
+            desc="wing sectional zero-lift angle, rad",
+        )
+        self.options.declare(
+            "ks_rho", default=50.0, types=float, desc="KS parameter of the torque-margin aggregates"
+        )
+        self.options.declare(
+            "structural_coupling",
+            default="one_way",
+            values=("one_way", "two_way"),
+            desc="aerostructural coupling of the structural conditions",
+        )
+        self.options.declare(
+            "structural_ks_rho",
+            default=None,
+            types=(int, float),
+            allow_none=True,
+            desc="KS parameter of the structural aggregates (None: none)",
+        )
 
     def setup(self):
         vehicle = self.options["vehicle"] or reference_vehicle()
         self.vehicle_spec = vehicle
-        self.conditions = included_conditions(vehicle, self.options["conditions"],
-                                              where=self.msginfo)
+        self.conditions = included_conditions(
+            vehicle, self.options["conditions"], where=self.msginfo
+        )
         polar, pusher_polar, alpha0 = _airfoil_models(
             vehicle, self.options["rotor_polar"], self.options["wing_zero_lift_angle"]
         )
 
         dvs = self.add_subsystem("design_variables", om.IndepVarComp(), promotes=["*"])
         for name, dv in vehicle.design_variables.items():
-            dvs.add_output(name, np.asarray(dv.initial_array).reshape(dv.shape),
-                           units=openmdao_units(dv.units), desc=dv.description)
+            dvs.add_output(
+                name,
+                np.asarray(dv.initial_array).reshape(dv.shape),
+                units=openmdao_units(dv.units),
+                desc=dv.description,
+            )
         self.add_subsystem("vehicle", VehicleGroup(vehicle=vehicle), promotes=["*"])
 
         for condition in self.conditions:
             cls = condition_class(condition.kind)
-            kwargs = {"vehicle": vehicle, "condition": condition.name, "rotor_polar": polar,
-                      "pusher_polar": pusher_polar}
+            kwargs = {
+                "vehicle": vehicle,
+                "condition": condition.name,
+                "rotor_polar": polar,
+                "pusher_polar": pusher_polar,
+            }
             if _declares(cls, "wing_zero_lift_angle"):
                 kwargs["wing_zero_lift_angle"] = alpha0
             if _declares(cls, "ks_rho"):
@@ -127,16 +162,21 @@ class LPCGroup(om.Group):
             for entry in layout.entries[name].values():
                 v = entry.variable
                 # A tuple: one fancy index of the flattened source, shaped like the target.
-                self.connect(entry.design_variable, f"{name}.{v.name}",
-                             src_indices=(entry.flat_indices.reshape(v.target_shape),),
-                             flat_src_indices=True)
+                self.connect(
+                    entry.design_variable,
+                    f"{name}.{v.name}",
+                    src_indices=(entry.flat_indices.reshape(v.target_shape),),
+                    flat_src_indices=True,
+                )
         for i, condition in enumerate(self._powered):
             power = condition_class(condition.kind).power_output
             self.connect(f"{condition.name}.{power}", f"power_mux.electrical_power_{i}")
         for prefix, members in self._motor_sets.items():
             for condition, _ in members:
-                self.connect(f"{condition.name}.{prefix}_motor_torque_margin",
-                             f"{prefix}_margin_gather.{condition.name}")
+                self.connect(
+                    f"{condition.name}.{prefix}_motor_torque_margin",
+                    f"{prefix}_margin_gather.{condition.name}",
+                )
         super().configure()
 
     # ------------------------------------------------------------------ mission and margins
@@ -153,19 +193,24 @@ class LPCGroup(om.Group):
                 promotes_outputs=["energy_used", "segment_energy"],
             )
             self.connect("power_mux.electrical_power", "mission.electrical_power")
-            self.set_input_defaults("mission.duration",
-                                    np.array([c.duration for c in powered]), units="s")
+            self.set_input_defaults(
+                "mission.duration", np.array([c.duration for c in powered]), units="s"
+            )
         else:
-            self.add_subsystem("mission", om.IndepVarComp("energy_used", 0.0, units="J"),
-                               promotes_outputs=["energy_used"])
+            self.add_subsystem(
+                "mission",
+                om.IndepVarComp("energy_used", 0.0, units="J"),
+                promotes_outputs=["energy_used"],
+            )
         self.add_subsystem(
             "battery",
             BatteryComp(),
             promotes_inputs=["battery_mass", "energy_used"],
             promotes_outputs=["state_of_charge", "energy_capacity"],
         )
-        self.set_input_defaults("battery.specific_energy", vehicle.battery.energy_density,
-                                units="J/kg")
+        self.set_input_defaults(
+            "battery.specific_energy", vehicle.battery.energy_density, units="J/kg"
+        )
         self.set_input_defaults("battery.initial_soc", vehicle.battery.initial_soc)
 
         # Motor sets: prefix -> [(condition, motor indices)], in condition order.
@@ -191,8 +236,9 @@ class LPCGroup(om.Group):
         )
         self.add_subsystem(
             f"{prefix}_margin",
-            KSComp(vec_size=num_motors, width=len(members), rho=self.options["ks_rho"],
-                   lower_flag=True),
+            KSComp(
+                vec_size=num_motors, width=len(members), rho=self.options["ks_rho"], lower_flag=True
+            ),
             promotes_outputs=[("KS", f"{prefix}_motor_torque_margin")],
         )
         self.connect(f"{prefix}_margin_gather.torque_margin", f"{prefix}_margin.g")
@@ -231,13 +277,16 @@ def included_conditions(vehicle, names=None, where="LPCGroup"):
         return list(vehicle.conditions)
     unknown = [c for c in names if c not in all_names]
     if unknown or not names:
-        raise ValueError(f"{where}: conditions = {list(names)}; each must be one of the "
-                         f"vehicle's conditions {all_names} (at least one).")
+        raise ValueError(
+            f"{where}: conditions = {list(names)}; each must be one of the "
+            f"vehicle's conditions {all_names} (at least one)."
+        )
     return [c for c in vehicle.conditions if c.name in names]
 
 
 def zero_lift_angle(polar, reynolds, mach):
     """Angle of attack (rad) where a polar's cl vanishes, bracketed in [-20, +10] deg."""
+
     def cl(alpha):
         return float(polar.evaluate(np.array(alpha), reynolds, mach).cl)
 
@@ -276,6 +325,7 @@ def _airfoil_models(vehicle, rotor_polar, wing_zero_lift_angle):
         cruise = vehicle.condition(vehicle.mission.cruise_condition)
         _, _, rho, a, mu = standard_atmosphere(cruise.altitude)
         reynolds = rho * cruise.speed * vehicle.wing.mean_aerodynamic_chord / mu
-        wing_zero_lift_angle = zero_lift_angle(get_polar(vehicle.wing.airfoil), reynolds,
-                                               cruise.speed / a)
+        wing_zero_lift_angle = zero_lift_angle(
+            get_polar(vehicle.wing.airfoil), reynolds, cruise.speed / a
+        )
     return rotor_polar, pusher_polar, wing_zero_lift_angle

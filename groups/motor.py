@@ -3,7 +3,6 @@
 The plain-function wrapper ``motor_analysis`` is in :mod:`lpc_mdo.api.motor`.
 """
 
-
 import numpy as np
 import openmdao.api as om
 
@@ -26,12 +25,26 @@ _check_loading = RangeCheck(lower=0.0, lower_open=True, where="MotorGroup")
 
 
 def _declare_options(group):
-    group.options.declare('num_motors', default=1, types=int, lower=1,
-                          desc='Number of motors (different designs) evaluated at once')
-    group.options.declare('num_nodes', default=1, types=int, lower=1,
-                          desc='Number of operating points (nodes) per motor')
-    group.options.declare('parameters', default=MotorParameters(), types=MotorParameters,
-                          desc='Fixed motor parameters')
+    group.options.declare(
+        "num_motors",
+        default=1,
+        types=int,
+        lower=1,
+        desc="Number of motors (different designs) evaluated at once",
+    )
+    group.options.declare(
+        "num_nodes",
+        default=1,
+        types=int,
+        lower=1,
+        desc="Number of operating points (nodes) per motor",
+    )
+    group.options.declare(
+        "parameters",
+        default=MotorParameters(),
+        types=MotorParameters,
+        desc="Fixed motor parameters",
+    )
 
 
 class MotorGroup(om.Group):
@@ -108,48 +121,71 @@ class MotorGroup(om.Group):
 
     def initialize(self):
         _declare_options(self)
-        self.options.declare('length_to_diameter', default=0.5, types=(int, float),
-                             allow_none=True, check_valid=_check_ratio,
-                             desc='L/D ratio tying D to L (> 0); None makes diameter an input')
-        self.options.declare('include_torque_limit', default=True, types=bool,
-                             desc='Compute the voltage-limited torque and its margin')
-        self.options.declare('electric_loading', default=30.0e3, types=(int, float),
-                             check_valid=_check_loading,
-                             desc='Default of the input electric_loading, A/m (> 0)')
-        self.options.declare('magnetic_loading', default=0.85, types=(int, float),
-                             check_valid=_check_loading,
-                             desc='Default of the input magnetic_loading, T (> 0)')
+        self.options.declare(
+            "length_to_diameter",
+            default=0.5,
+            types=(int, float),
+            allow_none=True,
+            check_valid=_check_ratio,
+            desc="L/D ratio tying D to L (> 0); None makes diameter an input",
+        )
+        self.options.declare(
+            "include_torque_limit",
+            default=True,
+            types=bool,
+            desc="Compute the voltage-limited torque and its margin",
+        )
+        self.options.declare(
+            "electric_loading",
+            default=30.0e3,
+            types=(int, float),
+            check_valid=_check_loading,
+            desc="Default of the input electric_loading, A/m (> 0)",
+        )
+        self.options.declare(
+            "magnetic_loading",
+            default=0.85,
+            types=(int, float),
+            check_valid=_check_loading,
+            desc="Default of the input magnetic_loading, T (> 0)",
+        )
 
     def setup(self):
-        nm, nn = self.options['num_motors'], self.options['num_nodes']
-        par = self.options['parameters']
-        motors = {'num_motors': nm, 'parameters': par}
-        points = {'num_motors': nm, 'num_nodes': nn, 'parameters': par}
-        with_limit = self.options['include_torque_limit']
+        nm, nn = self.options["num_motors"], self.options["num_nodes"]
+        par = self.options["parameters"]
+        motors = {"num_motors": nm, "parameters": par}
+        points = {"num_motors": nm, "num_nodes": nn, "parameters": par}
+        with_limit = self.options["include_torque_limit"]
 
-        self.add_subsystem('sizing', MotorSizingComp(
-            length_to_diameter=self.options['length_to_diameter'], **motors), promotes=['*'])
-        self.add_subsystem('ecm_parameters', MotorECMParametersComp(**motors), promotes=['*'])
-        self.add_subsystem('magnet_circuit', MagnetCircuitComp(**motors), promotes=['*'])
-        self.add_subsystem('magnet_flux', MagnetFluxComp(**motors), promotes=['*'])
-        self.add_subsystem('q_axis_flux', QAxisFluxComp(**motors), promotes=['*'])
-        self.add_subsystem('inductance', InductanceComp(**motors), promotes=['*'])
+        self.add_subsystem(
+            "sizing",
+            MotorSizingComp(length_to_diameter=self.options["length_to_diameter"], **motors),
+            promotes=["*"],
+        )
+        self.add_subsystem("ecm_parameters", MotorECMParametersComp(**motors), promotes=["*"])
+        self.add_subsystem("magnet_circuit", MagnetCircuitComp(**motors), promotes=["*"])
+        self.add_subsystem("magnet_flux", MagnetFluxComp(**motors), promotes=["*"])
+        self.add_subsystem("q_axis_flux", QAxisFluxComp(**motors), promotes=["*"])
+        self.add_subsystem("inductance", InductanceComp(**motors), promotes=["*"])
         if with_limit:
-            self.add_subsystem('torque_limit', TorqueLimitComp(**points), promotes=['*'])
-        self.add_subsystem('em_torque', EMTorqueComp(**points), promotes=['*'])
-        self.add_subsystem('mtpa', MTPAComp(**points), promotes=['*'])
-        self.add_subsystem('losses', MotorLossComp(**points), promotes=['*'])
-        self.add_subsystem('margins', MotorMarginComp(include_torque_limit=with_limit,
-                                                      **points), promotes=['*'])
+            self.add_subsystem("torque_limit", TorqueLimitComp(**points), promotes=["*"])
+        self.add_subsystem("em_torque", EMTorqueComp(**points), promotes=["*"])
+        self.add_subsystem("mtpa", MTPAComp(**points), promotes=["*"])
+        self.add_subsystem("losses", MotorLossComp(**points), promotes=["*"])
+        self.add_subsystem(
+            "margins", MotorMarginComp(include_torque_limit=with_limit, **points), promotes=["*"]
+        )
 
-        self.set_input_defaults('length', 0.1 * np.ones(nm), units='m')
-        self.set_input_defaults('electric_loading',
-                                np.full(nm, float(self.options['electric_loading'])), units='A/m')
-        self.set_input_defaults('magnetic_loading',
-                                np.full(nm, float(self.options['magnetic_loading'])), units='T')
-        if self.options['length_to_diameter'] is None:
-            self.set_input_defaults('diameter', 0.2 * np.ones(nm), units='m')
-        self.set_input_defaults('rotor_torque', 500.0 * np.ones((nm, nn)), units='N*m')
-        self.set_input_defaults('rotor_rpm', 1000.0 * np.ones((nm, nn)), units='rpm')
+        self.set_input_defaults("length", 0.1 * np.ones(nm), units="m")
+        self.set_input_defaults(
+            "electric_loading", np.full(nm, float(self.options["electric_loading"])), units="A/m"
+        )
+        self.set_input_defaults(
+            "magnetic_loading", np.full(nm, float(self.options["magnetic_loading"])), units="T"
+        )
+        if self.options["length_to_diameter"] is None:
+            self.set_input_defaults("diameter", 0.2 * np.ones(nm), units="m")
+        self.set_input_defaults("rotor_torque", 500.0 * np.ones((nm, nn)), units="N*m")
+        self.set_input_defaults("rotor_rpm", 1000.0 * np.ones((nm, nn)), units="rpm")
 
         self.linear_solver = om.DirectSolver(assemble_jac=True)

@@ -1,6 +1,5 @@
 """Pitt–Peters rotor assembly: blade geometry, inflow states, loads, performance and hub loads."""
 
-
 from lpc_mdo.components.rotor.pitt_peters_inflow import PittPetersInflowComp
 from lpc_mdo.components.rotor.pitt_peters_loads import LOSS_PLACEMENTS, PittPetersLoadsComp
 from lpc_mdo.groups.bem_rotor import RotorGroupBase
@@ -101,21 +100,41 @@ class PittPetersRotorGroup(RotorGroupBase):
     num_azimuth_option = True
 
     def declare_model_options(self):
-        self.options.declare('num_azimuth', default=25, types=int, lower=3,
-                             desc='Number of azimuthal stations (>= 3)')
-        self.options.declare('loss_placement', default='momentum', values=LOSS_PLACEMENTS,
-                             desc="Prandtl factor on the momentum side or on the blade loads")
-        self.options.declare('tangential_induction', default=True, types=bool,
-                             desc='Wake swirl per station (as the BEM)')
+        self.options.declare(
+            "num_azimuth",
+            default=25,
+            types=int,
+            lower=3,
+            desc="Number of azimuthal stations (>= 3)",
+        )
+        self.options.declare(
+            "loss_placement",
+            default="momentum",
+            values=LOSS_PLACEMENTS,
+            desc="Prandtl factor on the momentum side or on the blade loads",
+        )
+        self.options.declare(
+            "tangential_induction",
+            default=True,
+            types=bool,
+            desc="Wake swirl per station (as the BEM)",
+        )
 
     def add_rotor_model(self, geo):
         opts = self.options
-        pp = {'num_rotors': geo['num_rotors'], 'num_nodes': opts['num_nodes'],
-              'num_radial': opts['num_radial'], 'num_azimuth': opts['num_azimuth'],
-              'num_blades': geo['num_blades'], 'spin_direction': geo['spin_direction'],
-              'polar': opts['polar'], 'tip_loss': opts['tip_loss'],
-              'hub_loss': opts['hub_loss'], 'loss_placement': opts['loss_placement'],
-              'tangential_induction': opts['tangential_induction']}
-        self.add_subsystem('inflow', PittPetersInflowComp(**pp), promotes=['*'])
-        self.add_subsystem('loads', PittPetersLoadsComp(**pp), promotes=['*'])
+        pp = {
+            "num_rotors": geo["num_rotors"],
+            "num_nodes": opts["num_nodes"],
+            "num_radial": opts["num_radial"],
+            "num_azimuth": opts["num_azimuth"],
+            "num_blades": geo["num_blades"],
+            "spin_direction": geo["spin_direction"],
+            "polar": opts["polar"],
+            "tip_loss": opts["tip_loss"],
+            "hub_loss": opts["hub_loss"],
+            "loss_placement": opts["loss_placement"],
+            "tangential_induction": opts["tangential_induction"],
+        }
+        self.add_subsystem("inflow", PittPetersInflowComp(**pp), promotes=["*"])
+        self.add_subsystem("loads", PittPetersLoadsComp(**pp), promotes=["*"])
         return True  # edgewise model: in-plane forces and hub moments

@@ -24,10 +24,18 @@ from lpc_mdo.vehicle import reference_vehicle
 
 # Design variables that the vehicle group consumes, with their units.
 VEHICLE_DESIGN_VARIABLES = {
-    "wing_area": "m**2", "wing_aspect_ratio": None, "htail_area": "m**2",
-    "htail_aspect_ratio": None, "fuselage_length": "m", "rotor_radius": "m",
-    "battery_mass": "kg", "motor_length": "m", "front_spar_thickness": "m",
-    "rear_spar_thickness": "m", "top_skin_thickness": "m", "bottom_skin_thickness": "m",
+    "wing_area": "m**2",
+    "wing_aspect_ratio": None,
+    "htail_area": "m**2",
+    "htail_aspect_ratio": None,
+    "fuselage_length": "m",
+    "rotor_radius": "m",
+    "battery_mass": "kg",
+    "motor_length": "m",
+    "front_spar_thickness": "m",
+    "rear_spar_thickness": "m",
+    "top_skin_thickness": "m",
+    "bottom_skin_thickness": "m",
 }
 
 # Units of the motor loadings (the inputs of MotorSizingComp).
@@ -37,9 +45,15 @@ MOTOR_LOADING_UNITS = {"electric_loading": "A/m", "magnetic_loading": "T"}
 def motor_parameters(vehicle):
     """Return the PMSM's fixed parameters from the vehicle file's [motor] table."""
     m = vehicle.motor
-    return MotorParameters(pole_pairs=m.pole_pairs, phases=m.num_phases, num_slots=m.num_slots,
-                           rated_current=m.rated_current, voltage_limit=m.voltage_limit,
-                           gear_ratio=m.gear_ratio, torque_density=m.torque_density)
+    return MotorParameters(
+        pole_pairs=m.pole_pairs,
+        phases=m.num_phases,
+        num_slots=m.num_slots,
+        rated_current=m.rated_current,
+        voltage_limit=m.voltage_limit,
+        gear_ratio=m.gear_ratio,
+        torque_density=m.torque_density,
+    )
 
 
 def motor_loadings(vehicle):
@@ -93,18 +107,39 @@ class VehicleGroup(om.Group):
     """
 
     def initialize(self):
-        self.options.declare("vehicle", default=None, allow_none=True,
-                             desc="lpc_mdo.vehicle.Vehicle; None = reference vehicle")
-        self.options.declare("other_mass", default=None, types=(int, float), allow_none=True,
-                             desc="W_other (kg); None = calibrated to the target gross mass")
-        self.options.declare("other_cg", default=None, types=(tuple, list, np.ndarray),
-                             allow_none=True,
-                             desc="cg of W_other (m); None = calibrated with W_other (or the "
-                                  "vehicle's other_cg when other_mass is given)")
-        self.options.declare("wing_panels", default=26, types=int,
-                             desc="span-wise VLM panels of the wing (even; paper code 26)")
-        self.options.declare("tail_panels", default=8, types=int,
-                             desc="span-wise VLM panels of the horizontal tail (even; code 8)")
+        self.options.declare(
+            "vehicle",
+            default=None,
+            allow_none=True,
+            desc="lpc_mdo.vehicle.Vehicle; None = reference vehicle",
+        )
+        self.options.declare(
+            "other_mass",
+            default=None,
+            types=(int, float),
+            allow_none=True,
+            desc="W_other (kg); None = calibrated to the target gross mass",
+        )
+        self.options.declare(
+            "other_cg",
+            default=None,
+            types=(tuple, list, np.ndarray),
+            allow_none=True,
+            desc="cg of W_other (m); None = calibrated with W_other (or the "
+            "vehicle's other_cg when other_mass is given)",
+        )
+        self.options.declare(
+            "wing_panels",
+            default=26,
+            types=int,
+            desc="span-wise VLM panels of the wing (even; paper code 26)",
+        )
+        self.options.declare(
+            "tail_panels",
+            default=8,
+            types=int,
+            desc="span-wise VLM panels of the horizontal tail (even; code 8)",
+        )
 
     def setup(self):
         vehicle = self.options["vehicle"] or reference_vehicle()
@@ -114,76 +149,122 @@ class VehicleGroup(om.Group):
             other_cg = calibrated_cg if other_cg is None else other_cg
         wing, tail = vehicle.wing, vehicle.horizontal_tail
 
-        self.add_subsystem("wing_sizing", SurfaceSizingComp(taper_ratio=wing.taper_ratio),
-                           promotes_inputs=[("area", "wing_area"),
-                                            ("aspect_ratio", "wing_aspect_ratio")],
-                           promotes_outputs=[("span", "wing_span"),
-                                             ("root_chord", "wing_root_chord"),
-                                             ("tip_chord", "wing_tip_chord"),
-                                             ("mean_aerodynamic_chord", "wing_mac")])
-        self.add_subsystem("htail_sizing", SurfaceSizingComp(taper_ratio=tail.taper_ratio),
-                           promotes_inputs=[("area", "htail_area"),
-                                            ("aspect_ratio", "htail_aspect_ratio")],
-                           promotes_outputs=[("span", "htail_span"),
-                                             ("root_chord", "htail_root_chord"),
-                                             ("tip_chord", "htail_tip_chord"),
-                                             ("mean_aerodynamic_chord", "htail_mac")])
+        self.add_subsystem(
+            "wing_sizing",
+            SurfaceSizingComp(taper_ratio=wing.taper_ratio),
+            promotes_inputs=[("area", "wing_area"), ("aspect_ratio", "wing_aspect_ratio")],
+            promotes_outputs=[
+                ("span", "wing_span"),
+                ("root_chord", "wing_root_chord"),
+                ("tip_chord", "wing_tip_chord"),
+                ("mean_aerodynamic_chord", "wing_mac"),
+            ],
+        )
+        self.add_subsystem(
+            "htail_sizing",
+            SurfaceSizingComp(taper_ratio=tail.taper_ratio),
+            promotes_inputs=[("area", "htail_area"), ("aspect_ratio", "htail_aspect_ratio")],
+            promotes_outputs=[
+                ("span", "htail_span"),
+                ("root_chord", "htail_root_chord"),
+                ("tip_chord", "htail_tip_chord"),
+                ("mean_aerodynamic_chord", "htail_mac"),
+            ],
+        )
         self.add_subsystem("tail_position", TailPositionComp(vehicle=vehicle), promotes=["*"])
-        for name, prefix, surface, panels in (("wing", "wing", wing, self.options["wing_panels"]),
-                                              ("horizontal_tail", "htail", tail,
-                                               self.options["tail_panels"])):
-            self.add_subsystem(f"{prefix}_mesh", PlanformMeshComp(
-                num_chord_panels=1, num_span_panels=panels, spacing="cosine"),
-                promotes_inputs=[(p, f"{prefix}_{p}") for p in (
-                    "span", "root_chord", "tip_chord", "sweep", "dihedral", "incidence",
-                    "root_leading_edge")],
-                promotes_outputs=[("mesh", f"{name}_mesh")])
+        for name, prefix, surface, panels in (
+            ("wing", "wing", wing, self.options["wing_panels"]),
+            ("horizontal_tail", "htail", tail, self.options["tail_panels"]),
+        ):
+            self.add_subsystem(
+                f"{prefix}_mesh",
+                PlanformMeshComp(num_chord_panels=1, num_span_panels=panels, spacing="cosine"),
+                promotes_inputs=[
+                    (p, f"{prefix}_{p}")
+                    for p in (
+                        "span",
+                        "root_chord",
+                        "tip_chord",
+                        "sweep",
+                        "dihedral",
+                        "incidence",
+                        "root_leading_edge",
+                    )
+                ],
+                promotes_outputs=[("mesh", f"{name}_mesh")],
+            )
             for p in ("sweep", "dihedral", "incidence"):
                 self.set_input_defaults(f"{prefix}_{p}", getattr(surface, p), units="rad")
-        self.set_input_defaults("wing_root_leading_edge", np.array(wing.root_leading_edge),
-                                units="m")
+        self.set_input_defaults(
+            "wing_root_leading_edge", np.array(wing.root_leading_edge), units="m"
+        )
         self.add_subsystem("rotor_layout", RotorLayoutComp(vehicle=vehicle), promotes=["*"])
 
         nodes = vehicle.wing_box.num_bays + 1
         # The wing box shares the VLM mesh's sweep, dihedral, incidence and root leading edge
         # (promoted inputs, defaults set above); the taper ratio is an option of the planform
         # sizing, so the box's own input keeps the vehicle's value (its default from ``wing``).
-        self.add_subsystem("wing_box", WingBoxGeometryComp(
-            num_nodes=nodes, section=wing_box_section(vehicle), wing=wing),
-            promotes_inputs=["wing_area", "wing_aspect_ratio", "wing_sweep", "wing_dihedral",
-                             "wing_incidence", "wing_root_leading_edge"],
-            promotes_outputs=[("nodes", "wing_box_nodes"), "box_width", "box_height",
-                              "top_skin_radius", "bottom_skin_radius"])
-        self.add_subsystem("box_section", BoxSectionComp(num_elements=nodes - 1),
-                           promotes=["*"])
-        self.add_subsystem("box_mass", BeamMassComp(num_nodes=nodes),
-                           promotes_inputs=[("nodes", "wing_box_nodes"), "area",
-                                            ("density", "material_density")],
-                           promotes_outputs=["element_mass", ("beam_mass", "half_wing_mass"),
-                                             ("beam_cg", "half_wing_cg")])
+        self.add_subsystem(
+            "wing_box",
+            WingBoxGeometryComp(num_nodes=nodes, section=wing_box_section(vehicle), wing=wing),
+            promotes_inputs=[
+                "wing_area",
+                "wing_aspect_ratio",
+                "wing_sweep",
+                "wing_dihedral",
+                "wing_incidence",
+                "wing_root_leading_edge",
+            ],
+            promotes_outputs=[
+                ("nodes", "wing_box_nodes"),
+                "box_width",
+                "box_height",
+                "top_skin_radius",
+                "bottom_skin_radius",
+            ],
+        )
+        self.add_subsystem("box_section", BoxSectionComp(num_elements=nodes - 1), promotes=["*"])
+        self.add_subsystem(
+            "box_mass",
+            BeamMassComp(num_nodes=nodes),
+            promotes_inputs=[("nodes", "wing_box_nodes"), "area", ("density", "material_density")],
+            promotes_outputs=[
+                "element_mass",
+                ("beam_mass", "half_wing_mass"),
+                ("beam_cg", "half_wing_cg"),
+            ],
+        )
         self.add_subsystem("wing_mirror", WingMirrorComp(), promotes=["*"])
 
         groups = motor_group_indices(vehicle)
         num_groups = len(vehicle.lift_rotor_pairs) + 1  # motor designs: one per lift pair, pusher
-        self.add_subsystem("motor_sizing", MotorSizingComp(
-            num_motors=num_groups, length_to_diameter=vehicle.motor.length_to_diameter,
-            parameters=motor_parameters(vehicle)),
+        self.add_subsystem(
+            "motor_sizing",
+            MotorSizingComp(
+                num_motors=num_groups,
+                length_to_diameter=vehicle.motor.length_to_diameter,
+                parameters=motor_parameters(vehicle),
+            ),
             promotes_inputs=[("length", "motor_length")],
-            promotes_outputs=[("mass", "motor_group_mass"),
-                              ("peak_torque", "motor_peak_torque")])
-        self.add_subsystem("weights", WeightsGroup(vehicle=vehicle, other_mass=float(other),
-                                                   other_cg=other_cg),
-                           promotes=["*"])
+            promotes_outputs=[("mass", "motor_group_mass"), ("peak_torque", "motor_peak_torque")],
+        )
+        self.add_subsystem(
+            "weights",
+            WeightsGroup(vehicle=vehicle, other_mass=float(other), other_cg=other_cg),
+            promotes=["*"],
+        )
         self.connect("motor_group_mass", "motor_mass", src_indices=groups)
         for name, value in motor_loadings(vehicle).items():
-            self.set_input_defaults(f"motor_sizing.{name}", np.full(num_groups, value),
-                                    units=MOTOR_LOADING_UNITS[name])
+            self.set_input_defaults(
+                f"motor_sizing.{name}", np.full(num_groups, value), units=MOTOR_LOADING_UNITS[name]
+            )
 
         self.set_input_defaults("material_density", vehicle.material.density, units="kg/m**3")
         dvs = vehicle.design_variables
         for name, units in VEHICLE_DESIGN_VARIABLES.items():
-            self.set_input_defaults(name, np.asarray(dvs[name].initial_array).reshape(
-                dvs[name].shape), units=units)
+            self.set_input_defaults(
+                name, np.asarray(dvs[name].initial_array).reshape(dvs[name].shape), units=units
+            )
 
 
 @functools.lru_cache(maxsize=8)
@@ -220,18 +301,22 @@ def calibrated_other_mass(vehicle):
         When the other items already weigh the target or more (W_other would be <= 0).
     """
     prob = om.Problem(reports=False, comm=serial_comm())
-    prob.model.add_subsystem("vehicle", VehicleGroup(vehicle=vehicle, other_mass=0.0,
-                                                     other_cg=(0.0, 0.0, 0.0)),
-                             promotes=["*"])
+    prob.model.add_subsystem(
+        "vehicle",
+        VehicleGroup(vehicle=vehicle, other_mass=0.0, other_cg=(0.0, 0.0, 0.0)),
+        promotes=["*"],
+    )
     prob.setup()
     prob.run_model()
     masses = vehicle.masses
     bare_mass = float(prob.get_val("gross_mass", units="kg")[0])
     other = masses.target_gross_mass - bare_mass
     if other <= 0.0:
-        raise ValueError(f"masses.target_gross_mass = {masses.target_gross_mass} kg; the other "
-                         f"items of the initial design weigh {bare_mass:.2f} kg, so W_other "
-                         f"would be {other:.2f} kg; allowed: a target above {bare_mass:.2f} kg.")
+        raise ValueError(
+            f"masses.target_gross_mass = {masses.target_gross_mass} kg; the other "
+            f"items of the initial design weigh {bare_mass:.2f} kg, so W_other "
+            f"would be {other:.2f} kg; allowed: a target above {bare_mass:.2f} kg."
+        )
     cg = np.array(masses.other_cg, dtype=float)
     if masses.other_cg_rule == "hover_balance":
         target_x = np.mean([r.hub_position[0] for r in vehicle.lift_rotors])

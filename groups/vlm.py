@@ -27,8 +27,10 @@ def lpc_vlm_surfaces(wing_span_panels=26, tail_span_panels=8, chord_panels=1):
     docs theory/aerodynamics 'Reference-vehicle defaults' (VLM meshes). Returns a tuple of
     :class:`VLMSurface` named ``wing`` and ``horizontal_tail`` (deflectable).
     """
-    return (VLMSurface("wing", chord_panels, wing_span_panels),
-            VLMSurface("horizontal_tail", chord_panels, tail_span_panels, deflectable=True))
+    return (
+        VLMSurface("wing", chord_panels, wing_span_panels),
+        VLMSurface("horizontal_tail", chord_panels, tail_span_panels, deflectable=True),
+    )
 
 
 class VLMGroup(om.Group):
@@ -94,10 +96,15 @@ class VLMGroup(om.Group):
     """
 
     def initialize(self):
-        self.options.declare("surfaces", types=(tuple, list), check_valid=check_surfaces_option,
-                             desc="tuple of VLMSurface, in lattice order")
-        self.options.declare("num_nodes", default=1, types=int, lower=1,
-                             desc="number of flight conditions")
+        self.options.declare(
+            "surfaces",
+            types=(tuple, list),
+            check_valid=check_surfaces_option,
+            desc="tuple of VLMSurface, in lattice order",
+        )
+        self.options.declare(
+            "num_nodes", default=1, types=int, lower=1, desc="number of flight conditions"
+        )
 
     def setup(self):
         surfaces = tuple(self.options["surfaces"])
@@ -106,12 +113,14 @@ class VLMGroup(om.Group):
         kw = {"surfaces": surfaces, "num_nodes": nn}
 
         self.add_subsystem("geometry", VLMGeometryComp(surfaces=surfaces), promotes=["*"])
-        self.add_subsystem("freestream", VLMFreestreamComp(num_nodes=nn, num_panels=npn),
-                           promotes=["*"])
+        self.add_subsystem(
+            "freestream", VLMFreestreamComp(num_nodes=nn, num_panels=npn), promotes=["*"]
+        )
         self.add_subsystem("normals", VLMNormalsComp(**kw), promotes=["*"])
         self.add_subsystem("aic", VLMAICComp(**kw), promotes=["*"])
-        self.add_subsystem("circulation", VLMCirculationComp(num_nodes=nn, num_panels=npn),
-                           promotes=["*"])
+        self.add_subsystem(
+            "circulation", VLMCirculationComp(num_nodes=nn, num_panels=npn), promotes=["*"]
+        )
         self.add_subsystem("induced_velocity", VLMInducedVelocityComp(**kw), promotes=["*"])
         self.add_subsystem("panel_forces", VLMPanelForcesComp(**kw), promotes=["*"])
         self.add_subsystem("profile_drag", VLMProfileDragComp(**kw), promotes=["*"])

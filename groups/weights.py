@@ -93,8 +93,9 @@ def wing_cg_estimate(vehicle=None):
     y_c = wing.span / 6.0 * (1.0 + 2.0 * lam) / (1.0 + lam)
     x_le, _, z_le = wing.root_leading_edge
     x_beam = vehicle.wing_box.beam_axis * wing.mean_aerodynamic_chord
-    return np.array([x_le - y_c * math.tan(wing.sweep) - x_beam, 0.0,
-                     z_le - y_c * math.tan(wing.dihedral)])
+    return np.array(
+        [x_le - y_c * math.tan(wing.sweep) - x_beam, 0.0, z_le - y_c * math.tan(wing.dihedral)]
+    )
 
 
 def placeholder_calibration_inputs(vehicle=None):
@@ -116,15 +117,27 @@ def placeholder_calibration_inputs(vehicle=None):
     """
     vehicle = _vehicle(vehicle)
     coeffs = m4_coefficients()["wing"]["mass"]
-    regressors = [vehicle.wing.area, vehicle.wing.aspect_ratio, vehicle.fuselage.length,
-                  vehicle.battery.mass,
-                  vehicle.condition(vehicle.mission.cruise_condition).speed, 1.0]
+    regressors = [
+        vehicle.wing.area,
+        vehicle.wing.aspect_ratio,
+        vehicle.fuselage.length,
+        vehicle.battery.mass,
+        vehicle.condition(vehicle.mission.cruise_condition).speed,
+        1.0,
+    ]
     wing_mass = float(np.dot(coeffs, regressors))
     motor = vehicle.motor
     length = np.asarray(vehicle.design_variables["motor_length"].initial, dtype=float)
     diameter = length / motor.length_to_diameter
-    group_mass = (0.5 * math.pi * motor.electric_loading * motor.magnetic_loading
-                  * diameter**2 * length / motor.torque_density)
+    group_mass = (
+        0.5
+        * math.pi
+        * motor.electric_loading
+        * motor.magnetic_loading
+        * diameter**2
+        * length
+        / motor.torque_density
+    )
     return {"wing_mass": wing_mass, "motor_mass": group_mass[motor_group_indices(vehicle)]}
 
 
@@ -223,43 +236,73 @@ class WeightsGroup(om.Group):
     """
 
     def initialize(self):
-        self.options.declare("vehicle", default=None, allow_none=True,
-                             desc="lpc_mdo.vehicle.Vehicle; None = reference vehicle")
-        self.options.declare("wing_model", default="input", types=str,
-                             check_valid=_check_wing_model,
-                             desc="'input' (beam mass as input) or 'regression' (M4 wing)")
-        self.options.declare("regression_mass_factor", default=1.0, types=(int, float),
-                             check_valid=_check_positive,
-                             desc="factor on the fuselage, boom and empennage regressions (> 0)")
-        self.options.declare("fuselage_cg_x_factor",
-                             default=m4_coefficients()["fuselage"]["cg_x_factor"],
-                             types=(int, float), check_valid=_check_positive,
-                             desc="k_x of the fuselage cg (> 0); 0.88 as coded")
-        self.options.declare("other_mass", default=None, types=(int, float), allow_none=True,
-                             check_valid=_check_nonnegative,
-                             desc="default of the other_mass input, kg (>= 0); None = vehicle")
-        self.options.declare("other_cg", default=None, types=(tuple, list, np.ndarray),
-                             allow_none=True,
-                             desc="default of the other_cg input, m; None = vehicle")
+        self.options.declare(
+            "vehicle",
+            default=None,
+            allow_none=True,
+            desc="lpc_mdo.vehicle.Vehicle; None = reference vehicle",
+        )
+        self.options.declare(
+            "wing_model",
+            default="input",
+            types=str,
+            check_valid=_check_wing_model,
+            desc="'input' (beam mass as input) or 'regression' (M4 wing)",
+        )
+        self.options.declare(
+            "regression_mass_factor",
+            default=1.0,
+            types=(int, float),
+            check_valid=_check_positive,
+            desc="factor on the fuselage, boom and empennage regressions (> 0)",
+        )
+        self.options.declare(
+            "fuselage_cg_x_factor",
+            default=m4_coefficients()["fuselage"]["cg_x_factor"],
+            types=(int, float),
+            check_valid=_check_positive,
+            desc="k_x of the fuselage cg (> 0); 0.88 as coded",
+        )
+        self.options.declare(
+            "other_mass",
+            default=None,
+            types=(int, float),
+            allow_none=True,
+            check_valid=_check_nonnegative,
+            desc="default of the other_mass input, kg (>= 0); None = vehicle",
+        )
+        self.options.declare(
+            "other_cg",
+            default=None,
+            types=(tuple, list, np.ndarray),
+            allow_none=True,
+            desc="default of the other_cg input, m; None = vehicle",
+        )
 
     def setup(self):
         vehicle = _vehicle(self.options["vehicle"])
         factor = self.options["regression_mass_factor"]
         wing_model = self.options["wing_model"]
 
-        self.add_subsystem("fuselage", FuselageRegressionComp(
-            mass_factor=factor, cg_x_factor=self.options["fuselage_cg_x_factor"]),
-            promotes=["*"])
+        self.add_subsystem(
+            "fuselage",
+            FuselageRegressionComp(
+                mass_factor=factor, cg_x_factor=self.options["fuselage_cg_x_factor"]
+            ),
+            promotes=["*"],
+        )
         self.add_subsystem("booms", BoomRegressionComp(mass_factor=factor), promotes=["*"])
-        self.add_subsystem("empennage", EmpennageRegressionComp(mass_factor=factor),
-                           promotes=["*"])
+        self.add_subsystem("empennage", EmpennageRegressionComp(mass_factor=factor), promotes=["*"])
         if wing_model == "regression":
             self.add_subsystem("wing", WingRegressionComp(), promotes=["*"])
-        self.add_subsystem("gross_weight", GrossWeightComp(num_motors=num_motors(vehicle)),
-                           promotes=["*"])
-        self.add_subsystem("mass_properties",
-                           MassPropertiesComp(items=list(vehicle_mass_items(vehicle))),
-                           promotes=["*"])
+        self.add_subsystem(
+            "gross_weight", GrossWeightComp(num_motors=num_motors(vehicle)), promotes=["*"]
+        )
+        self.add_subsystem(
+            "mass_properties",
+            MassPropertiesComp(items=list(vehicle_mass_items(vehicle))),
+            promotes=["*"],
+        )
 
         masses = vehicle.masses
         placeholder = placeholder_calibration_inputs(vehicle)
@@ -274,8 +317,10 @@ class WeightsGroup(om.Group):
             "cruise_speed": (vehicle.condition(vehicle.mission.cruise_condition).speed, "m/s"),
             "battery_cg": (vehicle.battery.cg, "m"),
             "motor_mass": (placeholder["motor_mass"], "kg"),
-            "motor_cg": ([r.hub_position for r in vehicle.lift_rotors]
-                         + [vehicle.pusher.hub_position], "m"),
+            "motor_cg": (
+                [r.hub_position for r in vehicle.lift_rotors] + [vehicle.pusher.hub_position],
+                "m",
+            ),
             "power_electronics_mass": (masses.power_electronics, "kg"),
             "power_electronics_cg": (masses.power_electronics_cg, "m"),
             "payload_mass": (masses.payload, "kg"),
@@ -283,16 +328,19 @@ class WeightsGroup(om.Group):
             "systems_mass": (masses.systems, "kg"),
             "systems_cg": (masses.systems_cg, "m"),
             "other_mass": (masses.other if other is None else other, "kg"),
-            "other_cg": (masses.other_cg if self.options["other_cg"] is None
-                         else self.options["other_cg"], "m"),
+            "other_cg": (
+                masses.other_cg if self.options["other_cg"] is None else self.options["other_cg"],
+                "m",
+            ),
         }
         if wing_model == "input":
             defaults["wing_mass"] = (placeholder["wing_mass"], "kg")
             defaults["wing_cg"] = (wing_cg_estimate(vehicle), "m")
             defaults["wing_inertia"] = (np.zeros((3, 3)), "kg*m**2")
         for name, (value, units) in defaults.items():
-            self.set_input_defaults(name, np.atleast_1d(np.asarray(value, dtype=float)),
-                                    units=units)
+            self.set_input_defaults(
+                name, np.atleast_1d(np.asarray(value, dtype=float)), units=units
+            )
 
 
 # ------------------------------------------------------------------------------------------------
@@ -330,4 +378,3 @@ def calibrate_other_mass(vehicle=None):
     from lpc_mdo.groups.vehicle import calibrated_other_mass
 
     return calibrated_other_mass(_vehicle(vehicle))[0]
-

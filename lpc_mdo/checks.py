@@ -81,8 +81,10 @@ def range_text(lower=None, upper=None, *, lower_open=False, upper_open=False) ->
         The range text.
     """
     if lower is not None and upper is not None:
-        return (f"in {'(' if lower_open else '['}{_fmt(lower)}, {_fmt(upper)}"
-                f"{')' if upper_open else ']'}")
+        return (
+            f"in {'(' if lower_open else '['}{_fmt(lower)}, {_fmt(upper)}"
+            f"{')' if upper_open else ']'}"
+        )
     if lower is not None:
         return f"{'>' if lower_open else '>='} {_fmt(lower)}"
     if upper is not None:
@@ -112,13 +114,25 @@ def _as_real_array(name, value, error, where):
     except Exception:  # noqa: BLE001 - any failure to form an array is the same user error
         arr = np.asarray(None, dtype=object)
     if arr.dtype.kind not in "iufc":
-        raise error(f"{_prefix(where)}'{name}' must be a number or an array of numbers, got "
-                    f"{_show(value)}")
+        raise error(
+            f"{_prefix(where)}'{name}' must be a number or an array of numbers, got {_show(value)}"
+        )
     return np.real(arr) if arr.dtype.kind == "c" else arr
 
 
-def check_range(name, value, *, lower=None, upper=None, lower_open=False, upper_open=False,
-                units=None, allowed=None, error=ValueError, where=None):
+def check_range(
+    name,
+    value,
+    *,
+    lower=None,
+    upper=None,
+    lower_open=False,
+    upper_open=False,
+    units=None,
+    allowed=None,
+    error=ValueError,
+    where=None,
+):
     """
     Check that a number, or every entry of an array, is finite and in a range.
 
@@ -158,8 +172,7 @@ def check_range(name, value, *, lower=None, upper=None, lower_open=False, upper_
     arr = _as_real_array(name, value, error, where)
     finite = np.isfinite(arr)
     bad = ~finite
-    bounds = [None if b is None else np.real(np.broadcast_to(b, arr.shape))
-              for b in (lower, upper)]
+    bounds = [None if b is None else np.real(np.broadcast_to(b, arr.shape)) for b in (lower, upper)]
     with np.errstate(invalid="ignore"):
         if lower is not None:
             bad |= (arr <= bounds[0]) if lower_open else (arr < bounds[0])
@@ -173,8 +186,7 @@ def check_range(name, value, *, lower=None, upper=None, lower_open=False, upper_
             need = "a finite number"
         else:
             low, high = (None if b is None else _plain(b[index]) for b in bounds)
-            text = allowed or range_text(low, high, lower_open=lower_open,
-                                         upper_open=upper_open)
+            text = allowed or range_text(low, high, lower_open=lower_open, upper_open=upper_open)
             need = f"{text}{units_suffix(units)}"
         raise error(f"{_prefix(where)}'{label}' = {entry!r} is out of range: must be {need}")
     if isinstance(value, numbers.Number) and not isinstance(value, np.generic):
@@ -205,8 +217,19 @@ def check_finite(name, value, *, error=ValueError, where=None):
     return check_range(name, value, error=error, where=where)
 
 
-def check_number(name, value, *, lower=None, upper=None, lower_open=False, upper_open=False,
-                 units=None, allowed=None, error=ValueError, where=None) -> float:
+def check_number(
+    name,
+    value,
+    *,
+    lower=None,
+    upper=None,
+    lower_open=False,
+    upper_open=False,
+    units=None,
+    allowed=None,
+    error=ValueError,
+    where=None,
+) -> float:
     """
     Check that a value is one real number (not a bool, not an array) in a range.
 
@@ -225,13 +248,24 @@ def check_number(name, value, *, lower=None, upper=None, lower_open=False, upper
     plain = _plain(value)
     if isinstance(plain, bool) or not isinstance(plain, (int, float)):
         raise error(f"{_prefix(where)}'{name}' must be a number, got {_show(value)}")
-    check_range(name, plain, lower=lower, upper=upper, lower_open=lower_open,
-                upper_open=upper_open, units=units, allowed=allowed, error=error, where=where)
+    check_range(
+        name,
+        plain,
+        lower=lower,
+        upper=upper,
+        lower_open=lower_open,
+        upper_open=upper_open,
+        units=units,
+        allowed=allowed,
+        error=error,
+        where=where,
+    )
     return float(plain)
 
 
-def check_integer(name, value, *, lower=None, upper=None, allowed=None, error=ValueError,
-                  where=None) -> int:
+def check_integer(
+    name, value, *, lower=None, upper=None, allowed=None, error=ValueError, where=None
+) -> int:
     """
     Check that a value is an integer (an ``int`` or an integral float, not a bool) in a range.
 
@@ -256,11 +290,14 @@ def check_integer(name, value, *, lower=None, upper=None, allowed=None, error=Va
         The value as an int.
     """
     plain = _plain(value)
-    if (isinstance(plain, bool) or not isinstance(plain, (int, float))
-            or not math.isfinite(plain) or not float(plain).is_integer()):
+    if (
+        isinstance(plain, bool)
+        or not isinstance(plain, (int, float))
+        or not math.isfinite(plain)
+        or not float(plain).is_integer()
+    ):
         raise error(f"{_prefix(where)}'{name}' must be an integer, got {_show(value)}")
-    check_range(name, plain, lower=lower, upper=upper, allowed=allowed, error=error,
-                where=where)
+    check_range(name, plain, lower=lower, upper=upper, allowed=allowed, error=error, where=where)
     return int(plain)
 
 
@@ -293,8 +330,7 @@ def check_choice(name, value, allowed, *, error=ValueError, where=None):
         ok = False
     if not ok:
         listed = ", ".join(repr(c) for c in allowed)
-        raise error(f"{_prefix(where)}'{name}' = {value!r} is not allowed: must be one of "
-                    f"{listed}")
+        raise error(f"{_prefix(where)}'{name}' = {value!r} is not allowed: must be one of {listed}")
     return value
 
 
@@ -322,8 +358,9 @@ def check_shape(name, value, shape, *, error=ValueError, where=None) -> np.ndarr
     """
     arr = np.asarray(value)
     shape = tuple(shape)
-    ok = arr.ndim == len(shape) and all(n is None or n == m for n, m in zip(shape, arr.shape,
-                                                                           strict=True))
+    ok = arr.ndim == len(shape) and all(
+        n is None or n == m for n, m in zip(shape, arr.shape, strict=True)
+    )
     if not ok:
         text = "(" + ", ".join("n" if n is None else str(n) for n in shape)
         text += ",)" if len(shape) == 1 else ")"
@@ -349,10 +386,27 @@ class RangeCheck:
         Prefix of the message (e.g. the component class name).
     """
 
-    def __init__(self, lower=None, upper=None, *, lower_open=False, upper_open=False,
-                 units=None, allowed=None, integer=False, where=None):
-        self.kwargs = dict(lower=lower, upper=upper, lower_open=lower_open,
-                           upper_open=upper_open, units=units, allowed=allowed, where=where)
+    def __init__(
+        self,
+        lower=None,
+        upper=None,
+        *,
+        lower_open=False,
+        upper_open=False,
+        units=None,
+        allowed=None,
+        integer=False,
+        where=None,
+    ):
+        self.kwargs = dict(
+            lower=lower,
+            upper=upper,
+            lower_open=lower_open,
+            upper_open=upper_open,
+            units=units,
+            allowed=allowed,
+            where=where,
+        )
         self.integer = integer
 
     def __call__(self, name, value):
@@ -360,7 +414,8 @@ class RangeCheck:
         if value is None:
             return
         if self.integer:
-            kw = {k: v for k, v in self.kwargs.items() if k in ("lower", "upper", "allowed",
-                                                                "where")}
+            kw = {
+                k: v for k, v in self.kwargs.items() if k in ("lower", "upper", "allowed", "where")
+            }
             check_integer(name, value, **kw)
         check_range(name, value, **self.kwargs)

@@ -52,9 +52,24 @@ def _index_text(shape, flat):
     return f"[{int(flat)}]"
 
 
-def safeguarded_newton(fun, lower, upper, *, f_lower=None, f_upper=None, x0=None, xtol_abs=0.0,
-                       xtol_rel=4.0 * _EPS, ftol=0.0, maxiter=100, indexed=False,
-                       variable="x", units="", where="", fail=None):
+def safeguarded_newton(
+    fun,
+    lower,
+    upper,
+    *,
+    f_lower=None,
+    f_upper=None,
+    x0=None,
+    xtol_abs=0.0,
+    xtol_rel=4.0 * _EPS,
+    ftol=0.0,
+    maxiter=100,
+    indexed=False,
+    variable="x",
+    units="",
+    where="",
+    fail=None,
+):
     """
     Roots of independent scalar residuals R_i(x_i) = 0 on brackets, all entries at once.
 
@@ -101,8 +116,9 @@ def safeguarded_newton(fun, lower, upper, *, f_lower=None, f_upper=None, x0=None
         iteration, or an entry does not converge in ``maxiter`` iterations.
     """
     ends = [np.asarray(lower, dtype=float), np.asarray(upper, dtype=float)]
-    lo, hi = np.broadcast_arrays(*ends, *([np.asarray(x0, dtype=float)] if x0 is not None
-                                          else []))[:2]
+    lo, hi = np.broadcast_arrays(*ends, *([np.asarray(x0, dtype=float)] if x0 is not None else []))[
+        :2
+    ]
     shape = lo.shape
     lo, hi = lo.ravel().copy(), hi.ravel().copy()
     n = lo.size
@@ -112,9 +128,10 @@ def safeguarded_newton(fun, lower, upper, *, f_lower=None, f_upper=None, x0=None
         if fail is not None:
             fail(idx, why)
         i = int(idx[0])
-        raise om.AnalysisError(f"{prefix}the {variable} solve failed ({why}) at index "
-                               f"{_index_text(shape, i)}"
-                               + (f" and {idx.size - 1} more" if idx.size > 1 else ""))
+        raise om.AnalysisError(
+            f"{prefix}the {variable} solve failed ({why}) at index "
+            f"{_index_text(shape, i)}" + (f" and {idx.size - 1} more" if idx.size > 1 else "")
+        )
 
     def evaluate(x, idx):
         if indexed:
@@ -125,8 +142,10 @@ def safeguarded_newton(fun, lower, upper, *, f_lower=None, f_upper=None, x0=None
             full[idx] = x
             f, df = fun(full.reshape(shape))
             if np.size(f) != n:
-                raise ValueError(f"{prefix}the {variable} residual has shape {np.shape(f)}; "
-                                 f"must have the bracket's shape {shape}")
+                raise ValueError(
+                    f"{prefix}the {variable} residual has shape {np.shape(f)}; "
+                    f"must have the bracket's shape {shape}"
+                )
             f = np.asarray(f).ravel()[idx]
             df = None if df is None else np.asarray(df).ravel()[idx]
         f = np.asarray(f, dtype=float).ravel()
@@ -134,12 +153,23 @@ def safeguarded_newton(fun, lower, upper, *, f_lower=None, f_upper=None, x0=None
 
     every = np.arange(n)
     x_all = 0.5 * (lo + hi)
-    f_lo = (evaluate(lo, every)[0] if f_lower is None
-            else np.broadcast_to(np.asarray(f_lower, dtype=float), shape).ravel().copy())
-    f_hi = (evaluate(hi, every)[0] if f_upper is None
-            else np.broadcast_to(np.asarray(f_upper, dtype=float), shape).ravel().copy())
-    bad = (~np.isfinite(lo) | ~np.isfinite(hi) | ~np.isfinite(f_lo) | ~np.isfinite(f_hi)
-           | (np.sign(f_lo) * np.sign(f_hi) > 0))
+    f_lo = (
+        evaluate(lo, every)[0]
+        if f_lower is None
+        else np.broadcast_to(np.asarray(f_lower, dtype=float), shape).ravel().copy()
+    )
+    f_hi = (
+        evaluate(hi, every)[0]
+        if f_upper is None
+        else np.broadcast_to(np.asarray(f_upper, dtype=float), shape).ravel().copy()
+    )
+    bad = (
+        ~np.isfinite(lo)
+        | ~np.isfinite(hi)
+        | ~np.isfinite(f_lo)
+        | ~np.isfinite(f_hi)
+        | (np.sign(f_lo) * np.sign(f_hi) > 0)
+    )
     if np.any(bad):
         idx = np.flatnonzero(bad)
         i = int(idx[0])
@@ -149,7 +179,8 @@ def safeguarded_newton(fun, lower, upper, *, f_lower=None, f_upper=None, x0=None
             f"{prefix}the {variable} residual does not change sign on its bracket "
             f"[{lo[i]:.6g}, {hi[i]:.6g}] {units} at index {_index_text(shape, i)} (residual "
             f"{f_lo[i]:.6g} and {f_hi[i]:.6g}); the inputs are outside the range where the "
-            f"{variable} solve has a solution.")
+            f"{variable} solve has a solution."
+        )
     # Geometric order lo < hi; f_lo keeps the residual sign of the lower end.
     swap = lo > hi
     lo, hi = np.where(swap, hi, lo), np.where(swap, lo, hi)
@@ -165,8 +196,11 @@ def safeguarded_newton(fun, lower, upper, *, f_lower=None, f_upper=None, x0=None
     else:
         denom = f_hi[act] - f_lo[act]
         safe = np.where(denom != 0.0, denom, 1.0)
-        x = np.where(denom != 0.0, lo[act] - f_lo[act] * (hi[act] - lo[act]) / safe,
-                     0.5 * (lo[act] + hi[act]))
+        x = np.where(
+            denom != 0.0,
+            lo[act] - f_lo[act] * (hi[act] - lo[act]) / safe,
+            0.5 * (lo[act] + hi[act]),
+        )
     lo, hi, f_lo = lo[act], hi[act], f_lo[act]
     x = np.where((x > lo) & (x < hi), x, 0.5 * (lo + hi))
     x_all[act] = x
@@ -176,8 +210,10 @@ def safeguarded_newton(fun, lower, upper, *, f_lower=None, f_upper=None, x0=None
             return x_all.reshape(shape)
         f, df = evaluate(x, act)
         if not np.all(np.isfinite(f)):
-            raise_fail(act[~np.isfinite(f)], f"residual not finite at {variable} = "
-                       f"{x[~np.isfinite(f)][0]:.6g} {units}".rstrip())
+            raise_fail(
+                act[~np.isfinite(f)],
+                f"residual not finite at {variable} = {x[~np.isfinite(f)][0]:.6g} {units}".rstrip(),
+            )
         low_side = np.sign(f) == np.sign(f_lo)
         lo = np.where(low_side, x, lo)
         f_lo = np.where(low_side, f, f_lo)
@@ -193,11 +229,18 @@ def safeguarded_newton(fun, lower, upper, *, f_lower=None, f_upper=None, x0=None
         small = np.abs(step) <= tol
         narrow = hi - lo <= tol
         done = (f == 0.0) | (np.abs(f) <= ftol) | small | narrow
-        root = np.where((f == 0.0) | (np.abs(f) <= ftol), x,
-                        np.where(small, np.clip(x_newton, lo, hi), 0.5 * (lo + hi)))
+        root = np.where(
+            (f == 0.0) | (np.abs(f) <= ftol),
+            x,
+            np.where(small, np.clip(x_newton, lo, hi), 0.5 * (lo + hi)),
+        )
         x_all[act[done]] = root[done]
-        newton = (np.isfinite(x_newton) & (x_newton > lo) & (x_newton < hi)
-                  & (np.abs(step) < 0.5 * np.abs(step_old)))
+        newton = (
+            np.isfinite(x_newton)
+            & (x_newton > lo)
+            & (x_newton < hi)
+            & (np.abs(step) < 0.5 * np.abs(step_old))
+        )
         x_new = np.where(newton, x_newton, 0.5 * (lo + hi))
         step_old = np.where(newton, step, 0.5 * (hi - lo))
         keep = ~done

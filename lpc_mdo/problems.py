@@ -22,22 +22,50 @@ from lpc_mdo.groups.lpc import LPCGroup, included_conditions, openmdao_units
 from lpc_mdo.vehicle import load_vehicle
 
 #: Constraint kinds a problem may declare.
-CONSTRAINT_KINDS = ("trim", "noise", "tip_mach", "static_margin", "buckling", "soc",
-                    "radius_intersection", "torque_margin", "rotor_speed")
+CONSTRAINT_KINDS = (
+    "trim",
+    "noise",
+    "tip_mach",
+    "static_margin",
+    "buckling",
+    "soc",
+    "radius_intersection",
+    "torque_margin",
+    "rotor_speed",
+)
 #: Finer kinds a subproblem may name instead of 'torque_margin' (which means both).
 TORQUE_MARGIN_KINDS = ("lift_torque_margin", "pusher_torque_margin")
 # Paper eq. 8-9: the set S of design variables the initial specification gives (beta = 1) -
 # every sizing variable; the operating variables (rotor speeds, pitch, elevator) are free - and
 # the penalty weight alpha.
-BASELINE_SET = ("wing_area", "wing_aspect_ratio", "htail_area", "htail_aspect_ratio",
-                "fuselage_length", "rotor_radius", "blade_chord_cp", "blade_twist_cp",
-                "battery_mass", "motor_length", "front_spar_thickness", "rear_spar_thickness",
-                "top_skin_thickness", "bottom_skin_thickness")
+BASELINE_SET = (
+    "wing_area",
+    "wing_aspect_ratio",
+    "htail_area",
+    "htail_aspect_ratio",
+    "fuselage_length",
+    "rotor_radius",
+    "blade_chord_cp",
+    "blade_twist_cp",
+    "battery_mass",
+    "motor_length",
+    "front_spar_thickness",
+    "rear_spar_thickness",
+    "top_skin_thickness",
+    "bottom_skin_thickness",
+)
 BASELINE_ALPHA = 100.0
 #: Keyword arguments of :func:`declare_problem` (the rest of a builder's options are the
 #: model's).
-PROBLEM_OPTIONS = ("static_margin", "lateral_trim", "constraint_kinds", "design_variables",
-                   "design_variable_refs", "design_variable_bounds", "objective")
+PROBLEM_OPTIONS = (
+    "static_margin",
+    "lateral_trim",
+    "constraint_kinds",
+    "design_variables",
+    "design_variable_refs",
+    "design_variable_bounds",
+    "objective",
+)
 
 
 class BaselineModel(LPCGroup):
@@ -52,27 +80,44 @@ class BaselineModel(LPCGroup):
 
     def initialize(self):
         super().initialize()
-        self.options.declare("baseline_alpha", default=BASELINE_ALPHA, types=(int, float),
-                             lower=0.0, desc="penalty weight alpha of eq. 8")
+        self.options.declare(
+            "baseline_alpha",
+            default=BASELINE_ALPHA,
+            types=(int, float),
+            lower=0.0,
+            desc="penalty weight alpha of eq. 8",
+        )
 
     def setup(self):
         super().setup()
         vehicle = self.vehicle_spec
         dvs = vehicle.design_variables
-        references = {name: (np.asarray(dvs[name].initial_array).reshape(dvs[name].shape),
-                             openmdao_units(dvs[name].units)) for name in BASELINE_SET}
-        self.add_subsystem("baseline", DesignDeviationComp(
-            references=references, alpha=self.options["baseline_alpha"],
-            objective_ref=vehicle.masses.target_gross_mass),
+        references = {
+            name: (
+                np.asarray(dvs[name].initial_array).reshape(dvs[name].shape),
+                openmdao_units(dvs[name].units),
+            )
+            for name in BASELINE_SET
+        }
+        self.add_subsystem(
+            "baseline",
+            DesignDeviationComp(
+                references=references,
+                alpha=self.options["baseline_alpha"],
+                objective_ref=vehicle.masses.target_gross_mass,
+            ),
             promotes_inputs=[*BASELINE_SET, ("objective", "gross_mass")],
-            promotes_outputs=["baseline_objective", ("deviation", "baseline_deviation")])
+            promotes_outputs=["baseline_objective", ("deviation", "baseline_deviation")],
+        )
 
 
 def _bounds(name, dv, overrides):
     """(lower, upper) of a design variable in its shape: the override, else the vehicle file's."""
     lower, upper = overrides.get(name, (dv.lower_array, dv.upper_array))
-    return (np.broadcast_to(np.asarray(lower, dtype=float), dv.shape),
-            np.broadcast_to(np.asarray(upper, dtype=float), dv.shape))
+    return (
+        np.broadcast_to(np.asarray(lower, dtype=float), dv.shape),
+        np.broadcast_to(np.asarray(upper, dtype=float), dv.shape),
+    )
 
 
 def trim_constraints(vehicle, condition, lateral_trim=True):
@@ -91,21 +136,33 @@ def trim_constraints(vehicle, condition, lateral_trim=True):
     list of (output, indices, targets, ref)
         One entry per acceleration output of the condition that has declared rows.
     """
-    rows = [r for r in condition_class(condition.kind).trim_rows(vehicle, condition)
-            if lateral_trim or not r.degenerate]
+    rows = [
+        r
+        for r in condition_class(condition.kind).trim_rows(vehicle, condition)
+        if lateral_trim or not r.degenerate
+    ]
     out = []
     for output in ("linear_acceleration", "angular_acceleration"):
         mine = sorted((r for r in rows if r.output == output), key=lambda r: r.index)
         if mine:
-            out.append((output, [r.index for r in mine], np.array([r.target for r in mine]),
-                        mine[0].ref))
+            out.append(
+                (output, [r.index for r in mine], np.array([r.target for r in mine]), mine[0].ref)
+            )
     return out
 
 
-def declare_problem(model, vehicle=None, *, static_margin=True, lateral_trim=True,
-                    constraint_kinds=CONSTRAINT_KINDS, design_variables=None,
-                    design_variable_refs=None, design_variable_bounds=None,
-                    objective=("gross_mass", None)):
+def declare_problem(
+    model,
+    vehicle=None,
+    *,
+    static_margin=True,
+    lateral_trim=True,
+    constraint_kinds=CONSTRAINT_KINDS,
+    design_variables=None,
+    design_variable_refs=None,
+    design_variable_bounds=None,
+    objective=("gross_mass", None),
+):
     """
     Declare the objective, design variables and constraints of a problem on ``model``.
 
@@ -157,13 +214,14 @@ def declare_problem(model, vehicle=None, *, static_margin=True, lateral_trim=Tru
     for label, names in (("design_variable_bounds", bounds), ("design_variable_refs", refs)):
         for name in names:
             if name not in dvs:
-                raise ValueError(f"{where}: option '{label}' names {name!r}; allowed: "
-                                 f"{list(dvs)}")
+                raise ValueError(f"{where}: option '{label}' names {name!r}; allowed: {list(dvs)}")
     wanted = set(constraint_kinds)
     unknown = sorted(wanted - set(CONSTRAINT_KINDS) - set(TORQUE_MARGIN_KINDS))
     if unknown:
-        raise ValueError(f"{where}: option 'constraint_kinds' has unknown kinds {unknown}; "
-                         f"allowed: {CONSTRAINT_KINDS + TORQUE_MARGIN_KINDS}")
+        raise ValueError(
+            f"{where}: option 'constraint_kinds' has unknown kinds {unknown}; "
+            f"allowed: {CONSTRAINT_KINDS + TORQUE_MARGIN_KINDS}"
+        )
     if "static_margin" in wanted and not static_margin:
         wanted.discard("static_margin")
 
@@ -177,13 +235,15 @@ def declare_problem(model, vehicle=None, *, static_margin=True, lateral_trim=Tru
         for entry in design_variables:
             name, indices = (entry, None) if isinstance(entry, str) else entry
             if name not in dvs or name in owned:
-                raise ValueError(f"{where}: design variable {name!r} is not a vehicle-level "
-                                 f"design variable of the vehicle file; allowed: "
-                                 f"{[n for n in dvs if n not in owned]} (a condition's own "
-                                 f"design variables come with the condition)")
+                raise ValueError(
+                    f"{where}: design variable {name!r} is not a vehicle-level "
+                    f"design variable of the vehicle file; allowed: "
+                    f"{[n for n in dvs if n not in owned]} (a condition's own "
+                    f"design variables come with the condition)"
+                )
             selection[name] = None if indices is None else list(indices)
     selection.update({name: None for name in dvs if name in condition_dvs})
-    for name in dvs:   # in the vehicle file's order
+    for name in dvs:  # in the vehicle file's order
         if name not in selection:
             continue
         indices, dv = selection[name], dvs[name]
@@ -192,15 +252,23 @@ def declare_problem(model, vehicle=None, *, static_margin=True, lateral_trim=Tru
         if indices is not None:
             lower, upper = lower.ravel()[indices], upper.ravel()[indices]
             ref = ref if np.ndim(ref) == 0 else np.asarray(ref).ravel()[indices]
-        model.add_design_var(name, lower=lower, upper=upper, ref=ref,
-                             units=openmdao_units(dv.units), indices=indices,
-                             flat_indices=indices is not None)
+        model.add_design_var(
+            name,
+            lower=lower,
+            upper=upper,
+            ref=ref,
+            units=openmdao_units(dv.units),
+            indices=indices,
+            flat_indices=indices is not None,
+        )
 
     name, ref = objective
     if name == "baseline":
         if not isinstance(model, BaselineModel):
-            raise ValueError(f"{where}: objective ('baseline', ...) needs the model to be a "
-                             f"lpc_mdo.problems.BaselineModel, got {where}")
+            raise ValueError(
+                f"{where}: objective ('baseline', ...) needs the model to be a "
+                f"lpc_mdo.problems.BaselineModel, got {where}"
+            )
         model.add_objective("baseline_objective", ref=1.0)
     else:
         model.add_objective(name, ref=vehicle.masses.target_gross_mass if ref is None else ref)
@@ -212,8 +280,13 @@ def declare_problem(model, vehicle=None, *, static_margin=True, lateral_trim=Tru
     for c in conditions:
         if "trim" in wanted:
             for output, indices, targets, scale in trim_constraints(vehicle, c, lateral_trim):
-                model.add_constraint(f"{c.name}.{output}", indices=indices, flat_indices=True,
-                                     equals=targets, ref=scale)
+                model.add_constraint(
+                    f"{c.name}.{output}",
+                    indices=indices,
+                    flat_indices=True,
+                    equals=targets,
+                    ref=scale,
+                )
         for con in condition_class(c.kind).constraints(vehicle, c, bounds_of):
             if con.kind in wanted:
                 model.add_constraint(f"{c.name}.{con.output}", **con.options)
@@ -228,8 +301,9 @@ def declare_problem(model, vehicle=None, *, static_margin=True, lateral_trim=Tru
         motor_sets.update(condition_class(c.kind).motor_sets(vehicle, c))
     for prefix in sorted(motor_sets):
         if "torque_margin" in wanted or f"{prefix}_torque_margin" in wanted:
-            model.add_constraint(f"{prefix}_motor_torque_margin",
-                                 lower=limits.min_torque_margin, ref=0.1)
+            model.add_constraint(
+                f"{prefix}_motor_torque_margin", lower=limits.min_torque_margin, ref=0.1
+            )
 
 
 def attach_recorder(prob, path):
@@ -240,7 +314,7 @@ def attach_recorder(prob, path):
     prob.driver.add_recorder(recorder)
     prob.add_recorder(recorder)
     prob.recording_options["includes"] = ["*"]
-    prob.recording_options["record_inputs"] = True   # fixed parameters too (sweep plots)
+    prob.recording_options["record_inputs"] = True  # fixed parameters too (sweep plots)
 
 
 def copy_design_variables(source, target, vehicle, names=None):
@@ -259,8 +333,15 @@ def copy_design_variables(source, target, vehicle, names=None):
             continue
 
 
-def build_analysis_problem(vehicle=None, recorder_path=None, name="analysis", comm=None,
-                           work_dir=None, design_problem=True, **options):
+def build_analysis_problem(
+    vehicle=None,
+    recorder_path=None,
+    name="analysis",
+    comm=None,
+    work_dir=None,
+    design_problem=True,
+    **options,
+):
     """
     The full lift-plus-cruise model of a vehicle at its initial design, ready to run.
 
@@ -313,8 +394,7 @@ def build_analysis_problem(vehicle=None, recorder_path=None, name="analysis", co
 # the h-tail aspect ratio drifting along a flat valley; subproblem 1 reaches 1e-6 .. 3e-5
 # infeasibility by iteration ~70 and then circles there (L-BFGS steps of 1e-3) until it
 # diverges to 0.5 (measured).
-IPOPT_SETTINGS = {"acceptable_tol": 1e-4, "acceptable_iter": 10,
-                  "acceptable_constr_viol_tol": 1e-4}
+IPOPT_SETTINGS = {"acceptable_tol": 1e-4, "acceptable_iter": 10, "acceptable_constr_viol_tol": 1e-4}
 
 # Paper Table 2: each subproblem's conditions (by kind), vehicle-level design variables and
 # constraint kinds. The design variables of the included conditions (rotor speeds, pitch,
@@ -322,12 +402,16 @@ IPOPT_SETTINGS = {"acceptable_tol": 1e-4, "acceptable_iter": 10,
 SUBPROBLEMS = {
     "subproblem_1": {
         "kinds": ["hover", "transition", "steady"],
-        "design_variables": ["battery_mass", ("motor_length", [4]),
-                             # Table 2 names the rotors as the sized subsystem without listing
-                             # their blade variables; without them the hover noise limit
-                             # (89 dBA at the initial design) has no lever but rpm.
-                             ("rotor_radius", [0, 1, 2, 3, 4]), "blade_chord_cp",
-                             "blade_twist_cp"],
+        "design_variables": [
+            "battery_mass",
+            ("motor_length", [4]),
+            # Table 2 names the rotors as the sized subsystem without listing
+            # their blade variables; without them the hover noise limit
+            # (89 dBA at the initial design) has no lever but rpm.
+            ("rotor_radius", [0, 1, 2, 3, 4]),
+            "blade_chord_cp",
+            "blade_twist_cp",
+        ],
         # Subproblem 1 sizes the pusher motor; the lift motors are subproblem 2's (Table 2), so
         # their margins, which the rotor speeds alone cannot restore, are left to it.
         "constraint_kinds": ["trim", "noise", "soc", "pusher_torque_margin", "rotor_speed"],
@@ -345,8 +429,12 @@ SUBPROBLEMS = {
     },
     "subproblem_3": {
         "kinds": ["structural"],
-        "design_variables": ["front_spar_thickness", "rear_spar_thickness",
-                             "top_skin_thickness", "bottom_skin_thickness"],
+        "design_variables": [
+            "front_spar_thickness",
+            "rear_spar_thickness",
+            "top_skin_thickness",
+            "bottom_skin_thickness",
+        ],
         "constraint_kinds": ["trim", "buckling"],
     },
     # Table 2 sizes the planform in cruise alone; climb and descent are added (with their trim
@@ -355,8 +443,13 @@ SUBPROBLEMS = {
     # (scaled trim residuals 0.5; measured 2026-11-22).
     "subproblem_4": {
         "kinds": ["steady"],
-        "design_variables": ["wing_area", "wing_aspect_ratio", "htail_area",
-                             "htail_aspect_ratio", "fuselage_length"],
+        "design_variables": [
+            "wing_area",
+            "wing_aspect_ratio",
+            "htail_area",
+            "htail_aspect_ratio",
+            "fuselage_length",
+        ],
         "constraint_kinds": ["trim", "static_margin"],
     },
 }
@@ -368,16 +461,21 @@ SUBPROBLEMS = {
 PRESIZING = {
     "rotor_presizing": {
         "kinds": ["hover"],
-        "design_variables": [("rotor_radius", [0, 1, 2, 3]),
-                             ("blade_chord_cp", list(range(16))),
-                             ("blade_twist_cp", list(range(16)))],
+        "design_variables": [
+            ("rotor_radius", [0, 1, 2, 3]),
+            ("blade_chord_cp", list(range(16))),
+            ("blade_twist_cp", list(range(16))),
+        ],
         "constraint_kinds": ["trim", "noise", "tip_mach"],
         # The electrical power of the (first) hover condition, W.
         "objective": ("electrical_power", 5.0e5),
         # A starting point for subproblem 1, not an answer: its L-BFGS iterates circle the
         # optimum at 1e-3 (scaled) for hundreds of iterations, so stop there.
-        "driver_settings": {"tol": 1e-3, "acceptable_tol": 1e-3,
-                            "acceptable_constr_viol_tol": 1e-3},
+        "driver_settings": {
+            "tol": 1e-3,
+            "acceptable_tol": 1e-3,
+            "acceptable_constr_viol_tol": 1e-3,
+        },
     },
 }
 
@@ -386,8 +484,10 @@ def conditions_of_kinds(vehicle, kinds):
     """Names of the vehicle's conditions of the given kinds, in vehicle-file order."""
     names = [c.name for c in vehicle.conditions if c.kind in kinds]
     if not names:
-        raise ValueError(f"the vehicle has no condition of kind {list(kinds)}; its conditions: "
-                         f"{[(c.name, c.kind) for c in vehicle.conditions]}")
+        raise ValueError(
+            f"the vehicle has no condition of kind {list(kinds)}; its conditions: "
+            f"{[(c.name, c.kind) for c in vehicle.conditions]}"
+        )
     return names
 
 
@@ -429,9 +529,18 @@ def trust_region_bounds(vehicle, fractions):
     return bounds
 
 
-def build_problem(name, vehicle=None, static_margin=True, optimizer="IPOPT",
-                  recorder_path=None, design_variable_refs=None, driver_settings=None,
-                  lateral_trim=False, comm=None, **model_options):
+def build_problem(
+    name,
+    vehicle=None,
+    static_margin=True,
+    optimizer="IPOPT",
+    recorder_path=None,
+    design_variable_refs=None,
+    driver_settings=None,
+    lateral_trim=False,
+    comm=None,
+    **model_options,
+):
     """
     One of the paper's warm-start subproblems (Table 2) or the full problem (Table 6).
 
@@ -489,21 +598,31 @@ def build_problem(name, vehicle=None, static_margin=True, optimizer="IPOPT",
         objective = (f"{conditions[0]}.{output}", ref)
     problem_options.setdefault("objective", objective)
     if "trust_region" in spec:
-        problem_options.setdefault("design_variable_bounds",
-                                   trust_region_bounds(vehicle, spec["trust_region"]))
+        problem_options.setdefault(
+            "design_variable_bounds", trust_region_bounds(vehicle, spec["trust_region"])
+        )
     model_cls = BaselineModel if name == "baseline" else LPCGroup
     if name != "baseline":
         model_options.pop("baseline_alpha", None)
     model = model_cls(vehicle=vehicle, conditions=conditions, **model_options)
-    declare_problem(model, vehicle, static_margin=static_margin,
-                    design_variables=spec.get("design_variables"),
-                    constraint_kinds=spec.get("constraint_kinds", CONSTRAINT_KINDS),
-                    design_variable_refs=design_variable_refs, lateral_trim=lateral_trim,
-                    **problem_options)
+    declare_problem(
+        model,
+        vehicle,
+        static_margin=static_margin,
+        design_variables=spec.get("design_variables"),
+        constraint_kinds=spec.get("constraint_kinds", CONSTRAINT_KINDS),
+        design_variable_refs=design_variable_refs,
+        lateral_trim=lateral_trim,
+        **problem_options,
+    )
     prob = om.Problem(model=model, name=name, reports=False, comm=comm)
-    settings = ({**IPOPT_SETTINGS, **spec.get("driver_settings", {})}
-                if optimizer.upper() == "IPOPT" else
-                dict(SLSQP_SETTINGS) if optimizer.upper() == "SLSQP" else {})
+    settings = (
+        {**IPOPT_SETTINGS, **spec.get("driver_settings", {})}
+        if optimizer.upper() == "IPOPT"
+        else dict(SLSQP_SETTINGS)
+        if optimizer.upper() == "SLSQP"
+        else {}
+    )
     settings.update(driver_settings or {})
     prob.driver = make_driver(optimizer, **settings)
     if recorder_path is not None:

@@ -51,16 +51,23 @@ class ProgressLine(CaseRecorder):
         if (self._iterations - 1) % self.every:
             return
         driver = recording_requester
-        if not metadata["success"]:   # an evaluation that raised AnalysisError
-            print(f"{self.label:>16}  iter {self._iterations:5d}  evaluation failed: "
-                  f"{metadata['msg']}", file=self.stream or sys.stdout, flush=True)
+        if not metadata["success"]:  # an evaluation that raised AnalysisError
+            print(
+                f"{self.label:>16}  iter {self._iterations:5d}  evaluation failed: "
+                f"{metadata['msg']}",
+                file=self.stream or sys.stdout,
+                flush=True,
+            )
             return
         objective = driver.get_objective_values(driver_scaling=False)
         obj = float(np.ravel(next(iter(objective.values())))[0]) if objective else float("nan")
         elapsed = time.perf_counter() - self._start
-        print(f"{self.label:>16}  iter {self._iterations:5d}  objective {obj:12.6g}  "
-              f"max violation {max_violation(driver):9.3e}  {elapsed:8.1f} s",
-              file=self.stream or sys.stdout, flush=True)
+        print(
+            f"{self.label:>16}  iter {self._iterations:5d}  objective {obj:12.6g}  "
+            f"max violation {max_violation(driver):9.3e}  {elapsed:8.1f} s",
+            file=self.stream or sys.stdout,
+            flush=True,
+        )
 
     # A driver recorder receives only driver iterations; the other hooks have nothing to do.
     def record_iteration_system(self, recording_requester, data, metadata):
@@ -91,7 +98,7 @@ def max_violation(driver):
     from lpc_mdo.trim import driver_scaling
 
     values = driver.get_constraint_values(driver_scaling=False)
-    meta = owning_problem(driver).model.get_constraints()   # bounds as declared (unscaled)
+    meta = owning_problem(driver).model.get_constraints()  # bounds as declared (unscaled)
     worst = 0.0
     for name, value in values.items():
         m = meta.get(name)

@@ -11,13 +11,24 @@ from lpc_mdo.mpi import serial_comm
 from lpc_mdo.problems import attach_recorder, conditions_of_kinds, trim_constraints
 from lpc_mdo.vehicle import reference_vehicle
 
-THICKNESSES = ("front_spar_thickness", "rear_spar_thickness", "top_skin_thickness",
-               "bottom_skin_thickness")
+THICKNESSES = (
+    "front_spar_thickness",
+    "rear_spar_thickness",
+    "top_skin_thickness",
+    "bottom_skin_thickness",
+)
 
 
-def structural_sizing_problem(vehicle=None, aggregated=False, ks_rho=50.0, optimizer="IPOPT",
-                              max_displacement=None, recorder_path=None, coupling="one_way",
-                              **model_options):
+def structural_sizing_problem(
+    vehicle=None,
+    aggregated=False,
+    ks_rho=50.0,
+    optimizer="IPOPT",
+    max_displacement=None,
+    recorder_path=None,
+    coupling="one_way",
+    **model_options,
+):
     """
     The paper's wing structural optimization (Table 4) as an OpenMDAO problem.
 
@@ -56,10 +67,13 @@ def structural_sizing_problem(vehicle=None, aggregated=False, ks_rho=50.0, optim
     vehicle = vehicle or reference_vehicle()
     prob = om.Problem(reports=False, comm=serial_comm())
     structural = conditions_of_kinds(vehicle, ["structural"])
-    prob.model = model = LPCGroup(vehicle=vehicle, conditions=structural,
-                                  structural_ks_rho=ks_rho if aggregated else None,
-                                  structural_coupling=coupling,
-                                  **model_options)
+    prob.model = model = LPCGroup(
+        vehicle=vehicle,
+        conditions=structural,
+        structural_ks_rho=ks_rho if aggregated else None,
+        structural_coupling=coupling,
+        **model_options,
+    )
     prob.driver = make_driver(optimizer)
     prob.driver.recording_options["includes"] = ["wing_mass"]
     if recorder_path is not None:
@@ -70,8 +84,9 @@ def structural_sizing_problem(vehicle=None, aggregated=False, ks_rho=50.0, optim
 
     for name in THICKNESSES:
         dv = vehicle.design_variables[name]
-        model.add_design_var(name, lower=material.min_gauge, upper=np.asarray(dv.upper_array),
-                             ref=1e-3, units="m")
+        model.add_design_var(
+            name, lower=material.min_gauge, upper=np.asarray(dv.upper_array), ref=1e-3, units="m"
+        )
     model.add_objective("wing_mass", ref=100.0, units="kg")
     bays = list(range(vehicle.wing_box.num_bays - 1))
     layout = condition_layout(vehicle)
@@ -79,24 +94,40 @@ def structural_sizing_problem(vehicle=None, aggregated=False, ks_rho=50.0, optim
         condition = vehicle.condition(name)
         for entry in layout.entries[name].values():
             dv = vehicle.design_variables[entry.design_variable]
-            model.add_design_var(entry.design_variable, lower=dv.lower_array,
-                                 upper=dv.upper_array, ref=dv.ref,
-                                 units=openmdao_units(dv.units))
+            model.add_design_var(
+                entry.design_variable,
+                lower=dv.lower_array,
+                upper=dv.upper_array,
+                ref=dv.ref,
+                units=openmdao_units(dv.units),
+            )
         for output, indices, targets, ref in trim_constraints(vehicle, condition):
-            model.add_constraint(f"{name}.{output}", indices=indices, flat_indices=True,
-                                 equals=targets, ref=ref)
+            model.add_constraint(
+                f"{name}.{output}", indices=indices, flat_indices=True, equals=targets, ref=ref
+            )
         skin = StructuralCondition.compressed_skin(condition)
         if aggregated:
-            model.add_constraint(f"{name}.{skin}_skin_buckling_ratio_ks",
-                                 upper=limits.max_buckling_ratio)
+            model.add_constraint(
+                f"{name}.{skin}_skin_buckling_ratio_ks", upper=limits.max_buckling_ratio
+            )
             model.add_constraint(f"{name}.stress_ratio_ks", upper=1.0)
             model.add_constraint(f"{name}.displacement_ks", upper=max_w, ref=0.1, units="m")
         else:
-            model.add_constraint(f"{name}.{skin}_skin_buckling_ratio", indices=bays,
-                                 flat_indices=True, upper=limits.max_buckling_ratio)
+            model.add_constraint(
+                f"{name}.{skin}_skin_buckling_ratio",
+                indices=bays,
+                flat_indices=True,
+                upper=limits.max_buckling_ratio,
+            )
             model.add_constraint(f"{name}.stress_ratio", upper=1.0)
             # Every node but the clamped root (whose displacement is identically zero).
-            model.add_constraint(f"{name}.displacements", indices=om.slicer[1:, 2],
-                                 lower=-max_w, upper=max_w, ref=0.1, units="m")
+            model.add_constraint(
+                f"{name}.displacements",
+                indices=om.slicer[1:, 2],
+                lower=-max_w,
+                upper=max_w,
+                ref=0.1,
+                units="m",
+            )
     prob.setup(mode="rev")
     return prob

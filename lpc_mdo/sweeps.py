@@ -92,10 +92,20 @@ def run_chain(task):
     """Run one chain of sweep points (a picklable task for a worker process or rank)."""
     from lpc_mdo.warm_start import solve_stage
 
-    (vehicle_file, parameter, chain, static_margin, out_dir, start_case, driver_settings,
-     optimizer, problem, use_mpi) = task
+    (
+        vehicle_file,
+        parameter,
+        chain,
+        static_margin,
+        out_dir,
+        start_case,
+        driver_settings,
+        optimizer,
+        problem,
+        use_mpi,
+    ) = task
     comm = None
-    if use_mpi:   # one problem per rank, not one problem spread over the ranks
+    if use_mpi:  # one problem per rank, not one problem spread over the ranks
         from mpi4py import MPI
 
         comm = MPI.COMM_SELF
@@ -110,32 +120,57 @@ def run_chain(task):
         stage, used, retried = None, previous, False
         for k, (start, settings) in enumerate(attempts):
             try:
-                stage = solve_stage(problem, case_file, vehicle=vehicle, start_case=start,
-                                    static_margin=static_margin, optimizer=optimizer,
-                                    driver_settings=settings, rescale=True, comm=comm,
-                                    log=lambda msg, label=label: print(f"{label}: {msg}",
-                                                                       flush=True))
-            except Exception as err:   # a failed point is reported, never dropped
+                stage = solve_stage(
+                    problem,
+                    case_file,
+                    vehicle=vehicle,
+                    start_case=start,
+                    static_margin=static_margin,
+                    optimizer=optimizer,
+                    driver_settings=settings,
+                    rescale=True,
+                    comm=comm,
+                    log=lambda msg, label=label: print(f"{label}: {msg}", flush=True),
+                )
+            except Exception as err:  # a failed point is reported, never dropped
                 print(f"{label}: attempt {k + 1} failed: {err}", flush=True)
                 stage = None
             used, retried = start, k > 0
             if stage is not None and stage.success:
                 break
-        results.append(SweepPoint(
-            parameter=parameter, value=value, static_margin=static_margin,
-            success=bool(stage and stage.success), retried=retried,
-            gross_mass=stage.gross_mass if stage else float("nan"),
-            iterations=stage.iterations if stage else 0,
-            seconds=stage.seconds if stage else 0.0, case_file=case_file,
-            start_case=str(used), exit_status=stage.exit_status if stage else "exception"))
+        results.append(
+            SweepPoint(
+                parameter=parameter,
+                value=value,
+                static_margin=static_margin,
+                success=bool(stage and stage.success),
+                retried=retried,
+                gross_mass=stage.gross_mass if stage else float("nan"),
+                iterations=stage.iterations if stage else 0,
+                seconds=stage.seconds if stage else 0.0,
+                case_file=case_file,
+                start_case=str(used),
+                exit_status=stage.exit_status if stage else "exception",
+            )
+        )
         if stage is not None and stage.success:
             previous = case_file
     return results
 
 
-def run_sweep(out_dir, start_case, parameters=("energy_density", "final_soc"), values=None,
-              static_margins=(True, False), vehicle=None, processes=1, mpi=False,
-              driver_settings=None, optimizer=None, problem="full"):
+def run_sweep(
+    out_dir,
+    start_case,
+    parameters=("energy_density", "final_soc"),
+    values=None,
+    static_margins=(True, False),
+    vehicle=None,
+    processes=1,
+    mpi=False,
+    driver_settings=None,
+    optimizer=None,
+    problem="full",
+):
     """
     Run sweeps of the full problem (module docstring) and write ``sweep_summary.csv``.
 
@@ -190,11 +225,23 @@ def run_sweep(out_dir, start_case, parameters=("energy_density", "final_soc"), v
     for parameter in parameters:
         chosen = values.get(parameter) or SWEEP_PARAMETERS[parameter][2]
         for value in chosen:
-            sweep_vehicle(base, parameter, value)   # validate before any work
+            sweep_vehicle(base, parameter, value)  # validate before any work
         for sm in static_margins:
             for chain in sweep_chains(chosen, reference_value(base, parameter), workers):
-                tasks.append((vehicle, parameter, chain, bool(sm), out_dir, start_case,
-                              settings, optimizer, problem, comm is not None))
+                tasks.append(
+                    (
+                        vehicle,
+                        parameter,
+                        chain,
+                        bool(sm),
+                        out_dir,
+                        start_case,
+                        settings,
+                        optimizer,
+                        problem,
+                        comm is not None,
+                    )
+                )
 
     if comm is not None:
         mine = [run_chain(t) for i, t in enumerate(tasks) if i % comm.size == comm.rank]
@@ -222,14 +269,27 @@ def plot_sweeps(points, out_dir):
 
     paths = []
     for parameter, (description, units, _) in SWEEP_PARAMETERS.items():
-        runs = [(p.case_file, p.value,
-                 "with static margin" if p.static_margin else "without static margin")
-                for p in points if p.parameter == parameter and p.success]
+        runs = [
+            (
+                p.case_file,
+                p.value,
+                "with static margin" if p.static_margin else "without static margin",
+            )
+            for p in points
+            if p.parameter == parameter and p.success
+        ]
         if runs:
             unit = "" if units == "-" else f" ({units})"
-            paths.append(plot_sweep(runs, os.path.join(out_dir, f"sweep_{parameter}.png"),
-                                    y="gross_mass", y_units="kg",
-                                    xlabel=f"{description}{unit}", ylabel="gross mass (kg)"))
+            paths.append(
+                plot_sweep(
+                    runs,
+                    os.path.join(out_dir, f"sweep_{parameter}.png"),
+                    y="gross_mass",
+                    y_units="kg",
+                    xlabel=f"{description}{unit}",
+                    ylabel="gross mass (kg)",
+                )
+            )
     return paths
 
 

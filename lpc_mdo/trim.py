@@ -37,8 +37,9 @@ def driver_scaling(meta):
     adder) * scaler). The metadata of ``get_design_vars``/``get_constraints`` keep ref/ref0 as
     declared and leave scaler/adder None when they were declared through refs.
     """
-    adder, scaler = determine_adder_scaler(meta.get("ref0"), meta.get("ref"), meta.get("adder"),
-                                           meta.get("scaler"))
+    adder, scaler = determine_adder_scaler(
+        meta.get("ref0"), meta.get("ref"), meta.get("adder"), meta.get("scaler")
+    )
     return (1.0 if scaler is None else scaler), (0.0 if adder is None else adder)
 
 
@@ -71,16 +72,20 @@ def _trim_variables(prob, vehicle, conditions):
     for cond in conditions:
         for dv_name, flat in condition_layout(vehicle).trim_variables(cond):
             if dv_name not in dvs:
-                raise ValueError(f"trim: condition '{cond}' needs design variable '{dv_name}', "
-                                 "which the problem does not declare.")
+                raise ValueError(
+                    f"trim: condition '{cond}' needs design variable '{dv_name}', "
+                    "which the problem does not declare."
+                )
             indices = dvs[dv_name]["indices"]
-            declared = (np.arange(dvs[dv_name]["size"]) if indices is None
-                        else indices.as_array())
+            declared = np.arange(dvs[dv_name]["size"]) if indices is None else indices.as_array()
             pos = np.searchsorted(declared, flat)
-            if np.any(pos >= declared.size) or np.any(declared[np.minimum(
-                    pos, declared.size - 1)] != flat):
-                raise ValueError(f"trim: design variable '{dv_name}' of condition '{cond}' is "
-                                 f"declared without entries {flat.tolist()}.")
+            if np.any(pos >= declared.size) or np.any(
+                declared[np.minimum(pos, declared.size - 1)] != flat
+            ):
+                raise ValueError(
+                    f"trim: design variable '{dv_name}' of condition '{cond}' is "
+                    f"declared without entries {flat.tolist()}."
+                )
             entries.append((dv_name, pos))
     merged = {}
     for dv_name, pos in entries:
@@ -148,25 +153,33 @@ def trim(prob, conditions=None, tol=1e-10, max_iter=30, separate=True):
         target = prob
         if separate:
             options = {k: prob.model.options[k] for k in _INHERITED_OPTIONS}
-            target = build_analysis_problem(vehicle, name=f"trim_{cond}", conditions=[cond],
-                                            lateral_trim=False, constraint_kinds=["trim"],
-                                            static_margin=False, comm=prob.comm,
-                                            work_dir=_scratch_dir(), **options)
+            target = build_analysis_problem(
+                vehicle,
+                name=f"trim_{cond}",
+                conditions=[cond],
+                lateral_trim=False,
+                constraint_kinds=["trim"],
+                static_margin=False,
+                comm=prob.comm,
+                work_dir=_scratch_dir(),
+                **options,
+            )
             copy_design_variables(prob, target, vehicle)
             target.run_model()
         cons = _trim_constraints(target, [cond])
         if not cons:
             raise ValueError(f"trim: no trim constraints declared for conditions ['{cond}'].")
         variables = _trim_variables(target, vehicle, [cond])
-        sol, scaled = _solve_block(target, target.model.get_design_vars(), cons, variables,
-                                   tol, max_iter)
+        sol, scaled = _solve_block(
+            target, target.model.get_design_vars(), cons, variables, tol, max_iter
+        )
         if separate:
             names = [n for n, _ in condition_layout(vehicle).trim_variables(cond)]
             copy_design_variables(target, prob, vehicle, names=names)
         iterations += int(sol.njev or 0)
         start = 0
-        for name, meta in cons.items():   # scaled residual = (value - target) * scaler
-            part = scaled[start:start + meta["size"]]
+        for name, meta in cons.items():  # scaled residual = (value - target) * scaler
+            part = scaled[start : start + meta["size"]]
             start += meta["size"]
             residuals[name] = part / driver_scaling(meta)[0]
         block_max = float(np.max(np.abs(scaled)))
@@ -175,9 +188,13 @@ def trim(prob, conditions=None, tol=1e-10, max_iter=30, separate=True):
             messages.append(f"{cond}: max scaled residual {block_max:.3g} ({sol.message})")
     if separate:
         prob.run_model()
-    return TrimResult(success=worst < 1e-6, iterations=iterations, max_residual=worst,
-                      residuals=residuals,
-                      message="; ".join(messages) or "all conditions trimmed")
+    return TrimResult(
+        success=worst < 1e-6,
+        iterations=iterations,
+        max_residual=worst,
+        residuals=residuals,
+        message="; ".join(messages) or "all conditions trimmed",
+    )
 
 
 def _solve_block(prob, dv_meta, cons, variables, tol, max_iter):
@@ -196,17 +213,30 @@ def _solve_block(prob, dv_meta, cons, variables, tol, max_iter):
         value = np.asarray(prob.get_val(name, units=units), dtype=float).ravel()
         x0.append((value[model_entries(name, pos)] + adder) * scaler)
     # get_design_vars keeps the bounds as declared (unscaled): scale them like the values.
-    lower = np.concatenate([(np.broadcast_to(dv_meta[n]["lower"], (dv_meta[n]["size"],))[p]
-                             + scaling(n)[1]) * scaling(n)[0] for n, p in variables.items()])
-    upper = np.concatenate([(np.broadcast_to(dv_meta[n]["upper"], (dv_meta[n]["size"],))[p]
-                             + scaling(n)[1]) * scaling(n)[0] for n, p in variables.items()])
+    lower = np.concatenate(
+        [
+            (np.broadcast_to(dv_meta[n]["lower"], (dv_meta[n]["size"],))[p] + scaling(n)[1])
+            * scaling(n)[0]
+            for n, p in variables.items()
+        ]
+    )
+    upper = np.concatenate(
+        [
+            (np.broadcast_to(dv_meta[n]["upper"], (dv_meta[n]["size"],))[p] + scaling(n)[1])
+            * scaling(n)[0]
+            for n, p in variables.items()
+        ]
+    )
     x0 = np.clip(np.concatenate(x0), lower, upper)
     cons_scaling = {n: driver_scaling(m) for n, m in cons.items()}
-    targets = {n: (np.broadcast_to(m["equals"], (m["size"],)) + cons_scaling[n][1])
-               * cons_scaling[n][0] for n, m in cons.items()}
+    targets = {
+        n: (np.broadcast_to(m["equals"], (m["size"],)) + cons_scaling[n][1]) * cons_scaling[n][0]
+        for n, m in cons.items()
+    }
     sources = {n: m["source"] for n, m in cons.items()}
-    con_index = {n: (None if m["indices"] is None else m["indices"].as_array())
-                 for n, m in cons.items()}
+    con_index = {
+        n: (None if m["indices"] is None else m["indices"].as_array()) for n, m in cons.items()
+    }
     state = {"x": None}
 
     def set_x(x):
@@ -216,7 +246,9 @@ def _solve_block(prob, dv_meta, cons, variables, tol, max_iter):
         for name, pos in variables.items():
             scaler, adder, units = scaling(name)
             full = np.asarray(prob.get_val(name, units=units), dtype=float).copy()
-            full.reshape(-1)[model_entries(name, pos)] = x[start:start + pos.size] / scaler - adder
+            full.reshape(-1)[model_entries(name, pos)] = (
+                x[start : start + pos.size] / scaler - adder
+            )
             start += pos.size
             prob.set_val(name, full, units=units)
         prob.run_model()
@@ -236,8 +268,9 @@ def _solve_block(prob, dv_meta, cons, variables, tol, max_iter):
         # By response name (not source), so that OpenMDAO applies the declared scaling and
         # units of responses and design variables: the space of x and of residual().
         set_x(x)
-        totals = prob.compute_totals(of=list(cons), wrt=list(variables),
-                                     driver_scaling=True, return_format="dict")
+        totals = prob.compute_totals(
+            of=list(cons), wrt=list(variables), driver_scaling=True, return_format="dict"
+        )
         rows = []
         for name, meta in cons.items():
             blocks = []
@@ -250,8 +283,17 @@ def _solve_block(prob, dv_meta, cons, variables, tol, max_iter):
         return np.vstack(rows)
 
     try:
-        sol = least_squares(residual, x0, jac=jacobian, bounds=(lower, upper), method="dogbox",
-                            ftol=tol, xtol=tol, gtol=tol, max_nfev=max_iter)
+        sol = least_squares(
+            residual,
+            x0,
+            jac=jacobian,
+            bounds=(lower, upper),
+            method="dogbox",
+            ftol=tol,
+            xtol=tol,
+            gtol=tol,
+            max_nfev=max_iter,
+        )
     except om.AnalysisError as err:
         raise om.AnalysisError(f"trim: the model failed during the trim solve: {err}") from err
     return sol, residual(sol.x)

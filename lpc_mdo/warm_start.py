@@ -29,8 +29,12 @@ FULL_PROBLEMS = ("full", "baseline")
 # scaling (paper Sec. II.E), which the full problem then refines, so 1e-3 (scaled) is enough.
 # Subproblem 1 otherwise spends half its time (~100 of ~200 iterations) circling within 1e-3
 # of its optimum (measured 2026-11-22).
-WARM_START_STAGE_SETTINGS = {"tol": 1e-4, "acceptable_tol": 1e-3, "acceptable_iter": 5,
-                             "acceptable_constr_viol_tol": 1e-3}
+WARM_START_STAGE_SETTINGS = {
+    "tol": 1e-4,
+    "acceptable_tol": 1e-3,
+    "acceptable_iter": 5,
+    "acceptable_constr_viol_tol": 1e-3,
+}
 
 # Penalty weights of the baseline continuation (paper eq. 8, alpha = 100 in the end). Solved
 # directly at alpha = 100, SLSQP lost feasibility (started from subproblem 4: 93 dBA; from the
@@ -39,7 +43,6 @@ WARM_START_STAGE_SETTINGS = {"tol": 1e-4, "acceptable_tol": 1e-3, "acceptable_it
 # optimum (the alpha -> 0 baseline) by decades kept every step feasible: 1 -> 10 -> 100 took
 # 103, 198 and 7 SLSQP iterations (167, 329, 10 s; measured 2026-11-22).
 BASELINE_CONTINUATION = (1.0, 10.0, 100.0)
-
 
 
 @dataclass
@@ -91,9 +94,20 @@ def load_design_variables(prob, case, vehicle):
     copy_design_variables(case, prob, vehicle)
 
 
-def run_sequence(out_dir, names=DEFAULT_SEQUENCE, vehicle=None, static_margin=True,
-                 optimizer="IPOPT", full_optimizer=None, driver_settings=None, start_case=None,
-                 rescale_full=True, trim_first=True, log=print, progress=False):
+def run_sequence(
+    out_dir,
+    names=DEFAULT_SEQUENCE,
+    vehicle=None,
+    static_margin=True,
+    optimizer="IPOPT",
+    full_optimizer=None,
+    driver_settings=None,
+    start_case=None,
+    rescale_full=True,
+    trim_first=True,
+    log=print,
+    progress=False,
+):
     """
     Solve the stages in order, each warm-started from the previous stage's final case.
 
@@ -142,11 +156,19 @@ def run_sequence(out_dir, names=DEFAULT_SEQUENCE, vehicle=None, static_margin=Tr
         settings = dict(driver_settings or {})
         if name not in FULL_PROBLEMS and stage_optimizer.upper() == "IPOPT":
             settings = {**WARM_START_STAGE_SETTINGS, **settings}
-        stage = solve_stage(name, os.path.join(out_dir, f"{name}.sql"), vehicle=vehicle,
-                            start_case=previous, static_margin=static_margin,
-                            optimizer=stage_optimizer, driver_settings=settings,
-                            rescale=rescale_full and name in FULL_PROBLEMS,
-                            trim_first=trim_first, log=log, progress=progress)
+        stage = solve_stage(
+            name,
+            os.path.join(out_dir, f"{name}.sql"),
+            vehicle=vehicle,
+            start_case=previous,
+            static_margin=static_margin,
+            optimizer=stage_optimizer,
+            driver_settings=settings,
+            rescale=rescale_full and name in FULL_PROBLEMS,
+            trim_first=trim_first,
+            log=log,
+            progress=progress,
+        )
         results.append(stage)
         previous = stage.case_file
     return results
@@ -167,9 +189,19 @@ def default_optimizer(name):
     return "SNOPT" if "SNOPT" in pyoptsparse_optimizers() else "SLSQP"
 
 
-def solve_baseline(case_file, vehicle=None, start_case=None, static_margin=True,
-                   alphas=BASELINE_CONTINUATION, optimizer=None, driver_settings=None,
-                   trim_first=True, log=print, progress=False, comm=None):
+def solve_baseline(
+    case_file,
+    vehicle=None,
+    start_case=None,
+    static_margin=True,
+    alphas=BASELINE_CONTINUATION,
+    optimizer=None,
+    driver_settings=None,
+    trim_first=True,
+    log=print,
+    progress=False,
+    comm=None,
+):
     """
     The baseline design (paper Sec. II.F, eq. 8-9) by continuation in the penalty weight alpha.
 
@@ -205,11 +237,21 @@ def solve_baseline(case_file, vehicle=None, start_case=None, static_margin=True,
     for k, alpha in enumerate(alphas):
         path = case_file if k == len(alphas) - 1 else f"{stem}_alpha{alpha:g}{ext}"
         log(f"baseline: alpha = {alpha:g}")
-        stage = solve_stage("baseline", path, vehicle=vehicle, start_case=previous,
-                            static_margin=static_margin, optimizer=optimizer,
-                            driver_settings=driver_settings, rescale=previous is not None,
-                            trim_first=trim_first, log=log, progress=progress, comm=comm,
-                            baseline_alpha=alpha)
+        stage = solve_stage(
+            "baseline",
+            path,
+            vehicle=vehicle,
+            start_case=previous,
+            static_margin=static_margin,
+            optimizer=optimizer,
+            driver_settings=driver_settings,
+            rescale=previous is not None,
+            trim_first=trim_first,
+            log=log,
+            progress=progress,
+            comm=comm,
+            baseline_alpha=alpha,
+        )
         stage.extra["alpha"] = alpha
         stages.append(stage)
         previous = stage.case_file
@@ -219,9 +261,21 @@ def solve_baseline(case_file, vehicle=None, start_case=None, static_margin=True,
     return last
 
 
-def solve_stage(name, case_file, vehicle=None, start_case=None, static_margin=True,
-                optimizer=None, driver_settings=None, rescale=False, trim_first=True,
-                log=print, progress=False, comm=None, **model_options):
+def solve_stage(
+    name,
+    case_file,
+    vehicle=None,
+    start_case=None,
+    static_margin=True,
+    optimizer=None,
+    driver_settings=None,
+    rescale=False,
+    trim_first=True,
+    log=print,
+    progress=False,
+    comm=None,
+    **model_options,
+):
     """
     One optimization: build problem ``name``, start it from a recorded case, trim, optimize.
 
@@ -264,14 +318,21 @@ def solve_stage(name, case_file, vehicle=None, start_case=None, static_margin=Tr
     case_file = os.path.abspath(case_file)
     case = om.CaseReader(start_case).get_case("final") if start_case is not None else None
     refs = magnitude_refs(case, vehicle) if (rescale and case is not None) else None
-    prob = build_problem(name, vehicle=vehicle, static_margin=static_margin,
-                         optimizer=optimizer, recorder_path=case_file,
-                         design_variable_refs=refs, driver_settings=driver_settings, comm=comm,
-                         **model_options)
+    prob = build_problem(
+        name,
+        vehicle=vehicle,
+        static_margin=static_margin,
+        optimizer=optimizer,
+        recorder_path=case_file,
+        design_variable_refs=refs,
+        driver_settings=driver_settings,
+        comm=comm,
+        **model_options,
+    )
     if progress:
         from lpc_mdo.progress import ProgressLine
 
-        prob.driver.add_recorder(ProgressLine(name))   # recorders start at final_setup
+        prob.driver.add_recorder(ProgressLine(name))  # recorders start at final_setup
     if case is not None:
         load_design_variables(prob, case, vehicle)
     trim_seconds, trim_message = 0.0, ""
@@ -292,13 +353,21 @@ def solve_stage(name, case_file, vehicle=None, start_case=None, static_margin=Tr
     seconds = time.perf_counter() - start
     prob.record("final")
     write_run_stats(result, run_stats_path(case_file), peak_memory_mb=process_peak_memory_mb())
-    stage = StageResult(name=name, case_file=case_file, success=bool(result.success),
-                        iterations=int(result.iter_count), seconds=seconds,
-                        gross_mass=float(prob.get_val("gross_mass", units="kg")[0]),
-                        exit_status=str(result.exit_status),
-                        analysis_errors=len(getattr(prob.driver, "analysis_errors", [])),
-                        trim_seconds=trim_seconds, trim_message=trim_message)
+    stage = StageResult(
+        name=name,
+        case_file=case_file,
+        success=bool(result.success),
+        iterations=int(result.iter_count),
+        seconds=seconds,
+        gross_mass=float(prob.get_val("gross_mass", units="kg")[0]),
+        exit_status=str(result.exit_status),
+        analysis_errors=len(getattr(prob.driver, "analysis_errors", [])),
+        trim_seconds=trim_seconds,
+        trim_message=trim_message,
+    )
     prob.cleanup()
-    log(f"{name}: success={stage.success} iterations={stage.iterations} "
-        f"{stage.seconds:.1f} s gross mass {stage.gross_mass:.2f} kg")
+    log(
+        f"{name}: success={stage.success} iterations={stage.iterations} "
+        f"{stage.seconds:.1f} s gross mass {stage.gross_mass:.2f} kg"
+    )
     return stage

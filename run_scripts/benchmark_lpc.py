@@ -66,16 +66,20 @@ def main(argv=None):
     dvs = sum(m["size"] for m in prob.model.get_design_vars().values())
     cons = sum(m["size"] for m in prob.model.get_constraints().values())
     f_med, t_med = statistics.median(forward), statistics.median(totals)
-    print(f"full LPC model: {dvs} design variables, {cons} constraints, "
-          f"median of {args.repeats} (OPENBLAS_NUM_THREADS={os.environ['OPENBLAS_NUM_THREADS']})")
+    print(
+        f"full LPC model: {dvs} design variables, {cons} constraints, "
+        f"median of {args.repeats} (OPENBLAS_NUM_THREADS={os.environ['OPENBLAS_NUM_THREADS']})"
+    )
     print(f"  {'step':<36}{'time [s]':>10}{'paper [s]':>11}{'ratio':>9}")
-    print(f"  {'setup + final_setup':<36}{setup:>10.3f}{'13320':>11}"
-          f"{13320.0 / setup:>8.0f}x")
-    print(f"  {'model evaluation (run_model)':<36}{f_med:>10.3f}{PAPER_FORWARD_S:>11.2f}"
-          f"{PAPER_FORWARD_S / f_med:>8.1f}x")
+    print(f"  {'setup + final_setup':<36}{setup:>10.3f}{'13320':>11}{13320.0 / setup:>8.0f}x")
+    print(
+        f"  {'model evaluation (run_model)':<36}{f_med:>10.3f}{PAPER_FORWARD_S:>11.2f}"
+        f"{PAPER_FORWARD_S / f_med:>8.1f}x"
+    )
     label = f"total derivatives ({1 + cons} x {dvs}, rev)"
-    print(f"  {label:<36}{t_med:>10.3f}{PAPER_DERIVATIVE_S:>11.2f}"
-          f"{PAPER_DERIVATIVE_S / t_med:>8.1f}x")
+    print(
+        f"  {label:<36}{t_med:>10.3f}{PAPER_DERIVATIVE_S:>11.2f}{PAPER_DERIVATIVE_S / t_med:>8.1f}x"
+    )
 
     if args.profile:
         profiler = cProfile.Profile()

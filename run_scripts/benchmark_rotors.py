@@ -42,13 +42,17 @@ def build_bem_problem(num_nodes=1, num_radial=25):
     """Hover BEM of the 8 reference lift rotors, set up and run once."""
     rotors = reference_vehicle().lift_rotors
     prob = om.Problem(reports=False)
-    prob.model.add_subsystem('atmosphere', AtmosphereComp(num_nodes=num_nodes, constants='caddee'),
-                             promotes=['*'])
-    prob.model.add_subsystem('rotors', BEMRotorGroup(rotors=rotors, num_nodes=num_nodes,
-                                                     num_radial=num_radial), promotes=['*'])
-    prob.setup(mode='rev')
-    prob.set_val('altitude', np.full(num_nodes, 100.0))
-    prob.set_val('rpm', np.full((len(rotors), num_nodes), 1200.0))
+    prob.model.add_subsystem(
+        "atmosphere", AtmosphereComp(num_nodes=num_nodes, constants="caddee"), promotes=["*"]
+    )
+    prob.model.add_subsystem(
+        "rotors",
+        BEMRotorGroup(rotors=rotors, num_nodes=num_nodes, num_radial=num_radial),
+        promotes=["*"],
+    )
+    prob.setup(mode="rev")
+    prob.set_val("altitude", np.full(num_nodes, 100.0))
+    prob.set_val("rpm", np.full((len(rotors), num_nodes), 1200.0))
     prob.run_model()
     return prob
 
@@ -62,45 +66,55 @@ def benchmark_bem(repeats, num_nodes):
     inflow, loads = group.inflow, group.loads
     in_vals, out_vals = inflow._inputs, inflow._outputs
     times = {
-        'setup + first run': setup_ms,
-        'BEM inflow solve (solve_nonlinear)': median_ms(
-            lambda: inflow.solve_nonlinear(in_vals, out_vals), repeats),
-        'BEM inflow + loads linearize': median_ms(
-            lambda: (inflow.run_linearize(), loads.run_linearize()), repeats),
-        'run_model (whole group)': median_ms(prob.run_model, repeats),
-        'run_linearize (whole group)': median_ms(prob.model.run_linearize, repeats),
-        'compute_totals (adjoint)': median_ms(
-            lambda: prob.compute_totals(of=['thrust', 'power', 'total_force', 'total_moment'],
-                                        wrt=['radius', 'chord_cp', 'twist_cp', 'rpm']),
-            repeats),
+        "setup + first run": setup_ms,
+        "BEM inflow solve (solve_nonlinear)": median_ms(
+            lambda: inflow.solve_nonlinear(in_vals, out_vals), repeats
+        ),
+        "BEM inflow + loads linearize": median_ms(
+            lambda: (inflow.run_linearize(), loads.run_linearize()), repeats
+        ),
+        "run_model (whole group)": median_ms(prob.run_model, repeats),
+        "run_linearize (whole group)": median_ms(prob.model.run_linearize, repeats),
+        "compute_totals (adjoint)": median_ms(
+            lambda: prob.compute_totals(
+                of=["thrust", "power", "total_force", "total_moment"],
+                wrt=["radius", "chord_cp", "twist_cp", "rpm"],
+            ),
+            repeats,
+        ),
     }
-    nr, nrad = len(reference_vehicle().lift_rotors), group.options['num_radial']
-    print(f"BEM benchmark: {nr} lift rotors x {nrad} radial stations, {num_nodes} node(s), "
-          f"median of {repeats}")
+    nr, nrad = len(reference_vehicle().lift_rotors), group.options["num_radial"]
+    print(
+        f"BEM benchmark: {nr} lift rotors x {nrad} radial stations, {num_nodes} node(s), "
+        f"median of {repeats}"
+    )
     for name, value in times.items():
         print(f"  {name:<36} {value:8.2f} ms")
-    thrust, power = prob.get_val('thrust')[:, 0], prob.get_val('power', units='kW')[:, 0]
-    print(f"  per rotor: T = {thrust[0]:.1f} N, P = {power[0]:.2f} kW, FoM = "
-          f"{prob.get_val('figure_of_merit')[0, 0]:.4f}, tip Mach = "
-          f"{prob.get_val('tip_mach')[0, 0]:.4f}; total force z = "
-          f"{prob.get_val('total_force')[0, 2]:.1f} N")
+    thrust, power = prob.get_val("thrust")[:, 0], prob.get_val("power", units="kW")[:, 0]
+    print(
+        f"  per rotor: T = {thrust[0]:.1f} N, P = {power[0]:.2f} kW, FoM = "
+        f"{prob.get_val('figure_of_merit')[0, 0]:.4f}, tip Mach = "
+        f"{prob.get_val('tip_mach')[0, 0]:.4f}; total force z = "
+        f"{prob.get_val('total_force')[0, 2]:.1f} N"
+    )
     return times
 
 
 def main(argv=None):
     """Run the BEM benchmark, then the Pitt–Peters benchmark, with the same settings."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument('--repeats', type=int, default=30, help='timed repetitions (>= 1)')
-    parser.add_argument('--num-nodes', type=int, default=1, help='operating points (>= 1)')
+    parser.add_argument("--repeats", type=int, default=30, help="timed repetitions (>= 1)")
+    parser.add_argument("--num-nodes", type=int, default=1, help="operating points (>= 1)")
     args = parser.parse_args(argv)
     if args.repeats < 1 or args.num_nodes < 1:
-        parser.error(f"--repeats = {args.repeats} and --num-nodes = {args.num_nodes}; both "
-                     "must be >= 1")
+        parser.error(
+            f"--repeats = {args.repeats} and --num-nodes = {args.num_nodes}; both must be >= 1"
+        )
     benchmark_bem(args.repeats, args.num_nodes)
     import benchmark_pitt_peters  # the sibling run script (this script's folder is on sys.path)
 
-    benchmark_pitt_peters.main(['--repeats', str(args.repeats), '--nodes', str(args.num_nodes)])
+    benchmark_pitt_peters.main(["--repeats", str(args.repeats), "--nodes", str(args.num_nodes)])
 
 
-if __name__ == '__main__':
+if __name__ == "__main__":
     main()

@@ -16,7 +16,7 @@ import argparse
 import os
 import time
 
-os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")   # see benchmark_lpc.py
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")  # see benchmark_lpc.py
 os.environ.setdefault("OMP_NUM_THREADS", "1")
 os.environ.setdefault("OPENMDAO_REPORTS", "0")
 
@@ -24,8 +24,13 @@ from lpc_mdo.post.statistics import process_peak_memory_mb  # noqa: E402
 from lpc_mdo.post.trim_residuals import trim_residual_table  # noqa: E402
 from lpc_mdo.warm_start import DEFAULT_SEQUENCE, run_sequence  # noqa: E402
 
-PAPER_MINUTES = {"subproblem_1": 30.0, "subproblem_2": 3.0, "subproblem_3": 3.0,
-                 "subproblem_4": 3.0, "full": 63.0}
+PAPER_MINUTES = {
+    "subproblem_1": 30.0,
+    "subproblem_2": 3.0,
+    "subproblem_3": 3.0,
+    "subproblem_4": 3.0,
+    "full": 63.0,
+}
 
 
 def main():
@@ -39,20 +44,30 @@ def main():
     args = parser.parse_args()
 
     start = time.perf_counter()
-    results = run_sequence(args.output_dir, names=args.stages.split(","),
-                           static_margin=not args.no_static_margin,
-                           start_case=args.start_case,
-                           driver_settings={"max_iter": args.max_iter, "print_level": 0})
+    results = run_sequence(
+        args.output_dir,
+        names=args.stages.split(","),
+        static_margin=not args.no_static_margin,
+        start_case=args.start_case,
+        driver_settings={"max_iter": args.max_iter, "print_level": 0},
+    )
     total = time.perf_counter() - start
-    lines = ["| stage | trim (s) | optimization (s) | iterations | success | gross mass (kg) | "
-             "paper (min, 20 cores) |", "|---|---|---|---|---|---|---|"]
+    lines = [
+        "| stage | trim (s) | optimization (s) | iterations | success | gross mass (kg) | "
+        "paper (min, 20 cores) |",
+        "|---|---|---|---|---|---|---|",
+    ]
     for r in results:
         paper = PAPER_MINUTES.get(r.name)
-        lines.append(f"| {r.name} | {r.trim_seconds:.1f} | {r.seconds:.1f} | {r.iterations} | "
-                     f"{r.success} | {r.gross_mass:.2f} | {'' if paper is None else paper} |")
-    lines.append(f"\nTotal wall time {total:.1f} s ({total / 60:.1f} min); peak memory "
-                 f"{process_peak_memory_mb():.0f} MB; static margin "
-                 f"{'off' if args.no_static_margin else 'on'}.")
+        lines.append(
+            f"| {r.name} | {r.trim_seconds:.1f} | {r.seconds:.1f} | {r.iterations} | "
+            f"{r.success} | {r.gross_mass:.2f} | {'' if paper is None else paper} |"
+        )
+    lines.append(
+        f"\nTotal wall time {total:.1f} s ({total / 60:.1f} min); peak memory "
+        f"{process_peak_memory_mb():.0f} MB; static margin "
+        f"{'off' if args.no_static_margin else 'on'}."
+    )
     # Every Table 6 trim row of the last stage, declared or not, as force/moment in % of W0.
     lines.append("\n" + trim_residual_table(results[-1].case_file).to_markdown())
     text = "\n".join(lines)

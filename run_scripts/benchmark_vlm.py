@@ -36,12 +36,16 @@ def build_problem(num_nodes=1):
     surfaces = lpc_vlm_surfaces()
     prob = om.Problem(reports=False)
     for surface in surfaces:
-        prob.model.add_subsystem(f"{surface.name}_planform",
-                                 PlanformMeshComp(num_span_panels=surface.num_span_panels,
-                                                  num_chord_panels=surface.num_chord_panels),
-                                 promotes_outputs=[("mesh", f"{surface.name}_mesh")])
-    prob.model.add_subsystem("vlm", VLMGroup(surfaces=surfaces, num_nodes=num_nodes),
-                             promotes=["*"])
+        prob.model.add_subsystem(
+            f"{surface.name}_planform",
+            PlanformMeshComp(
+                num_span_panels=surface.num_span_panels, num_chord_panels=surface.num_chord_panels
+            ),
+            promotes_outputs=[("mesh", f"{surface.name}_mesh")],
+        )
+    prob.model.add_subsystem(
+        "vlm", VLMGroup(surfaces=surfaces, num_nodes=num_nodes), promotes=["*"]
+    )
     prob.setup(mode="rev")
     for surface, data in zip(surfaces, (vehicle.wing, vehicle.horizontal_tail), strict=True):
         for name, value in planform_values(data).items():
@@ -72,34 +76,49 @@ def main(argv=None):
     parser.add_argument("--num-nodes", type=int, default=1, help="flight conditions (>= 1)")
     args = parser.parse_args(argv)
     if args.repeats < 1 or args.num_nodes < 1:
-        parser.error(f"--repeats = {args.repeats} and --num-nodes = {args.num_nodes}; both "
-                     "must be >= 1")
+        parser.error(
+            f"--repeats = {args.repeats} and --num-nodes = {args.num_nodes}; both must be >= 1"
+        )
 
     start = time.perf_counter()
     prob = build_problem(args.num_nodes)
     setup_s = time.perf_counter() - start
     of = ["CL", "CDi", "moment", "wing_sectional_cl"]
-    wrt = ["wing_planform.span", "wing_planform.root_chord", "wing_planform.tip_chord",
-           "horizontal_tail_planform.span", "angle_of_attack", "horizontal_tail_deflection"]
+    wrt = [
+        "wing_planform.span",
+        "wing_planform.root_chord",
+        "wing_planform.tip_chord",
+        "horizontal_tail_planform.span",
+        "angle_of_attack",
+        "horizontal_tail_deflection",
+    ]
     evaluate = median_ms(prob.run_model, args.repeats)
     linearize = median_ms(prob.model.run_linearize, args.repeats)
     totals_cl = median_ms(lambda: prob.compute_totals(of=["CL"], wrt=wrt), args.repeats)
     totals = median_ms(lambda: prob.compute_totals(of=of, wrt=wrt), args.repeats)
 
     npn = sum(s.num_panels for s in lpc_vlm_surfaces())
-    print(f"VLM benchmark: wing 26 x 1 + h-tail 8 x 1 = {npn} panels, "
-          f"{args.num_nodes} node(s), median of {args.repeats}")
+    print(
+        f"VLM benchmark: wing 26 x 1 + h-tail 8 x 1 = {npn} panels, "
+        f"{args.num_nodes} node(s), median of {args.repeats}"
+    )
     print(f"  setup + first run     {1e3 * setup_s:8.1f} ms")
     print(f"  evaluate (run_model)  {evaluate:8.2f} ms")
     print(f"  linearize (partials)  {linearize:8.2f} ms")
-    print(f"  compute_totals, CL    {totals_cl:8.2f} ms  (linearize + {args.num_nodes} adjoint "
-          f"solve(s), {len(wrt)} inputs)")
-    print(f"  compute_totals        {totals:8.2f} ms  ({', '.join(of)} x {len(wrt)} inputs, "
-          "one adjoint solve per output entry)")
-    print(f"  CL {prob.get_val('CL')[0]:.5f}  CDi {prob.get_val('CDi')[0]:.6f}  "
-          f"Trefftz D_i {prob.get_val('trefftz_induced_drag')[0]:.2f} N  "
-          f"near-field D_i {prob.get_val('induced_drag')[0]:.2f} N  "
-          f"M_y {prob.get_val('moment')[0, 1]:.1f} N*m")
+    print(
+        f"  compute_totals, CL    {totals_cl:8.2f} ms  (linearize + {args.num_nodes} adjoint "
+        f"solve(s), {len(wrt)} inputs)"
+    )
+    print(
+        f"  compute_totals        {totals:8.2f} ms  ({', '.join(of)} x {len(wrt)} inputs, "
+        "one adjoint solve per output entry)"
+    )
+    print(
+        f"  CL {prob.get_val('CL')[0]:.5f}  CDi {prob.get_val('CDi')[0]:.6f}  "
+        f"Trefftz D_i {prob.get_val('trefftz_induced_drag')[0]:.2f} N  "
+        f"near-field D_i {prob.get_val('induced_drag')[0]:.2f} N  "
+        f"M_y {prob.get_val('moment')[0, 1]:.1f} N*m"
+    )
     return prob
 
 

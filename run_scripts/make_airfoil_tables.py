@@ -51,15 +51,33 @@ DEFAULT_OUT = REPO / "lpc_mdo" / "data"
 # name: coordinate file (None = generated NACA 4-digit symmetric section with thickness t),
 # description, symmetric flag, whether to make XFOIL pressure tables.
 AIRFOILS = {
-    "naca0012": dict(file="naca0012.dat", t=0.12, symmetric=True, pressure=False,
-                     description="NACA 0012 (rotor and propeller blades)"),
-    "naca0015": dict(file=None, t=0.15, symmetric=True, pressure=False,
-                     description="NACA 0015 (tails), coordinates generated from the four-digit "
-                                 "equation with the naca0012.dat rule (open trailing edge)"),
-    "ls413": dict(file="ls413_gaw2.dat", symmetric=False, pressure=True,
-                  description="NASA LS(1)-0413 = GA(W)-2 (wing, project default)"),
-    "ls417": dict(file="ls417_gaw1.dat", symmetric=False, pressure=True,
-                  description="NASA LS(1)-0417 = GA(W)-1 (wing, public-code alternative)"),
+    "naca0012": dict(
+        file="naca0012.dat",
+        t=0.12,
+        symmetric=True,
+        pressure=False,
+        description="NACA 0012 (rotor and propeller blades)",
+    ),
+    "naca0015": dict(
+        file=None,
+        t=0.15,
+        symmetric=True,
+        pressure=False,
+        description="NACA 0015 (tails), coordinates generated from the four-digit "
+        "equation with the naca0012.dat rule (open trailing edge)",
+    ),
+    "ls413": dict(
+        file="ls413_gaw2.dat",
+        symmetric=False,
+        pressure=True,
+        description="NASA LS(1)-0413 = GA(W)-2 (wing, project default)",
+    ),
+    "ls417": dict(
+        file="ls417_gaw1.dat",
+        symmetric=False,
+        pressure=True,
+        description="NASA LS(1)-0417 = GA(W)-1 (wing, public-code alternative)",
+    ),
 }
 
 # Polar grid (NeuralFoil): alpha every 0.5 deg on +-25 deg (NeuralFoil's confident range; the
@@ -88,8 +106,7 @@ def naca4_symmetric(t, n=81):
     """NACA 00tt coordinates, Selig order, cosine spacing, open trailing edge (as naca0012.dat)."""
     beta = np.linspace(0.0, np.pi, n)
     x = 0.5 * (1.0 - np.cos(beta))
-    y = 5 * t * (0.2969 * np.sqrt(x) - 0.1260 * x - 0.3516 * x**2 + 0.2843 * x**3
-                 - 0.1015 * x**4)
+    y = 5 * t * (0.2969 * np.sqrt(x) - 0.1260 * x - 0.3516 * x**2 + 0.2843 * x**3 - 0.1015 * x**4)
     upper = np.column_stack([x[::-1], y[::-1]])
     lower = np.column_stack([x[1:], -y[1:]])
     return np.vstack([upper, lower])
@@ -108,6 +125,7 @@ def load_coordinates(name, coordinates_dir):
 
 # ------------------------------------------------------------------------------ polars (NeuralFoil)
 
+
 def polar_tables(coords, symmetric):
     """
     cl, cd, cm, confidence on ALPHA_DEG x REYNOLDS x MACH.
@@ -120,21 +138,29 @@ def polar_tables(coords, symmetric):
 
     airfoil = asb.Airfoil(name="airfoil", coordinates=coords)
     a, r = np.meshgrid(ALPHA_DEG, REYNOLDS, indexing="ij")
-    out = nf.get_aero_from_airfoil(airfoil, alpha=a.ravel(), Re=r.ravel(), n_crit=N_CRIT,
-                                   model_size=MODEL_SIZE)
-    cl, cd, cm, conf = (np.reshape(np.asarray(out[k], dtype=float), a.shape)
-                        for k in ("CL", "CD", "CM", "analysis_confidence"))
+    out = nf.get_aero_from_airfoil(
+        airfoil, alpha=a.ravel(), Re=r.ravel(), n_crit=N_CRIT, model_size=MODEL_SIZE
+    )
+    cl, cd, cm, conf = (
+        np.reshape(np.asarray(out[k], dtype=float), a.shape)
+        for k in ("CL", "CD", "CM", "analysis_confidence")
+    )
     if symmetric:  # remove the Kulfan-fit asymmetry: cl, cm odd and cd even in alpha
         cl = 0.5 * (cl - cl[::-1])
         cm = 0.5 * (cm - cm[::-1])
         cd = 0.5 * (cd + cd[::-1])
         conf = 0.5 * (conf + conf[::-1])
     inv_beta = 1.0 / np.sqrt(1.0 - MACH**2)
-    return (cl[..., None] * inv_beta, cd[..., None] * np.ones_like(MACH),
-            cm[..., None] * inv_beta, conf[..., None] * np.ones_like(MACH))
+    return (
+        cl[..., None] * inv_beta,
+        cd[..., None] * np.ones_like(MACH),
+        cm[..., None] * inv_beta,
+        conf[..., None] * np.ones_like(MACH),
+    )
 
 
 # ------------------------------------------------------------------------------ pressure (XFOIL)
+
 
 def _xfoil_alphas():
     """Return the two sweeps (0 deg up, -0.5 deg down), in XFOIL_SUBSTEP steps."""
@@ -157,8 +183,15 @@ class Xfoil:
 
     def __init__(self, workdir, display):
         env = dict(os.environ, DISPLAY=display, GFORTRAN_UNBUFFERED_ALL="y")
-        self.proc = subprocess.Popen(["xfoil"], stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-                                     stderr=subprocess.STDOUT, text=True, cwd=workdir, env=env)
+        self.proc = subprocess.Popen(
+            ["xfoil"],
+            stdin=subprocess.PIPE,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.STDOUT,
+            text=True,
+            cwd=workdir,
+            env=env,
+        )
         self.lines = queue.Queue()
         threading.Thread(target=self._read, daemon=True).start()
 
@@ -229,8 +262,12 @@ def xfoil_session(args):
                 for a in sweep:
                     out = xf.run(f"ALFA {a:.2f}")
                     m_cl, m_cd = _RE_CL.findall(out), _RE_CD.findall(out)
-                    ok = ("VISCAL:  Convergence failed" not in out and m_cl and m_cd
-                          and np.isfinite(float(m_cd[-1][1])))
+                    ok = (
+                        "VISCAL:  Convergence failed" not in out
+                        and m_cl
+                        and m_cd
+                        and np.isfinite(float(m_cd[-1][1]))
+                    )
                     if not ok:  # go on from the unconverged state (as XFOIL's ASEQ does)
                         failures += 1
                         if failures >= 4:
@@ -242,8 +279,12 @@ def xfoil_session(args):
                         name = f"cp_{k}_{key:+06.2f}.txt"
                         xf.run(f"CPWR {name}")
                         cp = np.loadtxt(workdir / name, skiprows=1)[:, -1]
-                        converged[key] = (float(m_cl[-1][1]), float(m_cd[-1][1]),
-                                          float(m_cd[-1][0]), cp)
+                        converged[key] = (
+                            float(m_cl[-1][1]),
+                            float(m_cd[-1][1]),
+                            float(m_cd[-1][0]),
+                            cp,
+                        )
             except TimeoutError:
                 xf.close()
                 xf = _start(workdir, display, reynolds)
@@ -280,8 +321,9 @@ def split_surfaces(nodes, values, x_st):
 def integrate_cl(x, y_u, y_l, cp_u, cp_l, alpha_deg):
     """Pressure lift coefficient (trapezoid on the stations; see components/aero/pressure.py)."""
     cn = np.trapezoid(cp_l - cp_u, x, axis=-1)
-    ca = (np.sum(0.5 * (cp_u[..., 1:] + cp_u[..., :-1]) * np.diff(y_u), axis=-1)
-          - np.sum(0.5 * (cp_l[..., 1:] + cp_l[..., :-1]) * np.diff(y_l), axis=-1))
+    ca = np.sum(0.5 * (cp_u[..., 1:] + cp_u[..., :-1]) * np.diff(y_u), axis=-1) - np.sum(
+        0.5 * (cp_l[..., 1:] + cp_l[..., :-1]) * np.diff(y_l), axis=-1
+    )
     a = np.radians(alpha_deg)
     return cn * np.cos(a) - ca * np.sin(a)
 
@@ -302,8 +344,12 @@ def fill_alpha_gaps(values, ok):
 
 def start_display():
     """Start a private Xvfb server (XFOIL 6.99 needs an X display); return (process, ':N')."""
-    proc = subprocess.Popen(["Xvfb", "-displayfd", "1", "-nolisten", "tcp"],
-                            stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+    proc = subprocess.Popen(
+        ["Xvfb", "-displayfd", "1", "-nolisten", "tcp"],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.DEVNULL,
+        text=True,
+    )
     number = proc.stdout.readline().strip()
     if not number:
         proc.kill()
@@ -321,8 +367,7 @@ def pressure_tables(coords, jobs, name, display):
     xf = {k: np.full(shape, np.nan) for k in ("cl", "cd", "cm")}
     y_u = y_l = None
     with tempfile.TemporaryDirectory(prefix=f"xfoil_{name}_") as tmp:
-        tasks = [(coords, rey, Path(tmp) / f"re{j}", display)
-                 for j, rey in enumerate(CP_REYNOLDS)]
+        tasks = [(coords, rey, Path(tmp) / f"re{j}", display) for j, rey in enumerate(CP_REYNOLDS)]
         with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
             results = list(pool.map(xfoil_session, tasks))
     for j, (_, res) in enumerate(results):
@@ -341,28 +386,44 @@ def pressure_tables(coords, jobs, name, display):
     # Consistency of the resampled Cp with XFOIL's own cl (converged points only).
     cl_int = integrate_cl(x_st, y_u, y_l, cp_u, cp_l, CP_ALPHA_DEG[:, None, None])
     err = np.abs(cl_int - xf["cl"])[conv]
-    print(f"  {name}: XFOIL converged {conv.sum()}/{conv.size}; |cl(Cp) - cl_xfoil| max "
-          f"{err.max():.4f}, mean {err.mean():.5f}")
+    print(
+        f"  {name}: XFOIL converged {conv.sum()}/{conv.size}; |cl(Cp) - cl_xfoil| max "
+        f"{err.max():.4f}, mean {err.mean():.5f}"
+    )
     for j in range(shape[1]):
         for k in range(shape[2]):
             ok = conv[:, j, k]
             fu, fl = fill_alpha_gaps(cp_u[:, j, k], ok), fill_alpha_gaps(cp_l[:, j, k], ok)
             if fu is None:
-                raise SystemExit(f"XFOIL converged nowhere for {name} Re={CP_REYNOLDS[j]:g} "
-                                 f"M={CP_MACH[k]:g}")
+                raise SystemExit(
+                    f"XFOIL converged nowhere for {name} Re={CP_REYNOLDS[j]:g} M={CP_MACH[k]:g}"
+                )
             cp_u[:, j, k], cp_l[:, j, k] = fu, fl
-    return dict(cp_alpha_deg=CP_ALPHA_DEG, cp_reynolds=CP_REYNOLDS, cp_mach=CP_MACH, x=x_st,
-                y_upper=y_u, y_lower=y_l, cp_upper=cp_u.astype(np.float32),
-                cp_lower=cp_l.astype(np.float32), cp_converged=conv,
-                xfoil_cl=xf["cl"].astype(np.float32), xfoil_cd=xf["cd"].astype(np.float32),
-                xfoil_cm=xf["cm"].astype(np.float32))
+    return dict(
+        cp_alpha_deg=CP_ALPHA_DEG,
+        cp_reynolds=CP_REYNOLDS,
+        cp_mach=CP_MACH,
+        x=x_st,
+        y_upper=y_u,
+        y_lower=y_l,
+        cp_upper=cp_u.astype(np.float32),
+        cp_lower=cp_l.astype(np.float32),
+        cp_converged=conv,
+        xfoil_cl=xf["cl"].astype(np.float32),
+        xfoil_cd=xf["cd"].astype(np.float32),
+        xfoil_cm=xf["cm"].astype(np.float32),
+    )
 
 
 def xfoil_version():
     """Return the XFOIL version text recorded in the files (with the Debian package version)."""
     try:
-        out = subprocess.run(["dpkg-query", "-W", "-f=${Version}", "xfoil"], capture_output=True,
-                             text=True, check=False).stdout.strip()
+        out = subprocess.run(
+            ["dpkg-query", "-W", "-f=${Version}", "xfoil"],
+            capture_output=True,
+            text=True,
+            check=False,
+        ).stdout.strip()
     except OSError:
         out = ""
     return f"XFOIL 6.99 (Debian xfoil {out})" if out else "XFOIL 6.99"
@@ -372,24 +433,34 @@ def main(argv=None):
     """Write ``airfoil_<name>.npz`` for the chosen airfoils (polars, then the Cp tables)."""
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--airfoils", nargs="+", default=list(AIRFOILS), choices=list(AIRFOILS))
-    parser.add_argument("--coordinates", default=str(DEFAULT_COORDINATES),
-                        help="folder with the Selig .dat files (default ../shared/data/airfoils)")
+    parser.add_argument(
+        "--coordinates",
+        default=str(DEFAULT_COORDINATES),
+        help="folder with the Selig .dat files (default ../shared/data/airfoils)",
+    )
     parser.add_argument("--out", default=str(DEFAULT_OUT), help="output folder")
     parser.add_argument("--jobs", type=int, default=2, help="parallel XFOIL processes")
-    parser.add_argument("--no-pressure", action="store_true",
-                        help="skip the XFOIL Cp tables (wing files are then written without them)")
+    parser.add_argument(
+        "--no-pressure",
+        action="store_true",
+        help="skip the XFOIL Cp tables (wing files are then written without them)",
+    )
     args = parser.parse_args(argv)
 
     try:
         nf_version = metadata.version("neuralfoil")
         asb_version = metadata.version("aerosandbox")
     except metadata.PackageNotFoundError:
-        raise SystemExit("neuralfoil is not installed: pip install neuralfoil==0.3.3 (into a "
-                         "separate venv; lpc_mdo itself does not need it)") from None
+        raise SystemExit(
+            "neuralfoil is not installed: pip install neuralfoil==0.3.3 (into a "
+            "separate venv; lpc_mdo itself does not need it)"
+        ) from None
     need_pressure = not args.no_pressure and any(AIRFOILS[n]["pressure"] for n in args.airfoils)
     if need_pressure and not (shutil.which("xfoil") and shutil.which("Xvfb")):
-        raise SystemExit("the pressure tables need XFOIL and Xvfb: apt-get install xfoil xvfb "
-                         "(or pass --no-pressure)")
+        raise SystemExit(
+            "the pressure tables need XFOIL and Xvfb: apt-get install xfoil xvfb "
+            "(or pass --no-pressure)"
+        )
     out_dir = Path(args.out)
     out_dir.mkdir(parents=True, exist_ok=True)
     stamp = datetime.date.today().isoformat()
@@ -411,25 +482,38 @@ def make_one(name, args, nf_version, asb_version, stamp, display, out_dir):
     w0 = time.time()
     coords = load_coordinates(name, args.coordinates)
     cl, cd, cm, conf = polar_tables(coords, spec["symmetric"])
-    data = dict(name=name, description=spec["description"], alpha_deg=ALPHA_DEG,
-                reynolds=REYNOLDS, mach=MACH, cl=cl, cd=cd, cm=cm,
-                confidence=conf.astype(np.float32), coordinates=coords,
-                source=f"NeuralFoil {nf_version} get_aero_from_airfoil ({MODEL_SIZE}, "
-                       f"n_crit={N_CRIT:g}, free transition; AeroSandbox {asb_version} Kulfan "
-                       f"fit), incompressible, Prandtl-Glauert cl/beta and cm/beta, cd "
-                       f"unchanged; made {stamp} by run_scripts/make_airfoil_tables.py")
+    data = dict(
+        name=name,
+        description=spec["description"],
+        alpha_deg=ALPHA_DEG,
+        reynolds=REYNOLDS,
+        mach=MACH,
+        cl=cl,
+        cd=cd,
+        cm=cm,
+        confidence=conf.astype(np.float32),
+        coordinates=coords,
+        source=f"NeuralFoil {nf_version} get_aero_from_airfoil ({MODEL_SIZE}, "
+        f"n_crit={N_CRIT:g}, free transition; AeroSandbox {asb_version} Kulfan "
+        f"fit), incompressible, Prandtl-Glauert cl/beta and cm/beta, cd "
+        f"unchanged; made {stamp} by run_scripts/make_airfoil_tables.py",
+    )
     msg = f"{name}: polar {time.process_time() - t0:.1f} s CPU"
     if spec["pressure"] and display is not None:
         p = pressure_tables(coords, args.jobs, name, display)
         data.update(p)
-        data["cp_source"] = (f"{xfoil_version()}, PANE {XFOIL_PANELS} nodes, viscous, "
-                             f"n_crit={N_CRIT:g}, ITER {XFOIL_ITER}, sweeps from 0 deg in "
-                             f"{XFOIL_SUBSTEP} deg steps; CPWR resampled (PCHIP) to {N_X} "
-                             f"cosine-spaced stations per surface; made {stamp}")
+        data["cp_source"] = (
+            f"{xfoil_version()}, PANE {XFOIL_PANELS} nodes, viscous, "
+            f"n_crit={N_CRIT:g}, ITER {XFOIL_ITER}, sweeps from 0 deg in "
+            f"{XFOIL_SUBSTEP} deg steps; CPWR resampled (PCHIP) to {N_X} "
+            f"cosine-spaced stations per surface; made {stamp}"
+        )
     path = out_dir / f"airfoil_{name}.npz"
     np.savez_compressed(path, **data)
-    print(f"{msg}; total {time.time() - w0:.1f} s wall, {time.process_time() - t0:.1f} s "
-          f"CPU in this process -> {path} ({path.stat().st_size / 1024:.0f} KiB)")
+    print(
+        f"{msg}; total {time.time() - w0:.1f} s wall, {time.process_time() - t0:.1f} s "
+        f"CPU in this process -> {path} ({path.stat().st_size / 1024:.0f} KiB)"
+    )
 
 
 if __name__ == "__main__":

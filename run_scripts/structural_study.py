@@ -28,9 +28,12 @@ from lpc_mdo.studies import structural_sizing_problem  # noqa: E402
 def run(aggregated, coupling, out, optimizer):
     """Optimize one variant of the structural study; return the problem and its table row."""
     label = _label(aggregated, coupling)
-    prob = structural_sizing_problem(aggregated=aggregated, optimizer=optimizer,
-                                     coupling=coupling,
-                                     recorder_path=os.path.join(out, f"{label}.sql"))
+    prob = structural_sizing_problem(
+        aggregated=aggregated,
+        optimizer=optimizer,
+        coupling=coupling,
+        recorder_path=os.path.join(out, f"{label}.sql"),
+    )
     if optimizer == "IPOPT":
         prob.driver.options["print_level"] = 0
         prob.driver.options["max_iter"] = 300
@@ -53,14 +56,19 @@ def run(aggregated, coupling, out, optimizer):
     active = []
     for name, meta in cons.items():
         upper = meta.get("upper")
-        if upper is not None and np.any(np.abs(values[name] - upper) <= 1e-3 * max(1.0,
-                                                                                     abs(upper))):
+        if upper is not None and np.any(
+            np.abs(values[name] - upper) <= 1e-3 * max(1.0, abs(upper))
+        ):
             active.append(name.split(".")[-1] + f" ({name.split('.')[0]})")
     row = {
-        "case": label, "constraints": sum(m["size"] for m in cons.values()),
-        "success": result.success, "iterations": result.iter_count,
+        "case": label,
+        "constraints": sum(m["size"] for m in cons.values()),
+        "success": result.success,
+        "iterations": result.iter_count,
         "wing mass [kg]": prob.get_val("wing_mass", units="kg")[0],
-        "optimization [s]": elapsed, "model [s]": forward, "derivatives [s]": deriv,
+        "optimization [s]": elapsed,
+        "model [s]": forward,
+        "derivatives [s]": deriv,
         "active": ", ".join(sorted(set(active))),
     }
     prob.cleanup()
@@ -88,20 +96,24 @@ def main(argv=None):
             rows.append(row)
             problems.append(prob)
     masses = [row["wing mass [kg]"] for row in rows]
-    print(f"largest wing-mass difference between the four: "
-          f"{100 * (max(masses) - min(masses)) / min(masses):.2f} %")
+    print(
+        f"largest wing-mass difference between the four: "
+        f"{100 * (max(masses) - min(masses)) / min(masses):.2f} %"
+    )
     keys = list(rows[0])
     print("| " + " | ".join(keys) + " |")
     print("|" + "---|" * len(keys))
     for row in rows:
-        print("| " + " | ".join(f"{v:.4g}" if isinstance(v, float) else str(v)
-                                for v in row.values()) + " |")
+        print(
+            "| "
+            + " | ".join(f"{v:.4g}" if isinstance(v, float) else str(v) for v in row.values())
+            + " |"
+        )
 
     fig, axes = plt.subplots(1, 2, figsize=(9, 3.5))
     for prob, row in zip(problems, rows, strict=True):
         for ax, name in zip(axes, ("top_skin_thickness", "bottom_skin_thickness"), strict=True):
-            ax.step(np.arange(1, 9), prob.get_val(name, units="mm"), where="mid",
-                    label=row["case"])
+            ax.step(np.arange(1, 9), prob.get_val(name, units="mm"), where="mid", label=row["case"])
             ax.set_title(name.replace("_", " "))
             ax.set_xlabel("bay (root to tip)")
             ax.set_ylabel("thickness [mm]")
@@ -111,8 +123,12 @@ def main(argv=None):
 
     fig, ax = plt.subplots(figsize=(5, 3.5))
     for prob, row in zip(problems, rows, strict=True):
-        ax.plot(np.arange(1, 9), prob.get_val("plus_3g.von_mises_stress", units="MPa").max(axis=1),
-                "o-", label=f"+3g, {row['case']}")
+        ax.plot(
+            np.arange(1, 9),
+            prob.get_val("plus_3g.von_mises_stress", units="MPa").max(axis=1),
+            "o-",
+            label=f"+3g, {row['case']}",
+        )
     ax.axhline(350.0, color="k", ls="--", label="allowable")
     ax.set_xlabel("element (root to tip)")
     ax.set_ylabel("max von Mises stress [MPa]")

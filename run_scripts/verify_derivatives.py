@@ -33,8 +33,9 @@ def jacobian(prob, method=None, step=None):
         totals = prob.compute_totals(driver_scaling=True, return_format="array")
         return np.asarray(totals)
     kwargs = {"form": "forward"} if method == "fd" else {}
-    data = prob.check_totals(method=method, step=step, out_stream=None, driver_scaling=True,
-                             **kwargs)
+    data = prob.check_totals(
+        method=method, step=step, out_stream=None, driver_scaling=True, **kwargs
+    )
     of = list(prob.model.get_objectives()) + list(prob.model.get_constraints())
     wrt = list(prob.model.get_design_vars())
     rows = []
@@ -46,10 +47,12 @@ def jacobian(prob, method=None, step=None):
 def main(argv=None):
     """Compare the adjoint totals with finite differences of each step and complex step."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--steps", type=float, nargs="+",
-                        default=[1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7])
-    parser.add_argument("--out", default="derivative_verification",
-                        help="output folder for the PNG and the numbers")
+    parser.add_argument(
+        "--steps", type=float, nargs="+", default=[1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7]
+    )
+    parser.add_argument(
+        "--out", default="derivative_verification", help="output folder for the PNG and the numbers"
+    )
     args = parser.parse_args(argv)
 
     prob = om.Problem(reports=False)
@@ -65,14 +68,17 @@ def main(argv=None):
         t0 = time.perf_counter()
         fd = jacobian(prob, "fd", step)
         errors.append(np.linalg.norm(fd - adjoint) / norm)
-        print(f"step {step:8.1e}: relative error {errors[-1]:.3e} "
-              f"({time.perf_counter() - t0:.1f} s)")
+        print(
+            f"step {step:8.1e}: relative error {errors[-1]:.3e} ({time.perf_counter() - t0:.1f} s)"
+        )
     cs = jacobian(prob, "cs")
     cs_error = np.linalg.norm(cs - adjoint) / norm
     significant = np.abs(adjoint) > 1e-6 * np.abs(adjoint).max()
     entrywise = np.max(np.abs(cs - adjoint)[significant] / np.abs(adjoint)[significant])
-    print(f"complex step: relative error {cs_error:.3e}; largest entry-wise relative error "
-          f"{entrywise:.3e} over {significant.sum()} entries above 1e-6 of the largest")
+    print(
+        f"complex step: relative error {cs_error:.3e}; largest entry-wise relative error "
+        f"{entrywise:.3e} over {significant.sum()} entries above 1e-6 of the largest"
+    )
 
     fig, ax = plt.subplots(figsize=(5, 3.5))
     ax.loglog(args.steps, errors, "o-", label="forward FD vs adjoint")
@@ -85,9 +91,13 @@ def main(argv=None):
     fig.tight_layout()
     path = os.path.join(args.out, "derivative_verification.png")
     fig.savefig(path, dpi=150)
-    np.savetxt(os.path.join(args.out, "derivative_verification.csv"),
-               np.column_stack([args.steps, errors]), delimiter=",",
-               header="step,relative_error", comments="")
+    np.savetxt(
+        os.path.join(args.out, "derivative_verification.csv"),
+        np.column_stack([args.steps, errors]),
+        delimiter=",",
+        header="step,relative_error",
+        comments="",
+    )
     print(f"wrote {path}")
 
 

@@ -24,8 +24,10 @@ HAVE_IPOPT = _have_ipopt()
 # requests the ``ipopt`` fixture instead (a marker on a fixture has no effect).
 def pytest_configure(config):
     config.addinivalue_line(
-        "markers", "requires_ipopt: runs IPOPT; skipped when the cyipopt module is missing "
-                   "(pip install 'lpc-mdo[ipopt]')")
+        "markers",
+        "requires_ipopt: runs IPOPT; skipped when the cyipopt module is missing "
+        "(pip install 'lpc-mdo[ipopt]')",
+    )
 
 
 def pytest_runtest_setup(item):

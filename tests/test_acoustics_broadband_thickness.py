@@ -25,13 +25,13 @@ STATIONS = np.linspace(0.2 * RADIUS + 0.01, RADIUS - 0.01, NRAD) / RADIUS
 CODE_WEIGHTS = np.full(NRAD, 0.8 / (NRAD - 1))
 CHORD = np.linspace(0.3, 0.1, NRAD)
 OMEGA = RPM * np.pi / 30.0
-THRUST = 0.014977 * RHO * np.pi * RADIUS**2 * (OMEGA * RADIUS)**2
+THRUST = 0.014977 * RHO * np.pi * RADIUS**2 * (OMEGA * RADIUS) ** 2
 DIST, ELEV = 80.0, np.radians(15.0)
 
 
 def _run(comp, values):
     prob = om.Problem(reports=False)
-    prob.model.add_subsystem('comp', comp, promotes=['*'])
+    prob.model.add_subsystem("comp", comp, promotes=["*"])
     prob.setup()
     for name, val in values.items():
         prob.set_val(name, val)
@@ -41,14 +41,24 @@ def _run(comp, values):
 
 def _gill_lee(weights):
     comp = GillLeeBroadbandComp(num_radial=NRAD, radial_stations=STATIONS, radial_weights=weights)
-    prob = _run(comp, {'radius': RADIUS, 'rpm': RPM, 'thrust': THRUST, 'chord': CHORD,
-                       'density': RHO, 'speed_of_sound': SOUND, 'distance': DIST,
-                       'axial_distance': -DIST * np.sin(ELEV)})
-    spl = prob.get_val('broadband_spl')[0]
+    prob = _run(
+        comp,
+        {
+            "radius": RADIUS,
+            "rpm": RPM,
+            "thrust": THRUST,
+            "chord": CHORD,
+            "density": RHO,
+            "speed_of_sound": SOUND,
+            "distance": DIST,
+            "axial_distance": -DIST * np.sin(ELEV),
+        },
+    )
+    spl = prob.get_val("broadband_spl")[0]
     return energetic_sum(spl), energetic_sum(spl + a_weighting(comp.band_frequencies))
 
 
-@pytest.mark.parametrize('weights, tol', [(CODE_WEIGHTS, 0.01), (None, 1.0)])
+@pytest.mark.parametrize("weights, tol", [(CODE_WEIGHTS, 0.01), (None, 1.0)])
 def test_gill_lee_reference_case(weights, tol):
     # Reference: Gill-Lee OASPL 77.76 dB unweighted and 78.33 dBA A-weighted per band (docs theory/acoustics ).
     # With the code's radial weights the spectrum must match to 0.01 dB (the page's rounding);
@@ -59,15 +69,25 @@ def test_gill_lee_reference_case(weights, tol):
 
 
 def _thickness(tc, weights=CODE_WEIGHTS):
-    prob = _run(BarryMagliozziThicknessComp(num_radial=NRAD, radial_stations=STATIONS,
-                                            radial_weights=weights), {
-        'radius': RADIUS, 'rpm': RPM, 'chord': CHORD, 'thickness_to_chord': tc, 'density': RHO,
-        'speed_of_sound': SOUND, 'axial_distance': -DIST * np.sin(ELEV),
-        'inplane_distance': DIST * np.cos(ELEV)})
-    return prob.get_val('thickness_spl')[0]
+    prob = _run(
+        BarryMagliozziThicknessComp(
+            num_radial=NRAD, radial_stations=STATIONS, radial_weights=weights
+        ),
+        {
+            "radius": RADIUS,
+            "rpm": RPM,
+            "chord": CHORD,
+            "thickness_to_chord": tc,
+            "density": RHO,
+            "speed_of_sound": SOUND,
+            "axial_distance": -DIST * np.sin(ELEV),
+            "inplane_distance": DIST * np.cos(ELEV),
+        },
+    )
+    return prob.get_val("thickness_spl")[0]
 
 
-@pytest.mark.parametrize('tc, reference', [(0.12 * CHORD, 52.36), (np.full(NRAD, 0.12), 67.28)])
+@pytest.mark.parametrize("tc, reference", [(0.12 * CHORD, 52.36), (np.full(NRAD, 0.12), 67.28)])
 def test_barry_magliozzi_reference_cases(tc, reference):
     # Reference: BM thickness noise of modes 1..3 summed, 52.36 dB with ex_lpc's
     # thickness_to_chord = 0.12 * chord (quirk Q16, passed here as input data) and 67.28 dB with
@@ -76,26 +96,36 @@ def test_barry_magliozzi_reference_cases(tc, reference):
     # with that quirk a transcription gives 52.36 and 67.28 exactly.
     total = energetic_sum(_thickness(tc))
     assert abs(total - reference) < 1.0
-    assert 0.1 < total - reference < 0.2          # the known Q15 offset, documented
+    assert 0.1 < total - reference < 0.2  # the known Q15 offset, documented
 
 
 def test_barry_magliozzi_scales_with_thickness_and_distance():
     # P_m is linear in the section area 0.6853 c**2 t/c: doubling t/c adds 20 log10 2 = 6.0206 dB
     # to every mode (exact algebra, 1e-9 dB).
     base = _thickness(np.full(NRAD, 0.06))
-    assert_near_equal(_thickness(np.full(NRAD, 0.12)) - base, np.full(3, 20 * np.log10(2.0)),
-                      tolerance=1e-9)
+    assert_near_equal(
+        _thickness(np.full(NRAD, 0.12)) - base, np.full(3, 20 * np.log10(2.0)), tolerance=1e-9
+    )
 
 
-@pytest.mark.parametrize('num_rotors, reference', [(1, 78.34), (8, 87.37)])
+@pytest.mark.parametrize("num_rotors, reference", [(1, 78.34), (8, 87.37)])
 def test_total_reference_case(num_rotors, reference):
     # docs theory/acoustics  totals: one rotor 78.34 dBA, 8 identical co-located rotors 87.37 dBA. The page's
     # tonal part carries code quirks (Q13, Q17, Q18) and BEM loads we do not have; here the loads
     # come from thrust 4863.5 N and torque 803.4 N*m (docs theory/rotors 'Validation') with the assumed hover shape. The
     # broadband part dominates by more than 20 dB, so the total must agree to 0.1 dB.
-    res = rotor_noise([RADIUS] * num_rotors, [RPM] * num_rotors, [4863.5] * num_rotors, CHORD,
-                      torque=803.4, radial_stations=STATIONS, radial_weights=CODE_WEIGHTS,
-                      density=RHO, speed_of_sound=SOUND, observer_distance=DIST,
-                      observer_elevation_deg=15.0)
-    assert res['broadband_oaspl_a'][0] > res['tonal_spl_a'][0] + 20.0
-    assert abs(res['total_spl_a'] - reference) < 0.1
+    res = rotor_noise(
+        [RADIUS] * num_rotors,
+        [RPM] * num_rotors,
+        [4863.5] * num_rotors,
+        CHORD,
+        torque=803.4,
+        radial_stations=STATIONS,
+        radial_weights=CODE_WEIGHTS,
+        density=RHO,
+        speed_of_sound=SOUND,
+        observer_distance=DIST,
+        observer_elevation_deg=15.0,
+    )
+    assert res["broadband_oaspl_a"][0] > res["tonal_spl_a"][0] + 20.0
+    assert abs(res["total_spl_a"] - reference) < 0.1

@@ -11,15 +11,17 @@ from lpc_mdo.components.acoustics.observer import ObserverGeometryComp, Observer
 def _geometry(hub, direction, observer, velocity=(0.0, 0.0, 0.0), a=340.0, rotation=None):
     hub = np.atleast_2d(hub)
     prob = om.Problem(reports=False)
-    prob.model.add_subsystem('g', ObserverGeometryComp(num_rotors=hub.shape[0],
-                                                       rotation_direction=rotation),
-                             promotes=['*'])
+    prob.model.add_subsystem(
+        "g",
+        ObserverGeometryComp(num_rotors=hub.shape[0], rotation_direction=rotation),
+        promotes=["*"],
+    )
     prob.setup()
-    prob.set_val('hub_position', hub)
-    prob.set_val('thrust_direction', np.broadcast_to(direction, hub.shape))
-    prob.set_val('observer_position', observer)
-    prob.set_val('flight_velocity', velocity)
-    prob.set_val('speed_of_sound', a)
+    prob.set_val("hub_position", hub)
+    prob.set_val("thrust_direction", np.broadcast_to(direction, hub.shape))
+    prob.set_val("observer_position", observer)
+    prob.set_val("flight_velocity", velocity)
+    prob.set_val("speed_of_sound", a)
     prob.run_model()
     return prob
 
@@ -29,12 +31,12 @@ def test_default_observer_is_paper_hover_observer():
     # vehicle is at (70.71, 0, -70.71) m, i.e. the observer is at centroid + (-70.71, 0, 70.71).
     hubs = np.array([[1.0, -5.0, -1.0], [6.0, -5.0, -1.5], [1.0, 5.0, -1.0], [6.0, 5.0, -1.5]])
     prob = om.Problem(reports=False)
-    prob.model.add_subsystem('p', ObserverPositionComp(num_rotors=4), promotes=['*'])
+    prob.model.add_subsystem("p", ObserverPositionComp(num_rotors=4), promotes=["*"])
     prob.setup()
-    prob.set_val('hub_position', hubs)
+    prob.set_val("hub_position", hubs)
     prob.run_model()
     expected = hubs.mean(axis=0) + 100.0 * np.array([-np.sqrt(0.5), 0.0, np.sqrt(0.5)])
-    assert_near_equal(prob.get_val('observer_position'), expected, tolerance=1e-12)
+    assert_near_equal(prob.get_val("observer_position"), expected, tolerance=1e-12)
 
 
 def test_hover_geometry_and_azimuth_convention():
@@ -43,29 +45,31 @@ def test_hover_geometry_and_azimuth_convention():
     # of the BladeAD rotor frame, so cos(phi_o) = 1 (exact geometry, 1e-10).
     c = 100.0 * np.sqrt(0.5)
     prob = _geometry([0.0, 0.0, 0.0], [0.0, 0.0, -1.0], [-c, 0.0, c])
-    assert_near_equal(prob.get_val('distance'), [100.0], tolerance=1e-12)
-    assert_near_equal(prob.get_val('axial_distance'), [-c], tolerance=1e-12)
-    assert_near_equal(prob.get_val('inplane_distance'), [c], tolerance=1e-10)
-    assert_near_equal(prob.get_val('convected_distance'), [100.0], tolerance=1e-12)
-    assert_near_equal(prob.get_val('observer_azimuth_cos'), [1.0], tolerance=1e-10)
-    assert abs(prob.get_val('observer_azimuth_sin')[0]) < 1e-12
+    assert_near_equal(prob.get_val("distance"), [100.0], tolerance=1e-12)
+    assert_near_equal(prob.get_val("axial_distance"), [-c], tolerance=1e-12)
+    assert_near_equal(prob.get_val("inplane_distance"), [c], tolerance=1e-10)
+    assert_near_equal(prob.get_val("convected_distance"), [100.0], tolerance=1e-12)
+    assert_near_equal(prob.get_val("observer_azimuth_cos"), [1.0], tolerance=1e-10)
+    assert abs(prob.get_val("observer_azimuth_sin")[0]) < 1e-12
     # Observer on the right (+y): psi = 90 deg for a rotor turning counter-clockwise seen from
     # above (rotation_direction +1, advancing side on the right), -90 deg for -1.
     for rotation, sign in ((1, 1.0), (-1, -1.0)):
         prob = _geometry([0.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, c, c], rotation=(rotation,))
-        assert_near_equal(prob.get_val('observer_azimuth_sin'), [sign], tolerance=1e-10)
+        assert_near_equal(prob.get_val("observer_azimuth_sin"), [sign], tolerance=1e-10)
 
 
 def test_doppler_distance():
     # docs theory/acoustics 'Tonal loading noise': r1 = S (1 - V.P/(S a)). Hub moving at 50 m/s straight towards an observer 100 m
     # ahead: r1 = 100 (1 - 50/340); moving away: 100 (1 + 50/340). Exact, 1e-12.
     for sign in (1.0, -1.0):
-        prob = _geometry([0.0, 0.0, 0.0], [0.0, 0.0, -1.0], [100.0, 0.0, 0.0],
-                         velocity=(sign * 50.0, 0.0, 0.0))
-        assert_near_equal(prob.get_val('convected_distance'), [100.0 * (1 - sign * 50 / 340)],
-                          tolerance=1e-12)
-        assert_near_equal(prob.get_val('inplane_speed'), [50.0], tolerance=1e-12)
-        assert abs(prob.get_val('axial_speed')[0]) < 1e-12
+        prob = _geometry(
+            [0.0, 0.0, 0.0], [0.0, 0.0, -1.0], [100.0, 0.0, 0.0], velocity=(sign * 50.0, 0.0, 0.0)
+        )
+        assert_near_equal(
+            prob.get_val("convected_distance"), [100.0 * (1 - sign * 50 / 340)], tolerance=1e-12
+        )
+        assert_near_equal(prob.get_val("inplane_speed"), [50.0], tolerance=1e-12)
+        assert abs(prob.get_val("axial_speed")[0]) < 1e-12
 
 
 def test_bad_inputs_raise_clear_errors():
@@ -74,7 +78,6 @@ def test_bad_inputs_raise_clear_errors():
     with pytest.raises(om.AnalysisError, match="'thrust_direction"):
         _geometry([0.0, 0.0, 0.0], [0.0, 0.0, 0.0], [10.0, 0.0, 0.0])
     with pytest.raises(om.AnalysisError, match="speed of sound"):
-        _geometry([0.0, 0.0, 0.0], [0.0, 0.0, -1.0], [100.0, 0.0, 0.0],
-                  velocity=(400.0, 0.0, 0.0))
+        _geometry([0.0, 0.0, 0.0], [0.0, 0.0, -1.0], [100.0, 0.0, 0.0], velocity=(400.0, 0.0, 0.0))
     with pytest.raises(ValueError, match="rotation_direction"):
         _geometry([0.0, 0.0, 0.0], [0.0, 0.0, -1.0], [100.0, 0.0, 0.0], rotation=(2,))

@@ -27,14 +27,18 @@ def _gutin_spl(num_blades, m, rpm, thrust, torque, r_eff, distance, theta, a):
     """
     omega = rpm * np.pi / 30.0
     n = m * num_blades
-    p_rms = (n * omega / (2.0 * np.sqrt(2.0) * np.pi * a * distance)
-             * np.abs(thrust * np.cos(theta) - torque * a / (omega * r_eff**2))
-             * np.abs(jv(n, n * omega * r_eff * np.sin(theta) / a)))
-    return 10.0 * np.log10((p_rms / P_REF)**2 + SPL_FLOOR)     # with the documented floor
+    p_rms = (
+        n
+        * omega
+        / (2.0 * np.sqrt(2.0) * np.pi * a * distance)
+        * np.abs(thrust * np.cos(theta) - torque * a / (omega * r_eff**2))
+        * np.abs(jv(n, n * omega * r_eff * np.sin(theta) / a))
+    )
+    return 10.0 * np.log10((p_rms / P_REF) ** 2 + SPL_FLOOR)  # with the documented floor
 
 
-@pytest.mark.parametrize('num_blades', [2, 3, 5])
-@pytest.mark.parametrize('path', ['unsteady', 'sears'])
+@pytest.mark.parametrize("num_blades", [2, 3, 5])
+@pytest.mark.parametrize("path", ["unsteady", "sears"])
 def test_reduces_to_gutin_in_hover(num_blades, path):
     # Steady loading concentrated at one station r_e = 0.8 R (loads per span = T/(B w R) so the
     # radial quadrature returns T and Q exactly): Lowson-Ollerhead must equal Gutin's closed form
@@ -47,54 +51,217 @@ def test_reduces_to_gutin_in_hover(num_blades, path):
     i = int(np.argmin(np.abs(rbar - 0.8)))
     r_eff = rbar[i] * radius
     prob = om.Problem(reports=False)
-    prob.model.add_subsystem('comp', LowsonLoadingNoiseComp(
-        num_rotors=nr, num_blades=num_blades, num_radial=nrad, num_harmonics=3,
-        loading_path=path), promotes=['*'])
+    prob.model.add_subsystem(
+        "comp",
+        LowsonLoadingNoiseComp(
+            num_rotors=nr,
+            num_blades=num_blades,
+            num_radial=nrad,
+            num_harmonics=3,
+            loading_path=path,
+        ),
+        promotes=["*"],
+    )
     prob.setup()
     t_span = np.zeros((nr, nrad, 1))
     d_span = np.zeros((nr, nrad, 1))
     t_span[:, i] = thrust / (num_blades * w[i] * radius)
     d_span[:, i] = torque / (num_blades * w[i] * radius * r_eff)
-    prob.set_val('thrust_cos_coeff', t_span)
-    prob.set_val('drag_cos_coeff', d_span)
-    prob.set_val('radius', np.full(nr, radius))
-    prob.set_val('rpm', np.full(nr, rpm))
-    prob.set_val('speed_of_sound', a)
-    prob.set_val('axial_distance', dist * np.cos(thetas))
-    prob.set_val('inplane_distance', dist * np.sin(thetas))
-    prob.set_val('convected_distance', np.full(nr, dist))
+    prob.set_val("thrust_cos_coeff", t_span)
+    prob.set_val("drag_cos_coeff", d_span)
+    prob.set_val("radius", np.full(nr, radius))
+    prob.set_val("rpm", np.full(nr, rpm))
+    prob.set_val("speed_of_sound", a)
+    prob.set_val("axial_distance", dist * np.cos(thetas))
+    prob.set_val("inplane_distance", dist * np.sin(thetas))
+    prob.set_val("convected_distance", np.full(nr, dist))
     prob.run_model()
-    expected = np.array([[_gutin_spl(num_blades, m, rpm, thrust, torque, r_eff, dist, th, a)
-                          for m in (1, 2, 3)] for th in thetas])
-    assert np.max(np.abs(prob.get_val('loading_spl') - expected)) < 1e-9
+    expected = np.array(
+        [
+            [_gutin_spl(num_blades, m, rpm, thrust, torque, r_eff, dist, th, a) for m in (1, 2, 3)]
+            for th in thetas
+        ]
+    )
+    assert np.max(np.abs(prob.get_val("loading_spl") - expected)) < 1e-9
 
 
 # Kvurt-Stalnov rotor in hover (docs theory/acoustics 'Validation'; data of
 # lsdo_acoustics main, core/models/tonal/Lowson/tests/test_Lowson_hover_verif.py): B = 3,
 # R = 0.3556 m, 1500 rpm, rho = 1.225, a = 340.3, 40 stations rbar = linspace(0.21, 0.99), m = 1.
-KS_CHORD = np.array([
-    0.0491, 0.0511, 0.0529, 0.0550, 0.0571, 0.0581, 0.0581, 0.0579, 0.0581, 0.0583, 0.0581,
-    0.0576, 0.0571, 0.0567, 0.0562, 0.0554, 0.0545, 0.0537, 0.0529, 0.0521, 0.0510, 0.0499,
-    0.0489, 0.0479, 0.0467, 0.0454, 0.0441, 0.0429, 0.0416, 0.0402, 0.0388, 0.0373, 0.0358,
-    0.0343, 0.0328, 0.0310, 0.0296, 0.0271, 0.0238, 0.0124])
-KS_LAMBDA_I = np.array([
-    0.067510, 0.066167, 0.066825, 0.068136, 0.069702, 0.071347, 0.072980, 0.074549, 0.076028,
-    0.077399, 0.078652, 0.079780, 0.080780, 0.081651, 0.082391, 0.082999, 0.083478, 0.083825,
-    0.084042, 0.084127, 0.084082, 0.083906, 0.083598, 0.083157, 0.082584, 0.081878, 0.081037,
-    0.080060, 0.078948, 0.077700, 0.076319, 0.074807, 0.073175, 0.071434, 0.069614, 0.067770,
-    0.066009, 0.064569, 0.064084, 0.067274])
-KS_CL = np.array([
-    0.650342, 0.956401, 1.090936, 1.163009, 1.203194, 1.224505, 1.233513, 1.233939, 1.228004,
-    1.217168, 1.202426, 1.184479, 1.163851, 1.140926, 1.116029, 1.089405, 1.061251, 1.031740,
-    1.001031, 0.969240, 0.936476, 0.902841, 0.868424, 0.833295, 0.797525, 0.761172, 0.724300,
-    0.686955, 0.649177, 0.610993, 0.572421, 0.533463, 0.494077, 0.454196, 0.413648, 0.372091,
-    0.328847, 0.282429, 0.228851, 0.150922])
+KS_CHORD = np.array(
+    [
+        0.0491,
+        0.0511,
+        0.0529,
+        0.0550,
+        0.0571,
+        0.0581,
+        0.0581,
+        0.0579,
+        0.0581,
+        0.0583,
+        0.0581,
+        0.0576,
+        0.0571,
+        0.0567,
+        0.0562,
+        0.0554,
+        0.0545,
+        0.0537,
+        0.0529,
+        0.0521,
+        0.0510,
+        0.0499,
+        0.0489,
+        0.0479,
+        0.0467,
+        0.0454,
+        0.0441,
+        0.0429,
+        0.0416,
+        0.0402,
+        0.0388,
+        0.0373,
+        0.0358,
+        0.0343,
+        0.0328,
+        0.0310,
+        0.0296,
+        0.0271,
+        0.0238,
+        0.0124,
+    ]
+)
+KS_LAMBDA_I = np.array(
+    [
+        0.067510,
+        0.066167,
+        0.066825,
+        0.068136,
+        0.069702,
+        0.071347,
+        0.072980,
+        0.074549,
+        0.076028,
+        0.077399,
+        0.078652,
+        0.079780,
+        0.080780,
+        0.081651,
+        0.082391,
+        0.082999,
+        0.083478,
+        0.083825,
+        0.084042,
+        0.084127,
+        0.084082,
+        0.083906,
+        0.083598,
+        0.083157,
+        0.082584,
+        0.081878,
+        0.081037,
+        0.080060,
+        0.078948,
+        0.077700,
+        0.076319,
+        0.074807,
+        0.073175,
+        0.071434,
+        0.069614,
+        0.067770,
+        0.066009,
+        0.064569,
+        0.064084,
+        0.067274,
+    ]
+)
+KS_CL = np.array(
+    [
+        0.650342,
+        0.956401,
+        1.090936,
+        1.163009,
+        1.203194,
+        1.224505,
+        1.233513,
+        1.233939,
+        1.228004,
+        1.217168,
+        1.202426,
+        1.184479,
+        1.163851,
+        1.140926,
+        1.116029,
+        1.089405,
+        1.061251,
+        1.031740,
+        1.001031,
+        0.969240,
+        0.936476,
+        0.902841,
+        0.868424,
+        0.833295,
+        0.797525,
+        0.761172,
+        0.724300,
+        0.686955,
+        0.649177,
+        0.610993,
+        0.572421,
+        0.533463,
+        0.494077,
+        0.454196,
+        0.413648,
+        0.372091,
+        0.328847,
+        0.282429,
+        0.228851,
+        0.150922,
+    ]
+)
 # H. Gill's MATLAB Lowson (Sears path, loading only), 37 angles from +90 to -90 deg [dB].
-KS_MATLAB = np.array([
-    56.090, 56.059, 55.960, 55.791, 55.551, 55.234, 54.837, 54.353, 53.774, 53.092, 52.300,
-    51.393, 50.375, 49.274, 48.161, 47.174, 46.520, 46.371, 46.727, 47.420, 48.259, 49.121,
-    49.950, 50.731, 51.464, 52.155, 52.806, 53.415, 53.975, 54.478, 54.919, 55.292, 55.594,
-    55.824, 55.983, 56.071, 56.090])
+KS_MATLAB = np.array(
+    [
+        56.090,
+        56.059,
+        55.960,
+        55.791,
+        55.551,
+        55.234,
+        54.837,
+        54.353,
+        53.774,
+        53.092,
+        52.300,
+        51.393,
+        50.375,
+        49.274,
+        48.161,
+        47.174,
+        46.520,
+        46.371,
+        46.727,
+        47.420,
+        48.259,
+        49.121,
+        49.950,
+        50.731,
+        51.464,
+        52.155,
+        52.806,
+        53.415,
+        53.975,
+        54.478,
+        54.919,
+        55.292,
+        55.594,
+        55.824,
+        55.983,
+        56.071,
+        56.090,
+    ]
+)
 
 
 def test_kvurt_stalnov_hover_directivity_against_matlab():
@@ -110,37 +277,60 @@ def test_kvurt_stalnov_hover_directivity_against_matlab():
     radius, rpm, rho, a = 0.3556, 1500.0, 1.225, 340.3
     rbar = np.linspace(0.21, 0.99, nrad)
     phi = KS_LAMBDA_I / rbar
-    lift = 0.5 * rho * KS_CHORD * (radius * rpm * np.pi / 30.0)**2 * KS_CL
+    lift = 0.5 * rho * KS_CHORD * (radius * rpm * np.pi / 30.0) ** 2 * KS_CL
     theta = np.linspace(0.0, np.pi, nr)
     obs = 1.5 * np.column_stack([np.sin(theta), np.zeros(nr), np.cos(theta)])
 
-    prob = om.Problem(RotorNoiseGroup(num_rotors=nr, num_blades=3, num_radial=nrad,
-                                      radial_stations=rbar, num_harmonics=1, num_bands=1,
-                                      lowest_band_frequency=1000.0, observer_input='position'),
-                      reports=False)
+    prob = om.Problem(
+        RotorNoiseGroup(
+            num_rotors=nr,
+            num_blades=3,
+            num_radial=nrad,
+            radial_stations=rbar,
+            num_harmonics=1,
+            num_bands=1,
+            lowest_band_frequency=1000.0,
+            observer_input="position",
+        ),
+        reports=False,
+    )
     prob.setup()
-    prob.set_val('observer_position', np.zeros(3))
-    prob.set_val('hub_position', -obs)
-    prob.set_val('thrust_direction', np.tile([0.0, 0.0, 1.0], (nr, 1)))
-    prob.set_val('radius', np.full(nr, radius))
-    prob.set_val('rpm', np.full(nr, rpm))
-    prob.set_val('thrust', np.full(nr, 10.0))
-    prob.set_val('chord', np.tile(KS_CHORD, (nr, 1)))
-    prob.set_val('thrust_per_span', np.tile((lift * np.cos(phi))[None, :, None], (nr, 1, 1)))
-    prob.set_val('drag_per_span', np.tile((lift * np.sin(phi))[None, :, None], (nr, 1, 1)))
-    prob.set_val('inflow_angle', np.tile(phi[None, :, None], (nr, 1, 1)))
-    prob.set_val('density', rho)
-    prob.set_val('speed_of_sound', a)
+    prob.set_val("observer_position", np.zeros(3))
+    prob.set_val("hub_position", -obs)
+    prob.set_val("thrust_direction", np.tile([0.0, 0.0, 1.0], (nr, 1)))
+    prob.set_val("radius", np.full(nr, radius))
+    prob.set_val("rpm", np.full(nr, rpm))
+    prob.set_val("thrust", np.full(nr, 10.0))
+    prob.set_val("chord", np.tile(KS_CHORD, (nr, 1)))
+    prob.set_val("thrust_per_span", np.tile((lift * np.cos(phi))[None, :, None], (nr, 1, 1)))
+    prob.set_val("drag_per_span", np.tile((lift * np.sin(phi))[None, :, None], (nr, 1, 1)))
+    prob.set_val("inflow_angle", np.tile(phi[None, :, None], (nr, 1, 1)))
+    prob.set_val("density", rho)
+    prob.set_val("speed_of_sound", a)
     prob.run_model()
-    loading = prob.get_val('loading_spl')[:, 0]
+    loading = prob.get_val("loading_spl")[:, 0]
     assert np.max(np.abs(loading - KS_MATLAB)) < 1.0
     # The reference page's table (docs theory/acoustics 'Validation') at 0 / 90 / 180 deg from the axis: 56.09, 46.73,
     # 56.09 dB (on-axis and in-plane values are the same in either pairing); within 0.2 dB.
     assert np.max(np.abs(loading[[0, 18, 36]] - [56.09, 46.73, 56.09])) < 0.2
 
 
-def _lowson_quadrature(hub, n_hat, obs, rotation, rbar, weights, radius, rpm, a, num_blades, m,
-                       thrust_fn, drag_fn, num_psi=720):
+def _lowson_quadrature(
+    hub,
+    n_hat,
+    obs,
+    rotation,
+    rbar,
+    weights,
+    radius,
+    rpm,
+    a,
+    num_blades,
+    m,
+    thrust_fn,
+    drag_fn,
+    num_psi=720,
+):
     """
     Return the SPL of harmonic n = m B from a quadrature of the rotating-dipole integral.
 
@@ -167,8 +357,10 @@ def _lowson_quadrature(hub, n_hat, obs, rotation, rbar, weights, radius, rpm, a,
     tang = np.sin(psi)[:, None] * e_x + rotation * np.cos(psi)[:, None] * e_y
     total = 0.0
     for r_i, w_i in zip(rbar * radius, weights * radius, strict=True):
-        force = (-thrust_fn(r_i / radius, psi)[:, None] * n_hat
-                 + drag_fn(r_i / radius, psi)[:, None] * tang)
+        force = (
+            -thrust_fn(r_i / radius, psi)[:, None] * n_hat
+            + drag_fn(r_i / radius, psi)[:, None] * tang
+        )
         phase = np.exp(1j * n * (psi - omega * r_i * (pos @ x_hat) / a))
         total += w_i * np.mean((force @ x_hat) * phase)
     c_n = -1j * n * omega / (4.0 * np.pi * a * S) * total
@@ -176,7 +368,7 @@ def _lowson_quadrature(hub, n_hat, obs, rotation, rbar, weights, radius, rpm, a,
     return 10.0 * np.log10(amplitude**2 / 2.0 / P_REF**2)
 
 
-@pytest.mark.parametrize('rotation', [1, -1])
+@pytest.mark.parametrize("rotation", [1, -1])
 def test_unsteady_path_matches_radiation_integral(rotation):
     # Azimuthally varying loads (harmonics 0..3, 9 azimuths, eq. 20 solve exact), tilted thrust
     # axis and an observer off every symmetry plane: the model (observer geometry + eq. 19-20
@@ -191,31 +383,46 @@ def test_unsteady_path_matches_radiation_integral(rotation):
     rbar, w = radial_quadrature(nrad)
 
     def thrust_fn(rb, psi):
-        return 800.0 * rb * (1.0 + 0.3 * np.cos(psi) + 0.2 * np.sin(2 * psi)
-                             - 0.1 * np.cos(3 * psi))
+        return (
+            800.0 * rb * (1.0 + 0.3 * np.cos(psi) + 0.2 * np.sin(2 * psi) - 0.1 * np.cos(3 * psi))
+        )
 
     def drag_fn(rb, psi):
         return 90.0 * rb * (1.0 + 0.25 * np.sin(psi) + 0.1 * np.cos(2 * psi))
 
     psi_k = 2.0 * np.pi * np.arange(naz) / naz
-    prob = om.Problem(RotorNoiseGroup(num_rotors=1, num_blades=num_blades, num_radial=nrad,
-                                      num_azimuth=naz, num_harmonics=3, num_bands=1,
-                                      lowest_band_frequency=1000.0, loading_path='unsteady',
-                                      observer_input='position', rotation_direction=(rotation,)),
-                      reports=False)
+    prob = om.Problem(
+        RotorNoiseGroup(
+            num_rotors=1,
+            num_blades=num_blades,
+            num_radial=nrad,
+            num_azimuth=naz,
+            num_harmonics=3,
+            num_bands=1,
+            lowest_band_frequency=1000.0,
+            loading_path="unsteady",
+            observer_input="position",
+            rotation_direction=(rotation,),
+        ),
+        reports=False,
+    )
     prob.setup()
-    prob.set_val('hub_position', hub[None, :])
-    prob.set_val('thrust_direction', n_hat[None, :])
-    prob.set_val('observer_position', obs)
-    prob.set_val('radius', radius)
-    prob.set_val('rpm', rpm)
-    prob.set_val('speed_of_sound', a)
-    prob.set_val('thrust_per_span', thrust_fn(rbar[:, None], psi_k[None, :])[None])
-    prob.set_val('drag_per_span', drag_fn(rbar[:, None], psi_k[None, :])[None])
+    prob.set_val("hub_position", hub[None, :])
+    prob.set_val("thrust_direction", n_hat[None, :])
+    prob.set_val("observer_position", obs)
+    prob.set_val("radius", radius)
+    prob.set_val("rpm", rpm)
+    prob.set_val("speed_of_sound", a)
+    prob.set_val("thrust_per_span", thrust_fn(rbar[:, None], psi_k[None, :])[None])
+    prob.set_val("drag_per_span", drag_fn(rbar[:, None], psi_k[None, :])[None])
     prob.run_model()
-    expected = [_lowson_quadrature(hub, n_hat, obs, rotation, rbar, w, radius, rpm, a,
-                                   num_blades, m, thrust_fn, drag_fn) for m in (1, 2, 3)]
-    assert np.max(np.abs(prob.get_val('loading_spl')[0] - expected)) < 1e-6
+    expected = [
+        _lowson_quadrature(
+            hub, n_hat, obs, rotation, rbar, w, radius, rpm, a, num_blades, m, thrust_fn, drag_fn
+        )
+        for m in (1, 2, 3)
+    ]
+    assert np.max(np.abs(prob.get_val("loading_spl")[0] - expected)) < 1e-6
 
 
 def test_fourier_coefficients_recover_known_series():
@@ -223,19 +430,24 @@ def test_fourier_coefficients_recover_known_series():
     # exact solve) and at 16 azimuths (least squares with L = 3, exact for band-limited loads).
     for naz, L in ((9, 4), (16, 3)):
         psi = 2.0 * np.pi * np.arange(naz) / naz
-        a_true = np.array([5.0, 1.5, -0.7, 0.3, 0.0][:L + 1])
-        b_true = np.array([0.0, -0.4, 0.9, 0.2, 0.0][:L + 1])
+        a_true = np.array([5.0, 1.5, -0.7, 0.3, 0.0][: L + 1])
+        b_true = np.array([0.0, -0.4, 0.9, 0.2, 0.0][: L + 1])
         lam = np.arange(L + 1)
-        load = (a_true[None, :] * np.cos(np.outer(psi, lam))
-                + b_true[None, :] * np.sin(np.outer(psi, lam))).sum(axis=1)
+        load = (
+            a_true[None, :] * np.cos(np.outer(psi, lam))
+            + b_true[None, :] * np.sin(np.outer(psi, lam))
+        ).sum(axis=1)
         prob = om.Problem(reports=False)
-        prob.model.add_subsystem('f', LoadFourierComp(num_rotors=1, num_radial=1, num_azimuth=naz,
-                                                      num_load_harmonics=L), promotes=['*'])
+        prob.model.add_subsystem(
+            "f",
+            LoadFourierComp(num_rotors=1, num_radial=1, num_azimuth=naz, num_load_harmonics=L),
+            promotes=["*"],
+        )
         prob.setup()
-        prob.set_val('thrust_per_span', load.reshape(1, 1, naz))
+        prob.set_val("thrust_per_span", load.reshape(1, 1, naz))
         prob.run_model()
-        assert_near_equal(prob.get_val('thrust_cos_coeff')[0, 0], a_true, tolerance=1e-12)
-        assert np.max(np.abs(prob.get_val('thrust_sin_coeff')[0, 0] - b_true)) < 1e-12
+        assert_near_equal(prob.get_val("thrust_cos_coeff")[0, 0], a_true, tolerance=1e-12)
+        assert np.max(np.abs(prob.get_val("thrust_sin_coeff")[0, 0] - b_true)) < 1e-12
 
 
 def test_sears_function_closed_form():
@@ -255,22 +467,30 @@ def test_loading_path_switch_is_smooth():
     # docs theory/acoustics 'Tonal loading noise' path selection: weight of the unsteady path 0.5 tanh(100 (v - 0.1)) + 0.5; at the
     # threshold v = 0.1 m/s the level is the mean of the two paths (exact algebra, 1e-12 dB).
     levels = {}
-    for path, speed in (('sears', 0.1), ('unsteady', 0.1), ('auto', 0.1)):
+    for path, speed in (("sears", 0.1), ("unsteady", 0.1), ("auto", 0.1)):
         prob = om.Problem(reports=False)
-        prob.model.add_subsystem('comp', LowsonLoadingNoiseComp(
-            num_rotors=1, num_radial=4, num_load_harmonics=1, num_gust_harmonics=2,
-            loading_path=path), promotes=['*'])
+        prob.model.add_subsystem(
+            "comp",
+            LowsonLoadingNoiseComp(
+                num_rotors=1,
+                num_radial=4,
+                num_load_harmonics=1,
+                num_gust_harmonics=2,
+                loading_path=path,
+            ),
+            promotes=["*"],
+        )
         prob.setup()
-        prob.set_val('radius', 1.5)
-        prob.set_val('rpm', 1200.0)
-        prob.set_val('axial_distance', -60.0)
-        prob.set_val('inplane_distance', 70.0)
-        prob.set_val('convected_distance', 92.2)
-        prob.set_val('inplane_speed', speed)
-        prob.set_val('thrust_cos_coeff', np.array([[[800.0, 100.0]] * 4]))
-        prob.set_val('drag_cos_coeff', np.array([[[80.0, 10.0]] * 4]))
-        if path != 'unsteady':
-            prob.set_val('thrust_gust_cos', np.full((1, 4, 2), 20.0))
+        prob.set_val("radius", 1.5)
+        prob.set_val("rpm", 1200.0)
+        prob.set_val("axial_distance", -60.0)
+        prob.set_val("inplane_distance", 70.0)
+        prob.set_val("convected_distance", 92.2)
+        prob.set_val("inplane_speed", speed)
+        prob.set_val("thrust_cos_coeff", np.array([[[800.0, 100.0]] * 4]))
+        prob.set_val("drag_cos_coeff", np.array([[[80.0, 10.0]] * 4]))
+        if path != "unsteady":
+            prob.set_val("thrust_gust_cos", np.full((1, 4, 2), 20.0))
         prob.run_model()
-        levels[path] = prob.get_val('loading_spl')[0]
-    assert np.max(np.abs(levels['auto'] - 0.5 * (levels['sears'] + levels['unsteady']))) < 1e-12
+        levels[path] = prob.get_val("loading_spl")[0]
+    assert np.max(np.abs(levels["auto"] - 0.5 * (levels["sears"] + levels["unsteady"]))) < 1e-12

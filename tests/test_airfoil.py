@@ -34,10 +34,10 @@ def test_naca0012_at_re_1e6_lift_slope_zero_lift_angle_and_minimum_drag():
     a = np.radians(np.linspace(-2.0, 2.0, 9))
     v = polar.evaluate(a, 1e6, 0.0)
     cl_alpha = np.polyfit(a, v.cl, 1)[0]
-    assert cl_alpha == pytest.approx(2 * np.pi, rel=0.10)        # measured 6.15 /rad (-2 %)
-    assert abs(zero_lift_angle(polar, 1e6, 0.0)) < 1e-12        # symmetric section: exactly 0
+    assert cl_alpha == pytest.approx(2 * np.pi, rel=0.10)  # measured 6.15 /rad (-2 %)
+    assert abs(zero_lift_angle(polar, 1e6, 0.0)) < 1e-12  # symmetric section: exactly 0
     cd_min = polar.evaluate(np.radians(np.linspace(-5, 5, 1001)), 1e6, 0.0).cd.min()
-    assert cd_min == pytest.approx(0.0055, rel=0.20)             # measured 0.00540 (-1.8 %)
+    assert cd_min == pytest.approx(0.0055, rel=0.20)  # measured 0.00540 (-1.8 %)
 
 
 @pytest.mark.parametrize("name", ["ls413", "ls417"])
@@ -45,7 +45,7 @@ def test_cambered_wing_airfoils_have_negative_zero_lift_angle(name):
     polar = get_polar(name)
     for re in (1e6, 5e6):
         a0 = np.degrees(zero_lift_angle(polar, re, 0.2))
-        assert -6.0 < a0 < -2.5                                  # about -4.3 deg
+        assert -6.0 < a0 < -2.5  # about -4.3 deg
 
 
 def test_mach_dependence_is_prandtl_glauert_in_attached_flow():
@@ -96,7 +96,7 @@ def test_derivatives_match_complex_step_everywhere(name):
     rng = np.random.default_rng(1)
     n = 4000
     a = rng.uniform(-2 * np.pi, 2 * np.pi, n)
-    re = 10 ** rng.uniform(4.5, 7.5, n)          # includes values outside the table (clamped)
+    re = 10 ** rng.uniform(4.5, 7.5, n)  # includes values outside the table (clamped)
     m = rng.uniform(0.0, 0.7, n)
     v = polar.evaluate(a, re, m)
     h = 1e-30
@@ -106,15 +106,16 @@ def test_derivatives_match_complex_step_everywhere(name):
         args[arg] = args[arg] + 1j * step
         cs = polar.evaluate(*args)
         for f in ("cl", "cd"):
-            np.testing.assert_allclose(getattr(cs, f).imag / step,
-                                       getattr(v, f"d{f}_d{field}"), rtol=1e-9, atol=1e-12)
+            np.testing.assert_allclose(
+                getattr(cs, f).imag / step, getattr(v, f"d{f}_d{field}"), rtol=1e-9, atol=1e-12
+            )
     assert np.all(v.cd > 0.0)
 
 
 def test_table_slice_is_reproduced_at_grid_conditions():
     polar = get_polar("naca0012")
     data = np.load(airfoil_table_path("naca0012"))
-    j, k = 4, 2                                     # Re 1e6, M 0.2
+    j, k = 4, 2  # Re 1e6, M 0.2
     a = np.radians(data["alpha_deg"])
     lo, hi = polar.alpha_stall[:, j, k]
     inside = (a > lo + polar.blend) & (a < hi - polar.blend)
@@ -152,7 +153,7 @@ def test_stall_points_are_the_first_dominant_extrema_of_each_slice():
         i = int(np.flatnonzero(np.isclose(a, hi))[0])
         ahead = (a > hi) & (a <= hi + 3.0)
         assert cl[i] >= cl[ahead].max()
-        assert np.all(np.diff(cl[(a >= 0) & (a <= hi)]) > 0.0)     # rising up to it
+        assert np.all(np.diff(cl[(a >= 0) & (a <= hi)]) > 0.0)  # rising up to it
     # symmetric section: symmetric stall angles; stall angle grows with Re
     np.testing.assert_allclose(polar.alpha_stall[0], -polar.alpha_stall[1])
     assert np.all(np.diff(polar.alpha_stall[1, :, 0]) >= 0.0)
@@ -183,10 +184,14 @@ def test_user_table_as_array_dict_and_text_file(tmp_path):
     from_array = get_polar(np.column_stack([a_deg, cl, cd]))
     from_dict = get_polar({"alpha_deg": a_deg, "cl": cl, "cd": cd, "name": "lq"})
     path = tmp_path / "polar.txt"
-    lines = ["  XFOIL-like header", "   alpha    CL        CD       CDp       CM",
-             "  ------ -------- --------- --------- --------"]
-    lines += [f"{x:8.3f} {y:9.5f} {z:9.6f} 0.0 -0.05" for x, y, z in zip(a_deg, cl, cd,
-                                                                         strict=True)]
+    lines = [
+        "  XFOIL-like header",
+        "   alpha    CL        CD       CDp       CM",
+        "  ------ -------- --------- --------- --------",
+    ]
+    lines += [
+        f"{x:8.3f} {y:9.5f} {z:9.6f} 0.0 -0.05" for x, y, z in zip(a_deg, cl, cd, strict=True)
+    ]
     path.write_text("\n".join(lines) + "\n")
     from_file = get_polar(path)
     a = np.radians(np.array([-7.0, 0.0, 3.3, 9.0]))
@@ -207,8 +212,14 @@ def test_user_table_as_array_dict_and_text_file(tmp_path):
 def test_npz_user_table_with_reynolds_axis(tmp_path):
     shipped = np.load(airfoil_table_path("ls417"))
     path = tmp_path / "my_airfoil.npz"
-    np.savez(path, alpha_deg=shipped["alpha_deg"], reynolds=shipped["reynolds"],
-             mach=shipped["mach"], cl=shipped["cl"], cd=shipped["cd"])
+    np.savez(
+        path,
+        alpha_deg=shipped["alpha_deg"],
+        reynolds=shipped["reynolds"],
+        mach=shipped["mach"],
+        cl=shipped["cl"],
+        cd=shipped["cd"],
+    )
     mine, ref = get_polar(str(path)), get_polar("ls417")
     a = np.radians([-3.0, 5.0, 40.0])
     np.testing.assert_allclose(mine.evaluate(a, 2.5e6, 0.15).cl, ref.evaluate(a, 2.5e6, 0.15).cl)
@@ -251,8 +262,9 @@ def test_hermite_axis_reproduces_quadratics_and_their_derivatives():
     inside = (q > 0) & (q < 2.1)
     qc = np.clip(q, 0.0, 2.1)
     np.testing.assert_allclose(value, 1.0 - 2.0 * qc + 0.7 * qc**2, atol=1e-12)
-    np.testing.assert_allclose(np.sum(dw * f[index], axis=1)[inside], (-2.0 + 1.4 * q)[inside],
-                               atol=1e-12)
+    np.testing.assert_allclose(
+        np.sum(dw * f[index], axis=1)[inside], (-2.0 + 1.4 * q)[inside], atol=1e-12
+    )
     np.testing.assert_allclose(np.sum(d2w * f[index], axis=1)[inside], 1.4, atol=1e-9)
     assert np.all(np.sum(dw * f[index], axis=1)[~inside] == 0.0)
 
@@ -263,7 +275,7 @@ def test_hermite_axis_small_grids():
     assert np.all(index == 0) and np.all(w == 1.0) and np.all(dw == 0.0)
     two = HermiteAxis([1.0, 3.0], log=True)
     index, w, dw = two.weights(np.array([2.0]))
-    f = np.log(np.array([1.0, 3.0]))                 # linear in ln x is reproduced exactly
+    f = np.log(np.array([1.0, 3.0]))  # linear in ln x is reproduced exactly
     assert np.sum(w * f[index]) == pytest.approx(np.log(2.0))
     assert np.sum(dw * f[index]) == pytest.approx(0.5)
 
@@ -295,16 +307,20 @@ def test_repeated_conditions_reuse_the_cached_re_mach_contraction():
         got = polar.evaluate(alpha, re, mach)
         (ir, wr, dwr), (im, wm, dwm) = polar._conditions(re, mach)
         ia, wa, dwa = _alpha_hermite_weights(polar.alpha_grid, wrap_angle(alpha))
-        v, d_a, d_r, d_m = tensor_eval(polar._composite_table, (ia, ir, im), (wa, wr, wm),
-                                       (dwa, dwr, dwm))
-        for f, name in enumerate(("cl", "cd")):   # d/dRe as d/dln(Re): all of order 1
-            for value, ref in ((getattr(got, name), v[:, f]),
-                               (getattr(got, f"d{name}_dalpha"), d_a[:, f]),
-                               (getattr(got, f"d{name}_dreynolds") * re, d_r[:, f] * re),
-                               (getattr(got, f"d{name}_dmach"), d_m[:, f])):
+        v, d_a, d_r, d_m = tensor_eval(
+            polar._composite_table, (ia, ir, im), (wa, wr, wm), (dwa, dwr, dwm)
+        )
+        for f, name in enumerate(("cl", "cd")):  # d/dRe as d/dln(Re): all of order 1
+            for value, ref in (
+                (getattr(got, name), v[:, f]),
+                (getattr(got, f"d{name}_dalpha"), d_a[:, f]),
+                (getattr(got, f"d{name}_dreynolds") * re, d_r[:, f] * re),
+                (getattr(got, f"d{name}_dmach"), d_m[:, f]),
+            ):
                 np.testing.assert_allclose(value, ref, rtol=1e-12, atol=1e-13)
     assert len(polar._condition_caches) == 1
     complex_values = polar.evaluate(alpha0 + 0j, re + 0j, mach)
-    np.testing.assert_allclose(np.real(complex_values.cl), polar.evaluate(alpha0, re, mach).cl,
-                               rtol=1e-12)
+    np.testing.assert_allclose(
+        np.real(complex_values.cl), polar.evaluate(alpha0, re, mach).cl, rtol=1e-12
+    )
     assert "_condition_caches" not in pickle.loads(pickle.dumps(polar)).__dict__

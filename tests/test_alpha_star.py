@@ -12,8 +12,9 @@ from lpc_mdo.components.aero.polar import LinearQuadraticPolar
 
 def make_problem(airfoil, n, mode="auto", **options):
     prob = om.Problem()
-    prob.model.add_subsystem("alpha", AlphaStarComp(num_sections=n, airfoil=airfoil, **options),
-                             promotes=["*"])
+    prob.model.add_subsystem(
+        "alpha", AlphaStarComp(num_sections=n, airfoil=airfoil, **options), promotes=["*"]
+    )
     prob.setup(force_alloc_complex=True, mode=mode)
     return prob
 
@@ -26,14 +27,14 @@ def test_inversion_recovers_alpha_in_attached_flow(airfoil):
     re = 10 ** rng.uniform(5.5, 7.0, n)
     mach = rng.uniform(0.0, 0.5, n)
     lo, hi = stall_bracket(polar, re, mach)[:2]
-    alpha = lo + (hi - lo) * rng.uniform(0.08, 0.92, n)        # attached, inside the bracket
+    alpha = lo + (hi - lo) * rng.uniform(0.08, 0.92, n)  # attached, inside the bracket
     prob = make_problem(airfoil, n)
     prob.set_val("lift_coefficient", polar.evaluate(alpha, re, mach).cl)
     prob.set_val("reynolds", re)
     prob.set_val("mach", mach)
     prob.run_model()
     np.testing.assert_allclose(prob.get_val("alpha_star"), alpha, rtol=0.0, atol=1e-8)
-    assert np.max(np.abs(prob.get_val("alpha_star") - alpha)) < 1e-12   # measured ~1e-15
+    assert np.max(np.abs(prob.get_val("alpha_star") - alpha)) < 1e-12  # measured ~1e-15
     assert prob.model.alpha.num_beyond_stall == 0
 
 
@@ -75,12 +76,14 @@ def test_totals_match_the_implicit_function_theorem(mode):
     prob.set_val("mach", [0.1, 0.2, 0.3])
     prob.run_model()
     a = prob.get_val("alpha_star")
-    slope = get_polar("ls413").evaluate(a, prob.get_val("reynolds"),
-                                        prob.get_val("mach")).dcl_dalpha
+    slope = (
+        get_polar("ls413").evaluate(a, prob.get_val("reynolds"), prob.get_val("mach")).dcl_dalpha
+    )
     wrt = ["lift_coefficient", "reynolds", "mach"]
     totals = prob.compute_totals("alpha_star", wrt)
-    np.testing.assert_allclose(np.diag(totals["alpha_star", "lift_coefficient"]), 1 / slope,
-                               rtol=1e-12)
+    np.testing.assert_allclose(
+        np.diag(totals["alpha_star", "lift_coefficient"]), 1 / slope, rtol=1e-12
+    )
     data = prob.check_totals("alpha_star", wrt, method="fd", step=1e-7, out_stream=None)
     assert_check_totals(data, atol=1e-6, rtol=2e-5)
 
@@ -92,7 +95,7 @@ def test_user_table_and_analytic_polar_work_like_a_name():
     v = lq.evaluate(np.radians(a_deg), 1e6, 0.0)
     table = np.column_stack([a_deg, v.cl, v.cd])
     target = np.array([-0.2, 0.5, 1.1])
-    expected = (target - 0.5) / 5.1566                         # attached: cl = 0.5 + 5.1566 a
+    expected = (target - 0.5) / 5.1566  # attached: cl = 0.5 + 5.1566 a
     for airfoil in (table, lq):
         prob = make_problem(airfoil, 3)
         prob.set_val("lift_coefficient", target)

@@ -26,19 +26,25 @@ def test_public_names_import():
 def test_a_weighting_wrapper():
     # IEC 61672-1: A(1 kHz) = 0.0 dB, A(100 Hz) = -19.1 dB at the exact base-10 frequency.
     assert lpc.a_weighting(1000.0) == pytest.approx(0.0, abs=0.05)
-    assert lpc.a_weighting(10 ** 2.0) == pytest.approx(-19.1, abs=0.1)
+    assert lpc.a_weighting(10**2.0) == pytest.approx(-19.1, abs=0.1)
 
 
 def test_rotor_noise_wrapper_doubles_with_two_identical_rotors():
     kwargs = dict(radius=1.524, rpm=1200.0, thrust=4000.0, chord=0.2, torque=900.0)
     one = lpc.rotor_noise(**kwargs)
-    two = lpc.rotor_noise(radius=[1.524, 1.524], rpm=[1200.0, 1200.0], thrust=[4000.0, 4000.0],
-                          chord=0.2, torque=[900.0, 900.0],
-                          hub_position=[[0.0, 0.0, 0.0], [0.0, 0.0, 0.0]],
-                          rotation_direction=[1.0, 1.0])
+    two = lpc.rotor_noise(
+        radius=[1.524, 1.524],
+        rpm=[1200.0, 1200.0],
+        thrust=[4000.0, 4000.0],
+        chord=0.2,
+        torque=[900.0, 900.0],
+        hub_position=[[0.0, 0.0, 0.0], [0.0, 0.0, 0.0]],
+        rotation_direction=[1.0, 1.0],
+    )
     for key in ("total_spl_a",):
         assert np.asarray(two[key]).item() == pytest.approx(
-            np.asarray(one[key]).item() + 10 * np.log10(2), abs=1e-6)
+            np.asarray(one[key]).item() + 10 * np.log10(2), abs=1e-6
+        )
 
 
 def test_calibrate_other_mass_is_the_models():
@@ -50,5 +56,4 @@ def test_calibrate_other_mass_is_the_models():
     prob.run_model()
     model_other = prob.get_val("other_mass", units="kg")[0]
     assert lpc.calibrate_other_mass() == pytest.approx(model_other, rel=1e-9)
-    assert lpc.calibrate_other_mass(lpc.reference_vehicle()) == pytest.approx(model_other,
-                                                                                rel=1e-9)
+    assert lpc.calibrate_other_mass(lpc.reference_vehicle()) == pytest.approx(model_other, rel=1e-9)

@@ -27,10 +27,16 @@ class ReMachPolar(Polar):
         re_factor = (reynolds / 1e6) ** -0.2
         cd = b.cd * re_factor
         zeros = np.zeros(alpha.shape)
-        return PolarValues(cl=b.cl * pg, cd=cd, dcl_dalpha=b.dcl_dalpha * pg,
-                           dcd_dalpha=b.dcd_dalpha * re_factor, dcl_dreynolds=zeros,
-                           dcd_dreynolds=-0.2 * cd / reynolds, dcl_dmach=b.cl * mach * pg**3,
-                           dcd_dmach=zeros)
+        return PolarValues(
+            cl=b.cl * pg,
+            cd=cd,
+            dcl_dalpha=b.dcl_dalpha * pg,
+            dcd_dalpha=b.dcd_dalpha * re_factor,
+            dcl_dreynolds=zeros,
+            dcd_dreynolds=-0.2 * cd / reynolds,
+            dcl_dmach=b.cl * mach * pg**3,
+            dcd_dmach=zeros,
+        )
 
 
 class NaNPolar(LinearQuadraticPolar):
@@ -56,53 +62,60 @@ def _stations(num_radial=NRAD):
     return r, width
 
 
-def _bem_problem(polar=None, num_radial=NRAD, performance=True, mode='auto', **options):
+def _bem_problem(polar=None, num_radial=NRAD, performance=True, mode="auto", **options):
     opts = dict(num_rotors=2, num_nodes=2, num_radial=num_radial, num_blades=BLADES, **options)
     if polar is not None:
-        opts['polar'] = polar
+        opts["polar"] = polar
     prob = om.Problem()
-    prob.model.add_subsystem('inflow', BEMInflowComp(**opts), promotes=['*'])
-    prob.model.add_subsystem('loads', BEMLoadsComp(**opts), promotes=['*'])
+    prob.model.add_subsystem("inflow", BEMInflowComp(**opts), promotes=["*"])
+    prob.model.add_subsystem("loads", BEMLoadsComp(**opts), promotes=["*"])
     if performance:
-        prob.model.add_subsystem('performance', RotorPerformanceComp(num_rotors=2, num_nodes=2),
-                                 promotes=['*'])
+        prob.model.add_subsystem(
+            "performance", RotorPerformanceComp(num_rotors=2, num_nodes=2), promotes=["*"]
+        )
     prob.setup(mode=mode, force_alloc_complex=True)
     r, width = _stations(num_radial)
     eta = np.linspace(0.0, 1.0, num_radial)
-    prob.set_val('radius', RADIUS)
-    prob.set_val('hub_radius', HUB * RADIUS)
-    prob.set_val('station_radius', r)
-    prob.set_val('station_width', width)
-    prob.set_val('chord', np.stack([0.3 - 0.2 * eta, 0.2 - 0.12 * eta]))
-    prob.set_val('twist', np.radians(np.stack([30.0 - 20.0 * eta, 45.0 - 25.0 * eta])))
-    prob.set_val('rpm', [[1200.0, 1300.0], [1500.0, 1800.0]])
-    prob.set_val('axial_velocity', [[0.0, 10.0], [2.0, 40.0]])
-    prob.set_val('density', [1.2, 1.1])
-    prob.set_val('speed_of_sound', [340.0, 336.0])
-    prob.set_val('dynamic_viscosity', [1.8e-5, 1.7e-5])
+    prob.set_val("radius", RADIUS)
+    prob.set_val("hub_radius", HUB * RADIUS)
+    prob.set_val("station_radius", r)
+    prob.set_val("station_width", width)
+    prob.set_val("chord", np.stack([0.3 - 0.2 * eta, 0.2 - 0.12 * eta]))
+    prob.set_val("twist", np.radians(np.stack([30.0 - 20.0 * eta, 45.0 - 25.0 * eta])))
+    prob.set_val("rpm", [[1200.0, 1300.0], [1500.0, 1800.0]])
+    prob.set_val("axial_velocity", [[0.0, 10.0], [2.0, 40.0]])
+    prob.set_val("density", [1.2, 1.1])
+    prob.set_val("speed_of_sound", [340.0, 336.0])
+    prob.set_val("dynamic_viscosity", [1.8e-5, 1.7e-5])
     prob.run_model()
     return prob
 
 
-@pytest.mark.parametrize('options', [
-    {},
-    {'tip_loss_form': 'bladead', 'hub_loss': False},
-    {'tip_loss': False},
-])
+@pytest.mark.parametrize(
+    "options",
+    [
+        {},
+        {"tip_loss_form": "bladead", "hub_loss": False},
+        {"tip_loss": False},
+    ],
+)
 def test_partials(options):
     prob = _bem_problem(polar=ReMachPolar(), **options)
-    data = prob.check_partials(method='cs', compact_print=True, out_stream=None)
+    data = prob.check_partials(method="cs", compact_print=True, out_stream=None)
     assert_check_partials(data, atol=1e-8, rtol=1e-8)
 
 
 def test_totals_through_solve_linear():
     # The inflow angle is inverted by BEMInflowComp.solve_linear (no DirectSolver).
-    for mode in ('fwd', 'rev'):
+    for mode in ("fwd", "rev"):
         prob = _bem_problem(performance=False, mode=mode)
-        data = prob.check_totals(of=['thrust', 'torque', 'thrust_per_span'],
-                                 wrt=['rpm', 'axial_velocity', 'chord', 'twist', 'radius',
-                                      'station_radius'],
-                                 method='cs', compact_print=True, out_stream=None)
+        data = prob.check_totals(
+            of=["thrust", "torque", "thrust_per_span"],
+            wrt=["rpm", "axial_velocity", "chord", "twist", "radius", "station_radius"],
+            method="cs",
+            compact_print=True,
+            out_stream=None,
+        )
         assert_check_totals(data, atol=1e-7, rtol=1e-7)
 
 
@@ -122,11 +135,11 @@ def test_against_independent_ning_solution():
     prob = _bem_problem()
     polar = LinearQuadraticPolar()
     r, _ = _stations()
-    chord, twist = prob.get_val('chord'), prob.get_val('twist')
-    rpm, vx = prob.get_val('rpm'), prob.get_val('axial_velocity')
-    rho = prob.get_val('density')
-    phi_bem = prob.get_val('inflow_angle')
-    thrust_ps, drag_ps = prob.get_val('thrust_per_span'), prob.get_val('drag_per_span')
+    chord, twist = prob.get_val("chord"), prob.get_val("twist")
+    rpm, vx = prob.get_val("rpm"), prob.get_val("axial_velocity")
+    rho = prob.get_val("density")
+    phi_bem = prob.get_val("inflow_angle")
+    thrust_ps, drag_ps = prob.get_val("thrust_per_span"), prob.get_val("drag_per_span")
     for i in range(2):
         b = BLADES[i]
         for j in range(2):
@@ -166,34 +179,43 @@ def test_against_independent_ning_solution():
 
 def test_performance_values_and_partials():
     prob = om.Problem()
-    prob.model.add_subsystem('p', RotorPerformanceComp(num_rotors=2, num_nodes=2),
-                             promotes=['*'])
+    prob.model.add_subsystem("p", RotorPerformanceComp(num_rotors=2, num_nodes=2), promotes=["*"])
     prob.setup(force_alloc_complex=True)
-    prob.set_val('thrust', [[4000.0, 3000.0], [-200.0, 6000.0]])
-    prob.set_val('torque', [[700.0, 650.0], [300.0, 2000.0]])
-    prob.set_val('rpm', [[1200.0, 1100.0], [1500.0, 1800.0]])
-    prob.set_val('axial_velocity', [[0.0, 5.0], [40.0, 60.0]])
-    prob.set_val('radius', [1.5, 1.3])
-    prob.set_val('density', [1.2, 1.0])
-    prob.set_val('speed_of_sound', [340.0, 330.0])
+    prob.set_val("thrust", [[4000.0, 3000.0], [-200.0, 6000.0]])
+    prob.set_val("torque", [[700.0, 650.0], [300.0, 2000.0]])
+    prob.set_val("rpm", [[1200.0, 1100.0], [1500.0, 1800.0]])
+    prob.set_val("axial_velocity", [[0.0, 5.0], [40.0, 60.0]])
+    prob.set_val("radius", [1.5, 1.3])
+    prob.set_val("density", [1.2, 1.0])
+    prob.set_val("speed_of_sound", [340.0, 330.0])
     prob.run_model()
     # Hand-computed from docs theory/rotors 'Loads and coefficients' definitions for rotor 0, node 0 (exact formulas):
     n, d, omega = 20.0, 3.0, 1200.0 * np.pi / 30.0
     p = omega * 700.0
-    ct_h, cq_h = 4000.0 / (1.2 * np.pi * 1.5**2 * (omega * 1.5) ** 2), 700.0 / (
-        1.2 * np.pi * 1.5**3 * (omega * 1.5) ** 2)
-    expected = {'power': p, 'thrust_coefficient': 4000.0 / (1.2 * n**2 * d**4),
-                'power_coefficient': p / (1.2 * n**3 * d**5), 'advance_ratio': 0.0,
-                'efficiency': 0.0, 'figure_of_merit': ct_h**1.5 / (np.sqrt(2) * cq_h),
-                'tip_mach': omega * 1.5 / 340.0}
+    ct_h, cq_h = (
+        4000.0 / (1.2 * np.pi * 1.5**2 * (omega * 1.5) ** 2),
+        700.0 / (1.2 * np.pi * 1.5**3 * (omega * 1.5) ** 2),
+    )
+    expected = {
+        "power": p,
+        "thrust_coefficient": 4000.0 / (1.2 * n**2 * d**4),
+        "power_coefficient": p / (1.2 * n**3 * d**5),
+        "advance_ratio": 0.0,
+        "efficiency": 0.0,
+        "figure_of_merit": ct_h**1.5 / (np.sqrt(2) * cq_h),
+        "tip_mach": omega * 1.5 / 340.0,
+    }
     for name, value in expected.items():
         np.testing.assert_allclose(prob.get_val(name)[0, 0], value, rtol=1e-12, atol=1e-15)
     # Climb node of rotor 1: eta = J C_T / C_P (docs theory/rotors 'Loads and coefficients'), 1e-12 relative.
-    j_ct_cp = (prob.get_val('advance_ratio') * prob.get_val('thrust_coefficient')
-               / prob.get_val('power_coefficient'))
-    np.testing.assert_allclose(prob.get_val('efficiency')[1, 1], j_ct_cp[1, 1], rtol=1e-12)
-    assert prob.get_val('figure_of_merit')[1, 0] < 0.0  # negative thrust: negative, not NaN
-    data = prob.check_partials(method='cs', compact_print=True, out_stream=None)
+    j_ct_cp = (
+        prob.get_val("advance_ratio")
+        * prob.get_val("thrust_coefficient")
+        / prob.get_val("power_coefficient")
+    )
+    np.testing.assert_allclose(prob.get_val("efficiency")[1, 1], j_ct_cp[1, 1], rtol=1e-12)
+    assert prob.get_val("figure_of_merit")[1, 0] < 0.0  # negative thrust: negative, not NaN
+    data = prob.check_partials(method="cs", compact_print=True, out_stream=None)
     assert_check_partials(data, atol=1e-10, rtol=1e-10)
 
 
@@ -202,47 +224,55 @@ def test_reverse_and_windmilling_stations_converge():
     # on one rotor; a second rotor pitched to -20 deg (no root on [0, pi/2]: found at phi < 0).
     prob = om.Problem()
     opts = dict(num_rotors=2, num_nodes=6, num_radial=12)
-    prob.model.add_subsystem('inflow', BEMInflowComp(**opts), promotes=['*'])
-    prob.model.add_subsystem('loads', BEMLoadsComp(**opts), promotes=['*'])
+    prob.model.add_subsystem("inflow", BEMInflowComp(**opts), promotes=["*"])
+    prob.model.add_subsystem("loads", BEMLoadsComp(**opts), promotes=["*"])
     prob.setup()
     eta = (np.arange(12) + 0.5) / 12
-    prob.set_val('radius', [1.0, 1.0])
-    prob.set_val('hub_radius', [0.2, 0.2])
-    prob.set_val('station_radius', np.tile(0.2 + 0.8 * eta, (2, 1)))
-    prob.set_val('station_width', np.full((2, 12), 0.8 / 12))
-    prob.set_val('chord', np.full((2, 12), 0.1))
-    prob.set_val('twist', np.stack([np.radians(40.0 - 30.0 * eta), np.full(12, np.radians(-20))]))
+    prob.set_val("radius", [1.0, 1.0])
+    prob.set_val("hub_radius", [0.2, 0.2])
+    prob.set_val("station_radius", np.tile(0.2 + 0.8 * eta, (2, 1)))
+    prob.set_val("station_width", np.full((2, 12), 0.8 / 12))
+    prob.set_val("chord", np.full((2, 12), 0.1))
+    prob.set_val("twist", np.stack([np.radians(40.0 - 30.0 * eta), np.full(12, np.radians(-20))]))
     tip_speed = 1000 * np.pi / 30
-    prob.set_val('rpm', np.full((2, 6), 1000.0))
-    prob.set_val('axial_velocity', np.tile([-3.0, 0.0, 10.0, 0.8 * tip_speed,
-                                            1.5 * tip_speed, 2.5 * tip_speed], (2, 1)))
+    prob.set_val("rpm", np.full((2, 6), 1000.0))
+    prob.set_val(
+        "axial_velocity",
+        np.tile([-3.0, 0.0, 10.0, 0.8 * tip_speed, 1.5 * tip_speed, 2.5 * tip_speed], (2, 1)),
+    )
     prob.run_model()
     prob.model.run_apply_nonlinear()
-    residual = prob.model.inflow._residuals['inflow_angle']
+    residual = prob.model.inflow._residuals["inflow_angle"]
     assert np.max(np.abs(residual)) < 1e-9
-    phi = prob.get_val('inflow_angle')
-    assert np.all(np.isfinite(prob.get_val('thrust'))) and np.all(np.isfinite(phi))
-    thrust, torque = prob.get_val('thrust'), prob.get_val('torque')
+    phi = prob.get_val("inflow_angle")
+    assert np.all(np.isfinite(prob.get_val("thrust"))) and np.all(np.isfinite(phi))
+    thrust, torque = prob.get_val("thrust"), prob.get_val("torque")
     assert np.all(thrust[0, :3] > 0) and thrust[0, -1] < 0 and torque[0, -1] < 0  # windmill
     assert np.all(phi[1, 1] < 0) and thrust[1, 1] < 0  # pitched below zero lift: push air up
 
 
 def test_bad_inputs_raise():
     prob = _bem_problem(performance=False)
-    prob.set_val('rpm', [[0.0, 1300.0], [1500.0, 1800.0]])
-    with pytest.raises(om.AnalysisError, match=r"'rpm\[0, 0\]' = 0.0 is out of range: "
-                                               r"must be > 0 \(rpm\)"):
+    prob.set_val("rpm", [[0.0, 1300.0], [1500.0, 1800.0]])
+    with pytest.raises(
+        om.AnalysisError,
+        match=r"'rpm\[0, 0\]' = 0.0 is out of range: "
+        r"must be > 0 \(rpm\)",
+    ):
         prob.run_model()
     prob = _bem_problem(performance=False)
     r, _ = _stations()
     r[1, -1] = 1.3
-    prob.set_val('station_radius', r)
-    with pytest.raises(om.AnalysisError, match=r"'station_radius\[1, \d+\]' = 1.3 is out "
-                                               r"of range: must be in \(0.18, 1.2\) \(m\)"):
+    prob.set_val("station_radius", r)
+    with pytest.raises(
+        om.AnalysisError,
+        match=r"'station_radius\[1, \d+\]' = 1.3 is out "
+        r"of range: must be in \(0.18, 1.2\) \(m\)",
+    ):
         prob.run_model()
     with pytest.raises(om.AnalysisError, match="BEM inflow-angle solve failed .*no sign change"):
         _bem_problem(polar=NaNPolar(), performance=False)
     prob = om.Problem()
-    prob.model.add_subsystem('i', BEMInflowComp(num_rotors=2, num_blades=[2, 0]))
+    prob.model.add_subsystem("i", BEMInflowComp(num_rotors=2, num_blades=[2, 0]))
     with pytest.raises(ValueError, match=r"'num_blades\[1\]' = 0 is out of range: must be >= 1"):
         prob.setup()

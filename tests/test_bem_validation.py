@@ -15,67 +15,123 @@ from lpc_mdo.vehicle import reference_vehicle
 # APC Sport 14x13, UIUC Propeller Data Site, as redistributed in LSDOlab/lsdo_rotor
 # (shared/data/validation/APC_sport_14_13_*.txt, values unchanged).
 # Geometry: r/R, c/R, beta (deg).
-APC_GEOMETRY = np.array([
-    [0.15, 0.143, 37.64], [0.20, 0.140, 44.46], [0.25, 0.140, 47.79], [0.30, 0.140, 46.71],
-    [0.35, 0.141, 43.63], [0.40, 0.143, 39.82], [0.45, 0.147, 36.06], [0.50, 0.150, 32.77],
-    [0.55, 0.153, 29.99], [0.60, 0.155, 27.62], [0.65, 0.155, 25.54], [0.70, 0.152, 23.80],
-    [0.75, 0.144, 22.25], [0.80, 0.131, 20.78], [0.85, 0.113, 19.56], [0.90, 0.088, 18.04],
-    [0.95, 0.055, 16.00], [1.00, 0.021, 13.93]])
+APC_GEOMETRY = np.array(
+    [
+        [0.15, 0.143, 37.64],
+        [0.20, 0.140, 44.46],
+        [0.25, 0.140, 47.79],
+        [0.30, 0.140, 46.71],
+        [0.35, 0.141, 43.63],
+        [0.40, 0.143, 39.82],
+        [0.45, 0.147, 36.06],
+        [0.50, 0.150, 32.77],
+        [0.55, 0.153, 29.99],
+        [0.60, 0.155, 27.62],
+        [0.65, 0.155, 25.54],
+        [0.70, 0.152, 23.80],
+        [0.75, 0.144, 22.25],
+        [0.80, 0.131, 20.78],
+        [0.85, 0.113, 19.56],
+        [0.90, 0.088, 18.04],
+        [0.95, 0.055, 16.00],
+        [1.00, 0.021, 13.93],
+    ]
+)
 # Performance: J, C_T, C_P, eta (two sweeps, rows 1-15 and 16-34).
-APC_PERFORMANCE = np.array([
-    [0.179, 0.1205, 0.0749, 0.288], [0.206, 0.1185, 0.0735, 0.332],
-    [0.234, 0.1180, 0.0737, 0.375], [0.266, 0.1170, 0.0739, 0.421],
-    [0.293, 0.1147, 0.0734, 0.458], [0.324, 0.1152, 0.0748, 0.500],
-    [0.355, 0.1137, 0.0753, 0.536], [0.385, 0.1121, 0.0760, 0.568],
-    [0.414, 0.1100, 0.0764, 0.596], [0.440, 0.1080, 0.0768, 0.618],
-    [0.473, 0.1045, 0.0768, 0.644], [0.499, 0.1017, 0.0767, 0.662],
-    [0.533, 0.0979, 0.0764, 0.682], [0.557, 0.0950, 0.0762, 0.695],
-    [0.587, 0.0903, 0.0752, 0.705], [0.499, 0.1016, 0.0766, 0.662],
-    [0.528, 0.0984, 0.0765, 0.679], [0.563, 0.0938, 0.0758, 0.697],
-    [0.587, 0.0904, 0.0752, 0.705], [0.621, 0.0849, 0.0736, 0.716],
-    [0.649, 0.0804, 0.0720, 0.725], [0.674, 0.0759, 0.0702, 0.728],
-    [0.701, 0.0713, 0.0681, 0.734], [0.740, 0.0641, 0.0644, 0.736],
-    [0.769, 0.0587, 0.0613, 0.736], [0.793, 0.0536, 0.0582, 0.731],
-    [0.824, 0.0474, 0.0547, 0.714], [0.858, 0.0404, 0.0500, 0.693],
-    [0.885, 0.0347, 0.0460, 0.668], [0.912, 0.0292, 0.0421, 0.632],
-    [0.945, 0.0223, 0.0368, 0.572], [0.971, 0.0171, 0.0321, 0.517],
-    [1.005, 0.0093, 0.0253, 0.370], [1.031, 0.0040, 0.0203, 0.201]])
+APC_PERFORMANCE = np.array(
+    [
+        [0.179, 0.1205, 0.0749, 0.288],
+        [0.206, 0.1185, 0.0735, 0.332],
+        [0.234, 0.1180, 0.0737, 0.375],
+        [0.266, 0.1170, 0.0739, 0.421],
+        [0.293, 0.1147, 0.0734, 0.458],
+        [0.324, 0.1152, 0.0748, 0.500],
+        [0.355, 0.1137, 0.0753, 0.536],
+        [0.385, 0.1121, 0.0760, 0.568],
+        [0.414, 0.1100, 0.0764, 0.596],
+        [0.440, 0.1080, 0.0768, 0.618],
+        [0.473, 0.1045, 0.0768, 0.644],
+        [0.499, 0.1017, 0.0767, 0.662],
+        [0.533, 0.0979, 0.0764, 0.682],
+        [0.557, 0.0950, 0.0762, 0.695],
+        [0.587, 0.0903, 0.0752, 0.705],
+        [0.499, 0.1016, 0.0766, 0.662],
+        [0.528, 0.0984, 0.0765, 0.679],
+        [0.563, 0.0938, 0.0758, 0.697],
+        [0.587, 0.0904, 0.0752, 0.705],
+        [0.621, 0.0849, 0.0736, 0.716],
+        [0.649, 0.0804, 0.0720, 0.725],
+        [0.674, 0.0759, 0.0702, 0.728],
+        [0.701, 0.0713, 0.0681, 0.734],
+        [0.740, 0.0641, 0.0644, 0.736],
+        [0.769, 0.0587, 0.0613, 0.736],
+        [0.793, 0.0536, 0.0582, 0.731],
+        [0.824, 0.0474, 0.0547, 0.714],
+        [0.858, 0.0404, 0.0500, 0.693],
+        [0.885, 0.0347, 0.0460, 0.668],
+        [0.912, 0.0292, 0.0421, 0.632],
+        [0.945, 0.0223, 0.0368, 0.572],
+        [0.971, 0.0171, 0.0321, 0.517],
+        [1.005, 0.0093, 0.0253, 0.370],
+        [1.031, 0.0040, 0.0203, 0.201],
+    ]
+)
 
 #: Thin-airfoil-like polar for the APC blade: the thin-airfoil slope 2 pi, cl0 = 0.30
 #: (alpha_L0 = -2.7 deg, thin-airfoil theory for about 3 % camber), a low-Reynolds profile drag
 #: cd0 = 0.028 (QPROP's default for propellers near Re = 1e5) and otherwise docs theory/aerodynamics 'Linear-quadratic polar'
 #: polar (stall at -10 and 15 deg, stall drag 0.012 and 0.052 above cd0).
-APC_POLAR = LinearQuadraticPolar(cl0=0.30, cl_alpha=2.0 * np.pi, cd0=0.028,
-                                 cd_stall=(0.040, 0.080))
+APC_POLAR = LinearQuadraticPolar(cl0=0.30, cl_alpha=2.0 * np.pi, cd0=0.028, cd_stall=(0.040, 0.080))
 
 #: NACA 4412-like polar: a LinearQuadraticPolar fitted to the BladeAD NACA 4412 network's spot
 #: values at Re = 1e6, M = 0.1 (docs theory/aerodynamics 'Airfoil polars'): cl0 = 0.472, slope (0.895 - 0.038)/8 deg
 #: = 6.138 /rad, cd0 = 0.0066 and k = 0.0086 from cd(8 deg) = 0.0129; stall 14 deg, cl_max 1.6.
-NACA4412_LIKE = LinearQuadraticPolar(alpha_stall=(np.radians(-10.0), np.radians(14.0)),
-                                     cl_stall=(-0.55, 1.6), cd_stall=(0.0156, 0.0175),
-                                     cl0=0.472, cd0=0.0066, cl_alpha=6.138)
+NACA4412_LIKE = LinearQuadraticPolar(
+    alpha_stall=(np.radians(-10.0), np.radians(14.0)),
+    cl_stall=(-0.55, 1.6),
+    cd_stall=(0.0156, 0.0175),
+    cl0=0.472,
+    cd0=0.0066,
+    cl_alpha=6.138,
+)
 
 
-def _bem(r, width, chord, twist, radius, hub_radius, rpm, axial_velocity, density=1.225,
-         speed_of_sound=343.0, viscosity=1.735e-5, **options):
+def _bem(
+    r,
+    width,
+    chord,
+    twist,
+    radius,
+    hub_radius,
+    rpm,
+    axial_velocity,
+    density=1.225,
+    speed_of_sound=343.0,
+    viscosity=1.735e-5,
+    **options,
+):
     """One rotor, one node per axial velocity, stations given directly."""
     nn, nrad = len(axial_velocity), len(r)
     opts = dict(num_nodes=nn, num_radial=nrad, **options)
     prob = om.Problem()
-    prob.model.add_subsystem('inflow', BEMInflowComp(**opts), promotes=['*'])
-    prob.model.add_subsystem('loads', BEMLoadsComp(**opts), promotes=['*'])
-    prob.model.add_subsystem('performance', RotorPerformanceComp(num_nodes=nn), promotes=['*'])
+    prob.model.add_subsystem("inflow", BEMInflowComp(**opts), promotes=["*"])
+    prob.model.add_subsystem("loads", BEMLoadsComp(**opts), promotes=["*"])
+    prob.model.add_subsystem("performance", RotorPerformanceComp(num_nodes=nn), promotes=["*"])
     prob.setup()
-    for name, value in (('station_radius', r), ('station_width', width), ('chord', chord),
-                        ('twist', twist)):
+    for name, value in (
+        ("station_radius", r),
+        ("station_width", width),
+        ("chord", chord),
+        ("twist", twist),
+    ):
         prob.set_val(name, np.asarray(value)[None])
-    prob.set_val('radius', radius)
-    prob.set_val('hub_radius', hub_radius)
-    prob.set_val('rpm', np.full((1, nn), rpm))
-    prob.set_val('axial_velocity', np.asarray(axial_velocity, dtype=float)[None])
-    prob.set_val('density', np.full(nn, density))
-    prob.set_val('speed_of_sound', np.full(nn, speed_of_sound))
-    prob.set_val('dynamic_viscosity', np.full(nn, viscosity))
+    prob.set_val("radius", radius)
+    prob.set_val("hub_radius", hub_radius)
+    prob.set_val("rpm", np.full((1, nn), rpm))
+    prob.set_val("axial_velocity", np.asarray(axial_velocity, dtype=float)[None])
+    prob.set_val("density", np.full(nn, density))
+    prob.set_val("speed_of_sound", np.full(nn, speed_of_sound))
+    prob.set_val("dynamic_viscosity", np.full(nn, viscosity))
     prob.run_model()
     return prob
 
@@ -89,25 +145,38 @@ def test_bladead_example_reproduced():
     Tolerance: the printed digits (relative 2e-6, 0.002 deg on phi).
     """
     n, radius = 35, 1.2
-    eta, q = station_fractions(n, 'bladead')
-    prob = _bem((0.2 + 0.8 * eta) * radius, 0.8 * q * radius, np.linspace(0.25, 0.05, n),
-                np.radians(np.linspace(50.0, 20.0, n)), radius, 0.2 * radius, 2000.0,
-                [50.0, 0.0], density=1.22518316, tip_loss_form='bladead')
+    eta, q = station_fractions(n, "bladead")
+    prob = _bem(
+        (0.2 + 0.8 * eta) * radius,
+        0.8 * q * radius,
+        np.linspace(0.25, 0.05, n),
+        np.radians(np.linspace(50.0, 20.0, n)),
+        radius,
+        0.2 * radius,
+        2000.0,
+        [50.0, 0.0],
+        density=1.22518316,
+        tip_loss_form="bladead",
+    )
     omega = 2000.0 * np.pi / 30.0
-    ct_rotorcraft = prob.get_val('thrust')[0] / (1.22518316 * np.pi * radius**2
-                                                 * (omega * radius) ** 2)
-    phi = prob.get_val('inflow_angle', units='deg')[0][:, [0, n // 2, n - 1]]
+    ct_rotorcraft = prob.get_val("thrust")[0] / (
+        1.22518316 * np.pi * radius**2 * (omega * radius) ** 2
+    )
+    phi = prob.get_val("inflow_angle", units="deg")[0][:, [0, n // 2, n - 1]]
     expected = {  # V_x = 50 m/s, V_x = 0
-        'thrust': ([4684.063, 3621.662], 2e-6), 'torque': ([1528.762, 831.885], 2e-6),
-        'power': ([320183.2, 174229.7], 2e-6), 'figure_of_merit': ([0.30072, 0.37572], 2e-5),
-        'power_coefficient': ([0.088615, None], 2e-5), 'efficiency': ([0.73147, 0.0], 2e-5)}
+        "thrust": ([4684.063, 3621.662], 2e-6),
+        "torque": ([1528.762, 831.885], 2e-6),
+        "power": ([320183.2, 174229.7], 2e-6),
+        "figure_of_merit": ([0.30072, 0.37572], 2e-5),
+        "power_coefficient": ([0.088615, None], 2e-5),
+        "efficiency": ([0.73147, 0.0], 2e-5),
+    }
     for name, (values, rtol) in expected.items():
         for j, value in enumerate(values):
             if value is not None:
                 np.testing.assert_allclose(prob.get_val(name)[0, j], value, rtol=rtol, atol=1e-12)
     np.testing.assert_allclose(ct_rotorcraft, [0.013379, 0.010345], rtol=5e-5)
-    np.testing.assert_allclose(phi, [[52.300, 23.250, 15.085], [39.307, 7.689, 8.241]],
-                               atol=2e-3)
+    np.testing.assert_allclose(phi, [[52.300, 23.250, 15.085], [39.307, 7.689, 8.241]], atol=2e-3)
 
 
 def test_hover_matches_momentum_theory():
@@ -124,25 +193,39 @@ def test_hover_matches_momentum_theory():
     x = hub + (1 - hub) * (np.arange(n) + 0.5) / n
     cl = 8 * np.pi * lam**2 / (blades * chord * x)
     twist = np.arctan(lam / x) + cl / (2 * np.pi)
-    polar = LinearQuadraticPolar(cl0=0.0, cd0=1e-6, cl_alpha=2 * np.pi, cd_stall=(1e-6, 1e-6),
-                                 cl_stall=(-1.2, 1.2))
-    prob = _bem(x * radius, np.full(n, (1 - hub) / n), np.full(n, chord), twist, radius,
-                hub * radius, 1000.0, [0.0], num_blades=blades, polar=polar, tip_loss=False,
-                hub_loss=False)
-    thrust, power = prob.get_val('thrust')[0, 0], prob.get_val('power')[0, 0]
+    polar = LinearQuadraticPolar(
+        cl0=0.0, cd0=1e-6, cl_alpha=2 * np.pi, cd_stall=(1e-6, 1e-6), cl_stall=(-1.2, 1.2)
+    )
+    prob = _bem(
+        x * radius,
+        np.full(n, (1 - hub) / n),
+        np.full(n, chord),
+        twist,
+        radius,
+        hub * radius,
+        1000.0,
+        [0.0],
+        num_blades=blades,
+        polar=polar,
+        tip_loss=False,
+        hub_loss=False,
+    )
+    thrust, power = prob.get_val("thrust")[0, 0], prob.get_val("power")[0, 0]
     area = np.pi * (radius**2 - (hub * radius) ** 2)
     ideal = thrust**1.5 / np.sqrt(2 * 1.225 * area)
     assert 1.0 <= power / ideal < 1.02
     # The inflow is uniform: u_x = Omega r tan(phi) (V_x = 0, small swirl) within 2 % of the
     # momentum value lambda Omega R.
     omega = 1000.0 * np.pi / 30.0
-    phi = prob.get_val('inflow_angle')[0, 0]
+    phi = prob.get_val("inflow_angle")[0, 0]
     u_x = omega * x * radius * np.tan(phi)
     np.testing.assert_allclose(u_x, np.sqrt(thrust / (2 * 1.225 * area)), rtol=0.02)
 
 
-@pytest.mark.parametrize('polar, thrust_tol, power_tol', [(NACA4412_LIKE, 0.05, 0.05),
-                                                          (LinearQuadraticPolar(), 0.10, 0.10)])
+@pytest.mark.parametrize(
+    "polar, thrust_tol, power_tol",
+    [(NACA4412_LIKE, 0.05, 0.05), (LinearQuadraticPolar(), 0.10, 0.10)],
+)
 def test_lpc_lift_rotor_hover(polar, thrust_tol, power_tol):
     """Reference LPC lift rotor in hover at 100 m and 1200 rpm versus docs theory/rotors 'Validation'.
 
@@ -158,17 +241,26 @@ def test_lpc_lift_rotor_hover(polar, thrust_tol, power_tol):
       NACA 4412): T -8.3 %, P -7.5 %, within 10 %; the difference is the airfoil.
     """
     prob = om.Problem()
-    prob.model.add_subsystem('atmosphere', AtmosphereComp(constants='caddee'), promotes=['*'])
-    prob.model.add_subsystem('rotor', BEMRotorGroup(
-        rotors=reference_vehicle().lift_rotors[:1], polar=polar, tip_loss_form='bladead',
-        quadrature='bladead'), promotes=['*'])
+    prob.model.add_subsystem("atmosphere", AtmosphereComp(constants="caddee"), promotes=["*"])
+    prob.model.add_subsystem(
+        "rotor",
+        BEMRotorGroup(
+            rotors=reference_vehicle().lift_rotors[:1],
+            polar=polar,
+            tip_loss_form="bladead",
+            quadrature="bladead",
+        ),
+        promotes=["*"],
+    )
     prob.setup()
-    prob.set_val('altitude', 100.0)
-    prob.set_val('rpm', 1200.0)
+    prob.set_val("altitude", 100.0)
+    prob.set_val("rpm", 1200.0)
     prob.run_model()
-    np.testing.assert_allclose(prob.get_val('density'), 1.213457, rtol=1e-6)  # docs theory/atmosphere table
-    np.testing.assert_allclose(prob.get_val('thrust')[0, 0], 4863.5, rtol=thrust_tol)
-    np.testing.assert_allclose(prob.get_val('power', units='kW')[0, 0], 100.96, rtol=power_tol)
+    np.testing.assert_allclose(
+        prob.get_val("density"), 1.213457, rtol=1e-6
+    )  # docs theory/atmosphere table
+    np.testing.assert_allclose(prob.get_val("thrust")[0, 0], 4863.5, rtol=thrust_tol)
+    np.testing.assert_allclose(prob.get_val("power", units="kW")[0, 0], 100.96, rtol=power_tol)
 
 
 def test_apc_sport_14x13():
@@ -187,12 +279,21 @@ def test_apc_sport_14x13():
     chord = np.interp(x, APC_GEOMETRY[:, 0], APC_GEOMETRY[:, 1]) * radius
     twist = np.radians(np.interp(x, APC_GEOMETRY[:, 0], APC_GEOMETRY[:, 2]))
     j_data, ct_data, cp_data, eta_data = APC_PERFORMANCE.T
-    prob = _bem(x * radius, np.full(n, (1 - hub) * radius / n), chord, twist, radius,
-                hub * radius, rpm, j_data * rpm / 60.0 * 2 * radius, polar=APC_POLAR)
-    ct = prob.get_val('thrust_coefficient')[0]
-    cp = prob.get_val('power_coefficient')[0]
-    eta = prob.get_val('efficiency')[0]
-    np.testing.assert_allclose(prob.get_val('advance_ratio')[0], j_data, rtol=1e-12)
+    prob = _bem(
+        x * radius,
+        np.full(n, (1 - hub) * radius / n),
+        chord,
+        twist,
+        radius,
+        hub * radius,
+        rpm,
+        j_data * rpm / 60.0 * 2 * radius,
+        polar=APC_POLAR,
+    )
+    ct = prob.get_val("thrust_coefficient")[0]
+    cp = prob.get_val("power_coefficient")[0]
+    eta = prob.get_val("efficiency")[0]
+    np.testing.assert_allclose(prob.get_val("advance_ratio")[0], j_data, rtol=1e-12)
     band = (j_data >= 0.2) & (j_data <= 0.9)
     assert np.max(np.abs(ct[band] / ct_data[band] - 1)) < 0.15
     assert np.max(np.abs(cp[band] / cp_data[band] - 1)) < 0.15

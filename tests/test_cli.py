@@ -11,11 +11,14 @@ from lpc_mdo.cli import main
 
 
 def test_analyze_reference_vehicle(tmp_path, capsys):
-    assert main(["analyze", "--output-dir", str(tmp_path / "out"),
-                 "--n2", str(tmp_path / "n2.html")]) == 0
+    assert (
+        main(["analyze", "--output-dir", str(tmp_path / "out"), "--n2", str(tmp_path / "n2.html")])
+        == 0
+    )
     text = capsys.readouterr().out
-    assert ("15 design conditions, 171 design variables, 96 constraints, 40 linear rotor-speed "
-            "bounds") in text
+    assert (
+        "15 design conditions, 171 design variables, 96 constraints, 40 linear rotor-speed bounds"
+    ) in text
     assert "gross" in text and "minus_1g" in text
     assert (tmp_path / "n2.html").stat().st_size > 0
     assert (tmp_path / "out" / "constraints.md").exists()
@@ -39,8 +42,10 @@ def test_analyze_reports_a_bad_vehicle_file(tmp_path, capsys):
 
 def test_missing_start_case_is_a_clear_error(tmp_path, capsys):
     missing = str(tmp_path / "nope.sql")
-    for argv in (["optimize", "--problem", "full", "--start-case", missing],
-                 ["sweep", "--start-case", missing]):
+    for argv in (
+        ["optimize", "--problem", "full", "--start-case", missing],
+        ["sweep", "--start-case", missing],
+    ):
         assert main(argv) == 2
         assert f"--start-case '{missing}' is not a file" in capsys.readouterr().err
 
@@ -53,8 +58,12 @@ def test_unknown_command_exits():
 def test_optimize_subproblem_4_and_report(tmp_path, capsys):
     pytest.importorskip("cyipopt")
     out = tmp_path / "opt"
-    assert main(["optimize", "--problem", "subproblem_4", "--max-iter", "100",
-                 "--output-dir", str(out)]) == 0
+    assert (
+        main(
+            ["optimize", "--problem", "subproblem_4", "--max-iter", "100", "--output-dir", str(out)]
+        )
+        == 0
+    )
     text = capsys.readouterr().out
     assert "subproblem_4: trim" in text and "subproblem_4: success=True" in text
     # The progress line of every iteration: label, iteration, objective, violation, time.

@@ -30,22 +30,24 @@ REF = reference_vehicle()
 
 def run(vehicle, conditions, **options):
     """Set up and run an LPCGroup of ``vehicle`` with only ``conditions``."""
-    prob = om.Problem(LPCGroup(vehicle=vehicle, conditions=conditions,
-                               **options), reports=False)
+    prob = om.Problem(LPCGroup(vehicle=vehicle, conditions=conditions, **options), reports=False)
     prob.setup()
     prob.run_model()
     return prob
 
 
 def with_condition(vehicle, name, **changes):
-    conditions = tuple(dataclasses.replace(c, **changes) if c.name == name else c
-                       for c in vehicle.conditions)
+    conditions = tuple(
+        dataclasses.replace(c, **changes) if c.name == name else c for c in vehicle.conditions
+    )
     return dataclasses.replace(vehicle, conditions=conditions)
 
 
 def with_lift_airfoil(vehicle, airfoil, pairs=(0, 1, 2, 3)):
-    rotors = tuple(dataclasses.replace(r, airfoil=airfoil) if r.pair in pairs else r
-                   for r in vehicle.lift_rotors)
+    rotors = tuple(
+        dataclasses.replace(r, airfoil=airfoil) if r.pair in pairs else r
+        for r in vehicle.lift_rotors
+    )
     return dataclasses.replace(vehicle, lift_rotors=rotors)
 
 
@@ -79,16 +81,18 @@ def test_material_density_reaches_the_structural_beam():
 
 def _observer(distance=None, elevation=None):
     obs = REF.noise_observer
-    obs = dataclasses.replace(obs, distance=obs.distance if distance is None else distance,
-                              elevation=obs.elevation if elevation is None else elevation)
+    obs = dataclasses.replace(
+        obs,
+        distance=obs.distance if distance is None else distance,
+        elevation=obs.elevation if elevation is None else elevation,
+    )
     return dataclasses.replace(REF, noise_observer=obs)
 
 
 def test_observer_distance_reaches_the_noise_model():
     # Source: [noise_observer] distance (100 m) -> hover.observer_distance (was the component
     # default 100 m whatever the file said). Farther observer -> lower total A-weighted SPL.
-    near, far = run(_observer(distance=100.0), ["hover"]), run(_observer(distance=200.0),
-                                                                ["hover"])
+    near, far = run(_observer(distance=100.0), ["hover"]), run(_observer(distance=200.0), ["hover"])
     assert_near_equal(far.get_val("hover.observer_distance", units="m"), 200.0, 1e-15)
     assert_near_equal(far.get_val("hover.noise.observer_distance", units="m"), 200.0, 1e-15)
     assert far.get_val("hover.total_spl_a")[0] < near.get_val("hover.total_spl_a")[0] - 6.0
@@ -111,8 +115,9 @@ def test_observer_elevation_reaches_the_noise_model():
     assert_near_equal(observer[2] - centroid[2], d * np.sin(elevation), 1e-12)
     # A shallower observer (30 deg instead of 45 deg) is farther from the rotor axes.
     base = run(REF, ["hover"])
-    assert np.all(prob.get_val("hover.noise.inplane_distance")
-                  > base.get_val("hover.noise.inplane_distance"))
+    assert np.all(
+        prob.get_val("hover.noise.inplane_distance") > base.get_val("hover.noise.inplane_distance")
+    )
 
 
 # ------------------------------------------------------------------ 3. battery initial SoC
@@ -126,8 +131,9 @@ def test_initial_soc_reaches_the_battery():
     base, prob = run(REF, ["hover"]), run(low, ["hover"])
     assert_near_equal(prob.get_val("battery.initial_soc"), 0.9, 1e-15)
     assert_near_equal(prob.get_val("energy_used"), base.get_val("energy_used"), 1e-15)
-    assert_near_equal(base.get_val("state_of_charge")[0] - prob.get_val("state_of_charge")[0],
-                      0.1, 1e-12)
+    assert_near_equal(
+        base.get_val("state_of_charge")[0] - prob.get_val("state_of_charge")[0], 0.1, 1e-12
+    )
 
 
 # ------------------------------------------------------------------ 4. hover / OEI pitch
@@ -139,17 +145,18 @@ def test_nonzero_hover_pitch_is_rejected_by_the_file_validation(index, kind):
     # constraint), so conditions[i].pitch_deg must be 0 in hover and OEI.
     data = read_vehicle_file()
     data["conditions"][index]["pitch_deg"] = 3.0
-    with pytest.raises(VehicleSpecError,
-                       match=rf"'conditions\[{index}\]\.pitch_deg' = 3 deg is not allowed: "
-                             rf"must be 0 in '{kind}' conditions"):
+    with pytest.raises(
+        VehicleSpecError,
+        match=rf"'conditions\[{index}\]\.pitch_deg' = 3 deg is not allowed: "
+        rf"must be 0 in '{kind}' conditions",
+    ):
         vehicle_from_dict(data)
 
 
 def test_nonzero_hover_pitch_is_rejected_by_the_model():
     # dataclasses.replace skips the file validation; the hover group checks again.
     vehicle = with_condition(REF, "hover", pitch=np.radians(3.0))
-    prob = om.Problem(LPCGroup(vehicle=vehicle, conditions=["hover"]),
-                      reports=False)
+    prob = om.Problem(LPCGroup(vehicle=vehicle, conditions=["hover"]), reports=False)
     with pytest.raises(VehicleSpecError, match=r"'conditions\[0\]\.pitch_deg' = 3 deg"):
         prob.setup()
 
@@ -164,8 +171,7 @@ def test_hover_pitch_reaches_the_model():
 
 
 def _group_polars(vehicle, conditions, **options):
-    prob = om.Problem(LPCGroup(vehicle=vehicle, conditions=conditions,
-                               **options), reports=False)
+    prob = om.Problem(LPCGroup(vehicle=vehicle, conditions=conditions, **options), reports=False)
     prob.setup()
     return prob
 
@@ -183,8 +189,7 @@ def test_pusher_uses_its_own_airfoil_and_lift_rotors_theirs():
     assert prob.model.transition_1.lift_rotors.options["polar"] is get_polar("naca0015")
     # An explicit rotor_polar still serves every rotor.
     polar = LinearQuadraticPolar()
-    prob = _group_polars(vehicle, ["transition_1"], rotor_polar=polar,
-                         wing_zero_lift_angle=-0.07)
+    prob = _group_polars(vehicle, ["transition_1"], rotor_polar=polar, wing_zero_lift_angle=-0.07)
     assert prob.model.transition_1.pusher.options["polar"] is polar
     assert prob.model.transition_1.lift_rotors.options["polar"] is polar
 
@@ -195,29 +200,36 @@ def test_pusher_airfoil_moves_the_pusher_and_not_the_lift_rotors(tmp_path):
     alpha = np.linspace(-20.0, 20.0, 81)
     values = get_polar("naca0012").evaluate(np.radians(alpha), 2e6, 0.3)
     for name, factor in (("plain", 1.0), ("draggy", 3.0)):
-        np.savetxt(tmp_path / f"{name}.dat",
-                   np.column_stack([alpha, np.ravel(values.cl), factor * np.ravel(values.cd)]))
+        np.savetxt(
+            tmp_path / f"{name}.dat",
+            np.column_stack([alpha, np.ravel(values.cl), factor * np.ravel(values.cd)]),
+        )
     results = {}
     for name in ("plain", "draggy"):
-        vehicle = dataclasses.replace(REF, pusher=dataclasses.replace(
-            REF.pusher, airfoil=str(tmp_path / f"{name}.dat")))
+        vehicle = dataclasses.replace(
+            REF, pusher=dataclasses.replace(REF.pusher, airfoil=str(tmp_path / f"{name}.dat"))
+        )
         results[name] = run(vehicle, ["hover", "cruise"])
     plain, draggy = results["plain"], results["draggy"]
-    assert (draggy.get_val("cruise.pusher_efficiency")[0, 0]
-            < plain.get_val("cruise.pusher_efficiency")[0, 0] - 0.01)
-    assert_near_equal(draggy.get_val("hover.lift_thrust"), plain.get_val("hover.lift_thrust"),
-                      1e-14)
+    assert (
+        draggy.get_val("cruise.pusher_efficiency")[0, 0]
+        < plain.get_val("cruise.pusher_efficiency")[0, 0] - 0.01
+    )
+    assert_near_equal(
+        draggy.get_val("hover.lift_thrust"), plain.get_val("hover.lift_thrust"), 1e-14
+    )
 
 
 def test_lift_rotors_with_different_airfoils_are_rejected():
     # One polar serves all eight lift rotors (one rotor-model call per condition): a pair with
     # another section is a VehicleSpecError naming the first rotor that differs.
     vehicle = with_lift_airfoil(REF, "naca0015", pairs=(1,))
-    prob = om.Problem(LPCGroup(vehicle=vehicle, conditions=["hover"]),
-                      reports=False)
-    with pytest.raises(VehicleSpecError,
-                       match=r"'lift_rotors\[1\]\.airfoil' = 'naca0015' differs from "
-                             r"'lift_rotors\[0\]\.airfoil' = 'naca0012'; allowed: one airfoil"):
+    prob = om.Problem(LPCGroup(vehicle=vehicle, conditions=["hover"]), reports=False)
+    with pytest.raises(
+        VehicleSpecError,
+        match=r"'lift_rotors\[1\]\.airfoil' = 'naca0015' differs from "
+        r"'lift_rotors\[0\]\.airfoil' = 'naca0012'; allowed: one airfoil",
+    ):
         prob.setup()
 
 
@@ -246,9 +258,15 @@ def test_polar_file_rotor_uses_naca0012_thickness_with_a_warning(tmp_path):
     alpha = np.linspace(-10.0, 12.0, 23)
     np.savetxt(path, np.column_stack([alpha, 0.1 * alpha, 0.01 + 1e-4 * alpha**2]))
     vehicle = with_lift_airfoil(REF, str(path))
-    prob = om.Problem(LPCGroup(vehicle=vehicle, conditions=["hover"],
-                               rotor_polar=LinearQuadraticPolar(), wing_zero_lift_angle=-0.07),
-                      reports=False)
+    prob = om.Problem(
+        LPCGroup(
+            vehicle=vehicle,
+            conditions=["hover"],
+            rotor_polar=LinearQuadraticPolar(),
+            wing_zero_lift_angle=-0.07,
+        ),
+        reports=False,
+    )
     with pytest.warns(om.OpenMDAOWarning, match=r"'lift_rotors\[0\]\.airfoil' = .*blade\.dat"):
         prob.setup()
     prob.final_setup()

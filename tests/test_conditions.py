@@ -13,8 +13,9 @@ from lpc_mdo.groups.lpc import LPCGroup
 
 def condition_problem(name, design_vars=(), constraints=(), objective=None):
     prob = om.Problem(reports=False)
-    prob.model = LPCGroup(conditions=[name],
-                          rotor_polar=LinearQuadraticPolar(), wing_zero_lift_angle=-0.07)
+    prob.model = LPCGroup(
+        conditions=[name], rotor_polar=LinearQuadraticPolar(), wing_zero_lift_angle=-0.07
+    )
     for dv, kw in design_vars:
         prob.model.add_design_var(dv, **kw)
     for con, kw in constraints:
@@ -29,12 +30,14 @@ def condition_problem(name, design_vars=(), constraints=(), objective=None):
 @pytest.mark.requires_ipopt
 def test_hover_trim_is_reachable_by_rpm_alone():
     prob = condition_problem(
-        "hover", design_vars=[("hover_lift_rpm", dict(lower=500.0, upper=2500.0, ref=1e3))],
-        constraints=[("hover.linear_acceleration", dict(indices=[2], flat_indices=True,
-                                                        equals=0.0)),
-                     ("hover.angular_acceleration", dict(indices=[0, 1], flat_indices=True,
-                                                         equals=0.0))],
-        objective=("hover.electrical_power", dict(ref=1e5)))
+        "hover",
+        design_vars=[("hover_lift_rpm", dict(lower=500.0, upper=2500.0, ref=1e3))],
+        constraints=[
+            ("hover.linear_acceleration", dict(indices=[2], flat_indices=True, equals=0.0)),
+            ("hover.angular_acceleration", dict(indices=[0, 1], flat_indices=True, equals=0.0)),
+        ],
+        objective=("hover.electrical_power", dict(ref=1e5)),
+    )
     result = prob.run_driver()
     assert result.success, result.exit_status
     weight = prob.get_val("gross_mass")[0] * GRAVITY
@@ -42,22 +45,24 @@ def test_hover_trim_is_reachable_by_rpm_alone():
     # the other accelerations vanish.
     assert_near_equal(prob.get_val("hover.lift_thrust").sum(), weight, 1e-6)
     np.testing.assert_allclose(prob.get_val("hover.linear_acceleration"), 0.0, atol=1e-6)
-    np.testing.assert_allclose(prob.get_val("hover.angular_acceleration")[0, :2], 0.0,
-                               atol=1e-6)
+    np.testing.assert_allclose(prob.get_val("hover.angular_acceleration")[0, :2], 0.0, atol=1e-6)
 
 
 @pytest.mark.requires_ipopt
 def test_cruise_trim_by_pitch_elevator_and_pusher_speed():
     prob = condition_problem(
         "cruise",
-        design_vars=[("cruise_pitch", dict(lower=-0.2, upper=0.2, ref=0.1)),
-                     ("cruise_elevator", dict(lower=-0.3, upper=0.3, ref=0.1)),
-                     ("cruise_pusher_rpm", dict(lower=300.0, upper=3000.0, ref=1e3))],
-        constraints=[("cruise.linear_acceleration", dict(indices=[0, 2], flat_indices=True,
-                                                         equals=0.0)),
-                     ("cruise.angular_acceleration", dict(indices=[1], flat_indices=True,
-                                                          equals=0.0))],
-        objective=("cruise.electrical_power", dict(ref=1e5)))
+        design_vars=[
+            ("cruise_pitch", dict(lower=-0.2, upper=0.2, ref=0.1)),
+            ("cruise_elevator", dict(lower=-0.3, upper=0.3, ref=0.1)),
+            ("cruise_pusher_rpm", dict(lower=300.0, upper=3000.0, ref=1e3)),
+        ],
+        constraints=[
+            ("cruise.linear_acceleration", dict(indices=[0, 2], flat_indices=True, equals=0.0)),
+            ("cruise.angular_acceleration", dict(indices=[1], flat_indices=True, equals=0.0)),
+        ],
+        objective=("cruise.electrical_power", dict(ref=1e5)),
+    )
     result = prob.run_driver()
     assert result.success, result.exit_status
     weight = prob.get_val("gross_mass")[0] * GRAVITY
@@ -73,10 +78,13 @@ def test_cruise_trim_by_pitch_elevator_and_pusher_speed():
 @pytest.mark.requires_ipopt
 def test_plus_3g_trim_by_pitch_alone():
     prob = condition_problem(
-        "plus_3g", design_vars=[("plus_3g_pitch", dict(lower=-0.2, upper=0.4, ref=0.1))],
-        constraints=[("plus_3g.linear_acceleration", dict(indices=[2], flat_indices=True,
-                                                          equals=0.0))],
-        objective=("gross_mass", dict(ref=1e3)))
+        "plus_3g",
+        design_vars=[("plus_3g_pitch", dict(lower=-0.2, upper=0.4, ref=0.1))],
+        constraints=[
+            ("plus_3g.linear_acceleration", dict(indices=[2], flat_indices=True, equals=0.0))
+        ],
+        objective=("gross_mass", dict(ref=1e3)),
+    )
     result = prob.run_driver()
     assert result.success, result.exit_status
     weight = prob.get_val("gross_mass")[0] * GRAVITY
@@ -84,28 +92,31 @@ def test_plus_3g_trim_by_pitch_alone():
     # z-force balance at n = 3: aerodynamic z-force = -3 W cos(theta) (drag adds little).
     fz = prob.get_val("plus_3g.force")[0, 2]
     assert_near_equal(fz, -3.0 * weight * np.cos(theta), 1e-6)
-    assert_near_equal(-prob.get_val("plus_3g.aero_force")[0, 2], 3.0 * weight * np.cos(theta),
-                      0.02)
+    assert_near_equal(-prob.get_val("plus_3g.aero_force")[0, 2], 3.0 * weight * np.cos(theta), 0.02)
     ratios = prob.get_val("plus_3g.top_skin_buckling_ratio")
     assert np.all(np.isfinite(ratios)) and ratios[0] > ratios[-1]  # root bay most loaded
 
 
 def test_transition_point_runs_alone_and_obeys_newton():
     prob = om.Problem(reports=False)
-    prob.model = LPCGroup(conditions=["transition_2"],
-                          rotor_polar=LinearQuadraticPolar(), wing_zero_lift_angle=-0.07)
+    prob.model = LPCGroup(
+        conditions=["transition_2"], rotor_polar=LinearQuadraticPolar(), wing_zero_lift_angle=-0.07
+    )
     prob.setup()
     prob.run_model()
     c = "transition_2"
     mass = prob.get_val("gross_mass")[0]
     theta = prob.get_val(f"{c}.pitch")[0]
-    force = (prob.get_val(f"{c}.aero_force") + prob.get_val(f"{c}.drag_force")
-             + prob.get_val(f"{c}.lift_force") + prob.get_val(f"{c}.pusher_force"))[0]
+    force = (
+        prob.get_val(f"{c}.aero_force")
+        + prob.get_val(f"{c}.drag_force")
+        + prob.get_val(f"{c}.lift_force")
+        + prob.get_val(f"{c}.pusher_force")
+    )[0]
     gravity = GRAVITY * np.array([-np.sin(theta), 0.0, np.cos(theta)])
     velocity = prob.get_val(f"{c}.velocity")[0]
     # Closed form with zero body rates: a = F/m + g (resolved in body axes).
-    assert_near_equal(prob.get_val(f"{c}.linear_acceleration")[0], force / mass + gravity,
-                      1e-10)
+    assert_near_equal(prob.get_val(f"{c}.linear_acceleration")[0], force / mass + gravity, 1e-10)
     assert velocity[0] > 40.0  # prescribed speed of the point (~46.6 m/s)
     assert prob.get_val(f"{c}.electrical_power")[0] > 0.0
     assert np.all(prob.get_val(f"{c}.lift_thrust") > 0.0)
@@ -113,18 +124,33 @@ def test_transition_point_runs_alone_and_obeys_newton():
 
 def test_unknown_condition_is_named():
     prob = om.Problem(reports=False)
-    prob.model = LPCGroup(conditions=["landing"], rotor_polar=LinearQuadraticPolar(),
-                          wing_zero_lift_angle=-0.07)
+    prob.model = LPCGroup(
+        conditions=["landing"], rotor_polar=LinearQuadraticPolar(), wing_zero_lift_angle=-0.07
+    )
     with pytest.raises(ValueError, match=r"conditions = \['landing'\]; each must be one of"):
         prob.setup()
 
 
-@pytest.mark.parametrize("name", ["hover", "transition_1", "transition_5", "climb", "cruise",
-                                  "descent", "oei_1", "oei_4", "plus_3g", "minus_1g"])
+@pytest.mark.parametrize(
+    "name",
+    [
+        "hover",
+        "transition_1",
+        "transition_5",
+        "climb",
+        "cruise",
+        "descent",
+        "oei_1",
+        "oei_4",
+        "plus_3g",
+        "minus_1g",
+    ],
+)
 def test_each_condition_runs_alone(name):
     prob = om.Problem(reports=False)
-    prob.model = LPCGroup(conditions=[name],
-                          rotor_polar=LinearQuadraticPolar(), wing_zero_lift_angle=-0.07)
+    prob.model = LPCGroup(
+        conditions=[name], rotor_polar=LinearQuadraticPolar(), wing_zero_lift_angle=-0.07
+    )
     prob.setup()
     prob.run_model()
     assert np.all(np.isfinite(prob.get_val(f"{name}.linear_acceleration")))

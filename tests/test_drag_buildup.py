@@ -16,17 +16,24 @@ from lpc_mdo.components.aero.drag_buildup import (
 
 # Cruise (reference vehicle file): M 0.17 at 999.74 m, CADDEE atmosphere (docs theory/atmosphere):
 # rho = 1.11177 kg/m^3, mu = 1.70443e-5 Pa s, a = 336.410 m/s, V = 57.1897 m/s.
-CRUISE = {"speed": 57.1897, "density": 1.11177, "dynamic_viscosity": 1.70443e-5,
-          "speed_of_sound": 336.410, "angle_of_attack": math.radians(2.0)}
+CRUISE = {
+    "speed": 57.1897,
+    "density": 1.11177,
+    "dynamic_viscosity": 1.70443e-5,
+    "speed_of_sound": 336.410,
+    "angle_of_attack": math.radians(2.0),
+}
 
 
 def make_problem(components=None, values=None, conditions=(CRUISE,), **options):
     if components is None:
         components, values = lpc_drag_components()
     prob = om.Problem(reports=False)
-    prob.model.add_subsystem("drag", DragBuildupComp(components=components,
-                                                     num_nodes=len(conditions), **options),
-                             promotes=["*"])
+    prob.model.add_subsystem(
+        "drag",
+        DragBuildupComp(components=components, num_nodes=len(conditions), **options),
+        promotes=["*"],
+    )
     prob.setup(force_alloc_complex=True)
     for name, value in (values or {}).items():
         prob.set_val(name, value)
@@ -40,10 +47,13 @@ def test_form_factors_against_reference_table():
     # docs theory/aerodynamics 'Drag build-up' table (Raymer form, no sweep): wing LS(1)-0413 1.2236, LS(1)-0417
     # 1.3385, tails (t/c 0.15, (x/c)_m 0.3) 1.3506; fuselage f = 9.144/1.688 = 5.417,
     # FF = 1.3910. Tolerance: the 4 printed decimals.
-    comps = (LiftingSurfaceDrag("ls413", 0.13, 0.4), LiftingSurfaceDrag("ls417", 0.17, 0.4),
-             LiftingSurfaceDrag("tail", 0.15, 0.3), BodyDrag("fuselage"))
-    values = {"fuselage_length": 9.144, "fuselage_max_height": 1.688,
-              "fuselage_max_width": 1.557}
+    comps = (
+        LiftingSurfaceDrag("ls413", 0.13, 0.4),
+        LiftingSurfaceDrag("ls417", 0.17, 0.4),
+        LiftingSurfaceDrag("tail", 0.15, 0.3),
+        BodyDrag("fuselage"),
+    )
+    values = {"fuselage_length": 9.144, "fuselage_max_height": 1.688, "fuselage_max_width": 1.557}
     prob = make_problem(comps, values)
     assert_near_equal(prob.get_val("form_factors"), [1.2236, 1.3385, 1.3506, 1.3910], 5e-5)
     assert_near_equal(9.144 / 1.688, 5.417, 1e-4)
@@ -52,29 +62,39 @@ def test_form_factors_against_reference_table():
 def test_lpc_buildup_against_hand_calculation():
     comps, values = lpc_drag_components()
     # MACs of docs theory/aerodynamics 'Drag build-up' table (wing 1.4601, h-tail 0.9469, v-tail 1.6343 m).
-    assert_near_equal([values["wing_mean_aerodynamic_chord"],
-                       values["horizontal_tail_mean_aerodynamic_chord"],
-                       values["vertical_tail_mean_aerodynamic_chord"]],
-                      [1.4601, 0.9469, 1.6343], 1e-4)
+    assert_near_equal(
+        [
+            values["wing_mean_aerodynamic_chord"],
+            values["horizontal_tail_mean_aerodynamic_chord"],
+            values["vertical_tail_mean_aerodynamic_chord"],
+        ],
+        [1.4601, 0.9469, 1.6343],
+        1e-4,
+    )
     prob = make_problem()
     # Independent evaluation of docs theory/aerodynamics 'Drag build-up' with the math module: Raymer wetted areas 2 S (1 + 0.2 t/c),
     # Torenbeek fuselage pi D L (1 - 2/f)^(2/3) (1 + 1/f^2) with D = sqrt(H W), booms
     # 8 pi d L_c (d = 0.3048 m, our assumption), the docs theory/aerodynamics 'Drag build-up' skin friction with the LPC laminar
     # fractions (wing 0.7, others 0.1), Q = 1.1, rotors 0.111484 m^2.
-    v, rho, mu, a = (CRUISE[k] for k in ("speed", "density", "dynamic_viscosity",
-                                         "speed_of_sound"))
+    v, rho, mu, a = (CRUISE[k] for k in ("speed", "density", "dynamic_viscosity", "speed_of_sound"))
     mach = v / a
 
     def cf(length, lam):
         re = rho * v * length / mu
-        return (lam * 1.328 / math.sqrt(re)
-                + (1 - lam) * 0.455 / (math.log10(re) ** 2.58 * (1 + 0.144 * mach**2) ** 0.65))
+        return lam * 1.328 / math.sqrt(re) + (1 - lam) * 0.455 / (
+            math.log10(re) ** 2.58 * (1 + 0.144 * mach**2) ** 0.65
+        )
 
     d_eq = math.sqrt(1.688 * 1.557)
     f_eq = 9.144 / d_eq
     swet_fus = math.pi * d_eq * 9.144 * (1 - 2 / f_eq) ** (2 / 3) * (1 + 1 / f_eq**2)
-    swet = [2 * 19.6 * 1.026, 2 * 3.7 * 1.03, 2 * 2.54 * 1.03, swet_fus,
-            8 * math.pi * 0.3048 * 2.4384]
+    swet = [
+        2 * 19.6 * 1.026,
+        2 * 3.7 * 1.03,
+        2 * 2.54 * 1.03,
+        swet_fus,
+        8 * math.pi * 0.3048 * 2.4384,
+    ]
     assert_near_equal(prob.get_val("wetted_areas"), swet, 1e-10)
     ff = prob.get_val("form_factors")
     lengths = [1.46012, 0.946904, 1.63433, 9.144, 2.4384]
@@ -88,8 +108,7 @@ def test_lpc_buildup_against_hand_calculation():
     # Force along the relative wind (not the horizontal of quirk Q5).
     force = prob.get_val("parasite_drag_force")[0]
     alpha = CRUISE["angle_of_attack"]
-    assert_near_equal(force, -q * total * np.array([math.cos(alpha), 0.0, math.sin(alpha)]),
-                      1e-4)
+    assert_near_equal(force, -q * total * np.array([math.cos(alpha), 0.0, math.sin(alpha)]), 1e-4)
     # Magnitude check: turbulent flat plate (Prandtl-Schlichting) C_f at Re = 1e7 is 0.00300.
     assert_near_equal(0.455 / 7.0**2.58, 0.00300, 2e-3)
 
@@ -107,24 +126,31 @@ def test_hover_drag_factor_and_partials():
     data = prob.check_partials(method="cs", compact_print=True, out_stream=None)
     assert_check_partials(data, atol=1e-10, rtol=1e-10)
     scaled = make_problem(conditions=(hover, cruise, climb), drag_factor=1.5)
-    assert_near_equal(scaled.get_val("parasite_drag"), 1.5 * prob.get_val("parasite_drag"),
-                      1e-14)
+    assert_near_equal(scaled.get_val("parasite_drag"), 1.5 * prob.get_val("parasite_drag"), 1e-14)
 
 
 def test_bad_specs_and_inputs():
-    with pytest.raises(ValueError, match="'thickness_to_chord' = 0.7 is out of range: "
-                                         "must be in \\(0, 0.5\\]"):
+    with pytest.raises(
+        ValueError, match="'thickness_to_chord' = 0.7 is out of range: must be in \\(0, 0.5\\]"
+    ):
         LiftingSurfaceDrag("wing", 0.7, 0.4)
     with pytest.raises(ValueError, match="'count' = 0 is out of range: must be >= 1"):
         FixedFormFactorDrag("booms", 1.1, count=0)
-    prob = make_problem((BodyDrag("pod"),), {"pod_length": 5.0, "pod_max_height": 1.0,
-                                             "pod_max_width": 0.8})
+    prob = make_problem(
+        (BodyDrag("pod"),), {"pod_length": 5.0, "pod_max_height": 1.0, "pod_max_width": 0.8}
+    )
     assert prob.get_val("form_factors")[0] > 1.0
     prob.set_val("pod_length", 1.5)
-    with pytest.raises(om.AnalysisError, match=r"pod_length/sqrt\(pod_max_height\*pod_max_width\)"
-                       r" = 1.67705; .* fineness ratio > 2"):
+    with pytest.raises(
+        om.AnalysisError,
+        match=r"pod_length/sqrt\(pod_max_height\*pod_max_width\)"
+        r" = 1.67705; .* fineness ratio > 2",
+    ):
         prob.run_model()
     prob.set_val("pod_length", -1.0)
-    with pytest.raises(om.AnalysisError, match=r"'pod_length\[0\]' = -1.0 is out of range: "
-                                               r"must be > 0"):
+    with pytest.raises(
+        om.AnalysisError,
+        match=r"'pod_length\[0\]' = -1.0 is out of range: "
+        r"must be > 0",
+    ):
         prob.run_model()

@@ -46,8 +46,16 @@ class Paraboloid(om.ExplicitComponent):
         partials["f", "y"] = x + 2.0 * (y + 4.0)
 
 
-def paraboloid_problem(driver, *, x_upper=50.0, equality=False, linear=False,
-                       scaled=False, y_ref=20.0, fail_on_calls=()):
+def paraboloid_problem(
+    driver,
+    *,
+    x_upper=50.0,
+    equality=False,
+    linear=False,
+    scaled=False,
+    y_ref=20.0,
+    fail_on_calls=(),
+):
     prob = om.Problem(reports=False)
     prob.model.add_subsystem("parab", Paraboloid(fail_on_calls=fail_on_calls), promotes=["*"])
     prob.model.add_subsystem("con", om.ExecComp("c = x - y"), promotes=["*"])
@@ -62,11 +70,9 @@ def paraboloid_problem(driver, *, x_upper=50.0, equality=False, linear=False,
         prob.model.add_design_var("y", lower=-50.0, upper=50.0)
         prob.model.add_objective("f")
     if equality:
-        prob.model.add_constraint("c", equals=15.0, linear=linear,
-                                  ref=5.0 if scaled else None)
+        prob.model.add_constraint("c", equals=15.0, linear=linear, ref=5.0 if scaled else None)
     else:
-        prob.model.add_constraint("c", lower=15.0, linear=linear,
-                                  ref=5.0 if scaled else None)
+        prob.model.add_constraint("c", lower=15.0, linear=linear, ref=5.0 if scaled else None)
     prob.driver = driver
     prob.setup()
     prob.set_val("x", 0.0)
@@ -85,12 +91,15 @@ def sellar_problem(driver, con2_upper=0.0):
     cycle = model.add_subsystem("cycle", om.Group(), promotes=["*"])
     cycle.add_subsystem("d1", SellarDis1withDerivatives(), promotes=["*"])
     cycle.add_subsystem("d2", SellarDis2withDerivatives(), promotes=["*"])
-    cycle.nonlinear_solver = om.NewtonSolver(solve_subsystems=False, atol=1e-14, rtol=1e-14,
-                                             iprint=-1)
+    cycle.nonlinear_solver = om.NewtonSolver(
+        solve_subsystems=False, atol=1e-14, rtol=1e-14, iprint=-1
+    )
     cycle.linear_solver = om.DirectSolver()
-    model.add_subsystem("obj_cmp", om.ExecComp("obj = x**2 + z[1] + y1 + exp(-y2)",
-                                               z=np.array([5.0, 2.0]), x=1.0),
-                        promotes=["*"])
+    model.add_subsystem(
+        "obj_cmp",
+        om.ExecComp("obj = x**2 + z[1] + y1 + exp(-y2)", z=np.array([5.0, 2.0]), x=1.0),
+        promotes=["*"],
+    )
     model.add_subsystem("con_cmp1", om.ExecComp("con1 = 3.16 - y1"), promotes=["*"])
     model.add_subsystem("con_cmp2", om.ExecComp("con2 = y2 - 24.0"), promotes=["*"])
     model.set_input_defaults("x", 1.0)
@@ -148,11 +157,16 @@ def test_inequality_paraboloid_closed_form():
 @pytest.mark.parametrize("equality", [False, True])
 @pytest.mark.parametrize("linear", [False, True])
 def test_scaled_problems_agree_with_slsqp(equality, linear):
-    ipopt = paraboloid_problem(IpoptDriver(print_level=0, tol=1e-10), equality=equality,
-                               linear=linear, scaled=True)
+    ipopt = paraboloid_problem(
+        IpoptDriver(print_level=0, tol=1e-10), equality=equality, linear=linear, scaled=True
+    )
     assert ipopt.run_driver().success
-    slsqp = paraboloid_problem(om.ScipyOptimizeDriver(optimizer="SLSQP", tol=1e-12, disp=False),
-                               equality=equality, linear=linear, scaled=True)
+    slsqp = paraboloid_problem(
+        om.ScipyOptimizeDriver(optimizer="SLSQP", tol=1e-12, disp=False),
+        equality=equality,
+        linear=linear,
+        scaled=True,
+    )
     assert slsqp.run_driver().success
     for name in ("x", "y", "f"):
         assert_near_equal(ipopt.get_val(name), slsqp.get_val(name), 1e-6)
@@ -214,8 +228,11 @@ def test_analysis_error_is_cut_back_and_optimization_converges(tmp_path):
     prob.cleanup()
     # The failed evaluations are recorded as failed driver cases (success 0, the error as msg).
     reader = om.CaseReader(path)
-    failed = [c for c in map(reader.get_case, reader.list_cases("driver", out_stream=None))
-              if not c.success]
+    failed = [
+        c
+        for c in map(reader.get_case, reader.list_cases("driver", out_stream=None))
+        if not c.success
+    ]
     assert len(failed) == 2
     assert failed[0].msg.endswith("simulated failure on call 3")
     assert failed[1].msg.endswith("simulated failure on call 5")
@@ -279,7 +296,8 @@ def test_warm_start_takes_fewer_iterations_than_cold_start(tmp_path):
 def test_warm_start_multipliers_of_wrong_size_are_rejected():
     prob = sellar_problem(IpoptDriver(print_level=0))
     prob.driver.options["warm_start"] = IpoptMultipliers(
-        constraints={"con1": np.zeros(3)}, lower={}, upper={})
+        constraints={"con1": np.zeros(3)}, lower={}, upper={}
+    )
     with pytest.raises(ValueError, match="'con1' have size 3, but the problem has size 1"):
         prob.run_driver()
 
@@ -291,13 +309,22 @@ def test_sparse_jacobian_from_coloring_and_relevance():
     def build(color):
         prob = om.Problem(reports=False)
         prob.model.add_subsystem(
-            "f", om.ExecComp("obj = sum((x - 2.0)**2) + sum((y + 1.0)**2)",
-                             x=np.zeros(n), y=np.zeros(n)), promotes=["*"])
-        prob.model.add_subsystem("cx", om.ExecComp("c = x**2", c=np.zeros(n), x=np.zeros(n),
-                                                   has_diag_partials=True), promotes=["*"])
-        prob.model.add_subsystem("cy", om.ExecComp("d = 2.0 * y", d=np.zeros(n),
-                                                   y=np.zeros(n), has_diag_partials=True),
-                                 promotes=["*"])
+            "f",
+            om.ExecComp(
+                "obj = sum((x - 2.0)**2) + sum((y + 1.0)**2)", x=np.zeros(n), y=np.zeros(n)
+            ),
+            promotes=["*"],
+        )
+        prob.model.add_subsystem(
+            "cx",
+            om.ExecComp("c = x**2", c=np.zeros(n), x=np.zeros(n), has_diag_partials=True),
+            promotes=["*"],
+        )
+        prob.model.add_subsystem(
+            "cy",
+            om.ExecComp("d = 2.0 * y", d=np.zeros(n), y=np.zeros(n), has_diag_partials=True),
+            promotes=["*"],
+        )
         prob.model.add_design_var("x", lower=-10.0, upper=10.0)
         prob.model.add_design_var("y", lower=-10.0, upper=10.0)
         prob.model.add_objective("obj")

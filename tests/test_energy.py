@@ -13,8 +13,9 @@ PAPER_MULTIPLIERS = [2.0, 4.0, 4.0, 2.0, 3.0, 2.0, 0.0]
 
 def mission_problem():
     prob = om.Problem(reports=False)
-    prob.model.add_subsystem("mission", MissionEnergyComp(energy_multipliers=PAPER_MULTIPLIERS),
-                             promotes=["*"])
+    prob.model.add_subsystem(
+        "mission", MissionEnergyComp(energy_multipliers=PAPER_MULTIPLIERS), promotes=["*"]
+    )
     prob.model.add_subsystem("battery", BatteryComp(), promotes=["*"])
     prob.setup(force_alloc_complex=True)
     prob.set_val("electrical_power", [1.0, 0.8, 0.6, 0.5, 0.3, 0.2, 1.2], units="MW")
@@ -71,21 +72,30 @@ def test_partials():
 
 
 def test_bad_inputs():
-    with pytest.raises(ValueError, match=r"'energy_multipliers\[1\]' = -2.0 is out of range: "
-                                     r"must be >= 0"):
+    with pytest.raises(
+        ValueError,
+        match=r"'energy_multipliers\[1\]' = -2.0 is out of range: "
+        r"must be >= 0",
+    ):
         prob = om.Problem(reports=False)
         prob.model.add_subsystem("m", MissionEnergyComp(energy_multipliers=[1.0, -2.0]))
         prob.setup()
     prob = mission_problem()
     prob.set_val("battery_mass", -5.0)
-    with pytest.raises(om.AnalysisError, match=r"'battery_mass' = -5.0"
-                                               r" is out of range: must be > 0 \(kg\)"):
+    with pytest.raises(
+        om.AnalysisError,
+        match=r"'battery_mass' = -5.0"
+        r" is out of range: must be > 0 \(kg\)",
+    ):
         prob.run_model()
     for bad in (0.0, 1.2):
         prob = mission_problem()
         prob.set_val("initial_soc", bad)
-        with pytest.raises(om.AnalysisError, match=rf"'initial_soc' = {bad} is out of range: "
-                                                 r"must be in \(0, 1\]"):
+        with pytest.raises(
+            om.AnalysisError,
+            match=rf"'initial_soc' = {bad} is out of range: "
+            r"must be in \(0, 1\]",
+        ):
             prob.run_model()
     prob = mission_problem()
     prob.set_val("duration", [-1.0, 0, 0, 0, 0, 0, 0])

@@ -12,9 +12,9 @@ from lpc_mdo.constants import GRAVITY
 # about the reference point, no gravity): m, cg, I, F = (100, 100, 100) N, M = (20, 20, 20) N m.
 MASS = 7126.1992
 CG = np.array([12.57675332, 0.0, 7.084392152])
-I_REF = np.array([[4376.344208, 0.0, 213.8989507],
-                  [0.0, 2174.842852, 0.0],
-                  [213.8989507, 0.0, 6157.83761]])
+I_REF = np.array(
+    [[4376.344208, 0.0, 213.8989507], [0.0, 2174.842852, 0.0], [213.8989507, 0.0, 6157.83761]]
+)
 EXPECTED = np.array([1.67526e-2, -2.34018e-5, 9.20416e-3, 4.13169e-3, -3.83928e-4, 3.44498e-3])
 
 
@@ -56,8 +56,10 @@ def test_gravity_and_trim_closed_forms():
     # Node 0: hover with thrust exactly balancing weight -> zero acceleration (trim).
     # Node 1: no force at 10 deg pitch -> free fall resolved in the body axes.
     # Node 2: lift of 3 g at n = 3 -> trimmed.
-    prob.set_val("force", [[0.0, 0.0, -3000.0 * GRAVITY], [0.0, 0.0, 0.0],
-                           [0.0, 0.0, -3.0 * 3000.0 * GRAVITY]])
+    prob.set_val(
+        "force",
+        [[0.0, 0.0, -3000.0 * GRAVITY], [0.0, 0.0, 0.0], [0.0, 0.0, -3.0 * 3000.0 * GRAVITY]],
+    )
     prob.run_model()
     acc = prob.get_val("linear_acceleration")
     assert_near_equal(acc[0], np.zeros(3), 1e-12)

@@ -28,13 +28,15 @@ def test_values_against_closed_form():
     # Closed forms (docs theory/rotors 'BEM inflow residual'): alpha = theta - gamma; cruise M 0.17 at 1000 m.
     assert_near_equal(prob.get_val("angle_of_attack"), np.radians([0.0, 2.0, 2.0]), 1e-12)
     assert_near_equal(prob.get_val("mach")[2], 0.17, 1e-4)
-    assert_near_equal(prob.get_val("dynamic_pressure"), 0.5 * prob.get_val("density") * speed**2,
-                      1e-12)
+    assert_near_equal(
+        prob.get_val("dynamic_pressure"), 0.5 * prob.get_val("density") * speed**2, 1e-12
+    )
     assert_near_equal(np.hypot(prob.get_val("u"), prob.get_val("w")), speed, 1e-12)
     assert prob.get_val("u")[0] == 0.0 and prob.get_val("reynolds_per_length")[0] == 0.0
     # Cruise Reynolds number on the 1.460 m wing MAC (docs theory/geometry 'Reference vehicle'): about 4e6.
-    assert_near_equal(prob.get_val("reynolds_per_length")[2] * 1.460, 1.11164 * 57.19 * 1.46
-                      / 1.7579e-5, 1e-12)
+    assert_near_equal(
+        prob.get_val("reynolds_per_length")[2] * 1.460, 1.11164 * 57.19 * 1.46 / 1.7579e-5, 1e-12
+    )
 
 
 def test_partials():
@@ -46,6 +48,9 @@ def test_partials():
 def test_negative_speed_is_an_analysis_error():
     prob = make_problem()
     prob.set_val("speed", [-1.0, 10.0, 20.0])
-    with pytest.raises(om.AnalysisError, match=r"'speed\[0\]' = -1.0"
-                                               r" is out of range: must be >= 0 \(m/s\)"):
+    with pytest.raises(
+        om.AnalysisError,
+        match=r"'speed\[0\]' = -1.0"
+        r" is out of range: must be >= 0 \(m/s\)",
+    ):
         prob.run_model()

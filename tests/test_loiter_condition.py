@@ -18,8 +18,8 @@ from lpc_mdo.problems import build_analysis_problem, build_problem
 from lpc_mdo.trim import trim
 from lpc_mdo.vehicle import load_vehicle, reference_vehicle
 
-LOITER_DURATION = 600.0   # s
-LOITER_WEIGHT = 1.5       # the loiter counts 1.5 times in the mission energy
+LOITER_DURATION = 600.0  # s
+LOITER_WEIGHT = 1.5  # the loiter counts 1.5 times in the mission energy
 LOITER = f"""
 [[conditions]]
 name = "loiter"
@@ -121,7 +121,6 @@ def test_loiter_appears_in_analyze_and_the_report(loiter_file, tmp_path, capsys)
     assert "16 design conditions" in printed
     assert any(line.strip().startswith("loiter") for line in printed.splitlines())
     assert "loiter.linear_acceleration" in (out / "constraints.md").read_text()
-    index = write_report(out, tmp_path / "report",
-                         ReportSpec(vehicle=load_vehicle(loiter_file)))
+    index = write_report(out, tmp_path / "report", ReportSpec(vehicle=load_vehicle(loiter_file)))
     trim_tables = list(index.parent.rglob("trim_residuals_*.md"))
     assert trim_tables and "loiter" in trim_tables[0].read_text()

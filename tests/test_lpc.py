@@ -1,6 +1,7 @@
 """The full lift-plus-cruise model (paper Table 6: 161 design variables, 96 constraints; and our
 10 transition roll/yaw lift-rotor speed differentials, with 40 linear bounds on each rotor's
-speed)."""
+speed).
+"""
 
 from collections import Counter
 
@@ -16,9 +17,17 @@ from lpc_mdo.problems import declare_problem
 # Paper Table 6, by group.
 TABLE6_DESIGN_VARIABLES = {
     "planform (wing and tail S and AR, fuselage length)": 5,
-    "rotor radius": 5, "blade chord": 20, "blade twist": 20, "battery mass": 1,
-    "motor length": 5, "lift rotor speeds, hover": 4, "lift rotor speeds, transition": 20,
-    "lift rotor speeds, OEI": 28, "pusher speeds": 8, "pitch": 5, "elevator": 8,
+    "rotor radius": 5,
+    "blade chord": 20,
+    "blade twist": 20,
+    "battery mass": 1,
+    "motor length": 5,
+    "lift rotor speeds, hover": 4,
+    "lift rotor speeds, transition": 20,
+    "lift rotor speeds, OEI": 28,
+    "pusher speeds": 8,
+    "pitch": 5,
+    "elevator": 8,
     "wing-box thicknesses": 32,
 }
 # Not in the paper: roll and yaw speed differentials of the transition lift rotors (roll and yaw
@@ -27,23 +36,42 @@ OUR_DESIGN_VARIABLES = {"lift rotor roll/yaw differentials, transition": 10}
 # Not in the paper: each transition lift rotor's own speed within its pair's bounds (linear).
 OUR_CONSTRAINTS = {"transition lift rotor speed bounds": 40}
 TABLE6_CONSTRAINTS = {
-    "hover noise": 1, "hover trim": 3, "hover tip Mach": 4, "climb/cruise/descent trim": 9,
-    "transition trim (v, p, q, r)": 20, "transition prescribed accelerations": 10,
-    "OEI trim": 20, "+3g/-1g trim": 2, "static margin": 1, "buckling": 14, "final SoC": 1,
-    "radius intersection": 2, "motor torque margin": 9,
+    "hover noise": 1,
+    "hover trim": 3,
+    "hover tip Mach": 4,
+    "climb/cruise/descent trim": 9,
+    "transition trim (v, p, q, r)": 20,
+    "transition prescribed accelerations": 10,
+    "OEI trim": 20,
+    "+3g/-1g trim": 2,
+    "static margin": 1,
+    "buckling": 14,
+    "final SoC": 1,
+    "radius intersection": 2,
+    "motor torque margin": 9,
 }
 
 
 def _dv_group(name):
-    if name in ("wing_area", "wing_aspect_ratio", "htail_area", "htail_aspect_ratio",
-                "fuselage_length"):
+    if name in (
+        "wing_area",
+        "wing_aspect_ratio",
+        "htail_area",
+        "htail_aspect_ratio",
+        "fuselage_length",
+    ):
         return "planform (wing and tail S and AR, fuselage length)"
-    table = {"rotor_radius": "rotor radius", "blade_chord_cp": "blade chord",
-             "blade_twist_cp": "blade twist", "battery_mass": "battery mass",
-             "motor_length": "motor length", "hover_lift_rpm": "lift rotor speeds, hover",
-             "transition_lift_rpm": "lift rotor speeds, transition",
-             "transition_roll_yaw_rpm": "lift rotor roll/yaw differentials, transition",
-             "oei_lift_rpm": "lift rotor speeds, OEI"}
+    table = {
+        "rotor_radius": "rotor radius",
+        "blade_chord_cp": "blade chord",
+        "blade_twist_cp": "blade twist",
+        "battery_mass": "battery mass",
+        "motor_length": "motor length",
+        "hover_lift_rpm": "lift rotor speeds, hover",
+        "transition_lift_rpm": "lift rotor speeds, transition",
+        "transition_roll_yaw_rpm": "lift rotor roll/yaw differentials, transition",
+        "oei_lift_rpm": "lift rotor speeds, OEI",
+    }
     if name in table:
         return table[name]
     if name.endswith("pusher_rpm"):
@@ -78,10 +106,13 @@ def _constraint_group(name, meta):
         return "+3g/-1g trim"
     if "buckling" in name:
         return "buckling"
-    return {"cruise.static_margin": "static margin", "state_of_charge": "final SoC",
-            "radius_intersection": "radius intersection",
-            "lift_motor_torque_margin": "motor torque margin",
-            "pusher_motor_torque_margin": "motor torque margin"}[name]
+    return {
+        "cruise.static_margin": "static margin",
+        "state_of_charge": "final SoC",
+        "radius_intersection": "radius intersection",
+        "lift_motor_torque_margin": "motor torque margin",
+        "pusher_motor_torque_margin": "motor torque margin",
+    }[name]
 
 
 @pytest.fixture(scope="module")
@@ -89,7 +120,7 @@ def lpc():
     prob = om.Problem(reports=False)
     # The analytic reference polar keeps this test independent of the airfoil tables.
     prob.model = LPCGroup(rotor_polar=LinearQuadraticPolar(), wing_zero_lift_angle=-0.07)
-    declare_problem(prob.model)   # paper Table 6, every row (lateral_trim)
+    declare_problem(prob.model)  # paper Table 6, every row (lateral_trim)
     prob.setup(mode="rev", force_alloc_complex=True)
     prob.run_model()
     return prob
@@ -128,7 +159,8 @@ def test_transition_rotor_speed_bounds_are_the_pair_bounds(lpc):
 
 def test_initial_design(lpc):
     """The calibration target (true by construction: W_other is calibrated so that the initial
-    design weighs the paper's 3723.99 kg, Table 8), next to checks it does not imply."""
+    design weighs the paper's 3723.99 kg, Table 8), next to checks it does not imply.
+    """
     assert_near_equal(lpc.get_val("gross_mass", units="kg"), 3723.99, 1e-10)
     # Independent of the calibration: the gross mass is the sum of the breakdown's items.
     breakdown = lpc.get_val("mass_breakdown", units="kg")
@@ -154,13 +186,23 @@ def test_the_model_has_physics_options_only():
     # The problem (design variables, constraints, objective, subproblems, baseline penalty) is
     # declared by lpc_mdo.problems; the model's options are its physics and its conditions.
     assert set(LPCGroup().options) - {"assembled_jac_type", "derivs_method", "auto_order"} == {
-        "vehicle", "conditions", "rotor_polar", "wing_zero_lift_angle", "ks_rho",
-        "structural_coupling", "structural_ks_rho"}
+        "vehicle",
+        "conditions",
+        "rotor_polar",
+        "wing_zero_lift_angle",
+        "ks_rho",
+        "structural_coupling",
+        "structural_ks_rho",
+    }
 
 
 def test_an_undeclared_model_has_no_problem():
-    prob = om.Problem(LPCGroup(rotor_polar=LinearQuadraticPolar(), wing_zero_lift_angle=-0.07,
-                               conditions=["cruise"]), reports=False)
+    prob = om.Problem(
+        LPCGroup(
+            rotor_polar=LinearQuadraticPolar(), wing_zero_lift_angle=-0.07, conditions=["cruise"]
+        ),
+        reports=False,
+    )
     prob.setup()
     prob.final_setup()
     assert not prob.model.get_design_vars() and not prob.model.get_constraints()
@@ -168,13 +210,29 @@ def test_an_undeclared_model_has_no_problem():
 
 def test_totals_across_disciplines(lpc):
     """Adjoint totals against complex step through every kind of condition."""
-    of = ["gross_mass", "state_of_charge", "hover.linear_acceleration", "hover.total_spl_a",
-          "cruise.static_margin", "cruise.linear_acceleration",
-          "plus_3g.top_skin_buckling_ratio", "lift_motor_torque_margin",
-          "transition_2.angular_acceleration", "oei_1.angular_acceleration"]
-    wrt = ["wing_area", "hover_lift_rpm", "cruise_pitch", "top_skin_thickness", "motor_length",
-           "transition_lift_rpm", "transition_roll_yaw_rpm", "blade_twist_cp",
-           "fuselage_length"]
+    of = [
+        "gross_mass",
+        "state_of_charge",
+        "hover.linear_acceleration",
+        "hover.total_spl_a",
+        "cruise.static_margin",
+        "cruise.linear_acceleration",
+        "plus_3g.top_skin_buckling_ratio",
+        "lift_motor_torque_margin",
+        "transition_2.angular_acceleration",
+        "oei_1.angular_acceleration",
+    ]
+    wrt = [
+        "wing_area",
+        "hover_lift_rpm",
+        "cruise_pitch",
+        "top_skin_thickness",
+        "motor_length",
+        "transition_lift_rpm",
+        "transition_roll_yaw_rpm",
+        "blade_twist_cp",
+        "fuselage_length",
+    ]
     data = lpc.check_totals(of=of, wrt=wrt, method="cs", out_stream=None)
     assert_check_totals(data, atol=1e-6, rtol=1e-5)
 

@@ -7,8 +7,9 @@ from lpc_mdo.components.structures.mesh_deformation import MeshDeformationComp
 
 def test_mirror_symmetric_deformation():
     prob = om.Problem(reports=False)
-    prob.model.add_subsystem("d", MeshDeformationComp(num_chord_nodes=2, num_span_nodes=5),
-                             promotes=["*"])
+    prob.model.add_subsystem(
+        "d", MeshDeformationComp(num_chord_nodes=2, num_span_nodes=5), promotes=["*"]
+    )
     prob.setup(force_alloc_complex=True)
     y = np.array([-2.0, -1.0, 0.0, 1.0, 2.0])
     mesh = np.zeros((2, 5, 3))

@@ -19,35 +19,60 @@ from lpc_mdo.components.motor.efficiency import EMTorqueComp, MotorLossComp, Mot
 from lpc_mdo.components.motor.torque_limit import TorqueLimitComp
 from lpc_mdo.groups.motor import MotorGroup
 
-pytestmark = pytest.mark.filterwarnings('ignore:.*nonlinear solver that computes gradients')
+pytestmark = pytest.mark.filterwarnings("ignore:.*nonlinear solver that computes gradients")
 
 
 def printed_tolerance(value):
     """Relative tolerance of a reference number: half a unit in its last printed digit."""
-    mantissa, _, exponent = repr(float(value)).lower().partition('e')
-    decimals = len(mantissa.partition('.')[2])
+    mantissa, _, exponent = repr(float(value)).lower().partition("e")
+    decimals = len(mantissa.partition(".")[2])
     return 0.5 * 10.0 ** (int(exponent or 0) - decimals) / abs(value) * 1.01
 
 
 # docs theory/motor 'Validation': lsdo_motor (dev_csdl_alpha) run unchanged.
 # (length m, L/D, rotor torque N*m, rotor rpm) and the printed results.
 REFERENCE_CASES = {
-    'A': ((0.131, 1.0 / 3.0, 1200.0, 1193.7),
-          {'mass': 54.0287842, 'peak_torque': 1652.87128, 'inductance_d': 7.4966e-4,
-           'inductance_q': 1.04832e-3, 'flux_linkage': 0.29958174, 'torque_limit': 471.691,
-           'em_torque': 305.63923318, 'efficiency': 0.98154938, 'output_power': 150004.766,
-           'input_power': 152824.472}),
-    'B': ((0.131, 1.0 / 3.0, 172.317, 3375.10),
-          {'em_torque': 45.09625639, 'efficiency': 0.95527331, 'output_power': 60903.659,
-           'input_power': 63755.219}),
-    'C': ((0.08, 0.5, 300.0, 1500.0),
-          {'diameter': 0.16, 'mass': 5.46888449, 'peak_torque': 93.4297526,
-           'resistance': 0.00506054, 'em_torque': 77.42764173, 'efficiency': 0.96864632,
-           'output_power': 47123.890, 'input_power': 48649.222}),
+    "A": (
+        (0.131, 1.0 / 3.0, 1200.0, 1193.7),
+        {
+            "mass": 54.0287842,
+            "peak_torque": 1652.87128,
+            "inductance_d": 7.4966e-4,
+            "inductance_q": 1.04832e-3,
+            "flux_linkage": 0.29958174,
+            "torque_limit": 471.691,
+            "em_torque": 305.63923318,
+            "efficiency": 0.98154938,
+            "output_power": 150004.766,
+            "input_power": 152824.472,
+        },
+    ),
+    "B": (
+        (0.131, 1.0 / 3.0, 172.317, 3375.10),
+        {
+            "em_torque": 45.09625639,
+            "efficiency": 0.95527331,
+            "output_power": 60903.659,
+            "input_power": 63755.219,
+        },
+    ),
+    "C": (
+        (0.08, 0.5, 300.0, 1500.0),
+        {
+            "diameter": 0.16,
+            "mass": 5.46888449,
+            "peak_torque": 93.4297526,
+            "resistance": 0.00506054,
+            "em_torque": 77.42764173,
+            "efficiency": 0.96864632,
+            "output_power": 47123.890,
+            "input_power": 48649.222,
+        },
+    ),
 }
 
 
-@pytest.mark.parametrize('case', sorted(REFERENCE_CASES))
+@pytest.mark.parametrize("case", sorted(REFERENCE_CASES))
 def test_reference_operating_points(case):
     """
     The three operating points of docs theory/motor 'Validation' (lsdo_motor run unchanged) through motor_analysis.
@@ -67,14 +92,18 @@ def test_reference_operating_points(case):
 def test_efficiency_residual_and_power_balance():
     # Paper eq. 24 at the solution: eta T_em = Q_r/G (1e-12 relative, solved to machine
     # precision), and P_in = P_out + losses, P_out = Q_r omega_rotor (identities, 1e-14).
-    result = motor_analysis(np.array([0.1, 0.131]), [[600.0, 300.0], [1200.0, 800.0]],
-                            [[1300.0, 2500.0], [1193.7, 1500.0]])
+    result = motor_analysis(
+        np.array([0.1, 0.131]),
+        [[600.0, 300.0], [1200.0, 800.0]],
+        [[1300.0, 2500.0], [1193.7, 1500.0]],
+    )
     torque = np.array([[600.0, 300.0], [1200.0, 800.0]])
     rpm = np.array([[1300.0, 2500.0], [1193.7, 1500.0]])
-    assert_near_equal(result['efficiency'] * result['em_torque'], torque / 4.0, tolerance=1e-12)
-    assert_near_equal(result['output_power'], torque * rpm * np.pi / 30.0, tolerance=1e-14)
-    assert_near_equal(result['input_power'], result['output_power'] + result['power_loss'],
-                      tolerance=1e-14)
+    assert_near_equal(result["efficiency"] * result["em_torque"], torque / 4.0, tolerance=1e-12)
+    assert_near_equal(result["output_power"], torque * rpm * np.pi / 30.0, tolerance=1e-14)
+    assert_near_equal(
+        result["input_power"], result["output_power"] + result["power_loss"], tolerance=1e-14
+    )
 
 
 def test_voltage_limit_report():
@@ -86,28 +115,29 @@ def test_voltage_limit_report():
     # Case C is within the limit.
     case_a = motor_analysis(0.131, 1200.0, 1193.7, length_to_diameter=1.0 / 3.0)
     case_c = motor_analysis(0.08, 300.0, 1500.0)
-    assert case_a['beyond_voltage_limit'] and not case_c['beyond_voltage_limit']
-    assert_near_equal(case_a['voltage'], 942.05, tolerance=1e-5)
-    assert_near_equal(case_a['voltage_margin'], 1.0 - case_a['voltage'] / 400.0, tolerance=1e-14)
-    assert case_c['voltage'] < 400.0 and case_c['voltage_margin'] > 0.0
-    assert case_a['voltage_torque_margin'] > 0.0
+    assert case_a["beyond_voltage_limit"] and not case_c["beyond_voltage_limit"]
+    assert_near_equal(case_a["voltage"], 942.05, tolerance=1e-5)
+    assert_near_equal(case_a["voltage_margin"], 1.0 - case_a["voltage"] / 400.0, tolerance=1e-14)
+    assert case_c["voltage"] < 400.0 and case_c["voltage_margin"] > 0.0
+    assert case_a["voltage_torque_margin"] > 0.0
 
 
 def test_torque_margin_definition():
     # Torque margin = T_pk/T_em - 1 (paper Sec. V, docs theory/motor 'Torque margin'): case C, T_pk 93.4297526 and T_em
     # 77.42764173 from docs theory/motor 'Validation' -> 0.2066719, to the printed precision (1e-8).
     result = motor_analysis(0.08, 300.0, 1500.0)
-    assert_near_equal(result['torque_margin'], 93.4297526 / 77.42764173 - 1.0, tolerance=1e-8)
+    assert_near_equal(result["torque_margin"], 93.4297526 / 77.42764173 - 1.0, tolerance=1e-8)
 
 
 def _group(nm=2, nn=3, **options):
     prob = om.Problem(reports=False)
-    prob.model.add_subsystem('motor', MotorGroup(num_motors=nm, num_nodes=nn, **options),
-                             promotes=['*'])
+    prob.model.add_subsystem(
+        "motor", MotorGroup(num_motors=nm, num_nodes=nn, **options), promotes=["*"]
+    )
     prob.setup(force_alloc_complex=True)
-    prob.set_val('length', np.linspace(0.08, 0.15, nm))
-    prob.set_val('rotor_torque', np.linspace(150.0, 900.0, nm * nn).reshape(nm, nn))
-    prob.set_val('rotor_rpm', np.linspace(3000.0, 1100.0, nm * nn).reshape(nm, nn))
+    prob.set_val("length", np.linspace(0.08, 0.15, nm))
+    prob.set_val("rotor_torque", np.linspace(150.0, 900.0, nm * nn).reshape(nm, nn))
+    prob.set_val("rotor_rpm", np.linspace(3000.0, 1100.0, nm * nn).reshape(nm, nn))
     prob.run_model()
     return prob
 
@@ -116,14 +146,14 @@ def test_vectorized_group_matches_single_runs():
     # Five motors (as in the LPC problem) at three operating points each, one call, against one
     # wrapper call per (motor, point): same arithmetic, agreement to 1e-10 relative.
     prob = _group(nm=5, nn=3)
-    lengths = prob.get_val('length')
-    torque, rpm = prob.get_val('rotor_torque'), prob.get_val('rotor_rpm')
+    lengths = prob.get_val("length")
+    torque, rpm = prob.get_val("rotor_torque"), prob.get_val("rotor_rpm")
     for i in (0, 4):
         for j in range(3):
             single = motor_analysis(lengths[i], torque[i, j], rpm[i, j])
-            for name in ('em_torque', 'efficiency', 'input_power', 'torque_limit', 'current'):
+            for name in ("em_torque", "efficiency", "input_power", "torque_limit", "current"):
                 assert_near_equal(prob.get_val(name)[i, j], single[name], tolerance=1e-10)
-            for name in ('mass', 'inductance_d', 'inductance_q', 'flux_linkage'):
+            for name in ("mass", "inductance_d", "inductance_q", "flux_linkage"):
                 assert_near_equal(prob.get_val(name)[i], single[name], tolerance=1e-12)
 
 
@@ -131,70 +161,95 @@ def test_group_totals():
     # Totals by the DirectSolver (adjoint) against complex step through every inner solve
     # (exact: 1e-9) and against central finite differences (1e-5, FD truncation).
     prob = _group()
-    of = ['mass', 'peak_torque', 'efficiency', 'input_power', 'em_torque', 'torque_margin',
-          'voltage_margin', 'voltage_torque_margin', 'inductance_d', 'flux_linkage']
-    wrt = ['length', 'rotor_torque', 'rotor_rpm']
-    data = prob.check_totals(of=of, wrt=wrt, method='cs', out_stream=None)
+    of = [
+        "mass",
+        "peak_torque",
+        "efficiency",
+        "input_power",
+        "em_torque",
+        "torque_margin",
+        "voltage_margin",
+        "voltage_torque_margin",
+        "inductance_d",
+        "flux_linkage",
+    ]
+    wrt = ["length", "rotor_torque", "rotor_rpm"]
+    data = prob.check_totals(of=of, wrt=wrt, method="cs", out_stream=None)
     assert_check_totals(data, atol=1e-9, rtol=1e-9)
-    data = prob.check_totals(of=of, wrt=wrt, method='fd', form='central', step=1e-7,
-                             step_calc='rel_avg', out_stream=None)
+    data = prob.check_totals(
+        of=of, wrt=wrt, method="fd", form="central", step=1e-7, step_calc="rel_avg", out_stream=None
+    )
     assert_check_totals(data, atol=1e-5, rtol=1e-5)
 
 
 def test_group_totals_diameter_input():
     # With length_to_diameter None the diameter is a second design input; cs totals, 1e-9.
     prob = om.Problem(reports=False)
-    prob.model.add_subsystem('motor', MotorGroup(num_nodes=2, length_to_diameter=None),
-                             promotes=['*'])
+    prob.model.add_subsystem(
+        "motor", MotorGroup(num_nodes=2, length_to_diameter=None), promotes=["*"]
+    )
     prob.setup(force_alloc_complex=True)
-    prob.set_val('length', 0.1)
-    prob.set_val('diameter', 0.25)
-    prob.set_val('rotor_torque', [[500.0, 300.0]])
-    prob.set_val('rotor_rpm', [[1200.0, 2000.0]])
+    prob.set_val("length", 0.1)
+    prob.set_val("diameter", 0.25)
+    prob.set_val("rotor_torque", [[500.0, 300.0]])
+    prob.set_val("rotor_rpm", [[1200.0, 2000.0]])
     prob.run_model()
-    data = prob.check_totals(of=['mass', 'efficiency', 'torque_margin'],
-                             wrt=['length', 'diameter'], method='cs', out_stream=None)
+    data = prob.check_totals(
+        of=["mass", "efficiency", "torque_margin"],
+        wrt=["length", "diameter"],
+        method="cs",
+        out_stream=None,
+    )
     assert_check_totals(data, atol=1e-9, rtol=1e-9)
 
 
 def test_solver_configuration(tmp_path):
     # check_config(checks=['solvers']) is clean, and no partial is approximated by OpenMDAO.
     prob = _group()
-    report = tmp_path / 'solvers.txt'
-    prob.check_config(checks=['solvers'], out_file=str(report))
-    assert 'WARNING' not in report.read_text()
-    assert_no_approx_partials(prob.model, method='any')
+    report = tmp_path / "solvers.txt"
+    prob.check_config(checks=["solvers"], out_file=str(report))
+    assert "WARNING" not in report.read_text()
+    assert_no_approx_partials(prob.model, method="any")
 
 
 def _isolated(comp, source):
     prob = om.Problem(reports=False)
-    prob.model.add_subsystem('comp', comp, promotes=['*'])
+    prob.model.add_subsystem("comp", comp, promotes=["*"])
     prob.setup(force_alloc_complex=True)
     prob.final_setup()
     for io in (prob.model.list_inputs, prob.model.list_outputs):
         for _, meta in io(out_stream=None, prom_name=True):
-            prob.set_val(meta['prom_name'], source.get_val(meta['prom_name']))
+            prob.set_val(meta["prom_name"], source.get_val(meta["prom_name"]))
     prob.run_model()
     return prob
 
 
-@pytest.mark.parametrize('comp_class, method', [
-    (MotorLossComp, 'cs'),  # analytic partials
-    (MotorMarginComp, 'cs'),  # analytic partials
-    (EMTorqueComp, 'fd'),  # partials by vectorized complex step: check with FD
-    (TorqueLimitComp, 'fd'),  # partials by vectorized complex step: check with FD
-])
+@pytest.mark.parametrize(
+    "comp_class, method",
+    [
+        (MotorLossComp, "cs"),  # analytic partials
+        (MotorMarginComp, "cs"),  # analytic partials
+        (EMTorqueComp, "fd"),  # partials by vectorized complex step: check with FD
+        (TorqueLimitComp, "fd"),  # partials by vectorized complex step: check with FD
+    ],
+)
 def test_component_partials(comp_class, method):
     # Analytic partials against complex step: 1e-10. Complex-step partials against central FD
     # (relative step 1e-6): 1e-5 relative, FD truncation and round-off.
     source = _group()
     prob = _isolated(comp_class(num_motors=2, num_nodes=3), source)
-    if method == 'cs':
-        data = prob.check_partials(method='cs', compact_print=True, out_stream=None)
+    if method == "cs":
+        data = prob.check_partials(method="cs", compact_print=True, out_stream=None)
         assert_check_partials(data, atol=1e-10, rtol=1e-10)
     else:
-        data = prob.check_partials(method='fd', form='central', step=1e-6, step_calc='rel_avg',
-                                   compact_print=True, out_stream=None)
+        data = prob.check_partials(
+            method="fd",
+            form="central",
+            step=1e-6,
+            step_calc="rel_avg",
+            compact_print=True,
+            out_stream=None,
+        )
         assert_check_partials(data, atol=1e-6, rtol=1e-5)
 
 
@@ -205,26 +260,31 @@ def test_torque_limit_is_largest_quartic_root():
     from lpc_mdo.components.motor.torque_limit import _quartic
 
     prob = _group()
-    values = {name: prob.get_val(name) for name in ('resistance', 'inductance_d', 'inductance_q',
-                                                    'flux_linkage', 'rotor_rpm')}
+    values = {
+        name: prob.get_val(name)
+        for name in ("resistance", "inductance_d", "inductance_q", "flux_linkage", "rotor_rpm")
+    }
     scale, b, c, d, e = _quartic(values, MotorParameters())
-    torque_limit = prob.get_val('torque_limit')
+    torque_limit = prob.get_val("torque_limit")
     for idx in np.ndindex(torque_limit.shape):
         roots = np.roots([1.0, b[idx], c[idx], d[idx], e[idx]]) * scale[idx]
         largest = np.max(roots[np.abs(roots.imag) < 1e-9 * np.abs(roots)].real)
         assert_near_equal(torque_limit[idx], largest, tolerance=1e-9)
 
 
-@pytest.mark.parametrize('kwargs, pattern', [
-    ({'length': -0.1}, r"motor: 'length' = -0.1 is out of range: must be > 0 \(m\)"),
-    ({'rotor_rpm': 0.0}, r"motor: 'rotor_rpm' = 0.0 is out of range: must be > 0 \(rpm\)"),
-    ({'rotor_torque': -50.0}, r"'rotor_torque' = -50.0 is out of range: must be > 0 \(N\*m\)"),
-    ({'length_to_diameter': 0.0}, r"'length_to_diameter' = 0.0 is out of range: must be > 0$"),
-    ({'gear_ratio': np.nan}, r"'gear_ratio' = nan is out of range: must be a finite number"),
-    ({'rotor_torque': [1.0, 2.0], 'rotor_rpm': [1.0, 2.0, 3.0]}, r"must be scalars"),
-])
+@pytest.mark.parametrize(
+    "kwargs, pattern",
+    [
+        ({"length": -0.1}, r"motor: 'length' = -0.1 is out of range: must be > 0 \(m\)"),
+        ({"rotor_rpm": 0.0}, r"motor: 'rotor_rpm' = 0.0 is out of range: must be > 0 \(rpm\)"),
+        ({"rotor_torque": -50.0}, r"'rotor_torque' = -50.0 is out of range: must be > 0 \(N\*m\)"),
+        ({"length_to_diameter": 0.0}, r"'length_to_diameter' = 0.0 is out of range: must be > 0$"),
+        ({"gear_ratio": np.nan}, r"'gear_ratio' = nan is out of range: must be a finite number"),
+        ({"rotor_torque": [1.0, 2.0], "rotor_rpm": [1.0, 2.0, 3.0]}, r"must be scalars"),
+    ],
+)
 def test_wrapper_bad_inputs_raise(kwargs, pattern):
-    args = {'length': 0.1, 'rotor_torque': 500.0, 'rotor_rpm': 1200.0}
+    args = {"length": 0.1, "rotor_torque": 500.0, "rotor_rpm": 1200.0}
     args.update(kwargs)
     with pytest.raises(ValueError, match=pattern):
         motor_analysis(**args)
@@ -232,31 +292,47 @@ def test_wrapper_bad_inputs_raise(kwargs, pattern):
 
 def test_group_zero_rpm_raises():
     prob = _group(nm=1, nn=2)
-    prob.set_val('rotor_rpm', [[1200.0, 0.0]])
-    with pytest.raises(om.AnalysisError, match=r"'rotor_rpm\[0, 1\]' = 0.0 is out of range: "
-                                               r"must be > 0 \(rpm\)"):
+    prob.set_val("rotor_rpm", [[1200.0, 0.0]])
+    with pytest.raises(
+        om.AnalysisError,
+        match=r"'rotor_rpm\[0, 1\]' = 0.0 is out of range: "
+        r"must be > 0 \(rpm\)",
+    ):
         prob.run_model()
 
 
 def test_stall_raises():
     # 1500 N*m at 1200 rpm on a 6 cm motor: the copper loss grows faster than the torque, no
     # T_em satisfies eq. 24. A clear AnalysisError, not NaN.
-    with pytest.raises(om.AnalysisError, match=r"no electromagnetic torque balances "
-                                               r"rotor_torque = 1500 N\*m"):
+    with pytest.raises(
+        om.AnalysisError,
+        match=r"no electromagnetic torque balances "
+        r"rotor_torque = 1500 N\*m",
+    ):
         motor_analysis(0.06, 1500.0, 1200.0)
 
 
 def test_too_short_motor_raises():
     # Below about 0.056 m (L/D = 0.5) the equivalent circuit gives L_q < L_d, where the MTPA
     # quartic (and reluctance torque) does not exist: a clear AnalysisError.
-    with pytest.raises(om.AnalysisError, match=r"inductance_q - inductance_d = .* \(length "
-                                               r"\[0.05\] m\) is outside the allowed range"):
+    with pytest.raises(
+        om.AnalysisError,
+        match=r"inductance_q - inductance_d = .* \(length "
+        r"\[0.05\] m\) is outside the allowed range",
+    ):
         motor_analysis(0.05, 100.0, 1500.0)
 
 
 def test_wrapper_returns_floats_for_scalars():
     result = motor_analysis(0.1, 500.0, 1200.0)
-    for name in ('mass', 'peak_torque', 'efficiency', 'input_power', 'flux_linkage',
-                 'inductance_d', 'inductance_q'):
+    for name in (
+        "mass",
+        "peak_torque",
+        "efficiency",
+        "input_power",
+        "flux_linkage",
+        "inductance_d",
+        "inductance_q",
+    ):
         assert isinstance(result[name], float) and np.isfinite(result[name])
-    assert isinstance(result['beyond_voltage_limit'], bool)
+    assert isinstance(result["beyond_voltage_limit"], bool)

@@ -21,12 +21,12 @@ def _run(torque, flux=FLUX_LINKAGE, l_d=INDUCTANCE_D, l_q=INDUCTANCE_Q):
     torque = np.atleast_2d(np.asarray(torque, dtype=float))
     nm, nn = torque.shape
     prob = om.Problem(reports=False)
-    prob.model.add_subsystem('mtpa', MTPAComp(num_motors=nm, num_nodes=nn), promotes=['*'])
+    prob.model.add_subsystem("mtpa", MTPAComp(num_motors=nm, num_nodes=nn), promotes=["*"])
     prob.setup(force_alloc_complex=True)
-    prob.set_val('em_torque', torque)
-    prob.set_val('flux_linkage', flux * np.ones(nm))
-    prob.set_val('inductance_d', l_d * np.ones(nm))
-    prob.set_val('inductance_q', l_q * np.ones(nm))
+    prob.set_val("em_torque", torque)
+    prob.set_val("flux_linkage", flux * np.ones(nm))
+    prob.set_val("inductance_d", l_d * np.ones(nm))
+    prob.set_val("inductance_q", l_q * np.ones(nm))
     prob.run_model()
     return prob
 
@@ -38,24 +38,26 @@ def test_base_values_case_a():
     assert_near_equal(t_base, 2704.52, tolerance=1e-5)
 
 
-@pytest.mark.parametrize('torque', [1.0, 45.09625639, 77.4, 305.63923318, 1000.0, 3000.0,
-                                    30000.0])
+@pytest.mark.parametrize("torque", [1.0, 45.09625639, 77.4, 305.63923318, 1000.0, 3000.0, 30000.0])
 def test_quartic_root_is_max_torque_per_ampere(torque):
     # Independent check of eq. 26: the MTPA current minimizes |I| for the torque T, i.e.
     # maximizes torque per ampere T/|I| along the torque curve I_d(I_q) = (T/(1.5 p I_q) -
     # Psi)/(L_d - L_q). scipy's Brent maximization (tol 1e-12) against the quartic root:
     # 1e-8 relative (issue acceptance).
-    i_q = _run(torque).get_val('current_q')[0, 0]
+    i_q = _run(torque).get_val("current_q")[0, 0]
     k_t, saliency = 1.5 * POLE_PAIRS, INDUCTANCE_D - INDUCTANCE_Q
 
     def negative_torque_per_ampere(current_q):
         current_d = (torque / (k_t * current_q) - FLUX_LINKAGE) / saliency
-        return -torque / np.sqrt(current_q ** 2 + current_d ** 2)
+        return -torque / np.sqrt(current_q**2 + current_d**2)
 
     no_reluctance = torque / (k_t * FLUX_LINKAGE)  # I_q with I_d = 0: above the MTPA I_q
-    best = minimize_scalar(negative_torque_per_ampere, bracket=(no_reluctance,
-                                                                0.9 * no_reluctance),
-                           method='brent', tol=1e-12)
+    best = minimize_scalar(
+        negative_torque_per_ampere,
+        bracket=(no_reluctance, 0.9 * no_reluctance),
+        method="brent",
+        tol=1e-12,
+    )
     assert best.success
     assert_near_equal(i_q, best.x, tolerance=1e-8)
 
@@ -73,22 +75,23 @@ def test_vectorized_root_to_machine_precision():
     # Many motors and nodes at once: residual of eq. 26 at round-off, 1e-14 relative to T*^2.
     torque_pu = np.geomspace(1e-4, 1e3, 40).reshape(5, 8)
     current_pu = mtpa_current_pu(torque_pu)
-    assert np.all(np.abs(mtpa_residual(current_pu, torque_pu)) <= 1e-14 * torque_pu ** 2
-                  + 1e-14 * current_pu ** 4)
+    assert np.all(
+        np.abs(mtpa_residual(current_pu, torque_pu)) <= 1e-14 * torque_pu**2 + 1e-14 * current_pu**4
+    )
 
 
 def test_partials():
     # Analytic partials against complex step (exact): 1e-11.
     torque = np.array([[20.0, 305.0, 1500.0], [40.0, 90.0, 700.0]])
     prob = om.Problem(reports=False)
-    prob.model.add_subsystem('mtpa', MTPAComp(num_motors=2, num_nodes=3), promotes=['*'])
+    prob.model.add_subsystem("mtpa", MTPAComp(num_motors=2, num_nodes=3), promotes=["*"])
     prob.setup(force_alloc_complex=True)
-    prob.set_val('em_torque', torque)
-    prob.set_val('flux_linkage', [FLUX_LINKAGE, 0.0345])
-    prob.set_val('inductance_d', [INDUCTANCE_D, 9.3863e-5])
-    prob.set_val('inductance_q', [INDUCTANCE_Q, 1.1168e-4])
+    prob.set_val("em_torque", torque)
+    prob.set_val("flux_linkage", [FLUX_LINKAGE, 0.0345])
+    prob.set_val("inductance_d", [INDUCTANCE_D, 9.3863e-5])
+    prob.set_val("inductance_q", [INDUCTANCE_Q, 1.1168e-4])
     prob.run_model()
-    data = prob.check_partials(method='cs', compact_print=True, out_stream=None)
+    data = prob.check_partials(method="cs", compact_print=True, out_stream=None)
     assert_check_partials(data, atol=1e-11, rtol=1e-11)
 
 
@@ -96,27 +99,31 @@ def test_complex_step_through_solve():
     # d I_q/d T_em through the solve (complex step: real solve + one complex Newton step)
     # equals the implicit-function derivative from the analytic partials, -R_T/R_Iq: 1e-10.
     prob = _run([[305.63923318]])
-    data = prob.check_partials(method='cs', compact_print=True, out_stream=None)['mtpa']
-    slope = -(data['current_q', 'em_torque']['J_fwd'][0, 0]
-              / data['current_q', 'current_q']['J_fwd'][0, 0])
-    totals = prob.check_totals(of=['current_q'], wrt=['em_torque'], method='cs',
-                               out_stream=None)
-    assert_near_equal(totals['current_q', 'em_torque']['J_fd'][0, 0], slope, tolerance=1e-10)
+    data = prob.check_partials(method="cs", compact_print=True, out_stream=None)["mtpa"]
+    slope = -(
+        data["current_q", "em_torque"]["J_fwd"][0, 0]
+        / data["current_q", "current_q"]["J_fwd"][0, 0]
+    )
+    totals = prob.check_totals(of=["current_q"], wrt=["em_torque"], method="cs", out_stream=None)
+    assert_near_equal(totals["current_q", "em_torque"]["J_fd"][0, 0], slope, tolerance=1e-10)
 
 
-@pytest.mark.parametrize('name, value, pattern', [
-    ('em_torque', 0.0, r"'em_torque\[0, 0\]' = 0.0 is out of range: must be > 0 \(N\*m\)"),
-    ('flux_linkage', -0.3, r"'flux_linkage\[0.*\]' = -0.3 is out of range: must be > 0 \(Wb\)"),
-    ('inductance_q', 5.0e-4, r'inductance_q - inductance_d = .* allowed range \(0, inf\)'),
-])
+@pytest.mark.parametrize(
+    "name, value, pattern",
+    [
+        ("em_torque", 0.0, r"'em_torque\[0, 0\]' = 0.0 is out of range: must be > 0 \(N\*m\)"),
+        ("flux_linkage", -0.3, r"'flux_linkage\[0.*\]' = -0.3 is out of range: must be > 0 \(Wb\)"),
+        ("inductance_q", 5.0e-4, r"inductance_q - inductance_d = .* allowed range \(0, inf\)"),
+    ],
+)
 def test_bad_inputs_raise(name, value, pattern):
     prob = om.Problem(reports=False)
-    prob.model.add_subsystem('mtpa', MTPAComp(), promotes=['*'])
+    prob.model.add_subsystem("mtpa", MTPAComp(), promotes=["*"])
     prob.setup()
-    prob.set_val('em_torque', 100.0)
-    prob.set_val('flux_linkage', FLUX_LINKAGE)
-    prob.set_val('inductance_d', INDUCTANCE_D)
-    prob.set_val('inductance_q', INDUCTANCE_Q)
+    prob.set_val("em_torque", 100.0)
+    prob.set_val("flux_linkage", FLUX_LINKAGE)
+    prob.set_val("inductance_d", INDUCTANCE_D)
+    prob.set_val("inductance_q", INDUCTANCE_Q)
     prob.set_val(name, value)
     with pytest.raises(om.AnalysisError, match=pattern):
         prob.run_model()

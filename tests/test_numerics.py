@@ -35,8 +35,9 @@ def test_residual_shape_must_match_bracket():
 
 def test_bisection_only_and_reversed_bracket():
     a = np.array([2.0, 3.0, 10.0])
-    root = safeguarded_newton(lambda x: (x**2 - a, None), np.full(3, 10.0), 0.0, xtol_rel=1e-15,
-                              maxiter=200)
+    root = safeguarded_newton(
+        lambda x: (x**2 - a, None), np.full(3, 10.0), 0.0, xtol_rel=1e-15, maxiter=200
+    )
     assert_allclose(root, np.sqrt(a), rtol=1e-14)
 
 
@@ -61,10 +62,19 @@ def test_root_at_bracket_end_and_residual_tolerance():
 
 
 def test_no_sign_change_raises_analysis_error():
-    with pytest.raises(om.AnalysisError, match=r"Comp: the current residual does not change "
-                                               r"sign on its bracket \[0, 1\] A at index \[1\]"):
-        safeguarded_newton(lambda x: (x**2 - np.array([0.5, 4.0]), 2 * x), np.zeros(2), 1.0,
-                           variable="current", units="A", where="Comp")
+    with pytest.raises(
+        om.AnalysisError,
+        match=r"Comp: the current residual does not change "
+        r"sign on its bracket \[0, 1\] A at index \[1\]",
+    ):
+        safeguarded_newton(
+            lambda x: (x**2 - np.array([0.5, 4.0]), 2 * x),
+            np.zeros(2),
+            1.0,
+            variable="current",
+            units="A",
+            where="Comp",
+        )
 
 
 def test_non_finite_and_no_convergence_raise():

@@ -11,9 +11,13 @@ from lpc_mdo.vehicle import reference_vehicle
 
 def make_problem(num_span_panels=6, num_chord_panels=2, spacing="cosine", values=None):
     prob = om.Problem(reports=False)
-    prob.model.add_subsystem("planform", PlanformMeshComp(num_span_panels=num_span_panels,
-                                                          num_chord_panels=num_chord_panels,
-                                                          spacing=spacing), promotes=["*"])
+    prob.model.add_subsystem(
+        "planform",
+        PlanformMeshComp(
+            num_span_panels=num_span_panels, num_chord_panels=num_chord_panels, spacing=spacing
+        ),
+        promotes=["*"],
+    )
     prob.setup(force_alloc_complex=True)
     for name, value in (values or {}).items():
         prob.set_val(name, value)
@@ -33,8 +37,15 @@ def test_lpc_wing_mesh_against_vehicle_geometry():
     le_root, le_tip = mesh[0, 13], mesh[0, 26]
     assert_near_equal(le_root, [-1.95925, 0.0, -1.07290], 1e-12)
     half = 15.4127 / 2
-    assert_near_equal(le_tip, [-1.95925 - half * math.tan(math.radians(7.81)), half,
-                               -1.07290 - half * math.tan(math.radians(-2.0))], 1e-4)
+    assert_near_equal(
+        le_tip,
+        [
+            -1.95925 - half * math.tan(math.radians(7.81)),
+            half,
+            -1.07290 - half * math.tan(math.radians(-2.0)),
+        ],
+        1e-4,
+    )
     # Root chord length and incidence: TE lies c_root (cos i, 0, -sin i) behind/below the LE.
     chord = mesh[1, 13] - mesh[0, 13]
     inc = math.radians(2.04)
@@ -48,11 +59,16 @@ def test_lpc_wing_mesh_against_vehicle_geometry():
 
 def test_spacing_and_twist():
     # Cosine stations eta_j = -cos(pi j/N) (docs theory/aerodynamics 'Reference-vehicle defaults' "half-cosine"), uniform -1 + 2j/N.
-    assert_near_equal(span_stations(4, "cosine"), [-1, -math.sqrt(0.5), 0, math.sqrt(0.5), 1],
-                      1e-15)
+    assert_near_equal(
+        span_stations(4, "cosine"), [-1, -math.sqrt(0.5), 0, math.sqrt(0.5), 1], 1e-15
+    )
     assert_near_equal(span_stations(4, "uniform"), [-1, -0.5, 0, 0.5, 1], 1e-15)
-    values = {"span": 4.0, "root_chord": 1.0, "tip_chord": 1.0,
-              "twist": np.radians([0.0, -2.0, -4.0])}
+    values = {
+        "span": 4.0,
+        "root_chord": 1.0,
+        "tip_chord": 1.0,
+        "twist": np.radians([0.0, -2.0, -4.0]),
+    }
     mesh = make_problem(4, 1, "uniform", values).get_val("mesh")
     # Tip section twisted -4 deg about its leading edge: TE rises by c sin(4 deg) (z down).
     assert_near_equal(mesh[1, 0, 2] - mesh[0, 0, 2], -math.sin(math.radians(4.0)), 1e-12)
@@ -61,9 +77,16 @@ def test_spacing_and_twist():
 
 
 def test_partials():
-    values = {"span": 9.0, "root_chord": 1.5, "tip_chord": 0.6, "sweep": 0.3,
-              "dihedral": -0.1, "incidence": 0.04, "twist": [0.0, -0.01, -0.03, -0.05],
-              "root_leading_edge": [-2.0, 0.1, -0.5]}
+    values = {
+        "span": 9.0,
+        "root_chord": 1.5,
+        "tip_chord": 0.6,
+        "sweep": 0.3,
+        "dihedral": -0.1,
+        "incidence": 0.04,
+        "twist": [0.0, -0.01, -0.03, -0.05],
+        "root_leading_edge": [-2.0, 0.1, -0.5],
+    }
     prob = make_problem(6, 2, "cosine", values)
     data = prob.check_partials(method="cs", compact_print=True, out_stream=None)
     assert_check_partials(data, atol=1e-10, rtol=1e-10)

@@ -5,7 +5,9 @@ import pytest
 
 from lpc_mdo.components.aero.polar import LinearQuadraticPolar, wrap_angle
 
-POLAR = LinearQuadraticPolar()  # the reference page's example polar (docs theory/aerodynamics 'Linear-quadratic polar' table)
+POLAR = (
+    LinearQuadraticPolar()
+)  # the reference page's example polar (docs theory/aerodynamics 'Linear-quadratic polar' table)
 
 
 def values(alpha):
@@ -30,8 +32,9 @@ def test_viterna_closed_form_at_30_and_90_degrees():
     b2 = (0.06 - 1.29 * s**2) / c
     a = np.radians(30.0)
     v = values([a, np.pi / 2])
-    assert v.cl[0] == pytest.approx(0.645 * np.sin(2 * a) + a2 * np.cos(a) ** 2 / np.sin(a),
-                                    rel=1e-13)
+    assert v.cl[0] == pytest.approx(
+        0.645 * np.sin(2 * a) + a2 * np.cos(a) ** 2 / np.sin(a), rel=1e-13
+    )
     assert v.cd[0] == pytest.approx(1.29 * np.sin(a) ** 2 + b2 * np.cos(a), rel=1e-13)
     assert v.cl[1] == pytest.approx(0.0, abs=1e-14)
     assert v.cd[1] == pytest.approx(1.29, rel=1e-14)
@@ -63,8 +66,11 @@ def test_derivatives_match_complex_step_everywhere():
 
 
 def test_wrap_angle():
-    np.testing.assert_allclose(wrap_angle(np.array([3 * np.pi / 2, -3 * np.pi / 2, 0.1])),
-                               [-np.pi / 2, np.pi / 2, 0.1], atol=1e-15)
+    np.testing.assert_allclose(
+        wrap_angle(np.array([3 * np.pi / 2, -3 * np.pi / 2, 0.1])),
+        [-np.pi / 2, np.pi / 2, 0.1],
+        atol=1e-15,
+    )
 
 
 def test_bad_parameters_are_named():

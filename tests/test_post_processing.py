@@ -77,11 +77,21 @@ def paraboloid_run(path, driver, c_lower=15.0):
     prob = om.Problem(reports=False)
     m = prob.model
     geom = m.add_subsystem("geom", om.IndepVarComp(), promotes=["*"])
-    geom.add_output("wing_mesh", np.array([[[0.0, -4.0, 0.0], [0.5, 0.0, 0.0], [0.0, 4.0, 0.0]],
-                                           [[-1.0, -4.0, 0.0], [-1.5, 0.0, 0.0],
-                                            [-1.0, 4.0, 0.0]]]), units="m")
-    geom.add_output("tail_mesh", np.array([[[-5.0, -1.0, 0.0], [-5.0, 1.0, 0.0]],
-                                           [[-5.5, -1.0, 0.0], [-5.5, 1.0, 0.0]]]), units="m")
+    geom.add_output(
+        "wing_mesh",
+        np.array(
+            [
+                [[0.0, -4.0, 0.0], [0.5, 0.0, 0.0], [0.0, 4.0, 0.0]],
+                [[-1.0, -4.0, 0.0], [-1.5, 0.0, 0.0], [-1.0, 4.0, 0.0]],
+            ]
+        ),
+        units="m",
+    )
+    geom.add_output(
+        "tail_mesh",
+        np.array([[[-5.0, -1.0, 0.0], [-5.0, 1.0, 0.0]], [[-5.5, -1.0, 0.0], [-5.5, 1.0, 0.0]]]),
+        units="m",
+    )
     geom.add_output("hubs", np.array([[0.5, -2.0, 0.0], [0.5, 2.0, 0.0]]), units="m")
     geom.add_output("radii", np.array([0.6, 0.6]), units="m")
     geom.add_output("skin", np.array([4.0, 3.0, 2.0, 1.0]), units="mm")
@@ -90,13 +100,21 @@ def paraboloid_run(path, driver, c_lower=15.0):
     m.add_subsystem("parab", Paraboloid(), promotes=["*"])
     m.add_subsystem("con", om.ExecComp("c = x - y"), promotes=["*"])
     m.add_subsystem("vec", VectorComp(), promotes=["*"])
-    m.add_subsystem("hover", om.ExecComp(
-        ["electrical_power = 1000.0*(x**2 + 1.0)", "lift_figure_of_merit = 0.1*x*r"],
-        electrical_power={"units": "W"}, lift_figure_of_merit={"shape": (2,)},
-        r={"shape": (2,), "val": [1.0, 0.5]}), promotes_inputs=["x"])
-    m.add_subsystem("cruise", om.ExecComp("electrical_power = 500.0*(y**2 + 1.0)",
-                                          electrical_power={"units": "W"}),
-                    promotes_inputs=["y"])
+    m.add_subsystem(
+        "hover",
+        om.ExecComp(
+            ["electrical_power = 1000.0*(x**2 + 1.0)", "lift_figure_of_merit = 0.1*x*r"],
+            electrical_power={"units": "W"},
+            lift_figure_of_merit={"shape": (2,)},
+            r={"shape": (2,), "val": [1.0, 0.5]},
+        ),
+        promotes_inputs=["x"],
+    )
+    m.add_subsystem(
+        "cruise",
+        om.ExecComp("electrical_power = 500.0*(y**2 + 1.0)", electrical_power={"units": "W"}),
+        promotes_inputs=["y"],
+    )
     m.set_input_defaults("x", 3.0)
     m.set_input_defaults("y", -4.0)
     m.add_design_var("x", lower=-50.0, upper=50.0)
@@ -116,8 +134,9 @@ def sellar_run(path):
     cycle.add_subsystem("d2", SellarImplicitDis2(), promotes=["*"])
     cycle.nonlinear_solver = om.NewtonSolver(solve_subsystems=False, iprint=-1, maxiter=30)
     cycle.linear_solver = om.DirectSolver()
-    m.add_subsystem("obj_cmp", om.ExecComp("obj = x**2 + z[1] + y1 + exp(-y2)",
-                                           z=np.zeros(2)), promotes=["*"])
+    m.add_subsystem(
+        "obj_cmp", om.ExecComp("obj = x**2 + z[1] + y1 + exp(-y2)", z=np.zeros(2)), promotes=["*"]
+    )
     m.add_subsystem("cons", SellarConstraints(), promotes=["*"])
     m.set_input_defaults("x", 1.0)
     m.set_input_defaults("z", np.array([5.0, 2.0]))
@@ -133,8 +152,9 @@ def sellar_run(path):
 
     outputs = m.list_outputs(out_stream=None, shape=True)
     live = dict(
-        components=sum(1 for s in m.system_iter(recurse=True, typ=Component)
-                       if s.pathname != "_auto_ivc"),
+        components=sum(
+            1 for s in m.system_iter(recurse=True, typ=Component) if s.pathname != "_auto_ivc"
+        ),
         groups=len(list(m.system_iter(recurse=True, typ=om.Group))),
         implicit_components=len(list(m.system_iter(recurse=True, typ=om.ImplicitComponent))),
         inputs=len(m.list_inputs(out_stream=None)),
@@ -153,8 +173,9 @@ def runs(tmp_path_factory, ipopt):
         mp.setenv("OPENMDAO_WORKDIR", str(root))
         out = {}
         for name, driver, c_lower in (
-                ("ipopt", IpoptDriver(print_level=0), 15.0),
-                ("slsqp", om.ScipyOptimizeDriver(optimizer="SLSQP", disp=False), 16.0)):
+            ("ipopt", IpoptDriver(print_level=0), 15.0),
+            ("slsqp", om.ScipyOptimizeDriver(optimizer="SLSQP", disp=False), 16.0),
+        ):
             path = root / "runs" / name / "cases.sql"
             path.parent.mkdir(parents=True)
             out[name] = (path, paraboloid_run(path, driver, c_lower), c_lower)
@@ -210,8 +231,9 @@ def test_entry_status_equality_violation_and_two_sided():
     viol, active, violated = tables.entry_status([1.0, 1.00001, 1.1], equals=1.0, scale=1.0)
     np.testing.assert_allclose(viol, [0.0, 1e-5, 0.1], atol=1e-12)
     assert active.tolist() == [True, True, False] and violated.tolist() == [False, False, True]
-    viol, active, violated = tables.entry_status([0.0, 0.5, 1.0, 1.2], lower=0.0, upper=1.0,
-                                                 scale=np.array([1.0, 1.0, 1.0, 1.0]))
+    viol, active, violated = tables.entry_status(
+        [0.0, 0.5, 1.0, 1.2], lower=0.0, upper=1.0, scale=np.array([1.0, 1.0, 1.0, 1.0])
+    )
     assert active.tolist() == [True, False, True, False]
     assert violated.tolist() == [False, False, False, True]
     np.testing.assert_allclose(viol, [0.0, 0.0, 0.0, 0.2])
@@ -223,11 +245,13 @@ def test_limit_scale_of_a_scaled_constraint_is_at_least_its_ref():
     equals = np.array([0.017, 0.25])
     scaled = tables.limit_scale({"size": 2, "ref": 9.81, "ref0": None}, equals=equals)
     np.testing.assert_allclose(scaled, [9.81, 9.81])
-    np.testing.assert_allclose(tables.limit_scale({"size": 2, "ref": 0.1}, equals=equals),
-                               [0.1, 0.25])
+    np.testing.assert_allclose(
+        tables.limit_scale({"size": 2, "ref": 0.1}, equals=equals), [0.1, 0.25]
+    )
     # Unscaled: the limit itself, else 1.
-    np.testing.assert_allclose(tables.limit_scale({"size": 2}, equals=np.array([0.017, 0.0])),
-                               [0.017, 1.0])
+    np.testing.assert_allclose(
+        tables.limit_scale({"size": 2}, equals=np.array([0.017, 0.0])), [0.017, 1.0]
+    )
 
 
 def test_tables_written_as_markdown_and_csv(runs, tmp_path):
@@ -252,16 +276,29 @@ def test_design_variable_table_initial_final_and_bounds(runs):
     assert rows["x"]["initial"] == first.get_val("x")[0] == 1.0
     assert rows["z[0]"]["final"] == last.get_val("z")[0]
     assert (rows["x"]["at bound"], rows["z[0]"]["at bound"], rows["z[1]"]["at bound"]) == (
-        "lower", "", "lower")
-    (agg,) = [r for r in tables.design_variable_table(path, expand=False).as_dicts()
-              if r["design variable"] == "z"]
+        "lower",
+        "",
+        "lower",
+    )
+    (agg,) = [
+        r
+        for r in tables.design_variable_table(path, expand=False).as_dicts()
+        if r["design variable"] == "z"
+    ]
     assert agg["size"] == 2 and agg["at bound"] == "1 lower"
 
 
 def test_design_table_reads_each_design(runs):
     designs = [("IPOPT", runs["ipopt"][0]), ("SLSQP", runs["slsqp"][0])]
-    table = tables.design_table(designs, [("x", "x"), ("tip", "wing_mesh", "cm", 7),
-                                          ("S", "not_recorded"), ("P", "hover.electrical_power")])
+    table = tables.design_table(
+        designs,
+        [
+            ("x", "x"),
+            ("tip", "wing_mesh", "cm", 7),
+            ("S", "not_recorded"),
+            ("P", "hover.electrical_power"),
+        ],
+    )
     # Columns without units given show the recorded units.
     assert table.columns == ["design", "x", "tip (cm)", "P (W)"]
     assert tables.recorded_units(designs[0][1], "v") == "m"
@@ -280,14 +317,26 @@ def test_design_table_reads_each_design(runs):
 def test_run_stats_round_trip(runs, tmp_path):
     path, result, _ = runs["ipopt"]
     stats = statistics.read_run_stats(path)
-    for key in ("runtime", "iter_count", "model_evals", "model_time", "deriv_evals",
-                "deriv_time", "success", "exit_status"):
+    for key in (
+        "runtime",
+        "iter_count",
+        "model_evals",
+        "model_time",
+        "deriv_evals",
+        "deriv_time",
+        "success",
+        "exit_status",
+    ):
         assert stats[key] == getattr(result, key), key
     assert stats["peak_memory_mb"] == 123.5
-    written = statistics.write_run_stats({"runtime": 2.5, "success": False},
-                                         tmp_path / "other.json")
+    written = statistics.write_run_stats(
+        {"runtime": 2.5, "success": False}, tmp_path / "other.json"
+    )
     assert statistics.read_run_stats(written) == {
-        **dict.fromkeys(statistics.RUN_STATS_KEYS), "runtime": 2.5, "success": False}
+        **dict.fromkeys(statistics.RUN_STATS_KEYS),
+        "runtime": 2.5,
+        "success": False,
+    }
     assert statistics.read_run_stats(tmp_path / "cases.sql") is None
 
 
@@ -326,8 +375,7 @@ def test_convergence_history_matches_driver_cases(runs, tmp_path):
     path = runs["sellar"][0]
     hist = figures.convergence_history(path)
     cases = om.CaseReader(str(path)).get_cases("driver", recurse=False)
-    np.testing.assert_array_equal(hist["objective"],
-                                  [c.get_objectives()["obj"][0] for c in cases])
+    np.testing.assert_array_equal(hist["objective"], [c.get_objectives()["obj"][0] for c in cases])
     assert hist["max_violation"][-1] < 1e-6 and hist["derivatives"].sum() > 0
     assert _is_png(figures.plot_convergence(path, tmp_path / "conv.png"))
 
@@ -335,19 +383,35 @@ def test_convergence_history_matches_driver_cases(runs, tmp_path):
 def test_figures_are_written(runs, tmp_path):
     designs = [("IPOPT", runs["ipopt"][0]), ("SLSQP", runs["slsqp"][0])]
     written = [
-        figures.plot_bars(designs, "v", tmp_path / "bars.png", labels=["x", "y", "x+y"],
-                          units="cm"),
-        figures.plot_per_condition(designs, "{condition}.electrical_power",
-                                   ["hover", "cruise", "climb"], tmp_path / "power.png",
-                                   units="kW"),
-        figures.plot_per_condition(designs, "{condition}.lift_figure_of_merit", ["hover"],
-                                   tmp_path / "fom.png", reduce="mean"),
+        figures.plot_bars(
+            designs, "v", tmp_path / "bars.png", labels=["x", "y", "x+y"], units="cm"
+        ),
+        figures.plot_per_condition(
+            designs,
+            "{condition}.electrical_power",
+            ["hover", "cruise", "climb"],
+            tmp_path / "power.png",
+            units="kW",
+        ),
+        figures.plot_per_condition(
+            designs,
+            "{condition}.lift_figure_of_merit",
+            ["hover"],
+            tmp_path / "fom.png",
+            reduce="mean",
+        ),
         figures.plot_per_condition(designs, "v", ["a", "b", "c"], tmp_path / "vector.png"),
-        figures.plot_distribution(designs, "stress", tmp_path / "stress.png", x="stations",
-                                  limit=5.0),
+        figures.plot_distribution(
+            designs, "stress", tmp_path / "stress.png", x="stations", limit=5.0
+        ),
         figures.plot_distribution(runs["ipopt"][0], ["skin", "skin"], tmp_path / "skin.png"),
-        figures.plot_planform(designs, ["wing_mesh", "tail_mesh"], tmp_path / "plan.png",
-                              rotors=[("hubs", "radii")], mirror=True),
+        figures.plot_planform(
+            designs,
+            ["wing_mesh", "tail_mesh"],
+            tmp_path / "plan.png",
+            rotors=[("hubs", "radii")],
+            mirror=True,
+        ),
     ]
     assert all(_is_png(p) for p in written)
     with pytest.raises(tables.MissingVariableError, match="not_there"):
@@ -361,10 +425,12 @@ def test_sweep_points_and_plot(runs, tmp_path):
     points = figures.sweep_points(sources, "lower:c")
     assert [x for _, x, _ in points] == [15.0, 16.0]  # Sellar has no constraint c
     for cr, c_lower, _ in points:
-        assert figures.objective_value(cr)[1] == pytest.approx(paraboloid_optimum(c_lower)[2],
-                                                               rel=1e-6)
-    path = figures.plot_sweep(points, tmp_path / "sweep.png", xlabel="L",
-                              highlight=[("start", runs["ipopt"][0], 15.0)])
+        assert figures.objective_value(cr)[1] == pytest.approx(
+            paraboloid_optimum(c_lower)[2], rel=1e-6
+        )
+    path = figures.plot_sweep(
+        points, tmp_path / "sweep.png", xlabel="L", highlight=[("start", runs["ipopt"][0], 15.0)]
+    )
     assert _is_png(path)
 
 
@@ -379,22 +445,40 @@ def _links(index):
 def test_write_report_on_a_folder(runs, tmp_path):
     spec = report.ReportSpec(
         design_quantities=(("x", "x"), ("f", "f_xy")),
-        meshes=("wing_mesh", "tail_mesh"), rotors=(("hubs", "radii"), ("no_hubs", "radii")),
-        mass_breakdown="v", mass_labels=("x", "y", "x+y"), mass_units="cm",
-        conditions=("hover", "cruise"), power="{condition}.electrical_power",
-        figure_of_merit="{condition}.lift_figure_of_merit", fom_conditions=("hover",),
+        meshes=("wing_mesh", "tail_mesh"),
+        rotors=(("hubs", "radii"), ("no_hubs", "radii")),
+        mass_breakdown="v",
+        mass_labels=("x", "y", "x+y"),
+        mass_units="cm",
+        conditions=("hover", "cruise"),
+        power="{condition}.electrical_power",
+        figure_of_merit="{condition}.lift_figure_of_merit",
+        fom_conditions=("hover",),
         distributions=(report.DistributionSpec("stress", ("stress",), x="stations"),),
         sweeps=(report.SweepSpec("sweep_c", "lower:c"),),
-        trim_residuals=False)   # the test models have no LPC trim outputs
+        trim_residuals=False,
+    )  # the test models have no LPC trim outputs
     index = report.write_report(runs["root"], tmp_path / "report", spec)
     links = _links(index)
     assert links and all((index.parent / link).is_file() for link in links)
     names = {Path(link).name for link in links}
     for run in ("ipopt", "slsqp", "sellar"):
-        assert {f"constraints_{run}.md", f"constraints_{run}.csv",
-                f"design_variables_{run}.csv", f"convergence_{run}.png"} <= names
-    assert {"statistics.md", "designs.md", "planform.png", "mass_breakdown.png", "power.png",
-            "figure_of_merit.png", "stress.png", "sweep_c.png"} <= names
+        assert {
+            f"constraints_{run}.md",
+            f"constraints_{run}.csv",
+            f"design_variables_{run}.csv",
+            f"convergence_{run}.png",
+        } <= names
+    assert {
+        "statistics.md",
+        "designs.md",
+        "planform.png",
+        "mass_breakdown.png",
+        "power.png",
+        "figure_of_merit.png",
+        "stress.png",
+        "sweep_c.png",
+    } <= names
     text = index.read_text()
     # Sellar records none of the paraboloid's extras: the comparisons leave it out with a note,
     # as they leave out the rotor pair that no run records.
@@ -408,12 +492,20 @@ def test_write_report_lpc_defaults_skip_absent_parts(runs, tmp_path):
     text = index.read_text()
     assert all((index.parent / link).is_file() for link in _links(index))
     assert "## Skipped parts" in text
-    for part in ("design table", "planform", "mass breakdown", "skin_thickness",
-                 "stress_plus_3g", "sweep_energy_density", "sweep_final_soc",
-                 "trim residuals of opt"):
+    for part in (
+        "design table",
+        "planform",
+        "mass breakdown",
+        "skin_thickness",
+        "stress_plus_3g",
+        "sweep_energy_density",
+        "sweep_final_soc",
+        "trim residuals of opt",
+    ):
         assert f"- {part}:" in text, part
     # The test model records hover.electrical_power etc. under the LPC default names.
     assert {"power.png", "figure_of_merit.png"} <= {Path(link).name for link in _links(index)}
-    generic = report.write_report(runs["ipopt"][0], tmp_path / "generic",
-                                  report.ReportSpec.generic())
+    generic = report.write_report(
+        runs["ipopt"][0], tmp_path / "generic", report.ReportSpec.generic()
+    )
     assert "Skipped" not in generic.read_text()

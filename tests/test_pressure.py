@@ -40,13 +40,14 @@ def test_integration_reproduces_xfoil_at_its_converged_points(name):
     data = np.load(airfoil_table_path(name))
     table = get_pressure_table(name)
     ok = data["cp_converged"]
-    a, re, m = np.meshgrid(np.radians(data["cp_alpha_deg"]), data["cp_reynolds"],
-                           data["cp_mach"], indexing="ij")
+    a, re, m = np.meshgrid(
+        np.radians(data["cp_alpha_deg"]), data["cp_reynolds"], data["cp_mach"], indexing="ij"
+    )
     cl_p = pressure_lift(table, a[ok], re[ok], m[ok])
     assert np.max(np.abs(cl_p - data["xfoil_cl"][ok])) < 0.005
     cp = table.cp(a[ok], re[ok], m[ok])[0]
     cn, ca, cm0 = table.integrate(cp)
-    cm_quarter = cm0 + 0.25 * cn                         # about (c/4, 0): XFOIL's reference
+    cm_quarter = cm0 + 0.25 * cn  # about (c/4, 0): XFOIL's reference
     attached = ok & (np.abs(np.degrees(a)) <= 10.0) & (m <= 0.3)
     sel = attached[ok]
     assert np.max(np.abs(cm_quarter[sel] - data["xfoil_cm"][ok][sel])) < 0.01
@@ -61,14 +62,15 @@ def test_loads_about_another_axis_follow_the_lever_arm():
     y_a, _ = table.mid_height(x_a)
     cm = cm0 + x_a * cn - y_a * ca
     assert cm[1] - cm[0] == pytest.approx(0.25 * cn[0] - (y_a[1] - y_a[0]) * ca[0], rel=1e-12)
-    assert cn[0] > 0.9 and cm[1] > cm[0]                  # lift behind the axis: nose up grows
-    assert abs(y_a[1]) < 0.06                             # mid-height of a 13 % section
+    assert cn[0] > 0.9 and cm[1] > cm[0]  # lift behind the axis: nose up grows
+    assert abs(y_a[1]) < 0.06  # mid-height of a 13 % section
 
 
 def make_problem(n, airfoil="ls413"):
     prob = om.Problem()
-    prob.model.add_subsystem("pressure", SectionPressureComp(num_sections=n, airfoil=airfoil),
-                             promotes=["*"])
+    prob.model.add_subsystem(
+        "pressure", SectionPressureComp(num_sections=n, airfoil=airfoil), promotes=["*"]
+    )
     prob.setup(force_alloc_complex=True)
     return prob
 
@@ -99,13 +101,14 @@ def test_outputs_are_consistent():
     prob.run_model()
     cn = prob.get_val("normal_force_coefficient")
     np.testing.assert_allclose(prob.get_val("normal_force"), q * c * cn)
-    np.testing.assert_allclose(prob.get_val("pitching_moment"),
-                               q * c**2 * prob.get_val("moment_coefficient"))
+    np.testing.assert_allclose(
+        prob.get_val("pitching_moment"), q * c**2 * prob.get_val("moment_coefficient")
+    )
     x = prob.model.pressure.x_stations
     cp_u, cp_l = prob.get_val("cp_upper"), prob.get_val("cp_lower")
     assert cp_u.shape == (2, x.size) and x[0] == 0.0 and x[-1] == pytest.approx(1.0)
     np.testing.assert_allclose(cn, np.trapezoid(cp_l - cp_u, x, axis=1), rtol=1e-12)
-    assert cp_u[:, 0] == pytest.approx(cp_l[:, 0])        # one leading-edge point
+    assert cp_u[:, 0] == pytest.approx(cp_l[:, 0])  # one leading-edge point
     assert np.all(cp_u.min(axis=1) < -0.5) and np.all(cp_l.max(axis=1) > 0.9)  # suction, stag.
     polar = get_polar("ls413")
     cl = polar.evaluate(prob.get_val("alpha_star"), [3e6, 5e6], [0.15, 0.2]).cl

@@ -13,32 +13,34 @@ def sizes(prob):
     return dvs, cons
 
 
-@pytest.mark.parametrize(("name", "expected"), [
-    # Design variables and constraints of each subproblem (paper Table 2 with Table 6 counts).
-    # Subproblem 1 adds the 45 blade variables (radius, chord, twist) Table 2 leaves implicit.
-    # Subproblem 1 and the full problem add the 10 transition roll/yaw speed differentials
-    # (ours). Constraints without the rows that vanish for every design (hover p_dot; OEI
-    # v_dot: no side force in hover) and the transition v_dot, which no trim variable controls
-    # on its own: the default of build_problem. Subproblem 1
-    # constrains the pusher motor margin only (it sizes the pusher motor; the lift motors are
-    # subproblem 2's). With the differentials come the 40 linear bounds on each transition
-    # lift rotor's own speed (ours).
-    ("rotor_presizing", (4 + 4 + 16 + 16, 1 + 2 + 4)),
-    ("subproblem_1", (4 + 20 + 10 + 5 + 3 + 3 + 8 + 1 + 1 + 45, 1 + 2 + 9 + 25 + 1 + 1 + 40)),
-    ("subproblem_2", (28 + 4, 16 + 8)),
-    ("subproblem_3", (32 + 2, 2 + 14)),
-    # Subproblem 4: planform in climb, cruise and descent (Table 2: cruise only; see problems.py).
-    ("subproblem_4", (5 + 3 * 3, 3 * 3 + 1)),
-    ("full", (161 + 10, 96 - 10 + 40)),
-    ("baseline", (161 + 10, 96 - 10 + 40)),
-])
+@pytest.mark.parametrize(
+    ("name", "expected"),
+    [
+        # Design variables and constraints of each subproblem (paper Table 2 with Table 6 counts).
+        # Subproblem 1 adds the 45 blade variables (radius, chord, twist) Table 2 leaves implicit.
+        # Subproblem 1 and the full problem add the 10 transition roll/yaw speed differentials
+        # (ours). Constraints without the rows that vanish for every design (hover p_dot; OEI
+        # v_dot: no side force in hover) and the transition v_dot, which no trim variable controls
+        # on its own: the default of build_problem. Subproblem 1
+        # constrains the pusher motor margin only (it sizes the pusher motor; the lift motors are
+        # subproblem 2's). With the differentials come the 40 linear bounds on each transition
+        # lift rotor's own speed (ours).
+        ("rotor_presizing", (4 + 4 + 16 + 16, 1 + 2 + 4)),
+        ("subproblem_1", (4 + 20 + 10 + 5 + 3 + 3 + 8 + 1 + 1 + 45, 1 + 2 + 9 + 25 + 1 + 1 + 40)),
+        ("subproblem_2", (28 + 4, 16 + 8)),
+        ("subproblem_3", (32 + 2, 2 + 14)),
+        # Subproblem 4: planform in climb, cruise and descent (Table 2: cruise only; see problems.py).
+        ("subproblem_4", (5 + 3 * 3, 3 * 3 + 1)),
+        ("full", (161 + 10, 96 - 10 + 40)),
+        ("baseline", (161 + 10, 96 - 10 + 40)),
+    ],
+)
 def test_problem_sizes(name, expected):
     assert sizes(build_problem(name, optimizer="SLSQP")) == expected
 
 
 def test_full_problem_with_lateral_trim_is_table6():
-    assert sizes(build_problem("full", optimizer="SLSQP", lateral_trim=True)) == (161 + 10,
-                                                                                96 + 40)
+    assert sizes(build_problem("full", optimizer="SLSQP", lateral_trim=True)) == (161 + 10, 96 + 40)
 
 
 def test_subproblem_4_converges():

@@ -12,8 +12,9 @@ VEHICLE = reference_vehicle()
 
 def problem(definition=None):
     prob = om.Problem(reports=False)
-    prob.model.add_subsystem("layout", RotorLayoutComp(vehicle=VEHICLE, definition=definition),
-                             promotes=["*"])
+    prob.model.add_subsystem(
+        "layout", RotorLayoutComp(vehicle=VEHICLE, definition=definition), promotes=["*"]
+    )
     prob.setup(force_alloc_complex=True)
     return prob
 
@@ -26,8 +27,9 @@ def test_reference_layout_is_reproduced():
     assert_near_equal(prob.get_val("pusher_hub_position"), VEHICLE.pusher.hub_position, 1e-12)
     assert_near_equal(prob.get_val("lift_rotor_radius"), np.full(8, 1.524), 1e-12)
     # (1.524 + 1.524)/15.41 = 0.1978 (docs theory/geometry 'Rotor layout and radius intersection' reading (a)).
-    assert_near_equal(prob.get_val("radius_intersection"), np.full(2, 3.048 / VEHICLE.wing.span),
-                      1e-12)
+    assert_near_equal(
+        prob.get_val("radius_intersection"), np.full(2, 3.048 / VEHICLE.wing.span), 1e-12
+    )
 
 
 def test_paper_table8_designs_satisfy_span_fraction():
@@ -56,8 +58,9 @@ def test_hubs_follow_the_wing():
     # Lateral shift eta * db/2 outwards; x shift tan(LE sweep) times that (closed form).
     assert_near_equal(np.abs(moved[:, 1]), 0.5 * eta * db, 1e-12)
     assert_near_equal(moved[:, 0], np.tan(VEHICLE.wing.sweep) * 0.5 * eta * db, 1e-12)
-    assert_near_equal(prob.get_val("pusher_hub_position")[0],
-                      VEHICLE.pusher.hub_position[0] - 0.5, 1e-12)
+    assert_near_equal(
+        prob.get_val("pusher_hub_position")[0], VEHICLE.pusher.hub_position[0] - 0.5, 1e-12
+    )
 
 
 def test_clearance_definition():

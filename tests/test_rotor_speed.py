@@ -11,11 +11,13 @@ from lpc_mdo.vehicle import reference_vehicle
 def test_pairs_share_speed():
     prob = om.Problem(reports=False)
     # LPC pairing (vehicle file): rotors 0..7 belong to pairs [0, 1, 2, 3, 2, 3, 0, 1].
-    prob.model.add_subsystem("s", RotorSpeedComp(group=[0, 1, 2, 3, 2, 3, 0, 1], num_groups=4,
-                                                 num_nodes=2), promotes=["*"])
+    prob.model.add_subsystem(
+        "s",
+        RotorSpeedComp(group=[0, 1, 2, 3, 2, 3, 0, 1], num_groups=4, num_nodes=2),
+        promotes=["*"],
+    )
     prob.setup(force_alloc_complex=True)
-    prob.set_val("group_speed", [[1000.0, 1100.0, 1200.0, 1300.0],
-                                 [900.0, 950.0, 980.0, 990.0]])
+    prob.set_val("group_speed", [[1000.0, 1100.0, 1200.0, 1300.0], [900.0, 950.0, 980.0, 990.0]])
     prob.run_model()
     rpm = prob.get_val("rpm")
     assert_near_equal(rpm[:, 0], [1000, 1100, 1200, 1300, 1200, 1300, 1000, 1100], 1e-15)
@@ -43,8 +45,11 @@ def test_roll_and_yaw_mixers_split_each_pair_about_its_mean():
     side = np.array([1, 1, 1, 1, -1, -1, -1, -1], dtype=float)
     spin = np.array([1, -1, -1, 1, 1, -1, -1, 1], dtype=float)
     mixing = 0.5 * np.column_stack([side, spin])
-    prob.model.add_subsystem("s", RotorSpeedComp(group=[0, 1, 2, 3, 2, 3, 0, 1], num_groups=4,
-                                                 num_nodes=2, mixing=mixing), promotes=["*"])
+    prob.model.add_subsystem(
+        "s",
+        RotorSpeedComp(group=[0, 1, 2, 3, 2, 3, 0, 1], num_groups=4, num_nodes=2, mixing=mixing),
+        promotes=["*"],
+    )
     prob.setup(force_alloc_complex=True)
     speeds = np.array([[1000.0, 1100.0, 1200.0, 1300.0], [900.0, 950.0, 980.0, 990.0]])
     prob.set_val("group_speed", speeds)
@@ -66,8 +71,12 @@ def test_roll_and_yaw_mixers_split_each_pair_about_its_mean():
 
 def test_bad_mixing():
     prob = om.Problem(reports=False)
-    prob.model.add_subsystem("s", RotorSpeedComp(group=[0, 0], num_groups=1,
-                                                 mixing=[[0.5], [0.5], [0.5]]))
-    with pytest.raises(ValueError, match=r"mixing has shape \(3, 1\); allowed: finite values "
-                                         r"of shape \(2, num_mixers\)"):
+    prob.model.add_subsystem(
+        "s", RotorSpeedComp(group=[0, 0], num_groups=1, mixing=[[0.5], [0.5], [0.5]])
+    )
+    with pytest.raises(
+        ValueError,
+        match=r"mixing has shape \(3, 1\); allowed: finite values "
+        r"of shape \(2, num_mixers\)",
+    ):
         prob.setup()

@@ -16,7 +16,7 @@ def test_floor_and_passthrough():
     tau = prob.get_val("rotor_torque")
     expected = 1.0 + 0.5 * ((tau - 1.0) + np.sqrt((tau - 1.0) ** 2 + 4.0))
     assert_near_equal(out, expected, 1e-14)
-    assert 1.0 < out[0, 0] < 1.03          # windmilling: the motor idles
+    assert 1.0 < out[0, 0] < 1.03  # windmilling: the motor idles
     assert_near_equal(out[1, 1], 1000.0, 2e-6)  # normal operation: unchanged
     data = prob.check_partials(method="cs", compact_print=True, out_stream=None)
     assert_check_partials(data, atol=1e-12, rtol=1e-12)

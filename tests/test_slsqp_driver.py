@@ -51,7 +51,7 @@ def bowl_problem(driver, **options):
     prob.model.add_design_var("x", lower=-10.0, upper=10.0)
     prob.model.add_design_var("y", lower=-10.0, upper=10.0)
     prob.model.add_objective("f")
-    prob.model.add_constraint("c", upper=5.0)   # inactive at the optimum (c = 1)
+    prob.model.add_constraint("c", upper=5.0)  # inactive at the optimum (c = 1)
     prob.driver = driver
     prob.setup()
     return prob
@@ -96,8 +96,9 @@ def test_failed_evaluation_is_recorded_as_failed_case(tmp_path):
 
 def test_scipy_driver_without_back_off_ends_the_run():
     # The same problem with OpenMDAO's driver: the first failed trial point ends the run.
-    prob = bowl_problem(om.ScipyOptimizeDriver(optimizer="SLSQP", tol=1e-10, disp=False),
-                        x_fail=3.0)
+    prob = bowl_problem(
+        om.ScipyOptimizeDriver(optimizer="SLSQP", tol=1e-10, disp=False), x_fail=3.0
+    )
     with pytest.raises(om.AnalysisError, match="no solution at x"):
         prob.run_driver()
 
@@ -106,7 +107,7 @@ def test_other_errors_and_a_failed_start_are_reraised():
     prob = bowl_problem(SlsqpDriver(disp=False), x_fail=3.0, error=KeyError)
     with pytest.raises(KeyError, match="no solution at x"):
         prob.run_driver()
-    prob = bowl_problem(SlsqpDriver(disp=False), x_fail=-1.0)   # fails at the start, x = 0
+    prob = bowl_problem(SlsqpDriver(disp=False), x_fail=-1.0)  # fails at the start, x = 0
     with pytest.raises(om.AnalysisError, match="no solution at x = 0"):
         prob.run_driver()
 

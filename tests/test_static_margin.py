@@ -47,9 +47,12 @@ def test_partials_and_totals():
         prob.set_val("normal_force_slope", -9.0e4)
         prob.set_val("pitching_moment_slope", 3.5 * -9.0e4)
         prob.run_model()
-        totals = prob.check_totals(of=["static_margin"], wrt=["normal_force_slope",
-                                                              "pitching_moment_slope", "cg_x"],
-                                   method="cs", out_stream=None)
+        totals = prob.check_totals(
+            of=["static_margin"],
+            wrt=["normal_force_slope", "pitching_moment_slope", "cg_x"],
+            method="cs",
+            out_stream=None,
+        )
         assert_check_totals(totals, atol=1e-12, rtol=1e-9)
 
 
@@ -59,8 +62,9 @@ def test_complex_step_through_the_solve():
     prob.set_val("normal_force_slope", -9.0e4)
     prob.set_val("pitching_moment_slope", 3.5 * -9.0e4)
     prob.run_model()
-    data = prob.check_totals(of=["neutral_point"], wrt=["normal_force_slope"], method="cs",
-                             out_stream=None)
+    data = prob.check_totals(
+        of=["neutral_point"], wrt=["normal_force_slope"], method="cs", out_stream=None
+    )
     assert_check_totals(data, atol=1e-12, rtol=1e-10)
 
 

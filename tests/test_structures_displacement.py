@@ -7,8 +7,7 @@ from lpc_mdo.components.structures.displacement import VerticalDisplacementComp
 
 def test_signed_vertical_displacement():
     prob = om.Problem(reports=False)
-    prob.model.add_subsystem("d", VerticalDisplacementComp(num_nodes=3, sign=-1.0),
-                             promotes=["*"])
+    prob.model.add_subsystem("d", VerticalDisplacementComp(num_nodes=3, sign=-1.0), promotes=["*"])
     prob.setup(force_alloc_complex=True)
     prob.set_val("displacements", np.array([[0.0, 0.0, 0.0], [0.1, 0.0, -0.2], [0.2, 0, -0.5]]))
     prob.run_model()

@@ -54,8 +54,7 @@ def test_swept_parameters_reach_the_model():
     prob.setup()
     prob.run_model()
     mass = prob.get_val("battery_mass", units="kg")[0]
-    assert prob.get_val("energy_capacity", units="W*h")[0] == pytest.approx(300.0 * mass,
-                                                                           rel=1e-12)
+    assert prob.get_val("energy_capacity", units="W*h")[0] == pytest.approx(300.0 * mass, rel=1e-12)
     soc = prob.model.get_constraints()["state_of_charge"]
     assert soc["lower"] == pytest.approx(0.3)
 
@@ -64,8 +63,9 @@ def test_swept_parameters_reach_the_model():
 def start_case(tmp_path_factory):
     pytest.importorskip("cyipopt")
     path = tmp_path_factory.mktemp("start") / "subproblem_4.sql"
-    stage = solve_stage("subproblem_4", str(path), driver_settings={"print_level": 0},
-                        log=lambda message: None)
+    stage = solve_stage(
+        "subproblem_4", str(path), driver_settings={"print_level": 0}, log=lambda message: None
+    )
     assert stage.success
     return str(path)
 
@@ -77,10 +77,16 @@ def read_summary(out):
 
 def test_local_parallel_sweep(start_case, tmp_path):
     out = tmp_path / "sweep"
-    points = run_sweep(str(out), start_case, parameters=("energy_density",),
-                       values={"energy_density": [350.0, 400.0, 450.0]},
-                       static_margins=(True,), processes=2, problem="subproblem_4",
-                       driver_settings={"print_level": 0})
+    points = run_sweep(
+        str(out),
+        start_case,
+        parameters=("energy_density",),
+        values={"energy_density": [350.0, 400.0, 450.0]},
+        static_margins=(True,),
+        processes=2,
+        problem="subproblem_4",
+        driver_settings={"print_level": 0},
+    )
     assert sorted(p.value for p in points) == [350.0, 400.0, 450.0]
     assert all(p.success for p in points), [p.exit_status for p in points]
     rows = read_summary(out)
@@ -97,26 +103,60 @@ def test_failed_point_is_retried_and_reported(start_case, tmp_path):
     # One iteration cannot converge subproblem 4: the point is retried (two iterations) from
     # the start case, still fails, and stays in the summary as failed.
     out = tmp_path / "sweep"
-    points = run_sweep(str(out), start_case, parameters=("final_soc",),
-                       values={"final_soc": [0.2]}, static_margins=(False,), processes=1,
-                       problem="subproblem_4", driver_settings={"max_iter": 1, "print_level": 0})
+    points = run_sweep(
+        str(out),
+        start_case,
+        parameters=("final_soc",),
+        values={"final_soc": [0.2]},
+        static_margins=(False,),
+        processes=1,
+        problem="subproblem_4",
+        driver_settings={"max_iter": 1, "print_level": 0},
+    )
     assert len(points) == 1 and not points[0].success and points[0].retried
     assert read_summary(out)[0]["success"] == "False"
 
 
 def test_mpi_sweep_on_two_ranks(start_case, tmp_path):
     pytest.importorskip("mpi4py")
-    mpirun = shutil.which("mpirun", path=os.pathsep.join([str(Path(sys.executable).parent),
-                                                         os.environ.get("PATH", "")]))
+    mpirun = shutil.which(
+        "mpirun",
+        path=os.pathsep.join([str(Path(sys.executable).parent), os.environ.get("PATH", "")]),
+    )
     if mpirun is None:
         pytest.skip("no mpirun (pip install 'lpc-mdo[mpi]')")
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-               OPENBLAS_NUM_THREADS="1", OPENMDAO_REPORTS="0")
+    env = dict(
+        os.environ,
+        OMPI_ALLOW_RUN_AS_ROOT="1",
+        OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+        OPENBLAS_NUM_THREADS="1",
+        OPENMDAO_REPORTS="0",
+    )
     out = tmp_path / "mpi"
-    cmd = [mpirun, "--oversubscribe", "-n", "2", sys.executable, "-m", "lpc_mdo.cli", "sweep",
-           "--mpi", "--problem", "subproblem_4", "--parameter", "energy_density", "--values",
-           "350", "450", "--static-margin", "on", "--start-case", start_case,
-           "--output-dir", str(out)]
+    cmd = [
+        mpirun,
+        "--oversubscribe",
+        "-n",
+        "2",
+        sys.executable,
+        "-m",
+        "lpc_mdo.cli",
+        "sweep",
+        "--mpi",
+        "--problem",
+        "subproblem_4",
+        "--parameter",
+        "energy_density",
+        "--values",
+        "350",
+        "450",
+        "--static-margin",
+        "on",
+        "--start-case",
+        start_case,
+        "--output-dir",
+        str(out),
+    ]
     run = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=600)
     assert run.returncode == 0, run.stdout[-2000:] + run.stderr[-2000:]
     rows = read_summary(out)

@@ -8,8 +8,9 @@ from lpc_mdo.trim import trim
 
 
 def test_hover_trims_to_weight_with_equal_rotor_speeds():
-    prob = build_analysis_problem(None, conditions=["hover"], lateral_trim=False,
-                                  constraint_kinds=["trim"])
+    prob = build_analysis_problem(
+        None, conditions=["hover"], lateral_trim=False, constraint_kinds=["trim"]
+    )
     result = trim(prob, separate=False)
     assert result.success, result.message
     # Closed form: in hover at zero pitch the lift rotors carry the weight, sum T = m g (the
@@ -28,8 +29,9 @@ def test_transition_point_trims_to_the_prescribed_acceleration():
     # transition_3 starts 6.6 m/s^2 off in w_dot and 1.5 rad/s^2 off in p_dot (initial design:
     # the pusher's torque reaction rolls it); 4 lift pair speeds, the roll and yaw
     # differentials, pusher speed and elevator against u_dot, w_dot, p_dot, q_dot, r_dot.
-    prob = build_analysis_problem(None, conditions=["transition_3"], lateral_trim=False,
-                                  constraint_kinds=["trim"])
+    prob = build_analysis_problem(
+        None, conditions=["transition_3"], lateral_trim=False, constraint_kinds=["trim"]
+    )
     condition = prob.vehicle.condition("transition_3")
     prob.run_model()
     before = prob.get_val("transition_3.linear_acceleration").copy()
@@ -42,13 +44,14 @@ def test_transition_point_trims_to_the_prescribed_acceleration():
     # v_dot is left to itself (the rotors' net side force under the yaw differential):
     # 2.3e-3 m/s^2 here (0.02 % of the weight as a force); the issue's criterion is 0.1 %.
     assert abs(acc[1]) < 1e-3 * 9.81
-    np.testing.assert_allclose(prob.get_val("transition_3.angular_acceleration"), 0.0,
-                               atol=1e-6)
-    assert np.abs(before).max() > 1.0 and abs(roll_before) > 1.0   # it did have to move
+    np.testing.assert_allclose(prob.get_val("transition_3.angular_acceleration"), 0.0, atol=1e-6)
+    assert np.abs(before).max() > 1.0 and abs(roll_before) > 1.0  # it did have to move
     # Closed form of the roll balance: the lift rotors' rolling moment about the body origin
     # cancels the pusher's (its torque reaction about x); the differentials did it.
-    roll = sum(prob.get_val(f"transition_3.{source}_moment", units="N*m")[0, 0]
-               for source in ("lift", "pusher"))
+    roll = sum(
+        prob.get_val(f"transition_3.{source}_moment", units="N*m")[0, 0]
+        for source in ("lift", "pusher")
+    )
     pusher_roll = prob.get_val("transition_3.pusher_moment", units="N*m")[0, 0]
     assert abs(pusher_roll) > 1e3
     assert abs(roll) < 1e-3 * abs(pusher_roll)

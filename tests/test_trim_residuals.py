@@ -31,8 +31,10 @@ def _record(path, declare=True):
     ivc = prob.model.add_subsystem("ivc", om.IndepVarComp(), promotes=["*"])
     ivc.add_output("gross_mass", MASS, units="kg")
     ivc.add_output("inertia", INERTIA, units="kg*m**2")
-    for name, lin, ang in (("hover", HOVER_LINEAR, HOVER_ANGULAR),
-                           ("transition_1", T1_LINEAR, T1_ANGULAR)):
+    for name, lin, ang in (
+        ("hover", HOVER_LINEAR, HOVER_ANGULAR),
+        ("transition_1", T1_LINEAR, T1_ANGULAR),
+    ):
         condition = prob.model.add_subsystem(name, om.IndepVarComp())
         condition.add_output("linear_acceleration", np.array([lin]), units="m/s**2")
         condition.add_output("angular_acceleration", np.array([ang]), units="rad/s**2")
@@ -40,13 +42,18 @@ def _record(path, declare=True):
     prob.model.add_objective("gross_mass")
     if declare:
         # As the optimizations declare them: hover w and q only; transition all six.
-        prob.model.add_constraint("hover.linear_acceleration", indices=[2], flat_indices=True,
-                                  equals=0.0)
-        prob.model.add_constraint("hover.angular_acceleration", indices=[1], flat_indices=True,
-                                  equals=0.0)
-        prob.model.add_constraint("transition_1.linear_acceleration", indices=[0, 1, 2],
-                                  flat_indices=True,
-                                  equals=np.array([T1_TARGET[0], 0.0, T1_TARGET[1]]))
+        prob.model.add_constraint(
+            "hover.linear_acceleration", indices=[2], flat_indices=True, equals=0.0
+        )
+        prob.model.add_constraint(
+            "hover.angular_acceleration", indices=[1], flat_indices=True, equals=0.0
+        )
+        prob.model.add_constraint(
+            "transition_1.linear_acceleration",
+            indices=[0, 1, 2],
+            flat_indices=True,
+            equals=np.array([T1_TARGET[0], 0.0, T1_TARGET[1]]),
+        )
         prob.model.add_constraint("transition_1.angular_acceleration", equals=0.0)
     prob.add_recorder(om.SqliteRecorder(str(path)))
     prob.recording_options["includes"] = ["*"]
@@ -61,8 +68,7 @@ def test_residuals_are_forces_and_moments_of_every_table6_row(tmp_path):
     rows = trim_residuals(_record(tmp_path / "cases.sql"))
     by_key = {(r["condition"], r["component"]): r for r in rows}
     # Table 6 rows: hover (w, p, q), transition (u, v, w, p, q, r).
-    assert list(by_key) == [("hover", c) for c in "wpq"] + [("transition_1", c)
-                                                            for c in "uvwpqr"]
+    assert list(by_key) == [("hover", c) for c in "wpq"] + [("transition_1", c) for c in "uvwpqr"]
     weight = MASS * 9.81
     # Closed forms, by hand.
     hover_moment = INERTIA @ np.array(HOVER_ANGULAR)
@@ -75,8 +81,9 @@ def test_residuals_are_forces_and_moments_of_every_table6_row(tmp_path):
     assert_near_equal(by_key["transition_1", "u"]["residual"], 0.0, 1e-12)
     assert_near_equal(by_key["transition_1", "w"]["residual"], MASS * 2e-4, 1e-9)
     assert_near_equal(by_key["transition_1", "w"]["target"], T1_TARGET[1], 1e-12)
-    assert_near_equal(by_key["transition_1", "r"]["residual"],
-                      -700.0 * 1e-6 + 13000.0 * -4e-6, 1e-12)
+    assert_near_equal(
+        by_key["transition_1", "r"]["residual"], -700.0 * 1e-6 + 13000.0 * -4e-6, 1e-12
+    )
     assert_near_equal(by_key["hover", "p"]["percent_of_weight"], 100 * 15.0 / weight, 1e-12)
 
 

@@ -58,7 +58,8 @@ def test_counts_and_condition_order():
         "minus_1g",
     ]
     assert [c.kind for c in vehicle.conditions] == (
-        ["hover"] + ["transition"] * 5 + ["steady"] * 3 + ["oei"] * 4 + ["structural"] * 2)
+        ["hover"] + ["transition"] * 5 + ["steady"] * 3 + ["oei"] * 4 + ["structural"] * 2
+    )
     assert design_variable_count() == 161 + 10
     assert vehicle.design_variable_count() == 161 + 10
     assert design_variable_count(vehicle) == sum(
@@ -73,7 +74,9 @@ def test_reference_values():
     assert wing.area == 19.6
     assert wing.aspect_ratio == 12.12
     assert wing.span == pytest.approx(15.41, rel=1e-3)
-    assert wing.mean_aerodynamic_chord == pytest.approx(1.4601, abs=1e-4)  # docs theory/aerodynamics 'Drag build-up'
+    assert wing.mean_aerodynamic_chord == pytest.approx(
+        1.4601, abs=1e-4
+    )  # docs theory/aerodynamics 'Drag build-up'
     assert wing.airfoil == "ls413" and wing.thickness_to_chord == 0.13
     assert vehicle.horizontal_tail.root_chord == pytest.approx(1.1595, abs=1e-4)
     assert vehicle.vertical_tail.span == pytest.approx(1.7239, abs=1e-4)
@@ -114,14 +117,15 @@ def test_angles_are_radians_and_energy_weights_follow_the_paper_rule():
     assert [multipliers[f"transition_{i}"] for i in range(1, 6)] == [4] * 5
     assert (multipliers["climb"], multipliers["cruise"], multipliers["descent"]) == (2, 3, 2)
     assert all(multipliers[n] == 0 for n in ("oei_1", "oei_4", "plus_3g", "minus_1g"))
-    assert [c.name for c in vehicle.mission_segments] == [
-        c.name for c in vehicle.conditions[:9]]
+    assert [c.name for c in vehicle.mission_segments] == [c.name for c in vehicle.conditions[:9]]
     assert vehicle.mission.cruise_condition == "cruise"
     accelerations = [c.acceleration for c in vehicle.conditions if c.kind == "transition"]
     assert min(accelerations) == pytest.approx(0.17, abs=0.01)  # paper Table 7 minimum
     assert [c.failed_rotor for c in vehicle.conditions if c.kind == "oei"] == [0, 1, 2, 3]
     assert vehicle.condition("plus_3g").load_factor == 3
-    assert vehicle.condition("cruise").speed == pytest.approx(57.19, abs=0.01)  # docs theory/dynamics 'Condition kinematics'
+    assert vehicle.condition("cruise").speed == pytest.approx(
+        57.19, abs=0.01
+    )  # docs theory/dynamics 'Condition kinematics'
 
 
 def test_design_variables():

@@ -33,8 +33,13 @@ def _motor(**fields):
 
 # [wing]: taper 0.2 -> 0.3, sweep 7.81 -> 12 deg, dihedral -2 -> 1 deg, incidence 2.04 -> 3 deg,
 # root leading edge moved 0.15 m aft and 0.07 m up.
-WING = _wing(taper_ratio=0.3, sweep=np.radians(12.0), dihedral=np.radians(1.0),
-             incidence=np.radians(3.0), root_leading_edge=(-2.1, 0.0, -1.0))
+WING = _wing(
+    taper_ratio=0.3,
+    sweep=np.radians(12.0),
+    dihedral=np.radians(1.0),
+    incidence=np.radians(3.0),
+    root_leading_edge=(-2.1, 0.0, -1.0),
+)
 # [motor]: electric loading 30e3 -> 40e3 A/m, magnetic loading 0.85 -> 0.95 T.
 MOTOR = _motor(electric_loading=40.0e3, magnetic_loading=0.95)
 
@@ -57,9 +62,13 @@ def test_wing_planform_reaches_the_wing_box(reference):
     wing = WING.wing
     # The wing box's inputs are the vehicle's [wing] values (they once stayed at the reference
     # vehicle's, the component's defaults).
-    for name, value in (("taper_ratio", wing.taper_ratio), ("sweep", wing.sweep),
-                        ("dihedral", wing.dihedral), ("incidence", wing.incidence),
-                        ("root_leading_edge", wing.root_leading_edge)):
+    for name, value in (
+        ("taper_ratio", wing.taper_ratio),
+        ("sweep", wing.sweep),
+        ("dihedral", wing.dihedral),
+        ("incidence", wing.incidence),
+        ("root_leading_edge", wing.root_leading_edge),
+    ):
         assert_near_equal(prob.get_val(f"vehicle.wing_box.wing_{name}"), value, 1e-15)
 
     # Beam nodes by the planform of WingBoxGeometryComp's docstring (docs theory/geometry 'Reference vehicle', docs theory/structures 'Material, mesh and load transfer')
@@ -72,11 +81,17 @@ def test_wing_planform_reaches_the_wing_box(reference):
     y = 0.5 * wing.span * eta
     i = wing.incidence
     x0, y0, z0 = wing.root_leading_edge
-    expected = np.column_stack([
-        x0 - y * np.tan(wing.sweep) - chord * (sec.beam_axis * np.cos(i) + sec.camber * np.sin(i)),
-        y0 + y,
-        z0 - y * np.tan(wing.dihedral) + chord * (sec.beam_axis * np.sin(i)
-                                                  - sec.camber * np.cos(i))])
+    expected = np.column_stack(
+        [
+            x0
+            - y * np.tan(wing.sweep)
+            - chord * (sec.beam_axis * np.cos(i) + sec.camber * np.sin(i)),
+            y0 + y,
+            z0
+            - y * np.tan(wing.dihedral)
+            + chord * (sec.beam_axis * np.sin(i) - sec.camber * np.cos(i)),
+        ]
+    )
     assert_near_equal(prob.get_val("wing_box_nodes", units="m"), expected, 1e-12)
 
     # The wing box and the VLM wing mesh describe the same wing: at the tip the box node is the
@@ -86,8 +101,11 @@ def test_wing_planform_reaches_the_wing_box(reference):
     tip = int(np.argmax(mesh[0, :, 1]))
     le, te = mesh[0, tip], mesh[-1, tip]
     offset = sec.camber * wing.tip_chord * np.array([-np.sin(i), 0.0, -np.cos(i)])
-    assert_near_equal(prob.get_val("wing_box_nodes", units="m")[-1],
-                      le + sec.beam_axis * (te - le) + offset, 1e-12)
+    assert_near_equal(
+        prob.get_val("wing_box_nodes", units="m")[-1],
+        le + sec.beam_axis * (te - le) + offset,
+        1e-12,
+    )
 
     # Direction: a larger taper ratio at the same area moves chord outboard, so the root bay's
     # box is narrower and the tip bay's wider (box width = (xi_r - xi_f) x mean bay chord); more
@@ -97,7 +115,8 @@ def test_wing_planform_reaches_the_wing_box(reference):
     nodes, ref_nodes = prob.get_val("wing_box_nodes"), reference.get_val("wing_box_nodes")
     assert nodes[-1, 0] - nodes[0, 0] < ref_nodes[-1, 0] - ref_nodes[0, 0]
     assert prob.get_val("half_wing_mass")[0] != pytest.approx(
-        reference.get_val("half_wing_mass")[0], rel=1e-6)
+        reference.get_val("half_wing_mass")[0], rel=1e-6
+    )
 
 
 def test_wing_sweep_alone_lengthens_the_beam(reference):
@@ -113,19 +132,31 @@ def test_wing_sweep_alone_lengthens_the_beam(reference):
 def test_motor_loadings_reach_the_vehicle_motor_sizing(reference):
     prob = _vehicle_problem(MOTOR)
     motor = MOTOR.motor
-    assert_near_equal(prob.get_val("vehicle.motor_sizing.electric_loading", units="A/m"),
-                      np.full(5, motor.electric_loading), 1e-15)
-    assert_near_equal(prob.get_val("vehicle.motor_sizing.magnetic_loading", units="T"),
-                      np.full(5, motor.magnetic_loading), 1e-15)
+    assert_near_equal(
+        prob.get_val("vehicle.motor_sizing.electric_loading", units="A/m"),
+        np.full(5, motor.electric_loading),
+        1e-15,
+    )
+    assert_near_equal(
+        prob.get_val("vehicle.motor_sizing.magnetic_loading", units="T"),
+        np.full(5, motor.magnetic_loading),
+        1e-15,
+    )
     # Paper eq. 23: m = (pi/2) A B D^2 L/Q_sp, so at the same lengths the masses scale with
     # A B: (40e3 x 0.95)/(30e3 x 0.85) = 1.4902.
     ratio = (40.0e3 * 0.95) / (30.0e3 * 0.85)
-    assert_near_equal(prob.get_val("motor_group_mass", units="kg"),
-                      ratio * reference.get_val("motor_group_mass", units="kg"), 1e-12)
+    assert_near_equal(
+        prob.get_val("motor_group_mass", units="kg"),
+        ratio * reference.get_val("motor_group_mass", units="kg"),
+        1e-12,
+    )
     # Same closed form evaluated independently from the vehicle's [motor] table
     # (groups/weights.py, placeholder_calibration_inputs), per motor.
-    assert_near_equal(prob.get_val("motor_mass", units="kg"),
-                      placeholder_calibration_inputs(MOTOR)["motor_mass"], 1e-12)
+    assert_near_equal(
+        prob.get_val("motor_mass", units="kg"),
+        placeholder_calibration_inputs(MOTOR)["motor_mass"],
+        1e-12,
+    )
 
 
 def test_motor_group_loading_options():
@@ -144,11 +175,15 @@ def test_motor_group_loading_options():
     assert_near_equal(loaded.get_val("electric_loading", units="A/m"), [40.0e3, 40.0e3], 1e-15)
     assert_near_equal(loaded.get_val("magnetic_loading", units="T"), [0.95, 0.95], 1e-15)
     # Eq. 23: mass proportional to A B.
-    assert_near_equal(loaded.get_val("mass"), (40.0e3 * 0.95) / (30.0e3 * 0.85)
-                      * default.get_val("mass"), 1e-12)
+    assert_near_equal(
+        loaded.get_val("mass"), (40.0e3 * 0.95) / (30.0e3 * 0.85) * default.get_val("mass"), 1e-12
+    )
 
-    with pytest.raises(ValueError, match=r"MotorGroup: 'electric_loading' = -1.0 is out of range: "
-                                         r"must be > 0"):
+    with pytest.raises(
+        ValueError,
+        match=r"MotorGroup: 'electric_loading' = -1.0 is out of range: "
+        r"must be > 0",
+    ):
         MotorGroup(electric_loading=-1.0)
     with pytest.raises(ValueError, match=r"'magnetic_loading' = 0.0 is out of range: must be > 0"):
         MotorGroup(magnetic_loading=0.0)
@@ -163,16 +198,31 @@ def test_motor_loadings_reach_every_motor_sizing_comp():
     prob.setup()
     prob.run_model()
     sizing = list(prob.model.system_iter(recurse=True, typ=MotorSizingComp))
-    assert {s.pathname for s in sizing} == {"vehicle.motor_sizing", "hover.lift_motors.sizing",
-                                            "cruise.pusher_motors.sizing"}
+    assert {s.pathname for s in sizing} == {
+        "vehicle.motor_sizing",
+        "hover.lift_motors.sizing",
+        "cruise.pusher_motors.sizing",
+    }
     for comp in sizing:
-        assert_near_equal(prob.get_val(f"{comp.pathname}.electric_loading", units="A/m"),
-                          np.full(comp.options["num_motors"], 40.0e3), 1e-15)
-        assert_near_equal(prob.get_val(f"{comp.pathname}.magnetic_loading", units="T"),
-                          np.full(comp.options["num_motors"], 0.95), 1e-15)
+        assert_near_equal(
+            prob.get_val(f"{comp.pathname}.electric_loading", units="A/m"),
+            np.full(comp.options["num_motors"], 40.0e3),
+            1e-15,
+        )
+        assert_near_equal(
+            prob.get_val(f"{comp.pathname}.magnetic_loading", units="T"),
+            np.full(comp.options["num_motors"], 0.95),
+            1e-15,
+        )
     # The condition motors are the vehicle's motors: the same mass per rotor group (eq. 23).
     group_mass = prob.get_val("motor_group_mass", units="kg")
-    assert_near_equal(prob.get_val("hover.lift_motors.mass", units="kg"),
-                      group_mass[[r.pair for r in MOTOR.lift_rotors]], 1e-12)
-    assert_near_equal(prob.get_val("cruise.pusher_motors.mass", units="kg"),
-                      group_mass[[MOTOR.pusher.pair]], 1e-12)
+    assert_near_equal(
+        prob.get_val("hover.lift_motors.mass", units="kg"),
+        group_mass[[r.pair for r in MOTOR.lift_rotors]],
+        1e-12,
+    )
+    assert_near_equal(
+        prob.get_val("cruise.pusher_motors.mass", units="kg"),
+        group_mass[[MOTOR.pusher.pair]],
+        1e-12,
+    )

@@ -52,10 +52,16 @@ def test_gross_mass_is_the_sum_of_the_breakdown_items():
     prob = vehicle_problem()
     items = dict(zip(BREAKDOWN_LABELS, prob.get_val("mass_breakdown", units="kg"), strict=True))
     assert_near_equal(sum(items.values()), prob.get_val("gross_mass", units="kg")[0], 1e-14)
-    assert_near_equal(items["wing"] + items["fuselage"] + items["empennage"] + items["booms"],
-                      prob.get_val("structures_mass", units="kg")[0], 1e-14)
-    assert_near_equal(items["motors"] + items["power_electronics"],
-                      prob.get_val("powertrain_mass", units="kg")[0], 1e-14)
+    assert_near_equal(
+        items["wing"] + items["fuselage"] + items["empennage"] + items["booms"],
+        prob.get_val("structures_mass", units="kg")[0],
+        1e-14,
+    )
+    assert_near_equal(
+        items["motors"] + items["power_electronics"],
+        prob.get_val("powertrain_mass", units="kg")[0],
+        1e-14,
+    )
     assert_near_equal(items["motors"], prob.get_val("motor_mass", units="kg").sum(), 1e-14)
     assert_near_equal(items["other"], calibrated_other_mass(VEHICLE)[0], 1e-14)
 
@@ -68,17 +74,27 @@ def test_calibrated_other_mass_moves_by_the_wing_and_motor_mass_differences():
     base = vehicle_problem()
     wing, motors = base.get_val("wing_mass", units="kg")[0], base.get_val("motor_mass").sum()
     other = calibrated_other_mass(VEHICLE)[0]
-    light_wing = dataclasses.replace(VEHICLE, material=dataclasses.replace(
-        VEHICLE.material, density=0.5 * VEHICLE.material.density))
+    light_wing = dataclasses.replace(
+        VEHICLE,
+        material=dataclasses.replace(VEHICLE.material, density=0.5 * VEHICLE.material.density),
+    )
     assert_near_equal(calibrated_other_mass(light_wing)[0] - other, 0.5 * wing, 1e-9)
-    light_motors = dataclasses.replace(VEHICLE, motor=dataclasses.replace(
-        VEHICLE.motor, torque_density=1.25 * VEHICLE.motor.torque_density))
+    light_motors = dataclasses.replace(
+        VEHICLE,
+        motor=dataclasses.replace(
+            VEHICLE.motor, torque_density=1.25 * VEHICLE.motor.torque_density
+        ),
+    )
     assert_near_equal(calibrated_other_mass(light_motors)[0] - other, 0.2 * motors, 1e-9)
     # A target below what the other items weigh is refused, naming the field.
-    low = dataclasses.replace(VEHICLE, masses=dataclasses.replace(
-        VEHICLE.masses, target_gross_mass=2000.0))
-    with pytest.raises(ValueError, match=r"masses.target_gross_mass = 2000.0 kg; .* allowed: "
-                                         r"a target above 2362.31 kg"):
+    low = dataclasses.replace(
+        VEHICLE, masses=dataclasses.replace(VEHICLE.masses, target_gross_mass=2000.0)
+    )
+    with pytest.raises(
+        ValueError,
+        match=r"masses.target_gross_mass = 2000.0 kg; .* allowed: "
+        r"a target above 2362.31 kg",
+    ):
         calibrated_other_mass(low)
 
 
@@ -89,8 +105,9 @@ def test_unitemised_mass_is_placed_for_hover_balance():
     hub_x = np.mean([r.hub_position[0] for r in VEHICLE.lift_rotors])
     assert_near_equal(prob.get_val("cg", units="m")[0], hub_x, 1e-10)
     # 'fixed' keeps the file's other_cg: the cg is then 0.59 m ahead of the rotor centroid.
-    fixed = dataclasses.replace(VEHICLE, masses=dataclasses.replace(
-        VEHICLE.masses, other_cg_rule="fixed"))
+    fixed = dataclasses.replace(
+        VEHICLE, masses=dataclasses.replace(VEHICLE.masses, other_cg_rule="fixed")
+    )
     other, cg = calibrated_other_mass(fixed)
     assert cg == VEHICLE.masses.other_cg
     assert_near_equal(other, calibrated_other_mass(VEHICLE)[0], 1e-12)
@@ -103,11 +120,29 @@ def test_unitemised_mass_is_placed_for_hover_balance():
 
 def test_totals_of_gross_mass_and_geometry():
     prob = vehicle_problem()
-    wrt = ["wing_area", "wing_aspect_ratio", "fuselage_length", "rotor_radius", "battery_mass",
-           "motor_length", "top_skin_thickness", "front_spar_thickness", "htail_area"]
-    data = prob.check_totals(of=["gross_mass", "cg", "radius_intersection",
-                                 "lift_hub_position", "htail_root_leading_edge"],
-                             wrt=wrt, method="cs", out_stream=None)
+    wrt = [
+        "wing_area",
+        "wing_aspect_ratio",
+        "fuselage_length",
+        "rotor_radius",
+        "battery_mass",
+        "motor_length",
+        "top_skin_thickness",
+        "front_spar_thickness",
+        "htail_area",
+    ]
+    data = prob.check_totals(
+        of=[
+            "gross_mass",
+            "cg",
+            "radius_intersection",
+            "lift_hub_position",
+            "htail_root_leading_edge",
+        ],
+        wrt=wrt,
+        method="cs",
+        out_stream=None,
+    )
     assert_check_totals(data, atol=1e-8, rtol=1e-7)
     # A kilogram of battery adds itself plus what the M4 fuselage and boom regressions add for
     # it (battery mass is one of their regressors, docs theory/weights 'M4 regressions'), so slightly more than 1.

@@ -38,8 +38,10 @@ def _meshes():
     prob.model.add_subsystem("wing", PlanformMeshComp(num_span_panels=4, num_chord_panels=2))
     prob.model.add_subsystem("tail", PlanformMeshComp(num_span_panels=2, num_chord_panels=1))
     prob.setup()
-    for name, b, c, x0, sweep, dihedral in (("wing", 8.0, 1.2, [0.0, 0.0, 0.0], 0.2, 0.1),
-                                            ("tail", 3.0, 0.6, [-4.0, 0.1, -0.5], 0.1, -0.05)):
+    for name, b, c, x0, sweep, dihedral in (
+        ("wing", 8.0, 1.2, [0.0, 0.0, 0.0], 0.2, 0.1),
+        ("tail", 3.0, 0.6, [-4.0, 0.1, -0.5], 0.1, -0.05),
+    ):
         prob.set_val(f"{name}.span", b)
         prob.set_val(f"{name}.root_chord", c)
         prob.set_val(f"{name}.tip_chord", 0.6 * c)
@@ -67,8 +69,9 @@ def make_problem():
     prob.set_val("reference_point", [-0.5, 0.05, 0.1])
     prob.set_val("reference_area", 8.0)
     prob.set_val("density", [1.2, 1.1])
-    prob.set_val("wing_zero_lift_angle", [[-0.03, -0.04, -0.05, -0.04],
-                                          [-0.02, -0.03, -0.035, -0.025]])
+    prob.set_val(
+        "wing_zero_lift_angle", [[-0.03, -0.04, -0.05, -0.04], [-0.02, -0.03, -0.035, -0.025]]
+    )
     prob.set_val("wing_sectional_cd", 0.01 + 0.001 * np.arange(8).reshape(2, 4))
     prob.set_val("tail_zero_lift_angle", [[0.01, 0.0], [0.0, -0.01]])
     prob.set_val("tail_sectional_cd", [[0.009, 0.008], [0.01, 0.011]])
@@ -80,11 +83,19 @@ def make_problem():
 def test_partials_of_every_vlm_component():
     prob = make_problem()
     data = prob.check_partials(method="cs", compact_print=True, out_stream=None)
-    expected = {"geometry": VLMGeometryComp, "freestream": VLMFreestreamComp,
-                "normals": VLMNormalsComp, "aic": VLMAICComp, "circulation": VLMCirculationComp,
-                "induced_velocity": VLMInducedVelocityComp, "panel_forces": VLMPanelForcesComp,
-                "profile_drag": VLMProfileDragComp, "loads": VLMLoadsComp,
-                "sectional": VLMSectionalLiftComp, "trefftz": VLMTrefftzDragComp}
+    expected = {
+        "geometry": VLMGeometryComp,
+        "freestream": VLMFreestreamComp,
+        "normals": VLMNormalsComp,
+        "aic": VLMAICComp,
+        "circulation": VLMCirculationComp,
+        "induced_velocity": VLMInducedVelocityComp,
+        "panel_forces": VLMPanelForcesComp,
+        "profile_drag": VLMProfileDragComp,
+        "loads": VLMLoadsComp,
+        "sectional": VLMSectionalLiftComp,
+        "trefftz": VLMTrefftzDragComp,
+    }
     # Every VLM component is checked, each in its subsystem of the group.
     assert {name.split(".")[-1] for name in data} == set(expected)
     for name, cls in expected.items():
@@ -100,19 +111,35 @@ def test_biot_savart_kernels_against_katz_plotkin():
     rng = np.random.default_rng(1)
     r1, r2 = rng.normal(size=(6, 3)), rng.normal(size=(6, 3))
     cr = np.cross(r1, r2)
-    ref = (INV_4PI * cr / np.sum(cr * cr, axis=1)[:, None]
-           * np.sum((r1 - r2) * (r1 / np.linalg.norm(r1, axis=1)[:, None]
-                                 - r2 / np.linalg.norm(r2, axis=1)[:, None]), axis=1)[:, None])
+    ref = (
+        INV_4PI
+        * cr
+        / np.sum(cr * cr, axis=1)[:, None]
+        * np.sum(
+            (r1 - r2)
+            * (r1 / np.linalg.norm(r1, axis=1)[:, None] - r2 / np.linalg.norm(r2, axis=1)[:, None]),
+            axis=1,
+        )[:, None]
+    )
     assert_near_equal(segment_velocity(r1, r2), ref, 1e-9)
     # Semi-infinite line = limit of a long segment (1e5 lengths; truncation ~1e-5 relative).
     u = rng.normal(size=(6, 3))
     u /= np.linalg.norm(u, axis=1)[:, None]
     far = r1 - 1e5 * u
     cr = np.cross(r1, far)
-    ref = (INV_4PI * cr / np.sum(cr * cr, axis=1)[:, None]
-           * np.sum((r1 - far) * (r1 / np.linalg.norm(r1, axis=1)[:, None]
-                                  - far / np.linalg.norm(far, axis=1)[:, None]),
-                    axis=1)[:, None])
+    ref = (
+        INV_4PI
+        * cr
+        / np.sum(cr * cr, axis=1)[:, None]
+        * np.sum(
+            (r1 - far)
+            * (
+                r1 / np.linalg.norm(r1, axis=1)[:, None]
+                - far / np.linalg.norm(far, axis=1)[:, None]
+            ),
+            axis=1,
+        )[:, None]
+    )
     assert_near_equal(semi_infinite_velocity(r1, u), ref, 1e-4)
     # Biot-Savart for an infinite line at distance h: 1/(2 pi h); a semi-infinite one from the
     # foot point gives half of it.
@@ -153,13 +180,19 @@ def test_singular_system_is_an_analysis_error():
 def test_bad_flight_inputs_are_analysis_errors():
     prob = make_problem()
     prob.set_val("speed", [-1.0, 30.0])
-    with pytest.raises(om.AnalysisError, match=r"'speed\[0\]' = -1.0"
-                                               r" is out of range: must be >= 0 \(m/s\)"):
+    with pytest.raises(
+        om.AnalysisError,
+        match=r"'speed\[0\]' = -1.0"
+        r" is out of range: must be >= 0 \(m/s\)",
+    ):
         prob.run_model()
     prob.set_val("speed", [0.0, 30.0])  # hover node: no circulation, finite coefficients
     prob.set_val("reference_area", 0.0)
-    with pytest.raises(om.AnalysisError, match=r"'reference_area' = 0.0"
-                                               r" is out of range: must be > 0 \(m\*\*2\)"):
+    with pytest.raises(
+        om.AnalysisError,
+        match=r"'reference_area' = 0.0"
+        r" is out of range: must be > 0 \(m\*\*2\)",
+    ):
         prob.run_model()
     prob.set_val("reference_area", 8.0)
     prob.set_val("angular_velocity", [[0.0, 0.0, 0.0], [0.0, 0.1, -0.1]])

@@ -15,9 +15,11 @@ from lpc_mdo.vehicle import reference_vehicle
 
 def _mesh(num_span_panels, values, num_chord_panels=1):
     prob = om.Problem(reports=False)
-    prob.model.add_subsystem("p", PlanformMeshComp(num_span_panels=num_span_panels,
-                                                   num_chord_panels=num_chord_panels),
-                             promotes=["*"])
+    prob.model.add_subsystem(
+        "p",
+        PlanformMeshComp(num_span_panels=num_span_panels, num_chord_panels=num_chord_panels),
+        promotes=["*"],
+    )
     prob.setup()
     for name, value in values.items():
         prob.set_val(name, value)
@@ -30,10 +32,24 @@ def small_problem(mode):
     prob = om.Problem(reports=False)
     prob.model.add_subsystem("vlm", VLMGroup(surfaces=surfaces, num_nodes=2), promotes=["*"])
     prob.setup(force_alloc_complex=True, mode=mode)
-    prob.set_val("wing_mesh", _mesh(6, {"span": 8.0, "root_chord": 1.2, "tip_chord": 0.6,
-                                        "sweep": 0.1, "dihedral": 0.05}))
-    prob.set_val("tail_mesh", _mesh(2, {"span": 3.0, "root_chord": 0.6, "tip_chord": 0.3,
-                                        "root_leading_edge": [-4.0, 0.0, -0.5]}))
+    prob.set_val(
+        "wing_mesh",
+        _mesh(
+            6, {"span": 8.0, "root_chord": 1.2, "tip_chord": 0.6, "sweep": 0.1, "dihedral": 0.05}
+        ),
+    )
+    prob.set_val(
+        "tail_mesh",
+        _mesh(
+            2,
+            {
+                "span": 3.0,
+                "root_chord": 0.6,
+                "tip_chord": 0.3,
+                "root_leading_edge": [-4.0, 0.0, -0.5],
+            },
+        ),
+    )
     prob.set_val("speed", [50.0, 30.0])
     prob.set_val("angle_of_attack", [0.05, 0.1])
     prob.set_val("sideslip_angle", [0.02, 0.0])
@@ -50,10 +66,26 @@ def small_problem(mode):
 @pytest.mark.parametrize("mode", ["fwd", "rev"])
 def test_totals_wrt_mesh_alpha_speed(mode):
     prob = small_problem(mode)
-    of = ["CL", "CDi", "CD", "moment", "force", "side_force", "wing_sectional_cl",
-          "trefftz_induced_drag"]
-    wrt = ["wing_mesh", "tail_mesh", "angle_of_attack", "sideslip_angle", "speed",
-           "tail_deflection", "wing_zero_lift_angle", "angular_velocity"]
+    of = [
+        "CL",
+        "CDi",
+        "CD",
+        "moment",
+        "force",
+        "side_force",
+        "wing_sectional_cl",
+        "trefftz_induced_drag",
+    ]
+    wrt = [
+        "wing_mesh",
+        "tail_mesh",
+        "angle_of_attack",
+        "sideslip_angle",
+        "speed",
+        "tail_deflection",
+        "wing_zero_lift_angle",
+        "angular_velocity",
+    ]
     data = prob.check_totals(of=of, wrt=wrt, method="cs", out_stream=None)
     # The circulation component solves its own linear system (LU); CS agrees to round-off.
     assert_check_totals(data, atol=1e-8, rtol=1e-7)
@@ -102,8 +134,7 @@ def test_lpc_wing_and_tail():
     # Mutual influence: the wing's downwash lowers the tail's lift (tail alone at the same
     # angle of attack lifts more).
     alone = om.Problem(reports=False)
-    alone.model.add_subsystem("vlm", VLMGroup(surfaces=(lpc_vlm_surfaces()[1],)),
-                              promotes=["*"])
+    alone.model.add_subsystem("vlm", VLMGroup(surfaces=(lpc_vlm_surfaces()[1],)), promotes=["*"])
     alone.setup()
     alone.set_val("horizontal_tail_mesh", prob.get_val("horizontal_tail_mesh"))
     alone.set_val("speed", 57.19)

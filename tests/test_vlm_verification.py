@@ -11,24 +11,41 @@ from lpc_mdo.components.geometry.planform import PlanformMeshComp
 from lpc_mdo.groups.vlm import VLMGroup, VLMSurface
 
 
-def wing_problem(span_panels, chord_panels, spacing="uniform", span=8.0, root_chord=1.0,
-                 tip_chord=1.0, sweep=0.0, dihedral=0.0, twist=None):
+def wing_problem(
+    span_panels,
+    chord_panels,
+    spacing="uniform",
+    span=8.0,
+    root_chord=1.0,
+    tip_chord=1.0,
+    sweep=0.0,
+    dihedral=0.0,
+    twist=None,
+):
     """
     Return a single mirrored wing meshed by PlanformMeshComp.
 
     V = 50 m/s, rho = 1.225 kg/m**3, S = b c.
     """
     prob = om.Problem(reports=False)
-    prob.model.add_subsystem("planform", PlanformMeshComp(num_span_panels=span_panels,
-                                                          num_chord_panels=chord_panels,
-                                                          spacing=spacing),
-                             promotes_outputs=[("mesh", "wing_mesh")])
-    prob.model.add_subsystem("vlm", VLMGroup(surfaces=(VLMSurface("wing", chord_panels,
-                                                                  span_panels),)),
-                             promotes=["*"])
+    prob.model.add_subsystem(
+        "planform",
+        PlanformMeshComp(
+            num_span_panels=span_panels, num_chord_panels=chord_panels, spacing=spacing
+        ),
+        promotes_outputs=[("mesh", "wing_mesh")],
+    )
+    prob.model.add_subsystem(
+        "vlm", VLMGroup(surfaces=(VLMSurface("wing", chord_panels, span_panels),)), promotes=["*"]
+    )
     prob.setup()
-    for name, value in (("span", span), ("root_chord", root_chord), ("tip_chord", tip_chord),
-                        ("sweep", sweep), ("dihedral", dihedral)):
+    for name, value in (
+        ("span", span),
+        ("root_chord", root_chord),
+        ("tip_chord", tip_chord),
+        ("sweep", sweep),
+        ("dihedral", dihedral),
+    ):
         prob.set_val(f"planform.{name}", value)
     if twist is not None:
         prob.set_val("planform.twist", twist)
@@ -46,8 +63,9 @@ def solve(prob, alpha_deg, **values):
     return prob
 
 
-@pytest.mark.parametrize("span_panels, chord_panels, cl, cdi",
-                         [(10, 2, 0.44264, 0.005877), (20, 6, 0.43333, 0.005926)])
+@pytest.mark.parametrize(
+    "span_panels, chord_panels, cl, cdi", [(10, 2, 0.44264, 0.005877), (20, 6, 0.43333, 0.005926)]
+)
 def test_public_code_reference_numbers(span_panels, chord_panels, cl, cdi):
     # docs theory/aerodynamics 'Validation' (VortexAD_temp ex1_oas.py, run with csdl_alpha): b = 10 m, c = 1 m,
     # 11 x 3 and 21 x 7 nodes, linear spacing, alpha = 5 deg, V = 60 m/s, rho = 1.225. Same
@@ -93,8 +111,7 @@ def test_bertin_smith_swept_wing():
 
 
 def test_lift_is_linear_and_odd_in_alpha():
-    prob = wing_problem(12, 2, "cosine", span=8.0, root_chord=1.4, tip_chord=0.6,
-                        sweep=0.2)
+    prob = wing_problem(12, 2, "cosine", span=8.0, root_chord=1.4, tip_chord=0.6, sweep=0.2)
     cl = {a: solve(prob, a).get_val("CL")[0] for a in (-2.0, 1.0, 2.0)}
     # Wake along the free stream adds only O(alpha^2) relative change: 0.1% at 2 deg.
     assert_near_equal(cl[2.0] / cl[1.0], 2.0, 1e-3)
@@ -102,8 +119,17 @@ def test_lift_is_linear_and_odd_in_alpha():
 
 
 def test_symmetric_wing_has_no_lateral_loads():
-    prob = wing_problem(10, 2, "cosine", span=8.0, root_chord=1.4, tip_chord=0.6,
-                        sweep=0.2, dihedral=0.1, twist=[0.0, -0.01, -0.02, -0.03, -0.04, -0.05])
+    prob = wing_problem(
+        10,
+        2,
+        "cosine",
+        span=8.0,
+        root_chord=1.4,
+        tip_chord=0.6,
+        sweep=0.2,
+        dihedral=0.1,
+        twist=[0.0, -0.01, -0.02, -0.03, -0.04, -0.05],
+    )
     solve(prob, 6.0, reference_point=[-0.5, 0.0, 0.1])
     scale = prob.get_val("lift")[0]
     assert abs(prob.get_val("side_force")[0]) < 1e-12 * scale
@@ -113,15 +139,25 @@ def test_symmetric_wing_has_no_lateral_loads():
     assert_near_equal(cl, cl[::-1], 1e-12)
 
 
-@pytest.mark.parametrize("sweep, dihedral, tip_chord, tol",
-                         [(0.0, 0.0, 1.4, 1e-12), (0.2, 0.0, 0.6, 1e-3), (0.0, 0.1, 1.4, 5e-3)])
+@pytest.mark.parametrize(
+    "sweep, dihedral, tip_chord, tol",
+    [(0.0, 0.0, 1.4, 1e-12), (0.2, 0.0, 0.6, 1e-3), (0.0, 0.1, 1.4, 5e-3)],
+)
 def test_sectional_cl_integrates_to_lift(sweep, dihedral, tip_chord, tol):
     # sum_strips c_l q A_strip = L exactly on a planar rectangular wing. c_l uses each strip's
     # own lift direction e_D x l (normal to the wind and to the local bound vortex as seen
     # along the wind), so with dihedral G the strip lift is L/cos(G) to first order, and swept
     # bound vortices tilt it by alpha tan(sweep) (a 1e-4 effect at 5 deg and 11 deg sweep).
-    prob = wing_problem(10, 2, "cosine", span=8.0, root_chord=1.4, tip_chord=tip_chord,
-                        sweep=sweep, dihedral=dihedral)
+    prob = wing_problem(
+        10,
+        2,
+        "cosine",
+        span=8.0,
+        root_chord=1.4,
+        tip_chord=tip_chord,
+        sweep=sweep,
+        dihedral=dihedral,
+    )
     solve(prob, 5.0)
     q = 0.5 * 1.225 * 50.0**2
     strip_lift = np.sum(prob.get_val("wing_sectional_cl") * q * prob.get_val("strip_areas"))

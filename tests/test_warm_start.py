@@ -10,9 +10,12 @@ from lpc_mdo.warm_start import magnitude_refs, run_sequence
 
 @pytest.mark.requires_ipopt
 def test_planform_found_by_subproblem_4_carries_into_subproblem_3(tmp_path):
-    results = run_sequence(str(tmp_path), names=("subproblem_4", "subproblem_3"),
-                           driver_settings={"max_iter": 100, "print_level": 0},
-                           log=lambda message: None)
+    results = run_sequence(
+        str(tmp_path),
+        names=("subproblem_4", "subproblem_3"),
+        driver_settings={"max_iter": 100, "print_level": 0},
+        log=lambda message: None,
+    )
     assert [r.name for r in results] == ["subproblem_4", "subproblem_3"]
     assert all(r.success for r in results), [r.exit_status for r in results]
     sub4 = om.CaseReader(results[0].case_file).get_case("final")
@@ -29,8 +32,9 @@ def test_magnitude_refs(tmp_path):
     prob = om.Problem(reports=False)
     ivc = prob.model.add_subsystem("dv", om.IndepVarComp(), promotes=["*"])
     ivc.add_output("battery_mass", 850.0, units="kg")
-    ivc.add_output("top_skin_thickness", np.array([2e-3, 0.0, 1e-3, 1e-3, 1e-3, 1e-3, 1e-3,
-                                                   3e-4]), units="m")
+    ivc.add_output(
+        "top_skin_thickness", np.array([2e-3, 0.0, 1e-3, 1e-3, 1e-3, 1e-3, 1e-3, 3e-4]), units="m"
+    )
     recorder = om.SqliteRecorder(str(tmp_path / "c.sql"))
     prob.add_recorder(recorder)
     prob.setup()
@@ -64,9 +68,15 @@ def test_baseline_continuation_raises_alpha_stage_by_stage(tmp_path):
 
     vehicle = reference_vehicle()
     final = tmp_path / "baseline.sql"
-    result = solve_baseline(str(final), vehicle=vehicle, alphas=(1.0, 100.0), optimizer="SLSQP",
-                            driver_settings={"maxiter": 1}, trim_first=False,
-                            log=lambda message: None)
+    result = solve_baseline(
+        str(final),
+        vehicle=vehicle,
+        alphas=(1.0, 100.0),
+        optimizer="SLSQP",
+        driver_settings={"maxiter": 1},
+        trim_first=False,
+        log=lambda message: None,
+    )
     stages = result.extra["continuation"]
     assert [s.extra["alpha"] for s in stages] == [1.0, 100.0]
     assert stages[0].case_file == str(tmp_path / "baseline_alpha1.sql")
@@ -74,8 +84,10 @@ def test_baseline_continuation_raises_alpha_stage_by_stage(tmp_path):
     f_ref = vehicle.masses.target_gross_mass
     for stage in stages:
         case = om.CaseReader(stage.case_file).get_case("final")
-        expected = (case.get_val("gross_mass", units="kg")[0] / f_ref
-                    + stage.extra["alpha"] * case.get_val("baseline_deviation")[0])
+        expected = (
+            case.get_val("gross_mass", units="kg")[0] / f_ref
+            + stage.extra["alpha"] * case.get_val("baseline_deviation")[0]
+        )
         assert case.get_val("baseline_objective")[0] == pytest.approx(expected, rel=1e-12)
     with pytest.raises(ValueError, match="alphas"):
         solve_baseline(str(final), alphas=(10.0, 1.0))

@@ -76,8 +76,17 @@ def test_vehicle_mass_properties():
     prob.run_model()
     vehicle = reference_vehicle()
     # Independent first-moment check: the cg is the mass-weighted mean of the item cgs.
-    names = ["wing", "fuselage", "empennage", "boom", "battery", "power_electronics", "payload",
-             "systems", "other"]
+    names = [
+        "wing",
+        "fuselage",
+        "empennage",
+        "boom",
+        "battery",
+        "power_electronics",
+        "payload",
+        "systems",
+        "other",
+    ]
     moment = sum(prob.get_val(f"{n}_mass") * prob.get_val(f"{n}_cg") for n in names)
     moment = moment + prob.get_val("motor_mass") @ prob.get_val("motor_cg")
     assert_near_equal(prob.get_val("cg"), moment / prob.get_val("total_mass"), 1e-12)
@@ -112,21 +121,40 @@ def test_regression_wing_model_and_case_breakdown(tmp_path):
 def test_totals():
     prob = weights_problem()
     prob.run_model()
-    wrt = ["wing_area", "wing_aspect_ratio", "fuselage_length", "htail_area", "battery_mass",
-           "wing_mass", "motor_mass", "wing_cg"]
-    data = prob.check_totals(of=["gross_mass", "cg", "inertia"], wrt=wrt, method="cs",
-                             compact_print=True, out_stream=None)
+    wrt = [
+        "wing_area",
+        "wing_aspect_ratio",
+        "fuselage_length",
+        "htail_area",
+        "battery_mass",
+        "wing_mass",
+        "motor_mass",
+        "wing_cg",
+    ]
+    data = prob.check_totals(
+        of=["gross_mass", "cg", "inertia"],
+        wrt=wrt,
+        method="cs",
+        compact_print=True,
+        out_stream=None,
+    )
     assert_check_totals(data, atol=1e-8, rtol=1e-10)
 
 
 def test_bad_options():
-    with pytest.raises(ValueError, match=r"'wing_model' = 'beam' is not allowed: must be one of "
-                                         r"'input', 'regression'"):
+    with pytest.raises(
+        ValueError,
+        match=r"'wing_model' = 'beam' is not allowed: must be one of "
+        r"'input', 'regression'",
+    ):
         WeightsGroup(wing_model="beam")
     with pytest.raises(ValueError, match=r"'other_mass' = -1.0 is out of range: must be >= 0"):
         WeightsGroup(other_mass=-1.0)
-    with pytest.raises(ValueError, match=r"'regression_mass_factor' = 0 is out of "
-                                         r"range: must be > 0"):
+    with pytest.raises(
+        ValueError,
+        match=r"'regression_mass_factor' = 0 is out of "
+        r"range: must be > 0",
+    ):
         WeightsGroup(regression_mass_factor=0)
 
 

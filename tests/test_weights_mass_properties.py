@@ -23,8 +23,11 @@ def run(items, **values):
 def test_two_point_masses():
     # Closed form: m1 = 1 kg at the origin, m2 = 3 kg at x = 4 m -> m = 4 kg, cg = (3, 0, 0) m,
     # I_yy = I_zz = 1 * 3^2 + 3 * 1^2 = 12 kg m^2, I_xx = 0, no products (exact).
-    prob = run([MassItem("point", count=2)], point_mass=[1.0, 3.0],
-               point_cg=[[0.0, 0.0, 0.0], [4.0, 0.0, 0.0]])
+    prob = run(
+        [MassItem("point", count=2)],
+        point_mass=[1.0, 3.0],
+        point_cg=[[0.0, 0.0, 0.0], [4.0, 0.0, 0.0]],
+    )
     assert_near_equal(prob.get_val("total_mass"), 4.0, 1e-15)
     assert_near_equal(prob.get_val("cg"), [3.0, 0.0, 0.0], 1e-15)
     assert_near_equal(prob.get_val("inertia"), np.diag([0.0, 12.0, 12.0]), 1e-14)
@@ -38,8 +41,9 @@ def test_symmetric_layout_is_translation_invariant():
     offsets = np.array([[a, b, 0.0], [a, -b, 0.0], [-a, b, 0.0], [-a, -b, 0.0]])
     prob = run([MassItem("rotor", count=4)], rotor_mass=np.full(4, m), rotor_cg=c + offsets)
     assert_near_equal(prob.get_val("cg"), c, 1e-12)
-    assert_near_equal(prob.get_val("inertia"),
-                      np.diag([4 * m * b**2, 4 * m * a**2, 4 * m * (a**2 + b**2)]), 1e-12)
+    assert_near_equal(
+        prob.get_val("inertia"), np.diag([4 * m * b**2, 4 * m * a**2, 4 * m * (a**2 + b**2)]), 1e-12
+    )
 
 
 def test_parallel_axis_shift_of_body_with_own_inertia():
@@ -48,13 +52,17 @@ def test_parallel_axis_shift_of_body_with_own_inertia():
     # 2 [[1, 0, -1], [0, 2, 0], [-1, 0, 1]], so I = [[4 + 13/6, 0, -4], [0, 8 + 10/6, 0],
     # [-4, 0, 4 + 5/6]] kg m^2 (exact).
     box = np.diag([13.0, 10.0, 5.0]) * 2.0 / 12.0
-    prob = run([MassItem("box", own_inertia=True), MassItem("point")],
-               box_mass=2.0, box_cg=[1.0, 0.0, 1.0], box_inertia=box,
-               point_mass=2.0, point_cg=[-1.0, 0.0, -1.0])
+    prob = run(
+        [MassItem("box", own_inertia=True), MassItem("point")],
+        box_mass=2.0,
+        box_cg=[1.0, 0.0, 1.0],
+        box_inertia=box,
+        point_mass=2.0,
+        point_cg=[-1.0, 0.0, -1.0],
+    )
     assert_near_equal(prob.get_val("total_mass"), 4.0, 1e-15)
     assert_near_equal(prob.get_val("cg"), np.zeros(3), 1e-15)
-    expected = np.array([[4 + 13 / 6, 0.0, -4.0], [0.0, 8 + 10 / 6, 0.0],
-                         [-4.0, 0.0, 4 + 5 / 6]])
+    expected = np.array([[4 + 13 / 6, 0.0, -4.0], [0.0, 8 + 10 / 6, 0.0], [-4.0, 0.0, 4 + 5 / 6]])
     assert_near_equal(prob.get_val("inertia"), expected, 1e-14)
 
 
@@ -70,16 +78,27 @@ def test_transport_term_and_derivative():
 
 
 def mixed_problem():
-    items = [MassItem("wing", own_inertia=True), MassItem("motor", count=3),
-             MassItem("battery"), MassItem("booms", count=2, own_inertia=True)]
+    items = [
+        MassItem("wing", own_inertia=True),
+        MassItem("motor", count=3),
+        MassItem("battery"),
+        MassItem("booms", count=2, own_inertia=True),
+    ]
     rng = np.random.default_rng(7)
     own = rng.normal(size=(2, 3, 3))
-    return run(items, wing_mass=300.0, wing_cg=[-3.0, 0.1, -1.0],
-               wing_inertia=[[3000.0, 1.0, -20.0], [1.0, 50.0, 2.0], [-20.0, 2.0, 3050.0]],
-               motor_mass=[10.0, 12.0, 36.0], motor_cg=rng.normal(size=(3, 3)),
-               battery_mass=800.0, battery_cg=[-2.1, 0.0, 0.56],
-               booms_mass=[30.0, 31.0], booms_cg=rng.normal(size=(2, 3)),
-               booms_inertia=own + own.transpose(0, 2, 1))
+    return run(
+        items,
+        wing_mass=300.0,
+        wing_cg=[-3.0, 0.1, -1.0],
+        wing_inertia=[[3000.0, 1.0, -20.0], [1.0, 50.0, 2.0], [-20.0, 2.0, 3050.0]],
+        motor_mass=[10.0, 12.0, 36.0],
+        motor_cg=rng.normal(size=(3, 3)),
+        battery_mass=800.0,
+        battery_cg=[-2.1, 0.0, 0.56],
+        booms_mass=[30.0, 31.0],
+        booms_cg=rng.normal(size=(2, 3)),
+        booms_inertia=own + own.transpose(0, 2, 1),
+    )
 
 
 def test_mixed_items_against_direct_sum():
@@ -95,8 +114,9 @@ def test_mixed_items_against_direct_sum():
     masses, points = np.array(masses), np.array(points)
     total = masses.sum()
     cg = masses @ points / total
-    about_origin = own + sum(m * (p @ p * np.eye(3) - np.outer(p, p))
-                             for m, p in zip(masses, points, strict=True))
+    about_origin = own + sum(
+        m * (p @ p * np.eye(3) - np.outer(p, p)) for m, p in zip(masses, points, strict=True)
+    )
     expected = about_origin - total * (cg @ cg * np.eye(3) - np.outer(cg, cg))
     assert_near_equal(prob.get_val("total_mass"), total, 1e-14)
     assert_near_equal(prob.get_val("cg"), cg, 1e-12)
@@ -110,18 +130,27 @@ def test_partials():
 
 
 def test_bad_inputs_and_options():
-    with pytest.raises(om.AnalysisError, match=r"'motor_mass\[1\]' = -2.0 is out of range: "
-                                               r"must be >= 0 \(kg\)"):
+    with pytest.raises(
+        om.AnalysisError,
+        match=r"'motor_mass\[1\]' = -2.0 is out of range: "
+        r"must be >= 0 \(kg\)",
+    ):
         run([MassItem("motor", count=2)], motor_mass=[1.0, -2.0])
-    with pytest.raises(om.AnalysisError, match=r"'total mass' = 0.0 is out of range: "
-                                               r"must be > 0 \(kg\)"):
+    with pytest.raises(
+        om.AnalysisError,
+        match=r"'total mass' = 0.0 is out of range: "
+        r"must be > 0 \(kg\)",
+    ):
         run([MassItem("motor", count=2)], motor_mass=[0.0, 0.0])
     with pytest.raises(om.AnalysisError, match=r"'battery_cg\[.*\]' = .* must be a finite number"):
         run([MassItem("battery")], battery_mass=1.0, battery_cg=[np.nan, 0.0, 0.0])
     with pytest.raises(ValueError, match=r"duplicate MassItem names \['a'\]"):
         MassPropertiesComp(items=[MassItem("a"), MassItem("a")])
-    with pytest.raises(ValueError, match=r"MassItem 'motor': 'count' = 0 is out of range: "
-                                     r"must be >= 1"):
+    with pytest.raises(
+        ValueError,
+        match=r"MassItem 'motor': 'count' = 0 is out of range: "
+        r"must be >= 1",
+    ):
         MassItem("motor", count=0)
     with pytest.raises(ValueError, match=r"MassItem.name = 'wing mass'; must be a Python"):
         MassItem("wing mass")

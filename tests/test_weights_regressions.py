@@ -67,22 +67,27 @@ def test_fuselage_frame_and_factors():
     # cg_X = 3.8911491674, cg_Z = 1.6855289202, 1e-9 m).
     x = dict(zip(MAIN, (19.6, 12.12, 9.144, 800.0, 57.19), strict=True))
     prob = run(FuselageRegressionComp(), **x)
-    assert_near_equal(prob.get_val("fuselage_cg"),
-                      [NOSE[0] - 0.88 * 3.8911491674, 0.0, NOSE[2] - 1.6855289202], 1e-9)
+    assert_near_equal(
+        prob.get_val("fuselage_cg"),
+        [NOSE[0] - 0.88 * 3.8911491674, 0.0, NOSE[2] - 1.6855289202],
+        1e-9,
+    )
     # Own inertia: Ixx, Iyy, Izz, Ixz of docs theory/weights 'M4 regressions' at these inputs (plain arithmetic, 1e-9 relative);
     # rotating x aft/z up to x forward/z down keeps I_xz.
     c = m4_coefficients()["fuselage"]
     xt = np.array([19.6, 12.12, 9.144, 800.0, 57.19, 1.0])
-    ixx, iyy, izz, ixz = (float(np.dot(c[k], xt)) for k in
-                          ("inertia_xx", "inertia_yy", "inertia_zz", "inertia_xz"))
-    assert_near_equal(prob.get_val("fuselage_inertia"),
-                      [[ixx, 0, ixz], [0, iyy, 0], [ixz, 0, izz]], 1e-9)
+    ixx, iyy, izz, ixz = (
+        float(np.dot(c[k], xt)) for k in ("inertia_xx", "inertia_yy", "inertia_zz", "inertia_xz")
+    )
+    assert_near_equal(
+        prob.get_val("fuselage_inertia"), [[ixx, 0, ixz], [0, iyy, 0], [ixz, 0, izz]], 1e-9
+    )
     # mass_factor scales mass and own inertia (public run scripts: 1.3).
     scaled = run(FuselageRegressionComp(mass_factor=1.3), **x)
-    assert_near_equal(scaled.get_val("fuselage_mass"), 1.3 * prob.get_val("fuselage_mass"),
-                      1e-12)
-    assert_near_equal(scaled.get_val("fuselage_inertia"),
-                      1.3 * prob.get_val("fuselage_inertia"), 1e-12)
+    assert_near_equal(scaled.get_val("fuselage_mass"), 1.3 * prob.get_val("fuselage_mass"), 1e-12)
+    assert_near_equal(
+        scaled.get_val("fuselage_inertia"), 1.3 * prob.get_val("fuselage_inertia"), 1e-12
+    )
 
 
 def test_boom_parallel_axis():
@@ -95,10 +100,14 @@ def test_boom_parallel_axis():
     points, own = [], []
     for g in ("in_port", "out_port", "in_star", "out_star"):
         d = data[g]
-        points.append([NOSE[0] - np.dot(d["cg_x"], xt), np.dot(d["cg_y"], xt),
-                       NOSE[2] - np.dot(d["cg_z"], xt)])
-        own.append(np.diag([np.dot(d[k], xt) for k in ("inertia_xx", "inertia_yy",
-                                                       "inertia_zz")]))
+        points.append(
+            [
+                NOSE[0] - np.dot(d["cg_x"], xt),
+                np.dot(d["cg_y"], xt),
+                NOSE[2] - np.dot(d["cg_z"], xt),
+            ]
+        )
+        own.append(np.diag([np.dot(d[k], xt) for k in ("inertia_xx", "inertia_yy", "inertia_zz")]))
     points = np.array(points)
     cg = points.mean(axis=0) * [1.0, 0.0, 1.0]
     expected = sum(own)
@@ -129,15 +138,19 @@ def test_empennage_parallel_axis():
             own[0, 2] = own[2, 0] = np.dot(d["inertia_xz"], xt)
         parts.append((w, p, own))
     cg = sum(w * p for w, p, _ in parts)
-    expected = sum(own + w * mass * (np.dot(p - cg, p - cg) * np.eye(3)
-                                     - np.outer(p - cg, p - cg)) for w, p, own in parts)
+    expected = sum(
+        own + w * mass * (np.dot(p - cg, p - cg) * np.eye(3) - np.outer(p - cg, p - cg))
+        for w, p, own in parts
+    )
     prob = run(EmpennageRegressionComp(), htail_area=3.7, vtail_area=2.54)
     assert_near_equal(prob.get_val("empennage_cg"), cg, 1e-12)
     assert_near_equal(prob.get_val("empennage_inertia"), expected, 1e-12)
 
 
-@pytest.mark.parametrize("comp_class", [FuselageRegressionComp, WingRegressionComp,
-                                        BoomRegressionComp, EmpennageRegressionComp])
+@pytest.mark.parametrize(
+    "comp_class",
+    [FuselageRegressionComp, WingRegressionComp, BoomRegressionComp, EmpennageRegressionComp],
+)
 def test_partials(comp_class):
     prob = run(comp_class())
     data = prob.check_partials(method="cs", compact_print=True, out_stream=None)
@@ -146,28 +159,40 @@ def test_partials(comp_class):
 
 def test_partials_off_design():
     # Away from the initial design, with non-default factors (boom inertia is nonlinear).
-    values = dict(wing_area=15.04, wing_aspect_ratio=15.76, fuselage_length=10.66,
-                  battery_mass=953.93, cruise_speed=61.25)
+    values = dict(
+        wing_area=15.04,
+        wing_aspect_ratio=15.76,
+        fuselage_length=10.66,
+        battery_mass=953.93,
+        cruise_speed=61.25,
+    )
     for comp in (BoomRegressionComp(mass_factor=1.3), FuselageRegressionComp(cg_x_factor=1.0)):
         prob = run(comp, **values)
         data = prob.check_partials(method="cs", compact_print=True, out_stream=None)
         assert_check_partials(data, atol=1e-8, rtol=1e-10)
     prob = run(EmpennageRegressionComp(htail_mass_fraction=0.5), htail_area=2.59, vtail_area=2.0)
-    assert_check_partials(prob.check_partials(method="cs", compact_print=True, out_stream=None),
-                          atol=1e-8, rtol=1e-10)
+    assert_check_partials(
+        prob.check_partials(method="cs", compact_print=True, out_stream=None), atol=1e-8, rtol=1e-10
+    )
 
 
 def test_bad_inputs_and_options():
-    with pytest.raises(om.AnalysisError, match=r"'wing_area' = -1.0 is out of range: "
-                                               r"must be > 0 \(m\*\*2\)"):
+    with pytest.raises(
+        om.AnalysisError,
+        match=r"'wing_area' = -1.0 is out of range: "
+        r"must be > 0 \(m\*\*2\)",
+    ):
         run(FuselageRegressionComp(), wing_area=-1.0)
     # A 1 m fuselage extrapolates to a negative mass: 42.6 x 1 - 116.7 + ... < 0.
     with pytest.raises(om.AnalysisError, match="fuselage_mass = .* must be > 0"):
         run(FuselageRegressionComp(), fuselage_length=1.0)
     with pytest.raises(ValueError, match=r"'mass_factor' = -1.3 is out of range: must be > 0"):
         FuselageRegressionComp(mass_factor=-1.3)
-    with pytest.raises(ValueError, match=r"'htail_mass_fraction' = 1.5 is out of "
-                                         r"range: must be in \[0, 1\]"):
+    with pytest.raises(
+        ValueError,
+        match=r"'htail_mass_fraction' = 1.5 is out of "
+        r"range: must be in \[0, 1\]",
+    ):
         EmpennageRegressionComp(htail_mass_fraction=1.5)
     with pytest.raises(ValueError, match=r"'nose' must have shape \(3,\), got shape \(2,\)"):
         BoomRegressionComp(nose=(1, 2))

@@ -17,8 +17,13 @@ def _log_response(frequency):
     R_A = f4**2 f**4/((f**2+f1**2) sqrt((f**2+f2**2)(f**2+f3**2)) (f**2+f4**2)).
     """
     f2 = frequency * frequency
-    return (4.0 * np.log(frequency) - np.log(f2 + _F1**2) - 0.5 * np.log(f2 + _F2**2)
-            - 0.5 * np.log(f2 + _F3**2) - np.log(f2 + _F4**2))
+    return (
+        4.0 * np.log(frequency)
+        - np.log(f2 + _F1**2)
+        - 0.5 * np.log(f2 + _F2**2)
+        - 0.5 * np.log(f2 + _F3**2)
+        - np.log(f2 + _F4**2)
+    )
 
 
 _LOG_RESPONSE_1000 = _log_response(1000.0)
@@ -35,8 +40,7 @@ def a_weighting(frequency):
     Examples: A(100) = -19.15, A(1000) = 0.0, A(10000) = -2.49 dB.
     """
     frequency = np.asarray(frequency)
-    check_range("frequency", frequency, lower=0.0, lower_open=True, units="Hz",
-                where="a_weighting")
+    check_range("frequency", frequency, lower=0.0, lower_open=True, units="Hz", where="a_weighting")
     return 2.0 * DB_PER_NEPER * (_log_response(frequency) - _LOG_RESPONSE_1000)
 
 
@@ -44,8 +48,13 @@ def a_weighting_derivative(frequency):
     """dA/df in dB/Hz of :func:`a_weighting` (analytic)."""
     f = np.asarray(frequency)
     f2 = f * f
-    dlog = (4.0 / f - 2.0 * f / (f2 + _F1**2) - f / (f2 + _F2**2) - f / (f2 + _F3**2)
-            - 2.0 * f / (f2 + _F4**2))
+    dlog = (
+        4.0 / f
+        - 2.0 * f / (f2 + _F1**2)
+        - f / (f2 + _F2**2)
+        - f / (f2 + _F3**2)
+        - 2.0 * f / (f2 + _F4**2)
+    )
     return 2.0 * DB_PER_NEPER * dlog
 
 
@@ -83,50 +92,71 @@ class AWeightingComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare('shape', types=tuple, desc='Shape of every level array')
-        self.options.declare('names', default=['spl'], types=list,
-                             desc='Names of the level inputs; outputs are <name>_a')
-        self.options.declare('frequencies', default=None, types=np.ndarray, allow_none=True,
-                             desc='Fixed frequencies (Hz), broadcastable to shape; None: input')
+        self.options.declare("shape", types=tuple, desc="Shape of every level array")
+        self.options.declare(
+            "names",
+            default=["spl"],
+            types=list,
+            desc="Names of the level inputs; outputs are <name>_a",
+        )
+        self.options.declare(
+            "frequencies",
+            default=None,
+            types=np.ndarray,
+            allow_none=True,
+            desc="Fixed frequencies (Hz), broadcastable to shape; None: input",
+        )
 
     def setup(self):
-        shape = self.options['shape']
+        shape = self.options["shape"]
         size = int(np.prod(shape))
-        fixed = self.options['frequencies']
+        fixed = self.options["frequencies"]
         ar = np.arange(size)
         if fixed is None:
-            self.add_input('frequency', val=np.full(shape, 1000.0), units='Hz',
-                           desc='Frequency of each level')
+            self.add_input(
+                "frequency", val=np.full(shape, 1000.0), units="Hz", desc="Frequency of each level"
+            )
         else:
             try:
                 fixed = np.broadcast_to(np.asarray(fixed, dtype=float), shape)
             except ValueError:
-                raise ValueError(f"{self.msginfo}: option 'frequencies' of shape "
-                                 f"{np.shape(self.options['frequencies'])} does not broadcast to "
-                                 f"shape {shape}.") from None
+                raise ValueError(
+                    f"{self.msginfo}: option 'frequencies' of shape "
+                    f"{np.shape(self.options['frequencies'])} does not broadcast to "
+                    f"shape {shape}."
+                ) from None
             self._weights = a_weighting(fixed)
-        for name in self.options['names']:
-            self.add_input(name, val=np.zeros(shape), units=None,
-                           desc='Unweighted level, dB re 20 uPa')
-            self.add_output(f'{name}_a', val=np.zeros(shape), units=None,
-                            desc='A-weighted level, dBA re 20 uPa')
-            self.declare_partials(f'{name}_a', name, rows=ar, cols=ar, val=np.ones(size))
+        for name in self.options["names"]:
+            self.add_input(
+                name, val=np.zeros(shape), units=None, desc="Unweighted level, dB re 20 uPa"
+            )
+            self.add_output(
+                f"{name}_a", val=np.zeros(shape), units=None, desc="A-weighted level, dBA re 20 uPa"
+            )
+            self.declare_partials(f"{name}_a", name, rows=ar, cols=ar, val=np.ones(size))
             if fixed is None:
-                self.declare_partials(f'{name}_a', 'frequency', rows=ar, cols=ar)
+                self.declare_partials(f"{name}_a", "frequency", rows=ar, cols=ar)
 
     def compute(self, inputs, outputs):
-        if self.options['frequencies'] is None:
-            freq = inputs['frequency']
-            check_range("frequency", freq, lower=0.0, lower_open=True, units="Hz",
-                        error=om.AnalysisError, where=self.msginfo)
+        if self.options["frequencies"] is None:
+            freq = inputs["frequency"]
+            check_range(
+                "frequency",
+                freq,
+                lower=0.0,
+                lower_open=True,
+                units="Hz",
+                error=om.AnalysisError,
+                where=self.msginfo,
+            )
             weights = a_weighting(freq)
         else:
             weights = self._weights
-        for name in self.options['names']:
-            outputs[f'{name}_a'] = inputs[name] + weights
+        for name in self.options["names"]:
+            outputs[f"{name}_a"] = inputs[name] + weights
 
     def compute_partials(self, inputs, partials):
-        if self.options['frequencies'] is None:
-            dweight = a_weighting_derivative(inputs['frequency']).ravel()
-            for name in self.options['names']:
-                partials[f'{name}_a', 'frequency'] = dweight
+        if self.options["frequencies"] is None:
+            dweight = a_weighting_derivative(inputs["frequency"]).ravel()
+            for name in self.options["names"]:
+                partials[f"{name}_a", "frequency"] = dweight

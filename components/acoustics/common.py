@@ -36,17 +36,23 @@ def nominal_third_octave_bands(num_bands, lowest=12.5):
     table = np.array([m * 10.0**k for k in range(0, 6) for m in _NOMINAL_MANTISSAS])
     matches = np.flatnonzero(np.isclose(table, lowest, rtol=1e-9))
     if matches.size != 1:
-        raise ValueError(f"lowest_band_frequency must be a nominal one-third-octave centre "
-                         f"frequency between 10 Hz and 800 kHz (e.g. 12.5, 16, 20, 25, 31.5 ...), "
-                         f"got {lowest}.")
+        raise ValueError(
+            f"lowest_band_frequency must be a nominal one-third-octave centre "
+            f"frequency between 10 Hz and 800 kHz (e.g. 12.5, 16, 20, 25, 31.5 ...), "
+            f"got {lowest}."
+        )
     start = matches[0]
-    check_integer("num_bands", num_bands, lower=1, upper=table.size - start,
-                  allowed=f"in [1, {table.size - start}] when starting at {lowest} Hz")
-    return table[start:start + num_bands].copy()
+    check_integer(
+        "num_bands",
+        num_bands,
+        lower=1,
+        upper=table.size - start,
+        allowed=f"in [1, {table.size - start}] when starting at {lowest} Hz",
+    )
+    return table[start : start + num_bands].copy()
 
 
-def radial_quadrature(num_radial, radial_stations=None, radial_weights=None,
-                      hub_radius_ratio=0.2):
+def radial_quadrature(num_radial, radial_stations=None, radial_weights=None, hub_radius_ratio=0.2):
     """
     Non-dimensional radial stations r/R and quadrature weights w (fractions of R).
 
@@ -61,18 +67,25 @@ def radial_quadrature(num_radial, radial_stations=None, radial_weights=None,
     """
     check_number("hub_radius_ratio", hub_radius_ratio, lower=0.0, upper=1.0, upper_open=True)
     if radial_stations is None:
-        stations = hub_radius_ratio + (1.0 - hub_radius_ratio) * (
-            np.arange(num_radial) + 0.5) / num_radial
+        stations = (
+            hub_radius_ratio + (1.0 - hub_radius_ratio) * (np.arange(num_radial) + 0.5) / num_radial
+        )
     else:
         stations = np.asarray(radial_stations, dtype=float).ravel()
         if stations.size != num_radial:
-            raise ValueError(f"radial_stations must have num_radial = {num_radial} entries, "
-                             f"got {stations.size}.")
-        if (np.any(np.diff(stations) <= 0.0) or stations[0] <= hub_radius_ratio
-                or stations[-1] > 1.0):
-            raise ValueError(f"radial_stations must be strictly increasing in "
-                             f"(hub_radius_ratio = {hub_radius_ratio}, 1], got "
-                             f"{stations.tolist()}.")
+            raise ValueError(
+                f"radial_stations must have num_radial = {num_radial} entries, got {stations.size}."
+            )
+        if (
+            np.any(np.diff(stations) <= 0.0)
+            or stations[0] <= hub_radius_ratio
+            or stations[-1] > 1.0
+        ):
+            raise ValueError(
+                f"radial_stations must be strictly increasing in "
+                f"(hub_radius_ratio = {hub_radius_ratio}, 1], got "
+                f"{stations.tolist()}."
+            )
     if radial_weights is None:
         edges = np.concatenate(([hub_radius_ratio], 0.5 * (stations[1:] + stations[:-1]), [1.0]))
         weights = np.diff(edges)
@@ -85,15 +98,27 @@ def radial_quadrature(num_radial, radial_stations=None, radial_weights=None,
 
 def declare_radial_options(options):
     """Declare the radial-station options shared by the blade-integrating components."""
-    options.declare('num_radial', default=25, types=int, lower=1,
-                    desc='Number of radial stations')
-    options.declare('radial_stations', default=None, types=(np.ndarray, list, tuple),
-                    allow_none=True, desc='Radial stations r/R (None: equal-element centres)')
-    options.declare('radial_weights', default=None, types=(np.ndarray, list, tuple),
-                    allow_none=True, desc='Radial quadrature weights, fractions of R '
-                                          '(None: cell widths)')
-    options.declare('hub_radius_ratio', default=0.2, types=(int, float),
-                    desc='Hub radius / tip radius (inner edge of the first cell)')
+    options.declare("num_radial", default=25, types=int, lower=1, desc="Number of radial stations")
+    options.declare(
+        "radial_stations",
+        default=None,
+        types=(np.ndarray, list, tuple),
+        allow_none=True,
+        desc="Radial stations r/R (None: equal-element centres)",
+    )
+    options.declare(
+        "radial_weights",
+        default=None,
+        types=(np.ndarray, list, tuple),
+        allow_none=True,
+        desc="Radial quadrature weights, fractions of R (None: cell widths)",
+    )
+    options.declare(
+        "hub_radius_ratio",
+        default=0.2,
+        types=(int, float),
+        desc="Hub radius / tip radius (inner edge of the first cell)",
+    )
 
 
 def blade_counts(num_blades, num_rotors):
@@ -102,22 +127,31 @@ def blade_counts(num_blades, num_rotors):
     if counts.size == 1:
         counts = np.full(num_rotors, counts[0])
     if counts.size != num_rotors or not np.issubdtype(counts.dtype, np.integer):
-        raise ValueError(f"'num_blades' = {num_blades!r} is not allowed: must be an int >= 1 "
-                         f"or a sequence of num_rotors = {num_rotors} ints >= 1")
+        raise ValueError(
+            f"'num_blades' = {num_blades!r} is not allowed: must be an int >= 1 "
+            f"or a sequence of num_rotors = {num_rotors} ints >= 1"
+        )
     check_range("num_blades", counts, lower=1)
     return counts.astype(int)
 
 
-def check_input_range(comp, name, value, lower=None, upper=None, lower_open=True,
-                      upper_open=True):
+def check_input_range(comp, name, value, lower=None, upper=None, lower_open=True, upper_open=True):
     """
     Raise om.AnalysisError if any entry of input ``name`` is not finite or lies outside the range.
 
     :func:`lpc_mdo.checks.check_range` with open bounds by default and the component's
     ``msginfo`` in front; only the real part is checked, so the check is complex-step safe.
     """
-    check_range(name, value, lower=lower, upper=upper, lower_open=lower_open,
-                upper_open=upper_open, error=om.AnalysisError, where=comp.msginfo)
+    check_range(
+        name,
+        value,
+        lower=lower,
+        upper=upper,
+        lower_open=lower_open,
+        upper_open=upper_open,
+        error=om.AnalysisError,
+        where=comp.msginfo,
+    )
 
 
 def spl_from_mean_square(mean_square):

@@ -61,23 +61,38 @@ class LoadFourierComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare('num_rotors', default=1, types=int, lower=1,
-                             desc='Number of rotors')
-        self.options.declare('num_radial', default=1, types=int, lower=1,
-                             desc='Number of radial stations')
-        self.options.declare('num_azimuth', default=1, types=int, lower=1,
-                             desc='Number of equally spaced azimuthal stations')
-        self.options.declare('num_load_harmonics', default=None, types=int, allow_none=True,
-                             desc='Highest load harmonic L (None: min(10, (num_azimuth-1)//2))')
+        self.options.declare("num_rotors", default=1, types=int, lower=1, desc="Number of rotors")
+        self.options.declare(
+            "num_radial", default=1, types=int, lower=1, desc="Number of radial stations"
+        )
+        self.options.declare(
+            "num_azimuth",
+            default=1,
+            types=int,
+            lower=1,
+            desc="Number of equally spaced azimuthal stations",
+        )
+        self.options.declare(
+            "num_load_harmonics",
+            default=None,
+            types=int,
+            allow_none=True,
+            desc="Highest load harmonic L (None: min(10, (num_azimuth-1)//2))",
+        )
 
     def setup(self):
-        nr, nrad, naz = (self.options[k] for k in ('num_rotors', 'num_radial', 'num_azimuth'))
-        L = self.options['num_load_harmonics']
+        nr, nrad, naz = (self.options[k] for k in ("num_rotors", "num_radial", "num_azimuth"))
+        L = self.options["num_load_harmonics"]
         if L is None:
             L = default_load_harmonics(naz)
-        check_integer("num_load_harmonics", L, lower=0, upper=max_load_harmonics(naz),
-                      allowed=f"in [0, (num_azimuth - 1)//2 = {max_load_harmonics(naz)}]",
-                      where=self.msginfo)
+        check_integer(
+            "num_load_harmonics",
+            L,
+            lower=0,
+            upper=max_load_harmonics(naz),
+            allowed=f"in [0, (num_azimuth - 1)//2 = {max_load_harmonics(naz)}]",
+            where=self.msginfo,
+        )
         nl = L + 1
         psi = 2.0 * np.pi * np.arange(naz) / naz
         lam = np.arange(nl)
@@ -85,38 +100,51 @@ class LoadFourierComp(om.ExplicitComponent):
         pinv = np.linalg.pinv(H)  # (2L+1, naz)
         cos_map = pinv[:nl]
         sin_map = np.vstack([np.zeros((1, naz)), pinv[nl:]])
-        self._maps = {'cos': cos_map, 'sin': sin_map}
+        self._maps = {"cos": cos_map, "sin": sin_map}
 
         shape_in = (nr, nrad, naz)
         shape_out = (nr, nrad, nl)
-        for load in ('thrust', 'drag'):
-            self.add_input(f'{load}_per_span', val=np.zeros(shape_in), units='N/m',
-                           desc=f'Sectional {load} per unit span of one blade over azimuth')
+        for load in ("thrust", "drag"):
+            self.add_input(
+                f"{load}_per_span",
+                val=np.zeros(shape_in),
+                units="N/m",
+                desc=f"Sectional {load} per unit span of one blade over azimuth",
+            )
         # Row (station s, harmonic l) depends on columns (station s, azimuth k); b_0 = 0 has no
         # partials (and none of the sine coefficients exist when L = 0).
         stations = np.arange(nr * nrad)
-        for load in ('thrust', 'drag'):
-            for kind in ('cos', 'sin'):
-                name = f'{load}_{kind}_coeff'
-                self.add_output(name, val=np.zeros(shape_out), units='N/m',
-                                desc=f'{"a" if kind == "cos" else "b"}_lambda Fourier '
-                                     f'coefficients of the {load} per span, lambda = 0..{L}')
-                harmonics = lam if kind == 'cos' else lam[1:]
+        for load in ("thrust", "drag"):
+            for kind in ("cos", "sin"):
+                name = f"{load}_{kind}_coeff"
+                self.add_output(
+                    name,
+                    val=np.zeros(shape_out),
+                    units="N/m",
+                    desc=f"{'a' if kind == 'cos' else 'b'}_lambda Fourier "
+                    f"coefficients of the {load} per span, lambda = 0..{L}",
+                )
+                harmonics = lam if kind == "cos" else lam[1:]
                 if harmonics.size == 0:
                     continue
-                rows = (stations[:, None, None] * nl + harmonics[None, :, None]
-                        + np.zeros((1, 1, naz), dtype=int)).ravel()
-                cols = (stations[:, None, None] * naz
-                        + np.zeros((1, harmonics.size, 1), dtype=int)
-                        + np.arange(naz)[None, None, :]).ravel()
+                rows = (
+                    stations[:, None, None] * nl
+                    + harmonics[None, :, None]
+                    + np.zeros((1, 1, naz), dtype=int)
+                ).ravel()
+                cols = (
+                    stations[:, None, None] * naz
+                    + np.zeros((1, harmonics.size, 1), dtype=int)
+                    + np.arange(naz)[None, None, :]
+                ).ravel()
                 val = np.tile(self._maps[kind][harmonics][None], (nr * nrad, 1, 1)).ravel()
-                self.declare_partials(name, f'{load}_per_span', rows=rows, cols=cols, val=val)
+                self.declare_partials(name, f"{load}_per_span", rows=rows, cols=cols, val=val)
 
     def compute(self, inputs, outputs):
-        for load in ('thrust', 'drag'):
-            f = inputs[f'{load}_per_span']
-            for kind in ('cos', 'sin'):
-                outputs[f'{load}_{kind}_coeff'] = f @ self._maps[kind].T
+        for load in ("thrust", "drag"):
+            f = inputs[f"{load}_per_span"]
+            for kind in ("cos", "sin"):
+                outputs[f"{load}_{kind}_coeff"] = f @ self._maps[kind].T
 
 
 class HoverLoadDistributionComp(om.ExplicitComponent):
@@ -167,76 +195,99 @@ class HoverLoadDistributionComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare('num_rotors', default=1, types=int, lower=1,
-                             desc='Number of rotors')
-        self.options.declare('num_blades', default=2, types=(int, tuple, list, np.ndarray),
-                             desc='Blades per rotor (int or one per rotor)')
+        self.options.declare("num_rotors", default=1, types=int, lower=1, desc="Number of rotors")
+        self.options.declare(
+            "num_blades",
+            default=2,
+            types=(int, tuple, list, np.ndarray),
+            desc="Blades per rotor (int or one per rotor)",
+        )
         declare_radial_options(self.options)
 
     def setup(self):
-        nr, nrad = self.options['num_rotors'], self.options['num_radial']
-        self._blades = blade_counts(self.options['num_blades'], nr).astype(float)
-        self._rbar, self._w = radial_quadrature(nrad, self.options['radial_stations'],
-                                                self.options['radial_weights'],
-                                                self.options['hub_radius_ratio'])
-        for name, units, desc in (('thrust', 'N', 'Rotor thrust'),
-                                  ('torque', 'N*m', 'Rotor shaft torque'),
-                                  ('radius', 'm', 'Rotor radius'),
-                                  ('rpm', 'rpm', 'Rotor speed')):
+        nr, nrad = self.options["num_rotors"], self.options["num_radial"]
+        self._blades = blade_counts(self.options["num_blades"], nr).astype(float)
+        self._rbar, self._w = radial_quadrature(
+            nrad,
+            self.options["radial_stations"],
+            self.options["radial_weights"],
+            self.options["hub_radius_ratio"],
+        )
+        for name, units, desc in (
+            ("thrust", "N", "Rotor thrust"),
+            ("torque", "N*m", "Rotor shaft torque"),
+            ("radius", "m", "Rotor radius"),
+            ("rpm", "rpm", "Rotor speed"),
+        ):
             self.add_input(name, val=np.ones(nr), units=units, desc=desc)
-        self.add_input('density', val=SEA_LEVEL_DENSITY, units='kg/m**3', desc='Air density')
+        self.add_input("density", val=SEA_LEVEL_DENSITY, units="kg/m**3", desc="Air density")
         shape = (nr, nrad, 1)
-        self.add_output('thrust_per_span', val=np.zeros(shape), units='N/m',
-                        desc='Sectional thrust per unit span of one blade (assumed shape)')
-        self.add_output('drag_per_span', val=np.zeros(shape), units='N/m',
-                        desc='Sectional drag per unit span of one blade (assumed shape)')
-        self.add_output('inflow_angle', val=np.zeros(shape), units='rad',
-                        desc='Inflow angle from uniform hover momentum inflow')
+        self.add_output(
+            "thrust_per_span",
+            val=np.zeros(shape),
+            units="N/m",
+            desc="Sectional thrust per unit span of one blade (assumed shape)",
+        )
+        self.add_output(
+            "drag_per_span",
+            val=np.zeros(shape),
+            units="N/m",
+            desc="Sectional drag per unit span of one blade (assumed shape)",
+        )
+        self.add_output(
+            "inflow_angle",
+            val=np.zeros(shape),
+            units="rad",
+            desc="Inflow angle from uniform hover momentum inflow",
+        )
 
         rows = np.arange(nr * nrad)
         cols = np.repeat(np.arange(nr), nrad)
-        for name in ('thrust', 'radius'):
-            self.declare_partials('thrust_per_span', name, rows=rows, cols=cols)
-        for name in ('torque', 'radius'):
-            self.declare_partials('drag_per_span', name, rows=rows, cols=cols)
-        for name in ('thrust', 'radius', 'rpm'):
-            self.declare_partials('inflow_angle', name, rows=rows, cols=cols)
-        self.declare_partials('inflow_angle', 'density', rows=rows,
-                              cols=np.zeros(nr * nrad, dtype=int))
+        for name in ("thrust", "radius"):
+            self.declare_partials("thrust_per_span", name, rows=rows, cols=cols)
+        for name in ("torque", "radius"):
+            self.declare_partials("drag_per_span", name, rows=rows, cols=cols)
+        for name in ("thrust", "radius", "rpm"):
+            self.declare_partials("inflow_angle", name, rows=rows, cols=cols)
+        self.declare_partials(
+            "inflow_angle", "density", rows=rows, cols=np.zeros(nr * nrad, dtype=int)
+        )
 
     def _parts(self, inputs):
         rbar, w, B = self._rbar, self._w, self._blades
-        R = inputs['radius']
-        omega = inputs['rpm'] * RPM_TO_RAD_S
-        ct = inputs['thrust'] / (inputs['density'][0] * np.pi * R**2 * (omega * R)**2)
+        R = inputs["radius"]
+        omega = inputs["rpm"] * RPM_TO_RAD_S
+        ct = inputs["thrust"] / (inputs["density"][0] * np.pi * R**2 * (omega * R) ** 2)
         lam_h = np.sqrt(0.5 * ct)
         ratio = lam_h[:, None] / rbar[None, :]
-        t_shape = rbar / (B[:, None] * np.sum(w * rbar))          # times T/R
-        d_shape = rbar / (B[:, None] * np.sum(w * rbar**2))       # times Q/R**2
+        t_shape = rbar / (B[:, None] * np.sum(w * rbar))  # times T/R
+        d_shape = rbar / (B[:, None] * np.sum(w * rbar**2))  # times Q/R**2
         return R, lam_h, ratio, t_shape, d_shape
 
     def compute(self, inputs, outputs):
-        check_input_range(self, 'thrust', inputs['thrust'], lower=0.0)
-        check_input_range(self, 'radius', inputs['radius'], lower=0.0)
-        check_input_range(self, 'rpm', inputs['rpm'], lower=0.0)
-        check_input_range(self, 'density', inputs['density'], lower=0.0)
+        check_input_range(self, "thrust", inputs["thrust"], lower=0.0)
+        check_input_range(self, "radius", inputs["radius"], lower=0.0)
+        check_input_range(self, "rpm", inputs["rpm"], lower=0.0)
+        check_input_range(self, "density", inputs["density"], lower=0.0)
         R, lam_h, ratio, t_shape, d_shape = self._parts(inputs)
-        outputs['thrust_per_span'] = (inputs['thrust'][:, None] / R[:, None] * t_shape)[..., None]
-        outputs['drag_per_span'] = (inputs['torque'][:, None] / R[:, None]**2 * d_shape)[..., None]
-        outputs['inflow_angle'] = np.arctan(ratio)[..., None]
+        outputs["thrust_per_span"] = (inputs["thrust"][:, None] / R[:, None] * t_shape)[..., None]
+        outputs["drag_per_span"] = (inputs["torque"][:, None] / R[:, None] ** 2 * d_shape)[
+            ..., None
+        ]
+        outputs["inflow_angle"] = np.arctan(ratio)[..., None]
 
     def compute_partials(self, inputs, partials):
         R, lam_h, ratio, t_shape, d_shape = self._parts(inputs)
-        T, Q = inputs['thrust'][:, None], inputs['torque'][:, None]
+        T, Q = inputs["thrust"][:, None], inputs["torque"][:, None]
         Rc = R[:, None]
-        partials['thrust_per_span', 'thrust'] = (t_shape / Rc).ravel()
-        partials['thrust_per_span', 'radius'] = (-T / Rc**2 * t_shape).ravel()
-        partials['drag_per_span', 'torque'] = (d_shape / Rc**2).ravel()
-        partials['drag_per_span', 'radius'] = (-2.0 * Q / Rc**3 * d_shape).ravel()
+        partials["thrust_per_span", "thrust"] = (t_shape / Rc).ravel()
+        partials["thrust_per_span", "radius"] = (-T / Rc**2 * t_shape).ravel()
+        partials["drag_per_span", "torque"] = (d_shape / Rc**2).ravel()
+        partials["drag_per_span", "radius"] = (-2.0 * Q / Rc**3 * d_shape).ravel()
         # phi = arctan(lam_h/rbar), lam_h ~ sqrt(T/(rho rpm**2 R**4)): dln(lam_h) =
         # 0.5 dT/T - 0.5 drho/rho - d(rpm)/rpm - 2 dR/R.
         dphi_dlnlam = ratio / (1.0 + ratio**2)
-        partials['inflow_angle', 'thrust'] = (0.5 * dphi_dlnlam / T).ravel()
-        partials['inflow_angle', 'radius'] = (-2.0 * dphi_dlnlam / Rc).ravel()
-        partials['inflow_angle', 'rpm'] = (-dphi_dlnlam / inputs['rpm'][:, None]).ravel()
-        partials['inflow_angle', 'density'] = (-0.5 * dphi_dlnlam / inputs['density'][0]).ravel()
+        partials["inflow_angle", "thrust"] = (0.5 * dphi_dlnlam / T).ravel()
+        partials["inflow_angle", "radius"] = (-2.0 * dphi_dlnlam / Rc).ravel()
+        partials["inflow_angle", "rpm"] = (-dphi_dlnlam / inputs["rpm"][:, None]).ravel()
+        partials["inflow_angle", "density"] = (-0.5 * dphi_dlnlam / inputs["density"][0]).ravel()

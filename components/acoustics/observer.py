@@ -15,9 +15,14 @@ _EPS_SPEED2 = 1.0e-12
 def _cross_matrix(v):
     """Skew matrices [v]x of shape (..., 3, 3) with [v]x @ u = v x u."""
     zero = np.zeros_like(v[..., 0])
-    return np.stack([np.stack([zero, -v[..., 2], v[..., 1]], axis=-1),
-                     np.stack([v[..., 2], zero, -v[..., 0]], axis=-1),
-                     np.stack([-v[..., 1], v[..., 0], zero], axis=-1)], axis=-2)
+    return np.stack(
+        [
+            np.stack([zero, -v[..., 2], v[..., 1]], axis=-1),
+            np.stack([v[..., 2], zero, -v[..., 0]], axis=-1),
+            np.stack([-v[..., 1], v[..., 0], zero], axis=-1),
+        ],
+        axis=-2,
+    )
 
 
 class ObserverPositionComp(om.ExplicitComponent):
@@ -57,51 +62,85 @@ class ObserverPositionComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare('num_rotors', default=1, types=int, lower=1,
-                             desc='Number of rotors')
+        self.options.declare("num_rotors", default=1, types=int, lower=1, desc="Number of rotors")
 
     def setup(self):
-        nr = self.options['num_rotors']
-        self.add_input('hub_position', val=np.zeros((nr, 3)), units='m',
-                       desc='Rotor hub positions, body frame (x fwd, y right, z down)')
-        self.add_input('observer_distance', val=100.0, units='m',
-                       desc='Distance from the rotor-hub centroid to the observer')
-        self.add_input('observer_elevation', val=np.radians(45.0), units='rad',
-                       desc='Observer angle below the body x-y (rotor) plane')
-        self.add_input('observer_azimuth', val=np.pi, units='rad',
-                       desc='Observer azimuth from +x (forward) towards +y (right)')
-        self.add_output('observer_position', val=np.zeros(3), units='m',
-                        desc='Observer position, body frame')
+        nr = self.options["num_rotors"]
+        self.add_input(
+            "hub_position",
+            val=np.zeros((nr, 3)),
+            units="m",
+            desc="Rotor hub positions, body frame (x fwd, y right, z down)",
+        )
+        self.add_input(
+            "observer_distance",
+            val=100.0,
+            units="m",
+            desc="Distance from the rotor-hub centroid to the observer",
+        )
+        self.add_input(
+            "observer_elevation",
+            val=np.radians(45.0),
+            units="rad",
+            desc="Observer angle below the body x-y (rotor) plane",
+        )
+        self.add_input(
+            "observer_azimuth",
+            val=np.pi,
+            units="rad",
+            desc="Observer azimuth from +x (forward) towards +y (right)",
+        )
+        self.add_output(
+            "observer_position", val=np.zeros(3), units="m", desc="Observer position, body frame"
+        )
 
-        self.declare_partials('observer_position', 'hub_position', rows=np.tile(np.arange(3), nr),
-                              cols=np.arange(3 * nr), val=np.full(3 * nr, 1.0 / nr))
-        for name in ('observer_distance', 'observer_elevation', 'observer_azimuth'):
-            self.declare_partials('observer_position', name)
+        self.declare_partials(
+            "observer_position",
+            "hub_position",
+            rows=np.tile(np.arange(3), nr),
+            cols=np.arange(3 * nr),
+            val=np.full(3 * nr, 1.0 / nr),
+        )
+        for name in ("observer_distance", "observer_elevation", "observer_azimuth"):
+            self.declare_partials("observer_position", name)
 
     @staticmethod
     def _direction(elev, azim):
         return np.array([np.cos(elev) * np.cos(azim), np.cos(elev) * np.sin(azim), np.sin(elev)])
 
     def compute(self, inputs, outputs):
-        check_input_range(self, 'observer_distance', inputs['observer_distance'], lower=0.0)
-        check_input_range(self, 'observer_elevation', inputs['observer_elevation'],
-                          lower=-0.5 * np.pi, upper=0.5 * np.pi, lower_open=False,
-                          upper_open=False)
-        elev = inputs['observer_elevation'][0]
-        azim = inputs['observer_azimuth'][0]
-        centroid = np.mean(inputs['hub_position'], axis=0)
-        outputs['observer_position'] = (centroid + inputs['observer_distance'][0]
-                                        * self._direction(elev, azim))
+        check_input_range(self, "observer_distance", inputs["observer_distance"], lower=0.0)
+        check_input_range(
+            self,
+            "observer_elevation",
+            inputs["observer_elevation"],
+            lower=-0.5 * np.pi,
+            upper=0.5 * np.pi,
+            lower_open=False,
+            upper_open=False,
+        )
+        elev = inputs["observer_elevation"][0]
+        azim = inputs["observer_azimuth"][0]
+        centroid = np.mean(inputs["hub_position"], axis=0)
+        outputs["observer_position"] = centroid + inputs["observer_distance"][0] * self._direction(
+            elev, azim
+        )
 
     def compute_partials(self, inputs, partials):
-        dist = inputs['observer_distance'][0]
-        elev = inputs['observer_elevation'][0]
-        azim = inputs['observer_azimuth'][0]
-        partials['observer_position', 'observer_distance'] = self._direction(elev, azim)[:, None]
-        partials['observer_position', 'observer_elevation'] = dist * np.array(
-            [-np.sin(elev) * np.cos(azim), -np.sin(elev) * np.sin(azim), np.cos(elev)])[:, None]
-        partials['observer_position', 'observer_azimuth'] = dist * np.array(
-            [-np.cos(elev) * np.sin(azim), np.cos(elev) * np.cos(azim), 0.0])[:, None]
+        dist = inputs["observer_distance"][0]
+        elev = inputs["observer_elevation"][0]
+        azim = inputs["observer_azimuth"][0]
+        partials["observer_position", "observer_distance"] = self._direction(elev, azim)[:, None]
+        partials["observer_position", "observer_elevation"] = (
+            dist
+            * np.array([-np.sin(elev) * np.cos(azim), -np.sin(elev) * np.sin(azim), np.cos(elev)])[
+                :, None
+            ]
+        )
+        partials["observer_position", "observer_azimuth"] = (
+            dist
+            * np.array([-np.cos(elev) * np.sin(azim), np.cos(elev) * np.cos(azim), 0.0])[:, None]
+        )
 
 
 class ObserverGeometryComp(om.ExplicitComponent):
@@ -171,42 +210,61 @@ class ObserverGeometryComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare('num_rotors', default=1, types=int, lower=1,
-                             desc='Number of rotors')
-        self.options.declare('rotation_direction', default=None, types=(tuple, list),
-                             allow_none=True,
-                             desc='+1 (right-handed about the thrust axis) or -1 per rotor')
+        self.options.declare("num_rotors", default=1, types=int, lower=1, desc="Number of rotors")
+        self.options.declare(
+            "rotation_direction",
+            default=None,
+            types=(tuple, list),
+            allow_none=True,
+            desc="+1 (right-handed about the thrust axis) or -1 per rotor",
+        )
 
     def setup(self):
-        nr = self.options['num_rotors']
-        rot = self.options['rotation_direction']
+        nr = self.options["num_rotors"]
+        rot = self.options["rotation_direction"]
         if rot is None:
             rot = (1,) * nr
         if len(rot) != nr or any(s not in (1, -1) for s in rot):
-            raise ValueError(f"{self.msginfo}: option 'rotation_direction' must hold num_rotors = "
-                             f"{nr} entries of +1 or -1, got {rot!r}.")
+            raise ValueError(
+                f"{self.msginfo}: option 'rotation_direction' must hold num_rotors = "
+                f"{nr} entries of +1 or -1, got {rot!r}."
+            )
         self._rot = np.asarray(rot, dtype=float)
 
-        self.add_input('hub_position', val=np.zeros((nr, 3)), units='m',
-                       desc='Rotor hub positions, body frame (x fwd, y right, z down)')
-        self.add_input('thrust_direction', val=np.tile([0.0, 0.0, -1.0], (nr, 1)), units=None,
-                       desc='Thrust axis direction, body frame (normalised internally)')
-        self.add_input('observer_position', val=np.array([-70.71067812, 0.0, 70.71067812]),
-                       units='m', desc='Observer position, body frame')
-        self.add_input('flight_velocity', val=np.zeros(3), units='m/s',
-                       desc='Vehicle velocity, body frame')
-        self.add_input('speed_of_sound', val=SEA_LEVEL_SPEED_OF_SOUND, units='m/s',
-                       desc='Speed of sound')
+        self.add_input(
+            "hub_position",
+            val=np.zeros((nr, 3)),
+            units="m",
+            desc="Rotor hub positions, body frame (x fwd, y right, z down)",
+        )
+        self.add_input(
+            "thrust_direction",
+            val=np.tile([0.0, 0.0, -1.0], (nr, 1)),
+            units=None,
+            desc="Thrust axis direction, body frame (normalised internally)",
+        )
+        self.add_input(
+            "observer_position",
+            val=np.array([-70.71067812, 0.0, 70.71067812]),
+            units="m",
+            desc="Observer position, body frame",
+        )
+        self.add_input(
+            "flight_velocity", val=np.zeros(3), units="m/s", desc="Vehicle velocity, body frame"
+        )
+        self.add_input(
+            "speed_of_sound", val=SEA_LEVEL_SPEED_OF_SOUND, units="m/s", desc="Speed of sound"
+        )
 
         outs = {
-            'distance': ('m', 'Hub-observer distance S'),
-            'axial_distance': ('m', 'Observer distance along the thrust axis, z = P.n'),
-            'inplane_distance': ('m', 'Observer distance from the thrust axis, Y'),
-            'convected_distance': ('m', 'Doppler-corrected hub-observer distance r1 = S - V.P/a'),
-            'observer_azimuth_cos': (None, 'cos of the observer azimuth in the rotor frame'),
-            'observer_azimuth_sin': (None, 'sin of the observer azimuth in the rotor frame'),
-            'axial_speed': ('m/s', 'Flight speed along the thrust axis'),
-            'inplane_speed': ('m/s', 'Flight speed in the rotor plane (edgewise speed)'),
+            "distance": ("m", "Hub-observer distance S"),
+            "axial_distance": ("m", "Observer distance along the thrust axis, z = P.n"),
+            "inplane_distance": ("m", "Observer distance from the thrust axis, Y"),
+            "convected_distance": ("m", "Doppler-corrected hub-observer distance r1 = S - V.P/a"),
+            "observer_azimuth_cos": (None, "cos of the observer azimuth in the rotor frame"),
+            "observer_azimuth_sin": (None, "sin of the observer azimuth in the rotor frame"),
+            "axial_speed": ("m/s", "Flight speed along the thrust axis"),
+            "inplane_speed": ("m/s", "Flight speed in the rotor plane (edgewise speed)"),
         }
         for name, (units, desc) in outs.items():
             self.add_output(name, val=np.ones(nr), units=units, desc=desc)
@@ -215,79 +273,99 @@ class ObserverGeometryComp(om.ExplicitComponent):
         rows3 = np.repeat(ar, 3)
         cols3 = np.arange(3 * nr)
         cols_shared = np.tile(np.arange(3), nr)
-        geometric = ('distance', 'axial_distance', 'inplane_distance', 'convected_distance',
-                     'observer_azimuth_cos', 'observer_azimuth_sin')
+        geometric = (
+            "distance",
+            "axial_distance",
+            "inplane_distance",
+            "convected_distance",
+            "observer_azimuth_cos",
+            "observer_azimuth_sin",
+        )
         for name in geometric:
-            self.declare_partials(name, 'hub_position', rows=rows3, cols=cols3)
-            self.declare_partials(name, 'observer_position', rows=rows3, cols=cols_shared)
-        for name in ('axial_distance', 'inplane_distance', 'observer_azimuth_cos',
-                     'observer_azimuth_sin', 'axial_speed', 'inplane_speed'):
-            self.declare_partials(name, 'thrust_direction', rows=rows3, cols=cols3)
-        for name in ('convected_distance', 'axial_speed', 'inplane_speed'):
-            self.declare_partials(name, 'flight_velocity', rows=rows3, cols=cols_shared)
-        self.declare_partials('convected_distance', 'speed_of_sound', rows=ar,
-                              cols=np.zeros(nr, dtype=int))
+            self.declare_partials(name, "hub_position", rows=rows3, cols=cols3)
+            self.declare_partials(name, "observer_position", rows=rows3, cols=cols_shared)
+        for name in (
+            "axial_distance",
+            "inplane_distance",
+            "observer_azimuth_cos",
+            "observer_azimuth_sin",
+            "axial_speed",
+            "inplane_speed",
+        ):
+            self.declare_partials(name, "thrust_direction", rows=rows3, cols=cols3)
+        for name in ("convected_distance", "axial_speed", "inplane_speed"):
+            self.declare_partials(name, "flight_velocity", rows=rows3, cols=cols_shared)
+        self.declare_partials(
+            "convected_distance", "speed_of_sound", rows=ar, cols=np.zeros(nr, dtype=int)
+        )
 
     def _geometry(self, inputs):
         """All geometric quantities (complex-step safe)."""
         g = {}
-        hub = inputs['hub_position']
-        d = inputs['thrust_direction']
-        vel = inputs['flight_velocity']
-        a = inputs['speed_of_sound'][0]
-        g['P'] = P = inputs['observer_position'][np.newaxis, :] - hub
-        g['S'] = np.sqrt(np.sum(P * P, axis=1))
-        g['dnorm'] = dnorm = np.sqrt(np.sum(d * d, axis=1))
-        g['n'] = n = d / dnorm[:, None]
-        g['z'] = z = np.sum(P * n, axis=1)
-        g['Y'] = np.sqrt(g['S']**2 - z**2 + _EPS_DISTANCE2)
-        g['r1'] = g['S'] - (P @ vel) / a
+        hub = inputs["hub_position"]
+        d = inputs["thrust_direction"]
+        vel = inputs["flight_velocity"]
+        a = inputs["speed_of_sound"][0]
+        g["P"] = P = inputs["observer_position"][np.newaxis, :] - hub
+        g["S"] = np.sqrt(np.sum(P * P, axis=1))
+        g["dnorm"] = dnorm = np.sqrt(np.sum(d * d, axis=1))
+        g["n"] = n = d / dnorm[:, None]
+        g["z"] = z = np.sum(P * n, axis=1)
+        g["Y"] = np.sqrt(g["S"] ** 2 - z**2 + _EPS_DISTANCE2)
+        g["r1"] = g["S"] - (P @ vel) / a
         # Rotor azimuth frame (BladeAD docs theory/rotors 'Stations and disk frame'): e_y =
         # projected body y axis, e_x = n x e_y.
         u = -n[:, 1:2] * n
         u[:, 1] += 1.0
-        g['u'] = u
-        g['unorm'] = unorm = np.sqrt(np.sum(u * u, axis=1))
-        g['ey'] = ey = u / unorm[:, None]
-        g['ex'] = np.cross(n, ey)
+        g["u"] = u
+        g["unorm"] = unorm = np.sqrt(np.sum(u * u, axis=1))
+        g["ey"] = ey = u / unorm[:, None]
+        g["ex"] = np.cross(n, ey)
         # psi = 0 aft (-e_x), psi increasing with rotation: e1 = -e_x, e2 = s e_y.
-        g['e1'] = -g['ex']
-        g['e2'] = self._rot[:, None] * ey
-        g['va'] = va = n @ vel
-        g['vp'] = np.sqrt(vel @ vel - va**2 + _EPS_SPEED2)
+        g["e1"] = -g["ex"]
+        g["e2"] = self._rot[:, None] * ey
+        g["va"] = va = n @ vel
+        g["vp"] = np.sqrt(vel @ vel - va**2 + _EPS_SPEED2)
         return g
 
     def compute(self, inputs, outputs):
-        check_input_range(self, 'speed_of_sound', inputs['speed_of_sound'], lower=0.0)
-        d = inputs['thrust_direction']
-        check_input_range(self, 'thrust_direction (norm)', np.sqrt(np.sum(d * d, axis=1)),
-                          lower=1e-12)
+        check_input_range(self, "speed_of_sound", inputs["speed_of_sound"], lower=0.0)
+        d = inputs["thrust_direction"]
+        check_input_range(
+            self, "thrust_direction (norm)", np.sqrt(np.sum(d * d, axis=1)), lower=1e-12
+        )
         g = self._geometry(inputs)
-        check_input_range(self, 'distance (observer to hub)', g['S'], lower=1e-6)
-        check_input_range(self, 'thrust_direction (component normal to the body y axis)',
-                          g['unorm'], lower=1e-9)
-        check_input_range(self, 'convected_distance (flight speed towards the observer must be '
-                          'below the speed of sound)', g['r1'], lower=0.0)
-        Y = g['Y']
-        outputs['distance'] = g['S']
-        outputs['axial_distance'] = g['z']
-        outputs['inplane_distance'] = Y
-        outputs['convected_distance'] = g['r1']
-        outputs['observer_azimuth_cos'] = np.sum(g['P'] * g['e1'], axis=1) / Y
-        outputs['observer_azimuth_sin'] = np.sum(g['P'] * g['e2'], axis=1) / Y
-        outputs['axial_speed'] = g['va']
-        outputs['inplane_speed'] = g['vp']
+        check_input_range(self, "distance (observer to hub)", g["S"], lower=1e-6)
+        check_input_range(
+            self, "thrust_direction (component normal to the body y axis)", g["unorm"], lower=1e-9
+        )
+        check_input_range(
+            self,
+            "convected_distance (flight speed towards the observer must be "
+            "below the speed of sound)",
+            g["r1"],
+            lower=0.0,
+        )
+        Y = g["Y"]
+        outputs["distance"] = g["S"]
+        outputs["axial_distance"] = g["z"]
+        outputs["inplane_distance"] = Y
+        outputs["convected_distance"] = g["r1"]
+        outputs["observer_azimuth_cos"] = np.sum(g["P"] * g["e1"], axis=1) / Y
+        outputs["observer_azimuth_sin"] = np.sum(g["P"] * g["e2"], axis=1) / Y
+        outputs["axial_speed"] = g["va"]
+        outputs["inplane_speed"] = g["vp"]
 
     def compute_partials(self, inputs, partials):
         g = self._geometry(inputs)
-        vel = inputs['flight_velocity']
-        a = inputs['speed_of_sound'][0]
-        P, S, n, z, Y = g['P'], g['S'], g['n'], g['z'], g['Y']
+        vel = inputs["flight_velocity"]
+        a = inputs["speed_of_sound"][0]
+        P, S, n, z, Y = g["P"], g["S"], g["n"], g["z"], g["Y"]
         nr = P.shape[0]
         eye = np.broadcast_to(np.eye(3), (nr, 3, 3))
 
         # Jacobian of the unit axis n w.r.t. the raw direction d: (I - n n^T)/|d|.
-        dn_dd = (eye - n[:, :, None] * n[:, None, :]) / g['dnorm'][:, None, None]
+        dn_dd = (eye - n[:, :, None] * n[:, None, :]) / g["dnorm"][:, None, None]
 
         # Derivatives w.r.t. P (observer minus hub) and w.r.t. n, each (nr, 3).
         dS_dP = P / S[:, None]
@@ -298,41 +376,43 @@ class ObserverGeometryComp(om.ExplicitComponent):
         dr1_dP = dS_dP - vel[None, :] / a
 
         # Basis vectors e1 = -e_x, e2 = s e_y as functions of n.
-        ey, ny = g['ey'], n[:, 1]
+        ey, ny = g["ey"], n[:, 1]
         du_dn = -ny[:, None, None] * eye
         du_dn[:, :, 1] -= n
-        dey_dn = ((eye - ey[:, :, None] * ey[:, None, :]) / g['unorm'][:, None, None]) @ du_dn
+        dey_dn = ((eye - ey[:, :, None] * ey[:, None, :]) / g["unorm"][:, None, None]) @ du_dn
         dex_dn = -_cross_matrix(ey) + _cross_matrix(n) @ dey_dn
         de1_dn = -dex_dn
         de2_dn = self._rot[:, None, None] * dey_dn
 
         out = {}
-        for name, e, de_dn in (('observer_azimuth_cos', g['e1'], de1_dn),
-                               ('observer_azimuth_sin', g['e2'], de2_dn)):
+        for name, e, de_dn in (
+            ("observer_azimuth_cos", g["e1"], de1_dn),
+            ("observer_azimuth_sin", g["e2"], de2_dn),
+        ):
             val = np.sum(P * e, axis=1) / Y
             dP = e / Y[:, None] - val[:, None] * dY_dP / Y[:, None]
-            dn = (np.einsum('ri,rij->rj', P, de_dn) / Y[:, None]
-                  - val[:, None] * dY_dn / Y[:, None])
+            dn = np.einsum("ri,rij->rj", P, de_dn) / Y[:, None] - val[:, None] * dY_dn / Y[:, None]
             out[name] = (dP, dn)
-        out['distance'] = (dS_dP, None)
-        out['axial_distance'] = (dz_dP, dz_dn)
-        out['inplane_distance'] = (dY_dP, dY_dn)
-        out['convected_distance'] = (dr1_dP, None)
+        out["distance"] = (dS_dP, None)
+        out["axial_distance"] = (dz_dP, dz_dn)
+        out["inplane_distance"] = (dY_dP, dY_dn)
+        out["convected_distance"] = (dr1_dP, None)
 
         for name, (dP, dn) in out.items():
-            partials[name, 'observer_position'] = dP.ravel()
-            partials[name, 'hub_position'] = -dP.ravel()
+            partials[name, "observer_position"] = dP.ravel()
+            partials[name, "hub_position"] = -dP.ravel()
             if dn is not None:
-                partials[name, 'thrust_direction'] = np.einsum('ri,rij->rj', dn, dn_dd).ravel()
+                partials[name, "thrust_direction"] = np.einsum("ri,rij->rj", dn, dn_dd).ravel()
 
-        va, vp = g['va'], g['vp']
-        partials['axial_speed', 'thrust_direction'] = np.einsum(
-            'i,rij->rj', vel, dn_dd).ravel()
-        partials['axial_speed', 'flight_velocity'] = n.ravel()
+        va, vp = g["va"], g["vp"]
+        partials["axial_speed", "thrust_direction"] = np.einsum("i,rij->rj", vel, dn_dd).ravel()
+        partials["axial_speed", "flight_velocity"] = n.ravel()
         dvp_dn = -(va / vp)[:, None] * vel[None, :]
-        partials['inplane_speed', 'thrust_direction'] = np.einsum(
-            'ri,rij->rj', dvp_dn, dn_dd).ravel()
-        partials['inplane_speed', 'flight_velocity'] = (
-            (vel[None, :] - va[:, None] * n) / vp[:, None]).ravel()
-        partials['convected_distance', 'flight_velocity'] = (-P / a).ravel()
-        partials['convected_distance', 'speed_of_sound'] = (P @ vel) / a**2
+        partials["inplane_speed", "thrust_direction"] = np.einsum(
+            "ri,rij->rj", dvp_dn, dn_dd
+        ).ravel()
+        partials["inplane_speed", "flight_velocity"] = (
+            (vel[None, :] - va[:, None] * n) / vp[:, None]
+        ).ravel()
+        partials["convected_distance", "flight_velocity"] = (-P / a).ravel()
+        partials["convected_distance", "speed_of_sound"] = (P @ vel) / a**2

@@ -101,100 +101,122 @@ class SearsGustLoadsComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare('num_rotors', default=1, types=int, lower=1,
-                             desc='Number of rotors')
-        self.options.declare('num_azimuth', default=1, types=int, lower=1,
-                             desc='Number of azimuthal stations of the inflow angle')
-        self.options.declare('num_gust_harmonics', default=10, types=int, lower=1,
-                             desc='Highest gust load harmonic')
-        self.options.declare('gust_factor', default=0.06, types=(int, float), lower=0.0,
-                             desc='Gust amplification factor q')
+        self.options.declare("num_rotors", default=1, types=int, lower=1, desc="Number of rotors")
+        self.options.declare(
+            "num_azimuth",
+            default=1,
+            types=int,
+            lower=1,
+            desc="Number of azimuthal stations of the inflow angle",
+        )
+        self.options.declare(
+            "num_gust_harmonics", default=10, types=int, lower=1, desc="Highest gust load harmonic"
+        )
+        self.options.declare(
+            "gust_factor",
+            default=0.06,
+            types=(int, float),
+            lower=0.0,
+            desc="Gust amplification factor q",
+        )
         declare_radial_options(self.options)
 
     def setup(self):
-        nr, nrad, naz = (self.options[k] for k in ('num_rotors', 'num_radial', 'num_azimuth'))
-        ng = self.options['num_gust_harmonics']
-        self._rbar, _ = radial_quadrature(nrad, self.options['radial_stations'],
-                                          self.options['radial_weights'],
-                                          self.options['hub_radius_ratio'])
+        nr, nrad, naz = (self.options[k] for k in ("num_rotors", "num_radial", "num_azimuth"))
+        ng = self.options["num_gust_harmonics"]
+        self._rbar, _ = radial_quadrature(
+            nrad,
+            self.options["radial_stations"],
+            self.options["radial_weights"],
+            self.options["hub_radius_ratio"],
+        )
         self._lam = np.arange(1, ng + 1, dtype=float)
 
-        self.add_input('inflow_angle', val=np.full((nr, nrad, naz), 0.1), units='rad',
-                       desc='Inflow angle at each station and azimuth')
-        self.add_input('chord', val=np.full((nr, nrad), 0.1), units='m', desc='Blade chord')
-        self.add_input('radius', val=np.ones(nr), units='m', desc='Rotor radius')
-        self.add_input('rpm', val=np.full(nr, 1000.0), units='rpm', desc='Rotor speed')
-        self.add_input('density', val=SEA_LEVEL_DENSITY, units='kg/m**3', desc='Air density')
+        self.add_input(
+            "inflow_angle",
+            val=np.full((nr, nrad, naz), 0.1),
+            units="rad",
+            desc="Inflow angle at each station and azimuth",
+        )
+        self.add_input("chord", val=np.full((nr, nrad), 0.1), units="m", desc="Blade chord")
+        self.add_input("radius", val=np.ones(nr), units="m", desc="Rotor radius")
+        self.add_input("rpm", val=np.full(nr, 1000.0), units="rpm", desc="Rotor speed")
+        self.add_input("density", val=SEA_LEVEL_DENSITY, units="kg/m**3", desc="Air density")
 
         shape = (nr, nrad, ng)
         size = nr * nrad * ng
         ar = np.arange(size)
-        station = ar // ng                       # flat (rotor, station) index of each output
+        station = ar // ng  # flat (rotor, station) index of each output
         rotor = station // nrad
         rows_az = np.repeat(ar, naz)
         cols_az = (station[:, None] * naz + np.arange(naz)[None, :]).ravel()
-        for load in ('thrust', 'drag'):
-            for kind in ('cos', 'sin'):
-                name = f'{load}_gust_{kind}'
-                self.add_output(name, val=np.zeros(shape), units='N/m',
-                                desc=f'{"a" if kind == "cos" else "b"}_lambda of the Sears gust '
-                                     f'{load} per span of one blade, lambda = 1..{ng}')
-                self.declare_partials(name, 'inflow_angle', rows=rows_az, cols=cols_az)
-                self.declare_partials(name, 'chord', rows=ar, cols=station)
-                self.declare_partials(name, 'radius', rows=ar, cols=rotor)
-                self.declare_partials(name, 'rpm', rows=ar, cols=rotor)
-                self.declare_partials(name, 'density', rows=ar, cols=np.zeros(size, dtype=int))
+        for load in ("thrust", "drag"):
+            for kind in ("cos", "sin"):
+                name = f"{load}_gust_{kind}"
+                self.add_output(
+                    name,
+                    val=np.zeros(shape),
+                    units="N/m",
+                    desc=f"{'a' if kind == 'cos' else 'b'}_lambda of the Sears gust "
+                    f"{load} per span of one blade, lambda = 1..{ng}",
+                )
+                self.declare_partials(name, "inflow_angle", rows=rows_az, cols=cols_az)
+                self.declare_partials(name, "chord", rows=ar, cols=station)
+                self.declare_partials(name, "radius", rows=ar, cols=rotor)
+                self.declare_partials(name, "rpm", rows=ar, cols=rotor)
+                self.declare_partials(name, "density", rows=ar, cols=np.zeros(size, dtype=int))
 
     def _parts(self, inputs):
-        q = float(self.options['gust_factor'])
+        q = float(self.options["gust_factor"])
         rbar, lam = self._rbar, self._lam
-        phi = np.mean(inputs['inflow_angle'], axis=2)[:, :, None]          # (nr, nrad, 1)
-        chord = inputs['chord'][:, :, None]
-        R = inputs['radius'][:, None, None]
-        omega = inputs['rpm'][:, None, None] * RPM_TO_RAD_S
-        rho = inputs['density'][0]
-        k = lam * chord / (2.0 * rbar[None, :, None] * R)                   # (nr, nrad, ng)
+        phi = np.mean(inputs["inflow_angle"], axis=2)[:, :, None]  # (nr, nrad, 1)
+        chord = inputs["chord"][:, :, None]
+        R = inputs["radius"][:, None, None]
+        omega = inputs["rpm"][:, None, None] * RPM_TO_RAD_S
+        rho = inputs["density"][0]
+        k = lam * chord / (2.0 * rbar[None, :, None] * R)  # (nr, nrad, ng)
         # L' = phi * amp with amp = pi rho q U_t**2 c/lambda.
-        amp = np.pi * rho * q * (omega * rbar[None, :, None] * R)**2 * chord / lam
+        amp = np.pi * rho * q * (omega * rbar[None, :, None] * R) ** 2 * chord / lam
         return phi, k, amp
 
     def compute(self, inputs, outputs):
-        check_input_range(self, 'chord', inputs['chord'], lower=0.0)
-        check_input_range(self, 'radius', inputs['radius'], lower=0.0)
-        check_input_range(self, 'rpm', inputs['rpm'], lower=0.0)
-        check_input_range(self, 'density', inputs['density'], lower=0.0)
+        check_input_range(self, "chord", inputs["chord"], lower=0.0)
+        check_input_range(self, "radius", inputs["radius"], lower=0.0)
+        check_input_range(self, "rpm", inputs["rpm"], lower=0.0)
+        check_input_range(self, "density", inputs["density"], lower=0.0)
         phi, k, amp = self._parts(inputs)
         s_re, s_im, _, _ = sears_function(k)
         lift = amp * phi
-        outputs['thrust_gust_cos'] = s_re * lift * np.cos(phi)
-        outputs['thrust_gust_sin'] = s_im * lift * np.cos(phi)
-        outputs['drag_gust_cos'] = s_re * lift * np.sin(phi)
-        outputs['drag_gust_sin'] = s_im * lift * np.sin(phi)
+        outputs["thrust_gust_cos"] = s_re * lift * np.cos(phi)
+        outputs["thrust_gust_sin"] = s_im * lift * np.cos(phi)
+        outputs["drag_gust_cos"] = s_re * lift * np.sin(phi)
+        outputs["drag_gust_sin"] = s_im * lift * np.sin(phi)
 
     def compute_partials(self, inputs, partials):
-        naz = self.options['num_azimuth']
+        naz = self.options["num_azimuth"]
         phi, k, amp = self._parts(inputs)
         s_re, s_im, ds_re, ds_im = sears_function(k)
-        chord = inputs['chord'][:, :, None]
-        R = inputs['radius'][:, None, None]
-        rpm = inputs['rpm'][:, None, None]
-        rho = inputs['density'][0]
+        chord = inputs["chord"][:, :, None]
+        R = inputs["radius"][:, None, None]
+        rpm = inputs["rpm"][:, None, None]
+        rho = inputs["density"][0]
         cos_phi, sin_phi = np.cos(phi), np.sin(phi)
-        proj = {'thrust': (phi * cos_phi, cos_phi - phi * sin_phi),   # (phi cos, d/dphi)
-                'drag': (phi * sin_phi, sin_phi + phi * cos_phi)}
-        sears = {'cos': (s_re, ds_re), 'sin': (s_im, ds_im)}
+        proj = {
+            "thrust": (phi * cos_phi, cos_phi - phi * sin_phi),  # (phi cos, d/dphi)
+            "drag": (phi * sin_phi, sin_phi + phi * cos_phi),
+        }
+        sears = {"cos": (s_re, ds_re), "sin": (s_im, ds_im)}
         for load, (g, dg) in proj.items():
             for kind, (s, ds) in sears.items():
-                name = f'{load}_gust_{kind}'
+                name = f"{load}_gust_{kind}"
                 val = s * amp * g
                 # k ~ c/R, amp ~ rho rpm**2 R**2 c.
                 dval_dlnk = ds * k * amp * g
-                partials[name, 'inflow_angle'] = np.repeat(
-                    (s * amp * dg / naz).ravel(), naz)
-                partials[name, 'chord'] = ((dval_dlnk + val) / chord).ravel()
-                partials[name, 'radius'] = ((-dval_dlnk + 2.0 * val) / R).ravel()
-                partials[name, 'rpm'] = (2.0 * val / rpm).ravel()
-                partials[name, 'density'] = (val / rho).ravel()
+                partials[name, "inflow_angle"] = np.repeat((s * amp * dg / naz).ravel(), naz)
+                partials[name, "chord"] = ((dval_dlnk + val) / chord).ravel()
+                partials[name, "radius"] = ((-dval_dlnk + 2.0 * val) / R).ravel()
+                partials[name, "rpm"] = (2.0 * val / rpm).ravel()
+                partials[name, "density"] = (val / rho).ravel()
 
 
 def _complex_powers(c, s, lam):
@@ -207,7 +229,7 @@ def _complex_powers(c, s, lam):
         re, im = pr[-1], pi[-1]
         pr.append(re * c - im * s)
         pi.append(im * c + re * s)
-    pr, pi = np.stack(pr, axis=-1), np.stack(pi, axis=-1)      # (..., lmax+1)
+    pr, pi = np.stack(pr, axis=-1), np.stack(pi, axis=-1)  # (..., lmax+1)
     idx = lam.astype(int)
     prev = np.maximum(idx - 1, 0)
     C, S = pr[..., idx], pi[..., idx]
@@ -218,7 +240,7 @@ def _complex_powers(c, s, lam):
 
 # (-i)**k for k mod 4 = 0, 1, 2, 3, as (real, imaginary).
 _PHASE = np.array([[1.0, 0.0], [0.0, -1.0], [-1.0, 0.0], [0.0, 1.0]])
-_SIGN = np.array([-1, 1])      # term s = 0: order n - lambda; s = 1: order n + lambda
+_SIGN = np.array([-1, 1])  # term s = 0: order n - lambda; s = 1: order n + lambda
 
 
 class _LowsonSum:
@@ -239,13 +261,12 @@ class _LowsonSum:
     def __init__(self, n, lam, offset, rbar, weights):
         self.lam = np.asarray(lam, dtype=float)
         lam_i = np.asarray(lam, dtype=int)
-        self.q_index = offset + _SIGN[None, :] * lam_i[:, None]                 # (nl, 2)
-        self.order = n[:, :, None, None] + _SIGN[None, None, None, :] * lam_i[None, None, :,
-                                                                                None]
-        phase = _PHASE[self.order % 4]                                           # (.., 2, 2)
+        self.q_index = offset + _SIGN[None, :] * lam_i[:, None]  # (nl, 2)
+        self.order = n[:, :, None, None] + _SIGN[None, None, None, :] * lam_i[None, None, :, None]
+        phase = _PHASE[self.order % 4]  # (.., 2, 2)
         zero = lam_i[:, None] == 0
-        alpha = np.where(zero, np.array([1.0, 0.0]), 0.5)                       # (nl, 2)
-        beta = np.where(zero, 0.0, np.array([0.5, -0.5]))                       # beta = i*this
+        alpha = np.where(zero, np.array([1.0, 0.0]), 0.5)  # (nl, 2)
+        beta = np.where(zero, 0.0, np.array([0.5, -0.5]))  # beta = i*this
         self.ga = (phase[..., 0] * alpha, phase[..., 1] * alpha)
         self.gb = (-phase[..., 1] * beta, phase[..., 0] * beta)
         self.n = n[:, :, None, None].astype(float)
@@ -255,14 +276,14 @@ class _LowsonSum:
 
     def evaluate(self, jtab, jdtab, coeffs, nu, rotation=None, grad=False):
         """Return abs(Psi)**2 (nr, nm) and, if ``grad``, its derivatives."""
-        J = jtab[..., self.q_index]                                   # (nr, nm, nrad, nl, 2)
+        J = jtab[..., self.q_index]  # (nr, nm, nrad, nl, 2)
         n, k = self.n, self.order
         nu4 = nu[:, None, None, None]
-        a_t, b_t, a_d, b_d = (coeffs[key] for key in ('a_t', 'b_t', 'a_d', 'b_d'))
-        ja_t = np.einsum('rmils,i,ril->rmls', J, self.w, a_t)
-        jb_t = np.einsum('rmils,i,ril->rmls', J, self.w, b_t)
-        ja_d = np.einsum('rmils,i,ril->rmls', J, self.w_r, a_d)
-        jb_d = np.einsum('rmils,i,ril->rmls', J, self.w_r, b_d)
+        a_t, b_t, a_d, b_d = (coeffs[key] for key in ("a_t", "b_t", "a_d", "b_d"))
+        ja_t = np.einsum("rmils,i,ril->rmls", J, self.w, a_t)
+        jb_t = np.einsum("rmils,i,ril->rmls", J, self.w, b_t)
+        ja_d = np.einsum("rmils,i,ril->rmls", J, self.w_r, a_d)
+        jb_d = np.einsum("rmils,i,ril->rmls", J, self.w_r, b_d)
         ua = -n * nu4 * ja_t + k * ja_d
         ub = -n * nu4 * jb_t + k * jb_d
         zr = self.ga[0] * ua + self.gb[0] * ub
@@ -279,30 +300,31 @@ class _LowsonSum:
             return mag2, None
 
         pr, pi = psi_r[:, :, None, None], psi_i[:, :, None, None]
-        ur = pr * rr + pi * ri                       # u = conj(Psi) * rho
+        ur = pr * rr + pi * ri  # u = conj(Psi) * rho
         ui = pr * ri - pi * rr
         wa = 2.0 * (ur * self.ga[0] - ui * self.ga[1])
         wb = 2.0 * (ur * self.gb[0] - ui * self.gb[1])
         g = {}
-        g['a_t'] = -n * nu4 * np.einsum('rmls,rmils->rmil', wa, J) * self.w[None, None, :, None]
-        g['b_t'] = -n * nu4 * np.einsum('rmls,rmils->rmil', wb, J) * self.w[None, None, :, None]
-        g['a_d'] = np.einsum('rmls,rmils->rmil', wa * k, J) * self.w_r[None, None, :, None]
-        g['b_d'] = np.einsum('rmls,rmils->rmil', wb * k, J) * self.w_r[None, None, :, None]
-        g['nu'] = np.sum(-n * (wa * ja_t + wb * jb_t), axis=(2, 3))
+        g["a_t"] = -n * nu4 * np.einsum("rmls,rmils->rmil", wa, J) * self.w[None, None, :, None]
+        g["b_t"] = -n * nu4 * np.einsum("rmls,rmils->rmil", wb, J) * self.w[None, None, :, None]
+        g["a_d"] = np.einsum("rmls,rmils->rmil", wa * k, J) * self.w_r[None, None, :, None]
+        g["b_d"] = np.einsum("rmls,rmils->rmil", wb * k, J) * self.w_r[None, None, :, None]
+        g["nu"] = np.sum(-n * (wa * ja_t + wb * jb_t), axis=(2, 3))
         # x_i = n mu rbar_i: dJ/dmu = J'(x) n rbar_i.
         Jd = jdtab[..., self.q_index]
-        dja_t = np.einsum('rmils,i,ril->rmls', Jd, self.w * self.rbar, a_t)
-        djb_t = np.einsum('rmils,i,ril->rmls', Jd, self.w * self.rbar, b_t)
-        dja_d = np.einsum('rmils,i,ril->rmls', Jd, self.w, a_d)
-        djb_d = np.einsum('rmils,i,ril->rmls', Jd, self.w, b_d)
+        dja_t = np.einsum("rmils,i,ril->rmls", Jd, self.w * self.rbar, a_t)
+        djb_t = np.einsum("rmils,i,ril->rmls", Jd, self.w * self.rbar, b_t)
+        dja_d = np.einsum("rmils,i,ril->rmls", Jd, self.w, a_d)
+        djb_d = np.einsum("rmils,i,ril->rmls", Jd, self.w, b_d)
         dua = n * (-n * nu4 * dja_t + k * dja_d)
         dub = n * (-n * nu4 * djb_t + k * djb_d)
-        g['mu'] = np.sum(wa * dua + wb * dub, axis=(2, 3))
+        g["mu"] = np.sum(wa * dua + wb * dub, axis=(2, 3))
         if rotation is not None:
-            for key, (dC, dS) in (('cos', rotation[2]), ('sin', rotation[3])):
+            for key, (dC, dS) in (("cos", rotation[2]), ("sin", rotation[3])):
                 drr, dri = dC[:, None, :, None], _SIGN * dS[:, None, :, None]
-                g[key] = 2.0 * np.sum(pr * (drr * zr - dri * zi) + pi * (drr * zi + dri * zr),
-                                      axis=(2, 3))
+                g[key] = 2.0 * np.sum(
+                    pr * (drr * zr - dri * zi) + pi * (drr * zi + dri * zr), axis=(2, 3)
+                )
         return mag2, g
 
 
@@ -402,36 +424,57 @@ class LowsonLoadingNoiseComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare('num_rotors', default=1, types=int, lower=1,
-                             desc='Number of rotors')
-        self.options.declare('num_blades', default=2, types=(int, tuple, list, np.ndarray),
-                             desc='Blades per rotor (int or one per rotor)')
-        self.options.declare('num_harmonics', default=3, types=int, lower=1,
-                             desc='Number of blade-passing harmonics')
-        self.options.declare('num_load_harmonics', default=0, types=int, lower=0,
-                             desc='Highest azimuthal load harmonic of the coefficient inputs')
-        self.options.declare('num_gust_harmonics', default=10, types=int, lower=1,
-                             desc='Highest Sears gust load harmonic')
-        self.options.declare('loading_path', default='auto', values=('auto', 'sears', 'unsteady'),
-                             desc="Load model: 'sears' (hover), 'unsteady' (azimuthal loads) or "
-                                  "'auto' (smooth switch on the in-plane speed)")
+        self.options.declare("num_rotors", default=1, types=int, lower=1, desc="Number of rotors")
+        self.options.declare(
+            "num_blades",
+            default=2,
+            types=(int, tuple, list, np.ndarray),
+            desc="Blades per rotor (int or one per rotor)",
+        )
+        self.options.declare(
+            "num_harmonics", default=3, types=int, lower=1, desc="Number of blade-passing harmonics"
+        )
+        self.options.declare(
+            "num_load_harmonics",
+            default=0,
+            types=int,
+            lower=0,
+            desc="Highest azimuthal load harmonic of the coefficient inputs",
+        )
+        self.options.declare(
+            "num_gust_harmonics",
+            default=10,
+            types=int,
+            lower=1,
+            desc="Highest Sears gust load harmonic",
+        )
+        self.options.declare(
+            "loading_path",
+            default="auto",
+            values=("auto", "sears", "unsteady"),
+            desc="Load model: 'sears' (hover), 'unsteady' (azimuthal loads) or "
+            "'auto' (smooth switch on the in-plane speed)",
+        )
         declare_radial_options(self.options)
 
     def setup(self):
-        nr, nrad, nm = (self.options[k] for k in ('num_rotors', 'num_radial', 'num_harmonics'))
-        L = self.options['num_load_harmonics']
-        path = self.options['loading_path']
-        self._use_sears = path in ('auto', 'sears')
-        self._use_unsteady = path in ('auto', 'unsteady')
-        ng = self.options['num_gust_harmonics'] if self._use_sears else 0
+        nr, nrad, nm = (self.options[k] for k in ("num_rotors", "num_radial", "num_harmonics"))
+        L = self.options["num_load_harmonics"]
+        path = self.options["loading_path"]
+        self._use_sears = path in ("auto", "sears")
+        self._use_unsteady = path in ("auto", "unsteady")
+        ng = self.options["num_gust_harmonics"] if self._use_sears else 0
         nl = L + 1
-        self._blades = B = blade_counts(self.options['num_blades'], nr)
-        self._rbar, self._w = radial_quadrature(nrad, self.options['radial_stations'],
-                                                self.options['radial_weights'],
-                                                self.options['hub_radius_ratio'])
+        self._blades = B = blade_counts(self.options["num_blades"], nr)
+        self._rbar, self._w = radial_quadrature(
+            nrad,
+            self.options["radial_stations"],
+            self.options["radial_weights"],
+            self.options["hub_radius_ratio"],
+        )
         m = np.arange(1, nm + 1)
-        self._n = n = m[None, :] * B[:, None]                               # (nr, nm)
-        self._kappa = (B.astype(float) / (2.0 * np.pi))**2 / 2.0           # ms = kappa |Psi/r1|^2
+        self._n = n = m[None, :] * B[:, None]  # (nr, nm)
+        self._kappa = (B.astype(float) / (2.0 * np.pi)) ** 2 / 2.0  # ms = kappa |Psi/r1|^2
         lmax = max(L if self._use_unsteady else 0, ng)
         self._offset = off = lmax + 1
         self._orders = n[:, :, None] + np.arange(-off, off + 1)[None, None, :]
@@ -439,81 +482,119 @@ class LowsonLoadingNoiseComp(om.ExplicitComponent):
         self._gust = _LowsonSum(n, np.arange(1, ng + 1), off, self._rbar, self._w) if ng else None
         self._unsteady = _LowsonSum(n, np.arange(nl), off, self._rbar, self._w)
 
-        self.add_input('radius', val=np.ones(nr), units='m', desc='Rotor radius')
-        self.add_input('rpm', val=np.full(nr, 1000.0), units='rpm', desc='Rotor speed')
-        self.add_input('speed_of_sound', val=SEA_LEVEL_SPEED_OF_SOUND, units='m/s',
-                       desc='Speed of sound')
-        for name, desc in (('axial_distance', 'Observer distance along the thrust axis z'),
-                           ('inplane_distance', 'Observer distance from the thrust axis Y'),
-                           ('convected_distance', 'Doppler-corrected distance r1')):
-            self.add_input(name, val=np.full(nr, 100.0), units='m', desc=desc)
-        self.add_input('observer_azimuth_cos', val=np.ones(nr), units=None,
-                       desc='cos of the observer azimuth in the rotor frame')
-        self.add_input('observer_azimuth_sin', val=np.zeros(nr), units=None,
-                       desc='sin of the observer azimuth in the rotor frame')
-        self.add_input('inplane_speed', val=np.zeros(nr), units='m/s',
-                       desc='In-plane (edgewise) flight speed')
+        self.add_input("radius", val=np.ones(nr), units="m", desc="Rotor radius")
+        self.add_input("rpm", val=np.full(nr, 1000.0), units="rpm", desc="Rotor speed")
+        self.add_input(
+            "speed_of_sound", val=SEA_LEVEL_SPEED_OF_SOUND, units="m/s", desc="Speed of sound"
+        )
+        for name, desc in (
+            ("axial_distance", "Observer distance along the thrust axis z"),
+            ("inplane_distance", "Observer distance from the thrust axis Y"),
+            ("convected_distance", "Doppler-corrected distance r1"),
+        ):
+            self.add_input(name, val=np.full(nr, 100.0), units="m", desc=desc)
+        self.add_input(
+            "observer_azimuth_cos",
+            val=np.ones(nr),
+            units=None,
+            desc="cos of the observer azimuth in the rotor frame",
+        )
+        self.add_input(
+            "observer_azimuth_sin",
+            val=np.zeros(nr),
+            units=None,
+            desc="sin of the observer azimuth in the rotor frame",
+        )
+        self.add_input(
+            "inplane_speed", val=np.zeros(nr), units="m/s", desc="In-plane (edgewise) flight speed"
+        )
         self._coeff_inputs = {}
-        for load, key in (('thrust', 't'), ('drag', 'd')):
-            for kind, ab in (('cos', 'a'), ('sin', 'b')):
-                name = f'{load}_{kind}_coeff'
-                self.add_input(name, val=np.zeros((nr, nrad, nl)), units='N/m',
-                               desc=f'{ab}_lambda of the {load} per span, lambda = 0..{L}')
-                self._coeff_inputs[name] = (f'{ab}_{key}', nl)
+        for load, key in (("thrust", "t"), ("drag", "d")):
+            for kind, ab in (("cos", "a"), ("sin", "b")):
+                name = f"{load}_{kind}_coeff"
+                self.add_input(
+                    name,
+                    val=np.zeros((nr, nrad, nl)),
+                    units="N/m",
+                    desc=f"{ab}_lambda of the {load} per span, lambda = 0..{L}",
+                )
+                self._coeff_inputs[name] = (f"{ab}_{key}", nl)
                 if self._use_sears:
-                    gname = f'{load}_gust_{kind}'
-                    self.add_input(gname, val=np.zeros((nr, nrad, ng)), units='N/m',
-                                   desc=f'{ab}_lambda of the Sears gust {load} per span, '
-                                        f'lambda = 1..{ng}')
-                    self._coeff_inputs[gname] = (f'{ab}_{key}', ng)
+                    gname = f"{load}_gust_{kind}"
+                    self.add_input(
+                        gname,
+                        val=np.zeros((nr, nrad, ng)),
+                        units="N/m",
+                        desc=f"{ab}_lambda of the Sears gust {load} per span, lambda = 1..{ng}",
+                    )
+                    self._coeff_inputs[gname] = (f"{ab}_{key}", ng)
 
-        self.add_output('loading_spl', val=np.zeros((nr, nm)), units=None,
-                        desc='Loading-noise SPL per blade-passing harmonic, dB re 20 uPa')
-        self.add_output('harmonic_frequency', val=np.ones((nr, nm)), units='Hz',
-                        desc='Blade-passing harmonic frequencies m B rpm/60')
+        self.add_output(
+            "loading_spl",
+            val=np.zeros((nr, nm)),
+            units=None,
+            desc="Loading-noise SPL per blade-passing harmonic, dB re 20 uPa",
+        )
+        self.add_output(
+            "harmonic_frequency",
+            val=np.ones((nr, nm)),
+            units="Hz",
+            desc="Blade-passing harmonic frequencies m B rpm/60",
+        )
 
         rows = np.arange(nr * nm)
         rotor = rows // nm
-        self.declare_partials('harmonic_frequency', 'rpm', rows=rows, cols=rotor,
-                              val=(n / 60.0).ravel())
-        scalars = ['radius', 'rpm', 'axial_distance', 'inplane_distance', 'convected_distance']
+        self.declare_partials(
+            "harmonic_frequency", "rpm", rows=rows, cols=rotor, val=(n / 60.0).ravel()
+        )
+        scalars = ["radius", "rpm", "axial_distance", "inplane_distance", "convected_distance"]
         if self._use_unsteady and L > 0:
-            scalars += ['observer_azimuth_cos', 'observer_azimuth_sin']
-        if path == 'auto':
-            scalars.append('inplane_speed')
+            scalars += ["observer_azimuth_cos", "observer_azimuth_sin"]
+        if path == "auto":
+            scalars.append("inplane_speed")
         for name in scalars:
-            self.declare_partials('loading_spl', name, rows=rows, cols=rotor)
-        self.declare_partials('loading_spl', 'speed_of_sound', rows=rows,
-                              cols=np.zeros(nr * nm, dtype=int))
+            self.declare_partials("loading_spl", name, rows=rows, cols=rotor)
+        self.declare_partials(
+            "loading_spl", "speed_of_sound", rows=rows, cols=np.zeros(nr * nm, dtype=int)
+        )
         self._rotation_partials = self._use_unsteady and L > 0
         self._coeff_width = {}
         for name, (_, full) in self._coeff_inputs.items():
             # The Sears path alone uses only lambda = 0 of the azimuthal coefficients.
-            width = 1 if (name.endswith('_coeff') and not self._use_unsteady) else full
+            width = 1 if (name.endswith("_coeff") and not self._use_unsteady) else full
             self._coeff_width[name] = width
             # b_0 (sin coefficient of lambda = 0) does not radiate: no partials for it.
-            first = 1 if name.endswith('_sin_coeff') else 0
+            first = 1 if name.endswith("_sin_coeff") else 0
             if width <= first:
                 continue
-            r_i, m_i, i_i, l_i = np.meshgrid(np.arange(nr), np.arange(nm), np.arange(nrad),
-                                             np.arange(first, width), indexing='ij')
-            self.declare_partials('loading_spl', name, rows=(r_i * nm + m_i).ravel(),
-                                  cols=((r_i * nrad + i_i) * full + l_i).ravel())
+            r_i, m_i, i_i, l_i = np.meshgrid(
+                np.arange(nr),
+                np.arange(nm),
+                np.arange(nrad),
+                np.arange(first, width),
+                indexing="ij",
+            )
+            self.declare_partials(
+                "loading_spl",
+                name,
+                rows=(r_i * nm + m_i).ravel(),
+                cols=((r_i * nrad + i_i) * full + l_i).ravel(),
+            )
 
     # ------------------------------------------------------------------ evaluation helpers
     def _kinematics(self, inputs):
-        R = inputs['radius']
-        omega = inputs['rpm'] * RPM_TO_RAD_S
-        a = inputs['speed_of_sound'][0]
-        r1 = inputs['convected_distance']
+        R = inputs["radius"]
+        omega = inputs["rpm"] * RPM_TO_RAD_S
+        a = inputs["speed_of_sound"][0]
+        r1 = inputs["convected_distance"]
         scale = omega * R / (a * r1)
-        mu = scale * inputs['inplane_distance']
-        nu = scale * inputs['axial_distance']
+        mu = scale * inputs["inplane_distance"]
+        nu = scale * inputs["axial_distance"]
         return mu, nu, scale
 
     def _bessel(self, mu, grad):
         x = self._n[:, :, None] * mu[:, None, None] * self._rbar[None, None, :]
-        jtab = bessel_j(self._orders[:, :, None, :], x[..., None])             # (nr, nm, nrad, nq)
+        jtab = bessel_j(self._orders[:, :, None, :], x[..., None])  # (nr, nm, nrad, nq)
         if not grad:
             return jtab, None
         jdtab = np.zeros_like(jtab)
@@ -521,127 +602,142 @@ class LowsonLoadingNoiseComp(om.ExplicitComponent):
         return jtab, jdtab
 
     def _coeffs(self, inputs, kind):
-        if kind == 'gust':
-            names = ('thrust_gust_cos', 'thrust_gust_sin', 'drag_gust_cos', 'drag_gust_sin')
+        if kind == "gust":
+            names = ("thrust_gust_cos", "thrust_gust_sin", "drag_gust_cos", "drag_gust_sin")
             sl = slice(None)
         else:
-            names = ('thrust_cos_coeff', 'thrust_sin_coeff', 'drag_cos_coeff', 'drag_sin_coeff')
-            sl = slice(0, 1) if kind == 'steady' else slice(None)
-        keys = ('a_t', 'b_t', 'a_d', 'b_d')
+            names = ("thrust_cos_coeff", "thrust_sin_coeff", "drag_cos_coeff", "drag_sin_coeff")
+            sl = slice(0, 1) if kind == "steady" else slice(None)
+        keys = ("a_t", "b_t", "a_d", "b_d")
         return {key: inputs[name][:, :, sl] for key, name in zip(keys, names, strict=True)}
 
     def _rotation(self, inputs):
         lam = self._unsteady.lam
-        return _complex_powers(inputs['observer_azimuth_cos'], inputs['observer_azimuth_sin'],
-                               lam)
+        return _complex_powers(inputs["observer_azimuth_cos"], inputs["observer_azimuth_sin"], lam)
 
     def _paths(self, inputs, grad):
         """Mean-square pressures of the Sears and unsteady paths and their abs(Psi)^2 gradients."""
         mu, nu, scale = self._kinematics(inputs)
-        r1 = inputs['convected_distance']
+        r1 = inputs["convected_distance"]
         jtab, jdtab = self._bessel(mu, grad)
-        factor = self._kappa[:, None] / r1[:, None]**2          # ms = factor |Psi|^2
-        res = {'mu': mu, 'nu': nu, 'scale': scale, 'factor': factor}
+        factor = self._kappa[:, None] / r1[:, None] ** 2  # ms = factor |Psi|^2
+        res = {"mu": mu, "nu": nu, "scale": scale, "factor": factor}
         if self._use_sears:
-            m_s, g_s = self._steady.evaluate(jtab, jdtab, self._coeffs(inputs, 'steady'), nu,
-                                             grad=grad)
-            m_g, g_g = self._gust.evaluate(jtab, jdtab, self._coeffs(inputs, 'gust'), nu,
-                                           grad=grad)
-            res['sears'] = (factor * (m_s + m_g), g_s, g_g)
+            m_s, g_s = self._steady.evaluate(
+                jtab, jdtab, self._coeffs(inputs, "steady"), nu, grad=grad
+            )
+            m_g, g_g = self._gust.evaluate(jtab, jdtab, self._coeffs(inputs, "gust"), nu, grad=grad)
+            res["sears"] = (factor * (m_s + m_g), g_s, g_g)
         if self._use_unsteady:
-            m_u, g_u = self._unsteady.evaluate(jtab, jdtab, self._coeffs(inputs, 'unsteady'), nu,
-                                               rotation=self._rotation(inputs), grad=grad)
-            res['unsteady'] = (factor * m_u, g_u)
+            m_u, g_u = self._unsteady.evaluate(
+                jtab,
+                jdtab,
+                self._coeffs(inputs, "unsteady"),
+                nu,
+                rotation=self._rotation(inputs),
+                grad=grad,
+            )
+            res["unsteady"] = (factor * m_u, g_u)
         return res
 
     def _switch(self, inputs):
-        path = self.options['loading_path']
-        if path == 'sears':
+        path = self.options["loading_path"]
+        if path == "sears":
             return 0.0, 0.0
-        if path == 'unsteady':
+        if path == "unsteady":
             return 1.0, 0.0
-        t = np.tanh(PATH_SWITCH_SHARPNESS * (inputs['inplane_speed'] - PATH_SWITCH_THRESHOLD))
+        t = np.tanh(PATH_SWITCH_SHARPNESS * (inputs["inplane_speed"] - PATH_SWITCH_THRESHOLD))
         return (0.5 * t + 0.5)[:, None], (0.5 * PATH_SWITCH_SHARPNESS * (1.0 - t * t))[:, None]
 
     def compute(self, inputs, outputs):
-        check_input_range(self, 'radius', inputs['radius'], lower=0.0)
-        check_input_range(self, 'rpm', inputs['rpm'], lower=0.0)
-        check_input_range(self, 'speed_of_sound', inputs['speed_of_sound'], lower=0.0)
-        check_input_range(self, 'convected_distance', inputs['convected_distance'], lower=0.0)
+        check_input_range(self, "radius", inputs["radius"], lower=0.0)
+        check_input_range(self, "rpm", inputs["rpm"], lower=0.0)
+        check_input_range(self, "speed_of_sound", inputs["speed_of_sound"], lower=0.0)
+        check_input_range(self, "convected_distance", inputs["convected_distance"], lower=0.0)
         res = self._paths(inputs, grad=False)
         h, _ = self._switch(inputs)
         spl = 0.0
         if self._use_sears:
-            spl = spl + (1.0 - h) * spl_from_mean_square(res['sears'][0])
+            spl = spl + (1.0 - h) * spl_from_mean_square(res["sears"][0])
         if self._use_unsteady:
-            spl = spl + h * spl_from_mean_square(res['unsteady'][0])
-        outputs['loading_spl'] = spl
-        outputs['harmonic_frequency'] = self._n * inputs['rpm'][:, None] / 60.0
+            spl = spl + h * spl_from_mean_square(res["unsteady"][0])
+        outputs["loading_spl"] = spl
+        outputs["harmonic_frequency"] = self._n * inputs["rpm"][:, None] / 60.0
 
     def compute_partials(self, inputs, partials):
-        nr, nm = self.options['num_rotors'], self.options['num_harmonics']
-        nrad = self.options['num_radial']
+        nr, nm = self.options["num_rotors"], self.options["num_harmonics"]
+        nrad = self.options["num_radial"]
         res = self._paths(inputs, grad=True)
         h, dh = self._switch(inputs)
-        factor = res['factor']
-        mu, nu, scale = res['mu'], res['nu'], res['scale']
-        r1 = inputs['convected_distance'][:, None]
+        factor = res["factor"]
+        mu, nu, scale = res["mu"], res["nu"], res["scale"]
+        r1 = inputs["convected_distance"][:, None]
 
         d_mu = np.zeros((nr, nm))
         d_nu = np.zeros((nr, nm))
-        d_r1 = np.zeros((nr, nm))          # through the explicit 1/r1**2 of the mean square
-        d_rot = {'cos': np.zeros((nr, nm)), 'sin': np.zeros((nr, nm))}
-        d_coeff = {name: np.zeros((nr, nm, nrad, width))
-                   for name, width in self._coeff_width.items()}
-        coeff_names = {'a_t': 'thrust_cos_coeff', 'b_t': 'thrust_sin_coeff',
-                       'a_d': 'drag_cos_coeff', 'b_d': 'drag_sin_coeff'}
-        gust_names = {'a_t': 'thrust_gust_cos', 'b_t': 'thrust_gust_sin',
-                      'a_d': 'drag_gust_cos', 'b_d': 'drag_gust_sin'}
+        d_r1 = np.zeros((nr, nm))  # through the explicit 1/r1**2 of the mean square
+        d_rot = {"cos": np.zeros((nr, nm)), "sin": np.zeros((nr, nm))}
+        d_coeff = {
+            name: np.zeros((nr, nm, nrad, width)) for name, width in self._coeff_width.items()
+        }
+        coeff_names = {
+            "a_t": "thrust_cos_coeff",
+            "b_t": "thrust_sin_coeff",
+            "a_d": "drag_cos_coeff",
+            "b_d": "drag_sin_coeff",
+        }
+        gust_names = {
+            "a_t": "thrust_gust_cos",
+            "b_t": "thrust_gust_sin",
+            "a_d": "drag_gust_cos",
+            "b_d": "drag_gust_sin",
+        }
 
         spl_paths = {}
         groups = []
         if self._use_sears:
-            ms, g_s, g_g = res['sears']
-            spl_paths['sears'] = spl_from_mean_square(ms)
+            ms, g_s, g_g = res["sears"]
+            spl_paths["sears"] = spl_from_mean_square(ms)
             groups.append((1.0 - h, ms, ((g_s, coeff_names), (g_g, gust_names))))
         if self._use_unsteady:
-            ms, g_u = res['unsteady']
-            spl_paths['unsteady'] = spl_from_mean_square(ms)
+            ms, g_u = res["unsteady"]
+            spl_paths["unsteady"] = spl_from_mean_square(ms)
             groups.append((h, ms, ((g_u, coeff_names),)))
 
         for weight, ms, grads in groups:
             dspl_dms = weight * dspl_dmean_square(ms)
-            dspl = dspl_dms * factor                           # d SPL / d|Psi|^2
+            dspl = dspl_dms * factor  # d SPL / d|Psi|^2
             d_r1 += dspl_dms * (-2.0 * ms / r1)
             for g, names in grads:
-                d_mu += dspl * g['mu']
-                d_nu += dspl * g['nu']
+                d_mu += dspl * g["mu"]
+                d_nu += dspl * g["nu"]
                 for key, name in names.items():
                     width = g[key].shape[-1]
                     d_coeff[name][..., :width] += dspl[:, :, None, None] * g[key]
-                for key in ('cos', 'sin'):
+                for key in ("cos", "sin"):
                     if key in g:
                         d_rot[key] += dspl * g[key]
 
         # mu = s Y and nu = s z with s = Omega R/(a r1).
-        R = inputs['radius'][:, None]
-        rpm = inputs['rpm'][:, None]
-        a = inputs['speed_of_sound'][0]
+        R = inputs["radius"][:, None]
+        rpm = inputs["rpm"][:, None]
+        a = inputs["speed_of_sound"][0]
         s = scale[:, None]
-        d_lns = d_mu * mu[:, None] + d_nu * nu[:, None]         # d SPL / d ln(s)
-        partials['loading_spl', 'radius'] = (d_lns / R).ravel()
-        partials['loading_spl', 'rpm'] = (d_lns / rpm).ravel()
-        partials['loading_spl', 'speed_of_sound'] = (-d_lns / a).ravel()
-        partials['loading_spl', 'inplane_distance'] = (d_mu * s).ravel()
-        partials['loading_spl', 'axial_distance'] = (d_nu * s).ravel()
-        partials['loading_spl', 'convected_distance'] = (d_r1 - d_lns / r1).ravel()
+        d_lns = d_mu * mu[:, None] + d_nu * nu[:, None]  # d SPL / d ln(s)
+        partials["loading_spl", "radius"] = (d_lns / R).ravel()
+        partials["loading_spl", "rpm"] = (d_lns / rpm).ravel()
+        partials["loading_spl", "speed_of_sound"] = (-d_lns / a).ravel()
+        partials["loading_spl", "inplane_distance"] = (d_mu * s).ravel()
+        partials["loading_spl", "axial_distance"] = (d_nu * s).ravel()
+        partials["loading_spl", "convected_distance"] = (d_r1 - d_lns / r1).ravel()
         if self._rotation_partials:
-            partials['loading_spl', 'observer_azimuth_cos'] = d_rot['cos'].ravel()
-            partials['loading_spl', 'observer_azimuth_sin'] = d_rot['sin'].ravel()
-        if self.options['loading_path'] == 'auto':
-            partials['loading_spl', 'inplane_speed'] = (
-                dh * (spl_paths['unsteady'] - spl_paths['sears'])).ravel()
+            partials["loading_spl", "observer_azimuth_cos"] = d_rot["cos"].ravel()
+            partials["loading_spl", "observer_azimuth_sin"] = d_rot["sin"].ravel()
+        if self.options["loading_path"] == "auto":
+            partials["loading_spl", "inplane_speed"] = (
+                dh * (spl_paths["unsteady"] - spl_paths["sears"])
+            ).ravel()
         for name, val in d_coeff.items():
-            first = 1 if name.endswith('_sin_coeff') else 0
+            first = 1 if name.endswith("_sin_coeff") else 0
             if val.shape[-1] > first:
-                partials['loading_spl', name] = val[..., first:].ravel()
+                partials["loading_spl", name] = val[..., first:].ravel()

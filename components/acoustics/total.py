@@ -59,53 +59,95 @@ class TotalNoiseComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare('num_rotors', default=1, types=int, lower=1,
-                             desc='Number of rotors')
-        self.options.declare('num_harmonics', default=3, types=int, lower=1,
-                             desc='Number of blade-passing harmonics')
-        self.options.declare('num_bands', default=38, types=int, lower=1,
-                             desc='Number of one-third-octave bands')
-        self.options.declare('weighting', default='A', values=('A', 'none'),
-                             desc="'A': A-weighted levels (suffix _a); 'none': unweighted")
+        self.options.declare("num_rotors", default=1, types=int, lower=1, desc="Number of rotors")
+        self.options.declare(
+            "num_harmonics", default=3, types=int, lower=1, desc="Number of blade-passing harmonics"
+        )
+        self.options.declare(
+            "num_bands", default=38, types=int, lower=1, desc="Number of one-third-octave bands"
+        )
+        self.options.declare(
+            "weighting",
+            default="A",
+            values=("A", "none"),
+            desc="'A': A-weighted levels (suffix _a); 'none': unweighted",
+        )
 
     def setup(self):
-        nr, nm, nb = (self.options[k] for k in ('num_rotors', 'num_harmonics', 'num_bands'))
-        weighted = self.options['weighting'] == 'A'
-        sfx = '_a' if weighted else ''
-        unit = 'dBA' if weighted else 'dB'
-        self._names = {k: f'{k}{sfx}' for k in ('loading_spl', 'thickness_spl', 'broadband_spl',
-                                                'tonal_spl', 'broadband_oaspl', 'rotor_spl',
-                                                'total_spl')}
+        nr, nm, nb = (self.options[k] for k in ("num_rotors", "num_harmonics", "num_bands"))
+        weighted = self.options["weighting"] == "A"
+        sfx = "_a" if weighted else ""
+        unit = "dBA" if weighted else "dB"
+        self._names = {
+            k: f"{k}{sfx}"
+            for k in (
+                "loading_spl",
+                "thickness_spl",
+                "broadband_spl",
+                "tonal_spl",
+                "broadband_oaspl",
+                "rotor_spl",
+                "total_spl",
+            )
+        }
         n = self._names
-        wtxt = 'A-weighted ' if weighted else ''
-        self.add_input(n['loading_spl'], val=np.zeros((nr, nm)), units=None,
-                       desc=f'{wtxt}loading-noise level per harmonic, {unit} re 20 uPa')
-        self.add_input(n['thickness_spl'], val=np.zeros((nr, nm)), units=None,
-                       desc=f'{wtxt}thickness-noise level per harmonic, {unit} re 20 uPa')
-        self.add_input(n['broadband_spl'], val=np.zeros((nr, nb)), units=None,
-                       desc=f'{wtxt}broadband band levels, {unit} re 20 uPa')
-        self.add_output(n['tonal_spl'], val=np.zeros(nr), units=None,
-                        desc=f'{wtxt}tonal level of each rotor, {unit} re 20 uPa')
-        self.add_output(n['broadband_oaspl'], val=np.zeros(nr), units=None,
-                        desc=f'{wtxt}broadband overall level of each rotor, {unit} re 20 uPa')
-        self.add_output(n['rotor_spl'], val=np.zeros(nr), units=None,
-                        desc=f'{wtxt}total level of each rotor, {unit} re 20 uPa')
-        self.add_output(n['total_spl'], val=0.0, units=None,
-                        desc=f'{wtxt}total level of all rotors, {unit} re 20 uPa')
+        wtxt = "A-weighted " if weighted else ""
+        self.add_input(
+            n["loading_spl"],
+            val=np.zeros((nr, nm)),
+            units=None,
+            desc=f"{wtxt}loading-noise level per harmonic, {unit} re 20 uPa",
+        )
+        self.add_input(
+            n["thickness_spl"],
+            val=np.zeros((nr, nm)),
+            units=None,
+            desc=f"{wtxt}thickness-noise level per harmonic, {unit} re 20 uPa",
+        )
+        self.add_input(
+            n["broadband_spl"],
+            val=np.zeros((nr, nb)),
+            units=None,
+            desc=f"{wtxt}broadband band levels, {unit} re 20 uPa",
+        )
+        self.add_output(
+            n["tonal_spl"],
+            val=np.zeros(nr),
+            units=None,
+            desc=f"{wtxt}tonal level of each rotor, {unit} re 20 uPa",
+        )
+        self.add_output(
+            n["broadband_oaspl"],
+            val=np.zeros(nr),
+            units=None,
+            desc=f"{wtxt}broadband overall level of each rotor, {unit} re 20 uPa",
+        )
+        self.add_output(
+            n["rotor_spl"],
+            val=np.zeros(nr),
+            units=None,
+            desc=f"{wtxt}total level of each rotor, {unit} re 20 uPa",
+        )
+        self.add_output(
+            n["total_spl"],
+            val=0.0,
+            units=None,
+            desc=f"{wtxt}total level of all rotors, {unit} re 20 uPa",
+        )
 
-        for src, width in (('loading_spl', nm), ('thickness_spl', nm), ('broadband_spl', nb)):
+        for src, width in (("loading_spl", nm), ("thickness_spl", nm), ("broadband_spl", nb)):
             rows = np.repeat(np.arange(nr), width)
             cols = np.arange(nr * width)
-            targets = ['rotor_spl', 'tonal_spl' if src != 'broadband_spl' else 'broadband_oaspl']
+            targets = ["rotor_spl", "tonal_spl" if src != "broadband_spl" else "broadband_oaspl"]
             for out in targets:
                 self.declare_partials(n[out], n[src], rows=rows, cols=cols)
-            self.declare_partials(n['total_spl'], n[src])
+            self.declare_partials(n["total_spl"], n[src])
 
     def _energies(self, inputs):
         n = self._names
-        e_l = 10.0 ** (inputs[n['loading_spl']] / 10.0)
-        e_t = 10.0 ** (inputs[n['thickness_spl']] / 10.0)
-        e_b = 10.0 ** (inputs[n['broadband_spl']] / 10.0)
+        e_l = 10.0 ** (inputs[n["loading_spl"]] / 10.0)
+        e_t = 10.0 ** (inputs[n["thickness_spl"]] / 10.0)
+        e_b = 10.0 ** (inputs[n["broadband_spl"]] / 10.0)
         return e_l, e_t, e_b
 
     def compute(self, inputs, outputs):
@@ -115,10 +157,10 @@ class TotalNoiseComp(om.ExplicitComponent):
         broad = np.sum(e_b, axis=1)
         # Energies are mean squares in units of p_ref**2, so the floor of ``common`` adds here.
         to_spl = self._to_spl
-        outputs[n['tonal_spl']] = to_spl(tonal)
-        outputs[n['broadband_oaspl']] = to_spl(broad)
-        outputs[n['rotor_spl']] = to_spl(tonal + broad)
-        outputs[n['total_spl']] = to_spl(np.sum(tonal + broad))
+        outputs[n["tonal_spl"]] = to_spl(tonal)
+        outputs[n["broadband_oaspl"]] = to_spl(broad)
+        outputs[n["rotor_spl"]] = to_spl(tonal + broad)
+        outputs[n["total_spl"]] = to_spl(np.sum(tonal + broad))
 
     @staticmethod
     def _to_spl(energy):
@@ -132,9 +174,9 @@ class TotalNoiseComp(om.ExplicitComponent):
         rotor = tonal + broad
         total = np.sum(rotor)
         # d(10 log10(E + floor))/dL_j = E_j/(E + floor) since dE_j/dL_j = E_j ln10/10.
-        for src, e in (('loading_spl', e_l), ('thickness_spl', e_t), ('broadband_spl', e_b)):
-            group = broad if src == 'broadband_spl' else tonal
-            out = 'broadband_oaspl' if src == 'broadband_spl' else 'tonal_spl'
+        for src, e in (("loading_spl", e_l), ("thickness_spl", e_t), ("broadband_spl", e_b)):
+            group = broad if src == "broadband_spl" else tonal
+            out = "broadband_oaspl" if src == "broadband_spl" else "tonal_spl"
             partials[n[out], n[src]] = (e / (group + SPL_FLOOR)[:, None]).ravel()
-            partials[n['rotor_spl'], n[src]] = (e / (rotor + SPL_FLOOR)[:, None]).ravel()
-            partials[n['total_spl'], n[src]] = (e / (total + SPL_FLOOR)).reshape(1, -1)
+            partials[n["rotor_spl"], n[src]] = (e / (rotor + SPL_FLOOR)[:, None]).ravel()
+            partials[n["total_spl"], n[src]] = (e / (total + SPL_FLOOR)).reshape(1, -1)

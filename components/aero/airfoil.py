@@ -60,10 +60,20 @@ from .pressure_table import PressureTable
 #: Airfoil names with a shipped table, and the aliases that map to them.
 AIRFOIL_NAMES = ("naca0012", "naca0015", "ls413", "ls417")
 _ALIASES = {
-    "naca0012": "naca0012", "naca 0012": "naca0012", "n0012": "naca0012",
-    "naca0015": "naca0015", "naca 0015": "naca0015", "n0015": "naca0015",
-    "ls413": "ls413", "ls(1)-0413": "ls413", "gaw2": "ls413", "ga(w)-2": "ls413",
-    "ls417": "ls417", "ls(1)-0417": "ls417", "gaw1": "ls417", "ga(w)-1": "ls417",
+    "naca0012": "naca0012",
+    "naca 0012": "naca0012",
+    "n0012": "naca0012",
+    "naca0015": "naca0015",
+    "naca 0015": "naca0015",
+    "n0015": "naca0015",
+    "ls413": "ls413",
+    "ls(1)-0413": "ls413",
+    "gaw2": "ls413",
+    "ga(w)-2": "ls413",
+    "ls417": "ls417",
+    "ls(1)-0417": "ls417",
+    "gaw1": "ls417",
+    "ga(w)-1": "ls417",
 }
 
 _DEG = np.pi / 180.0
@@ -72,13 +82,15 @@ _DEG = np.pi / 180.0
 def _alpha_hermite_weights(grid, a):
     """Window [2k .. 2k+3] and weights on a (value, slope)-interleaved alpha table."""
     k = np.clip(np.searchsorted(grid, np.real(a), side="right") - 1, 0, grid.size - 2)
-    h = (grid[k + 1] - grid[k])
+    h = grid[k + 1] - grid[k]
     t = (a - grid[k]) / h
     t2, t3 = t * t, t * t * t
-    w = np.stack([2 * t3 - 3 * t2 + 1, (t3 - 2 * t2 + t) * h, -2 * t3 + 3 * t2,
-                  (t3 - t2) * h], axis=-1)
-    dw = np.stack([(6 * t2 - 6 * t) / h, 3 * t2 - 4 * t + 1, (-6 * t2 + 6 * t) / h,
-                   3 * t2 - 2 * t], axis=-1)
+    w = np.stack(
+        [2 * t3 - 3 * t2 + 1, (t3 - 2 * t2 + t) * h, -2 * t3 + 3 * t2, (t3 - t2) * h], axis=-1
+    )
+    dw = np.stack(
+        [(6 * t2 - 6 * t) / h, 3 * t2 - 4 * t + 1, (-6 * t2 + 6 * t) / h, 3 * t2 - 2 * t], axis=-1
+    )
     return 2 * k[:, None] + np.arange(4), w, dw
 
 
@@ -97,14 +109,18 @@ class _FixedConditions:
 
     def __init__(self, polar, reynolds, mach):
         self.reynolds, self.mach = reynolds.copy(), mach.copy()
-        (self.ir, self.wr, self.dwr), (self.im, self.wm, self.dwm) = polar._conditions(reynolds,
-                                                                                      mach)
+        (self.ir, self.wr, self.dwr), (self.im, self.wm, self.dwm) = polar._conditions(
+            reynolds, mach
+        )
         self.window = np.full(reynolds.size, -1)
         self.contracted = np.zeros((reynolds.size, 4, polar._composite_table.shape[-1], 3))
 
     def matches(self, reynolds, mach):
-        return (reynolds.shape == self.reynolds.shape and np.array_equal(reynolds, self.reynolds)
-                and np.array_equal(mach, self.mach))
+        return (
+            reynolds.shape == self.reynolds.shape
+            and np.array_equal(reynolds, self.reynolds)
+            and np.array_equal(mach, self.mach)
+        )
 
     def contract(self, table, ia):
         """(N, 4, n_values, 3): value, d/dRe, d/dM on each query's alpha window ``ia``."""
@@ -162,15 +178,28 @@ class TablePolar(Polar):
         :attr:`pressure`.
     """
 
-    def __init__(self, alpha, reynolds, mach, cl, cd, cm=None, *, name="table",
-                 blend=1.5 * _DEG, aspect_ratio=10.0, stall_window=3.0 * _DEG, pressure=None):
+    def __init__(
+        self,
+        alpha,
+        reynolds,
+        mach,
+        cl,
+        cd,
+        cm=None,
+        *,
+        name="table",
+        blend=1.5 * _DEG,
+        aspect_ratio=10.0,
+        stall_window=3.0 * _DEG,
+        pressure=None,
+    ):
         self.name = str(name)
         alpha = np.asarray(alpha, dtype=float)
         reynolds = np.atleast_1d(np.asarray(reynolds, dtype=float))
         mach = np.atleast_1d(np.asarray(mach, dtype=float))
         shape = (alpha.size, reynolds.size, mach.size)
         cl, cd = np.asarray(cl, dtype=float), np.asarray(cd, dtype=float)
-        if cl.size == cd.size == np.prod(shape):        # e.g. (n_a,) for a single slice
+        if cl.size == cd.size == np.prod(shape):  # e.g. (n_a,) for a single slice
             cl, cd = cl.reshape(shape), cd.reshape(shape)
         self._check(alpha, reynolds, mach, cl, cd, shape, blend)
         self.blend = float(blend)
@@ -197,8 +226,11 @@ class TablePolar(Polar):
         if not np.all(np.isfinite(alpha)) or np.any(np.diff(alpha) <= 0.0):
             fail("alpha", alpha, "finite and strictly increasing (duplicate angles?)")
         if alpha[0] <= -np.pi / 2 + blend or alpha[-1] >= np.pi / 2 - blend:
-            fail("alpha range (deg)", np.degrees([alpha[0], alpha[-1]]),
-                 "inside (-90 + blend, 90 - blend) deg; Viterna covers the rest")
+            fail(
+                "alpha range (deg)",
+                np.degrees([alpha[0], alpha[-1]]),
+                "inside (-90 + blend, 90 - blend) deg; Viterna covers the rest",
+            )
         if np.any(reynolds <= 0.0) or np.any(np.diff(reynolds) <= 0.0):
             fail("reynolds", reynolds, "> 0 and strictly increasing")
         if np.any(mach < 0.0) or np.any(mach >= 1.0) or np.any(np.diff(mach) <= 0.0):
@@ -234,7 +266,7 @@ class TablePolar(Polar):
                         lo = i
                         break
                 idx[:, r, m] = (lo, hi)
-        self.alpha_stall = a[idx]                                    # (2, n_r, n_m), rad
+        self.alpha_stall = a[idx]  # (2, n_r, n_m), rad
         grid = np.indices(idx.shape[1:])
         self.cl_stall = cl[idx, grid[0][None], grid[1][None]]
         self.cd_stall = cd[idx, grid[0][None], grid[1][None]]
@@ -244,12 +276,16 @@ class TablePolar(Polar):
                 f"TablePolar '{self.name}': stall angles (deg) "
                 f"{np.degrees(self.alpha_stall.min()):.2f}..{np.degrees(self.alpha_stall.max()):.2f}"
                 f" found from the table; allowed: negative stall < -2 blend and positive stall > "
-                f"2 blend (the table must cover the attached range on both sides of 0 deg).")
+                f"2 blend (the table must cover the attached range on both sides of 0 deg)."
+            )
         if np.any(self.cl_stall[0] >= self.cl_stall[1]):
-            raise ValueError(f"TablePolar '{self.name}': cl at negative stall >= cl at positive "
-                             f"stall; allowed: cl increasing through the attached range.")
-        self._a2, self._b2 = viterna_coefficients(self.alpha_stall, self.cl_stall,
-                                                  self.cd_stall, self.cd_max)
+            raise ValueError(
+                f"TablePolar '{self.name}': cl at negative stall >= cl at positive "
+                f"stall; allowed: cl increasing through the attached range."
+            )
+        self._a2, self._b2 = viterna_coefficients(
+            self.alpha_stall, self.cl_stall, self.cd_stall, self.cd_max
+        )
         # Reverse flow (polar.reverse_flow) has cd(+-180 deg) = -B_m; B_m is the mean of the two
         # sides' B2 as in LinearQuadraticPolar, capped at -(the slice's minimum table cd) so the
         # drag at 180 deg is never below the forward minimum drag (low-Re slices with early
@@ -262,7 +298,7 @@ class TablePolar(Polar):
         index, w, dw = self._alpha_axis.weights(a_clip)
         out = []
         for table in (self.table_cl, self.table_cd):
-            g = table[index]                                         # (n, width, n_r, n_m)
+            g = table[index]  # (n, width, n_r, n_m)
             out.append((np.einsum("nj,njrm->nrm", w, g), np.einsum("nj,njrm->nrm", dw, g)))
         return out[0][0], out[1][0], out[0][1], out[1][1]
 
@@ -294,8 +330,10 @@ class TablePolar(Polar):
             sel = np.nonzero(mask)[1:]
             return self._a2[side][sel], self._b2[side][sel]
 
-        for side, mask in ((0, (aa >= -half_pi) & (aa < a_neg - eps)),
-                           (1, (aa > a_pos + eps) & (aa <= half_pi))):
+        for side, mask in (
+            (0, (aa >= -half_pi) & (aa < a_neg - eps)),
+            (1, (aa > a_pos + eps) & (aa <= half_pi)),
+        ):
             a2, b2 = stall_params(side, mask)
             for o, v in zip(out, viterna(aa[mask], self.cd_max, a2, b2), strict=True):
                 o[mask] = v
@@ -311,8 +349,7 @@ class TablePolar(Polar):
             inner = x1 if side == 0 else x0
             outer = x0 if side == 0 else x1
             t_cl, t_cd, t_dcl, t_dcd = self._table_at(inner)
-            v_cl, v_cd, v_dcl, v_dcd = viterna(outer, self.cd_max, self._a2[side],
-                                               self._b2[side])
+            v_cl, v_cd, v_dcl, v_dcd = viterna(outer, self.cd_max, self._a2[side], self._b2[side])
             if side == 0:
                 ends = ((v_cl, v_dcl, t_cl, t_dcl), (v_cd, v_dcd, t_cd, t_dcd))
             else:
@@ -323,8 +360,9 @@ class TablePolar(Polar):
             else:
                 mask &= aa > a_pos - eps
             sel = np.nonzero(mask)[1:]
-            for (f0, d0, f1, d1), (o_f, o_d) in zip(ends, ((out[0], out[2]), (out[1], out[3])),
-                                                    strict=True):
+            for (f0, d0, f1, d1), (o_f, o_d) in zip(
+                ends, ((out[0], out[2]), (out[1], out[3])), strict=True
+            ):
                 f, df = _hermite(aa[mask], x0[sel], x1[sel], f0[sel], d0[sel], f1[sel], d1[sel])
                 o_f[mask], o_d[mask] = f, df
         return out
@@ -332,15 +370,17 @@ class TablePolar(Polar):
     def _table_at(self, a_slice):
         """Table cl, cd and slopes at one angle per slice a_slice (n_r, n_m)."""
         n_r, n_m = a_slice.shape
-        index, w, dw = self._alpha_axis.weights(np.clip(a_slice.ravel(), self.table_alpha[0],
-                                                        self.table_alpha[-1]))
+        index, w, dw = self._alpha_axis.weights(
+            np.clip(a_slice.ravel(), self.table_alpha[0], self.table_alpha[-1])
+        )
         r, m = np.meshgrid(np.arange(n_r), np.arange(n_m), indexing="ij")
         r, m = r.ravel()[:, None], m.ravel()[:, None]
         out = []
         for table in (self.table_cl, self.table_cd):
             g = table[index, r, m]
-            out.append((np.sum(w * g, axis=1).reshape(n_r, n_m),
-                        np.sum(dw * g, axis=1).reshape(n_r, n_m)))
+            out.append(
+                (np.sum(w * g, axis=1).reshape(n_r, n_m), np.sum(dw * g, axis=1).reshape(n_r, n_m))
+            )
         return out[0][0], out[1][0], out[0][1], out[1][1]
 
     def _build_composite(self):
@@ -352,8 +392,8 @@ class TablePolar(Polar):
         table[0::2, ..., 1], table[1::2, ..., 1] = cd, dcd
         self.alpha_grid = grid
         self._composite_table = table
-        stall = np.moveaxis(self.alpha_stall, 0, -1)                  # (n_r, n_m, 2)
-        self._stall_table = stall[None]                               # (1, n_r, n_m, 2)
+        stall = np.moveaxis(self.alpha_stall, 0, -1)  # (n_r, n_m, 2)
+        self._stall_table = stall[None]  # (1, n_r, n_m, 2)
 
     # ------------------------------------------------------------------------------ evaluation
 
@@ -362,7 +402,7 @@ class TablePolar(Polar):
         caches = self.__dict__.setdefault("_condition_caches", [])
         for k, cache in enumerate(caches):
             if cache.matches(reynolds, mach):
-                caches.append(caches.pop(k))          # most recently used last
+                caches.append(caches.pop(k))  # most recently used last
                 return cache
         cache = _FixedConditions(self, reynolds, mach)
         caches.append(cache)
@@ -371,7 +411,7 @@ class TablePolar(Polar):
 
     def __getstate__(self):
         state = dict(self.__dict__)
-        state.pop("_condition_caches", None)        # a cache, not part of the polar
+        state.pop("_condition_caches", None)  # a cache, not part of the polar
         return state
 
     def _conditions(self, reynolds, mach):
@@ -380,24 +420,36 @@ class TablePolar(Polar):
         return (ir, wr, dwr), (im, wm, dwm)
 
     def evaluate(self, alpha, reynolds, mach):
-        alpha, reynolds, mach = np.broadcast_arrays(np.asarray(alpha), np.asarray(reynolds),
-                                                    np.asarray(mach))
+        alpha, reynolds, mach = np.broadcast_arrays(
+            np.asarray(alpha), np.asarray(reynolds), np.asarray(mach)
+        )
         shape = alpha.shape
         a = wrap_angle(alpha).ravel()
         ia, wa, dwa = _alpha_hermite_weights(self.alpha_grid, a)
         re, m = reynolds.ravel(), mach.ravel()
         if np.iscomplexobj(re) or np.iscomplexobj(m):
             (ir, wr, dwr), (im, wm, dwm) = self._conditions(re, m)
-            values = tensor_eval(self._composite_table, (ia, ir, im), (wa, wr, wm),
-                                 (dwa, dwr, dwm))
+            values = tensor_eval(self._composite_table, (ia, ir, im), (wa, wr, wm), (dwa, dwr, dwm))
         else:
             c = self._fixed_conditions(re, m).contract(self._composite_table, ia)
             value = np.einsum("nasj,na->nsj", c, wa)
-            values = (value[..., 0], np.einsum("nas,na->ns", c[..., 0], dwa), value[..., 1],
-                      value[..., 2])
+            values = (
+                value[..., 0],
+                np.einsum("nas,na->ns", c[..., 0], dwa),
+                value[..., 1],
+                value[..., 2],
+            )
         out = [v[:, f].reshape(shape) for f in (0, 1) for v in values]
-        return PolarValues(cl=out[0], dcl_dalpha=out[1], dcl_dreynolds=out[2], dcl_dmach=out[3],
-                           cd=out[4], dcd_dalpha=out[5], dcd_dreynolds=out[6], dcd_dmach=out[7])
+        return PolarValues(
+            cl=out[0],
+            dcl_dalpha=out[1],
+            dcl_dreynolds=out[2],
+            dcl_dmach=out[3],
+            cd=out[4],
+            dcd_dalpha=out[5],
+            dcd_dreynolds=out[6],
+            dcd_dmach=out[7],
+        )
 
     def stall_angles(self, reynolds, mach):
         """
@@ -414,8 +466,9 @@ class TablePolar(Polar):
         (ir, wr, dwr), (im, wm, dwm) = self._conditions(reynolds.ravel(), mach.ravel())
         zero_idx = np.zeros((ir.shape[0], 1), dtype=int)
         one = np.ones((ir.shape[0], 1))
-        v, _, d_r, d_m = tensor_eval(self._stall_table, (zero_idx, ir, im), (one, wr, wm),
-                                     (0.0 * one, dwr, dwm))
+        v, _, d_r, d_m = tensor_eval(
+            self._stall_table, (zero_idx, ir, im), (one, wr, wm), (0.0 * one, dwr, dwm)
+        )
         return tuple(x[:, s].reshape(shape) for x in (v, d_r, d_m) for s in (0, 1))
 
     def moment_coefficient(self, alpha, reynolds, mach):
@@ -431,8 +484,9 @@ class TablePolar(Polar):
         """
         if self.table_cm is None:
             raise ValueError(f"TablePolar '{self.name}' has no cm table")
-        alpha, reynolds, mach = np.broadcast_arrays(np.asarray(alpha), np.asarray(reynolds),
-                                                    np.asarray(mach))
+        alpha, reynolds, mach = np.broadcast_arrays(
+            np.asarray(alpha), np.asarray(reynolds), np.asarray(mach)
+        )
         shape = alpha.shape
         ia, wa, dwa = self._alpha_axis.weights(wrap_angle(alpha).ravel())
         (ir, wr, dwr), (im, wm, dwm) = self._conditions(reynolds.ravel(), mach.ravel())
@@ -448,20 +502,32 @@ class TablePolar(Polar):
             keys = set(data.files)
             missing = {"alpha_deg", "cl", "cd"} - keys
             if missing:
-                raise ValueError(f"{path}: missing arrays {sorted(missing)}; an airfoil table "
-                                 f"needs alpha_deg, cl, cd (and optionally reynolds, mach, cm)")
+                raise ValueError(
+                    f"{path}: missing arrays {sorted(missing)}; an airfoil table "
+                    f"needs alpha_deg, cl, cd (and optionally reynolds, mach, cm)"
+                )
             alpha = np.radians(data["alpha_deg"])
             reynolds = data["reynolds"] if "reynolds" in keys else np.array([1e6])
             mach = data["mach"] if "mach" in keys else np.array([0.0])
             cm = data["cm"] if "cm" in keys else None
             name = str(data["name"]) if "name" in keys else Path(path).stem
             pressure = PressureTable.from_npz_data(data) if "cp_upper" in keys else None
-            return cls(alpha, reynolds, mach, data["cl"], data["cd"], cm, name=name,
-                       pressure=pressure, **kwargs)
+            return cls(
+                alpha,
+                reynolds,
+                mach,
+                data["cl"],
+                data["cd"],
+                cm,
+                name=name,
+                pressure=pressure,
+                **kwargs,
+            )
 
     @classmethod
-    def from_alpha_cl_cd(cls, alpha_deg, cl, cd, reynolds=1e6, mach=0.0, name="user table",
-                         **kwargs):
+    def from_alpha_cl_cd(
+        cls, alpha_deg, cl, cd, reynolds=1e6, mach=0.0, name="user table", **kwargs
+    ):
         """
         A single-(Re, M) polar from a table of alpha [deg], cl, cd (any order; sorted here).
 
@@ -469,14 +535,25 @@ class TablePolar(Polar):
         """
         alpha_deg, cl, cd = (np.asarray(v, dtype=float).ravel() for v in (alpha_deg, cl, cd))
         if not alpha_deg.size == cl.size == cd.size:
-            raise ValueError(f"{name}: alpha, cl and cd have lengths {alpha_deg.size}, {cl.size},"
-                             f" {cd.size}; allowed: equal lengths")
+            raise ValueError(
+                f"{name}: alpha, cl and cd have lengths {alpha_deg.size}, {cl.size},"
+                f" {cd.size}; allowed: equal lengths"
+            )
         if alpha_deg.size and np.ptp(alpha_deg) < 2.0:
-            raise ValueError(f"{name}: alpha spans {np.ptp(alpha_deg):.3g} deg; tables give alpha "
-                             f"in degrees over the attached range and past both stall points")
+            raise ValueError(
+                f"{name}: alpha spans {np.ptp(alpha_deg):.3g} deg; tables give alpha "
+                f"in degrees over the attached range and past both stall points"
+            )
         order = np.argsort(alpha_deg, kind="stable")
-        return cls(np.radians(alpha_deg[order]), [reynolds], [mach], cl[order], cd[order],
-                   name=name, **kwargs)
+        return cls(
+            np.radians(alpha_deg[order]),
+            [reynolds],
+            [mach],
+            cl[order],
+            cd[order],
+            name=name,
+            **kwargs,
+        )
 
     @classmethod
     def from_text(cls, path, **kwargs):
@@ -496,8 +573,10 @@ class TablePolar(Polar):
                 if len(values) == 3:
                     rows.append(values)
         if len(rows) < 5:
-            raise ValueError(f"{path}: found {len(rows)} rows of (alpha [deg], cl, cd); allowed:"
-                             f" a text table with at least 5 such rows")
+            raise ValueError(
+                f"{path}: found {len(rows)} rows of (alpha [deg], cl, cd); allowed:"
+                f" a text table with at least 5 such rows"
+            )
         rows = np.array(rows)
         kwargs.setdefault("name", Path(path).stem)
         return cls.from_alpha_cl_cd(rows[:, 0], rows[:, 1], rows[:, 2], **kwargs)
@@ -510,9 +589,11 @@ def airfoil_table_path(name):
     """Path of the shipped table of an airfoil name (see :data:`AIRFOIL_NAMES`)."""
     key = _ALIASES.get(str(name).strip().lower())
     if key is None:
-        raise ValueError(f"airfoil = {name!r}; allowed: {', '.join(AIRFOIL_NAMES)}, a file "
-                         f"(.npz or text with alpha [deg], cl, cd columns), an (n, 3) table or a "
-                         f"Polar")
+        raise ValueError(
+            f"airfoil = {name!r}; allowed: {', '.join(AIRFOIL_NAMES)}, a file "
+            f"(.npz or text with alpha [deg], cl, cd columns), an (n, 3) table or a "
+            f"Polar"
+        )
     return Path(str(resources.files("lpc_mdo") / "data" / f"airfoil_{key}.npz"))
 
 
@@ -570,13 +651,15 @@ def get_polar(airfoil):
         if d:
             raise ValueError(f"airfoil table dict: unknown keys {sorted(d)}")
         if np.size(re) == 1 and np.size(m) == 1:
-            return TablePolar.from_alpha_cl_cd(np.degrees(alpha), cl, cd, np.ravel(re)[0],
-                                               np.ravel(m)[0], name=name)
+            return TablePolar.from_alpha_cl_cd(
+                np.degrees(alpha), cl, cd, np.ravel(re)[0], np.ravel(m)[0], name=name
+            )
         return TablePolar(alpha, re, m, cl, cd, cm, name=name)
     table = np.asarray(airfoil, dtype=float)
     if table.ndim == 2 and table.shape[1] != 3 and table.shape[0] == 3:
         table = table.T
     if table.ndim != 2 or table.shape[1] != 3:
-        raise ValueError(f"airfoil table shape {table.shape}; allowed: (n, 3) rows of "
-                         f"alpha [deg], cl, cd")
+        raise ValueError(
+            f"airfoil table shape {table.shape}; allowed: (n, 3) rows of alpha [deg], cl, cd"
+        )
     return TablePolar.from_alpha_cl_cd(table[:, 0], table[:, 1], table[:, 2])

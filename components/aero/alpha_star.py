@@ -41,8 +41,11 @@ def stall_bracket(polar, reynolds, mach):
     if isinstance(polar, LinearQuadraticPolar):
         lo, hi = polar.alpha_stall
         return zero + lo, zero + hi, zero, zero, zero, zero
-    cl = np.real(polar.evaluate(_SCAN[:, None], np.real(reynolds).ravel()[None],
-                                np.real(mach).ravel()[None]).cl)
+    cl = np.real(
+        polar.evaluate(
+            _SCAN[:, None], np.real(reynolds).ravel()[None], np.real(mach).ravel()[None]
+        ).cl
+    )
     neg = _SCAN <= 0.0
     lo = _SCAN[neg][np.argmin(cl[neg], axis=0)].reshape(reynolds.shape)
     hi = _SCAN[~neg][np.argmax(cl[~neg], axis=0)].reshape(reynolds.shape)
@@ -95,38 +98,58 @@ class AlphaStarComp(om.ImplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare("num_sections", default=1, types=int, lower=1,
-                             desc="Number of spanwise sections")
-        self.options.declare("airfoil", default="ls413",
-                             desc="Airfoil name, table or Polar (see get_polar)")
-        self.options.declare("extension_slope", default=2.0 * np.pi, types=float, lower=1e-3,
-                             desc="Lift slope beyond the stall bracket, per rad")
-        self.options.declare("tolerance", default=1e-13, types=float, lower=0.0,
-                             desc="Residual tolerance of the inner solve")
-        self.options.declare("max_iter", default=100, types=int, lower=1,
-                             desc="Iteration limit of the inner solve")
+        self.options.declare(
+            "num_sections", default=1, types=int, lower=1, desc="Number of spanwise sections"
+        )
+        self.options.declare(
+            "airfoil", default="ls413", desc="Airfoil name, table or Polar (see get_polar)"
+        )
+        self.options.declare(
+            "extension_slope",
+            default=2.0 * np.pi,
+            types=float,
+            lower=1e-3,
+            desc="Lift slope beyond the stall bracket, per rad",
+        )
+        self.options.declare(
+            "tolerance",
+            default=1e-13,
+            types=float,
+            lower=0.0,
+            desc="Residual tolerance of the inner solve",
+        )
+        self.options.declare(
+            "max_iter", default=100, types=int, lower=1, desc="Iteration limit of the inner solve"
+        )
         self.num_beyond_stall = 0
 
     def setup(self):
         n = self.options["num_sections"]
         self._polar = get_polar(self.options["airfoil"])
-        self.add_input("lift_coefficient", val=np.zeros(n),
-                       desc="Sectional lift coefficient from the VLM")
+        self.add_input(
+            "lift_coefficient", val=np.zeros(n), desc="Sectional lift coefficient from the VLM"
+        )
         self.add_input("reynolds", val=1e6 * np.ones(n), desc="Chord Reynolds number")
         self.add_input("mach", val=np.zeros(n), desc="Mach number")
-        self.add_output("alpha_star", val=np.zeros(n), units="rad",
-                        desc="Section angle of attack with cl_airfoil = cl_VLM")
+        self.add_output(
+            "alpha_star",
+            val=np.zeros(n),
+            units="rad",
+            desc="Section angle of attack with cl_airfoil = cl_VLM",
+        )
         diag = np.arange(n)
         self.declare_partials("alpha_star", "lift_coefficient", rows=diag, cols=diag, val=1.0)
-        self.declare_partials("alpha_star", ["alpha_star", "reynolds", "mach"], rows=diag,
-                              cols=diag)
+        self.declare_partials(
+            "alpha_star", ["alpha_star", "reynolds", "mach"], rows=diag, cols=diag
+        )
 
     # ---------------------------------------------------------------------------- lift function
 
     def _lift(self, alpha, reynolds, mach, bracket=None):
         """g, dg/dalpha, dg/dRe, dg/dM (the bracketed, linearly continued lift curve)."""
-        lo, hi, dlo_re, dhi_re, dlo_m, dhi_m = (bracket if bracket is not None
-                                                else stall_bracket(self._polar, reynolds, mach))
+        lo, hi, dlo_re, dhi_re, dlo_m, dhi_m = (
+            bracket if bracket is not None else stall_bracket(self._polar, reynolds, mach)
+        )
         s = self.options["extension_slope"]
         above, below = np.real(alpha) > np.real(hi), np.real(alpha) < np.real(lo)
         a_eval = np.where(above, hi, np.where(below, lo, alpha))
@@ -154,8 +177,10 @@ class AlphaStarComp(om.ImplicitComponent):
         re, m = inputs["reynolds"], inputs["mach"]
         bad = ~(np.isfinite(target) & np.isfinite(re) & np.isfinite(m))
         if np.any(bad):
-            raise om.AnalysisError(f"{self.msginfo}: non-finite lift_coefficient, reynolds or "
-                                   f"mach at sections {np.flatnonzero(bad).tolist()}")
+            raise om.AnalysisError(
+                f"{self.msginfo}: non-finite lift_coefficient, reynolds or "
+                f"mach at sections {np.flatnonzero(bad).tolist()}"
+            )
         bracket = stall_bracket(self._polar, re, m)
         lo, hi = bracket[0].copy(), bracket[1].copy()
         s = self.options["extension_slope"]
@@ -163,30 +188,49 @@ class AlphaStarComp(om.ImplicitComponent):
         cl_hi = self._polar.evaluate(hi, re, m).cl
         above, below = target >= cl_hi, target <= cl_lo
         self.num_beyond_stall = int(np.count_nonzero(above | below))
-        alpha = np.where(above, hi + (target - cl_hi) / s,
-                         np.where(below, lo + (target - cl_lo) / s, 0.0))
+        alpha = np.where(
+            above, hi + (target - cl_hi) / s, np.where(below, lo + (target - cl_lo) / s, 0.0)
+        )
         inside = ~(above | below)
         if np.any(inside):
-            alpha[inside] = self._bracketed_newton(target[inside], re[inside], m[inside],
-                                                   lo[inside], hi[inside], cl_lo[inside],
-                                                   cl_hi[inside])
+            alpha[inside] = self._bracketed_newton(
+                target[inside],
+                re[inside],
+                m[inside],
+                lo[inside],
+                hi[inside],
+                cl_lo[inside],
+                cl_hi[inside],
+            )
         outputs["alpha_star"] = alpha
 
     def _bracketed_newton(self, target, re, m, a_lo, a_hi, f_lo, f_hi):
         """Solve cl(alpha) = target on [a_lo, a_hi] with cl(a_lo) < target < cl(a_hi)."""
+
         def residual(alpha, idx):
             v = self._polar.evaluate(alpha, re[idx], m[idx])
             return v.cl - target[idx], v.dcl_dalpha
 
-        return safeguarded_newton(residual, a_lo, a_hi, f_lower=f_lo - target,
-                                  f_upper=f_hi - target, ftol=self.options["tolerance"],
-                                  xtol_abs=4.0 * _EPS, xtol_rel=4.0 * _EPS,
-                                  maxiter=self.options["max_iter"], indexed=True,
-                                  variable="alpha*", units="rad", where=self.msginfo)
+        return safeguarded_newton(
+            residual,
+            a_lo,
+            a_hi,
+            f_lower=f_lo - target,
+            f_upper=f_hi - target,
+            ftol=self.options["tolerance"],
+            xtol_abs=4.0 * _EPS,
+            xtol_rel=4.0 * _EPS,
+            maxiter=self.options["max_iter"],
+            indexed=True,
+            variable="alpha*",
+            units="rad",
+            where=self.msginfo,
+        )
 
     def linearize(self, inputs, outputs, partials):
-        _, dg_da, dg_dre, dg_dm = self._lift(outputs["alpha_star"], inputs["reynolds"],
-                                             inputs["mach"])
+        _, dg_da, dg_dre, dg_dm = self._lift(
+            outputs["alpha_star"], inputs["reynolds"], inputs["mach"]
+        )
         self._dr_da = -dg_da
         partials["alpha_star", "alpha_star"] = -dg_da
         partials["alpha_star", "reynolds"] = -dg_dre

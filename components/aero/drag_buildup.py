@@ -56,19 +56,30 @@ class LiftingSurfaceDrag:
     def __post_init__(self):
         owner = f"LiftingSurfaceDrag '{self.name}'"
         _check_fraction(owner, "thickness_to_chord", self.thickness_to_chord, 0.0, 0.5, True)
-        _check_fraction(owner, "max_thickness_location", self.max_thickness_location, 0.0, 1.0,
-                        True)
+        _check_fraction(
+            owner, "max_thickness_location", self.max_thickness_location, 0.0, 1.0, True
+        )
         _check_fraction(owner, "laminar_fraction", self.laminar_fraction)
         _check_fraction(owner, "exposed_fraction", self.exposed_fraction, 0.0, 1.0, True)
         _check_fraction(owner, "interference_factor", self.interference_factor, 0.0, 10.0, True)
-        check_number("sweep", self.sweep, lower=-math.pi / 2, upper=math.pi / 2,
-                     lower_open=True, upper_open=True, units="rad", where=owner)
+        check_number(
+            "sweep",
+            self.sweep,
+            lower=-math.pi / 2,
+            upper=math.pi / 2,
+            lower_open=True,
+            upper_open=True,
+            units="rad",
+            where=owner,
+        )
 
     @property
     def inputs(self):
         """(suffix, units, default, desc) of the component's inputs."""
-        return (("area", "m**2", 1.0, "planform reference area"),
-                ("mean_aerodynamic_chord", "m", 1.0, "mean aerodynamic chord"))
+        return (
+            ("area", "m**2", 1.0, "planform reference area"),
+            ("mean_aerodynamic_chord", "m", 1.0, "mean aerodynamic chord"),
+        )
 
     #: Which of (wetted area, form factor, length) each input changes.
     depends = {"area": ("wetted",), "mean_aerodynamic_chord": ("length",)}
@@ -85,8 +96,12 @@ class LiftingSurfaceDrag:
         area, mac = values["area"], values["mean_aerodynamic_chord"]
         _check_positive(self.name, (("area", area), ("mean_aerodynamic_chord", mac)))
         one, zero = np.ones_like(area), np.zeros_like(area)
-        return (k * area, self.form_factor * one, mac,
-                {"area": (k * one, zero, zero), "mean_aerodynamic_chord": (zero, zero, one)})
+        return (
+            k * area,
+            self.form_factor * one,
+            mac,
+            {"area": (k * one, zero, zero), "mean_aerodynamic_chord": (zero, zero, one)},
+        )
 
 
 @dataclass(frozen=True)
@@ -118,19 +133,25 @@ class BodyDrag:
     @property
     def inputs(self):
         """(suffix, units, default, desc) of the component's inputs."""
-        return (("length", "m", 1.0, "body length"),
-                ("max_height", "m", 0.1, "maximum body height"),
-                ("max_width", "m", 0.1, "maximum body width"))
+        return (
+            ("length", "m", 1.0, "body length"),
+            ("max_height", "m", 0.1, "maximum body height"),
+            ("max_width", "m", 0.1, "maximum body width"),
+        )
 
     #: Which of (wetted area, form factor, length) each input changes.
-    depends = {"length": ("wetted", "form", "length"), "max_height": ("wetted", "form"),
-               "max_width": ("wetted", "form")}
+    depends = {
+        "length": ("wetted", "form", "length"),
+        "max_height": ("wetted", "form"),
+        "max_width": ("wetted", "form"),
+    }
 
     def evaluate(self, values):
         """Wetted area, form factor, length and their derivatives w.r.t. the inputs."""
         length, height, width = values["length"], values["max_height"], values["max_width"]
-        _check_positive(self.name, (("length", length), ("max_height", height),
-                                    ("max_width", width)))
+        _check_positive(
+            self.name, (("length", length), ("max_height", height), ("max_width", width))
+        )
         zero, one = np.zeros_like(length), np.ones_like(length)
         # Form factor with f = L/max(H, W); the selection is made on the real parts (CS-safe).
         h_larger = height.real >= width.real
@@ -138,16 +159,19 @@ class BodyDrag:
         f = length / dmax
         ff = 1.0 + 60.0 / f**3 + f / 400.0
         dff_df = -180.0 / f**4 + 1.0 / 400.0
-        dff = {"length": dff_df / dmax,
-               "max_height": np.where(h_larger, -dff_df * f / dmax, zero),
-               "max_width": np.where(h_larger, zero, -dff_df * f / dmax)}
+        dff = {
+            "length": dff_df / dmax,
+            "max_height": np.where(h_larger, -dff_df * f / dmax, zero),
+            "max_width": np.where(h_larger, zero, -dff_df * f / dmax),
+        }
         # Torenbeek wetted area with the equivalent diameter.
         d = np.sqrt(height * width)
         fe = length / d
         if not fe.real[0] > 2.0:
             raise om.AnalysisError(
                 f"{self.name}_length/sqrt({self.name}_max_height*{self.name}_max_width) = "
-                f"{fe.real[0]:.6g}; the wetted-area estimate needs a fineness ratio > 2.")
+                f"{fe.real[0]:.6g}; the wetted-area estimate needs a fineness ratio > 2."
+            )
         g1 = (1.0 - 2.0 / fe) ** (2.0 / 3.0)
         g2 = 1.0 + 1.0 / fe**2
         swet = np.pi * d * length * g1 * g2
@@ -156,10 +180,16 @@ class BodyDrag:
         dswet_dl = np.pi * g1 * g2 * d + np.pi * d * length * dg / d
         dswet_dd = np.pi * g1 * g2 * length - np.pi * d * length * dg * length / d**2
         dd_dh, dd_dw = 0.5 * d / height, 0.5 * d / width
-        return (swet, ff, length,
-                {"length": (dswet_dl, dff["length"], one),
-                 "max_height": (dswet_dd * dd_dh, dff["max_height"], zero),
-                 "max_width": (dswet_dd * dd_dw, dff["max_width"], zero)})
+        return (
+            swet,
+            ff,
+            length,
+            {
+                "length": (dswet_dl, dff["length"], one),
+                "max_height": (dswet_dd * dd_dh, dff["max_height"], zero),
+                "max_width": (dswet_dd * dd_dw, dff["max_width"], zero),
+            },
+        )
 
 
 @dataclass(frozen=True)
@@ -194,8 +224,10 @@ class FixedFormFactorDrag:
     @property
     def inputs(self):
         """(suffix, units, default, desc) of the component's inputs."""
-        return (("length", "m", 1.0, "characteristic length of one part"),
-                ("wetted_area", "m**2", 1.0, "wetted area of one part"))
+        return (
+            ("length", "m", 1.0, "characteristic length of one part"),
+            ("wetted_area", "m**2", 1.0, "wetted area of one part"),
+        )
 
     #: Which of (wetted area, form factor, length) each input changes.
     depends = {"length": ("length",), "wetted_area": ("wetted",)}
@@ -205,14 +237,17 @@ class FixedFormFactorDrag:
         length, swet = values["length"], values["wetted_area"]
         _check_positive(self.name, (("length", length), ("wetted_area", swet)))
         zero, one = np.zeros_like(length), np.ones_like(length)
-        return (self.count * swet, self.form_factor * one, length,
-                {"length": (zero, zero, one), "wetted_area": (self.count * one, zero, zero)})
+        return (
+            self.count * swet,
+            self.form_factor * one,
+            length,
+            {"length": (zero, zero, one), "wetted_area": (self.count * one, zero, zero)},
+        )
 
 
 def _check_positive(owner, pairs):
     for field, value in pairs:
-        check_range(f"{owner}_{field}", value, lower=0.0, lower_open=True,
-                    error=om.AnalysisError)
+        check_range(f"{owner}_{field}", value, lower=0.0, lower_open=True, error=om.AnalysisError)
 
 
 _SPEC_TYPES = (LiftingSurfaceDrag, BodyDrag, FixedFormFactorDrag)
@@ -223,8 +258,9 @@ def _check_components(name, value):
         raise ValueError(f"{name} = {value!r}; must be a non-empty tuple of drag components.")
     for spec in value:
         if not isinstance(spec, _SPEC_TYPES):
-            raise ValueError(f"{name}: {spec!r} is not a LiftingSurfaceDrag, BodyDrag or "
-                             "FixedFormFactorDrag.")
+            raise ValueError(
+                f"{name}: {spec!r} is not a LiftingSurfaceDrag, BodyDrag or FixedFormFactorDrag."
+            )
     names = [s.name for s in value]
     if len(set(names)) != len(names):
         raise ValueError(f"{name}: component names {names} must be unique.")
@@ -288,14 +324,29 @@ class DragBuildupComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare("components", types=(tuple, list), check_valid=_check_components,
-                             desc="tuple of LiftingSurfaceDrag/BodyDrag/FixedFormFactorDrag")
-        self.options.declare("num_nodes", default=1, types=int, lower=1,
-                             desc="number of flight conditions")
-        self.options.declare("drag_factor", default=1.0, types=float, lower=0.0,
-                             desc="multiplier of C_D0 and the parasite drag")
-        self.options.declare("min_reynolds", default=1.0e3, types=float, lower=1.0,
-                             desc="smooth floor of the Reynolds number")
+        self.options.declare(
+            "components",
+            types=(tuple, list),
+            check_valid=_check_components,
+            desc="tuple of LiftingSurfaceDrag/BodyDrag/FixedFormFactorDrag",
+        )
+        self.options.declare(
+            "num_nodes", default=1, types=int, lower=1, desc="number of flight conditions"
+        )
+        self.options.declare(
+            "drag_factor",
+            default=1.0,
+            types=float,
+            lower=0.0,
+            desc="multiplier of C_D0 and the parasite drag",
+        )
+        self.options.declare(
+            "min_reynolds",
+            default=1.0e3,
+            types=float,
+            lower=1.0,
+            desc="smooth floor of the Reynolds number",
+        )
 
     def setup(self):
         nn = self.options["num_nodes"]
@@ -303,29 +354,43 @@ class DragBuildupComp(om.ExplicitComponent):
         nc = len(comps)
         for spec in comps:
             for suffix, units, default, desc in spec.inputs:
-                self.add_input(f"{spec.name}_{suffix}", default, units=units,
-                               desc=f"{spec.name}: {desc}")
+                self.add_input(
+                    f"{spec.name}_{suffix}", default, units=units, desc=f"{spec.name}: {desc}"
+                )
         self.add_input("lumped_drag_area", 0.0, units="m**2", desc="drag area added as is")
         self.add_input("reference_area", 1.0, units="m**2", desc="reference area of C_D0")
         for name, units, default, desc in (
-                ("speed", "m/s", 0.0, "airspeed"),
-                ("density", "kg/m**3", SEA_LEVEL_DENSITY, "air density"),
-                ("dynamic_viscosity", "Pa*s", 1.7894e-5, "dynamic viscosity of air"),
-                ("speed_of_sound", "m/s", SEA_LEVEL_SPEED_OF_SOUND, "speed of sound"),
-                ("angle_of_attack", "rad", 0.0, "angle of attack"),
-                ("sideslip_angle", "rad", 0.0, "sideslip angle")):
+            ("speed", "m/s", 0.0, "airspeed"),
+            ("density", "kg/m**3", SEA_LEVEL_DENSITY, "air density"),
+            ("dynamic_viscosity", "Pa*s", 1.7894e-5, "dynamic viscosity of air"),
+            ("speed_of_sound", "m/s", SEA_LEVEL_SPEED_OF_SOUND, "speed of sound"),
+            ("angle_of_attack", "rad", 0.0, "angle of attack"),
+            ("sideslip_angle", "rad", 0.0, "sideslip angle"),
+        ):
             self.add_input(name, np.full(nn, default), units=units, desc=desc)
 
         self.add_output("wetted_areas", np.ones(nc), units="m**2", desc="wetted area per component")
         self.add_output("form_factors", np.ones(nc), units=None, desc="form factor per component")
-        self.add_output("skin_friction_coefficients", np.zeros((nn, nc)), units=None,
-                        desc="skin-friction coefficient per condition and component")
-        self.add_output("drag_areas", np.zeros((nn, nc)), units="m**2",
-                        desc="C_f FF Q S_wet per condition and component")
+        self.add_output(
+            "skin_friction_coefficients",
+            np.zeros((nn, nc)),
+            units=None,
+            desc="skin-friction coefficient per condition and component",
+        )
+        self.add_output(
+            "drag_areas",
+            np.zeros((nn, nc)),
+            units="m**2",
+            desc="C_f FF Q S_wet per condition and component",
+        )
         self.add_output("CD0", np.zeros(nn), units=None, desc="parasite-drag coefficient")
         self.add_output("parasite_drag", np.zeros(nn), units="N", desc="parasite drag")
-        self.add_output("parasite_drag_force", np.zeros((nn, 3)), units="N",
-                        desc="parasite-drag force along the relative wind, body axes")
+        self.add_output(
+            "parasite_drag_force",
+            np.zeros((nn, 3)),
+            units="N",
+            desc="parasite-drag force along the relative wind, body axes",
+        )
 
         ar, node_i = np.arange(nn), np.repeat(np.arange(nn), nc)
         nodewise = ("speed", "density", "dynamic_viscosity", "speed_of_sound")
@@ -336,11 +401,15 @@ class DragBuildupComp(om.ExplicitComponent):
             self.declare_partials(out, "lumped_drag_area", rows=ar, cols=np.zeros(nn, int))
         self.declare_partials("CD0", "reference_area", rows=ar, cols=np.zeros(nn, int))
         rows3, node3 = np.arange(3 * nn), np.repeat(ar, 3)
-        self.declare_partials("parasite_drag_force", list(nodewise) + ["angle_of_attack",
-                                                                       "sideslip_angle"],
-                              rows=rows3, cols=node3)
-        self.declare_partials("parasite_drag_force", "lumped_drag_area", rows=rows3,
-                              cols=np.zeros(3 * nn, int))
+        self.declare_partials(
+            "parasite_drag_force",
+            list(nodewise) + ["angle_of_attack", "sideslip_angle"],
+            rows=rows3,
+            cols=node3,
+        )
+        self.declare_partials(
+            "parasite_drag_force", "lumped_drag_area", rows=rows3, cols=np.zeros(3 * nn, int)
+        )
         for i, spec in enumerate(comps):
             for suffix, *_ in spec.inputs:
                 name = f"{spec.name}_{suffix}"
@@ -350,14 +419,16 @@ class DragBuildupComp(om.ExplicitComponent):
                 if "form" in dep:
                     self.declare_partials("form_factors", name, rows=[i], cols=[0])
                 if "length" in dep:
-                    self.declare_partials("skin_friction_coefficients", name, rows=ar * nc + i,
-                                          cols=np.zeros(nn, int))
-                self.declare_partials("drag_areas", name, rows=ar * nc + i,
-                                      cols=np.zeros(nn, int))
-                self.declare_partials(["CD0", "parasite_drag"], name, rows=ar,
-                                      cols=np.zeros(nn, int))
-                self.declare_partials("parasite_drag_force", name, rows=rows3,
-                                      cols=np.zeros(3 * nn, int))
+                    self.declare_partials(
+                        "skin_friction_coefficients", name, rows=ar * nc + i, cols=np.zeros(nn, int)
+                    )
+                self.declare_partials("drag_areas", name, rows=ar * nc + i, cols=np.zeros(nn, int))
+                self.declare_partials(
+                    ["CD0", "parasite_drag"], name, rows=ar, cols=np.zeros(nn, int)
+                )
+                self.declare_partials(
+                    "parasite_drag_force", name, rows=rows3, cols=np.zeros(3 * nn, int)
+                )
 
     def _evaluate(self, inputs):
         comps = self.options["components"]
@@ -384,11 +455,19 @@ class DragBuildupComp(om.ExplicitComponent):
         comp = (1.0 + 0.144 * mach**2) ** 0.65
         log_re = np.log10(re)
         cf = lam * 1.328 / np.sqrt(re) + (1.0 - lam) * 0.455 / (log_re**2.58 * comp)
-        dcf_dre = (-0.664 * lam * re**-1.5
-                   - (1.0 - lam) * 0.455 * 2.58 / (log_re**3.58 * comp * re * np.log(10.0)))
+        dcf_dre = -0.664 * lam * re**-1.5 - (1.0 - lam) * 0.455 * 2.58 / (
+            log_re**3.58 * comp * re * np.log(10.0)
+        )
         dcf_dre = dcf_dre * re_raw / re  # through the floor
-        dcf_dm = -(1.0 - lam) * 0.455 / log_re**2.58 * 0.65 * 0.288 * mach / (
-            (1.0 + 0.144 * mach**2) ** 1.65)
+        dcf_dm = (
+            -(1.0 - lam)
+            * 0.455
+            / log_re**2.58
+            * 0.65
+            * 0.288
+            * mach
+            / ((1.0 + 0.144 * mach**2) ** 1.65)
+        )
         return cf, re_raw, dcf_dre, dcf_dm
 
     def compute(self, inputs, outputs):
@@ -435,12 +514,18 @@ class DragBuildupComp(om.ExplicitComponent):
 
         # Reynolds number Re = rho V L/mu, Mach number M = V/a
         re_per = (rho * length[:, None] / mu).T  # dRe/dV, (nn, nc)
-        dcf = {"speed": dcf_dre * re_per + dcf_dm / a[:, None],
-               "density": dcf_dre * re_raw / rho[:, None],
-               "dynamic_viscosity": -dcf_dre * re_raw / mu[:, None],
-               "speed_of_sound": -dcf_dm * (speed / a**2)[:, None]}
-        dq = {"speed": rho * speed, "density": 0.5 * speed**2,
-              "dynamic_viscosity": np.zeros_like(q), "speed_of_sound": np.zeros_like(q)}
+        dcf = {
+            "speed": dcf_dre * re_per + dcf_dm / a[:, None],
+            "density": dcf_dre * re_raw / rho[:, None],
+            "dynamic_viscosity": -dcf_dre * re_raw / mu[:, None],
+            "speed_of_sound": -dcf_dm * (speed / a**2)[:, None],
+        }
+        dq = {
+            "speed": rho * speed,
+            "density": 0.5 * speed**2,
+            "dynamic_viscosity": np.zeros_like(q),
+            "speed_of_sound": np.zeros_like(q),
+        }
         for name, d in dcf.items():
             d_area = d * geom[None, :]
             d_total = np.sum(d_area, axis=1)
@@ -465,8 +550,9 @@ class DragBuildupComp(om.ExplicitComponent):
                 name = f"{spec.name}_{suffix}"
                 d_swet, d_ff, d_len = d_swet[0], d_ff[0], d_len[0]
                 d_cf = dcf_dl[:, i] * d_len
-                d_area = q_int[i] * (d_cf * ff[i] * swet[i] + cf[:, i] * (d_ff * swet[i]
-                                                                         + ff[i] * d_swet))
+                d_area = q_int[i] * (
+                    d_cf * ff[i] * swet[i] + cf[:, i] * (d_ff * swet[i] + ff[i] * d_swet)
+                )
                 dep = spec.depends[suffix]
                 if "wetted" in dep:
                     partials["wetted_areas", name] = d_swet
@@ -487,8 +573,10 @@ def max_thickness_sweep(surface, mirrored=True):
     surface and b (the height) for the vertical tail.
     """
     half = surface.span / 2.0 if mirrored else surface.span
-    return math.atan(math.tan(surface.sweep) - surface.max_thickness_location
-                     * (surface.root_chord - surface.tip_chord) / half)
+    return math.atan(
+        math.tan(surface.sweep)
+        - surface.max_thickness_location * (surface.root_chord - surface.tip_chord) / half
+    )
 
 
 def lpc_drag_components(vehicle=None, boom_diameter=LPC_BOOM_DIAMETER):
@@ -511,21 +599,29 @@ def lpc_drag_components(vehicle=None, boom_diameter=LPC_BOOM_DIAMETER):
 
     v = vehicle or reference_vehicle()
     comps, values = [], {}
-    for name, surf, mirrored in (("wing", v.wing, True), ("horizontal_tail", v.horizontal_tail,
-                                                          True),
-                                 ("vertical_tail", v.vertical_tail, False)):
-        comps.append(LiftingSurfaceDrag(name, surf.thickness_to_chord,
-                                        surf.max_thickness_location,
-                                        sweep=max_thickness_sweep(surf, mirrored),
-                                        laminar_fraction=surf.laminar_fraction))
+    for name, surf, mirrored in (
+        ("wing", v.wing, True),
+        ("horizontal_tail", v.horizontal_tail, True),
+        ("vertical_tail", v.vertical_tail, False),
+    ):
+        comps.append(
+            LiftingSurfaceDrag(
+                name,
+                surf.thickness_to_chord,
+                surf.max_thickness_location,
+                sweep=max_thickness_sweep(surf, mirrored),
+                laminar_fraction=surf.laminar_fraction,
+            )
+        )
         values[f"{name}_area"] = surf.area
         values[f"{name}_mean_aerodynamic_chord"] = surf.mean_aerodynamic_chord
     comps.append(BodyDrag("fuselage"))
     values["fuselage_length"] = v.fuselage.length
     values["fuselage_max_height"] = v.fuselage.max_height
     values["fuselage_max_width"] = v.fuselage.max_width
-    comps.append(FixedFormFactorDrag("booms", v.booms.form_factor,
-                                     count=len(v.booms.attach_points)))
+    comps.append(
+        FixedFormFactorDrag("booms", v.booms.form_factor, count=len(v.booms.attach_points))
+    )
     values["booms_length"] = v.booms.length
     values["booms_wetted_area"] = math.pi * boom_diameter * v.booms.length
     values["lumped_drag_area"] = LPC_ROTOR_DRAG_AREA

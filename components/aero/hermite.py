@@ -33,10 +33,14 @@ class HermiteAxis:
         Interpolate in ln(x) (for Reynolds numbers); nodes must be > 0.
     """
 
-    _H = np.array([[1.0, 0.0, -3.0, 2.0],    # h00
-                   [0.0, 1.0, -2.0, 1.0],    # h10 (times h)
-                   [0.0, 0.0, 3.0, -2.0],    # h01
-                   [0.0, 0.0, -1.0, 1.0]])   # h11 (times h)
+    _H = np.array(
+        [
+            [1.0, 0.0, -3.0, 2.0],  # h00
+            [0.0, 1.0, -2.0, 1.0],  # h10 (times h)
+            [0.0, 0.0, 3.0, -2.0],  # h01
+            [0.0, 0.0, -1.0, 1.0],
+        ]
+    )  # h11 (times h)
 
     def __init__(self, nodes, log=False):
         nodes = np.asarray(nodes, dtype=float)
@@ -65,7 +69,7 @@ class HermiteAxis:
             full[:, k + 1] += self._H[2]
             full += self.h[k] * (np.outer(self._H[1], d[k]) + np.outer(self._H[3], d[k + 1]))
             s = self.starts[k]
-            coef[k] = full[:, s:s + self.width]
+            coef[k] = full[:, s : s + self.width]
         self.coef = coef
 
     @staticmethod
@@ -79,14 +83,23 @@ class HermiteAxis:
         h = np.diff(x)
         for i in range(1, n - 1):
             h0, h1 = h[i - 1], h[i]
-            d[i, i - 1:i + 2] = (-h1 / (h0 * (h0 + h1)), (h1 - h0) / (h0 * h1),
-                                 h0 / (h1 * (h0 + h1)))
+            d[i, i - 1 : i + 2] = (
+                -h1 / (h0 * (h0 + h1)),
+                (h1 - h0) / (h0 * h1),
+                h0 / (h1 * (h0 + h1)),
+            )
         h0, h1 = h[0], h[1]
-        d[0, :3] = (-(2 * h0 + h1) / (h0 * (h0 + h1)), (h0 + h1) / (h0 * h1),
-                    -h0 / (h1 * (h0 + h1)))
+        d[0, :3] = (
+            -(2 * h0 + h1) / (h0 * (h0 + h1)),
+            (h0 + h1) / (h0 * h1),
+            -h0 / (h1 * (h0 + h1)),
+        )
         h0, h1 = h[-2], h[-1]
-        d[-1, -3:] = (h1 / (h0 * (h0 + h1)), -(h0 + h1) / (h0 * h1),
-                      (2 * h1 + h0) / (h1 * (h0 + h1)))
+        d[-1, -3:] = (
+            h1 / (h0 * (h0 + h1)),
+            -(h0 + h1) / (h0 * h1),
+            (2 * h1 + h0) / (h1 * (h0 + h1)),
+        )
         return d
 
     def weights(self, q, second=False):
@@ -168,5 +181,9 @@ def tensor_eval(table, index, weights, dweights):
     g23 = np.einsum("nab...,nb->na...", g3, v)
     g2d3 = np.einsum("nab...,nb->na...", g3, dv)
     g23d = np.einsum("nab...,nb->na...", g3d, v)
-    return (np.einsum("na...,na->n...", g23, u), np.einsum("na...,na->n...", g23, du),
-            np.einsum("na...,na->n...", g2d3, u), np.einsum("na...,na->n...", g23d, u))
+    return (
+        np.einsum("na...,na->n...", g23, u),
+        np.einsum("na...,na->n...", g23, du),
+        np.einsum("na...,na->n...", g2d3, u),
+        np.einsum("na...,na->n...", g23d, u),
+    )

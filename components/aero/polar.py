@@ -72,16 +72,25 @@ def _hermite(x, x0, x1, f0, d0, f1, d1):
     h = x1 - x0
     t = (x - x0) / h
     t2, t3 = t * t, t * t * t
-    f = ((2 * t3 - 3 * t2 + 1) * f0 + (t3 - 2 * t2 + t) * h * d0
-         + (-2 * t3 + 3 * t2) * f1 + (t3 - t2) * h * d1)
-    df = ((6 * t2 - 6 * t) * f0 + (3 * t2 - 4 * t + 1) * h * d0
-          + (-6 * t2 + 6 * t) * f1 + (3 * t2 - 2 * t) * h * d1) / h
+    f = (
+        (2 * t3 - 3 * t2 + 1) * f0
+        + (t3 - 2 * t2 + t) * h * d0
+        + (-2 * t3 + 3 * t2) * f1
+        + (t3 - t2) * h * d1
+    )
+    df = (
+        (6 * t2 - 6 * t) * f0
+        + (3 * t2 - 4 * t + 1) * h * d0
+        + (-6 * t2 + 6 * t) * f1
+        + (3 * t2 - 2 * t) * h * d1
+    ) / h
     return f, df
 
 
 def viterna_cd_max(aspect_ratio=10.0):
     """Viterna's maximum drag coefficient CD_max = 1.11 + 0.018 AR (docs theory/aerodynamics
-    'Viterna extrapolation'; 1.29 for AR = 10)."""
+    'Viterna extrapolation'; 1.29 for AR = 10).
+    """
     return 1.11 + 0.018 * aspect_ratio
 
 
@@ -184,20 +193,36 @@ class LinearQuadraticPolar(Polar):
 
     name = "linear_quadratic"
 
-    def __init__(self, alpha_stall=_DEFAULT_STALL, cl_stall=(-1.0, 1.5),
-                 cd_stall=(0.02, 0.06), cl0=0.5, cd0=0.008, cl_alpha=5.1566,
-                 blend=_DEFAULT_BLEND, aspect_ratio=10.0):
+    def __init__(
+        self,
+        alpha_stall=_DEFAULT_STALL,
+        cl_stall=(-1.0, 1.5),
+        cd_stall=(0.02, 0.06),
+        cl0=0.5,
+        cd0=0.008,
+        cl_alpha=5.1566,
+        blend=_DEFAULT_BLEND,
+        aspect_ratio=10.0,
+    ):
         a_neg, a_pos = (float(a) for a in alpha_stall)
         checks = (
-            ("alpha_stall", (a_neg, a_pos), -np.pi / 2 + blend < a_neg < 0.0 < a_pos
-             < np.pi / 2 - blend, "negative < 0 < positive, within +-(90 deg - blend)"),
+            (
+                "alpha_stall",
+                (a_neg, a_pos),
+                -np.pi / 2 + blend < a_neg < 0.0 < a_pos < np.pi / 2 - blend,
+                "negative < 0 < positive, within +-(90 deg - blend)",
+            ),
             ("blend", blend, 0.0 < blend < min(-a_neg, a_pos) / 2, "0 < blend < stall angle/2"),
             ("cd0", cd0, cd0 > 0.0, "> 0"),
             ("cl_alpha", cl_alpha, cl_alpha > 0.0, "> 0 per rad"),
             ("aspect_ratio", aspect_ratio, aspect_ratio > 0.0, "> 0"),
             ("cd_stall", cd_stall, min(cd_stall) > 0.0, "> 0"),
-            ("cl_stall", cl_stall, cl_stall[0] < cl0 < cl_stall[1], "cl_stall[0] < cl0 < "
-             "cl_stall[1]"),
+            (
+                "cl_stall",
+                cl_stall,
+                cl_stall[0] < cl0 < cl_stall[1],
+                "cl_stall[0] < cl0 < cl_stall[1]",
+            ),
         )
         for field, value, ok, allowed in checks:
             if not ok:
@@ -209,8 +234,10 @@ class LinearQuadraticPolar(Polar):
         self.cl0, self.cd0, self.cl_alpha = float(cl0), float(cd0), float(cl_alpha)
         self.blend = float(blend)
         self.cd_max = viterna_cd_max(aspect_ratio)
-        self.k = 0.5 * ((self.cd_stall[1] - cd0) / (cl0 - self.cl_stall[1]) ** 2
-                        + (self.cd_stall[0] - cd0) / (cl0 - self.cl_stall[0]) ** 2)
+        self.k = 0.5 * (
+            (self.cd_stall[1] - cd0) / (cl0 - self.cl_stall[1]) ** 2
+            + (self.cd_stall[0] - cd0) / (cl0 - self.cl_stall[0]) ** 2
+        )
         self._a2 = []
         self._b2 = []
         for a_s, cl_s, cd_s in zip(self.alpha_stall, self.cl_stall, self.cd_stall, strict=True):
@@ -246,8 +273,9 @@ class LinearQuadraticPolar(Polar):
         return cl, cd, dcl, dcd
 
     def evaluate(self, alpha, reynolds, mach):
-        alpha, reynolds, mach = np.broadcast_arrays(np.asarray(alpha), np.asarray(reynolds),
-                                                    np.asarray(mach))
+        alpha, reynolds, mach = np.broadcast_arrays(
+            np.asarray(alpha), np.asarray(reynolds), np.asarray(mach)
+        )
         a = wrap_angle(alpha)
         ar = np.real(a)
         eps = self.blend
@@ -270,6 +298,13 @@ class LinearQuadraticPolar(Polar):
                 for target, value in zip(out, values, strict=True):
                     target[mask] = value
         zeros = np.zeros(a.shape)
-        return PolarValues(cl=out[0], cd=out[1], dcl_dalpha=out[2], dcd_dalpha=out[3],
-                           dcl_dreynolds=zeros, dcd_dreynolds=zeros, dcl_dmach=zeros,
-                           dcd_dmach=zeros)
+        return PolarValues(
+            cl=out[0],
+            cd=out[1],
+            dcl_dalpha=out[2],
+            dcd_dalpha=out[3],
+            dcl_dreynolds=zeros,
+            dcd_dreynolds=zeros,
+            dcl_dmach=zeros,
+            dcd_dmach=zeros,
+        )

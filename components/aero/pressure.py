@@ -36,8 +36,10 @@ def get_pressure_table(airfoil):
     polar = get_polar(airfoil)
     table = getattr(polar, "pressure", None)
     if table is None:
-        raise ValueError(f"airfoil = {airfoil!r} has no pressure (Cp) table; allowed: 'ls413', "
-                         f"'ls417', a TablePolar with a pressure table, or a PressureTable")
+        raise ValueError(
+            f"airfoil = {airfoil!r} has no pressure (Cp) table; allowed: 'ls413', "
+            f"'ls417', a TablePolar with a pressure table, or a PressureTable"
+        )
     return table
 
 
@@ -93,39 +95,56 @@ class SectionPressureComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare("num_sections", default=1, types=int, lower=1,
-                             desc="Number of spanwise sections")
-        self.options.declare("airfoil", default="ls413",
-                             desc="Wing airfoil with a Cp table: 'ls413', 'ls417', a TablePolar "
-                                  "with a pressure table or a PressureTable")
+        self.options.declare(
+            "num_sections", default=1, types=int, lower=1, desc="Number of spanwise sections"
+        )
+        self.options.declare(
+            "airfoil",
+            default="ls413",
+            desc="Wing airfoil with a Cp table: 'ls413', 'ls417', a TablePolar "
+            "with a pressure table or a PressureTable",
+        )
 
     def setup(self):
         n = self.options["num_sections"]
         self._table = get_pressure_table(self.options["airfoil"])
         self.x_stations = self._table.x
         n_x = self.x_stations.size
-        self.add_input("alpha_star", val=np.zeros(n), units="rad",
-                       desc="Section angle of attack alpha*")
+        self.add_input(
+            "alpha_star", val=np.zeros(n), units="rad", desc="Section angle of attack alpha*"
+        )
         self.add_input("reynolds", val=1e6 * np.ones(n), desc="Chord Reynolds number")
         self.add_input("mach", val=np.zeros(n), desc="Mach number")
-        self.add_input("dynamic_pressure", val=np.ones(n), units="Pa",
-                       desc="Local dynamic pressure")
+        self.add_input(
+            "dynamic_pressure", val=np.ones(n), units="Pa", desc="Local dynamic pressure"
+        )
         self.add_input("chord", val=np.ones(n), units="m", desc="Section chord")
-        self.add_input("axis_location", val=0.5 * np.ones(n),
-                       desc="Chordwise position x/c of the moment (beam) axis")
+        self.add_input(
+            "axis_location",
+            val=0.5 * np.ones(n),
+            desc="Chordwise position x/c of the moment (beam) axis",
+        )
         self.add_output("cp_upper", val=np.zeros((n, n_x)), desc="Upper-surface Cp")
         self.add_output("cp_lower", val=np.zeros((n, n_x)), desc="Lower-surface Cp")
-        for name, desc in (("normal_force_coefficient", "cn, normal to the chord, up"),
-                           ("axial_force_coefficient", "ca, along the chord, aft"),
-                           ("pressure_lift_coefficient", "cn cos(a) - ca sin(a)"),
-                           ("moment_coefficient", "Pitching moment about the axis / (q c^2)")):
+        for name, desc in (
+            ("normal_force_coefficient", "cn, normal to the chord, up"),
+            ("axial_force_coefficient", "ca, along the chord, aft"),
+            ("pressure_lift_coefficient", "cn cos(a) - ca sin(a)"),
+            ("moment_coefficient", "Pitching moment about the axis / (q c^2)"),
+        ):
             self.add_output(name, val=np.zeros(n), desc=desc)
-        self.add_output("normal_force", val=np.zeros(n), units="N/m",
-                        desc="Section normal force per unit span")
-        self.add_output("axial_force", val=np.zeros(n), units="N/m",
-                        desc="Section axial force per unit span")
-        self.add_output("pitching_moment", val=np.zeros(n), units="N*m/m",
-                        desc="Section pitching moment about the axis per unit span, nose up")
+        self.add_output(
+            "normal_force", val=np.zeros(n), units="N/m", desc="Section normal force per unit span"
+        )
+        self.add_output(
+            "axial_force", val=np.zeros(n), units="N/m", desc="Section axial force per unit span"
+        )
+        self.add_output(
+            "pitching_moment",
+            val=np.zeros(n),
+            units="N*m/m",
+            desc="Section pitching moment about the axis per unit span, nose up",
+        )
 
         diag = np.arange(n)
         rows_cp = np.arange(n * n_x)
@@ -133,20 +152,30 @@ class SectionPressureComp(om.ExplicitComponent):
         flow = ["alpha_star", "reynolds", "mach"]
         for cp in ("cp_upper", "cp_lower"):
             self.declare_partials(cp, flow, rows=rows_cp, cols=cols_cp)
-        self.declare_partials(["normal_force_coefficient", "axial_force_coefficient",
-                               "pressure_lift_coefficient"], flow, rows=diag, cols=diag)
-        self.declare_partials("moment_coefficient", flow + ["axis_location"], rows=diag,
-                              cols=diag)
-        self.declare_partials(["normal_force", "axial_force"],
-                              flow + ["dynamic_pressure", "chord"], rows=diag, cols=diag)
-        self.declare_partials("pitching_moment",
-                              flow + ["dynamic_pressure", "chord", "axis_location"], rows=diag,
-                              cols=diag)
+        self.declare_partials(
+            ["normal_force_coefficient", "axial_force_coefficient", "pressure_lift_coefficient"],
+            flow,
+            rows=diag,
+            cols=diag,
+        )
+        self.declare_partials("moment_coefficient", flow + ["axis_location"], rows=diag, cols=diag)
+        self.declare_partials(
+            ["normal_force", "axial_force"],
+            flow + ["dynamic_pressure", "chord"],
+            rows=diag,
+            cols=diag,
+        )
+        self.declare_partials(
+            "pitching_moment",
+            flow + ["dynamic_pressure", "chord", "axis_location"],
+            rows=diag,
+            cols=diag,
+        )
 
     def _evaluate(self, inputs):
         a = inputs["alpha_star"]
         cps = self._table.cp(a, inputs["reynolds"], inputs["mach"])
-        loads = [self._table.integrate(c) for c in cps]        # each (3, N): cn, ca, cm_0
+        loads = [self._table.integrate(c) for c in cps]  # each (3, N): cn, ca, cm_0
         y_a, dy_a = self._table.mid_height(inputs["axis_location"])
         return cps, loads, y_a, dy_a
 
@@ -172,8 +201,12 @@ class SectionPressureComp(om.ExplicitComponent):
         cn, ca, cm0 = loads[0]
         cos, sin = np.cos(a), np.sin(a)
         for name, dcp, (dcn, dca, dcm0), extra in zip(
-                ("alpha_star", "reynolds", "mach"), cps[1:], loads[1:],
-                (-cn * sin - ca * cos, 0.0, 0.0), strict=True):
+            ("alpha_star", "reynolds", "mach"),
+            cps[1:],
+            loads[1:],
+            (-cn * sin - ca * cos, 0.0, 0.0),
+            strict=True,
+        ):
             partials["cp_upper", name] = dcp[:, 0].ravel()
             partials["cp_lower", name] = dcp[:, 1].ravel()
             dcm = dcm0 + x_a * dcn - y_a * dca

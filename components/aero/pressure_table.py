@@ -39,8 +39,9 @@ class PressureTable:
         Label.
     """
 
-    def __init__(self, alpha, reynolds, mach, x, y_upper, y_lower, cp_upper, cp_lower,
-                 name="pressure table"):
+    def __init__(
+        self, alpha, reynolds, mach, x, y_upper, y_lower, cp_upper, cp_lower, name="pressure table"
+    ):
         self.name = name
         self.x = np.asarray(x, dtype=float)
         self.y_upper = np.asarray(y_upper, dtype=float)
@@ -51,15 +52,17 @@ class PressureTable:
         cp_lower = np.asarray(cp_lower, dtype=float)
         for field, value in (("cp_upper", cp_upper), ("cp_lower", cp_lower)):
             if value.shape != shape:
-                raise ValueError(f"PressureTable '{name}': {field} shape {value.shape}; allowed: "
-                                 f"{shape} (alpha, reynolds, mach, x)")
+                raise ValueError(
+                    f"PressureTable '{name}': {field} shape {value.shape}; allowed: "
+                    f"{shape} (alpha, reynolds, mach, x)"
+                )
             if not np.all(np.isfinite(value)):
                 raise ValueError(f"PressureTable '{name}': {field} has non-finite values")
         if self.y_upper.shape != (n_x,) or self.y_lower.shape != (n_x,):
             raise ValueError(f"PressureTable '{name}': y_upper, y_lower need shape ({n_x},)")
         self.alpha = np.asarray(alpha, dtype=float)
         self.axes = (HermiteAxis(self.alpha), HermiteAxis(reynolds, log=True), HermiteAxis(mach))
-        self.table = np.stack([cp_upper, cp_lower], axis=3)   # (p_a, p_r, p_m, 2, n_x)
+        self.table = np.stack([cp_upper, cp_lower], axis=3)  # (p_a, p_r, p_m, 2, n_x)
 
         # Quadrature vectors of the trapezoid rule (exactly the rule in the module docstring).
         x = self.x
@@ -77,20 +80,30 @@ class PressureTable:
 
         wy_u, wy_l = dy_weights(self.y_upper), dy_weights(self.y_lower)
         # rows: cn, ca, cm_0; columns: (surface, station)
-        self.quadrature = np.stack([
-            np.stack([-tw, tw]),
-            np.stack([wy_u, -wy_l]),
-            np.stack([tw * x + wy_u * self.y_upper, -(tw * x + wy_l * self.y_lower)]),
-        ])                                                      # (3, 2, n_x)
+        self.quadrature = np.stack(
+            [
+                np.stack([-tw, tw]),
+                np.stack([wy_u, -wy_l]),
+                np.stack([tw * x + wy_u * self.y_upper, -(tw * x + wy_l * self.y_lower)]),
+            ]
+        )  # (3, 2, n_x)
         self._mid = HermiteAxis(x)
         self._mid_height = 0.5 * (self.y_upper + self.y_lower)
 
     @classmethod
     def from_npz_data(cls, data):
         """Build from the arrays of an ``airfoil_<name>.npz`` file (angles in degrees)."""
-        return cls(np.radians(data["cp_alpha_deg"]), data["cp_reynolds"], data["cp_mach"],
-                   data["x"], data["y_upper"], data["y_lower"], data["cp_upper"],
-                   data["cp_lower"], name=str(data["name"]) if "name" in data.files else "")
+        return cls(
+            np.radians(data["cp_alpha_deg"]),
+            data["cp_reynolds"],
+            data["cp_mach"],
+            data["x"],
+            data["y_upper"],
+            data["y_lower"],
+            data["cp_upper"],
+            data["cp_lower"],
+            name=str(data["name"]) if "name" in data.files else "",
+        )
 
     def cp(self, alpha, reynolds, mach):
         """
@@ -102,8 +115,9 @@ class PressureTable:
             (cp, dcp_dalpha, dcp_dreynolds, dcp_dmach); index 0 of axis 1 is the upper surface.
         """
         (ia, wa, dwa), (ir, wr, dwr), (im, wm, dwm) = (
-            ax.weights(np.atleast_1d(q)) for ax, q in zip(self.axes, (alpha, reynolds, mach),
-                                                          strict=True))
+            ax.weights(np.atleast_1d(q))
+            for ax, q in zip(self.axes, (alpha, reynolds, mach), strict=True)
+        )
         return tensor_eval(self.table, (ia, ir, im), (wa, wr, wm), (dwa, dwr, dwm))
 
     def integrate(self, cp):

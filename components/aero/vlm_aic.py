@@ -54,39 +54,80 @@ class VLMAICComp(om.ExplicitComponent):
         lat = self._lattice = Lattice(self.options["surfaces"])
         npn, nte = lat.num_panels, lat.te_panels.size
         self._weights = lat.collocation_segment_weights()
-        self.add_input("ring_vertices", np.zeros((npn, 4, 3)), units="m",
-                       desc="corners p1..p4 of the vortex rings")
-        self.add_input("collocation_points", np.zeros((npn, 3)), units="m",
-                       desc="collocation points")
-        self.add_input("boundary_normals", np.zeros((nn, npn, 3)), units=None,
-                       desc="boundary-condition unit normals")
-        self.add_input("freestream_direction", np.zeros((nn, 3)), units=None,
-                       desc="unit vector along the relative wind (wake direction)")
-        self.add_output("aic", np.zeros((nn, npn, npn)), units="1/m",
-                        desc="normal velocity at collocation point i per unit circulation "
-                             "of ring j")
+        self.add_input(
+            "ring_vertices",
+            np.zeros((npn, 4, 3)),
+            units="m",
+            desc="corners p1..p4 of the vortex rings",
+        )
+        self.add_input(
+            "collocation_points", np.zeros((npn, 3)), units="m", desc="collocation points"
+        )
+        self.add_input(
+            "boundary_normals",
+            np.zeros((nn, npn, 3)),
+            units=None,
+            desc="boundary-condition unit normals",
+        )
+        self.add_input(
+            "freestream_direction",
+            np.zeros((nn, 3)),
+            units=None,
+            desc="unit vector along the relative wind (wake direction)",
+        )
+        self.add_output(
+            "aic",
+            np.zeros((nn, npn, npn)),
+            units="1/m",
+            desc="normal velocity at collocation point i per unit circulation of ring j",
+        )
 
-        n_i, i_i, j_i = (a.ravel() for a in np.meshgrid(np.arange(nn), np.arange(npn),
-                                                        np.arange(npn), indexing="ij"))
+        n_i, i_i, j_i = (
+            a.ravel()
+            for a in np.meshgrid(np.arange(nn), np.arange(npn), np.arange(npn), indexing="ij")
+        )
         row = (n_i * npn + i_i) * npn + j_i  # flat index of A[n, i, j]
         three = np.arange(3)
-        self.declare_partials("aic", "boundary_normals", rows=np.repeat(row, 3),
-                              cols=(3 * np.repeat(n_i * npn + i_i, 3) + np.tile(three, row.size)))
-        self.declare_partials("aic", "collocation_points", rows=np.repeat(row, 3),
-                              cols=(3 * np.repeat(i_i, 3) + np.tile(three, row.size)))
-        self.declare_partials("aic", "ring_vertices", rows=np.repeat(row, 12),
-                              cols=(12 * np.repeat(j_i, 12) + np.tile(np.arange(12), row.size)))
-        n_t, i_t, t_t = (a.ravel() for a in np.meshgrid(np.arange(nn), np.arange(npn),
-                                                        np.arange(nte), indexing="ij"))
+        self.declare_partials(
+            "aic",
+            "boundary_normals",
+            rows=np.repeat(row, 3),
+            cols=(3 * np.repeat(n_i * npn + i_i, 3) + np.tile(three, row.size)),
+        )
+        self.declare_partials(
+            "aic",
+            "collocation_points",
+            rows=np.repeat(row, 3),
+            cols=(3 * np.repeat(i_i, 3) + np.tile(three, row.size)),
+        )
+        self.declare_partials(
+            "aic",
+            "ring_vertices",
+            rows=np.repeat(row, 12),
+            cols=(12 * np.repeat(j_i, 12) + np.tile(np.arange(12), row.size)),
+        )
+        n_t, i_t, t_t = (
+            a.ravel()
+            for a in np.meshgrid(np.arange(nn), np.arange(npn), np.arange(nte), indexing="ij")
+        )
         row_t = (n_t * npn + i_t) * npn + lat.te_panels[t_t]
-        self.declare_partials("aic", "freestream_direction", rows=np.repeat(row_t, 3),
-                              cols=3 * np.repeat(n_t, 3) + np.tile(three, row_t.size))
+        self.declare_partials(
+            "aic",
+            "freestream_direction",
+            rows=np.repeat(row_t, 3),
+            cols=3 * np.repeat(n_t, 3) + np.tile(three, row_t.size),
+        )
 
     def _velocities(self, inputs, derivatives):
         lat = self._lattice
-        return lattice_velocities(inputs["collocation_points"], inputs["ring_vertices"],
-                                  lat.te_panels, inputs["freestream_direction"], self._weights,
-                                  derivatives)
+        return lattice_velocities(
+            inputs["collocation_points"],
+            inputs["ring_vertices"],
+            lat.te_panels,
+            inputs["freestream_direction"],
+            self._weights,
+            derivatives,
+        )
 
     def compute(self, inputs, outputs):
         te = self._lattice.te_panels
@@ -116,5 +157,5 @@ class VLMAICComp(om.ExplicitComponent):
         partials["aic", "ring_vertices"] = d_vert.ravel()
 
         partials["aic", "freestream_direction"] = np.einsum(
-            "nic,nitcd->nitd", normals, vel["wake_d_u"]).ravel()
-
+            "nic,nitcd->nitd", normals, vel["wake_d_u"]
+        ).ravel()

@@ -31,17 +31,27 @@ def dot(a, b):
 
 def cross(a, b):
     """Cross product over the last axis (complex-safe)."""
-    return np.stack([a[..., 1] * b[..., 2] - a[..., 2] * b[..., 1],
-                     a[..., 2] * b[..., 0] - a[..., 0] * b[..., 2],
-                     a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]], axis=-1)
+    return np.stack(
+        [
+            a[..., 1] * b[..., 2] - a[..., 2] * b[..., 1],
+            a[..., 2] * b[..., 0] - a[..., 0] * b[..., 2],
+            a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0],
+        ],
+        axis=-1,
+    )
 
 
 def skew(a):
     """Matrices S(a), shape (..., 3, 3), with S(a) b = a x b."""
     z = np.zeros_like(a[..., 0])
-    return np.stack([np.stack([z, -a[..., 2], a[..., 1]], axis=-1),
-                     np.stack([a[..., 2], z, -a[..., 0]], axis=-1),
-                     np.stack([-a[..., 1], a[..., 0], z], axis=-1)], axis=-2)
+    return np.stack(
+        [
+            np.stack([z, -a[..., 2], a[..., 1]], axis=-1),
+            np.stack([a[..., 2], z, -a[..., 0]], axis=-1),
+            np.stack([-a[..., 1], a[..., 0], z], axis=-1),
+        ],
+        axis=-2,
+    )
 
 
 def outer(a, b):
@@ -123,8 +133,9 @@ def semi_infinite_velocity(r, u, derivatives=False):
     return v, dv_dr, dv_du
 
 
-def lattice_velocities(points, ring_vertices, te_panels, wake_direction, segment_weights,
-                       derivatives=False):
+def lattice_velocities(
+    points, ring_vertices, te_panels, wake_direction, segment_weights, derivatives=False
+):
     """Velocities induced at ``points`` by unit-strength vortex rings and their wakes.
 
     Every ring contributes its four straight segments (each scaled by ``segment_weights``);
@@ -175,8 +186,9 @@ def lattice_velocities(points, ring_vertices, te_panels, wake_direction, segment
     wd1 = w[..., None, None] * dv1
     wd2 = w[..., None, None] * dv2
     out["ring_d_point"] = np.sum(wd1 + wd2, axis=2)
-    d_vert = np.zeros(points.shape[:1] + ring_vertices.shape[:1] + (3, 4, 3),
-                      dtype=np.result_type(dv1, w))
+    d_vert = np.zeros(
+        points.shape[:1] + ring_vertices.shape[:1] + (3, 4, 3), dtype=np.result_type(dv1, w)
+    )
     for seg in range(4):
         d_vert[:, :, :, seg, :] -= wd1[:, :, seg]
         d_vert[:, :, :, (seg + 1) % 4, :] -= wd2[:, :, seg]

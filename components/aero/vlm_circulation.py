@@ -44,42 +44,62 @@ class VLMCirculationComp(om.ImplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare("num_nodes", default=1, types=int, lower=1,
-                             desc="number of flight conditions")
+        self.options.declare(
+            "num_nodes", default=1, types=int, lower=1, desc="number of flight conditions"
+        )
         self.options.declare("num_panels", types=int, lower=1, desc="number of lattice panels")
 
     def setup(self):
         nn, npn = self.options["num_nodes"], self.options["num_panels"]
         self.add_input("aic", np.zeros((nn, npn, npn)), units="1/m", desc="AIC matrix")
-        self.add_input("collocation_velocities", np.zeros((nn, npn, 3)), units="m/s",
-                       desc="relative wind at the collocation points")
-        self.add_input("boundary_normals", np.zeros((nn, npn, 3)), units=None,
-                       desc="boundary-condition unit normals")
-        self.add_output("circulation", np.zeros((nn, npn)), units="m**2/s",
-                        desc="circulation of each vortex ring")
+        self.add_input(
+            "collocation_velocities",
+            np.zeros((nn, npn, 3)),
+            units="m/s",
+            desc="relative wind at the collocation points",
+        )
+        self.add_input(
+            "boundary_normals",
+            np.zeros((nn, npn, 3)),
+            units=None,
+            desc="boundary-condition unit normals",
+        )
+        self.add_output(
+            "circulation",
+            np.zeros((nn, npn)),
+            units="m**2/s",
+            desc="circulation of each vortex ring",
+        )
 
-        n_i, i_i, j_i = (a.ravel() for a in np.meshgrid(np.arange(nn), np.arange(npn),
-                                                        np.arange(npn), indexing="ij"))
-        self.declare_partials("circulation", "circulation", rows=n_i * npn + i_i,
-                              cols=n_i * npn + j_i)
-        self.declare_partials("circulation", "aic", rows=n_i * npn + i_i,
-                              cols=np.arange(nn * npn * npn))
+        n_i, i_i, j_i = (
+            a.ravel()
+            for a in np.meshgrid(np.arange(nn), np.arange(npn), np.arange(npn), indexing="ij")
+        )
+        self.declare_partials(
+            "circulation", "circulation", rows=n_i * npn + i_i, cols=n_i * npn + j_i
+        )
+        self.declare_partials(
+            "circulation", "aic", rows=n_i * npn + i_i, cols=np.arange(nn * npn * npn)
+        )
         rows3 = np.repeat(np.arange(nn * npn), 3)
         cols3 = np.arange(nn * npn * 3)
-        self.declare_partials("circulation", ["collocation_velocities", "boundary_normals"],
-                              rows=rows3, cols=cols3)
+        self.declare_partials(
+            "circulation", ["collocation_velocities", "boundary_normals"], rows=rows3, cols=cols3
+        )
         self._lu = None
 
     def apply_nonlinear(self, inputs, outputs, residuals):
         gamma = outputs["circulation"]
-        residuals["circulation"] = (np.einsum("nij,nj->ni", inputs["aic"], gamma)
-                                    + np.einsum("nic,nic->ni", inputs["collocation_velocities"],
-                                                inputs["boundary_normals"]))
+        residuals["circulation"] = np.einsum("nij,nj->ni", inputs["aic"], gamma) + np.einsum(
+            "nic,nic->ni", inputs["collocation_velocities"], inputs["boundary_normals"]
+        )
 
     def _factor(self, aic):
         if not np.all(np.isfinite(aic)):
-            raise om.AnalysisError(f"{self.msginfo}: the AIC matrix has non-finite entries "
-                                   "(a collocation point on a vortex line or a degenerate mesh).")
+            raise om.AnalysisError(
+                f"{self.msginfo}: the AIC matrix has non-finite entries "
+                "(a collocation point on a vortex line or a degenerate mesh)."
+            )
         factors = []
         for n in range(aic.shape[0]):
             with warnings.catch_warnings():  # a singular matrix is reported below instead
@@ -91,25 +111,29 @@ class VLMCirculationComp(om.ImplicitComponent):
                 raise om.AnalysisError(
                     f"{self.msginfo}: the AIC matrix of node {n} is singular "
                     f"(min/max |U_kk| = {np.min(np.abs(diag)) / max(scale, 1e-300):.3e} < "
-                    f"{SINGULAR_RCOND}); check the meshes for zero-area or coincident panels.")
+                    f"{SINGULAR_RCOND}); check the meshes for zero-area or coincident panels."
+                )
             factors.append((lu, piv))
         return factors
 
     def solve_nonlinear(self, inputs, outputs):
         aic = inputs["aic"]
-        rhs = -np.einsum("nic,nic->ni", inputs["collocation_velocities"],
-                         inputs["boundary_normals"])
+        rhs = -np.einsum(
+            "nic,nic->ni", inputs["collocation_velocities"], inputs["boundary_normals"]
+        )
         factors = self._factor(aic)
         outputs["circulation"] = np.stack(
-            [scipy.linalg.lu_solve(f, rhs[n], check_finite=False) for n, f in enumerate(factors)])
+            [scipy.linalg.lu_solve(f, rhs[n], check_finite=False) for n, f in enumerate(factors)]
+        )
 
     def linearize(self, inputs, outputs, partials):
         aic = inputs["aic"]
         npn = self.options["num_panels"]
         partials["circulation", "circulation"] = aic.ravel()
         gamma = outputs["circulation"]
-        partials["circulation", "aic"] = np.broadcast_to(gamma[:, None, :],
-                                                         (gamma.shape[0], npn, npn)).ravel()
+        partials["circulation", "aic"] = np.broadcast_to(
+            gamma[:, None, :], (gamma.shape[0], npn, npn)
+        ).ravel()
         partials["circulation", "collocation_velocities"] = inputs["boundary_normals"].ravel()
         partials["circulation", "boundary_normals"] = inputs["collocation_velocities"].ravel()
         if not self.under_complex_step:
@@ -121,8 +145,10 @@ class VLMCirculationComp(om.ImplicitComponent):
         if mode == "fwd":
             rhs = d_residuals["circulation"]
             d_outputs["circulation"] = np.stack(
-                [scipy.linalg.lu_solve(f, rhs[n], trans=0) for n, f in enumerate(self._lu)])
+                [scipy.linalg.lu_solve(f, rhs[n], trans=0) for n, f in enumerate(self._lu)]
+            )
         else:
             rhs = d_outputs["circulation"]
             d_residuals["circulation"] = np.stack(
-                [scipy.linalg.lu_solve(f, rhs[n], trans=1) for n, f in enumerate(self._lu)])
+                [scipy.linalg.lu_solve(f, rhs[n], trans=1) for n, f in enumerate(self._lu)]
+            )

@@ -43,21 +43,34 @@ class VLMPanelForcesComp(om.ExplicitComponent):
         nn = self.options["num_nodes"]
         lat = self._lattice = Lattice(self.options["surfaces"])
         npn = lat.num_panels
-        self.add_input("circulation", np.zeros((nn, npn)), units="m**2/s",
-                       desc="ring circulations")
-        self.add_input("force_point_velocities", np.zeros((nn, npn, 3)), units="m/s",
-                       desc="relative wind at the force points")
-        self.add_input("induced_velocities", np.zeros((nn, npn, 3)), units="m/s",
-                       desc="induced velocity at the force points")
-        self.add_input("bound_vectors", np.zeros((npn, 3)), units="m",
-                       desc="bound segment vectors")
-        self.add_input("density", np.full(nn, SEA_LEVEL_DENSITY), units="kg/m**3",
-                       desc="air density")
-        self.add_output("panel_forces", np.zeros((nn, npn, 3)), units="N",
-                        desc="Kutta-Joukowski force on each bound segment, body axes")
+        self.add_input("circulation", np.zeros((nn, npn)), units="m**2/s", desc="ring circulations")
+        self.add_input(
+            "force_point_velocities",
+            np.zeros((nn, npn, 3)),
+            units="m/s",
+            desc="relative wind at the force points",
+        )
+        self.add_input(
+            "induced_velocities",
+            np.zeros((nn, npn, 3)),
+            units="m/s",
+            desc="induced velocity at the force points",
+        )
+        self.add_input("bound_vectors", np.zeros((npn, 3)), units="m", desc="bound segment vectors")
+        self.add_input(
+            "density", np.full(nn, SEA_LEVEL_DENSITY), units="kg/m**3", desc="air density"
+        )
+        self.add_output(
+            "panel_forces",
+            np.zeros((nn, npn, 3)),
+            units="N",
+            desc="Kutta-Joukowski force on each bound segment, body axes",
+        )
 
-        n_r, k_r, c_r = (a.ravel() for a in np.meshgrid(np.arange(nn), np.arange(npn),
-                                                        np.arange(3), indexing="ij"))
+        n_r, k_r, c_r = (
+            a.ravel()
+            for a in np.meshgrid(np.arange(nn), np.arange(npn), np.arange(3), indexing="ij")
+        )
         row = (n_r * npn + k_r) * 3 + c_r
         # Gamma_net depends on Gamma[k] and Gamma[upstream(k)].
         up = lat.upstream_panel
@@ -68,10 +81,15 @@ class VLMPanelForcesComp(om.ExplicitComponent):
         self.declare_partials("panel_forces", "circulation", rows=rows_g, cols=cols_g)
         blk_rows = np.repeat(row, 3)
         d = np.tile(np.arange(3), row.size)
-        self.declare_partials("panel_forces", ["force_point_velocities", "induced_velocities"],
-                              rows=blk_rows, cols=3 * np.repeat(n_r * npn + k_r, 3) + d)
-        self.declare_partials("panel_forces", "bound_vectors", rows=blk_rows,
-                              cols=3 * np.repeat(k_r, 3) + d)
+        self.declare_partials(
+            "panel_forces",
+            ["force_point_velocities", "induced_velocities"],
+            rows=blk_rows,
+            cols=3 * np.repeat(n_r * npn + k_r, 3) + d,
+        )
+        self.declare_partials(
+            "panel_forces", "bound_vectors", rows=blk_rows, cols=3 * np.repeat(k_r, 3) + d
+        )
         self.declare_partials("panel_forces", "density", rows=row, cols=n_r)
 
     def _net_circulation(self, gamma):
@@ -84,7 +102,8 @@ class VLMPanelForcesComp(om.ExplicitComponent):
         vel = inputs["force_point_velocities"] + inputs["induced_velocities"]
         rho = inputs["density"]
         outputs["panel_forces"] = (rho[:, None] * g_net)[..., None] * cross(
-            vel, inputs["bound_vectors"][None])
+            vel, inputs["bound_vectors"][None]
+        )
 
     def compute_partials(self, inputs, partials):
         g_net = self._net_circulation(inputs["circulation"])
@@ -100,4 +119,3 @@ class VLMPanelForcesComp(om.ExplicitComponent):
         partials["panel_forces", "induced_velocities"] = d_vel.ravel()
         partials["panel_forces", "bound_vectors"] = (scale * skew(vel)).ravel()
         partials["panel_forces", "density"] = (g_net[..., None] * vxl).ravel()
-

@@ -50,29 +50,50 @@ class VLMGeometryComp(om.ExplicitComponent):
     def setup(self):
         lat = self._lattice = Lattice(self.options["surfaces"])
         npn, nst = lat.num_panels, lat.num_strips
-        self.add_output("ring_vertices", np.zeros((npn, 4, 3)), units="m",
-                        desc="corners p1..p4 of the vortex rings on the bound grid")
-        self.add_output("collocation_points", np.zeros((npn, 3)), units="m",
-                        desc="ring centres (3/4 chord of each panel)")
-        self.add_output("force_points", np.zeros((npn, 3)), units="m",
-                        desc="bound-segment midpoints (1/4 chord of each panel)")
-        self.add_output("bound_vectors", np.zeros((npn, 3)), units="m",
-                        desc="bound segment vectors p2 - p1")
-        self.add_output("panel_areas", np.zeros(npn), units="m**2",
-                        desc="areas of the geometric mesh panels")
-        self.add_output("strip_areas", np.zeros(nst), units="m**2",
-                        desc="chord-wise sums of the panel areas")
+        self.add_output(
+            "ring_vertices",
+            np.zeros((npn, 4, 3)),
+            units="m",
+            desc="corners p1..p4 of the vortex rings on the bound grid",
+        )
+        self.add_output(
+            "collocation_points",
+            np.zeros((npn, 3)),
+            units="m",
+            desc="ring centres (3/4 chord of each panel)",
+        )
+        self.add_output(
+            "force_points",
+            np.zeros((npn, 3)),
+            units="m",
+            desc="bound-segment midpoints (1/4 chord of each panel)",
+        )
+        self.add_output(
+            "bound_vectors", np.zeros((npn, 3)), units="m", desc="bound segment vectors p2 - p1"
+        )
+        self.add_output(
+            "panel_areas", np.zeros(npn), units="m**2", desc="areas of the geometric mesh panels"
+        )
+        self.add_output(
+            "strip_areas", np.zeros(nst), units="m**2", desc="chord-wise sums of the panel areas"
+        )
 
         self._area_index = []
         for isurf, s in enumerate(lat.surfaces):
             name = f"{s.name}_mesh"
             nx, ny, _ = s.mesh_shape
-            self.add_input(name, np.zeros(s.mesh_shape), units="m",
-                           desc=f"mesh of surface '{s.name}' (chord-wise x span-wise nodes)")
-            for out, maps in (("ring_vertices", lat.ring_map),
-                              ("collocation_points", lat.collocation_map),
-                              ("force_points", lat.force_point_map),
-                              ("bound_vectors", lat.bound_vector_map)):
+            self.add_input(
+                name,
+                np.zeros(s.mesh_shape),
+                units="m",
+                desc=f"mesh of surface '{s.name}' (chord-wise x span-wise nodes)",
+            )
+            for out, maps in (
+                ("ring_vertices", lat.ring_map),
+                ("collocation_points", lat.collocation_map),
+                ("force_points", lat.force_point_map),
+                ("bound_vectors", lat.bound_vector_map),
+            ):
                 rows, cols, vals = sparse_pattern(maps[isurf])
                 self.declare_partials(out, name, rows=rows, cols=cols, val=vals)
 
@@ -80,8 +101,9 @@ class VLMGeometryComp(om.ExplicitComponent):
             # a3 = X[i+1,j]; global panel and strip numbers.
             nc, ns = nx - 1, ny - 1
             node = np.arange(nx * ny).reshape(nx, ny)
-            corner_nodes = np.stack([node[:-1, :-1], node[:-1, 1:], node[1:, 1:],
-                                     node[1:, :-1]], axis=-1)  # (nc, ns, 4)
+            corner_nodes = np.stack(
+                [node[:-1, :-1], node[:-1, 1:], node[1:, 1:], node[1:, :-1]], axis=-1
+            )  # (nc, ns, 4)
             panels = lat.panel_offset[isurf] + np.arange(nc * ns)
             rows = np.repeat(panels, 12)
             cols = (3 * corner_nodes.reshape(-1, 4)[:, :, None] + np.arange(3)).ravel()
@@ -146,4 +168,3 @@ class VLMGeometryComp(om.ExplicitComponent):
             dstrip[:, 1:, 1] += dcorner[:, :, 2].transpose(1, 0, 2)
             dstrip[:, 1:, 0] += dcorner[:, :, 3].transpose(1, 0, 2)
             partials["strip_areas", name] = dstrip.ravel()
-

@@ -46,39 +46,69 @@ class VLMInducedVelocityComp(om.ExplicitComponent):
         lat = self._lattice = Lattice(self.options["surfaces"])
         npn = lat.num_panels
         self._weights = lat.force_point_segment_weights()
-        self.add_input("ring_vertices", np.zeros((npn, 4, 3)), units="m",
-                       desc="corners p1..p4 of the vortex rings")
+        self.add_input(
+            "ring_vertices",
+            np.zeros((npn, 4, 3)),
+            units="m",
+            desc="corners p1..p4 of the vortex rings",
+        )
         self.add_input("force_points", np.zeros((npn, 3)), units="m", desc="force points")
-        self.add_input("freestream_direction", np.zeros((nn, 3)), units=None,
-                       desc="unit vector along the relative wind (wake direction)")
-        self.add_input("circulation", np.zeros((nn, npn)), units="m**2/s",
-                       desc="ring circulations")
-        self.add_output("induced_velocities", np.zeros((nn, npn, 3)), units="m/s",
-                        desc="velocity induced by the lattice at the force points")
+        self.add_input(
+            "freestream_direction",
+            np.zeros((nn, 3)),
+            units=None,
+            desc="unit vector along the relative wind (wake direction)",
+        )
+        self.add_input("circulation", np.zeros((nn, npn)), units="m**2/s", desc="ring circulations")
+        self.add_output(
+            "induced_velocities",
+            np.zeros((nn, npn, 3)),
+            units="m/s",
+            desc="velocity induced by the lattice at the force points",
+        )
 
-        n_r, i_r, c_r = (a.ravel() for a in np.meshgrid(np.arange(nn), np.arange(npn),
-                                                        np.arange(3), indexing="ij"))
+        n_r, i_r, c_r = (
+            a.ravel()
+            for a in np.meshgrid(np.arange(nn), np.arange(npn), np.arange(3), indexing="ij")
+        )
         row = (n_r * npn + i_r) * 3 + c_r
-        self.declare_partials("induced_velocities", "circulation", rows=np.repeat(row, npn),
-                              cols=(npn * np.repeat(n_r, npn) + np.tile(np.arange(npn), row.size)))
+        self.declare_partials(
+            "induced_velocities",
+            "circulation",
+            rows=np.repeat(row, npn),
+            cols=(npn * np.repeat(n_r, npn) + np.tile(np.arange(npn), row.size)),
+        )
         self.declare_partials("induced_velocities", "ring_vertices")  # dense
-        self.declare_partials("induced_velocities", "force_points", rows=np.repeat(row, 3),
-                              cols=3 * np.repeat(i_r, 3) + np.tile(np.arange(3), row.size))
-        self.declare_partials("induced_velocities", "freestream_direction",
-                              rows=np.repeat(row, 3),
-                              cols=3 * np.repeat(n_r, 3) + np.tile(np.arange(3), row.size))
+        self.declare_partials(
+            "induced_velocities",
+            "force_points",
+            rows=np.repeat(row, 3),
+            cols=3 * np.repeat(i_r, 3) + np.tile(np.arange(3), row.size),
+        )
+        self.declare_partials(
+            "induced_velocities",
+            "freestream_direction",
+            rows=np.repeat(row, 3),
+            cols=3 * np.repeat(n_r, 3) + np.tile(np.arange(3), row.size),
+        )
 
     def _velocities(self, inputs, derivatives):
-        return lattice_velocities(inputs["force_points"], inputs["ring_vertices"],
-                                  self._lattice.te_panels, inputs["freestream_direction"],
-                                  self._weights, derivatives)
+        return lattice_velocities(
+            inputs["force_points"],
+            inputs["ring_vertices"],
+            self._lattice.te_panels,
+            inputs["freestream_direction"],
+            self._weights,
+            derivatives,
+        )
 
     def compute(self, inputs, outputs):
         te = self._lattice.te_panels
         gamma = inputs["circulation"]
         vel = self._velocities(inputs, False)
-        outputs["induced_velocities"] = (np.einsum("ijc,nj->nic", vel["ring"], gamma)
-                                         + np.einsum("nitc,nt->nic", vel["wake"], gamma[:, te]))
+        outputs["induced_velocities"] = np.einsum("ijc,nj->nic", vel["ring"], gamma) + np.einsum(
+            "nitc,nt->nic", vel["wake"], gamma[:, te]
+        )
 
     def compute_partials(self, inputs, partials):
         nn = self.options["num_nodes"]
@@ -95,12 +125,12 @@ class VLMInducedVelocityComp(om.ExplicitComponent):
         d_vert = np.einsum("ijcvd,nj->nicjvd", vel["ring_d_vertices"], gamma)
         d_vert[:, :, :, te, 2] += np.einsum("nitcd,nt->nictd", vel["wake_d_p3"], g_te)
         d_vert[:, :, :, te, 3] += np.einsum("nitcd,nt->nictd", vel["wake_d_p4"], g_te)
-        partials["induced_velocities", "ring_vertices"] = d_vert.reshape(nn * npn * 3,
-                                                                         npn * 12)
+        partials["induced_velocities", "ring_vertices"] = d_vert.reshape(nn * npn * 3, npn * 12)
 
         partials["induced_velocities", "force_points"] = (
             np.einsum("ijcd,nj->nicd", vel["ring_d_point"], gamma)
-            + np.einsum("nitcd,nt->nicd", vel["wake_d_point"], g_te)).ravel()
+            + np.einsum("nitcd,nt->nicd", vel["wake_d_point"], g_te)
+        ).ravel()
         partials["induced_velocities", "freestream_direction"] = np.einsum(
-            "nitcd,nt->nicd", vel["wake_d_u"], g_te).ravel()
-
+            "nitcd,nt->nicd", vel["wake_d_u"], g_te
+        ).ravel()

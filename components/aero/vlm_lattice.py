@@ -55,8 +55,10 @@ class VLMSurface:
         for field in ("num_chord_panels", "num_span_panels"):
             value = getattr(self, field)
             if not isinstance(value, (int, np.integer)):
-                raise ValueError(f"VLMSurface '{self.name}': '{field}' must be an integer, got "
-                                 f"{type(value).__name__} {value!r}")
+                raise ValueError(
+                    f"VLMSurface '{self.name}': '{field}' must be an integer, got "
+                    f"{type(value).__name__} {value!r}"
+                )
             check_integer(field, value, lower=1, where=f"VLMSurface '{self.name}'")
 
     @property
@@ -154,21 +156,29 @@ class Lattice:
             nc, ns = s.num_chord_panels, s.num_span_panels
             gmat = _bound_grid_matrix(nx, ny)
             node = np.arange(nx * ny).reshape(nx, ny)
-            corners = np.stack([node[:-1, :-1], node[:-1, 1:], node[1:, 1:], node[1:, :-1]],
-                               axis=-1).reshape(nc * ns, 4)
-            pick = sp.csr_matrix((np.ones(corners.size), (np.arange(corners.size),
-                                                          corners.ravel())),
-                                 shape=(corners.size, nx * ny))
+            corners = np.stack(
+                [node[:-1, :-1], node[:-1, 1:], node[1:, 1:], node[1:, :-1]], axis=-1
+            ).reshape(nc * ns, 4)
+            pick = sp.csr_matrix(
+                (np.ones(corners.size), (np.arange(corners.size), corners.ravel())),
+                shape=(corners.size, nx * ny),
+            )
             ring = pick @ gmat  # (np*4, nodes)
             p = [ring[v::4] for v in range(4)]
-            maps = ((ring, 12), (0.25 * (p[0] + p[1] + p[2] + p[3]), 3),
-                    (0.5 * (p[0] + p[1]), 3), (p[1] - p[0], 3))
+            maps = (
+                (ring, 12),
+                (0.25 * (p[0] + p[1] + p[2] + p[3]), 3),
+                (0.5 * (p[0] + p[1]), 3),
+                (p[1] - p[0], 3),
+            )
             out = []
             for m, per_panel in maps:
                 # Embed the surface's rows in the global panel numbering.
                 m = sp.coo_matrix(sp.kron(m, eye3, format="csr"))
-                m = sp.csr_matrix((m.data, (m.row + per_panel * self.panel_offset[isurf], m.col)),
-                                  shape=(per_panel * num_panels, m.shape[1]))
+                m = sp.csr_matrix(
+                    (m.data, (m.row + per_panel * self.panel_offset[isurf], m.col)),
+                    shape=(per_panel * num_panels, m.shape[1]),
+                )
                 m.sum_duplicates()
                 m.eliminate_zeros()
                 out.append(m)
@@ -226,8 +236,13 @@ def check_surfaces_option(name, value):
 
 def declare_lattice_options(component, num_nodes=True):
     """Declare the options every VLM component shares: ``surfaces`` and ``num_nodes``."""
-    component.options.declare("surfaces", types=(tuple, list), check_valid=check_surfaces_option,
-                              desc="tuple of VLMSurface, in lattice order")
+    component.options.declare(
+        "surfaces",
+        types=(tuple, list),
+        check_valid=check_surfaces_option,
+        desc="tuple of VLMSurface, in lattice order",
+    )
     if num_nodes:
-        component.options.declare("num_nodes", default=1, types=int, lower=1,
-                                  desc="number of flight conditions")
+        component.options.declare(
+            "num_nodes", default=1, types=int, lower=1, desc="number of flight conditions"
+        )

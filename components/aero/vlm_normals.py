@@ -49,34 +49,57 @@ class VLMNormalsComp(om.ExplicitComponent):
         nn = self.options["num_nodes"]
         lat = self._lattice = Lattice(self.options["surfaces"])
         npn = lat.num_panels
-        self.add_input("ring_vertices", np.zeros((npn, 4, 3)), units="m",
-                       desc="corners p1..p4 of the vortex rings")
-        self.add_output("boundary_normals", np.zeros((nn, npn, 3)), units=None,
-                        desc="unit normals tilted by -alpha_L0 + deflection")
+        self.add_input(
+            "ring_vertices",
+            np.zeros((npn, 4, 3)),
+            units="m",
+            desc="corners p1..p4 of the vortex rings",
+        )
+        self.add_output(
+            "boundary_normals",
+            np.zeros((nn, npn, 3)),
+            units=None,
+            desc="unit normals tilted by -alpha_L0 + deflection",
+        )
         rows = np.repeat(np.arange(nn * npn * 3), 12)
         k = np.tile(np.repeat(np.arange(npn), 3), nn)
-        cols = (12 * np.repeat(k, 12) + np.tile(np.arange(12), nn * npn * 3))
+        cols = 12 * np.repeat(k, 12) + np.tile(np.arange(12), nn * npn * 3)
         self.declare_partials("boundary_normals", "ring_vertices", rows=rows, cols=cols)
 
         for isurf, s in enumerate(lat.surfaces):
             ns = s.num_span_panels
             panels = np.arange(npn)[lat.surface_panels(isurf)]
-            rows_s = (3 * (npn * np.arange(nn)[:, None, None] + panels[None, :, None])
-                      + np.arange(3)).ravel()
+            rows_s = (
+                3 * (npn * np.arange(nn)[:, None, None] + panels[None, :, None]) + np.arange(3)
+            ).ravel()
             strip_local = lat.panel_strip[panels] - lat.strip_offset[isurf]
-            cols_s = np.broadcast_to(ns * np.arange(nn)[:, None, None] + strip_local[None, :, None],
-                                     (nn, panels.size, 3)).ravel()
+            cols_s = np.broadcast_to(
+                ns * np.arange(nn)[:, None, None] + strip_local[None, :, None], (nn, panels.size, 3)
+            ).ravel()
             name = f"{s.name}_zero_lift_angle"
-            self.add_input(name, np.zeros((nn, ns)), units="rad",
-                           desc=f"sectional zero-lift angle of the strips of '{s.name}'")
+            self.add_input(
+                name,
+                np.zeros((nn, ns)),
+                units="rad",
+                desc=f"sectional zero-lift angle of the strips of '{s.name}'",
+            )
             self.declare_partials("boundary_normals", name, rows=rows_s, cols=cols_s)
             if s.deflectable:
                 name = f"{s.name}_deflection"
-                self.add_input(name, np.zeros(nn), units="rad",
-                               desc=f"all-moving deflection of '{s.name}', trailing edge down")
-                self.declare_partials("boundary_normals", name, rows=rows_s,
-                                      cols=np.broadcast_to(np.arange(nn)[:, None, None],
-                                                           (nn, panels.size, 3)).ravel())
+                self.add_input(
+                    name,
+                    np.zeros(nn),
+                    units="rad",
+                    desc=f"all-moving deflection of '{s.name}', trailing edge down",
+                )
+                self.declare_partials(
+                    "boundary_normals",
+                    name,
+                    rows=rows_s,
+                    cols=np.broadcast_to(
+                        np.arange(nn)[:, None, None], (nn, panels.size, 3)
+                    ).ravel(),
+                )
 
     def _incidence(self, inputs):
         lat = self._lattice
@@ -120,8 +143,11 @@ class VLMNormalsComp(om.ExplicitComponent):
         # n' as a function of n, s and theta
         d_n = c * eye + si * skew(s)[None] + (1.0 - c) * outer(s, s)[None]
         d_s = -si * skew(n)[None] + (1.0 - c) * (sdn * eye + outer(s, n))[None]
-        d_theta = (-si[..., 0] * n[None] + c[..., 0] * cross(s, n)[None]
-                   + si[..., 0] * s[None] * sdn[None, :, :, 0])  # (nn, np, 3)
+        d_theta = (
+            -si[..., 0] * n[None]
+            + c[..., 0] * cross(s, n)[None]
+            + si[..., 0] * s[None] * sdn[None, :, :, 0]
+        )  # (nn, np, 3)
         # n = n_raw/|n_raw|, n_raw = a x b with a = p3 - p1, b = p2 - p4
         dn_draw = (eye - outer(n, n)) / n_len[:, None, None]
         dn_da = dn_draw @ -skew(b)
@@ -129,13 +155,10 @@ class VLMNormalsComp(om.ExplicitComponent):
         ds_dl = (eye - outer(s, s)) / b_len[:, None, None]
         dn_dv = np.stack([-dn_da, dn_db, dn_da, -dn_db], axis=-2)  # (np, 3, 4, 3)
         ds_dv = np.stack([-ds_dl, ds_dl, np.zeros_like(ds_dl), np.zeros_like(ds_dl)], axis=-2)
-        jac = (np.einsum("nkij,kjvd->nkivd", d_n, dn_dv)
-               + np.einsum("nkij,kjvd->nkivd", d_s, ds_dv))
+        jac = np.einsum("nkij,kjvd->nkivd", d_n, dn_dv) + np.einsum("nkij,kjvd->nkivd", d_s, ds_dv)
         partials["boundary_normals", "ring_vertices"] = jac.ravel()
         for isurf, surf in enumerate(lat.surfaces):
             sl = lat.surface_panels(isurf)
-            partials["boundary_normals", f"{surf.name}_zero_lift_angle"] = (
-                -d_theta[:, sl]).ravel()
+            partials["boundary_normals", f"{surf.name}_zero_lift_angle"] = (-d_theta[:, sl]).ravel()
             if surf.deflectable:
                 partials["boundary_normals", f"{surf.name}_deflection"] = d_theta[:, sl].ravel()
-

@@ -47,35 +47,56 @@ class VLMProfileDragComp(om.ExplicitComponent):
         npn = lat.num_panels
         self.add_input("panel_areas", np.zeros(npn), units="m**2", desc="panel areas")
         self.add_input("speed", np.zeros(nn), units="m/s", desc="airspeed")
-        self.add_input("density", np.full(nn, SEA_LEVEL_DENSITY), units="kg/m**3",
-                       desc="air density")
-        self.add_input("freestream_direction", np.zeros((nn, 3)), units=None,
-                       desc="unit vector along the relative wind")
-        self.add_output("viscous_panel_forces", np.zeros((nn, npn, 3)), units="N",
-                        desc="strip-theory profile-drag force on each panel, body axes")
+        self.add_input(
+            "density", np.full(nn, SEA_LEVEL_DENSITY), units="kg/m**3", desc="air density"
+        )
+        self.add_input(
+            "freestream_direction",
+            np.zeros((nn, 3)),
+            units=None,
+            desc="unit vector along the relative wind",
+        )
+        self.add_output(
+            "viscous_panel_forces",
+            np.zeros((nn, npn, 3)),
+            units="N",
+            desc="strip-theory profile-drag force on each panel, body axes",
+        )
 
-        n_r, k_r, c_r = (a.ravel() for a in np.meshgrid(np.arange(nn), np.arange(npn),
-                                                        np.arange(3), indexing="ij"))
+        n_r, k_r, c_r = (
+            a.ravel()
+            for a in np.meshgrid(np.arange(nn), np.arange(npn), np.arange(3), indexing="ij")
+        )
         row = (n_r * npn + k_r) * 3 + c_r
         self.declare_partials("viscous_panel_forces", "panel_areas", rows=row, cols=k_r)
         self.declare_partials("viscous_panel_forces", ["speed", "density"], rows=row, cols=n_r)
-        self.declare_partials("viscous_panel_forces", "freestream_direction", rows=row,
-                              cols=3 * n_r + c_r)
+        self.declare_partials(
+            "viscous_panel_forces", "freestream_direction", rows=row, cols=3 * n_r + c_r
+        )
         for isurf, s in enumerate(lat.surfaces):
             ns = s.num_span_panels
             name = f"{s.name}_sectional_cd"
-            self.add_input(name, np.zeros((nn, ns)), units=None,
-                           desc=f"profile-drag coefficient of the strips of '{s.name}'")
+            self.add_input(
+                name,
+                np.zeros((nn, ns)),
+                units=None,
+                desc=f"profile-drag coefficient of the strips of '{s.name}'",
+            )
             mine = lat.panel_surface[k_r] == isurf
             strip_local = lat.panel_strip[k_r[mine]] - lat.strip_offset[isurf]
-            self.declare_partials("viscous_panel_forces", name, rows=row[mine],
-                                  cols=n_r[mine] * ns + strip_local)
+            self.declare_partials(
+                "viscous_panel_forces", name, rows=row[mine], cols=n_r[mine] * ns + strip_local
+            )
 
     def _panel_cd(self, inputs):
         lat = self._lattice
         nn = self.options["num_nodes"]
-        pieces = [np.tile(inputs[f"{s.name}_sectional_cd"], (1, s.num_chord_panels))
-                  .reshape(nn, s.num_panels) for s in lat.surfaces]
+        pieces = [
+            np.tile(inputs[f"{s.name}_sectional_cd"], (1, s.num_chord_panels)).reshape(
+                nn, s.num_panels
+            )
+            for s in lat.surfaces
+        ]
         return np.concatenate(pieces, axis=1)
 
     def compute(self, inputs, outputs):
@@ -92,15 +113,18 @@ class VLMProfileDragComp(om.ExplicitComponent):
         area = inputs["panel_areas"][None]
         e_d = inputs["freestream_direction"][:, None]
         partials["viscous_panel_forces", "panel_areas"] = (
-            (q[:, None] * cd)[..., None] * e_d).ravel()
+            (q[:, None] * cd)[..., None] * e_d
+        ).ravel()
         base = (cd * area)[..., None] * e_d
         partials["viscous_panel_forces", "speed"] = ((rho * speed)[:, None, None] * base).ravel()
         partials["viscous_panel_forces", "density"] = (
-            (0.5 * speed**2)[:, None, None] * base).ravel()
+            (0.5 * speed**2)[:, None, None] * base
+        ).ravel()
         partials["viscous_panel_forces", "freestream_direction"] = np.broadcast_to(
-            (q[:, None] * cd * area)[..., None], base.shape).ravel()
+            (q[:, None] * cd * area)[..., None], base.shape
+        ).ravel()
         for isurf, s in enumerate(lat.surfaces):
             sl = lat.surface_panels(isurf)
             partials["viscous_panel_forces", f"{s.name}_sectional_cd"] = (
-                (q[:, None] * area[:, sl])[..., None] * e_d).ravel()
-
+                (q[:, None] * area[:, sl])[..., None] * e_d
+            ).ravel()

@@ -49,38 +49,52 @@ class VLMSectionalLiftComp(om.ExplicitComponent):
         nn = self.options["num_nodes"]
         lat = self._lattice = Lattice(self.options["surfaces"])
         npn, nst = lat.num_panels, lat.num_strips
-        self.add_input("panel_forces", np.zeros((nn, npn, 3)), units="N",
-                       desc="inviscid panel forces")
-        self.add_input("bound_vectors", np.zeros((npn, 3)), units="m",
-                       desc="bound segment vectors")
-        self.add_input("freestream_direction", np.zeros((nn, 3)), units=None,
-                       desc="unit vector along the relative wind")
+        self.add_input(
+            "panel_forces", np.zeros((nn, npn, 3)), units="N", desc="inviscid panel forces"
+        )
+        self.add_input("bound_vectors", np.zeros((npn, 3)), units="m", desc="bound segment vectors")
+        self.add_input(
+            "freestream_direction",
+            np.zeros((nn, 3)),
+            units=None,
+            desc="unit vector along the relative wind",
+        )
         self.add_input("strip_areas", np.zeros(nst), units="m**2", desc="strip areas")
         self.add_input("speed", np.zeros(nn), units="m/s", desc="airspeed")
-        self.add_input("density", np.full(nn, SEA_LEVEL_DENSITY), units="kg/m**3",
-                       desc="air density")
+        self.add_input(
+            "density", np.full(nn, SEA_LEVEL_DENSITY), units="kg/m**3", desc="air density"
+        )
 
         for isurf, s in enumerate(lat.surfaces):
             ns, nc = s.num_span_panels, s.num_chord_panels
             name = f"{s.name}_sectional_cl"
-            self.add_output(name, np.zeros((nn, ns)), units=None,
-                            desc=f"sectional lift coefficient of the strips of '{s.name}'")
+            self.add_output(
+                name,
+                np.zeros((nn, ns)),
+                units=None,
+                desc=f"sectional lift coefficient of the strips of '{s.name}'",
+            )
             # panel k = offset + i*ns + j in strip j; entries ordered (n, j, i, c)
-            n_, j_, i_, c_ = (a.ravel() for a in np.meshgrid(np.arange(nn), np.arange(ns),
-                                                             np.arange(nc), np.arange(3),
-                                                             indexing="ij"))
+            n_, j_, i_, c_ = (
+                a.ravel()
+                for a in np.meshgrid(
+                    np.arange(nn), np.arange(ns), np.arange(nc), np.arange(3), indexing="ij"
+                )
+            )
             k_ = lat.panel_offset[isurf] + i_ * ns + j_
             rows = n_ * ns + j_
             self.declare_partials(name, "panel_forces", rows=rows, cols=(n_ * npn + k_) * 3 + c_)
             self.declare_partials(name, "bound_vectors", rows=rows, cols=3 * k_ + c_)
-            n2, j2, c2 = (a.ravel() for a in np.meshgrid(np.arange(nn), np.arange(ns),
-                                                         np.arange(3), indexing="ij"))
-            self.declare_partials(name, "freestream_direction", rows=n2 * ns + j2,
-                                  cols=3 * n2 + c2)
+            n2, j2, c2 = (
+                a.ravel()
+                for a in np.meshgrid(np.arange(nn), np.arange(ns), np.arange(3), indexing="ij")
+            )
+            self.declare_partials(name, "freestream_direction", rows=n2 * ns + j2, cols=3 * n2 + c2)
             ar = np.arange(nn * ns)
             self.declare_partials(name, ["speed", "density"], rows=ar, cols=ar // ns)
-            self.declare_partials(name, "strip_areas", rows=ar,
-                                  cols=lat.strip_offset[isurf] + ar % ns)
+            self.declare_partials(
+                name, "strip_areas", rows=ar, cols=lat.strip_offset[isurf] + ar % ns
+            )
 
     def _parts(self, inputs, isurf):
         lat = self._lattice
@@ -110,7 +124,7 @@ class VLMSectionalLiftComp(om.ExplicitComponent):
         for isurf, s in enumerate(self._lattice.surfaces):
             name = f"{s.name}_sectional_cl"
             force, bound, e_d, g_len, e, q, area, lift = self._parts(inputs, isurf)
-            qa = (q[:, None] * area[None])  # (nn, ns)
+            qa = q[:, None] * area[None]  # (nn, ns)
             cl = lift / qa
             inv = 1.0 / qa[:, None, :, None]  # broadcast over (nn, nc, ns, 3)
             partials[name, "panel_forces"] = (e * inv).transpose(0, 2, 1, 3).ravel()
@@ -125,4 +139,3 @@ class VLMSectionalLiftComp(om.ExplicitComponent):
             partials[name, "speed"] = (-cl * (rho * speed)[:, None] / q[:, None]).ravel()
             partials[name, "density"] = (-cl * (0.5 * speed**2)[:, None] / q[:, None]).ravel()
             partials[name, "strip_areas"] = (-cl / area[None]).ravel()
-

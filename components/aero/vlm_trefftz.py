@@ -52,30 +52,56 @@ class VLMTrefftzDragComp(om.ExplicitComponent):
         nn = self.options["num_nodes"]
         lat = self._lattice = Lattice(self.options["surfaces"])
         npn = lat.num_panels
-        self.add_input("ring_vertices", np.zeros((npn, 4, 3)), units="m",
-                       desc="corners p1..p4 of the vortex rings")
-        self.add_input("circulation", np.zeros((nn, npn)), units="m**2/s",
-                       desc="ring circulations")
-        self.add_input("freestream_direction", np.zeros((nn, 3)), units=None,
-                       desc="unit vector along the relative wind (wake direction)")
-        self.add_input("density", np.full(nn, SEA_LEVEL_DENSITY), units="kg/m**3",
-                       desc="air density")
-        self.add_output("trefftz_induced_drag", np.zeros(nn), units="N",
-                        desc="induced drag from the Trefftz plane")
+        self.add_input(
+            "ring_vertices",
+            np.zeros((npn, 4, 3)),
+            units="m",
+            desc="corners p1..p4 of the vortex rings",
+        )
+        self.add_input("circulation", np.zeros((nn, npn)), units="m**2/s", desc="ring circulations")
+        self.add_input(
+            "freestream_direction",
+            np.zeros((nn, 3)),
+            units=None,
+            desc="unit vector along the relative wind (wake direction)",
+        )
+        self.add_input(
+            "density", np.full(nn, SEA_LEVEL_DENSITY), units="kg/m**3", desc="air density"
+        )
+        self.add_output(
+            "trefftz_induced_drag",
+            np.zeros(nn),
+            units="N",
+            desc="induced drag from the Trefftz plane",
+        )
         te = lat.te_panels
         nte = te.size
-        self.declare_partials("trefftz_induced_drag", "circulation",
-                              rows=np.repeat(np.arange(nn), nte),
-                              cols=(npn * np.arange(nn)[:, None] + te[None]).ravel())
-        cols_v = (12 * te[:, None, None] + 3 * np.array([2, 3])[None, :, None]
-                  + np.arange(3)[None, None, :]).ravel()  # (t, p3/p4, xyz)
-        self.declare_partials("trefftz_induced_drag", "ring_vertices",
-                              rows=np.repeat(np.arange(nn), cols_v.size),
-                              cols=np.tile(cols_v, nn))
-        self.declare_partials("trefftz_induced_drag", "freestream_direction",
-                              rows=np.repeat(np.arange(nn), 3), cols=np.arange(3 * nn))
-        self.declare_partials("trefftz_induced_drag", "density", rows=np.arange(nn),
-                              cols=np.arange(nn))
+        self.declare_partials(
+            "trefftz_induced_drag",
+            "circulation",
+            rows=np.repeat(np.arange(nn), nte),
+            cols=(npn * np.arange(nn)[:, None] + te[None]).ravel(),
+        )
+        cols_v = (
+            12 * te[:, None, None]
+            + 3 * np.array([2, 3])[None, :, None]
+            + np.arange(3)[None, None, :]
+        ).ravel()  # (t, p3/p4, xyz)
+        self.declare_partials(
+            "trefftz_induced_drag",
+            "ring_vertices",
+            rows=np.repeat(np.arange(nn), cols_v.size),
+            cols=np.tile(cols_v, nn),
+        )
+        self.declare_partials(
+            "trefftz_induced_drag",
+            "freestream_direction",
+            rows=np.repeat(np.arange(nn), 3),
+            cols=np.arange(3 * nn),
+        )
+        self.declare_partials(
+            "trefftz_induced_drag", "density", rows=np.arange(nn), cols=np.arange(nn)
+        )
 
     def _terms(self, inputs, derivatives=False):
         te = self._lattice.te_panels
@@ -127,8 +153,9 @@ class VLMTrefftzDragComp(om.ExplicitComponent):
         drag_sum = np.einsum("nk,nm,nkm->n", gamma, strengths, f)
         partials["trefftz_induced_drag", "density"] = drag_sum / (4.0 * np.pi)
         # Gamma_t enters as Gamma_k (k = t) and through strengths m = t (+) and m = nte + t (-).
-        d_gamma = (np.einsum("nm,nkm->nk", strengths, f)
-                   + np.einsum("nk,nkt->nt", gamma, f[:, :, :nte] - f[:, :, nte:]))
+        d_gamma = np.einsum("nm,nkm->nk", strengths, f) + np.einsum(
+            "nk,nkt->nt", gamma, f[:, :, :nte] - f[:, :, nte:]
+        )
         partials["trefftz_induced_drag", "circulation"] = (scale[:, None] * d_gamma).ravel()
         w = (scale[:, None, None] * gamma[:, :, None] * strengths[:, None, :])[..., None]
         d_mid = np.sum(w * t["df_dd"], axis=2)  # (nn, nte, 3)
@@ -138,5 +165,5 @@ class VLMTrefftzDragComp(om.ExplicitComponent):
         d_a = 0.5 * d_mid - d_e + d_legs[:, nte:]
         partials["trefftz_induced_drag", "ring_vertices"] = np.stack([d_b, d_a], axis=2).ravel()
         partials["trefftz_induced_drag", "freestream_direction"] = np.sum(
-            w * t["df_du"], axis=(1, 2)).ravel()
-
+            w * t["df_du"], axis=(1, 2)
+        ).ravel()

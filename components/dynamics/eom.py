@@ -77,29 +77,40 @@ class EquationsOfMotionComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare("num_nodes", default=1, types=int, lower=1,
-                             desc="number of flight conditions")
+        self.options.declare(
+            "num_nodes", default=1, types=int, lower=1, desc="number of flight conditions"
+        )
 
     def setup(self):
         nn = self.options["num_nodes"]
-        self.add_input("force", np.zeros((nn, 3)), units="N",
-                       desc="aerodynamic and propulsive force, body frame")
-        self.add_input("moment", np.zeros((nn, 3)), units="N*m",
-                       desc="moment of the force about the body origin")
+        self.add_input(
+            "force",
+            np.zeros((nn, 3)),
+            units="N",
+            desc="aerodynamic and propulsive force, body frame",
+        )
+        self.add_input(
+            "moment",
+            np.zeros((nn, 3)),
+            units="N*m",
+            desc="moment of the force about the body origin",
+        )
         self.add_input("mass", 3724.0, units="kg", desc="vehicle mass")
         self.add_input("cg", np.zeros(3), units="m", desc="centre of gravity, body frame")
-        self.add_input("inertia", np.diag([1e4, 1e4, 1e4]), units="kg*m**2",
-                       desc="inertia tensor about the cg")
+        self.add_input(
+            "inertia", np.diag([1e4, 1e4, 1e4]), units="kg*m**2", desc="inertia tensor about the cg"
+        )
         self.add_input("roll", np.zeros(nn), units="rad", desc="roll angle phi")
         self.add_input("pitch", np.zeros(nn), units="rad", desc="pitch angle theta")
         self.add_input("load_factor", np.ones(nn), units=None, desc="gravity multiplier n")
         self.add_input("velocity", np.zeros((nn, 3)), units="m/s", desc="body velocity u, v, w")
-        self.add_input("angular_rate", np.zeros((nn, 3)), units="rad/s",
-                       desc="body rates p, q, r")
-        self.add_output("linear_acceleration", np.zeros((nn, 3)), units="m/s**2",
-                        desc="u_dot, v_dot, w_dot")
-        self.add_output("angular_acceleration", np.zeros((nn, 3)), units="rad/s**2",
-                        desc="p_dot, q_dot, r_dot")
+        self.add_input("angular_rate", np.zeros((nn, 3)), units="rad/s", desc="body rates p, q, r")
+        self.add_output(
+            "linear_acceleration", np.zeros((nn, 3)), units="m/s**2", desc="u_dot, v_dot, w_dot"
+        )
+        self.add_output(
+            "angular_acceleration", np.zeros((nn, 3)), units="rad/s**2", desc="p_dot, q_dot, r_dot"
+        )
 
         lin, ang = "linear_acceleration", "angular_acceleration"
         ar3 = np.arange(3 * nn)
@@ -117,8 +128,10 @@ class EquationsOfMotionComp(om.ExplicitComponent):
 
     def _inverse_inertia(self, inertia):
         if np.linalg.cond(inertia.real) > 1e12:
-            raise om.AnalysisError(f"{self.msginfo}: inertia = {inertia.real.tolist()} kg*m**2 "
-                                   "is singular; it must be invertible.")
+            raise om.AnalysisError(
+                f"{self.msginfo}: inertia = {inertia.real.tolist()} kg*m**2 "
+                "is singular; it must be invertible."
+            )
         return np.linalg.inv(inertia)
 
     def _gravity_direction(self, inputs):
@@ -127,17 +140,24 @@ class EquationsOfMotionComp(om.ExplicitComponent):
 
     def compute(self, inputs, outputs):
         mass = inputs["mass"][0]
-        check_range("mass", mass, lower=0.0, lower_open=True, units="kg",
-                    error=om.AnalysisError, where=self.msginfo)
+        check_range(
+            "mass",
+            mass,
+            lower=0.0,
+            lower_open=True,
+            units="kg",
+            error=om.AnalysisError,
+            where=self.msginfo,
+        )
         force, moment = inputs["force"], inputs["moment"]
         inertia = inputs["inertia"]
         inv = self._inverse_inertia(inertia)
         omega, vel = inputs["angular_rate"], inputs["velocity"]
         n = inputs["load_factor"][:, None]
 
-        outputs["linear_acceleration"] = (force / mass + GRAVITY * n
-                                          * self._gravity_direction(inputs)
-                                          - np.cross(omega, vel))
+        outputs["linear_acceleration"] = (
+            force / mass + GRAVITY * n * self._gravity_direction(inputs) - np.cross(omega, vel)
+        )
         moment_cg = moment - np.cross(inputs["cg"], force)
         gyro = np.cross(omega, omega @ inertia.T)
         outputs["angular_acceleration"] = (moment_cg - gyro) @ inv.T
@@ -156,10 +176,14 @@ class EquationsOfMotionComp(om.ExplicitComponent):
         partials[lin, "force"] = np.full(3 * nn, 1.0 / mass)
         partials[lin, "mass"] = (-force / mass**2).ravel()
         g_n = GRAVITY * n
-        partials[lin, "pitch"] = (g_n[:, None] * np.stack(
-            [-np.cos(th), -np.sin(th) * np.sin(ph), -np.sin(th) * np.cos(ph)], axis=-1)).ravel()
-        partials[lin, "roll"] = (g_n[:, None] * np.stack(
-            [0.0 * th, np.cos(th) * np.cos(ph), -np.cos(th) * np.sin(ph)], axis=-1)).ravel()
+        partials[lin, "pitch"] = (
+            g_n[:, None]
+            * np.stack([-np.cos(th), -np.sin(th) * np.sin(ph), -np.sin(th) * np.cos(ph)], axis=-1)
+        ).ravel()
+        partials[lin, "roll"] = (
+            g_n[:, None]
+            * np.stack([0.0 * th, np.cos(th) * np.cos(ph), -np.cos(th) * np.sin(ph)], axis=-1)
+        ).ravel()
         partials[lin, "load_factor"] = (GRAVITY * self._gravity_direction(inputs)).ravel()
         partials[lin, "velocity"] = -_skew(omega).ravel()
         partials[lin, "angular_rate"] = _skew(vel).ravel()
@@ -175,6 +199,8 @@ class EquationsOfMotionComp(om.ExplicitComponent):
         partials[ang, "angular_rate"] = (-inv @ dgyro).ravel()
         # d omega_dot / d I_kl = -inv[:, k] omega_dot_l - (inv skew(omega))[:, k] omega_l
         inv_skew = inv @ _skew(omega)
-        d_inertia = (-inv[None, :, :, None] * omega_dot[:, None, None, :]
-                     - inv_skew[:, :, :, None] * omega[:, None, None, :])
+        d_inertia = (
+            -inv[None, :, :, None] * omega_dot[:, None, None, :]
+            - inv_skew[:, :, :, None] * omega[:, None, None, :]
+        )
         partials[ang, "inertia"] = d_inertia.reshape(nn, 3, 9).ravel()

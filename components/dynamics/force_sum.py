@@ -33,30 +33,43 @@ class ForceSumComp(om.ExplicitComponent):
 
     def initialize(self):
         self.options.declare("sources", types=(list, tuple), desc="names of the load sources")
-        self.options.declare("forces_only", default=(), types=(list, tuple),
-                             desc="sources that act through the body origin")
-        self.options.declare("num_nodes", default=1, types=int, lower=1,
-                             desc="number of flight conditions")
+        self.options.declare(
+            "forces_only",
+            default=(),
+            types=(list, tuple),
+            desc="sources that act through the body origin",
+        )
+        self.options.declare(
+            "num_nodes", default=1, types=int, lower=1, desc="number of flight conditions"
+        )
 
     def setup(self):
         nn = self.options["num_nodes"]
         sources = list(self.options["sources"])
         unknown = set(self.options["forces_only"]) - set(sources)
         if not sources or unknown:
-            raise ValueError(f"{self.msginfo}: sources = {sources}, forces_only = "
-                             f"{list(self.options['forces_only'])}; forces_only must be a subset "
-                             "of a non-empty sources list.")
+            raise ValueError(
+                f"{self.msginfo}: sources = {sources}, forces_only = "
+                f"{list(self.options['forces_only'])}; forces_only must be a subset "
+                "of a non-empty sources list."
+            )
         self.add_output("force", np.zeros((nn, 3)), units="N", desc="resultant force, body axes")
-        self.add_output("moment", np.zeros((nn, 3)), units="N*m",
-                        desc="resultant moment about the body origin")
+        self.add_output(
+            "moment", np.zeros((nn, 3)), units="N*m", desc="resultant moment about the body origin"
+        )
         ar = np.arange(3 * nn)
         for name in sources:
-            self.add_input(f"{name}_force", np.zeros((nn, 3)), units="N",
-                           desc=f"force of {name}, body axes")
+            self.add_input(
+                f"{name}_force", np.zeros((nn, 3)), units="N", desc=f"force of {name}, body axes"
+            )
             self.declare_partials("force", f"{name}_force", rows=ar, cols=ar, val=1.0)
             if name not in self.options["forces_only"]:
-                self.add_input(f"{name}_moment", np.zeros((nn, 3)), units="N*m",
-                               desc=f"moment of {name} about the body origin")
+                self.add_input(
+                    f"{name}_moment",
+                    np.zeros((nn, 3)),
+                    units="N*m",
+                    desc=f"moment of {name} about the body origin",
+                )
                 self.declare_partials("moment", f"{name}_moment", rows=ar, cols=ar, val=1.0)
 
     def compute(self, inputs, outputs):

@@ -32,18 +32,32 @@ class AnglePerturbationComp(om.ExplicitComponent):
 
     def initialize(self):
         self.options.declare("delta", default=1e-3, types=float, desc="perturbation, rad")
-        self.options.declare("num_nodes", default=1, types=int, lower=1,
-                             desc="number of flight conditions")
+        self.options.declare(
+            "num_nodes", default=1, types=int, lower=1, desc="number of flight conditions"
+        )
 
     def setup(self):
         nn = self.options["num_nodes"]
-        check_range("delta", self.options["delta"], lower=0.0, upper=0.1, lower_open=True,
-                    upper_open=True, units="rad", where=self.msginfo)
+        check_range(
+            "delta",
+            self.options["delta"],
+            lower=0.0,
+            upper=0.1,
+            lower_open=True,
+            upper_open=True,
+            units="rad",
+            where=self.msginfo,
+        )
         self.add_input("angle_of_attack", np.zeros(nn), units="rad", desc="angle of attack")
-        self.add_output("perturbed_angle_of_attack", np.zeros(nn), units="rad",
-                        desc="angle of attack plus the perturbation")
-        self.declare_partials("perturbed_angle_of_attack", "angle_of_attack", diagonal=True,
-                              val=1.0)
+        self.add_output(
+            "perturbed_angle_of_attack",
+            np.zeros(nn),
+            units="rad",
+            desc="angle of attack plus the perturbation",
+        )
+        self.declare_partials(
+            "perturbed_angle_of_attack", "angle_of_attack", diagonal=True, val=1.0
+        )
 
     def compute(self, inputs, outputs):
         outputs["perturbed_angle_of_attack"] = inputs["angle_of_attack"] + self.options["delta"]
@@ -72,28 +86,41 @@ class StabilityDerivativeComp(om.ExplicitComponent):
 
     def initialize(self):
         self.options.declare("delta", default=1e-3, types=float, desc="perturbation, rad")
-        self.options.declare("num_nodes", default=1, types=int, lower=1,
-                             desc="number of flight conditions")
+        self.options.declare(
+            "num_nodes", default=1, types=int, lower=1, desc="number of flight conditions"
+        )
 
     def setup(self):
         nn = self.options["num_nodes"]
         inv = 1.0 / self.options["delta"]
         for name, units in (("force", "N"), ("moment", "N*m")):
             self.add_input(name, np.zeros((nn, 3)), units=units, desc=f"aerodynamic {name}")
-            self.add_input(f"perturbed_{name}", np.zeros((nn, 3)), units=units,
-                           desc=f"aerodynamic {name} at alpha + delta")
+            self.add_input(
+                f"perturbed_{name}",
+                np.zeros((nn, 3)),
+                units=units,
+                desc=f"aerodynamic {name} at alpha + delta",
+            )
         self.add_output("normal_force_slope", np.zeros(nn), units="N/rad", desc="dF_z/dalpha")
-        self.add_output("pitching_moment_slope", np.zeros(nn), units="N*m/rad",
-                        desc="dM_y/dalpha about the body origin")
+        self.add_output(
+            "pitching_moment_slope",
+            np.zeros(nn),
+            units="N*m/rad",
+            desc="dM_y/dalpha about the body origin",
+        )
         ar = np.arange(nn)
-        for out, name, col in (("normal_force_slope", "force", 2),
-                               ("pitching_moment_slope", "moment", 1)):
+        for out, name, col in (
+            ("normal_force_slope", "force", 2),
+            ("pitching_moment_slope", "moment", 1),
+        ):
             self.declare_partials(out, f"perturbed_{name}", rows=ar, cols=3 * ar + col, val=inv)
             self.declare_partials(out, name, rows=ar, cols=3 * ar + col, val=-inv)
 
     def compute(self, inputs, outputs):
         inv = 1.0 / self.options["delta"]
-        outputs["normal_force_slope"] = (inputs["perturbed_force"][:, 2]
-                                         - inputs["force"][:, 2]) * inv
-        outputs["pitching_moment_slope"] = (inputs["perturbed_moment"][:, 1]
-                                            - inputs["moment"][:, 1]) * inv
+        outputs["normal_force_slope"] = (
+            inputs["perturbed_force"][:, 2] - inputs["force"][:, 2]
+        ) * inv
+        outputs["pitching_moment_slope"] = (
+            inputs["perturbed_moment"][:, 1] - inputs["moment"][:, 1]
+        ) * inv

@@ -42,21 +42,34 @@ class NeutralPointComp(om.ImplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare("bracket", default=(0.0, -12.0), types=tuple,
-                             desc="body-x search interval (nose, tail), m")
+        self.options.declare(
+            "bracket",
+            default=(0.0, -12.0),
+            types=tuple,
+            desc="body-x search interval (nose, tail), m",
+        )
 
     def setup(self):
-        self.add_input("pitching_moment_slope", 0.0, units="N*m/rad",
-                       desc="dM_y/dalpha about the body origin")
+        self.add_input(
+            "pitching_moment_slope", 0.0, units="N*m/rad", desc="dM_y/dalpha about the body origin"
+        )
         self.add_input("normal_force_slope", -1.0, units="N/rad", desc="dF_z/dalpha")
-        self.add_output("neutral_point", -4.0, units="m", res_ref=1e4,
-                        desc="body-x station of the neutral point")
-        self.declare_partials("neutral_point", ["pitching_moment_slope", "normal_force_slope",
-                                                "neutral_point"])
+        self.add_output(
+            "neutral_point",
+            -4.0,
+            units="m",
+            res_ref=1e4,
+            desc="body-x station of the neutral point",
+        )
+        self.declare_partials(
+            "neutral_point", ["pitching_moment_slope", "normal_force_slope", "neutral_point"]
+        )
 
     def apply_nonlinear(self, inputs, outputs, residuals):
-        residuals["neutral_point"] = (inputs["pitching_moment_slope"]
-                                      + outputs["neutral_point"] * inputs["normal_force_slope"])
+        residuals["neutral_point"] = (
+            inputs["pitching_moment_slope"]
+            + outputs["neutral_point"] * inputs["normal_force_slope"]
+        )
 
     def solve_nonlinear(self, inputs, outputs):
         dm = float(inputs["pitching_moment_slope"][0].real)
@@ -67,7 +80,8 @@ class NeutralPointComp(om.ImplicitComponent):
             x = -dm / dfz if dfz != 0.0 else np.nan
             raise om.AnalysisError(
                 f"{self.msginfo}: no neutral point in the bracket {self.options['bracket']} m "
-                f"(dM/dalpha = {dm:.4g} N*m/rad, dFz/dalpha = {dfz:.4g} N/rad give x = {x:.4g} m)")
+                f"(dM/dalpha = {dm:.4g} N*m/rad, dFz/dalpha = {dfz:.4g} N/rad give x = {x:.4g} m)"
+            )
         root = brentq(lambda x: dm + x * dfz, min(lo, hi), max(lo, hi), xtol=1e-12, rtol=1e-14)
         # One Newton step on the (possibly complex) inputs: exact for this affine residual, and
         # it carries the complex-step perturbation that the real bracketed solve drops.
@@ -118,13 +132,21 @@ class StaticMarginComp(om.ExplicitComponent):
 
     def compute(self, inputs, outputs):
         mac = inputs["mean_aerodynamic_chord"]
-        check_range("mean_aerodynamic_chord", mac[0], lower=0.0, lower_open=True, units="m",
-                    error=om.AnalysisError, where=self.msginfo)
+        check_range(
+            "mean_aerodynamic_chord",
+            mac[0],
+            lower=0.0,
+            lower_open=True,
+            units="m",
+            error=om.AnalysisError,
+            where=self.msginfo,
+        )
         outputs["static_margin"] = (inputs["cg_x"] - inputs["neutral_point"]) / mac
 
     def compute_partials(self, inputs, partials):
         mac = inputs["mean_aerodynamic_chord"]
         partials["static_margin", "cg_x"] = 1.0 / mac
         partials["static_margin", "neutral_point"] = -1.0 / mac
-        partials["static_margin", "mean_aerodynamic_chord"] = -(
-            inputs["cg_x"] - inputs["neutral_point"]) / mac**2
+        partials["static_margin", "mean_aerodynamic_chord"] = (
+            -(inputs["cg_x"] - inputs["neutral_point"]) / mac**2
+        )

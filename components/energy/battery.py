@@ -42,29 +42,51 @@ class BatteryComp(om.ExplicitComponent):
         self.add_input("battery_mass", 800.0, units="kg", desc="battery pack mass")
         # Declared in J/kg so that E = e m is in J; set it in any unit, e.g.
         # prob.set_val('specific_energy', 400.0, units='W*h/kg').
-        self.add_input("specific_energy", 400.0 * 3600.0, units="J/kg",
-                       desc="pack-level specific energy (default 400 Wh/kg)")
+        self.add_input(
+            "specific_energy",
+            400.0 * 3600.0,
+            units="J/kg",
+            desc="pack-level specific energy (default 400 Wh/kg)",
+        )
         self.add_input("energy_used", 0.0, units="J", desc="mission energy drawn from the pack")
-        self.add_input("initial_soc", 1.0, units=None,
-                       desc="state of charge at the start of the mission, in (0, 1]")
-        self.add_output("energy_capacity", 1.152e9, units="J", ref=1e9,
-                        desc="usable pack energy")
+        self.add_input(
+            "initial_soc",
+            1.0,
+            units=None,
+            desc="state of charge at the start of the mission, in (0, 1]",
+        )
+        self.add_output("energy_capacity", 1.152e9, units="J", ref=1e9, desc="usable pack energy")
         self.add_output("state_of_charge", 1.0, units=None, desc="end-of-mission state of charge")
         self.declare_partials("energy_capacity", ["battery_mass", "specific_energy"])
-        self.declare_partials("state_of_charge", ["battery_mass", "specific_energy",
-                                                  "energy_used"])
+        self.declare_partials("state_of_charge", ["battery_mass", "specific_energy", "energy_used"])
         self.declare_partials("state_of_charge", "initial_soc", val=1.0)
 
     def compute(self, inputs, outputs):
         mass = inputs["battery_mass"]
         density = inputs["specific_energy"]
-        for name, value, units in (("battery_mass", mass, "kg"),
-                                   ("specific_energy", density, "J/kg")):
-            check_range(name, value[0], lower=0.0, lower_open=True, units=units,
-                        error=om.AnalysisError, where=self.msginfo)
+        for name, value, units in (
+            ("battery_mass", mass, "kg"),
+            ("specific_energy", density, "J/kg"),
+        ):
+            check_range(
+                name,
+                value[0],
+                lower=0.0,
+                lower_open=True,
+                units=units,
+                error=om.AnalysisError,
+                where=self.msginfo,
+            )
         soc0 = inputs["initial_soc"]
-        check_range("initial_soc", soc0[0], lower=0.0, upper=1.0, lower_open=True,
-                    error=om.AnalysisError, where=self.msginfo)
+        check_range(
+            "initial_soc",
+            soc0[0],
+            lower=0.0,
+            upper=1.0,
+            lower_open=True,
+            error=om.AnalysisError,
+            where=self.msginfo,
+        )
         capacity = mass * density
         outputs["energy_capacity"] = capacity
         outputs["state_of_charge"] = soc0 - inputs["energy_used"] / capacity

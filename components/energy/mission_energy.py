@@ -46,34 +46,49 @@ class MissionEnergyComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare("energy_multipliers", types=(list, tuple, np.ndarray),
-                             desc="how many times each condition's energy counts (>= 0)")
+        self.options.declare(
+            "energy_multipliers",
+            types=(list, tuple, np.ndarray),
+            desc="how many times each condition's energy counts (>= 0)",
+        )
 
     def setup(self):
         k = np.asarray(self.options["energy_multipliers"], dtype=float)
         if k.ndim != 1 or k.size == 0:
-            raise ValueError(f"{self.msginfo}: 'energy_multipliers' = {k.tolist()} is not "
-                             "allowed: must be a non-empty 1-D sequence of numbers >= 0")
+            raise ValueError(
+                f"{self.msginfo}: 'energy_multipliers' = {k.tolist()} is not "
+                "allowed: must be a non-empty 1-D sequence of numbers >= 0"
+            )
         check_range("energy_multipliers", k, lower=0.0, where=self.msginfo)
         self._k = k
         n = k.size
-        self.add_input("electrical_power", np.zeros(n), units="W",
-                       desc="battery-side electrical power per condition")
+        self.add_input(
+            "electrical_power",
+            np.zeros(n),
+            units="W",
+            desc="battery-side electrical power per condition",
+        )
         self.add_input("duration", np.zeros(n), units="s", desc="time in each condition")
-        self.add_output("segment_energy", np.zeros(n), units="J", ref=1e7,
-                        desc="energy of one pass through each condition")
-        self.add_output("energy_used", 0.0, units="J", ref=1e8,
-                        desc="energy drawn over the sizing mission")
+        self.add_output(
+            "segment_energy",
+            np.zeros(n),
+            units="J",
+            ref=1e7,
+            desc="energy of one pass through each condition",
+        )
+        self.add_output(
+            "energy_used", 0.0, units="J", ref=1e8, desc="energy drawn over the sizing mission"
+        )
         self.declare_partials("segment_energy", ["electrical_power", "duration"], diagonal=True)
         cols = np.arange(n)
-        self.declare_partials("energy_used", ["electrical_power", "duration"],
-                              rows=np.zeros(n, dtype=int), cols=cols)
+        self.declare_partials(
+            "energy_used", ["electrical_power", "duration"], rows=np.zeros(n, dtype=int), cols=cols
+        )
 
     def compute(self, inputs, outputs):
         duration = inputs["duration"]
         if np.any(duration.real < 0.0):
-            raise om.AnalysisError(f"{self.msginfo}: duration = {duration.real} s; must be "
-                                   ">= 0.")
+            raise om.AnalysisError(f"{self.msginfo}: duration = {duration.real} s; must be >= 0.")
         energy = inputs["electrical_power"] * duration
         outputs["segment_energy"] = energy
         outputs["energy_used"] = np.dot(self._k, energy)

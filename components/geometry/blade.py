@@ -15,13 +15,14 @@ from lpc_mdo.components.bspline import BsplineComp
 
 #: Radial-quadrature choices of :class:`BladeStationsComp` (docs theory/rotors 'Stations and disk
 #: frame', 'Loads and coefficients', 'Public-code compatibility').
-QUADRATURES = ('midpoint', 'bladead')
+QUADRATURES = ("midpoint", "bladead")
 #: Where the B-spline values are placed (docs theory/rotors 'Blade parameterization').
-SPLINE_STATIONS = ('as_coded', 'element_centres')
+SPLINE_STATIONS = ("as_coded", "element_centres")
 
 
-def per_rotor(value, num_rotors, name, kind=float, lower=None, upper=None, upper_open=False,
-              owner=''):
+def per_rotor(
+    value, num_rotors, name, kind=float, lower=None, upper=None, upper_open=False, owner=""
+):
     """
     Broadcast a scalar or per-rotor option to an array (num_rotors,) and check its range.
 
@@ -51,13 +52,15 @@ def per_rotor(value, num_rotors, name, kind=float, lower=None, upper=None, upper
     ValueError
         Naming the option, the value and the allowed range or shape.
     """
-    where = f"{owner}: " if owner else ''
+    where = f"{owner}: " if owner else ""
     arr = np.asarray(value)
     if arr.ndim == 0:
         arr = np.full(num_rotors, arr)
     if arr.shape != (num_rotors,):
-        raise ValueError(f"{where}option '{name}' = {np.asarray(value).tolist()} must be a "
-                         f"scalar or have num_rotors = {num_rotors} entries.")
+        raise ValueError(
+            f"{where}option '{name}' = {np.asarray(value).tolist()} must be a "
+            f"scalar or have num_rotors = {num_rotors} entries."
+        )
     check_range(name, arr, lower=lower, upper=upper, upper_open=upper_open, where=owner)
     if kind is int:
         for i, entry in enumerate(arr.tolist()):
@@ -68,11 +71,12 @@ def per_rotor(value, num_rotors, name, kind=float, lower=None, upper=None, upper
 
 def azimuth_angles(num_azimuth):
     """Azimuthal stations psi_k = 2 pi k / N_psi, k = 0..N_psi-1, rad (docs theory/rotors
-    'Stations and disk frame')."""
+    'Stations and disk frame').
+    """
     return 2.0 * np.pi * np.arange(num_azimuth) / num_azimuth
 
 
-def station_fractions(num_radial, quadrature='midpoint'):
+def station_fractions(num_radial, quadrature="midpoint"):
     """
     Element centres and quadrature weights as fractions of the blade length R - r_h.
 
@@ -90,11 +94,10 @@ def station_fractions(num_radial, quadrature='midpoint'):
     """
     check_choice("quadrature", quadrature, QUADRATURES)
     eta = (np.arange(num_radial) + 0.5) / num_radial
-    if quadrature == 'midpoint':
+    if quadrature == "midpoint":
         q = np.full(num_radial, 1.0 / num_radial)
     else:
-        check_integer("num_radial", num_radial, lower=2,
-                      allowed=">= 2 (quadrature 'bladead')")
+        check_integer("num_radial", num_radial, lower=2, allowed=">= 2 (quadrature 'bladead')")
         q = np.full(num_radial, 1.0 / (num_radial - 1))
         q[[0, -1]] *= 0.5
     return eta, q
@@ -141,55 +144,94 @@ class BladeStationsComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare('num_rotors', default=1, types=int, lower=1, desc='Number of rotors')
-        self.options.declare('num_radial', default=25, types=int, lower=1,
-                             desc='Number of radial stations (element centres)')
-        self.options.declare('num_azimuth', default=25, types=int, lower=1,
-                             desc='Number of azimuthal stations (edgewise models)')
-        self.options.declare('hub_radius_ratio', default=0.2,
-                             types=(int, float, list, tuple, np.ndarray),
-                             desc='Hub radius over tip radius, in [0, 1); scalar or per rotor')
-        self.options.declare('quadrature', default='midpoint', values=QUADRATURES,
-                             desc="Radial quadrature: 'midpoint' or 'bladead' "
-                                  "(docs theory/rotors 'Public-code compatibility')")
+        self.options.declare("num_rotors", default=1, types=int, lower=1, desc="Number of rotors")
+        self.options.declare(
+            "num_radial",
+            default=25,
+            types=int,
+            lower=1,
+            desc="Number of radial stations (element centres)",
+        )
+        self.options.declare(
+            "num_azimuth",
+            default=25,
+            types=int,
+            lower=1,
+            desc="Number of azimuthal stations (edgewise models)",
+        )
+        self.options.declare(
+            "hub_radius_ratio",
+            default=0.2,
+            types=(int, float, list, tuple, np.ndarray),
+            desc="Hub radius over tip radius, in [0, 1); scalar or per rotor",
+        )
+        self.options.declare(
+            "quadrature",
+            default="midpoint",
+            values=QUADRATURES,
+            desc="Radial quadrature: 'midpoint' or 'bladead' "
+            "(docs theory/rotors 'Public-code compatibility')",
+        )
 
     def setup(self):
-        nr, nrad = self.options['num_rotors'], self.options['num_radial']
-        naz = self.options['num_azimuth']
-        h = per_rotor(self.options['hub_radius_ratio'], nr, 'hub_radius_ratio', lower=0.0,
-                      upper=1.0, upper_open=True, owner=self.msginfo)
-        eta, q = station_fractions(nrad, self.options['quadrature'])
+        nr, nrad = self.options["num_rotors"], self.options["num_radial"]
+        naz = self.options["num_azimuth"]
+        h = per_rotor(
+            self.options["hub_radius_ratio"],
+            nr,
+            "hub_radius_ratio",
+            lower=0.0,
+            upper=1.0,
+            upper_open=True,
+            owner=self.msginfo,
+        )
+        eta, q = station_fractions(nrad, self.options["quadrature"])
         # Output per unit tip radius: r_i / R and dr_i / R.
         self._hub = h
         self._station = h[:, None] + (1.0 - h)[:, None] * eta
         self._width = (1.0 - h)[:, None] * q
 
-        self.add_input('radius', val=np.ones(nr), units='m', desc='Rotor tip radius')
-        self.add_output('hub_radius', val=h.copy(), units='m', desc='Hub radius')
-        self.add_output('station_radius', val=self._station.copy(), units='m',
-                        desc='Radius of the blade-element centres')
-        self.add_output('station_width', val=self._width.copy(), units='m',
-                        desc='Radial quadrature width of each blade element')
-        self.add_output('azimuth', val=azimuth_angles(naz), units='rad',
-                        desc='Azimuthal stations 2 pi k / num_azimuth')
+        self.add_input("radius", val=np.ones(nr), units="m", desc="Rotor tip radius")
+        self.add_output("hub_radius", val=h.copy(), units="m", desc="Hub radius")
+        self.add_output(
+            "station_radius",
+            val=self._station.copy(),
+            units="m",
+            desc="Radius of the blade-element centres",
+        )
+        self.add_output(
+            "station_width",
+            val=self._width.copy(),
+            units="m",
+            desc="Radial quadrature width of each blade element",
+        )
+        self.add_output(
+            "azimuth",
+            val=azimuth_angles(naz),
+            units="rad",
+            desc="Azimuthal stations 2 pi k / num_azimuth",
+        )
 
         ar = np.arange(nr)
-        self.declare_partials('hub_radius', 'radius', rows=ar, cols=ar, val=h)
+        self.declare_partials("hub_radius", "radius", rows=ar, cols=ar, val=h)
         rows = np.arange(nr * nrad)
         cols = np.repeat(ar, nrad)
-        self.declare_partials('station_radius', 'radius', rows=rows, cols=cols,
-                              val=self._station.ravel())
-        self.declare_partials('station_width', 'radius', rows=rows, cols=cols,
-                              val=self._width.ravel())
+        self.declare_partials(
+            "station_radius", "radius", rows=rows, cols=cols, val=self._station.ravel()
+        )
+        self.declare_partials(
+            "station_width", "radius", rows=rows, cols=cols, val=self._width.ravel()
+        )
 
     def compute(self, inputs, outputs):
-        radius = inputs['radius']
+        radius = inputs["radius"]
         if np.any(radius.real <= 0.0):
-            raise om.AnalysisError(f"{self.msginfo}: radius = {radius.real.tolist()} m; allowed "
-                                   "range (0, inf).")
-        outputs['hub_radius'] = self._hub * radius
-        outputs['station_radius'] = self._station * radius[:, None]
-        outputs['station_width'] = self._width * radius[:, None]
+            raise om.AnalysisError(
+                f"{self.msginfo}: radius = {radius.real.tolist()} m; allowed range (0, inf)."
+            )
+        outputs["hub_radius"] = self._hub * radius
+        outputs["station_radius"] = self._station * radius[:, None]
+        outputs["station_width"] = self._width * radius[:, None]
 
 
 class BladeGeometryGroup(om.Group):
@@ -240,39 +282,75 @@ class BladeGeometryGroup(om.Group):
     """
 
     def initialize(self):
-        self.options.declare('num_rotors', default=1, types=int, lower=1, desc='Number of rotors')
-        self.options.declare('num_radial', default=25, types=int, lower=1,
-                             desc='Number of radial stations')
-        self.options.declare('num_azimuth', default=25, types=int, lower=1,
-                             desc='Number of azimuthal stations (edgewise models)')
-        self.options.declare('hub_radius_ratio', default=0.2,
-                             types=(int, float, list, tuple, np.ndarray),
-                             desc='Hub radius over tip radius, in [0, 1); scalar or per rotor')
-        self.options.declare('quadrature', default='midpoint', values=QUADRATURES,
-                             desc="Radial quadrature: 'midpoint' or 'bladead' "
-                                  "(docs theory/rotors 'Public-code compatibility')")
-        self.options.declare('num_cp', default=4, types=int, lower=4,
-                             desc='Chord and twist control points per rotor')
-        self.options.declare('spline_stations', default='as_coded', values=SPLINE_STATIONS,
-                             desc="Spline parameter of station i: 'as_coded' i/(N-1) or "
-                                  "'element_centres' (i + 1/2)/N")
+        self.options.declare("num_rotors", default=1, types=int, lower=1, desc="Number of rotors")
+        self.options.declare(
+            "num_radial", default=25, types=int, lower=1, desc="Number of radial stations"
+        )
+        self.options.declare(
+            "num_azimuth",
+            default=25,
+            types=int,
+            lower=1,
+            desc="Number of azimuthal stations (edgewise models)",
+        )
+        self.options.declare(
+            "hub_radius_ratio",
+            default=0.2,
+            types=(int, float, list, tuple, np.ndarray),
+            desc="Hub radius over tip radius, in [0, 1); scalar or per rotor",
+        )
+        self.options.declare(
+            "quadrature",
+            default="midpoint",
+            values=QUADRATURES,
+            desc="Radial quadrature: 'midpoint' or 'bladead' "
+            "(docs theory/rotors 'Public-code compatibility')",
+        )
+        self.options.declare(
+            "num_cp", default=4, types=int, lower=4, desc="Chord and twist control points per rotor"
+        )
+        self.options.declare(
+            "spline_stations",
+            default="as_coded",
+            values=SPLINE_STATIONS,
+            desc="Spline parameter of station i: 'as_coded' i/(N-1) or "
+            "'element_centres' (i + 1/2)/N",
+        )
 
     def setup(self):
         opts = self.options
-        nr, nrad, ncp = opts['num_rotors'], opts['num_radial'], opts['num_cp']
-        self.add_subsystem('stations', BladeStationsComp(
-            num_rotors=nr, num_radial=nrad, num_azimuth=opts['num_azimuth'],
-            hub_radius_ratio=opts['hub_radius_ratio'], quadrature=opts['quadrature']),
-            promotes=['*'])
-        if opts['spline_stations'] == 'as_coded':
+        nr, nrad, ncp = opts["num_rotors"], opts["num_radial"], opts["num_cp"]
+        self.add_subsystem(
+            "stations",
+            BladeStationsComp(
+                num_rotors=nr,
+                num_radial=nrad,
+                num_azimuth=opts["num_azimuth"],
+                hub_radius_ratio=opts["hub_radius_ratio"],
+                quadrature=opts["quadrature"],
+            ),
+            promotes=["*"],
+        )
+        if opts["spline_stations"] == "as_coded":
             t = np.linspace(0.0, 1.0, nrad) if nrad > 1 else np.zeros(1)
         else:
             t = (np.arange(nrad) + 0.5) / nrad
-        for name, units in (('chord', 'm'), ('twist', 'rad')):
-            self.add_subsystem(f'{name}_spline', BsplineComp(
-                num_cp=ncp, num_points=nrad, order=4, vec_size=nr, x_interp=t,
-                in_name=f'{name}_cp', out_name=name, units=units), promotes=['*'])
-        self.set_input_defaults('chord_cp', np.tile(np.linspace(0.3, 0.1, ncp), (nr, 1)),
-                                units='m')
-        self.set_input_defaults('twist_cp', np.tile(np.radians(np.linspace(30.0, 10.0, ncp)),
-                                                    (nr, 1)), units='rad')
+        for name, units in (("chord", "m"), ("twist", "rad")):
+            self.add_subsystem(
+                f"{name}_spline",
+                BsplineComp(
+                    num_cp=ncp,
+                    num_points=nrad,
+                    order=4,
+                    vec_size=nr,
+                    x_interp=t,
+                    in_name=f"{name}_cp",
+                    out_name=name,
+                    units=units,
+                ),
+                promotes=["*"],
+            )
+        self.set_input_defaults("chord_cp", np.tile(np.linspace(0.3, 0.1, ncp), (nr, 1)), units="m")
+        self.set_input_defaults(
+            "twist_cp", np.tile(np.radians(np.linspace(30.0, 10.0, ncp)), (nr, 1)), units="rad"
+        )

@@ -77,12 +77,19 @@ class PlanformMeshComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare("num_chord_panels", default=1, types=int, lower=1,
-                             desc="chord-wise panels")
-        self.options.declare("num_span_panels", types=int, lower=2,
-                             check_valid=_check_even, desc="span-wise panels, both halves (even)")
-        self.options.declare("spacing", default="cosine", values=SPACINGS,
-                             desc="span-wise node spacing")
+        self.options.declare(
+            "num_chord_panels", default=1, types=int, lower=1, desc="chord-wise panels"
+        )
+        self.options.declare(
+            "num_span_panels",
+            types=int,
+            lower=2,
+            check_valid=_check_even,
+            desc="span-wise panels, both halves (even)",
+        )
+        self.options.declare(
+            "spacing", default="cosine", values=SPACINGS, desc="span-wise node spacing"
+        )
 
     def setup(self):
         nc = self.options["num_chord_panels"]
@@ -101,40 +108,67 @@ class PlanformMeshComp(om.ExplicitComponent):
         self.add_input("sweep", 0.0, units="rad", desc="leading-edge sweep, positive aft")
         self.add_input("dihedral", 0.0, units="rad", desc="dihedral, positive tip up")
         self.add_input("incidence", 0.0, units="rad", desc="root incidence, positive nose up")
-        self.add_input("twist", np.zeros(nh), units="rad",
-                       desc="extra section twist at the half-span nodes, root to tip")
-        self.add_input("root_leading_edge", np.zeros(3), units="m",
-                       desc="leading edge of the root chord, body frame")
-        self.add_output("mesh", np.zeros((nx, ny, 3)), units="m",
-                        desc="lattice nodes, chord-wise x span-wise x (x, y, z)")
+        self.add_input(
+            "twist",
+            np.zeros(nh),
+            units="rad",
+            desc="extra section twist at the half-span nodes, root to tip",
+        )
+        self.add_input(
+            "root_leading_edge",
+            np.zeros(3),
+            units="m",
+            desc="leading edge of the root chord, body frame",
+        )
+        self.add_output(
+            "mesh",
+            np.zeros((nx, ny, 3)),
+            units="m",
+            desc="lattice nodes, chord-wise x span-wise x (x, y, z)",
+        )
 
         idx = np.arange(nx * ny * 3).reshape(nx, ny, 3)
         rx, ry, rz = idx[..., 0].ravel(), idx[..., 1].ravel(), idx[..., 2].ravel()
         rxz = np.concatenate([rx, rz])
-        self.declare_partials("mesh", "span", rows=np.concatenate([rx, ry, rz]),
-                              cols=np.zeros(3 * nx * ny, int))
-        self.declare_partials("mesh", ["root_chord", "tip_chord", "incidence"], rows=rxz,
-                              cols=np.zeros(2 * nx * ny, int))
+        self.declare_partials(
+            "mesh", "span", rows=np.concatenate([rx, ry, rz]), cols=np.zeros(3 * nx * ny, int)
+        )
+        self.declare_partials(
+            "mesh",
+            ["root_chord", "tip_chord", "incidence"],
+            rows=rxz,
+            cols=np.zeros(2 * nx * ny, int),
+        )
         self.declare_partials("mesh", "sweep", rows=rx, cols=np.zeros(nx * ny, int))
         self.declare_partials("mesh", "dihedral", rows=rz, cols=np.zeros(nx * ny, int))
         half = np.tile(self._half, nx)
         self.declare_partials("mesh", "twist", rows=rxz, cols=np.concatenate([half, half]))
-        self.declare_partials("mesh", "root_leading_edge", rows=idx.ravel(),
-                              cols=np.tile(np.arange(3), nx * ny), val=1.0)
+        self.declare_partials(
+            "mesh",
+            "root_leading_edge",
+            rows=idx.ravel(),
+            cols=np.tile(np.arange(3), nx * ny),
+            val=1.0,
+        )
 
     def _check_inputs(self, inputs):
-        value = {name: float(np.real(inputs[name])[0])
-                 for name in ("span", "root_chord", "tip_chord", "sweep", "dihedral")}
+        value = {
+            name: float(np.real(inputs[name])[0])
+            for name in ("span", "root_chord", "tip_chord", "sweep", "dihedral")
+        }
         limit = np.pi / 2
-        checks = (("span", value["span"] > 0.0, "> 0 m"),
-                  ("root_chord", value["root_chord"] > 0.0, "> 0 m"),
-                  ("tip_chord", value["tip_chord"] >= 0.0, ">= 0 m"),
-                  ("sweep", -limit < value["sweep"] < limit, "in (-pi/2, pi/2) rad"),
-                  ("dihedral", -limit < value["dihedral"] < limit, "in (-pi/2, pi/2) rad"))
+        checks = (
+            ("span", value["span"] > 0.0, "> 0 m"),
+            ("root_chord", value["root_chord"] > 0.0, "> 0 m"),
+            ("tip_chord", value["tip_chord"] >= 0.0, ">= 0 m"),
+            ("sweep", -limit < value["sweep"] < limit, "in (-pi/2, pi/2) rad"),
+            ("dihedral", -limit < value["dihedral"] < limit, "in (-pi/2, pi/2) rad"),
+        )
         for name, ok, allowed in checks:
             if not ok:
-                raise om.AnalysisError(f"{self.msginfo}: {name} = {value[name]}; must be "
-                                       f"{allowed}.")
+                raise om.AnalysisError(
+                    f"{self.msginfo}: {name} = {value[name]}; must be {allowed}."
+                )
 
     def _sections(self, inputs):
         b = inputs["span"][0]
@@ -162,12 +196,15 @@ class PlanformMeshComp(om.ExplicitComponent):
         cos, sin = np.cos(theta)[None, :], np.sin(theta)[None, :]
         ones = np.ones((nx, 1))
         tan_sw, tan_di = np.tan(inputs["sweep"][0]), np.tan(inputs["dihedral"][0])
-        partials["mesh", "span"] = np.concatenate([
-            (ones * (-0.5 * ae * tan_sw)).ravel(), (ones * 0.5 * self._eta).ravel(),
-            (ones * (-0.5 * ae * tan_di)).ravel()])
+        partials["mesh", "span"] = np.concatenate(
+            [
+                (ones * (-0.5 * ae * tan_sw)).ravel(),
+                (ones * 0.5 * self._eta).ravel(),
+                (ones * (-0.5 * ae * tan_di)).ravel(),
+            ]
+        )
         for name, w in (("root_chord", 1.0 - ae), ("tip_chord", ae)):
-            partials["mesh", name] = np.concatenate([(-s * w * cos).ravel(),
-                                                     (s * w * sin).ravel()])
+            partials["mesh", name] = np.concatenate([(-s * w * cos).ravel(), (s * w * sin).ravel()])
         d_theta = np.concatenate([(s * c * sin).ravel(), (s * c * cos).ravel()])
         partials["mesh", "incidence"] = d_theta
         partials["mesh", "twist"] = d_theta
@@ -177,8 +214,13 @@ class PlanformMeshComp(om.ExplicitComponent):
 
 
 def _check_even(name, value):
-    check_integer(name, value, allowed="even (a node on the root of the mirrored surface)",
-                  upper=None if value % 2 == 0 else value - 1, where="PlanformMeshComp")
+    check_integer(
+        name,
+        value,
+        allowed="even (a node on the root of the mirrored surface)",
+        upper=None if value % 2 == 0 else value - 1,
+        where="PlanformMeshComp",
+    )
 
 
 def planform_values(surface):

@@ -57,16 +57,21 @@ class RotorLayoutComp(om.ExplicitComponent):
 
     def initialize(self):
         self.options.declare("vehicle", desc="lpc_mdo.vehicle.Vehicle with the reference layout")
-        self.options.declare("definition", default=None, allow_none=True,
-                             values=("span_fraction", "clearance", None),
-                             desc="radius-intersection definition; None: the vehicle's")
+        self.options.declare(
+            "definition",
+            default=None,
+            allow_none=True,
+            values=("span_fraction", "clearance", None),
+            desc="radius-intersection definition; None: the vehicle's",
+        )
 
     def setup(self):
         vehicle = self.options["vehicle"]
         rotors = vehicle.lift_rotors
         wing = vehicle.wing
-        definition = (self.options["definition"]
-                      or vehicle.constraints.radius_intersection_definition)
+        definition = (
+            self.options["definition"] or vehicle.constraints.radius_intersection_definition
+        )
         self._definition = definition
 
         hubs = np.array([r.hub_position for r in rotors])
@@ -76,27 +81,40 @@ class RotorLayoutComp(om.ExplicitComponent):
         self._eta = np.abs(attach[:, 1]) / half_span_ref
         num_lift = len(rotors)
         num_pairs = len(vehicle.lift_rotor_pairs)
-        self._direction = np.stack([np.full(num_lift, np.tan(wing.sweep)), self._sign,
-                                    np.full(num_lift, -np.tan(wing.dihedral))], axis=1)
+        self._direction = np.stack(
+            [
+                np.full(num_lift, np.tan(wing.sweep)),
+                self._sign,
+                np.full(num_lift, -np.tan(wing.dihedral)),
+            ],
+            axis=1,
+        )
         # Position at span b: hub_ref + (eta b/2 - |y_ref|) * direction = base + b * slope.
         self._base = hubs - (np.abs(attach[:, 1]))[:, None] * self._direction
         self._slope = 0.5 * self._eta[:, None] * self._direction
         self._pusher_offset = np.array(vehicle.pusher.hub_position) + np.array(
-            [vehicle.fuselage.length, 0.0, 0.0])
+            [vehicle.fuselage.length, 0.0, 0.0]
+        )
         self._pair = np.array([r.pair for r in rotors])
         # Front: pairs (2 inner, 0 outer); rear: pairs (3 inner, 1 outer); one rotor each side.
         self._inner = np.array([2, 3])
         self._outer = np.array([0, 1])
         left = self._sign < 0
-        self._rotor_of_pair = np.array([np.flatnonzero(left & (self._pair == p))[0]
-                                        for p in range(num_pairs)])
+        self._rotor_of_pair = np.array(
+            [np.flatnonzero(left & (self._pair == p))[0] for p in range(num_pairs)]
+        )
 
         self.add_input("wing_span", wing.span, units="m", desc="wing span")
-        self.add_input("fuselage_length", vehicle.fuselage.length, units="m",
-                       desc="fuselage length")
+        self.add_input(
+            "fuselage_length", vehicle.fuselage.length, units="m", desc="fuselage length"
+        )
         radius = [rotors[i].radius for i in self._rotor_of_pair] + [vehicle.pusher.radius]
-        self.add_input("rotor_radius", np.array(radius), units="m",
-                       desc="radius per rotor group (4 lift pairs, pusher)")
+        self.add_input(
+            "rotor_radius",
+            np.array(radius),
+            units="m",
+            desc="radius per rotor group (4 lift pairs, pusher)",
+        )
         # Lateral gap between the inner and outer left rotors, front and rear: on the left side
         # y_inner > y_outer, so |y_outer - y_inner| = gap_base + b * gap_slope.
         inner = self._rotor_of_pair[self._inner]
@@ -105,37 +123,56 @@ class RotorLayoutComp(om.ExplicitComponent):
         self._gap_slope = self._slope[inner, 1] - self._slope[outer, 1]
 
         self.add_output("lift_hub_position", hubs, units="m", desc="lift-rotor hubs, body frame")
-        self.add_output("pusher_hub_position", np.array(vehicle.pusher.hub_position), units="m",
-                        desc="pusher hub, body frame")
-        self.add_output("lift_rotor_radius", np.full(num_lift, 1.0), units="m",
-                        desc="radius of each lift rotor")
-        self.add_output("radius_intersection", np.zeros(2),
-                        units="m" if definition == "clearance" else None,
-                        desc=f"front and rear radius intersection ({definition})")
+        self.add_output(
+            "pusher_hub_position",
+            np.array(vehicle.pusher.hub_position),
+            units="m",
+            desc="pusher hub, body frame",
+        )
+        self.add_output(
+            "lift_rotor_radius", np.full(num_lift, 1.0), units="m", desc="radius of each lift rotor"
+        )
+        self.add_output(
+            "radius_intersection",
+            np.zeros(2),
+            units="m" if definition == "clearance" else None,
+            desc=f"front and rear radius intersection ({definition})",
+        )
 
         self.declare_partials("lift_hub_position", "wing_span", val=self._slope.ravel())
-        self.declare_partials("pusher_hub_position", "fuselage_length", rows=[0], cols=[0],
-                              val=-1.0)
-        self.declare_partials("lift_rotor_radius", "rotor_radius", rows=np.arange(num_lift),
-                              cols=self._pair, val=1.0)
+        self.declare_partials(
+            "pusher_hub_position", "fuselage_length", rows=[0], cols=[0], val=-1.0
+        )
+        self.declare_partials(
+            "lift_rotor_radius", "rotor_radius", rows=np.arange(num_lift), cols=self._pair, val=1.0
+        )
         rows = np.array([0, 0, 1, 1])
         cols = np.array([self._inner[0], self._outer[0], self._inner[1], self._outer[1]])
         if definition == "span_fraction":
             self.declare_partials("radius_intersection", "rotor_radius", rows=rows, cols=cols)
             self.declare_partials("radius_intersection", "wing_span")
         else:
-            self.declare_partials("radius_intersection", "rotor_radius", rows=rows, cols=cols,
-                                  val=-1.0)
+            self.declare_partials(
+                "radius_intersection", "rotor_radius", rows=rows, cols=cols, val=-1.0
+            )
             self.declare_partials("radius_intersection", "wing_span", val=self._gap_slope)
 
     def compute(self, inputs, outputs):
         span = inputs["wing_span"][0]
-        check_range("wing_span", span, lower=0.0, lower_open=True, units="m",
-                    error=om.AnalysisError, where=self.msginfo)
+        check_range(
+            "wing_span",
+            span,
+            lower=0.0,
+            lower_open=True,
+            units="m",
+            error=om.AnalysisError,
+            where=self.msginfo,
+        )
         radius = inputs["rotor_radius"]
         outputs["lift_hub_position"] = self._base + span * self._slope
         outputs["pusher_hub_position"] = self._pusher_offset - np.array(
-            [inputs["fuselage_length"][0], 0.0, 0.0])
+            [inputs["fuselage_length"][0], 0.0, 0.0]
+        )
         outputs["lift_rotor_radius"] = radius[self._pair]
         pair_sum = radius[self._inner] + radius[self._outer]
         if self._definition == "span_fraction":
@@ -147,8 +184,8 @@ class RotorLayoutComp(om.ExplicitComponent):
         span = inputs["wing_span"][0]
         radius = inputs["rotor_radius"]
         if self._definition == "span_fraction":
-            partials["radius_intersection", "rotor_radius"] = np.full(self._inner.size
-                                                                      + self._outer.size,
-                                                                      1.0 / span)
+            partials["radius_intersection", "rotor_radius"] = np.full(
+                self._inner.size + self._outer.size, 1.0 / span
+            )
             pair_sum = radius[self._inner] + radius[self._outer]
             partials["radius_intersection", "wing_span"] = -pair_sum / span**2

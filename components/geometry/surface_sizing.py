@@ -34,13 +34,13 @@ class SurfaceSizingComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare("taper_ratio", types=float, lower=0.0, upper=1.0,
-                             desc="tip chord / root chord")
+        self.options.declare(
+            "taper_ratio", types=float, lower=0.0, upper=1.0, desc="tip chord / root chord"
+        )
 
     def setup(self):
         taper = self.options["taper_ratio"]
-        check_range("taper_ratio", taper, lower=0.0, upper=1.0, lower_open=True,
-                    where=self.msginfo)
+        check_range("taper_ratio", taper, lower=0.0, upper=1.0, lower_open=True, where=self.msginfo)
         self.add_input("area", 1.0, units="m**2", desc="planform reference area")
         self.add_input("aspect_ratio", 1.0, units=None, desc="aspect ratio b^2/S")
         self.add_output("span", 1.0, units="m", desc="span")
@@ -52,8 +52,15 @@ class SurfaceSizingComp(om.ExplicitComponent):
     def compute(self, inputs, outputs):
         area, ar = inputs["area"], inputs["aspect_ratio"]
         for name, value, units in (("area", area, "m**2"), ("aspect_ratio", ar, None)):
-            check_range(name, value[0], lower=0.0, lower_open=True, units=units,
-                        error=om.AnalysisError, where=self.msginfo)
+            check_range(
+                name,
+                value[0],
+                lower=0.0,
+                lower_open=True,
+                units=units,
+                error=om.AnalysisError,
+                where=self.msginfo,
+            )
         lam = self.options["taper_ratio"]
         # c_root = 2 S/((1+lam) b) = 2 sqrt(S/AR)/(1+lam)
         root = 2.0 * np.sqrt(area / ar) / (1.0 + lam)
@@ -71,7 +78,10 @@ class SurfaceSizingComp(om.ExplicitComponent):
         root = 2.0 * np.sqrt(area / ar) / (1.0 + lam)
         d_area, d_ar = 0.5 * root / area, -0.5 * root / ar
         mac_factor = 2.0 / 3.0 * (1 + lam + lam**2) / (1 + lam)
-        for name, factor in (("root_chord", 1.0), ("tip_chord", lam),
-                             ("mean_aerodynamic_chord", mac_factor)):
+        for name, factor in (
+            ("root_chord", 1.0),
+            ("tip_chord", lam),
+            ("mean_aerodynamic_chord", mac_factor),
+        ):
             partials[name, "area"] = factor * d_area
             partials[name, "aspect_ratio"] = factor * d_ar

@@ -33,14 +33,21 @@ class TailPositionComp(om.ExplicitComponent):
     def setup(self):
         vehicle = self.options["vehicle"]
         self._length_ref = vehicle.fuselage.length
-        self._refs = {"htail": np.array(vehicle.horizontal_tail.root_leading_edge),
-                      "vtail": np.array(vehicle.vertical_tail.root_leading_edge)}
+        self._refs = {
+            "htail": np.array(vehicle.horizontal_tail.root_leading_edge),
+            "vtail": np.array(vehicle.vertical_tail.root_leading_edge),
+        }
         self.add_input("fuselage_length", self._length_ref, units="m", desc="fuselage length")
         for name, ref in self._refs.items():
-            self.add_output(f"{name}_root_leading_edge", ref, units="m",
-                            desc=f"{name} root leading edge, body frame")
-            self.declare_partials(f"{name}_root_leading_edge", "fuselage_length", rows=[0],
-                                  cols=[0], val=-1.0)
+            self.add_output(
+                f"{name}_root_leading_edge",
+                ref,
+                units="m",
+                desc=f"{name} root leading edge, body frame",
+            )
+            self.declare_partials(
+                f"{name}_root_leading_edge", "fuselage_length", rows=[0], cols=[0], val=-1.0
+            )
 
     def compute(self, inputs, outputs):
         shift = inputs["fuselage_length"][0] - self._length_ref

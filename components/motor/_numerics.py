@@ -42,7 +42,7 @@ def pointwise_pattern(of_shape, wrt_shape):
         return rows, rows
     if len(of_shape) == 2 and wrt_shape == of_shape[:1]:
         return rows, np.repeat(np.arange(of_shape[0]), of_shape[1])
-    raise ValueError(f'No pointwise pattern from shape {wrt_shape} to shape {of_shape}.')
+    raise ValueError(f"No pointwise pattern from shape {wrt_shape} to shape {of_shape}.")
 
 
 def declare_pointwise_partials(comp, deps, shapes, val=None):
@@ -114,7 +114,7 @@ def polish_complex(residual, state, residual_derivative):
     return state - residual(state) / residual_derivative
 
 
-def check_saliency(owner, inductance_d, inductance_q, detail=''):
+def check_saliency(owner, inductance_d, inductance_q, detail=""):
     """Raise AnalysisError naming the motors whose L_q - L_d is not > 0 (MTPA needs it).
 
     ``detail(idx)`` may add a sentence about those motors to the message.
@@ -124,5 +124,6 @@ def check_saliency(owner, inductance_d, inductance_q, detail=''):
         idx = np.flatnonzero(~(saliency > 0.0))
         extra = detail(idx) if callable(detail) else detail
         raise om.AnalysisError(
-            f'{owner}: inductance_q - inductance_d = {saliency[idx].tolist()} H for '
-            f'motor(s) {idx.tolist()}{extra}')
+            f"{owner}: inductance_q - inductance_d = {saliency[idx].tolist()} H for "
+            f"motor(s) {idx.tolist()}{extra}"
+        )

@@ -22,18 +22,32 @@ from lpc_mdo.numerics import safeguarded_newton
 
 
 def _declare_common_options(comp, per_node):
-    comp.options.declare('num_motors', default=1, types=int, lower=1,
-                         desc='Number of motors (different designs) evaluated at once')
+    comp.options.declare(
+        "num_motors",
+        default=1,
+        types=int,
+        lower=1,
+        desc="Number of motors (different designs) evaluated at once",
+    )
     if per_node:
-        comp.options.declare('num_nodes', default=1, types=int, lower=1,
-                             desc='Number of operating points (nodes) per motor')
-    comp.options.declare('parameters', default=MotorParameters(), types=MotorParameters,
-                         desc='Fixed motor parameters')
+        comp.options.declare(
+            "num_nodes",
+            default=1,
+            types=int,
+            lower=1,
+            desc="Number of operating points (nodes) per motor",
+        )
+    comp.options.declare(
+        "parameters",
+        default=MotorParameters(),
+        types=MotorParameters,
+        desc="Fixed motor parameters",
+    )
 
 
 def _shape(comp, per_node):
-    nm = comp.options['num_motors']
-    return (nm, comp.options['num_nodes']) if per_node else (nm,)
+    nm = comp.options["num_motors"]
+    return (nm, comp.options["num_nodes"]) if per_node else (nm,)
 
 
 class PointwiseExplicitComp(om.ExplicitComponent):
@@ -54,11 +68,11 @@ class PointwiseExplicitComp(om.ExplicitComponent):
 
     def setup(self):
         self._shapes = {}
-        for kind, variables in (('input', self._input_vars), ('output', self._output_vars)):
+        for kind, variables in (("input", self._input_vars), ("output", self._output_vars)):
             for name, units, desc, default, per_node in variables:
                 shape = _shape(self, per_node)
                 self._shapes[name] = shape
-                add = self.add_input if kind == 'input' else self.add_output
+                add = self.add_input if kind == "input" else self.add_output
                 add(name, val=default * np.ones(shape), units=units, desc=desc)
         declare_pointwise_partials(self, self._deps, self._shapes)
 
@@ -76,8 +90,9 @@ class PointwiseExplicitComp(om.ExplicitComponent):
             outputs[name] = result[name]
 
     def compute_partials(self, inputs, partials):
-        complex_step_partials(self._evaluate, self._values(inputs), self._deps, self._shapes,
-                              partials)
+        complex_step_partials(
+            self._evaluate, self._values(inputs), self._deps, self._shapes, partials
+        )
 
 
 class PointwiseImplicitComp(om.ImplicitComponent):
@@ -111,10 +126,11 @@ class PointwiseImplicitComp(om.ImplicitComponent):
         name, units, desc, default, per_node = self._state_var
         shape = _shape(self, per_node)
         self._shapes[name] = shape
-        self.add_output(name, val=default * np.ones(shape), units=units, desc=desc,
-                        ref=self._state_ref)
+        self.add_output(
+            name, val=default * np.ones(shape), units=units, desc=desc, ref=self._state_ref
+        )
         self._state_name = name
-        self._state_units = units or ''
+        self._state_units = units or ""
         self._all_deps = {name: tuple(self._deps) + (name,)}
         declare_pointwise_partials(self, self._all_deps, self._shapes)
 
@@ -142,13 +158,24 @@ class PointwiseImplicitComp(om.ImplicitComponent):
     def _solve(self, real):
         """Real root of the residual for the real inputs ``real`` (default: bisection)."""
         lower, upper = self._bracket(real)
-        return safeguarded_newton(lambda x: (self._residual(real, x), None), lower, upper,
-                                  maxiter=200, variable=self._state_name,
-                                  units=self._state_units, where=self.msginfo)
+        return safeguarded_newton(
+            lambda x: (self._residual(real, x), None),
+            lower,
+            upper,
+            maxiter=200,
+            variable=self._state_name,
+            units=self._state_units,
+            where=self.msginfo,
+        )
 
     def linearize(self, inputs, outputs, partials):
         name = self._state_name
         values = self._values(inputs)
         values[name] = outputs[name]
-        complex_step_partials(lambda v: {name: self._residual(v, v[name])}, values,
-                              self._all_deps, self._shapes, partials)
+        complex_step_partials(
+            lambda v: {name: self._residual(v, v[name])},
+            values,
+            self._all_deps,
+            self._shapes,
+            partials,
+        )

@@ -35,6 +35,7 @@ def _complex_safe_abs(x):
 # circuit')
 # --------------------------------------------------------------------------------------------
 
+
 class MotorECMParametersComp(PointwiseExplicitComp):
     """
     Geometry-derived equivalent-circuit parameters of the PMSM (docs theory/motor 'Equivalent
@@ -95,68 +96,93 @@ class MotorECMParametersComp(PointwiseExplicitComp):
     """
 
     _input_vars = (
-        ('length', 'm', 'Stack (effective) length l_ef = L', 0.1, False),
-        ('diameter', 'm', 'Outer stator diameter D', 0.2, False),
-        ('stator_inner_diameter', 'm', 'Stator inner diameter D_i', 0.16, False),
-        ('pole_pitch', 'm', 'Pole pitch tau_p', 0.04, False),
-        ('tooth_pitch', 'm', 'Tooth pitch t_1', 0.014, False),
-        ('air_gap', 'm', 'Air-gap length delta', 6.0e-4, False),
-        ('rotor_diameter', 'm', 'Rotor diameter D_2', 0.16, False),
-        ('shaft_diameter', 'm', 'Shaft diameter D_sh', 0.05, False),
-        ('turns_per_phase', None, 'Series turns per phase W', 20.0, False),
-        ('slot_bottom_width', 'm', 'Slot width at the bore b_sb', 2.0e-3, False),
-        ('slot_height', 'm', 'Slot height h_slot', 0.01, False),
-        ('stator_yoke_height', 'm', 'Stator yoke height h_ys', 0.01, False),
+        ("length", "m", "Stack (effective) length l_ef = L", 0.1, False),
+        ("diameter", "m", "Outer stator diameter D", 0.2, False),
+        ("stator_inner_diameter", "m", "Stator inner diameter D_i", 0.16, False),
+        ("pole_pitch", "m", "Pole pitch tau_p", 0.04, False),
+        ("tooth_pitch", "m", "Tooth pitch t_1", 0.014, False),
+        ("air_gap", "m", "Air-gap length delta", 6.0e-4, False),
+        ("rotor_diameter", "m", "Rotor diameter D_2", 0.16, False),
+        ("shaft_diameter", "m", "Shaft diameter D_sh", 0.05, False),
+        ("turns_per_phase", None, "Series turns per phase W", 20.0, False),
+        ("slot_bottom_width", "m", "Slot width at the bore b_sb", 2.0e-3, False),
+        ("slot_height", "m", "Slot height h_slot", 0.01, False),
+        ("stator_yoke_height", "m", "Stator yoke height h_ys", 0.01, False),
     )
     _output_vars = (
-        ('yoke_pitch', 'm', 'Yoke pitch tau_y = pi (D_i + h_slot)/(2p)', 0.04, False),
-        ('yoke_path_length', 'm', 'Stator yoke MEC path L_j1 = pi (D - h_ys)/(4p)', 0.025,
-         False),
-        ('magnet_width', 'm', 'Magnet arc width b_m', 0.03, False),
-        ('magnet_area', 'm**2', 'Magnet pole-face area A_m = b_m l_ef', 3.0e-3, False),
-        ('remanent_flux', 'Wb', 'Remanent magnet flux phi_r = 1.2 A_m', 3.6e-3, False),
-        ('magnet_permeance', 'H', 'Internal magnet permeance lambda_m = phi_r/(2 H_c h_m)',
-         5.0e-7, False),
-        ('pole_arc_coefficient', None, 'Calculated pole-arc coefficient alpha_i', 0.8, False),
-        ('air_gap_field_coefficient', None, 'Air-gap flux-density waveform coefficient K_f',
-         1.2, False),
-        ('air_gap_flux_coefficient', None, 'Air-gap flux waveform coefficient K_phi', 1.0,
-         False),
-        ('carter_coefficient', None, 'Carter coefficient K_theta', 1.07, False),
-        ('bridge_area', 'm**2', 'Magnet bridge cross-section A_f2 = h_m l_ef', 4.0e-4, False),
-        ('resistance', 'ohm', 'Phase DC resistance R_dc', 0.01, False),
-        ('iron_volume', 'm**3', 'Iron volume of the core losses V_s + V_s1', 1.0e-3, False),
-        ('magnet_volume', 'm**3', 'Magnet volume of the magnet eddy loss V_t = 2p l b_m h_m',
-         1.0e-4, False),
+        ("yoke_pitch", "m", "Yoke pitch tau_y = pi (D_i + h_slot)/(2p)", 0.04, False),
+        ("yoke_path_length", "m", "Stator yoke MEC path L_j1 = pi (D - h_ys)/(4p)", 0.025, False),
+        ("magnet_width", "m", "Magnet arc width b_m", 0.03, False),
+        ("magnet_area", "m**2", "Magnet pole-face area A_m = b_m l_ef", 3.0e-3, False),
+        ("remanent_flux", "Wb", "Remanent magnet flux phi_r = 1.2 A_m", 3.6e-3, False),
+        (
+            "magnet_permeance",
+            "H",
+            "Internal magnet permeance lambda_m = phi_r/(2 H_c h_m)",
+            5.0e-7,
+            False,
+        ),
+        ("pole_arc_coefficient", None, "Calculated pole-arc coefficient alpha_i", 0.8, False),
+        (
+            "air_gap_field_coefficient",
+            None,
+            "Air-gap flux-density waveform coefficient K_f",
+            1.2,
+            False,
+        ),
+        ("air_gap_flux_coefficient", None, "Air-gap flux waveform coefficient K_phi", 1.0, False),
+        ("carter_coefficient", None, "Carter coefficient K_theta", 1.07, False),
+        ("bridge_area", "m**2", "Magnet bridge cross-section A_f2 = h_m l_ef", 4.0e-4, False),
+        ("resistance", "ohm", "Phase DC resistance R_dc", 0.01, False),
+        ("iron_volume", "m**3", "Iron volume of the core losses V_s + V_s1", 1.0e-3, False),
+        (
+            "magnet_volume",
+            "m**3",
+            "Magnet volume of the magnet eddy loss V_t = 2p l b_m h_m",
+            1.0e-4,
+            False,
+        ),
     )
     _deps = {
-        'yoke_pitch': ('stator_inner_diameter', 'slot_height'),
-        'yoke_path_length': ('diameter', 'stator_yoke_height'),
-        'magnet_width': ('rotor_diameter',),
-        'magnet_area': ('rotor_diameter', 'length'),
-        'remanent_flux': ('rotor_diameter', 'length'),
-        'magnet_permeance': ('rotor_diameter', 'length'),
-        'pole_arc_coefficient': ('rotor_diameter', 'pole_pitch', 'air_gap'),
-        'air_gap_field_coefficient': ('rotor_diameter', 'pole_pitch', 'air_gap'),
-        'air_gap_flux_coefficient': ('rotor_diameter', 'pole_pitch', 'air_gap'),
-        'carter_coefficient': ('tooth_pitch', 'air_gap', 'slot_bottom_width'),
-        'bridge_area': ('length',),
-        'resistance': ('turns_per_phase', 'length', 'pole_pitch'),
-        'iron_volume': ('length', 'diameter', 'stator_inner_diameter', 'rotor_diameter',
-                        'shaft_diameter'),
-        'magnet_volume': ('length', 'rotor_diameter'),
+        "yoke_pitch": ("stator_inner_diameter", "slot_height"),
+        "yoke_path_length": ("diameter", "stator_yoke_height"),
+        "magnet_width": ("rotor_diameter",),
+        "magnet_area": ("rotor_diameter", "length"),
+        "remanent_flux": ("rotor_diameter", "length"),
+        "magnet_permeance": ("rotor_diameter", "length"),
+        "pole_arc_coefficient": ("rotor_diameter", "pole_pitch", "air_gap"),
+        "air_gap_field_coefficient": ("rotor_diameter", "pole_pitch", "air_gap"),
+        "air_gap_flux_coefficient": ("rotor_diameter", "pole_pitch", "air_gap"),
+        "carter_coefficient": ("tooth_pitch", "air_gap", "slot_bottom_width"),
+        "bridge_area": ("length",),
+        "resistance": ("turns_per_phase", "length", "pole_pitch"),
+        "iron_volume": (
+            "length",
+            "diameter",
+            "stator_inner_diameter",
+            "rotor_diameter",
+            "shaft_diameter",
+        ),
+        "magnet_volume": ("length", "rotor_diameter"),
     }
 
     def _check_values(self, values):
-        check_range('rotor_diameter', values['rotor_diameter'], lower=mp.MAGNET_EMBED_DEPTH,
-                    lower_open=True, units='m', error=AnalysisError, where=self.msginfo)
+        check_range(
+            "rotor_diameter",
+            values["rotor_diameter"],
+            lower=mp.MAGNET_EMBED_DEPTH,
+            lower_open=True,
+            units="m",
+            error=AnalysisError,
+            where=self.msginfo,
+        )
 
     def _evaluate(self, v):
-        par = self.options['parameters']
+        par = self.options["parameters"]
         p, z = par.pole_pairs, par.num_slots
-        length, diameter, d_i = v['length'], v['diameter'], v['stator_inner_diameter']
-        tau, delta, d_2 = v['pole_pitch'], v['air_gap'], v['rotor_diameter']
-        b_sb, t_1 = v['slot_bottom_width'], v['tooth_pitch']
+        length, diameter, d_i = v["length"], v["diameter"], v["stator_inner_diameter"]
+        tau, delta, d_2 = v["pole_pitch"], v["air_gap"], v["rotor_diameter"]
+        b_sb, t_1 = v["slot_bottom_width"], v["tooth_pitch"]
 
         theta_m = mp.MAGNET_ARC_RATIO * 360.0 / (2 * p)
         b_m = (d_2 - mp.MAGNET_EMBED_DEPTH) * np.pi * theta_m / 360.0
@@ -168,23 +194,30 @@ class MotorECMParametersComp(PointwiseExplicitComp):
         a_cu = par.copper_area
         coil = length + mp.COIL_STRAIGHT_EXTENSION + 2.0 * tau
         return {
-            'yoke_pitch': np.pi * (d_i + v['slot_height']) / (2 * p),
-            'yoke_path_length': np.pi * (diameter - v['stator_yoke_height']) / (4 * p),
-            'magnet_width': b_m,
-            'magnet_area': a_m,
-            'remanent_flux': phi_r,
-            'magnet_permeance': phi_r / (2.0 * par.coercivity * mp.MAGNET_THICKNESS),
-            'pole_arc_coefficient': alpha_i,
-            'air_gap_field_coefficient': 4.0 * np.sin(alpha_i * np.pi / 2.0) / np.pi,
-            'air_gap_flux_coefficient': 8.5 * np.sin(alpha_i * np.pi / 2.0) / (np.pi ** 2
-                                                                              * alpha_i),
-            'carter_coefficient': carter / (carter - b_sb ** 2),
-            'bridge_area': mp.MAGNET_THICKNESS * length,
-            'resistance': (2.0 * mp.COPPER_RESISTIVITY * v['turns_per_phase'] * coil
-                           / (a_cu * mp.PARALLEL_STRANDS)),
-            'iron_volume': (np.pi * length * (diameter - d_i) ** 2 / 4.0 - z * length * a_cu
-                            + np.pi * length * (d_2 - v['shaft_diameter']) ** 2 / 4.0),
-            'magnet_volume': 2 * p * length * b_m * mp.MAGNET_THICKNESS,
+            "yoke_pitch": np.pi * (d_i + v["slot_height"]) / (2 * p),
+            "yoke_path_length": np.pi * (diameter - v["stator_yoke_height"]) / (4 * p),
+            "magnet_width": b_m,
+            "magnet_area": a_m,
+            "remanent_flux": phi_r,
+            "magnet_permeance": phi_r / (2.0 * par.coercivity * mp.MAGNET_THICKNESS),
+            "pole_arc_coefficient": alpha_i,
+            "air_gap_field_coefficient": 4.0 * np.sin(alpha_i * np.pi / 2.0) / np.pi,
+            "air_gap_flux_coefficient": 8.5 * np.sin(alpha_i * np.pi / 2.0) / (np.pi**2 * alpha_i),
+            "carter_coefficient": carter / (carter - b_sb**2),
+            "bridge_area": mp.MAGNET_THICKNESS * length,
+            "resistance": (
+                2.0
+                * mp.COPPER_RESISTIVITY
+                * v["turns_per_phase"]
+                * coil
+                / (a_cu * mp.PARALLEL_STRANDS)
+            ),
+            "iron_volume": (
+                np.pi * length * (diameter - d_i) ** 2 / 4.0
+                - z * length * a_cu
+                + np.pi * length * (d_2 - v["shaft_diameter"]) ** 2 / 4.0
+            ),
+            "magnet_volume": 2 * p * length * b_m * mp.MAGNET_THICKNESS,
         }
 
 
@@ -193,22 +226,22 @@ class MotorECMParametersComp(PointwiseExplicitComp):
 # --------------------------------------------------------------------------------------------
 
 _MEC_INPUTS = (
-    ('tooth_pitch', 'm', 'Tooth pitch t_1', 0.014, False),
-    ('tooth_width', 'm', 'Stator tooth width b_t', 7.0e-3, False),
-    ('slot_height', 'm', 'Slot height h_slot (tooth MEC path)', 0.01, False),
-    ('pole_arc_coefficient', None, 'Calculated pole-arc coefficient alpha_i', 0.8, False),
-    ('pole_pitch', 'm', 'Pole pitch tau_p', 0.04, False),
-    ('length', 'm', 'Stack (effective) length l_ef', 0.1, False),
-    ('stator_yoke_height', 'm', 'Stator yoke height h_ys', 0.01, False),
-    ('yoke_path_length', 'm', 'Stator yoke MEC path L_j1', 0.025, False),
-    ('air_gap', 'm', 'Air-gap length delta', 6.0e-4, False),
-    ('carter_coefficient', None, 'Carter coefficient K_theta', 1.07, False),
-    ('bridge_area', 'm**2', 'Magnet bridge cross-section A_f2', 4.0e-4, False),
+    ("tooth_pitch", "m", "Tooth pitch t_1", 0.014, False),
+    ("tooth_width", "m", "Stator tooth width b_t", 7.0e-3, False),
+    ("slot_height", "m", "Slot height h_slot (tooth MEC path)", 0.01, False),
+    ("pole_arc_coefficient", None, "Calculated pole-arc coefficient alpha_i", 0.8, False),
+    ("pole_pitch", "m", "Pole pitch tau_p", 0.04, False),
+    ("length", "m", "Stack (effective) length l_ef", 0.1, False),
+    ("stator_yoke_height", "m", "Stator yoke height h_ys", 0.01, False),
+    ("yoke_path_length", "m", "Stator yoke MEC path L_j1", 0.025, False),
+    ("air_gap", "m", "Air-gap length delta", 6.0e-4, False),
+    ("carter_coefficient", None, "Carter coefficient K_theta", 1.07, False),
+    ("bridge_area", "m**2", "Magnet bridge cross-section A_f2", 4.0e-4, False),
 )
 _MAGNET_INPUTS = (
-    ('magnet_width', 'm', 'Magnet arc width b_m', 0.03, False),
-    ('remanent_flux', 'Wb', 'Remanent magnet flux phi_r', 3.6e-3, False),
-    ('magnet_permeance', 'H', 'Internal magnet permeance lambda_m', 5.0e-7, False),
+    ("magnet_width", "m", "Magnet arc width b_m", 0.03, False),
+    ("remanent_flux", "Wb", "Remanent magnet flux phi_r", 3.6e-3, False),
+    ("magnet_permeance", "H", "Internal magnet permeance lambda_m", 5.0e-7, False),
 )
 _MEC_NAMES = tuple(name for name, *_ in _MEC_INPUTS)
 _MAGNET_NAMES = tuple(name for name, *_ in _MAGNET_INPUTS)
@@ -223,25 +256,29 @@ def magnet_circuit(b_delta, v):
     total MMFs, the bridge flux phi_f, the bridge leakage phi_s and the magnet flux
     phi_mag = phi_air + phi_f + phi_s.
     """
-    length = v['length']
-    b_tooth = b_delta * v['tooth_pitch'] / v['tooth_width'] / mp.LAMINATION_FACTOR
-    mmf_tooth = 2.0 * mp.field_strength_from_flux_density(b_tooth) * v['slot_height']
-    flux_air = v['pole_arc_coefficient'] * v['pole_pitch'] * length * b_delta
+    length = v["length"]
+    b_tooth = b_delta * v["tooth_pitch"] / v["tooth_width"] / mp.LAMINATION_FACTOR
+    mmf_tooth = 2.0 * mp.field_strength_from_flux_density(b_tooth) * v["slot_height"]
+    flux_air = v["pole_arc_coefficient"] * v["pole_pitch"] * length * b_delta
     # B_y = phi_air/(2 h_ys l_ef), with l_ef cancelled exactly.
-    b_yoke = v['pole_arc_coefficient'] * v['pole_pitch'] * b_delta / (2.0 * v['stator_yoke_height'])
-    mmf_yoke = 2.0 * v['yoke_path_length'] * mp.field_strength_from_flux_density(b_yoke)
-    mmf_gap = (1.6 * b_delta * (mp.AIR_GAP_FRINGE_LENGTH + v['carter_coefficient'] * v['air_gap'])
-               / mp.MU_0)
+    b_yoke = v["pole_arc_coefficient"] * v["pole_pitch"] * b_delta / (2.0 * v["stator_yoke_height"])
+    mmf_yoke = 2.0 * v["yoke_path_length"] * mp.field_strength_from_flux_density(b_yoke)
+    mmf_gap = (
+        1.6
+        * b_delta
+        * (mp.AIR_GAP_FRINGE_LENGTH + v["carter_coefficient"] * v["air_gap"])
+        / mp.MU_0
+    )
     mmf_total = mmf_tooth + mmf_yoke + mmf_gap
-    flux_bridge = mp.bridge_flux_density(mmf_total / mp.MAGNET_THICKNESS) * v['bridge_area']
+    flux_bridge = mp.bridge_flux_density(mmf_total / mp.MAGNET_THICKNESS) * v["bridge_area"]
     flux_leak = mmf_total * mp.BRIDGE_LEAKAGE_PERMEANCE
     return {
-        'flux_air': flux_air,
-        'mmf_total': mmf_total,
-        'mmf_air_gap': mmf_gap,
-        'flux_bridge': flux_bridge,
-        'flux_leak': flux_leak,
-        'flux_magnet': flux_air + flux_bridge + flux_leak,
+        "flux_air": flux_air,
+        "mmf_total": mmf_total,
+        "mmf_air_gap": mmf_gap,
+        "flux_bridge": flux_bridge,
+        "flux_leak": flux_leak,
+        "flux_magnet": flux_air + flux_bridge + flux_leak,
     }
 
 
@@ -252,9 +289,9 @@ def magnet_operating_flux(circuit, v):
 
     F_m = F_tot + phi_mag/lambda_leak with the leakage permeance lambda_leak = l b_m mu_0/0.0005.
     """
-    permeance_leak = v['length'] * v['magnet_width'] * mp.MU_0 / mp.LEAKAGE_GAP
-    mmf_magnet = circuit['mmf_total'] + circuit['flux_magnet'] / permeance_leak
-    return v['remanent_flux'] - mmf_magnet * v['magnet_permeance']
+    permeance_leak = v["length"] * v["magnet_width"] * mp.MU_0 / mp.LEAKAGE_GAP
+    mmf_magnet = circuit["mmf_total"] + circuit["flux_magnet"] / permeance_leak
+    return v["remanent_flux"] - mmf_magnet * v["magnet_permeance"]
 
 
 class MagnetCircuitComp(PointwiseImplicitComp):
@@ -305,16 +342,16 @@ class MagnetCircuitComp(PointwiseImplicitComp):
     """
 
     _input_vars = _MEC_INPUTS + _MAGNET_INPUTS
-    _state_var = ('air_gap_flux_density', 'T', 'No-load air-gap flux density B_delta', 0.75, False)
+    _state_var = ("air_gap_flux_density", "T", "No-load air-gap flux density B_delta", 0.75, False)
     _deps = _MEC_NAMES + _MAGNET_NAMES
 
     def _residual(self, v, b_delta):
         circuit = magnet_circuit(b_delta, v)
-        return (magnet_operating_flux(circuit, v) - circuit['flux_magnet']) / v['remanent_flux']
+        return (magnet_operating_flux(circuit, v) - circuit["flux_magnet"]) / v["remanent_flux"]
 
     def _bracket(self, v):
         lower, upper = mp.AIR_GAP_FLUX_DENSITY_BRACKET
-        shape = v['length'].shape
+        shape = v["length"].shape
         return np.full(shape, lower), np.full(shape, upper)
 
 
@@ -365,44 +402,64 @@ class MagnetFluxComp(PointwiseExplicitComp):
     """
 
     _input_vars = _MEC_INPUTS + (
-        ('air_gap_flux_density', 'T', 'No-load air-gap flux density B_delta', 0.75, False),
-        ('magnet_area', 'm**2', 'Magnet pole-face area A_m', 3.0e-3, False),
+        ("air_gap_flux_density", "T", "No-load air-gap flux density B_delta", 0.75, False),
+        ("magnet_area", "m**2", "Magnet pole-face area A_m", 3.0e-3, False),
     )
     _output_vars = (
-        ('pole_flux', 'Wb', 'Flux per pole linking the winding (as coded: the magnet '
-         'operating flux phi_r - F_m lambda_m)', 5.0e-3, False),
-        ('mmf_total', 'A', 'Total no-load MMF F_tot', 1000.0, False),
-        ('mmf_air_gap', 'A', 'Air-gap MMF F_delta', 1000.0, False),
-        ('leakage_coefficient', None, 'Magnet leakage coefficient K_sigma', 1.1, False),
-        ('magnet_permeance_pu', None, 'Per-unit magnet load permeance lambda_n', 4.0, False),
-        ('leakage_permeance_pu', None, 'Per-unit leakage permeance lambda_leak,std', 0.35,
-         False),
+        (
+            "pole_flux",
+            "Wb",
+            "Flux per pole linking the winding (as coded: the magnet "
+            "operating flux phi_r - F_m lambda_m)",
+            5.0e-3,
+            False,
+        ),
+        ("mmf_total", "A", "Total no-load MMF F_tot", 1000.0, False),
+        ("mmf_air_gap", "A", "Air-gap MMF F_delta", 1000.0, False),
+        ("leakage_coefficient", None, "Magnet leakage coefficient K_sigma", 1.1, False),
+        ("magnet_permeance_pu", None, "Per-unit magnet load permeance lambda_n", 4.0, False),
+        ("leakage_permeance_pu", None, "Per-unit leakage permeance lambda_leak,std", 0.35, False),
     )
-    _mmf_names = ('tooth_pitch', 'tooth_width', 'slot_height', 'pole_arc_coefficient',
-                  'pole_pitch', 'length', 'stator_yoke_height', 'yoke_path_length', 'air_gap',
-                  'carter_coefficient', 'air_gap_flux_density')
+    _mmf_names = (
+        "tooth_pitch",
+        "tooth_width",
+        "slot_height",
+        "pole_arc_coefficient",
+        "pole_pitch",
+        "length",
+        "stator_yoke_height",
+        "yoke_path_length",
+        "air_gap",
+        "carter_coefficient",
+        "air_gap_flux_density",
+    )
     _deps = {
-        'pole_flux': _mmf_names + ('bridge_area',),
-        'mmf_total': tuple(n for n in _mmf_names if n != 'length'),
-        'mmf_air_gap': ('air_gap_flux_density', 'carter_coefficient', 'air_gap'),
-        'leakage_coefficient': _mmf_names + ('bridge_area',),
-        'magnet_permeance_pu': _mmf_names + ('bridge_area', 'magnet_area'),
-        'leakage_permeance_pu': _mmf_names + ('bridge_area', 'magnet_area'),
+        "pole_flux": _mmf_names + ("bridge_area",),
+        "mmf_total": tuple(n for n in _mmf_names if n != "length"),
+        "mmf_air_gap": ("air_gap_flux_density", "carter_coefficient", "air_gap"),
+        "leakage_coefficient": _mmf_names + ("bridge_area",),
+        "magnet_permeance_pu": _mmf_names + ("bridge_area", "magnet_area"),
+        "leakage_permeance_pu": _mmf_names + ("bridge_area", "magnet_area"),
     }
 
     def _evaluate(self, v):
-        circuit = magnet_circuit(v['air_gap_flux_density'], v)
-        flux = circuit['flux_magnet']
-        leakage = (flux + circuit['flux_bridge'] + circuit['flux_leak']) / flux
-        permeance_std = (2.0 * flux / circuit['mmf_total'] * mp.MAGNET_THICKNESS
-                         / (mp.MAGNET_RECOIL_PERMEABILITY * mp.MU_0 * v['magnet_area']))
+        circuit = magnet_circuit(v["air_gap_flux_density"], v)
+        flux = circuit["flux_magnet"]
+        leakage = (flux + circuit["flux_bridge"] + circuit["flux_leak"]) / flux
+        permeance_std = (
+            2.0
+            * flux
+            / circuit["mmf_total"]
+            * mp.MAGNET_THICKNESS
+            / (mp.MAGNET_RECOIL_PERMEABILITY * mp.MU_0 * v["magnet_area"])
+        )
         return {
-            'pole_flux': flux,
-            'mmf_total': circuit['mmf_total'],
-            'mmf_air_gap': circuit['mmf_air_gap'],
-            'leakage_coefficient': leakage,
-            'magnet_permeance_pu': leakage * permeance_std,
-            'leakage_permeance_pu': (leakage - 1.0) * permeance_std,
+            "pole_flux": flux,
+            "mmf_total": circuit["mmf_total"],
+            "mmf_air_gap": circuit["mmf_air_gap"],
+            "leakage_coefficient": leakage,
+            "magnet_permeance_pu": leakage * permeance_std,
+            "leakage_permeance_pu": (leakage - 1.0) * permeance_std,
         }
 
 
@@ -411,19 +468,24 @@ class MagnetFluxComp(PointwiseExplicitComp):
 # --------------------------------------------------------------------------------------------
 
 _Q_AXIS_INPUTS = (
-    ('pole_arc_coefficient', None, 'Calculated pole-arc coefficient alpha_i', 0.8, False),
-    ('pole_pitch', 'm', 'Pole pitch tau_p', 0.04, False),
-    ('length', 'm', 'Stack (effective) length l_ef', 0.1, False),
-    ('carter_coefficient', None, 'Carter coefficient K_theta', 1.07, False),
-    ('air_gap', 'm', 'Air-gap length delta', 6.0e-4, False),
-    ('tooth_pitch', 'm', 'Tooth pitch t_1', 0.014, False),
-    ('tooth_width', 'm', 'Stator tooth width b_t', 7.0e-3, False),
-    ('slot_height', 'm', 'Slot height h_slot', 0.01, False),
-    ('stator_yoke_height', 'm', 'Stator yoke height h_ys', 0.01, False),
-    ('yoke_path_length', 'm', 'Stator yoke MEC path L_j1', 0.025, False),
-    ('turns_per_phase', None, 'Series turns per phase W', 20.0, False),
-    ('air_gap_field_coefficient', None, 'Air-gap flux-density waveform coefficient K_f', 1.2,
-     False),
+    ("pole_arc_coefficient", None, "Calculated pole-arc coefficient alpha_i", 0.8, False),
+    ("pole_pitch", "m", "Pole pitch tau_p", 0.04, False),
+    ("length", "m", "Stack (effective) length l_ef", 0.1, False),
+    ("carter_coefficient", None, "Carter coefficient K_theta", 1.07, False),
+    ("air_gap", "m", "Air-gap length delta", 6.0e-4, False),
+    ("tooth_pitch", "m", "Tooth pitch t_1", 0.014, False),
+    ("tooth_width", "m", "Stator tooth width b_t", 7.0e-3, False),
+    ("slot_height", "m", "Slot height h_slot", 0.01, False),
+    ("stator_yoke_height", "m", "Stator yoke height h_ys", 0.01, False),
+    ("yoke_path_length", "m", "Stator yoke MEC path L_j1", 0.025, False),
+    ("turns_per_phase", None, "Series turns per phase W", 20.0, False),
+    (
+        "air_gap_field_coefficient",
+        None,
+        "Air-gap flux-density waveform coefficient K_f",
+        1.2,
+        False,
+    ),
 )
 _Q_AXIS_NAMES = tuple(name for name, *_ in _Q_AXIS_INPUTS)
 
@@ -435,16 +497,19 @@ def q_axis_current(flux_q, v, par):
 
     I_q,tmp = p (F_sigma,q + F_t1,q + F_j1,q)/(0.9 m K_aq K_dp1 W), K_aq = 0.36/K_f.
     """
-    length = v['length']
-    b_q = flux_q / (v['pole_arc_coefficient'] * v['pole_pitch'] * length)
-    mmf_gap = 1.6 * b_q * v['carter_coefficient'] * v['air_gap'] / mp.MU_0
-    b_tooth = b_q * v['tooth_pitch'] / v['tooth_width'] / mp.LAMINATION_FACTOR
-    mmf_tooth = 2.0 * mp.field_strength_from_flux_density(b_tooth) * v['slot_height']
-    b_yoke = flux_q / (2.0 * length * v['stator_yoke_height'])
-    mmf_yoke = 2.0 * mp.field_strength_from_flux_density(b_yoke) * v['yoke_path_length']
-    k_aq = mp.Q_AXIS_REACTION_FACTOR / v['air_gap_field_coefficient']
-    return (par.pole_pairs * (mmf_gap + mmf_tooth + mmf_yoke)
-            / (0.9 * par.phases * k_aq * par.winding_factor * v['turns_per_phase']))
+    length = v["length"]
+    b_q = flux_q / (v["pole_arc_coefficient"] * v["pole_pitch"] * length)
+    mmf_gap = 1.6 * b_q * v["carter_coefficient"] * v["air_gap"] / mp.MU_0
+    b_tooth = b_q * v["tooth_pitch"] / v["tooth_width"] / mp.LAMINATION_FACTOR
+    mmf_tooth = 2.0 * mp.field_strength_from_flux_density(b_tooth) * v["slot_height"]
+    b_yoke = flux_q / (2.0 * length * v["stator_yoke_height"])
+    mmf_yoke = 2.0 * mp.field_strength_from_flux_density(b_yoke) * v["yoke_path_length"]
+    k_aq = mp.Q_AXIS_REACTION_FACTOR / v["air_gap_field_coefficient"]
+    return (
+        par.pole_pairs
+        * (mmf_gap + mmf_tooth + mmf_yoke)
+        / (0.9 * par.phases * k_aq * par.winding_factor * v["turns_per_phase"])
+    )
 
 
 class QAxisFluxComp(PointwiseImplicitComp):
@@ -491,19 +556,19 @@ class QAxisFluxComp(PointwiseImplicitComp):
     """
 
     _input_vars = _Q_AXIS_INPUTS + (
-        ('pole_flux', 'Wb', 'Flux per pole (upper end of the phi_aq bracket)', 5.0e-3, False),
+        ("pole_flux", "Wb", "Flux per pole (upper end of the phi_aq bracket)", 5.0e-3, False),
     )
-    _state_var = ('q_axis_flux', 'Wb', 'Q-axis flux phi_aq at rated current', 2.0e-3, False)
+    _state_var = ("q_axis_flux", "Wb", "Q-axis flux phi_aq at rated current", 2.0e-3, False)
     _deps = _Q_AXIS_NAMES
     _state_ref = 1.0e-3
 
     def _residual(self, v, flux_q):
-        par = self.options['parameters']
+        par = self.options["parameters"]
         current = q_axis_current(flux_q, v, par)
-        return (par.d_axis_rated_current ** 2 + current ** 2) / par.rated_current ** 2 - 1.0
+        return (par.d_axis_rated_current**2 + current**2) / par.rated_current**2 - 1.0
 
     def _bracket(self, v):
-        return np.full(v['pole_flux'].shape, mp.Q_AXIS_FLUX_LOWER), v['pole_flux']
+        return np.full(v["pole_flux"].shape, mp.Q_AXIS_FLUX_LOWER), v["pole_flux"]
 
 
 class InductanceComp(PointwiseExplicitComp):
@@ -556,82 +621,114 @@ class InductanceComp(PointwiseExplicitComp):
     """
 
     _input_vars = _Q_AXIS_INPUTS + (
-        ('q_axis_flux', 'Wb', 'Q-axis flux phi_aq at rated current', 2.0e-3, False),
-        ('pole_flux', 'Wb', 'Flux per pole linking the winding phi', 5.0e-3, False),
-        ('mmf_total', 'A', 'Total no-load MMF F_tot', 1000.0, False),
-        ('mmf_air_gap', 'A', 'Air-gap MMF F_delta', 1000.0, False),
-        ('leakage_coefficient', None, 'Magnet leakage coefficient K_sigma', 1.1, False),
-        ('magnet_permeance_pu', None, 'Per-unit magnet load permeance lambda_n', 4.0, False),
-        ('leakage_permeance_pu', None, 'Per-unit leakage permeance lambda_leak,std', 0.35,
-         False),
-        ('magnet_area', 'm**2', 'Magnet pole-face area A_m', 3.0e-3, False),
-        ('air_gap_flux_coefficient', None, 'Air-gap flux waveform coefficient K_phi', 1.0,
-         False),
-        ('slot_bottom_width', 'm', 'Slot width at the bore b_sb', 2.0e-3, False),
-        ('slot_inner_width', 'm', 'Radially inner slot width b_s1', 5.0e-3, False),
-        ('yoke_pitch', 'm', 'Yoke pitch tau_y', 0.04, False),
+        ("q_axis_flux", "Wb", "Q-axis flux phi_aq at rated current", 2.0e-3, False),
+        ("pole_flux", "Wb", "Flux per pole linking the winding phi", 5.0e-3, False),
+        ("mmf_total", "A", "Total no-load MMF F_tot", 1000.0, False),
+        ("mmf_air_gap", "A", "Air-gap MMF F_delta", 1000.0, False),
+        ("leakage_coefficient", None, "Magnet leakage coefficient K_sigma", 1.1, False),
+        ("magnet_permeance_pu", None, "Per-unit magnet load permeance lambda_n", 4.0, False),
+        ("leakage_permeance_pu", None, "Per-unit leakage permeance lambda_leak,std", 0.35, False),
+        ("magnet_area", "m**2", "Magnet pole-face area A_m", 3.0e-3, False),
+        ("air_gap_flux_coefficient", None, "Air-gap flux waveform coefficient K_phi", 1.0, False),
+        ("slot_bottom_width", "m", "Slot width at the bore b_sb", 2.0e-3, False),
+        ("slot_inner_width", "m", "Radially inner slot width b_s1", 5.0e-3, False),
+        ("yoke_pitch", "m", "Yoke pitch tau_y", 0.04, False),
     )
     _output_vars = (
-        ('inductance_d', 'H', 'D-axis inductance L_d', 5.0e-4, False),
-        ('inductance_q', 'H', 'Q-axis inductance L_q', 7.0e-4, False),
-        ('flux_linkage', 'Wb', 'Permanent-magnet flux linkage Psi_F = W phi', 0.1, False),
+        ("inductance_d", "H", "D-axis inductance L_d", 5.0e-4, False),
+        ("inductance_q", "H", "Q-axis inductance L_q", 7.0e-4, False),
+        ("flux_linkage", "Wb", "Permanent-magnet flux linkage Psi_F = W phi", 0.1, False),
     )
 
-    _leakage_inputs = ('length', 'turns_per_phase', 'pole_pitch', 'air_gap',
-                       'carter_coefficient', 'mmf_total', 'mmf_air_gap', 'slot_bottom_width',
-                       'slot_inner_width', 'yoke_pitch')
-    _d_inputs = ('pole_flux', 'leakage_coefficient', 'magnet_permeance_pu',
-                 'leakage_permeance_pu', 'magnet_area', 'air_gap_flux_coefficient',
-                 'air_gap_field_coefficient')
+    _leakage_inputs = (
+        "length",
+        "turns_per_phase",
+        "pole_pitch",
+        "air_gap",
+        "carter_coefficient",
+        "mmf_total",
+        "mmf_air_gap",
+        "slot_bottom_width",
+        "slot_inner_width",
+        "yoke_pitch",
+    )
+    _d_inputs = (
+        "pole_flux",
+        "leakage_coefficient",
+        "magnet_permeance_pu",
+        "leakage_permeance_pu",
+        "magnet_area",
+        "air_gap_flux_coefficient",
+        "air_gap_field_coefficient",
+    )
     _deps = {
-        'inductance_d': _leakage_inputs + _d_inputs,
-        'inductance_q': tuple(dict.fromkeys(
-            _leakage_inputs + _Q_AXIS_NAMES + ('q_axis_flux', 'air_gap_flux_coefficient'))),
-        'flux_linkage': ('turns_per_phase', 'pole_flux'),
+        "inductance_d": _leakage_inputs + _d_inputs,
+        "inductance_q": tuple(
+            dict.fromkeys(
+                _leakage_inputs + _Q_AXIS_NAMES + ("q_axis_flux", "air_gap_flux_coefficient")
+            )
+        ),
+        "flux_linkage": ("turns_per_phase", "pole_flux"),
     }
 
     def _evaluate(self, v):
-        par = self.options['parameters']
+        par = self.options["parameters"]
         p, m, z, k_w = par.pole_pairs, par.phases, par.num_slots, par.winding_factor
         f_i = par.rated_frequency
         i_dr = par.d_axis_rated_current
-        length, turns, flux = v['length'], v['turns_per_phase'], v['pole_flux']
+        length, turns, flux = v["length"], v["turns_per_phase"], v["pole_flux"]
 
         # Leakage reactance X_1.
         c_x = 4.0 * np.pi * f_i * mp.MU_0 * length * (k_w * turns) ** 2 / p
-        b_sb = v['slot_bottom_width']
-        slot_permeance = (mp.SLOT_LIP_HEIGHT / b_sb
-                          + 2.0 * mp.SLOT_OPENING_HEIGHT / (b_sb + v['slot_inner_width'])
-                          + mp.SLOT_LEAKAGE_LOWER)
-        x_slot = 2.0 * p * m * slot_permeance * c_x / (z * k_w ** 2)
-        saturation = v['mmf_total'] / v['mmf_air_gap']
-        x_diff = (m * v['pole_pitch'] * mp.DIFFERENTIAL_LEAKAGE * c_x
-                  / (v['air_gap'] * v['carter_coefficient'] * saturation * (np.pi * k_w) ** 2))
-        x_end = (mp.END_WINDING_FACTOR * c_x
-                 * (length + mp.COIL_STRAIGHT_EXTENSION
-                    - mp.END_WINDING_PITCH_FACTOR * v['yoke_pitch'])
-                 / (length * k_w ** 2))
+        b_sb = v["slot_bottom_width"]
+        slot_permeance = (
+            mp.SLOT_LIP_HEIGHT / b_sb
+            + 2.0 * mp.SLOT_OPENING_HEIGHT / (b_sb + v["slot_inner_width"])
+            + mp.SLOT_LEAKAGE_LOWER
+        )
+        x_slot = 2.0 * p * m * slot_permeance * c_x / (z * k_w**2)
+        saturation = v["mmf_total"] / v["mmf_air_gap"]
+        x_diff = (
+            m
+            * v["pole_pitch"]
+            * mp.DIFFERENTIAL_LEAKAGE
+            * c_x
+            / (v["air_gap"] * v["carter_coefficient"] * saturation * (np.pi * k_w) ** 2)
+        )
+        x_end = (
+            mp.END_WINDING_FACTOR
+            * c_x
+            * (length + mp.COIL_STRAIGHT_EXTENSION - mp.END_WINDING_PITCH_FACTOR * v["yoke_pitch"])
+            / (length * k_w**2)
+        )
         x_leak = x_slot + x_diff + x_end
 
         # D axis: demagnetized operating point of the magnet under the rated d-axis current.
-        emf_factor = 4.44 * f_i * k_w * turns * v['air_gap_flux_coefficient']
-        mmf_ad = (mp.D_AXIS_REACTION_FACTOR * m * k_w * turns * i_dr
-                  / (v['air_gap_field_coefficient'] * p))
-        demag = mmf_ad / (v['leakage_coefficient'] * mp.MAGNET_THICKNESS * par.coercivity)
-        lam_n = v['magnet_permeance_pu']
+        emf_factor = 4.44 * f_i * k_w * turns * v["air_gap_flux_coefficient"]
+        mmf_ad = (
+            mp.D_AXIS_REACTION_FACTOR
+            * m
+            * k_w
+            * turns
+            * i_dr
+            / (v["air_gap_field_coefficient"] * p)
+        )
+        demag = mmf_ad / (v["leakage_coefficient"] * mp.MAGNET_THICKNESS * par.coercivity)
+        lam_n = v["magnet_permeance_pu"]
         b_mn = lam_n * (1.0 - demag) / (lam_n + 1.0)
-        flux_n = (b_mn - (1.0 - b_mn) * v['leakage_permeance_pu']) * v['magnet_area'] * (
-            par.remanence)
+        flux_n = (
+            (b_mn - (1.0 - b_mn) * v["leakage_permeance_pu"]) * v["magnet_area"] * (par.remanence)
+        )
         emf_0 = emf_factor * flux
         emf_d = emf_factor * flux_n
         x_ad = _complex_safe_abs(emf_0 - emf_d) / (i_dr * np.sqrt(2.0))
 
         # Q axis: X_aq = (phi_aq E_0/phi)/I_q,tmp, with E_0/phi = emf_factor cancelled exactly.
-        x_aq = v['q_axis_flux'] * emf_factor / q_axis_current(v['q_axis_flux'], v, par)
+        x_aq = v["q_axis_flux"] * emf_factor / q_axis_current(v["q_axis_flux"], v, par)
 
         omega_i = 2.0 * np.pi * f_i
         return {
-            'inductance_d': (x_ad + x_leak) / omega_i,
-            'inductance_q': (x_aq + x_leak) / omega_i,
-            'flux_linkage': turns * flux,
+            "inductance_d": (x_ad + x_leak) / omega_i,
+            "inductance_q": (x_aq + x_leak) / omega_i,
+            "flux_linkage": turns * flux,
         }

@@ -16,18 +16,33 @@ from lpc_mdo.components.motor.parameters import MotorParameters
 from lpc_mdo.constants import RPM_TO_RAD_S
 from lpc_mdo.numerics import safeguarded_newton
 
-_WINDAGE_COEFFICIENT = (mp.ROTOR_ROUGHNESS * np.pi * mp.ROTOR_FRICTION * mp.WINDAGE_AIR_DENSITY
-                        * (2.0 * np.pi) ** 2)  # P_w = C f**2 l D_2**4
+_WINDAGE_COEFFICIENT = (
+    mp.ROTOR_ROUGHNESS * np.pi * mp.ROTOR_FRICTION * mp.WINDAGE_AIR_DENSITY * (2.0 * np.pi) ** 2
+)  # P_w = C f**2 l D_2**4
 _RPM_TO_RAD_S = RPM_TO_RAD_S
 
 
 def _declare_shape_options(comp):
-    comp.options.declare('num_motors', default=1, types=int, lower=1,
-                         desc='Number of motors (different designs) evaluated at once')
-    comp.options.declare('num_nodes', default=1, types=int, lower=1,
-                         desc='Number of operating points (nodes) per motor')
-    comp.options.declare('parameters', default=MotorParameters(), types=MotorParameters,
-                         desc='Fixed motor parameters')
+    comp.options.declare(
+        "num_motors",
+        default=1,
+        types=int,
+        lower=1,
+        desc="Number of motors (different designs) evaluated at once",
+    )
+    comp.options.declare(
+        "num_nodes",
+        default=1,
+        types=int,
+        lower=1,
+        desc="Number of operating points (nodes) per motor",
+    )
+    comp.options.declare(
+        "parameters",
+        default=MotorParameters(),
+        types=MotorParameters,
+        desc="Fixed motor parameters",
+    )
 
 
 def _combine(*terms):
@@ -41,15 +56,15 @@ def _combine(*terms):
 
 # Per-motor inputs of the loss model: (name, units, desc, default).
 MOTOR_INPUTS = (
-    ('resistance', 'ohm', 'Phase resistance R', 0.02),
-    ('inductance_d', 'H', 'D-axis inductance L_d', 7.5e-4),
-    ('inductance_q', 'H', 'Q-axis inductance L_q', 1.0e-3),
-    ('flux_linkage', 'Wb', 'Permanent-magnet flux linkage Psi_F', 0.3),
-    ('air_gap_flux_density', 'T', 'No-load air-gap flux density B_delta', 0.75),
-    ('iron_volume', 'm**3', 'Iron volume of the core losses V_s + V_s1', 1.0e-3),
-    ('magnet_volume', 'm**3', 'Magnet volume of the magnet eddy loss V_t', 1.0e-4),
-    ('length', 'm', 'Stack length l', 0.1),
-    ('rotor_diameter', 'm', 'Rotor diameter D_2', 0.16),
+    ("resistance", "ohm", "Phase resistance R", 0.02),
+    ("inductance_d", "H", "D-axis inductance L_d", 7.5e-4),
+    ("inductance_q", "H", "Q-axis inductance L_q", 1.0e-3),
+    ("flux_linkage", "Wb", "Permanent-magnet flux linkage Psi_F", 0.3),
+    ("air_gap_flux_density", "T", "No-load air-gap flux density B_delta", 0.75),
+    ("iron_volume", "m**3", "Iron volume of the core losses V_s + V_s1", 1.0e-3),
+    ("magnet_volume", "m**3", "Magnet volume of the magnet eddy loss V_t", 1.0e-4),
+    ("length", "m", "Stack length l", 0.1),
+    ("rotor_diameter", "m", "Rotor diameter D_2", 0.16),
 )
 MOTOR_NAMES = tuple(name for name, *_ in MOTOR_INPUTS)
 
@@ -76,12 +91,19 @@ def loss_model(v, par, with_partials=False):
     """
     p, m, gear = par.pole_pairs, par.phases, par.gear_ratio
     motor = {name: v[name][:, np.newaxis] for name in MOTOR_NAMES}
-    r, l_d, l_q, psi = (motor['resistance'], motor['inductance_d'], motor['inductance_q'],
-                        motor['flux_linkage'])
-    b_gap, v_fe, v_mag = (motor['air_gap_flux_density'], motor['iron_volume'],
-                          motor['magnet_volume'])
-    length, d_2 = motor['length'], motor['rotor_diameter']
-    torque_r, rpm, torque, i_q = v['rotor_torque'], v['rotor_rpm'], v['em_torque'], v['current_q']
+    r, l_d, l_q, psi = (
+        motor["resistance"],
+        motor["inductance_d"],
+        motor["inductance_q"],
+        motor["flux_linkage"],
+    )
+    b_gap, v_fe, v_mag = (
+        motor["air_gap_flux_density"],
+        motor["iron_volume"],
+        motor["magnet_volume"],
+    )
+    length, d_2 = motor["length"], motor["rotor_diameter"]
+    torque_r, rpm, torque, i_q = v["rotor_torque"], v["rotor_rpm"], v["em_torque"], v["current_q"]
 
     c_omega = gear * _RPM_TO_RAD_S * p  # omega = c_omega rpm (electrical, rad/s)
     c_freq = c_omega * p / 60.0  # f = c_freq rpm (as coded)
@@ -90,57 +112,99 @@ def loss_model(v, par, with_partials=False):
     saliency = l_d - l_q
 
     i_d = (torque / (k_t * i_q) - psi) / saliency
-    current = np.sqrt(i_q ** 2 + i_d ** 2)
+    current = np.sqrt(i_q**2 + i_d**2)
     u_d = r * i_d - omega * l_q * i_q
     u_q = omega * l_d * i_d + r * i_q + omega * psi
-    voltage = np.sqrt(u_d ** 2 + u_q ** 2)
+    voltage = np.sqrt(u_d**2 + u_q**2)
 
     p_out = _RPM_TO_RAD_S * torque_r * rpm
-    p_cu = m * r * current ** 2
+    p_cu = m * r * current**2
     k_e, k_h = mp.EDDY_COEFFICIENT, mp.HYSTERESIS_COEFFICIENT
-    p_fe = k_e * (v_fe + v_mag) * (b_gap * freq) ** 2 + k_h * v_fe * freq * b_gap ** 2
-    p_w = _WINDAGE_COEFFICIENT * freq ** 2 * length * d_2 ** 4
+    p_fe = k_e * (v_fe + v_mag) * (b_gap * freq) ** 2 + k_h * v_fe * freq * b_gap**2
+    p_w = _WINDAGE_COEFFICIENT * freq**2 * length * d_2**4
     p_loss = p_cu + p_fe + p_w + mp.STRAY_LOSS_FRACTION * p_out + mp.MECHANICAL_LOSS
     p_in = p_out + p_loss
-    values = {'current_d': i_d, 'current': current, 'voltage': voltage, 'copper_loss': p_cu,
-              'iron_loss': p_fe, 'windage_loss': p_w, 'power_loss': p_loss,
-              'output_power': p_out, 'input_power': p_in, 'efficiency': p_out / p_in}
+    values = {
+        "current_d": i_d,
+        "current": current,
+        "voltage": voltage,
+        "copper_loss": p_cu,
+        "iron_loss": p_fe,
+        "windage_loss": p_w,
+        "power_loss": p_loss,
+        "output_power": p_out,
+        "input_power": p_in,
+        "efficiency": p_out / p_in,
+    }
     if not with_partials:
         return values
 
-    eta = values['efficiency']
-    d_id = {'em_torque': 1.0 / (k_t * i_q * saliency),
-            'current_q': -torque / (k_t * i_q ** 2 * saliency),
-            'flux_linkage': -1.0 / saliency,
-            'inductance_d': -i_d / saliency,
-            'inductance_q': i_d / saliency}
-    d_current = _combine((i_d / current, d_id), (i_q / current, {'current_q': 1.0}))
-    d_ud = _combine((r, d_id), (1.0, {'resistance': i_d, 'inductance_q': -omega * i_q,
-                                      'current_q': -omega * l_q,
-                                      'rotor_rpm': -c_omega * l_q * i_q}))
-    d_uq = _combine((omega * l_d, d_id), (1.0, {'inductance_d': omega * i_d,
-                                                'resistance': i_q, 'current_q': r,
-                                                'flux_linkage': omega,
-                                                'rotor_rpm': c_omega * (l_d * i_d + psi)}))
+    eta = values["efficiency"]
+    d_id = {
+        "em_torque": 1.0 / (k_t * i_q * saliency),
+        "current_q": -torque / (k_t * i_q**2 * saliency),
+        "flux_linkage": -1.0 / saliency,
+        "inductance_d": -i_d / saliency,
+        "inductance_q": i_d / saliency,
+    }
+    d_current = _combine((i_d / current, d_id), (i_q / current, {"current_q": 1.0}))
+    d_ud = _combine(
+        (r, d_id),
+        (
+            1.0,
+            {
+                "resistance": i_d,
+                "inductance_q": -omega * i_q,
+                "current_q": -omega * l_q,
+                "rotor_rpm": -c_omega * l_q * i_q,
+            },
+        ),
+    )
+    d_uq = _combine(
+        (omega * l_d, d_id),
+        (
+            1.0,
+            {
+                "inductance_d": omega * i_d,
+                "resistance": i_q,
+                "current_q": r,
+                "flux_linkage": omega,
+                "rotor_rpm": c_omega * (l_d * i_d + psi),
+            },
+        ),
+    )
     d_voltage = _combine((u_d / voltage, d_ud), (u_q / voltage, d_uq))
-    d_cu = _combine((2.0 * m * r * current, d_current), (1.0, {'resistance': m * current ** 2}))
-    d_fe = {'iron_volume': k_e * (b_gap * freq) ** 2 + k_h * freq * b_gap ** 2,
-            'magnet_volume': k_e * (b_gap * freq) ** 2,
-            'air_gap_flux_density': (2.0 * k_e * (v_fe + v_mag) * b_gap * freq ** 2
-                                     + 2.0 * k_h * v_fe * freq * b_gap),
-            'rotor_rpm': (2.0 * k_e * (v_fe + v_mag) * b_gap ** 2 * freq
-                          + k_h * v_fe * b_gap ** 2) * c_freq}
-    d_w = {'rotor_rpm': 2.0 * _WINDAGE_COEFFICIENT * freq * length * d_2 ** 4 * c_freq,
-           'length': _WINDAGE_COEFFICIENT * freq ** 2 * d_2 ** 4,
-           'rotor_diameter': 4.0 * _WINDAGE_COEFFICIENT * freq ** 2 * length * d_2 ** 3}
-    d_out = {'rotor_torque': _RPM_TO_RAD_S * rpm, 'rotor_rpm': _RPM_TO_RAD_S * torque_r}
+    d_cu = _combine((2.0 * m * r * current, d_current), (1.0, {"resistance": m * current**2}))
+    d_fe = {
+        "iron_volume": k_e * (b_gap * freq) ** 2 + k_h * freq * b_gap**2,
+        "magnet_volume": k_e * (b_gap * freq) ** 2,
+        "air_gap_flux_density": (
+            2.0 * k_e * (v_fe + v_mag) * b_gap * freq**2 + 2.0 * k_h * v_fe * freq * b_gap
+        ),
+        "rotor_rpm": (2.0 * k_e * (v_fe + v_mag) * b_gap**2 * freq + k_h * v_fe * b_gap**2)
+        * c_freq,
+    }
+    d_w = {
+        "rotor_rpm": 2.0 * _WINDAGE_COEFFICIENT * freq * length * d_2**4 * c_freq,
+        "length": _WINDAGE_COEFFICIENT * freq**2 * d_2**4,
+        "rotor_diameter": 4.0 * _WINDAGE_COEFFICIENT * freq**2 * length * d_2**3,
+    }
+    d_out = {"rotor_torque": _RPM_TO_RAD_S * rpm, "rotor_rpm": _RPM_TO_RAD_S * torque_r}
     d_loss = _combine((1.0, d_cu), (1.0, d_fe), (1.0, d_w), (mp.STRAY_LOSS_FRACTION, d_out))
     d_in = _combine((1.0, d_out), (1.0, d_loss))
     d_eta = _combine((1.0 / p_in, d_out), (-eta / p_in, d_in))
-    grads = {'current_d': d_id, 'current': d_current, 'voltage': d_voltage,
-             'copper_loss': d_cu, 'iron_loss': d_fe, 'windage_loss': d_w,
-             'power_loss': d_loss, 'output_power': d_out, 'input_power': d_in,
-             'efficiency': d_eta}
+    grads = {
+        "current_d": d_id,
+        "current": d_current,
+        "voltage": d_voltage,
+        "copper_loss": d_cu,
+        "iron_loss": d_fe,
+        "windage_loss": d_w,
+        "power_loss": d_loss,
+        "output_power": d_out,
+        "input_power": d_in,
+        "efficiency": d_eta,
+    }
     return values, grads
 
 
@@ -220,46 +284,45 @@ class MotorLossComp(om.ExplicitComponent):
     """
 
     _node_inputs = (
-        ('rotor_torque', 'N*m', 'Required rotor torque Q_r', 500.0),
-        ('rotor_rpm', 'rpm', 'Rotor speed', 1000.0),
-        ('em_torque', 'N*m', 'Electromagnetic torque T_em', 130.0),
-        ('current_q', 'A', 'MTPA q-axis current I_q', 50.0),
+        ("rotor_torque", "N*m", "Required rotor torque Q_r", 500.0),
+        ("rotor_rpm", "rpm", "Rotor speed", 1000.0),
+        ("em_torque", "N*m", "Electromagnetic torque T_em", 130.0),
+        ("current_q", "A", "MTPA q-axis current I_q", 50.0),
     )
     _output_vars = (
-        ('current_d', 'A', 'D-axis current I_d (MTPA)', -10.0),
-        ('current', 'A', 'Current amplitude |I| = sqrt(I_d**2 + I_q**2)', 50.0),
-        ('voltage', 'V', 'MTPA terminal voltage amplitude |U| (no flux weakening)', 300.0),
-        ('copper_loss', 'W', 'Copper loss m R |I|**2', 100.0),
-        ('iron_loss', 'W', 'Iron loss: stator/rotor eddy + magnet eddy + hysteresis', 100.0),
-        ('windage_loss', 'W', 'Windage and friction loss', 10.0),
-        ('power_loss', 'W', 'Total loss (copper, iron, windage, stray, mechanical)', 500.0),
-        ('output_power', 'W', 'Shaft output power P_0 = Q_r omega_rotor', 5.0e4),
-        ('input_power', 'W', 'Electrical input power P_in = P_0 + losses', 5.0e4),
-        ('efficiency', None, 'Motor efficiency P_0/P_in', 0.95),
+        ("current_d", "A", "D-axis current I_d (MTPA)", -10.0),
+        ("current", "A", "Current amplitude |I| = sqrt(I_d**2 + I_q**2)", 50.0),
+        ("voltage", "V", "MTPA terminal voltage amplitude |U| (no flux weakening)", 300.0),
+        ("copper_loss", "W", "Copper loss m R |I|**2", 100.0),
+        ("iron_loss", "W", "Iron loss: stator/rotor eddy + magnet eddy + hysteresis", 100.0),
+        ("windage_loss", "W", "Windage and friction loss", 10.0),
+        ("power_loss", "W", "Total loss (copper, iron, windage, stray, mechanical)", 500.0),
+        ("output_power", "W", "Shaft output power P_0 = Q_r omega_rotor", 5.0e4),
+        ("input_power", "W", "Electrical input power P_in = P_0 + losses", 5.0e4),
+        ("efficiency", None, "Motor efficiency P_0/P_in", 0.95),
     )
-    _current = ('em_torque', 'current_q', 'flux_linkage', 'inductance_d', 'inductance_q')
-    _iron = ('iron_volume', 'magnet_volume', 'air_gap_flux_density', 'rotor_rpm')
-    _windage = ('rotor_rpm', 'length', 'rotor_diameter')
-    _loss = tuple(dict.fromkeys(_current + ('resistance',) + _iron + _windage
-                                + ('rotor_torque',)))
+    _current = ("em_torque", "current_q", "flux_linkage", "inductance_d", "inductance_q")
+    _iron = ("iron_volume", "magnet_volume", "air_gap_flux_density", "rotor_rpm")
+    _windage = ("rotor_rpm", "length", "rotor_diameter")
+    _loss = tuple(dict.fromkeys(_current + ("resistance",) + _iron + _windage + ("rotor_torque",)))
     _deps = {
-        'current_d': _current,
-        'current': _current,
-        'voltage': _current + ('resistance', 'rotor_rpm'),
-        'copper_loss': _current + ('resistance',),
-        'iron_loss': _iron,
-        'windage_loss': _windage,
-        'power_loss': _loss,
-        'output_power': ('rotor_torque', 'rotor_rpm'),
-        'input_power': _loss,
-        'efficiency': _loss,
+        "current_d": _current,
+        "current": _current,
+        "voltage": _current + ("resistance", "rotor_rpm"),
+        "copper_loss": _current + ("resistance",),
+        "iron_loss": _iron,
+        "windage_loss": _windage,
+        "power_loss": _loss,
+        "output_power": ("rotor_torque", "rotor_rpm"),
+        "input_power": _loss,
+        "efficiency": _loss,
     }
 
     def initialize(self):
         _declare_shape_options(self)
 
     def setup(self):
-        nm, nn = self.options['num_motors'], self.options['num_nodes']
+        nm, nn = self.options["num_motors"], self.options["num_nodes"]
         self._shapes = {}
         for name, units, desc, default in self._node_inputs:
             self._shapes[name] = (nm, nn)
@@ -278,14 +341,20 @@ class MotorLossComp(om.ExplicitComponent):
 
     def compute(self, inputs, outputs):
         for name, units, _, _ in self._node_inputs:
-            check_range(name, inputs[name], lower=0.0, lower_open=True,
-                        units=units, error=om.AnalysisError, where=self.msginfo)
-        for name, value in loss_model(self._values(inputs), self.options['parameters']).items():
+            check_range(
+                name,
+                inputs[name],
+                lower=0.0,
+                lower_open=True,
+                units=units,
+                error=om.AnalysisError,
+                where=self.msginfo,
+            )
+        for name, value in loss_model(self._values(inputs), self.options["parameters"]).items():
             outputs[name] = value
 
     def compute_partials(self, inputs, partials):
-        _, grads = loss_model(self._values(inputs), self.options['parameters'],
-                              with_partials=True)
+        _, grads = loss_model(self._values(inputs), self.options["parameters"], with_partials=True)
         for of, wrts in self._deps.items():
             for wrt in wrts:
                 partials[of, wrt] = np.broadcast_to(grads[of][wrt], self._shapes[of]).ravel()
@@ -345,48 +414,70 @@ class EMTorqueComp(PointwiseImplicitComp):
     """
 
     _input_vars = (
-        ('rotor_torque', 'N*m', 'Required rotor torque Q_r', 500.0, True),
-        ('rotor_rpm', 'rpm', 'Rotor speed', 1000.0, True),
+        ("rotor_torque", "N*m", "Required rotor torque Q_r", 500.0, True),
+        ("rotor_rpm", "rpm", "Rotor speed", 1000.0, True),
     ) + tuple((name, units, desc, default, False) for name, units, desc, default in MOTOR_INPUTS)
-    _state_var = ('em_torque', 'N*m', 'Electromagnetic torque T_em', 130.0, True)
-    _deps = ('rotor_torque', 'rotor_rpm') + MOTOR_NAMES
+    _state_var = ("em_torque", "N*m", "Electromagnetic torque T_em", 130.0, True)
+    _deps = ("rotor_torque", "rotor_rpm") + MOTOR_NAMES
     _per_node = True
     _state_ref = 100.0
     _maxiter = 100
 
     def _check_values(self, values):
-        check_range('rotor_torque', values['rotor_torque'], lower=0.0, lower_open=True,
-                    units='N*m', error=om.AnalysisError, where=self.msginfo)
-        check_range('rotor_rpm', values['rotor_rpm'], lower=0.0, lower_open=True,
-                    units='rpm', error=om.AnalysisError, where=self.msginfo)
+        check_range(
+            "rotor_torque",
+            values["rotor_torque"],
+            lower=0.0,
+            lower_open=True,
+            units="N*m",
+            error=om.AnalysisError,
+            where=self.msginfo,
+        )
+        check_range(
+            "rotor_rpm",
+            values["rotor_rpm"],
+            lower=0.0,
+            lower_open=True,
+            units="rpm",
+            error=om.AnalysisError,
+            where=self.msginfo,
+        )
         check_saliency(
-            self.msginfo, values['inductance_d'], values['inductance_q'],
-            lambda idx: (f' (length {values["length"].real[idx].tolist()} m) is outside the '
-                         'allowed range (0, inf): the MTPA current needs L_q > L_d, which the '
-                         'equivalent circuit gives only above a minimum length (about 0.056 m '
-                         'at L/D = 0.5 with the default parameters).'))
+            self.msginfo,
+            values["inductance_d"],
+            values["inductance_q"],
+            lambda idx: (
+                f" (length {values['length'].real[idx].tolist()} m) is outside the "
+                "allowed range (0, inf): the MTPA current needs L_q > L_d, which the "
+                "equivalent circuit gives only above a minimum length (about 0.056 m "
+                "at L/D = 0.5 with the default parameters)."
+            ),
+        )
 
     def _operating_point(self, v, torque):
         """Loss-model outputs at EM torque ``torque`` with the MTPA q-axis current."""
-        par = self.options['parameters']
-        i_base, t_base = mtpa_base(v['flux_linkage'][:, np.newaxis],
-                                   v['inductance_d'][:, np.newaxis],
-                                   v['inductance_q'][:, np.newaxis], par.pole_pairs)
+        par = self.options["parameters"]
+        i_base, t_base = mtpa_base(
+            v["flux_linkage"][:, np.newaxis],
+            v["inductance_d"][:, np.newaxis],
+            v["inductance_q"][:, np.newaxis],
+            par.pole_pairs,
+        )
         current_q = mtpa_current_pu(torque / t_base, owner=self.msginfo) * i_base
         return loss_model(dict(v, em_torque=torque, current_q=current_q), par)
 
     def _residual(self, v, torque):
-        load = v['rotor_torque'] / self.options['parameters'].gear_ratio
-        return self._operating_point(v, torque)['efficiency'] * torque - load
+        load = v["rotor_torque"] / self.options["parameters"].gear_ratio
+        return self._operating_point(v, torque)["efficiency"] * torque - load
 
     def _solve(self, v):
-        par = self.options['parameters']
-        load = v['rotor_torque'] / par.gear_ratio
-        shaft_speed = v['rotor_rpm'] * par.gear_ratio * _RPM_TO_RAD_S  # motor omega_m, rad/s
+        par = self.options["parameters"]
+        load = v["rotor_torque"] / par.gear_ratio
+        shaft_speed = v["rotor_rpm"] * par.gear_ratio * _RPM_TO_RAD_S  # motor omega_m, rad/s
 
         def balance(torque):
             """Return h = omega_m (T - T_L) - P_loss and dh/dT (complex step)."""
-            loss = self._operating_point(v, torque + 1j * CS_STEP)['power_loss']
+            loss = self._operating_point(v, torque + 1j * CS_STEP)["power_loss"]
             value = shaft_speed * (torque - load) - loss.real
             return value, shaft_speed - loss.imag / CS_STEP
 
@@ -397,8 +488,10 @@ class EMTorqueComp(PointwiseImplicitComp):
             value, slope = balance(torque)
             if not np.all(np.isfinite(value)):
                 i = tuple(int(k) for k in np.argwhere(~np.isfinite(value))[0])
-                raise om.AnalysisError(f'{self.msginfo}: the em_torque residual is not finite at '
-                                       f'{torque[i]:.6g} N*m (index {list(i)}).')
+                raise om.AnalysisError(
+                    f"{self.msginfo}: the em_torque residual is not finite at "
+                    f"{torque[i]:.6g} N*m (index {list(i)})."
+                )
             above = value > 0.0
             upper = np.where(above, np.minimum(upper, torque), upper)
             lower = np.where(above, lower, torque)
@@ -406,17 +499,19 @@ class EMTorqueComp(PointwiseImplicitComp):
             if np.any(stall):
                 i = tuple(int(k) for k in np.argwhere(stall)[0])
                 raise om.AnalysisError(
-                    f'{self.msginfo}: no electromagnetic torque balances rotor_torque = '
-                    f'{v["rotor_torque"][i]:.6g} N*m at rotor_rpm = {v["rotor_rpm"][i]:.6g} rpm '
-                    f'(index {list(i)}): the losses grow faster than the torque (stall). The '
-                    'allowed range is below the maximum of efficiency * em_torque; use a longer '
-                    'motor or a smaller load.')
-            with np.errstate(divide='ignore', invalid='ignore'):
+                    f"{self.msginfo}: no electromagnetic torque balances rotor_torque = "
+                    f"{v['rotor_torque'][i]:.6g} N*m at rotor_rpm = {v['rotor_rpm'][i]:.6g} rpm "
+                    f"(index {list(i)}): the losses grow faster than the torque (stall). The "
+                    "allowed range is below the maximum of efficiency * em_torque; use a longer "
+                    "motor or a smaller load."
+                )
+            with np.errstate(divide="ignore", invalid="ignore"):
                 step_to = torque - value / slope
             bracketed = np.isfinite(upper)
             outside = ~np.isfinite(step_to) | (step_to < lower) | (bracketed & (step_to > upper))
-            new = np.where(outside, np.where(bracketed, 0.5 * (lower + upper), 2.0 * torque),
-                           step_to)
+            new = np.where(
+                outside, np.where(bracketed, 0.5 * (lower + upper), 2.0 * torque), step_to
+            )
             new = np.where(value == 0.0, torque, new)
             done = np.abs(new - torque) <= 4.0 * np.finfo(float).eps * np.abs(new)
             torque = new
@@ -424,10 +519,13 @@ class EMTorqueComp(PointwiseImplicitComp):
                 return torque
         if np.all(np.isfinite(upper)):
             # Slow convergence: finish on the brackets.
-            return safeguarded_newton(balance, lower, upper, where=self.msginfo,
-                                      variable='em_torque', units='N*m')
-        raise om.AnalysisError(f'{self.msginfo}: the em_torque Newton iteration did not '
-                               f'converge in {self._maxiter} iterations.')
+            return safeguarded_newton(
+                balance, lower, upper, where=self.msginfo, variable="em_torque", units="N*m"
+            )
+        raise om.AnalysisError(
+            f"{self.msginfo}: the em_torque Newton iteration did not "
+            f"converge in {self._maxiter} iterations."
+        )
 
 
 class MotorMarginComp(om.ExplicitComponent):
@@ -481,61 +579,109 @@ class MotorMarginComp(om.ExplicitComponent):
 
     def initialize(self):
         _declare_shape_options(self)
-        self.options.declare('include_torque_limit', default=True, types=bool,
-                             desc='Add torque_limit and voltage_torque_margin')
+        self.options.declare(
+            "include_torque_limit",
+            default=True,
+            types=bool,
+            desc="Add torque_limit and voltage_torque_margin",
+        )
 
     def setup(self):
-        nm, nn = self.options['num_motors'], self.options['num_nodes']
-        with_limit = self.options['include_torque_limit']
-        self.add_input('em_torque', val=130.0 * np.ones((nm, nn)), units='N*m',
-                       desc='Electromagnetic torque T_em')
-        self.add_input('voltage', val=300.0 * np.ones((nm, nn)), units='V',
-                       desc='MTPA terminal voltage amplitude |U|')
-        self.add_input('peak_torque', val=200.0 * np.ones(nm), units='N*m',
-                       desc='Peak (current-limited) motor torque T_pk')
+        nm, nn = self.options["num_motors"], self.options["num_nodes"]
+        with_limit = self.options["include_torque_limit"]
+        self.add_input(
+            "em_torque",
+            val=130.0 * np.ones((nm, nn)),
+            units="N*m",
+            desc="Electromagnetic torque T_em",
+        )
+        self.add_input(
+            "voltage",
+            val=300.0 * np.ones((nm, nn)),
+            units="V",
+            desc="MTPA terminal voltage amplitude |U|",
+        )
+        self.add_input(
+            "peak_torque",
+            val=200.0 * np.ones(nm),
+            units="N*m",
+            desc="Peak (current-limited) motor torque T_pk",
+        )
         if with_limit:
-            self.add_input('torque_limit', val=400.0 * np.ones((nm, nn)), units='N*m',
-                           desc='Voltage-limited EM torque T_lim')
-        self.add_output('torque_margin', val=np.zeros((nm, nn)), units=None,
-                        desc='Torque margin T_pk/T_em - 1 (constrained >= 0.10 in the paper)')
-        self.add_output('voltage_margin', val=np.zeros((nm, nn)), units=None,
-                        desc='Voltage margin 1 - |U|/V_lim of the MTPA point')
+            self.add_input(
+                "torque_limit",
+                val=400.0 * np.ones((nm, nn)),
+                units="N*m",
+                desc="Voltage-limited EM torque T_lim",
+            )
+        self.add_output(
+            "torque_margin",
+            val=np.zeros((nm, nn)),
+            units=None,
+            desc="Torque margin T_pk/T_em - 1 (constrained >= 0.10 in the paper)",
+        )
+        self.add_output(
+            "voltage_margin",
+            val=np.zeros((nm, nn)),
+            units=None,
+            desc="Voltage margin 1 - |U|/V_lim of the MTPA point",
+        )
         if with_limit:
-            self.add_output('voltage_torque_margin', val=np.zeros((nm, nn)), units=None,
-                            desc='Margin to the voltage-limited torque T_lim/T_em - 1')
-        self.add_output('beyond_voltage_limit', val=np.zeros((nm, nn)), units=None,
-                        desc='1.0 where the MTPA voltage exceeds V_lim (flux weakening would '
-                             'be needed), else 0.0; not differentiable')
+            self.add_output(
+                "voltage_torque_margin",
+                val=np.zeros((nm, nn)),
+                units=None,
+                desc="Margin to the voltage-limited torque T_lim/T_em - 1",
+            )
+        self.add_output(
+            "beyond_voltage_limit",
+            val=np.zeros((nm, nn)),
+            units=None,
+            desc="1.0 where the MTPA voltage exceeds V_lim (flux weakening would "
+            "be needed), else 0.0; not differentiable",
+        )
 
         rows = np.arange(nm * nn)
-        v_lim = self.options['parameters'].voltage_limit
-        self.declare_partials('torque_margin', 'em_torque', rows=rows, cols=rows)
-        self.declare_partials('torque_margin', 'peak_torque', rows=rows,
-                              cols=np.repeat(np.arange(nm), nn))
-        self.declare_partials('voltage_margin', 'voltage', rows=rows, cols=rows,
-                              val=np.full(nm * nn, -1.0 / v_lim))
+        v_lim = self.options["parameters"].voltage_limit
+        self.declare_partials("torque_margin", "em_torque", rows=rows, cols=rows)
+        self.declare_partials(
+            "torque_margin", "peak_torque", rows=rows, cols=np.repeat(np.arange(nm), nn)
+        )
+        self.declare_partials(
+            "voltage_margin", "voltage", rows=rows, cols=rows, val=np.full(nm * nn, -1.0 / v_lim)
+        )
         if with_limit:
-            self.declare_partials('voltage_torque_margin', ['em_torque', 'torque_limit'],
-                                  rows=rows, cols=rows)
+            self.declare_partials(
+                "voltage_torque_margin", ["em_torque", "torque_limit"], rows=rows, cols=rows
+            )
 
     def compute(self, inputs, outputs):
-        check_range('em_torque', inputs['em_torque'], lower=0.0, lower_open=True,
-                    units='N*m', error=om.AnalysisError, where=self.msginfo)
-        v_lim = self.options['parameters'].voltage_limit
-        torque = inputs['em_torque']
-        outputs['torque_margin'] = inputs['peak_torque'][:, np.newaxis] / torque - 1.0
-        outputs['voltage_margin'] = 1.0 - inputs['voltage'] / v_lim
-        if self.options['include_torque_limit']:
-            outputs['voltage_torque_margin'] = inputs['torque_limit'] / torque - 1.0
-        outputs['beyond_voltage_limit'] = (inputs['voltage'].real > v_lim).astype(float)
+        check_range(
+            "em_torque",
+            inputs["em_torque"],
+            lower=0.0,
+            lower_open=True,
+            units="N*m",
+            error=om.AnalysisError,
+            where=self.msginfo,
+        )
+        v_lim = self.options["parameters"].voltage_limit
+        torque = inputs["em_torque"]
+        outputs["torque_margin"] = inputs["peak_torque"][:, np.newaxis] / torque - 1.0
+        outputs["voltage_margin"] = 1.0 - inputs["voltage"] / v_lim
+        if self.options["include_torque_limit"]:
+            outputs["voltage_torque_margin"] = inputs["torque_limit"] / torque - 1.0
+        outputs["beyond_voltage_limit"] = (inputs["voltage"].real > v_lim).astype(float)
 
     def compute_partials(self, inputs, partials):
-        torque = inputs['em_torque']
-        peak = inputs['peak_torque'][:, np.newaxis]
-        partials['torque_margin', 'em_torque'] = (-peak / torque ** 2).ravel()
-        partials['torque_margin', 'peak_torque'] = np.broadcast_to(1.0 / torque,
-                                                                   torque.shape).ravel()
-        if self.options['include_torque_limit']:
-            partials['voltage_torque_margin', 'em_torque'] = (
-                -inputs['torque_limit'] / torque ** 2).ravel()
-            partials['voltage_torque_margin', 'torque_limit'] = (1.0 / torque).ravel()
+        torque = inputs["em_torque"]
+        peak = inputs["peak_torque"][:, np.newaxis]
+        partials["torque_margin", "em_torque"] = (-peak / torque**2).ravel()
+        partials["torque_margin", "peak_torque"] = np.broadcast_to(
+            1.0 / torque, torque.shape
+        ).ravel()
+        if self.options["include_torque_limit"]:
+            partials["voltage_torque_margin", "em_torque"] = (
+                -inputs["torque_limit"] / torque**2
+            ).ravel()
+            partials["voltage_torque_margin", "torque_limit"] = (1.0 / torque).ravel()

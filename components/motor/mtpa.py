@@ -21,10 +21,10 @@ def mtpa_base(flux_linkage, inductance_d, inductance_q, pole_pairs):
 
 def mtpa_residual(current_pu, torque_pu):
     """Per-unit MTPA residual I_q*^4 + T* I_q* - T*^2 (paper eq. 26)."""
-    return current_pu ** 4 + torque_pu * current_pu - torque_pu ** 2
+    return current_pu**4 + torque_pu * current_pu - torque_pu**2
 
 
-def mtpa_current_pu(torque_pu, owner='MTPA'):
+def mtpa_current_pu(torque_pu, owner="MTPA"):
     """
     Per-unit MTPA q-axis current I_q*(T*): the root of eq. 26 for T* > 0 (vectorized).
 
@@ -38,11 +38,16 @@ def mtpa_current_pu(torque_pu, owner='MTPA'):
     t_real = torque_pu.real
     upper = np.minimum(t_real, np.sqrt(t_real))
     current_pu = safeguarded_newton(
-        lambda x: (mtpa_residual(x, t_real), 4.0 * x ** 3 + t_real),
-        np.zeros_like(t_real), upper, where=owner, variable='current_q (per unit)')
+        lambda x: (mtpa_residual(x, t_real), 4.0 * x**3 + t_real),
+        np.zeros_like(t_real),
+        upper,
+        where=owner,
+        variable="current_q (per unit)",
+    )
     if np.iscomplexobj(torque_pu):
-        current_pu = current_pu - (mtpa_residual(current_pu, torque_pu)
-                                   / (4.0 * current_pu ** 3 + t_real))
+        current_pu = current_pu - (
+            mtpa_residual(current_pu, torque_pu) / (4.0 * current_pu**3 + t_real)
+        )
     return current_pu
 
 
@@ -94,84 +99,146 @@ class MTPAComp(om.ImplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare('num_motors', default=1, types=int, lower=1,
-                             desc='Number of motors (different designs) evaluated at once')
-        self.options.declare('num_nodes', default=1, types=int, lower=1,
-                             desc='Number of operating points (nodes) per motor')
-        self.options.declare('parameters', default=MotorParameters(), types=MotorParameters,
-                             desc='Fixed motor parameters')
+        self.options.declare(
+            "num_motors",
+            default=1,
+            types=int,
+            lower=1,
+            desc="Number of motors (different designs) evaluated at once",
+        )
+        self.options.declare(
+            "num_nodes",
+            default=1,
+            types=int,
+            lower=1,
+            desc="Number of operating points (nodes) per motor",
+        )
+        self.options.declare(
+            "parameters",
+            default=MotorParameters(),
+            types=MotorParameters,
+            desc="Fixed motor parameters",
+        )
 
     def setup(self):
-        nm, nn = self.options['num_motors'], self.options['num_nodes']
-        self.add_input('em_torque', val=100.0 * np.ones((nm, nn)), units='N*m',
-                       desc='Electromagnetic torque T_em')
-        self.add_input('flux_linkage', val=0.3 * np.ones(nm), units='Wb',
-                       desc='Permanent-magnet flux linkage Psi_F')
-        self.add_input('inductance_d', val=7.5e-4 * np.ones(nm), units='H',
-                       desc='D-axis inductance L_d')
-        self.add_input('inductance_q', val=1.0e-3 * np.ones(nm), units='H',
-                       desc='Q-axis inductance L_q')
-        self.add_output('current_q', val=50.0 * np.ones((nm, nn)), units='A', ref=100.0,
-                        desc='MTPA q-axis current I_q')
+        nm, nn = self.options["num_motors"], self.options["num_nodes"]
+        self.add_input(
+            "em_torque",
+            val=100.0 * np.ones((nm, nn)),
+            units="N*m",
+            desc="Electromagnetic torque T_em",
+        )
+        self.add_input(
+            "flux_linkage",
+            val=0.3 * np.ones(nm),
+            units="Wb",
+            desc="Permanent-magnet flux linkage Psi_F",
+        )
+        self.add_input(
+            "inductance_d", val=7.5e-4 * np.ones(nm), units="H", desc="D-axis inductance L_d"
+        )
+        self.add_input(
+            "inductance_q", val=1.0e-3 * np.ones(nm), units="H", desc="Q-axis inductance L_q"
+        )
+        self.add_output(
+            "current_q",
+            val=50.0 * np.ones((nm, nn)),
+            units="A",
+            ref=100.0,
+            desc="MTPA q-axis current I_q",
+        )
 
         rows = np.arange(nm * nn)
         per_motor = np.repeat(np.arange(nm), nn)
-        self.declare_partials('current_q', ['current_q', 'em_torque'], rows=rows, cols=rows)
-        self.declare_partials('current_q', ['flux_linkage', 'inductance_d', 'inductance_q'],
-                              rows=rows, cols=per_motor)
+        self.declare_partials("current_q", ["current_q", "em_torque"], rows=rows, cols=rows)
+        self.declare_partials(
+            "current_q", ["flux_linkage", "inductance_d", "inductance_q"], rows=rows, cols=per_motor
+        )
 
     def _per_unit(self, inputs, current_q):
-        p = self.options['parameters'].pole_pairs
-        psi, l_d, l_q = (inputs[name][:, np.newaxis]
-                         for name in ('flux_linkage', 'inductance_d', 'inductance_q'))
+        p = self.options["parameters"].pole_pairs
+        psi, l_d, l_q = (
+            inputs[name][:, np.newaxis] for name in ("flux_linkage", "inductance_d", "inductance_q")
+        )
         i_base, t_base = mtpa_base(psi, l_d, l_q, p)
-        return current_q / i_base, inputs['em_torque'] / t_base, i_base, t_base
+        return current_q / i_base, inputs["em_torque"] / t_base, i_base, t_base
 
     def _check_values(self, inputs):
-        check_range('em_torque', inputs['em_torque'], lower=0.0, lower_open=True,
-                    units='N*m', error=om.AnalysisError, where=self.msginfo)
-        check_range('flux_linkage', inputs['flux_linkage'], lower=0.0, lower_open=True,
-                    units='Wb', error=om.AnalysisError, where=self.msginfo)
-        check_range('inductance_d', inputs['inductance_d'], lower=0.0, lower_open=True,
-                    units='H', error=om.AnalysisError, where=self.msginfo)
-        check_saliency(self.msginfo, inputs['inductance_d'], inputs['inductance_q'],
-                       ' is outside the allowed range (0, inf): the MTPA quartic needs '
-                       'L_q > L_d.')
+        check_range(
+            "em_torque",
+            inputs["em_torque"],
+            lower=0.0,
+            lower_open=True,
+            units="N*m",
+            error=om.AnalysisError,
+            where=self.msginfo,
+        )
+        check_range(
+            "flux_linkage",
+            inputs["flux_linkage"],
+            lower=0.0,
+            lower_open=True,
+            units="Wb",
+            error=om.AnalysisError,
+            where=self.msginfo,
+        )
+        check_range(
+            "inductance_d",
+            inputs["inductance_d"],
+            lower=0.0,
+            lower_open=True,
+            units="H",
+            error=om.AnalysisError,
+            where=self.msginfo,
+        )
+        check_saliency(
+            self.msginfo,
+            inputs["inductance_d"],
+            inputs["inductance_q"],
+            " is outside the allowed range (0, inf): the MTPA quartic needs L_q > L_d.",
+        )
 
     def apply_nonlinear(self, inputs, outputs, residuals):
-        current_pu, torque_pu, _, _ = self._per_unit(inputs, outputs['current_q'])
-        residuals['current_q'] = mtpa_residual(current_pu, torque_pu)
+        current_pu, torque_pu, _, _ = self._per_unit(inputs, outputs["current_q"])
+        residuals["current_q"] = mtpa_residual(current_pu, torque_pu)
 
     def solve_nonlinear(self, inputs, outputs):
         self._check_values(inputs)
-        _, torque_pu, i_base, _ = self._per_unit(inputs, outputs['current_q'])
-        outputs['current_q'] = mtpa_current_pu(torque_pu, owner=self.msginfo) * i_base
+        _, torque_pu, i_base, _ = self._per_unit(inputs, outputs["current_q"])
+        outputs["current_q"] = mtpa_current_pu(torque_pu, owner=self.msginfo) * i_base
 
     def guess_nonlinear(self, inputs, outputs, residuals):
         # Only used by a Newton solver above; keep the state positive.
-        current = outputs['current_q']
+        current = outputs["current_q"]
         if np.any(current.real <= 0.0):
-            outputs['current_q'] = np.where(current.real > 0.0, current, 1.0)
+            outputs["current_q"] = np.where(current.real > 0.0, current, 1.0)
 
     def linearize(self, inputs, outputs, partials):
-        p = self.options['parameters'].pole_pairs
-        psi, l_d, l_q = (inputs[name][:, np.newaxis]
-                         for name in ('flux_linkage', 'inductance_d', 'inductance_q'))
-        current_q, torque = outputs['current_q'], inputs['em_torque']
+        p = self.options["parameters"].pole_pairs
+        psi, l_d, l_q = (
+            inputs[name][:, np.newaxis] for name in ("flux_linkage", "inductance_d", "inductance_q")
+        )
+        current_q, torque = outputs["current_q"], inputs["em_torque"]
         current_pu, torque_pu, i_base, t_base = self._per_unit(inputs, current_q)
-        dr_dx = 4.0 * current_pu ** 3 + torque_pu  # dR/dI_q*
+        dr_dx = 4.0 * current_pu**3 + torque_pu  # dR/dI_q*
         dr_dt = current_pu - 2.0 * torque_pu  # dR/dT*
         # d(per-unit)/d(base): x = I_q/I_base, t = T/T_base.
-        dx_dib = -current_q / i_base ** 2
-        dt_dtb = -torque / t_base ** 2
+        dx_dib = -current_q / i_base**2
+        dt_dtb = -torque / t_base**2
         saliency = l_q - l_d
-        dib = {'flux_linkage': 1.0 / saliency, 'inductance_q': -psi / saliency ** 2,
-               'inductance_d': psi / saliency ** 2}
-        dtb = {'flux_linkage': 3.0 * p * psi / saliency,
-               'inductance_q': -1.5 * p * psi ** 2 / saliency ** 2,
-               'inductance_d': 1.5 * p * psi ** 2 / saliency ** 2}
-        partials['current_q', 'current_q'] = (dr_dx / i_base).ravel()
-        partials['current_q', 'em_torque'] = (dr_dt / t_base).ravel()
-        for name in ('flux_linkage', 'inductance_d', 'inductance_q'):
-            partials['current_q', name] = (dr_dx * dx_dib * dib[name]
-                                           + dr_dt * dt_dtb * dtb[name]).ravel()
+        dib = {
+            "flux_linkage": 1.0 / saliency,
+            "inductance_q": -psi / saliency**2,
+            "inductance_d": psi / saliency**2,
+        }
+        dtb = {
+            "flux_linkage": 3.0 * p * psi / saliency,
+            "inductance_q": -1.5 * p * psi**2 / saliency**2,
+            "inductance_d": 1.5 * p * psi**2 / saliency**2,
+        }
+        partials["current_q", "current_q"] = (dr_dx / i_base).ravel()
+        partials["current_q", "em_torque"] = (dr_dt / t_base).ravel()
+        for name in ("flux_linkage", "inductance_d", "inductance_q"):
+            partials["current_q", name] = (
+                dr_dx * dx_dib * dib[name] + dr_dt * dt_dtb * dtb[name]
+            ).ravel()

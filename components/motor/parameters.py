@@ -82,7 +82,7 @@ def field_strength_from_flux_density(b):
 
     Complex-step safe. ``b`` in T, returns A/m.
     """
-    return (1.12832651 * np.exp(b + 1.0) + 200.0) * b ** 1.4
+    return (1.12832651 * np.exp(b + 1.0) + 200.0) * b**1.4
 
 
 def bridge_flux_density(h):
@@ -142,31 +142,40 @@ class MotorParameters:
     magnet_temperature: float = 75.0
 
     def __post_init__(self):
-        for name in ('pole_pairs', 'phases', 'num_slots'):
+        for name in ("pole_pairs", "phases", "num_slots"):
             value = getattr(self, name)
             if not isinstance(value, (int, np.integer)):
-                raise ValueError(f"{_WHERE}: '{name}' must be an integer, got "
-                                 f"{type(value).__name__} {value!r}")
+                raise ValueError(
+                    f"{_WHERE}: '{name}' must be an integer, got {type(value).__name__} {value!r}"
+                )
             check_integer(name, value, lower=1, where=_WHERE)
-        for name in ('rated_current', 'voltage_limit', 'gear_ratio', 'rated_speed',
-                     'torque_density'):
+        for name in (
+            "rated_current",
+            "voltage_limit",
+            "gear_ratio",
+            "rated_speed",
+            "torque_density",
+        ):
             check_number(name, getattr(self, name), lower=0.0, lower_open=True, where=_WHERE)
         coeffs = self.peak_torque_coefficients
         if not isinstance(coeffs, (tuple, list)) or len(coeffs) < 1:
-            raise ValueError(f"{_WHERE}: 'peak_torque_coefficients' = {coeffs!r} is not "
-                             "allowed: must be a non-empty tuple of finite floats (highest "
-                             "power first)")
+            raise ValueError(
+                f"{_WHERE}: 'peak_torque_coefficients' = {coeffs!r} is not "
+                "allowed: must be a non-empty tuple of finite floats (highest "
+                "power first)"
+            )
         for i, c in enumerate(coeffs):
             check_number(f"peak_torque_coefficients[{i}]", c, where=_WHERE)
         t = self.magnet_temperature
-        check_number('magnet_temperature', t, lower=-50.0, upper=200.0, units='degC',
-                     where=_WHERE)
+        check_number("magnet_temperature", t, lower=-50.0, upper=200.0, units="degC", where=_WHERE)
         q = self.num_slots / (2 * self.phases * self.pole_pairs)
         if not (q >= 1.0 and float(q).is_integer()):
-            raise ValueError(f"{_WHERE}: 'num_slots' = {self.num_slots!r} is not allowed: must "
-                             f"be a multiple of 2*phases*pole_pairs = "
-                             f"{2 * self.phases * self.pole_pairs} (integral-slot winding, "
-                             "q = Z/(2 m p) integer)")
+            raise ValueError(
+                f"{_WHERE}: 'num_slots' = {self.num_slots!r} is not allowed: must "
+                f"be a multiple of 2*phases*pole_pairs = "
+                f"{2 * self.phases * self.pole_pairs} (integral-slot winding, "
+                "q = Z/(2 m p) integer)"
+            )
 
     @property
     def slots_per_pole_per_phase(self):

@@ -37,19 +37,31 @@ class ShaftTorqueComp(om.ExplicitComponent):
 
     def initialize(self):
         self.options.declare("num_motors", types=int, lower=1, desc="number of motors")
-        self.options.declare("num_nodes", default=1, types=int, lower=1,
-                             desc="number of operating points")
-        self.options.declare("idle_torque", default=1.0, types=float, lower=1e-9,
-                             desc="torque of an idling motor, N*m")
-        self.options.declare("width", default=2.0, types=float, lower=1e-9,
-                             desc="width of the smooth floor, N*m")
+        self.options.declare(
+            "num_nodes", default=1, types=int, lower=1, desc="number of operating points"
+        )
+        self.options.declare(
+            "idle_torque",
+            default=1.0,
+            types=float,
+            lower=1e-9,
+            desc="torque of an idling motor, N*m",
+        )
+        self.options.declare(
+            "width", default=2.0, types=float, lower=1e-9, desc="width of the smooth floor, N*m"
+        )
 
     def setup(self):
         shape = (self.options["num_motors"], self.options["num_nodes"])
-        self.add_input("rotor_torque", np.ones(shape), units="N*m",
-                       desc="shaft torque the rotor demands")
-        self.add_output("motor_load_torque", np.ones(shape), units="N*m",
-                        desc="torque the motor delivers (idle when the rotor windmills)")
+        self.add_input(
+            "rotor_torque", np.ones(shape), units="N*m", desc="shaft torque the rotor demands"
+        )
+        self.add_output(
+            "motor_load_torque",
+            np.ones(shape),
+            units="N*m",
+            desc="torque the motor delivers (idle when the rotor windmills)",
+        )
         self.declare_partials("motor_load_torque", "rotor_torque", diagonal=True)
 
     def compute(self, inputs, outputs):
@@ -60,5 +72,6 @@ class ShaftTorqueComp(om.ExplicitComponent):
     def compute_partials(self, inputs, partials):
         f, w = self.options["idle_torque"], self.options["width"]
         d = inputs["rotor_torque"] - f
-        partials["motor_load_torque", "rotor_torque"] = (0.5 * (1.0 + d / np.sqrt(d * d + w * w))
-                                                         ).ravel()
+        partials["motor_load_torque", "rotor_torque"] = (
+            0.5 * (1.0 + d / np.sqrt(d * d + w * w))
+        ).ravel()

@@ -9,19 +9,22 @@ from lpc_mdo.components.motor.parameters import MotorParameters
 
 # (name, units, description) of the geometry outputs, in output order.
 GEOMETRY_OUTPUTS = (
-    ('stator_inner_diameter', 'm', 'Stator inner (bore) diameter D_i = D/lambda_i'),
-    ('pole_pitch', 'm', 'Pole pitch tau_p = pi D_i/(2p)'),
-    ('tooth_pitch', 'm', 'Stator tooth (slot) pitch t_1 = pi D_i/Z'),
-    ('air_gap', 'm', 'Air-gap length delta = 0.4 A_bar tau_p/(0.9e6 B_delta,max)'),
-    ('rotor_diameter', 'm', 'Rotor outer diameter D_2 = D_i - 2 delta'),
-    ('shaft_diameter', 'm', 'Shaft diameter D_sh = 0.3 D_2'),
-    ('turns_per_phase', None, 'Series turns per phase W = N_c/2 (continuous, not rounded)'),
-    ('tooth_width', 'm', 'Stator tooth width b_t = t_1 B_delta,max/(k_fe B_t)'),
-    ('stator_yoke_height', 'm',
-     'Stator yoke height h_ys = tau_p alpha_B B_delta,max/(2 k_fe B_ys)'),
-    ('slot_bottom_width', 'm', 'Slot width at the bore b_sb = theta_ssi pi D_i/360'),
-    ('slot_height', 'm', 'Slot height h_slot = (D - D_i)/2 - h_ys'),
-    ('slot_inner_width', 'm', 'Radially inner slot width b_s1 = pi (D_i + 2(h_os + h_k))/Z - b_t'),
+    ("stator_inner_diameter", "m", "Stator inner (bore) diameter D_i = D/lambda_i"),
+    ("pole_pitch", "m", "Pole pitch tau_p = pi D_i/(2p)"),
+    ("tooth_pitch", "m", "Stator tooth (slot) pitch t_1 = pi D_i/Z"),
+    ("air_gap", "m", "Air-gap length delta = 0.4 A_bar tau_p/(0.9e6 B_delta,max)"),
+    ("rotor_diameter", "m", "Rotor outer diameter D_2 = D_i - 2 delta"),
+    ("shaft_diameter", "m", "Shaft diameter D_sh = 0.3 D_2"),
+    ("turns_per_phase", None, "Series turns per phase W = N_c/2 (continuous, not rounded)"),
+    ("tooth_width", "m", "Stator tooth width b_t = t_1 B_delta,max/(k_fe B_t)"),
+    (
+        "stator_yoke_height",
+        "m",
+        "Stator yoke height h_ys = tau_p alpha_B B_delta,max/(2 k_fe B_ys)",
+    ),
+    ("slot_bottom_width", "m", "Slot width at the bore b_sb = theta_ssi pi D_i/360"),
+    ("slot_height", "m", "Slot height h_slot = (D - D_i)/2 - h_ys"),
+    ("slot_inner_width", "m", "Radially inner slot width b_s1 = pi (D_i + 2(h_os + h_k))/Z - b_t"),
 )
 
 
@@ -87,69 +90,126 @@ class MotorSizingComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare('num_motors', default=1, types=int, lower=1,
-                             desc='Number of motors sized at once')
-        self.options.declare('length_to_diameter', default=0.5, types=(int, float),
-                             allow_none=True, check_valid=_check_ratio,
-                             desc='L/D ratio tying D to L (> 0); None makes diameter an input')
-        self.options.declare('parameters', default=MotorParameters(), types=MotorParameters,
-                             desc='Fixed motor parameters')
+        self.options.declare(
+            "num_motors", default=1, types=int, lower=1, desc="Number of motors sized at once"
+        )
+        self.options.declare(
+            "length_to_diameter",
+            default=0.5,
+            types=(int, float),
+            allow_none=True,
+            check_valid=_check_ratio,
+            desc="L/D ratio tying D to L (> 0); None makes diameter an input",
+        )
+        self.options.declare(
+            "parameters",
+            default=MotorParameters(),
+            types=MotorParameters,
+            desc="Fixed motor parameters",
+        )
 
     def setup(self):
-        nm = self.options['num_motors']
-        ratio = self.options['length_to_diameter']
-        self.add_input('length', val=0.1 * np.ones(nm), units='m', desc='Stack length L')
+        nm = self.options["num_motors"]
+        ratio = self.options["length_to_diameter"]
+        self.add_input("length", val=0.1 * np.ones(nm), units="m", desc="Stack length L")
         if ratio is None:
-            self.add_input('diameter', val=0.2 * np.ones(nm), units='m',
-                           desc='Outer stator diameter D')
-        self.add_input('electric_loading', val=30.0e3 * np.ones(nm), units='A/m',
-                       desc='Electric loading A_bar (line current density)')
-        self.add_input('magnetic_loading', val=0.85 * np.ones(nm), units='T',
-                       desc='Magnetic loading B_bar')
+            self.add_input(
+                "diameter", val=0.2 * np.ones(nm), units="m", desc="Outer stator diameter D"
+            )
+        self.add_input(
+            "electric_loading",
+            val=30.0e3 * np.ones(nm),
+            units="A/m",
+            desc="Electric loading A_bar (line current density)",
+        )
+        self.add_input(
+            "magnetic_loading", val=0.85 * np.ones(nm), units="T", desc="Magnetic loading B_bar"
+        )
 
         if ratio is not None:
-            self.add_output('diameter', val=0.2 * np.ones(nm), units='m',
-                            desc='Outer stator diameter D = L/(L/D)')
-        self.add_output('mass', val=np.ones(nm), units='kg',
-                        desc='Motor mass (pi/2) A_bar B_bar D**2 L/Q_sp (paper eq. 23)')
-        self.add_output('peak_torque', val=np.ones(nm), units='N*m',
-                        desc='Peak (current-limited) motor torque from the mass fit')
+            self.add_output(
+                "diameter",
+                val=0.2 * np.ones(nm),
+                units="m",
+                desc="Outer stator diameter D = L/(L/D)",
+            )
+        self.add_output(
+            "mass",
+            val=np.ones(nm),
+            units="kg",
+            desc="Motor mass (pi/2) A_bar B_bar D**2 L/Q_sp (paper eq. 23)",
+        )
+        self.add_output(
+            "peak_torque",
+            val=np.ones(nm),
+            units="N*m",
+            desc="Peak (current-limited) motor torque from the mass fit",
+        )
         for name, units, desc in GEOMETRY_OUTPUTS:
             self.add_output(name, val=0.01 * np.ones(nm), units=units, desc=desc)
 
         ar = np.arange(nm)
-        dep = 'length' if ratio is not None else 'diameter'
+        dep = "length" if ratio is not None else "diameter"
         if ratio is not None:
-            self.declare_partials('diameter', 'length', rows=ar, cols=ar,
-                                  val=np.full(nm, 1.0 / ratio))
-        for name in ('mass', 'peak_torque'):
-            for wrt in {'length', dep, 'electric_loading', 'magnetic_loading'}:
+            self.declare_partials(
+                "diameter", "length", rows=ar, cols=ar, val=np.full(nm, 1.0 / ratio)
+            )
+        for name in ("mass", "peak_torque"):
+            for wrt in {"length", dep, "electric_loading", "magnetic_loading"}:
                 self.declare_partials(name, wrt, rows=ar, cols=ar)
         for name, _, _ in GEOMETRY_OUTPUTS:
             self.declare_partials(name, dep, rows=ar, cols=ar)
-            if name in ('air_gap', 'rotor_diameter', 'shaft_diameter', 'turns_per_phase'):
-                self.declare_partials(name, 'electric_loading', rows=ar, cols=ar)
+            if name in ("air_gap", "rotor_diameter", "shaft_diameter", "turns_per_phase"):
+                self.declare_partials(name, "electric_loading", rows=ar, cols=ar)
 
     def _diameter(self, inputs):
-        ratio = self.options['length_to_diameter']
+        ratio = self.options["length_to_diameter"]
         if ratio is None:
-            return inputs['diameter']
-        return inputs['length'] / ratio
+            return inputs["diameter"]
+        return inputs["length"] / ratio
 
     def _check_inputs(self, inputs):
-        check_range('length', inputs['length'], lower=0.0, lower_open=True,
-                    units='m', error=om.AnalysisError, where=self.msginfo)
-        if self.options['length_to_diameter'] is None:
-            check_range('diameter', inputs['diameter'], lower=0.0, lower_open=True,
-                        units='m', error=om.AnalysisError, where=self.msginfo)
-        check_range('electric_loading', inputs['electric_loading'], lower=0.0, lower_open=True,
-                    units='A/m', error=om.AnalysisError, where=self.msginfo)
-        check_range('magnetic_loading', inputs['magnetic_loading'], lower=0.0, lower_open=True,
-                    units='T', error=om.AnalysisError, where=self.msginfo)
+        check_range(
+            "length",
+            inputs["length"],
+            lower=0.0,
+            lower_open=True,
+            units="m",
+            error=om.AnalysisError,
+            where=self.msginfo,
+        )
+        if self.options["length_to_diameter"] is None:
+            check_range(
+                "diameter",
+                inputs["diameter"],
+                lower=0.0,
+                lower_open=True,
+                units="m",
+                error=om.AnalysisError,
+                where=self.msginfo,
+            )
+        check_range(
+            "electric_loading",
+            inputs["electric_loading"],
+            lower=0.0,
+            lower_open=True,
+            units="A/m",
+            error=om.AnalysisError,
+            where=self.msginfo,
+        )
+        check_range(
+            "magnetic_loading",
+            inputs["magnetic_loading"],
+            lower=0.0,
+            lower_open=True,
+            units="T",
+            error=om.AnalysisError,
+            where=self.msginfo,
+        )
 
     def _geometry(self, diameter, electric_loading):
         """Return {name: (value, d/dD, d/dA_bar)} of the geometry outputs."""
-        par = self.options['parameters']
+        par = self.options["parameters"]
         p, z, m = par.pole_pairs, par.num_slots, par.phases
         d, a = diameter, electric_loading
         one = np.ones_like(d)
@@ -158,74 +218,88 @@ class MotorSizingComp(om.ExplicitComponent):
         k_t1 = np.pi * k_di / z
         k_gap = 0.4 * k_tau / (0.9e6 * mp.AIR_GAP_FLUX_DENSITY_MAX)  # delta = k_gap A D
         k_turns = np.pi * k_di / (2.0 * m * par.rated_current * mp.POWER_FACTOR)  # W = k A D
-        k_tooth = k_t1 * mp.AIR_GAP_FLUX_DENSITY_MAX / (mp.LAMINATION_FACTOR
-                                                       * mp.TOOTH_FLUX_DENSITY)
-        k_yoke = (k_tau * mp.AIR_GAP_FLUX_RATIO * mp.AIR_GAP_FLUX_DENSITY_MAX
-                  / (2.0 * mp.LAMINATION_FACTOR * mp.YOKE_FLUX_DENSITY))
+        k_tooth = (
+            k_t1 * mp.AIR_GAP_FLUX_DENSITY_MAX / (mp.LAMINATION_FACTOR * mp.TOOTH_FLUX_DENSITY)
+        )
+        k_yoke = (
+            k_tau
+            * mp.AIR_GAP_FLUX_RATIO
+            * mp.AIR_GAP_FLUX_DENSITY_MAX
+            / (2.0 * mp.LAMINATION_FACTOR * mp.YOKE_FLUX_DENSITY)
+        )
         k_sb = mp.SLOT_BOTTOM_ANGLE_FRACTION * np.pi * k_di / z
         k_slot = 0.5 * (1.0 - k_di) - k_yoke
         k_rotor = k_di - 2.0 * k_gap * a
         lip = 2.0 * (mp.SLOT_OPENING_HEIGHT + mp.SLOT_LIP_HEIGHT)
         zero = 0.0 * d
         return {
-            'stator_inner_diameter': (k_di * d, k_di * one, zero),
-            'pole_pitch': (k_tau * d, k_tau * one, zero),
-            'tooth_pitch': (k_t1 * d, k_t1 * one, zero),
-            'air_gap': (k_gap * a * d, k_gap * a, k_gap * d),
-            'rotor_diameter': (k_rotor * d, k_rotor, -2.0 * k_gap * d),
-            'shaft_diameter': (0.3 * k_rotor * d, 0.3 * k_rotor, -0.6 * k_gap * d),
-            'turns_per_phase': (k_turns * a * d, k_turns * a, k_turns * d),
-            'tooth_width': (k_tooth * d, k_tooth * one, zero),
-            'stator_yoke_height': (k_yoke * d, k_yoke * one, zero),
-            'slot_bottom_width': (k_sb * d, k_sb * one, zero),
-            'slot_height': (k_slot * d, k_slot * one, zero),
-            'slot_inner_width': (np.pi * (k_di * d + lip) / z - k_tooth * d,
-                                 (np.pi * k_di / z - k_tooth) * one, zero),
+            "stator_inner_diameter": (k_di * d, k_di * one, zero),
+            "pole_pitch": (k_tau * d, k_tau * one, zero),
+            "tooth_pitch": (k_t1 * d, k_t1 * one, zero),
+            "air_gap": (k_gap * a * d, k_gap * a, k_gap * d),
+            "rotor_diameter": (k_rotor * d, k_rotor, -2.0 * k_gap * d),
+            "shaft_diameter": (0.3 * k_rotor * d, 0.3 * k_rotor, -0.6 * k_gap * d),
+            "turns_per_phase": (k_turns * a * d, k_turns * a, k_turns * d),
+            "tooth_width": (k_tooth * d, k_tooth * one, zero),
+            "stator_yoke_height": (k_yoke * d, k_yoke * one, zero),
+            "slot_bottom_width": (k_sb * d, k_sb * one, zero),
+            "slot_height": (k_slot * d, k_slot * one, zero),
+            "slot_inner_width": (
+                np.pi * (k_di * d + lip) / z - k_tooth * d,
+                (np.pi * k_di / z - k_tooth) * one,
+                zero,
+            ),
         }
 
     def _mass(self, length, diameter, a_bar, b_bar):
-        q_sp = self.options['parameters'].torque_density
-        return 0.5 * np.pi * a_bar * b_bar * diameter ** 2 * length / q_sp
+        q_sp = self.options["parameters"].torque_density
+        return 0.5 * np.pi * a_bar * b_bar * diameter**2 * length / q_sp
 
     def compute(self, inputs, outputs):
         self._check_inputs(inputs)
         d = self._diameter(inputs)
-        if self.options['length_to_diameter'] is not None:
-            outputs['diameter'] = d
-        mass = self._mass(inputs['length'], d, inputs['electric_loading'],
-                          inputs['magnetic_loading'])
-        outputs['mass'] = mass
-        outputs['peak_torque'] = np.polyval(self.options['parameters'].peak_torque_coefficients,
-                                            mass)
-        for name, (value, _, _) in self._geometry(d, inputs['electric_loading']).items():
+        if self.options["length_to_diameter"] is not None:
+            outputs["diameter"] = d
+        mass = self._mass(
+            inputs["length"], d, inputs["electric_loading"], inputs["magnetic_loading"]
+        )
+        outputs["mass"] = mass
+        outputs["peak_torque"] = np.polyval(
+            self.options["parameters"].peak_torque_coefficients, mass
+        )
+        for name, (value, _, _) in self._geometry(d, inputs["electric_loading"]).items():
             outputs[name] = value
 
     def compute_partials(self, inputs, partials):
-        ratio = self.options['length_to_diameter']
-        length, a_bar, b_bar = (inputs['length'], inputs['electric_loading'],
-                                inputs['magnetic_loading'])
+        ratio = self.options["length_to_diameter"]
+        length, a_bar, b_bar = (
+            inputs["length"],
+            inputs["electric_loading"],
+            inputs["magnetic_loading"],
+        )
         d = self._diameter(inputs)
         dd_dep = 1.0 / ratio if ratio is not None else 1.0
-        dep = 'length' if ratio is not None else 'diameter'
+        dep = "length" if ratio is not None else "diameter"
 
         mass = self._mass(length, d, a_bar, b_bar)
-        dpeak_dmass = np.polyval(np.polyder(self.options['parameters'].peak_torque_coefficients),
-                                 mass)
+        dpeak_dmass = np.polyval(
+            np.polyder(self.options["parameters"].peak_torque_coefficients), mass
+        )
         # mass ~ A B D**2 L: logarithmic derivatives.
-        dmass = {'electric_loading': mass / a_bar, 'magnetic_loading': mass / b_bar}
+        dmass = {"electric_loading": mass / a_bar, "magnetic_loading": mass / b_bar}
         if ratio is not None:
-            dmass['length'] = 3.0 * mass / length  # D = L/ratio: mass ~ L**3
+            dmass["length"] = 3.0 * mass / length  # D = L/ratio: mass ~ L**3
         else:
-            dmass['length'] = mass / length
-            dmass['diameter'] = 2.0 * mass / d
+            dmass["length"] = mass / length
+            dmass["diameter"] = 2.0 * mass / d
         for wrt, value in dmass.items():
-            partials['mass', wrt] = value
-            partials['peak_torque', wrt] = dpeak_dmass * value
+            partials["mass", wrt] = value
+            partials["peak_torque", wrt] = dpeak_dmass * value
 
         for name, (_, d_dd, d_da) in self._geometry(d, a_bar).items():
             partials[name, dep] = d_dd * dd_dep
-            if name in ('air_gap', 'rotor_diameter', 'shaft_diameter', 'turns_per_phase'):
-                partials[name, 'electric_loading'] = d_da
+            if name in ("air_gap", "rotor_diameter", "shaft_diameter", "turns_per_phase"):
+                partials[name, "electric_loading"] = d_da
 
 
 _check_ratio = RangeCheck(lower=0.0, lower_open=True, where="MotorSizingComp")

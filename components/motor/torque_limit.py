@@ -19,29 +19,43 @@ def _quartic(v, par):
     Complex-safe.
     """
     p = par.pole_pairs
-    r, l_d, l_q, psi = v['resistance'], v['inductance_d'], v['inductance_q'], v['flux_linkage']
+    r, l_d, l_q, psi = v["resistance"], v["inductance_d"], v["inductance_q"], v["flux_linkage"]
     r, l_d, l_q, psi = (x[:, np.newaxis] for x in (r, l_d, l_q, psi))
-    omega = v['rotor_rpm'] * par.gear_ratio * 2.0 * np.pi / 60.0 * p  # electrical, rad/s
+    omega = v["rotor_rpm"] * par.gear_ratio * 2.0 * np.pi / 60.0 * p  # electrical, rad/s
     v_lim = par.voltage_limit
 
     den = 3.0 * p * (l_d - l_q)
-    a = den ** 2 * ((omega * l_q) ** 2 + r ** 2)
+    a = den**2 * ((omega * l_q) ** 2 + r**2)
     c_1 = 12.0 * p * omega * r * (l_d - l_q) ** 2
-    c_2 = (3.0 * p * psi) ** 2 * (r ** 2 + (omega * l_q) ** 2) - (v_lim * den) ** 2
-    d = -12.0 * p * psi * (omega ** 2 * l_d * l_q + r ** 2)
-    e = 4.0 * ((omega * l_d) ** 2 + r ** 2)
+    c_2 = (3.0 * p * psi) ** 2 * (r**2 + (omega * l_q) ** 2) - (v_lim * den) ** 2
+    d = -12.0 * p * psi * (omega**2 * l_d * l_q + r**2)
+    e = 4.0 * ((omega * l_d) ** 2 + r**2)
 
-    coef_a = 256 * a ** 2 * e ** 3 - 128 * a * e ** 2 * c_1 ** 2 + 16 * e * c_1 ** 4
-    coef_b = (-256 * a * e ** 2 * c_1 * c_2 + 144 * a * d ** 2 * e * c_1
-              + 64 * e * c_1 ** 3 * c_2 - 4 * d ** 2 * c_1 ** 3)
-    coef_c = (-128 * a * e ** 2 * c_2 ** 2 + 144 * a * d ** 2 * e * c_2 - 27 * a * d ** 4
-              + 96 * c_1 ** 2 * c_2 ** 2 * e - 12 * d ** 2 * c_1 ** 2 * c_2)
-    coef_d = 64 * e * c_1 * c_2 ** 3 - 12 * d ** 2 * c_1 * c_2 ** 2
-    coef_e = 16 * e * c_2 ** 4 - 4 * d ** 2 * c_2 ** 3
+    coef_a = 256 * a**2 * e**3 - 128 * a * e**2 * c_1**2 + 16 * e * c_1**4
+    coef_b = (
+        -256 * a * e**2 * c_1 * c_2
+        + 144 * a * d**2 * e * c_1
+        + 64 * e * c_1**3 * c_2
+        - 4 * d**2 * c_1**3
+    )
+    coef_c = (
+        -128 * a * e**2 * c_2**2
+        + 144 * a * d**2 * e * c_2
+        - 27 * a * d**4
+        + 96 * c_1**2 * c_2**2 * e
+        - 12 * d**2 * c_1**2 * c_2
+    )
+    coef_d = 64 * e * c_1 * c_2**3 - 12 * d**2 * c_1 * c_2**2
+    coef_e = 16 * e * c_2**4 - 4 * d**2 * c_2**3
 
     scale = 1.5 * p * psi * par.rated_current + 0.0 * omega
-    return (scale, coef_b / (coef_a * scale), coef_c / (coef_a * scale ** 2),
-            coef_d / (coef_a * scale ** 3), coef_e / (coef_a * scale ** 4))
+    return (
+        scale,
+        coef_b / (coef_a * scale),
+        coef_c / (coef_a * scale**2),
+        coef_d / (coef_a * scale**3),
+        coef_e / (coef_a * scale**4),
+    )
 
 
 class TorqueLimitComp(PointwiseImplicitComp):
@@ -97,38 +111,62 @@ class TorqueLimitComp(PointwiseImplicitComp):
     """
 
     _input_vars = (
-        ('resistance', 'ohm', 'Phase resistance R', 0.02, False),
-        ('inductance_d', 'H', 'D-axis inductance L_d', 7.5e-4, False),
-        ('inductance_q', 'H', 'Q-axis inductance L_q', 1.0e-3, False),
-        ('flux_linkage', 'Wb', 'Permanent-magnet flux linkage Psi_F', 0.3, False),
-        ('rotor_rpm', 'rpm', 'Rotor speed', 1000.0, True),
+        ("resistance", "ohm", "Phase resistance R", 0.02, False),
+        ("inductance_d", "H", "D-axis inductance L_d", 7.5e-4, False),
+        ("inductance_q", "H", "Q-axis inductance L_q", 1.0e-3, False),
+        ("flux_linkage", "Wb", "Permanent-magnet flux linkage Psi_F", 0.3, False),
+        ("rotor_rpm", "rpm", "Rotor speed", 1000.0, True),
     )
-    _state_var = ('torque_limit', 'N*m', 'Voltage-limited EM torque T_lim (no flux weakening, no '
-              'current limit)', 400.0, True)
-    _deps = ('resistance', 'inductance_d', 'inductance_q', 'flux_linkage', 'rotor_rpm')
+    _state_var = (
+        "torque_limit",
+        "N*m",
+        "Voltage-limited EM torque T_lim (no flux weakening, no current limit)",
+        400.0,
+        True,
+    )
+    _deps = ("resistance", "inductance_d", "inductance_q", "flux_linkage", "rotor_rpm")
     _per_node = True
     _state_ref = 100.0
 
     def _check_values(self, values):
-        check_range('rotor_rpm', values['rotor_rpm'], lower=0.0, lower_open=True,
-                    units='rpm', error=om.AnalysisError, where=self.msginfo)
-        for name, units in (('resistance', 'ohm'), ('inductance_d', 'H'), ('inductance_q', 'H'),
-                            ('flux_linkage', 'Wb')):
-            check_range(name, values[name], lower=0.0, lower_open=True,
-                        units=units, error=om.AnalysisError, where=self.msginfo)
+        check_range(
+            "rotor_rpm",
+            values["rotor_rpm"],
+            lower=0.0,
+            lower_open=True,
+            units="rpm",
+            error=om.AnalysisError,
+            where=self.msginfo,
+        )
+        for name, units in (
+            ("resistance", "ohm"),
+            ("inductance_d", "H"),
+            ("inductance_q", "H"),
+            ("flux_linkage", "Wb"),
+        ):
+            check_range(
+                name,
+                values[name],
+                lower=0.0,
+                lower_open=True,
+                units=units,
+                error=om.AnalysisError,
+                where=self.msginfo,
+            )
 
     def _residual(self, v, torque):
-        scale, b, c, d, e = _quartic(v, self.options['parameters'])
+        scale, b, c, d, e = _quartic(v, self.options["parameters"])
         x = torque / scale
         return (((x + b) * x + c) * x + d) * x + e
 
     def _bracket(self, v):
-        scale, b, c, d, e = _quartic(v, self.options['parameters'])
+        scale, b, c, d, e = _quartic(v, self.options["parameters"])
         # Largest real root of P'(x)/4 = x**3 + (3b/4) x**2 + (c/2) x + d/4 (companion matrix).
         n = b.size
         companion = np.zeros((n, 3, 3))
-        companion[:, 0, :] = -np.stack([0.75 * b.ravel(), 0.5 * c.ravel(), 0.25 * d.ravel()],
-                                       axis=1)
+        companion[:, 0, :] = -np.stack(
+            [0.75 * b.ravel(), 0.5 * c.ravel(), 0.25 * d.ravel()], axis=1
+        )
         companion[:, 1, 0] = 1.0
         companion[:, 2, 1] = 1.0
         roots = np.linalg.eigvals(companion)
@@ -141,9 +179,10 @@ class TorqueLimitComp(PointwiseImplicitComp):
         if np.any(poly(lower) > 0.0):
             idx = np.argwhere(poly(lower) > 0.0)[0].tolist()
             raise om.AnalysisError(
-                f'{self.msginfo}: the voltage-limit torque quartic has no real root above its '
-                f'largest critical point at index {idx} (rotor_rpm '
-                f'{v["rotor_rpm"][tuple(idx)]:.6g} rpm); no voltage-limited torque exists.')
+                f"{self.msginfo}: the voltage-limit torque quartic has no real root above its "
+                f"largest critical point at index {idx} (rotor_rpm "
+                f"{v['rotor_rpm'][tuple(idx)]:.6g} rpm); no voltage-limited torque exists."
+            )
         step = np.maximum(1.0, np.abs(lower))
         upper = lower + step
         for _ in range(_MAX_DOUBLINGS):
@@ -153,5 +192,5 @@ class TorqueLimitComp(PointwiseImplicitComp):
             step = np.where(open_, 2.0 * step, step)
             upper = np.where(open_, lower + step, upper)
         else:
-            raise om.AnalysisError(f'{self.msginfo}: no upper bracket found for torque_limit.')
+            raise om.AnalysisError(f"{self.msginfo}: no upper bracket found for torque_limit.")
         return lower * scale, upper * scale

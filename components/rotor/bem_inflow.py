@@ -63,67 +63,100 @@ from lpc_mdo.numerics import safeguarded_newton
 
 #: Tip-loss forms (docs theory/rotors 'BEM inflow residual'; 'bladead' divides by R instead of r,
 #: docs theory/rotors 'Public-code compatibility').
-TIP_LOSS_FORMS = ('classical', 'bladead')
+TIP_LOSS_FORMS = ("classical", "bladead")
 
 _RPM_TO_RAD_S = RPM_TO_RAD_S
 _TWO_OVER_PI = 2.0 / np.pi
-_ABS_SIN_FLOOR = 1.0e-9      # |sin phi| floor in the Prandtl exponent (F = 1 to all digits there)
-_GRID_INTERVALS = 12         # bracket-search intervals per quadrant (7.5 deg)
+_ABS_SIN_FLOOR = 1.0e-9  # |sin phi| floor in the Prandtl exponent (F = 1 to all digits there)
+_GRID_INTERVALS = 12  # bracket-search intervals per quadrant (7.5 deg)
 _MAX_ITER = 100
-_PHI_TOL = 1.0e-13           # rad, Newton step / bracket width at convergence
-_RES_TOL = 1.0e-9            # accepted |R| after convergence (R is dimensionless, O(1))
+_PHI_TOL = 1.0e-13  # rad, Newton step / bracket width at convergence
+_RES_TOL = 1.0e-9  # accepted |R| after convergence (R is dimensionless, O(1))
 
 #: Search order of the bracket: (start, end) of each quadrant, searched from start.
-QUADRANTS = ((0.0, 0.5 * np.pi), (0.0, -0.5 * np.pi), (0.5 * np.pi, np.pi),
-             (-0.5 * np.pi, -np.pi))
+QUADRANTS = ((0.0, 0.5 * np.pi), (0.0, -0.5 * np.pi), (0.5 * np.pi, np.pi), (-0.5 * np.pi, -np.pi))
 
 #: Inputs of the sectional equations: name -> (kind, units, default, description). The kind
 #: says which indices of a station (rotor i, node j, radial k) the input is indexed by.
 SECTION_INPUTS = {
-    'axial_velocity': ('rotor_node', 'm/s', 0.0,
-                       'Freestream velocity through the disk along the thrust axis (V_x > 0: '
-                       'flow as for a propeller moving forward, climb)'),
-    'rpm': ('rotor_node', 'rpm', 1000.0, 'Rotor speed'),
-    'station_radius': ('rotor_station', 'm', None, 'Radius of the blade-element centres'),
-    'radius': ('rotor', 'm', 1.0, 'Rotor tip radius'),
-    'hub_radius': ('rotor', 'm', 0.2, 'Hub radius'),
-    'chord': ('rotor_station', 'm', 0.1, 'Blade chord at the stations'),
-    'twist': ('rotor_station', 'rad', 0.2,
-              'Blade twist (pitch to the rotor plane) at the stations'),
-    'density': ('node', 'kg/m**3', SEA_LEVEL_DENSITY, 'Air density'),
-    'speed_of_sound': ('node', 'm/s', SEA_LEVEL_SPEED_OF_SOUND, 'Speed of sound'),
-    'dynamic_viscosity': ('node', 'Pa*s', 1.7894e-5, 'Dynamic viscosity of air'),
+    "axial_velocity": (
+        "rotor_node",
+        "m/s",
+        0.0,
+        "Freestream velocity through the disk along the thrust axis (V_x > 0: "
+        "flow as for a propeller moving forward, climb)",
+    ),
+    "rpm": ("rotor_node", "rpm", 1000.0, "Rotor speed"),
+    "station_radius": ("rotor_station", "m", None, "Radius of the blade-element centres"),
+    "radius": ("rotor", "m", 1.0, "Rotor tip radius"),
+    "hub_radius": ("rotor", "m", 0.2, "Hub radius"),
+    "chord": ("rotor_station", "m", 0.1, "Blade chord at the stations"),
+    "twist": (
+        "rotor_station",
+        "rad",
+        0.2,
+        "Blade twist (pitch to the rotor plane) at the stations",
+    ),
+    "density": ("node", "kg/m**3", SEA_LEVEL_DENSITY, "Air density"),
+    "speed_of_sound": ("node", "m/s", SEA_LEVEL_SPEED_OF_SOUND, "Speed of sound"),
+    "dynamic_viscosity": ("node", "Pa*s", 1.7894e-5, "Dynamic viscosity of air"),
 }
 
 
 def declare_bem_options(options):
     """Declare the options shared by the BEM components (and the rotor group)."""
-    options.declare('num_rotors', default=1, types=int, lower=1, desc='Number of rotors')
-    options.declare('num_nodes', default=1, types=int, lower=1,
-                    desc='Number of operating points (flight conditions) per rotor')
-    options.declare('num_radial', default=25, types=int, lower=1,
-                    desc='Number of radial stations per blade')
-    options.declare('num_blades', default=2, types=(int, list, tuple, np.ndarray),
-                    desc='Blades per rotor: one int for all rotors or one per rotor')
-    options.declare('polar', default=LinearQuadraticPolar(), types=Polar,
-                    desc='Sectional airfoil polar (lpc_mdo.components.aero.polar.Polar)')
-    options.declare('tip_loss', default=True, types=bool, desc="Apply Prandtl's tip loss")
-    options.declare('hub_loss', default=True, types=bool, desc="Apply Prandtl's hub loss")
-    options.declare('tip_loss_form', default='classical', values=TIP_LOSS_FORMS,
-                    desc="'classical' (B/2)(R - r)/(r sin phi), or 'bladead' with R in place of "
-                         "r (docs theory/rotors 'Public-code compatibility')")
+    options.declare("num_rotors", default=1, types=int, lower=1, desc="Number of rotors")
+    options.declare(
+        "num_nodes",
+        default=1,
+        types=int,
+        lower=1,
+        desc="Number of operating points (flight conditions) per rotor",
+    )
+    options.declare(
+        "num_radial", default=25, types=int, lower=1, desc="Number of radial stations per blade"
+    )
+    options.declare(
+        "num_blades",
+        default=2,
+        types=(int, list, tuple, np.ndarray),
+        desc="Blades per rotor: one int for all rotors or one per rotor",
+    )
+    options.declare(
+        "polar",
+        default=LinearQuadraticPolar(),
+        types=Polar,
+        desc="Sectional airfoil polar (lpc_mdo.components.aero.polar.Polar)",
+    )
+    options.declare("tip_loss", default=True, types=bool, desc="Apply Prandtl's tip loss")
+    options.declare("hub_loss", default=True, types=bool, desc="Apply Prandtl's hub loss")
+    options.declare(
+        "tip_loss_form",
+        default="classical",
+        values=TIP_LOSS_FORMS,
+        desc="'classical' (B/2)(R - r)/(r sin phi), or 'bladead' with R in place of "
+        "r (docs theory/rotors 'Public-code compatibility')",
+    )
 
 
 def station_shapes(num_rotors, num_nodes, num_radial):
     """Broadcast shape of each input kind within the station array (rotor, node, radial)."""
-    return {'rotor_node': (num_rotors, num_nodes, 1), 'rotor_station': (num_rotors, 1, num_radial),
-            'rotor': (num_rotors, 1, 1), 'node': (1, num_nodes, 1)}
+    return {
+        "rotor_node": (num_rotors, num_nodes, 1),
+        "rotor_station": (num_rotors, 1, num_radial),
+        "rotor": (num_rotors, 1, 1),
+        "node": (1, num_nodes, 1),
+    }
 
 
 def input_shape(kind, num_rotors, num_nodes, num_radial):
     """Shape of an input of the given kind."""
-    return {'rotor_node': (num_rotors, num_nodes), 'rotor_station': (num_rotors, num_radial),
-            'rotor': (num_rotors,), 'node': (num_nodes,)}[kind]
+    return {
+        "rotor_node": (num_rotors, num_nodes),
+        "rotor_station": (num_rotors, num_radial),
+        "rotor": (num_rotors,),
+        "node": (num_nodes,),
+    }[kind]
 
 
 def station_columns(kind, num_rotors, num_nodes, num_radial):
@@ -144,9 +177,13 @@ def add_section_inputs(comp, num_rotors, num_nodes, num_radial):
         comp.add_input(name, val=np.array(val, dtype=float), units=units, desc=desc)
 
 
-def check_section_inputs(comp, inputs, hub_loss, names=None,
-                         positive=('rpm', 'radius', 'chord', 'density', 'speed_of_sound',
-                                   'dynamic_viscosity')):
+def check_section_inputs(
+    comp,
+    inputs,
+    hub_loss,
+    names=None,
+    positive=("rpm", "radius", "chord", "density", "speed_of_sound", "dynamic_viscosity"),
+):
     """
     Check the physical range of the sectional inputs of a rotor component (BEM or Pitt-Peters).
 
@@ -156,6 +193,7 @@ def check_section_inputs(comp, inputs, hub_loss, names=None,
     first offending entry and the allowed range (:func:`lpc_mdo.checks.check_range`; the
     values may come from an optimizer).
     """
+
     def check(name, **bounds):
         check_range(name, inputs[name], error=om.AnalysisError, where=comp.msginfo, **bounds)
 
@@ -164,10 +202,16 @@ def check_section_inputs(comp, inputs, hub_loss, names=None,
         check(name)
     for name in positive:
         check(name, lower=0.0, lower_open=True, units=table[name][1])
-    rh, big_r = np.real(inputs['hub_radius']), np.real(inputs['radius'])
-    check('hub_radius', lower=0.0, upper=big_r, lower_open=hub_loss, upper_open=True, units='m')
-    check('station_radius', lower=rh[:, None], upper=big_r[:, None], lower_open=True,
-          upper_open=True, units='m')
+    rh, big_r = np.real(inputs["hub_radius"]), np.real(inputs["radius"])
+    check("hub_radius", lower=0.0, upper=big_r, lower_open=hub_loss, upper_open=True, units="m")
+    check(
+        "station_radius",
+        lower=rh[:, None],
+        upper=big_r[:, None],
+        lower_open=True,
+        upper_open=True,
+        units="m",
+    )
 
 
 def _cs_sign(x):
@@ -196,8 +240,16 @@ class BEMSections:
     theory/rotors 'Stations and disk frame').
     """
 
-    def __init__(self, inputs, num_blades, polar, tip_loss=True, hub_loss=True,
-                 tip_loss_form='classical', shape=None):
+    def __init__(
+        self,
+        inputs,
+        num_blades,
+        polar,
+        tip_loss=True,
+        hub_loss=True,
+        tip_loss_form="classical",
+        shape=None,
+    ):
         nr, nn, nrad = shape
         self.shape = shape
         self.size = nr * nn * nrad
@@ -210,19 +262,19 @@ class BEMSections:
             return np.broadcast_to(np.reshape(array, kinds[kind]), (nr, nn, nrad)).ravel()
 
         c = {name: flat(inputs[name], SECTION_INPUTS[name][0]) for name in SECTION_INPUTS}
-        c['half_b'] = 0.5 * flat(np.asarray(num_blades, dtype=float), 'rotor')
-        c['omega'] = _RPM_TO_RAD_S * c['rpm']
-        c['vt'] = c['omega'] * c['station_radius']
-        c['u'] = np.sqrt(c['axial_velocity'] ** 2 + c['vt'] ** 2)
-        c['lam'] = c['axial_velocity'] / c['vt']
-        c['re'] = c['density'] * c['u'] * c['chord'] / c['dynamic_viscosity']
-        c['mach'] = c['u'] / c['speed_of_sound']
-        c['sigma'] = c['half_b'] * c['chord'] / (np.pi * c['station_radius'])
-        r, big_r, rh = c['station_radius'], c['radius'], c['hub_radius']
-        norm = r if tip_loss_form == 'classical' else big_r
-        c['k_tip'] = c['half_b'] * (big_r - r) / norm
+        c["half_b"] = 0.5 * flat(np.asarray(num_blades, dtype=float), "rotor")
+        c["omega"] = _RPM_TO_RAD_S * c["rpm"]
+        c["vt"] = c["omega"] * c["station_radius"]
+        c["u"] = np.sqrt(c["axial_velocity"] ** 2 + c["vt"] ** 2)
+        c["lam"] = c["axial_velocity"] / c["vt"]
+        c["re"] = c["density"] * c["u"] * c["chord"] / c["dynamic_viscosity"]
+        c["mach"] = c["u"] / c["speed_of_sound"]
+        c["sigma"] = c["half_b"] * c["chord"] / (np.pi * c["station_radius"])
+        r, big_r, rh = c["station_radius"], c["radius"], c["hub_radius"]
+        norm = r if tip_loss_form == "classical" else big_r
+        c["k_tip"] = c["half_b"] * (big_r - r) / norm
         if hub_loss:
-            c['k_hub'] = c['half_b'] * (r - rh) / rh
+            c["k_hub"] = c["half_b"] * (r - rh) / rh
         self.c = c
 
     # ------------------------------------------------------------------ values
@@ -251,45 +303,53 @@ class BEMSections:
         def k(name):
             return self._const(name, idx, nd)
 
-        st = {'phi': phi, 'idx': idx}
-        alpha = k('twist') - phi
-        pv = self.polar.evaluate(alpha, k('re'), k('mach'))
+        st = {"phi": phi, "idx": idx}
+        alpha = k("twist") - phi
+        pv = self.polar.evaluate(alpha, k("re"), k("mach"))
         s, co = np.sin(phi), np.cos(phi)
         sgn = _cs_sign(s)
         abs_sin = s * sgn
         floored = np.real(abs_sin) < _ABS_SIN_FLOOR
         abs_s = np.where(floored, _ABS_SIN_FLOOR, abs_sin)
-        st.update(alpha=alpha, pv=pv, s=s, co=co, sgn=sgn, abs_sin=abs_sin, abs_s=abs_s,
-                  dabs=np.where(floored, 0.0, sgn))
+        st.update(
+            alpha=alpha,
+            pv=pv,
+            s=s,
+            co=co,
+            sgn=sgn,
+            abs_sin=abs_sin,
+            abs_s=abs_s,
+            dabs=np.where(floored, 0.0, sgn),
+        )
         if self.tip_loss:
-            st['f_tip'], st['F_tip'], st['g_tip'] = self._prandtl(k('k_tip'), abs_s)
+            st["f_tip"], st["F_tip"], st["g_tip"] = self._prandtl(k("k_tip"), abs_s)
         else:
-            st['F_tip'] = np.ones_like(abs_s)
+            st["F_tip"] = np.ones_like(abs_s)
         if self.hub_loss:
-            st['f_hub'], st['F_hub'], st['g_hub'] = self._prandtl(k('k_hub'), abs_s)
+            st["f_hub"], st["F_hub"], st["g_hub"] = self._prandtl(k("k_hub"), abs_s)
         else:
-            st['F_hub'] = np.ones_like(abs_s)
-        big_f = st['F_tip'] * st['F_hub']
+            st["F_hub"] = np.ones_like(abs_s)
+        big_f = st["F_tip"] * st["F_hub"]
         cl, cd = pv.cl, pv.cd
         cx = cl * co - cd * s
         cth = cl * s + cd * co
-        sigma = k('sigma')
+        sigma = k("sigma")
         g = sigma * cx - 4.0 * big_f * s * abs_sin
         h = 4.0 * big_f * abs_sin * co + sigma * cth
-        st.update(F=big_f, cx=cx, cth=cth, G=g, H=h, res=g + k('lam') * h)
+        st.update(F=big_f, cx=cx, cth=cth, G=g, H=h, res=g + k("lam") * h)
         return st
 
     def residual(self, phi, idx=None):
         """Residual R(phi) (dimensionless) at the selected stations."""
-        return self.evaluate(phi, idx)['res']
+        return self.evaluate(phi, idx)["res"]
 
     def loads(self, st):
         """Resultant velocity W (m/s) and per-blade thrust and drag per span (N/m)."""
-        idx, nd = st['idx'], np.ndim(st['phi'])
-        vt = self._const('vt', idx, nd)
-        w = 4.0 * st['F'] * vt * st['abs_sin'] / st['H']
-        q = 0.5 * self._const('density', idx, nd) * w * w * self._const('chord', idx, nd)
-        return w, q * st['cx'], q * st['cth']
+        idx, nd = st["idx"], np.ndim(st["phi"])
+        vt = self._const("vt", idx, nd)
+        w = 4.0 * st["F"] * vt * st["abs_sin"] / st["H"]
+        q = 0.5 * self._const("density", idx, nd) * w * w * self._const("chord", idx, nd)
+        return w, q * st["cx"], q * st["cth"]
 
     # ------------------------------------------------------------------ derivatives
     def tangent(self, st, seed, loads=False):
@@ -310,7 +370,7 @@ class BEMSections:
         -------
         dres or (dres, dthrust_per_span, ddrag_per_span)
         """
-        idx, nd = st['idx'], np.ndim(st['phi'])
+        idx, nd = st["idx"], np.ndim(st["phi"])
 
         def k(name):
             return self._const(name, idx, nd)
@@ -318,62 +378,69 @@ class BEMSections:
         def d(name):
             return seed.get(name, 0.0)
 
-        dphi, dvx, dr, dc = d('inflow_angle'), d('axial_velocity'), d('station_radius'), d('chord')
-        r, c_, vt, omega = k('station_radius'), k('chord'), k('vt'), k('omega')
-        domega = _RPM_TO_RAD_S * d('rpm')
+        dphi, dvx, dr, dc = d("inflow_angle"), d("axial_velocity"), d("station_radius"), d("chord")
+        r, c_, vt, omega = k("station_radius"), k("chord"), k("vt"), k("omega")
+        domega = _RPM_TO_RAD_S * d("rpm")
         dvt = r * domega + omega * dr
-        u = k('u')
-        du = (k('axial_velocity') * dvx + vt * dvt) / u
-        dlam = (dvx - k('lam') * dvt) / vt
-        dre = k('re') * (d('density') / k('density') + du / u + dc / c_
-                         - d('dynamic_viscosity') / k('dynamic_viscosity'))
-        dmach = k('mach') * (du / u - d('speed_of_sound') / k('speed_of_sound'))
-        sigma = k('sigma')
+        u = k("u")
+        du = (k("axial_velocity") * dvx + vt * dvt) / u
+        dlam = (dvx - k("lam") * dvt) / vt
+        dre = k("re") * (
+            d("density") / k("density")
+            + du / u
+            + dc / c_
+            - d("dynamic_viscosity") / k("dynamic_viscosity")
+        )
+        dmach = k("mach") * (du / u - d("speed_of_sound") / k("speed_of_sound"))
+        sigma = k("sigma")
         dsigma = sigma * (dc / c_ - dr / r)
 
-        pv, s, co = st['pv'], st['s'], st['co']
-        dalpha = d('twist') - dphi
+        pv, s, co = st["pv"], st["s"], st["co"]
+        dalpha = d("twist") - dphi
         dcl = pv.dcl_dalpha * dalpha + pv.dcl_dreynolds * dre + pv.dcl_dmach * dmach
         dcd = pv.dcd_dalpha * dalpha + pv.dcd_dreynolds * dre + pv.dcd_dmach * dmach
         ds, dco = co * dphi, -s * dphi
-        dabs = st['dabs'] * co * dphi
-        abs_s = st['abs_s']
-        half_b = k('half_b')
+        dabs = st["dabs"] * co * dphi
+        abs_s = st["abs_s"]
+        half_b = k("half_b")
 
         d_f_tip = 0.0
         if self.tip_loss:
-            big_r, dbig_r = k('radius'), d('radius')
-            if self.tip_loss_form == 'classical':   # K = (B/2)(R/r - 1)
+            big_r, dbig_r = k("radius"), d("radius")
+            if self.tip_loss_form == "classical":  # K = (B/2)(R/r - 1)
                 dk = half_b * (dbig_r / r - big_r * dr / (r * r))
-            else:                                    # K = (B/2)(1 - r/R)
+            else:  # K = (B/2)(1 - r/R)
                 dk = half_b * (r * dbig_r / (big_r * big_r) - dr / big_r)
-            d_f_tip = st['g_tip'] * (dk - st['f_tip'] * dabs) / abs_s
+            d_f_tip = st["g_tip"] * (dk - st["f_tip"] * dabs) / abs_s
         d_f_hub = 0.0
-        if self.hub_loss:                            # K = (B/2)(r/r_h - 1)
-            rh = k('hub_radius')
-            dk = half_b * (dr / rh - r * d('hub_radius') / (rh * rh))
-            d_f_hub = st['g_hub'] * (dk - st['f_hub'] * dabs) / abs_s
-        big_f = st['F']
-        dbig_f = st['F_hub'] * d_f_tip + st['F_tip'] * d_f_hub
+        if self.hub_loss:  # K = (B/2)(r/r_h - 1)
+            rh = k("hub_radius")
+            dk = half_b * (dr / rh - r * d("hub_radius") / (rh * rh))
+            d_f_hub = st["g_hub"] * (dk - st["f_hub"] * dabs) / abs_s
+        big_f = st["F"]
+        dbig_f = st["F_hub"] * d_f_tip + st["F_tip"] * d_f_hub
 
-        cl, cd, cx, cth = pv.cl, pv.cd, st['cx'], st['cth']
+        cl, cd, cx, cth = pv.cl, pv.cd, st["cx"], st["cth"]
         dcx = dcl * co + cl * dco - dcd * s - cd * ds
         dcth = dcl * s + cl * ds + dcd * co + cd * dco
-        a_s = st['abs_sin']
-        da_s = st['sgn'] * ds
+        a_s = st["abs_sin"]
+        da_s = st["sgn"] * ds
         dg = dsigma * cx + sigma * dcx - 4.0 * (dbig_f * s * a_s + big_f * (ds * a_s + s * da_s))
-        h = st['H']
-        dh = (4.0 * (dbig_f * a_s * co + big_f * (da_s * co + a_s * dco)) + dsigma * cth
-              + sigma * dcth)
-        dres = dg + dlam * h + k('lam') * dh
+        h = st["H"]
+        dh = (
+            4.0 * (dbig_f * a_s * co + big_f * (da_s * co + a_s * dco))
+            + dsigma * cth
+            + sigma * dcth
+        )
+        dres = dg + dlam * h + k("lam") * dh
         if not loads:
             return dres
 
         w = 4.0 * big_f * vt * a_s / h
         dw = 4.0 * (dbig_f * vt * a_s + big_f * dvt * a_s + big_f * vt * da_s) / h - w * dh / h
-        rho = k('density')
+        rho = k("density")
         q = 0.5 * rho * w * w * c_
-        dq = 0.5 * w * (d('density') * w * c_ + 2.0 * rho * dw * c_ + rho * w * dc)
+        dq = 0.5 * w * (d("density") * w * c_ + 2.0 * rho * dw * c_ + rho * w * dc)
         return dres, dq * cx + q * dcx, dq * cth + q * dcth
 
     def local_partials(self, st, names, loads=False):
@@ -381,7 +448,7 @@ class BEMSections:
         return {name: self.tangent(st, {name: 1.0}, loads=loads) for name in names}
 
     # ------------------------------------------------------------------ solve
-    def solve(self, owner=''):
+    def solve(self, owner=""):
         """
         Inflow angle of every station by bracketing and safeguarded Newton (real inputs).
 
@@ -418,46 +485,58 @@ class BEMSections:
             f_lo[sel], f_hi[sel] = np.where(swap, fb, fa), np.where(swap, fa, fb)
             todo = todo[~found]
         if todo.size:
-            self._fail(todo, 'no sign change of the inflow-angle residual on -pi..pi', owner)
+            self._fail(todo, "no sign change of the inflow-angle residual on -pi..pi", owner)
         return self._refine(lo, hi, f_lo, f_hi, owner)
 
     def _refine(self, lo, hi, f_lo, f_hi, owner):
         """Safeguarded Newton (:func:`lpc_mdo.numerics.safeguarded_newton`) in [lo, hi]."""
+
         def residual(phi, idx):
             st = self.evaluate(phi, idx)
-            return st['res'], self.tangent(st, {'inflow_angle': 1.0})
+            return st["res"], self.tangent(st, {"inflow_angle": 1.0})
 
         def fail(stations, why):
             self._fail(stations, why, owner)
 
-        phi = safeguarded_newton(residual, lo, hi, f_lower=f_lo, f_upper=f_hi,
-                                 xtol_abs=_PHI_TOL, xtol_rel=0.0, maxiter=_MAX_ITER,
-                                 indexed=True, variable='inflow_angle', units='rad',
-                                 where=owner, fail=fail)
+        phi = safeguarded_newton(
+            residual,
+            lo,
+            hi,
+            f_lower=f_lo,
+            f_upper=f_hi,
+            xtol_abs=_PHI_TOL,
+            xtol_rel=0.0,
+            maxiter=_MAX_ITER,
+            indexed=True,
+            variable="inflow_angle",
+            units="rad",
+            where=owner,
+            fail=fail,
+        )
         res = self.residual(phi)
         bad = ~(np.abs(res) <= _RES_TOL)
         if np.any(bad):
-            self._fail(np.flatnonzero(bad), f'residual above {_RES_TOL:g} after the solve', owner)
+            self._fail(np.flatnonzero(bad), f"residual above {_RES_TOL:g} after the solve", owner)
         return phi
 
     def newton_polish(self, phi, steps=2):
         """Take a few plain Newton steps (used under complex step, from the real solution)."""
         for _ in range(steps):
             st = self.evaluate(phi)
-            phi = phi - st['res'] / self.tangent(st, {'inflow_angle': 1.0})
+            phi = phi - st["res"] / self.tangent(st, {"inflow_angle": 1.0})
         return phi
 
     def _fail(self, stations, why, owner):
         nr, nn, nrad = self.shape
         i, j, k = np.unravel_index(stations[:5], (nr, nn, nrad))
         c = self.c
-        detail = ', '.join(
+        detail = ", ".join(
             f"(rotor {a}, node {b}, station {s_}: rpm {c['rpm'][q].real:.6g}, axial_velocity "
             f"{c['axial_velocity'][q].real:.6g} m/s, twist {c['twist'][q].real:.6g} rad)"
-            for a, b, s_, q in zip(i, j, k, stations[:5], strict=True))
-        more = f" and {stations.size - 5} more" if stations.size > 5 else ''
-        raise om.AnalysisError(f"{owner}: BEM inflow-angle solve failed ({why}) at "
-                               f"{detail}{more}.")
+            for a, b, s_, q in zip(i, j, k, stations[:5], strict=True)
+        )
+        more = f" and {stations.size - 5} more" if stations.size > 5 else ""
+        raise om.AnalysisError(f"{owner}: BEM inflow-angle solve failed ({why}) at {detail}{more}.")
 
 
 class BEMInflowComp(om.ImplicitComponent):
@@ -517,71 +596,91 @@ class BEMInflowComp(om.ImplicitComponent):
 
     def setup(self):
         opts = self.options
-        nr, nn, nrad = opts['num_rotors'], opts['num_nodes'], opts['num_radial']
+        nr, nn, nrad = opts["num_rotors"], opts["num_nodes"], opts["num_radial"]
         self._shape = (nr, nn, nrad)
-        self._blades = per_rotor(opts['num_blades'], nr, 'num_blades', kind=int, lower=1,
-                                 owner=self.msginfo)
+        self._blades = per_rotor(
+            opts["num_blades"], nr, "num_blades", kind=int, lower=1, owner=self.msginfo
+        )
         add_section_inputs(self, nr, nn, nrad)
-        self.add_output('inflow_angle', val=np.full((nr, nn, nrad), 0.1), units='rad',
-                        desc='Inflow angle of each blade station (BEM state)')
+        self.add_output(
+            "inflow_angle",
+            val=np.full((nr, nn, nrad), 0.1),
+            units="rad",
+            desc="Inflow angle of each blade station (BEM state)",
+        )
 
         ar = np.arange(nr * nn * nrad)
-        self.declare_partials('inflow_angle', 'inflow_angle', rows=ar, cols=ar)
+        self.declare_partials("inflow_angle", "inflow_angle", rows=ar, cols=ar)
         self._wrt = [name for name in SECTION_INPUTS if self._depends_on(name)]
         for name in self._wrt:
             cols = station_columns(SECTION_INPUTS[name][0], nr, nn, nrad)
-            self.declare_partials('inflow_angle', name, rows=ar, cols=cols)
+            self.declare_partials("inflow_angle", name, rows=ar, cols=cols)
         self._dres_dphi = None
 
     def _depends_on(self, name):
-        if name == 'radius':
-            return self.options['tip_loss']
-        if name == 'hub_radius':
-            return self.options['hub_loss']
+        if name == "radius":
+            return self.options["tip_loss"]
+        if name == "hub_radius":
+            return self.options["hub_loss"]
         return True
 
     def _sections(self, inputs):
-        check_section_inputs(self, inputs, self.options['hub_loss'])
+        check_section_inputs(self, inputs, self.options["hub_loss"])
         opts = self.options
-        return BEMSections(inputs, self._blades, opts['polar'], opts['tip_loss'],
-                           opts['hub_loss'], opts['tip_loss_form'], self._shape)
+        return BEMSections(
+            inputs,
+            self._blades,
+            opts["polar"],
+            opts["tip_loss"],
+            opts["hub_loss"],
+            opts["tip_loss_form"],
+            self._shape,
+        )
 
     def apply_nonlinear(self, inputs, outputs, residuals):
         sections = self._sections(inputs)
-        residuals['inflow_angle'] = sections.residual(outputs['inflow_angle'].ravel()).reshape(
-            self._shape)
+        residuals["inflow_angle"] = sections.residual(outputs["inflow_angle"].ravel()).reshape(
+            self._shape
+        )
 
     def solve_nonlinear(self, inputs, outputs):
         if self.under_complex_step:
             real = {name: inputs[name].real for name in SECTION_INPUTS}
             opts = self.options
-            phi = BEMSections(real, self._blades, opts['polar'], opts['tip_loss'],
-                              opts['hub_loss'], opts['tip_loss_form'],
-                              self._shape).solve(self.msginfo)
+            phi = BEMSections(
+                real,
+                self._blades,
+                opts["polar"],
+                opts["tip_loss"],
+                opts["hub_loss"],
+                opts["tip_loss_form"],
+                self._shape,
+            ).solve(self.msginfo)
             phi = self._sections(inputs).newton_polish(phi.astype(complex))
         else:
             phi = self._sections(inputs).solve(self.msginfo)
-        outputs['inflow_angle'] = phi.reshape(self._shape)
+        outputs["inflow_angle"] = phi.reshape(self._shape)
 
     def linearize(self, inputs, outputs, partials):
         sections = self._sections(inputs)
-        st = sections.evaluate(outputs['inflow_angle'].ravel())
-        local = sections.local_partials(st, ['inflow_angle'] + self._wrt)
-        diag = np.real(local['inflow_angle'])
+        st = sections.evaluate(outputs["inflow_angle"].ravel())
+        local = sections.local_partials(st, ["inflow_angle"] + self._wrt)
+        diag = np.real(local["inflow_angle"])
         bad = ~np.isfinite(diag) | (diag == 0.0)
         if np.any(bad):
             idx = np.unravel_index(np.flatnonzero(bad)[:5], self._shape)
             raise om.AnalysisError(
                 f"{self.msginfo}: dR/d(inflow_angle) is zero or not finite at (rotor, node, "
                 f"station) {list(zip(*(i.tolist() for i in idx), strict=True))}: a double root "
-                "of the BEM residual; the inflow angle is not differentiable there.")
+                "of the BEM residual; the inflow angle is not differentiable there."
+            )
         for name, value in local.items():
-            partials['inflow_angle', name] = value
+            partials["inflow_angle", name] = value
         self._dres_dphi = diag
 
     def solve_linear(self, d_outputs, d_residuals, mode):
         diag = self._dres_dphi.reshape(self._shape)
-        if mode == 'fwd':
-            d_outputs['inflow_angle'] = d_residuals['inflow_angle'] / diag
+        if mode == "fwd":
+            d_outputs["inflow_angle"] = d_residuals["inflow_angle"] / diag
         else:
-            d_residuals['inflow_angle'] = d_outputs['inflow_angle'] / diag
+            d_residuals["inflow_angle"] = d_outputs["inflow_angle"] / diag

@@ -74,9 +74,22 @@ from lpc_mdo.components.rotor.pitt_peters_loads import (
 #: Pitt–Peters coupling constant 15 pi/64.
 L_COUPLING = 15.0 * np.pi / 64.0
 
-_PARAMS = ('lam0', 'lamc', 'lams', 'thrust', 'moment_cos', 'moment_sin', 'loss_area', 'omega',
-           'radius', 'density', 'axial_velocity', 'v_x', 'v_y')
-_LOADS = ('thrust', 'moment_cos', 'moment_sin', 'loss_area')
+_PARAMS = (
+    "lam0",
+    "lamc",
+    "lams",
+    "thrust",
+    "moment_cos",
+    "moment_sin",
+    "loss_area",
+    "omega",
+    "radius",
+    "density",
+    "axial_velocity",
+    "v_x",
+    "v_y",
+)
+_LOADS = ("thrust", "moment_cos", "moment_sin", "loss_area")
 _CS_STEP = 1.0e-30
 _DET_MIN = 1.0e-10
 
@@ -205,68 +218,113 @@ class PittPetersInflowComp(om.ImplicitComponent):
 
     def initialize(self):
         declare_pitt_peters_options(self.options)
-        self.options.declare('max_iterations', default=50, types=int, lower=1,
-                             desc='Newton iterations per start')
-        self.options.declare('tolerance', default=1e-12, types=float, lower=1e-16,
-                             desc='Newton tolerance on max |residual| per rotor (C_T units)')
+        self.options.declare(
+            "max_iterations", default=50, types=int, lower=1, desc="Newton iterations per start"
+        )
+        self.options.declare(
+            "tolerance",
+            default=1e-12,
+            types=float,
+            lower=1e-16,
+            desc="Newton tolerance on max |residual| per rotor (C_T units)",
+        )
 
     def setup(self):
         opts = self.options
-        nr, nn = opts['num_rotors'], opts['num_nodes']
-        nrad, naz = opts['num_radial'], opts['num_azimuth']
+        nr, nn = opts["num_rotors"], opts["num_nodes"]
+        nrad, naz = opts["num_radial"], opts["num_azimuth"]
         blades, spin = rotor_blade_options(self)
         self._spin = spin
-        self._momentum = opts['loss_placement'] == 'momentum'
+        self._momentum = opts["loss_placement"] == "momentum"
         self._field = PittPetersBladeElements(
-            (nr, nn, nrad, naz), blades, spin, opts['polar'], opts['tip_loss'], opts['hub_loss'],
-            opts['loss_placement'], opts['tangential_induction'], owner=self.msginfo)
+            (nr, nn, nrad, naz),
+            blades,
+            spin,
+            opts["polar"],
+            opts["tip_loss"],
+            opts["hub_loss"],
+            opts["loss_placement"],
+            opts["tangential_induction"],
+            owner=self.msginfo,
+        )
         self._loads = _LOADS if self._momentum else _LOADS[:3]
         add_pitt_peters_inputs(self, nr, nn, nrad)
-        self.add_output('inflow_states', val=np.tile([0.05, 0.0, 0.0], (nr, nn, 1)), units=None,
-                        desc='Inflow states (lambda_0, lambda_c, lambda_s) over Omega R')
+        self.add_output(
+            "inflow_states",
+            val=np.tile([0.05, 0.0, 0.0], (nr, nn, 1)),
+            units=None,
+            desc="Inflow states (lambda_0, lambda_c, lambda_s) over Omega R",
+        )
 
-        wrt = ['inflow_states', 'rpm', 'axial_velocity', 'inplane_velocity', 'radius',
-               'station_radius', 'station_width', 'chord', 'twist', 'density',
-               'dynamic_viscosity', 'speed_of_sound']
-        if opts['hub_loss']:
-            wrt.append('hub_radius')
+        wrt = [
+            "inflow_states",
+            "rpm",
+            "axial_velocity",
+            "inplane_velocity",
+            "radius",
+            "station_radius",
+            "station_width",
+            "chord",
+            "twist",
+            "density",
+            "dynamic_viscosity",
+            "speed_of_sound",
+        ]
+        if opts["hub_loss"]:
+            wrt.append("hub_radius")
         self._wrt = wrt
         pat = SparsityPatterns(nr, nn, nrad, naz)
         for name in wrt:
             rows, cols = pat.op(3, input_kind(name), input_size(name))
-            self.declare_partials('inflow_states', name, rows=rows, cols=cols)
+            self.declare_partials("inflow_states", name, rows=rows, cols=cols)
         self._inverse = np.tile(np.eye(3), (nr, nn, 1, 1))
         self.newton_iterations = 0
 
     # ---------------------------------------------------------------- residual pieces
     def _values(self, inputs):
-        check_pitt_peters_inputs(self, inputs, self.options['hub_loss'])
+        check_pitt_peters_inputs(self, inputs, self.options["hub_loss"])
         return {name: inputs[name] for name in PITT_PETERS_INPUTS}
 
     def _params(self, x, states, ints):
-        nr, nn = self.options['num_rotors'], self.options['num_nodes']
+        nr, nn = self.options["num_rotors"], self.options["num_nodes"]
         shape = (nr, nn)
-        p = {'lam0': states[..., 0], 'lamc': states[..., 1], 'lams': states[..., 2],
-             'omega': RPM_TO_RAD_S * x['rpm'],
-             'radius': np.broadcast_to(x['radius'][:, None], shape),
-             'density': np.broadcast_to(x['density'][None, :], shape),
-             'axial_velocity': x['axial_velocity'],
-             'v_x': x['inplane_velocity'][..., 0],
-             'v_y': self._spin[:, None] * x['inplane_velocity'][..., 1]}
+        p = {
+            "lam0": states[..., 0],
+            "lamc": states[..., 1],
+            "lams": states[..., 2],
+            "omega": RPM_TO_RAD_S * x["rpm"],
+            "radius": np.broadcast_to(x["radius"][:, None], shape),
+            "density": np.broadcast_to(x["density"][None, :], shape),
+            "axial_velocity": x["axial_velocity"],
+            "v_x": x["inplane_velocity"][..., 0],
+            "v_y": self._spin[:, None] * x["inplane_velocity"][..., 1],
+        }
         for name in _LOADS:
             p[name] = ints.get(name, np.zeros(shape))
         return p
 
     def _op_residual(self, p):
-        big_r = p['radius']
-        omega_r = p['omega'] * big_r
-        norm = p['density'] * np.pi * big_r**2 * omega_r**2
-        loading = np.stack([p['thrust'] / norm, p['moment_cos'] / (norm * big_r),
-                            p['moment_sin'] / (norm * big_r)], axis=-1)
-        states = np.stack([p['lam0'], p['lamc'], p['lams']], axis=-1)
-        area = 2.0 * p['loss_area'] / big_r**2 if self._momentum else 1.0
-        return pitt_peters_residual(states, loading, p['v_x'] / omega_r, p['v_y'] / omega_r,
-                                    p['axial_velocity'] / omega_r, area)
+        big_r = p["radius"]
+        omega_r = p["omega"] * big_r
+        norm = p["density"] * np.pi * big_r**2 * omega_r**2
+        loading = np.stack(
+            [
+                p["thrust"] / norm,
+                p["moment_cos"] / (norm * big_r),
+                p["moment_sin"] / (norm * big_r),
+            ],
+            axis=-1,
+        )
+        states = np.stack([p["lam0"], p["lamc"], p["lams"]], axis=-1)
+        area = 2.0 * p["loss_area"] / big_r**2 if self._momentum else 1.0
+        return pitt_peters_residual(
+            states,
+            loading,
+            p["v_x"] / omega_r,
+            p["v_y"] / omega_r,
+            p["axial_velocity"] / omega_r,
+            area,
+        )
 
     def _residual(self, x, states):
         fld = self._field
@@ -284,7 +342,8 @@ class PittPetersInflowComp(om.ImplicitComponent):
         for name in self._loads:
             ints[name] = fld.integrate(st, name)
             dints[name] = fld.integrate_partials(
-                st, name, chained_f if name == 'loss_area' else chained_t)
+                st, name, chained_f if name == "loss_area" else chained_t
+            )
         p = self._params(x, states, ints)
 
         # Complex step of the 3x3 algebra over its per-rotor scalars: d[name] = dR/dp, (nr, nn, 3).
@@ -295,31 +354,35 @@ class PittPetersInflowComp(om.ImplicitComponent):
         d = {name: res[i].imag / _CS_STEP for i, name in enumerate(_PARAMS)}
 
         spin = self._spin[:, None, None]
-        direct = {'rpm': RPM_TO_RAD_S * d['omega'], 'axial_velocity': d['axial_velocity'],
-                  'radius': d['radius'], 'density': d['density'],
-                  'inplane_velocity': np.stack([d['v_x'], spin * d['v_y']], axis=-1),
-                  'inflow_states': np.stack([d['lam0'], d['lamc'], d['lams']], axis=-1)}
+        direct = {
+            "rpm": RPM_TO_RAD_S * d["omega"],
+            "axial_velocity": d["axial_velocity"],
+            "radius": d["radius"],
+            "density": d["density"],
+            "inplane_velocity": np.stack([d["v_x"], spin * d["v_y"]], axis=-1),
+            "inflow_states": np.stack([d["lam0"], d["lamc"], d["lams"]], axis=-1),
+        }
         out = {}
-        for key in keys + ['station_width']:
-            if key not in dints['thrust']:
+        for key in keys + ["station_width"]:
+            if key not in dints["thrust"]:
                 continue
             total = direct.get(key, 0.0)
             for name in self._loads:
                 dl = d[name]
                 di = dints[name][key]
-                if di.ndim == 2:          # per-op, per-rotor or per-node input
+                if di.ndim == 2:  # per-op, per-rotor or per-node input
                     total = total + dl * di[..., None]
-                else:                     # vector per op (states, inplane) or per radial station
+                else:  # vector per op (states, inplane) or per radial station
                     total = total + dl[..., :, None] * di[..., None, :]
             out[key] = np.asarray(total)
         return out
 
     # ---------------------------------------------------------------- OpenMDAO API
     def apply_nonlinear(self, inputs, outputs, residuals):
-        res, valid = self._residual(self._values(inputs), outputs['inflow_states'])
+        res, valid = self._residual(self._values(inputs), outputs["inflow_states"])
         if not np.all(valid):
-            self._raise_invalid(outputs['inflow_states'], valid)
-        residuals['inflow_states'] = res
+            self._raise_invalid(outputs["inflow_states"], valid)
+        residuals["inflow_states"] = res
 
     def _raise_invalid(self, states, valid):
         bad = np.argwhere(~valid)
@@ -327,31 +390,33 @@ class PittPetersInflowComp(om.ImplicitComponent):
             f"{self.msginfo}: inflow states {np.real(states[~valid]).tolist()} at (rotor, node) "
             f"{bad.tolist()} are outside the Pitt–Peters model (V_T + lambda > 0, V_m > 0 and a "
             "non-singular L matrix are required: no axial descent into the vortex-ring state, "
-            "wake skew below about 110 deg).")
+            "wake skew below about 110 deg)."
+        )
 
     def _cold_start(self, x):
-        omega_r = RPM_TO_RAD_S * np.real(x['rpm']) * np.real(x['radius'])[:, None]
-        mu_z = np.real(x['axial_velocity']) / omega_r
+        omega_r = RPM_TO_RAD_S * np.real(x["rpm"]) * np.real(x["radius"])[:, None]
+        mu_z = np.real(x["axial_velocity"]) / omega_r
         s = np.zeros(mu_z.shape + (3,))
         s[..., 0] = 0.05 + np.maximum(0.0, -mu_z)
         return s
 
     def _newton(self, x, states):
-        tol, maxiter = self.options['tolerance'], self.options['max_iterations']
+        tol, maxiter = self.options["tolerance"], self.options["max_iterations"]
         cplx = any(np.iscomplexobj(v) for v in x.values())
         x_real = {k: np.real(v) for k, v in x.items()}
         res, valid = self._residual(x, states)
         if not np.all(valid):
             return states, False, 0
         err = np.max(np.abs(res), axis=-1)
-        extra = 2 if cplx else 0   # under complex step: settle the imaginary part as well
+        extra = 2 if cplx else 0  # under complex step: settle the imaginary part as well
         for it in range(maxiter):
             if np.all(err <= tol):
                 if extra == 0:
                     return states, True, it
                 extra -= 1
-            jac = self._residual_partials(x_real, np.real(states),
-                                          ['inflow_states'])['inflow_states']
+            jac = self._residual_partials(x_real, np.real(states), ["inflow_states"])[
+                "inflow_states"
+            ]
             try:
                 step_dir = -np.linalg.solve(jac, res[..., None])[..., 0]
             except np.linalg.LinAlgError:
@@ -372,7 +437,7 @@ class PittPetersInflowComp(om.ImplicitComponent):
 
     def solve_nonlinear(self, inputs, outputs):
         x = self._values(inputs)
-        previous = outputs['inflow_states']
+        previous = outputs["inflow_states"]
         starts = [previous.copy()] if np.all(np.isfinite(previous)) else []
         starts.append(self._cold_start(x))
         states = previous
@@ -380,28 +445,31 @@ class PittPetersInflowComp(om.ImplicitComponent):
             states, ok, its = self._newton(x, start)
             self.newton_iterations = its
             if ok:
-                outputs['inflow_states'] = states
+                outputs["inflow_states"] = states
                 return
         res, valid = self._residual(x, states)
         err = np.where(valid, np.max(np.abs(res), axis=-1), np.inf)
-        bad = np.argwhere(err > self.options['tolerance'])
+        bad = np.argwhere(err > self.options["tolerance"])
         raise om.AnalysisError(
             f"{self.msginfo}: Pitt–Peters inflow did not converge at (rotor, node) "
             f"{bad.tolist()}: max |residual| = {np.real(err[err > self.options['tolerance']])}"
             f" (tolerance {self.options['tolerance']:g}), last states "
             f"{np.real(states[err > self.options['tolerance']]).tolist()}. The condition may be "
-            "outside the model (axial descent, vortex-ring state, strong upflow through the disk).")
+            "outside the model (axial descent, vortex-ring state, strong upflow through the disk)."
+        )
 
     def linearize(self, inputs, outputs, partials):
-        jac = self._residual_partials(self._values(inputs), outputs['inflow_states'], self._wrt)
+        jac = self._residual_partials(self._values(inputs), outputs["inflow_states"], self._wrt)
         for name in self._wrt:
-            partials['inflow_states', name] = jac[name].ravel()
-        self._inverse = np.linalg.inv(jac['inflow_states'])
+            partials["inflow_states", name] = jac[name].ravel()
+        self._inverse = np.linalg.inv(jac["inflow_states"])
 
     def solve_linear(self, d_outputs, d_residuals, mode):
-        if mode == 'fwd':
-            d_outputs['inflow_states'] = np.einsum('...ab,...b->...a', self._inverse,
-                                                   d_residuals['inflow_states'])
+        if mode == "fwd":
+            d_outputs["inflow_states"] = np.einsum(
+                "...ab,...b->...a", self._inverse, d_residuals["inflow_states"]
+            )
         else:
-            d_residuals['inflow_states'] = np.einsum('...ba,...b->...a', self._inverse,
-                                                     d_outputs['inflow_states'])
+            d_residuals["inflow_states"] = np.einsum(
+                "...ba,...b->...a", self._inverse, d_outputs["inflow_states"]
+            )

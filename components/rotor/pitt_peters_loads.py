@@ -69,75 +69,121 @@ from lpc_mdo.components.rotor.bem_inflow import check_section_inputs
 from lpc_mdo.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
 
 #: Where Prandtl's loss factor acts: on the momentum (inflow) side or on the blade loads.
-LOSS_PLACEMENTS = ('momentum', 'blade_element')
+LOSS_PLACEMENTS = ("momentum", "blade_element")
 
 _TWO_OVER_PI = 2.0 / np.pi
 _ABS_SIN_FLOOR = 1.0e-9  # |sin phi| floor in the Prandtl exponent (F = 1 to all digits there)
 _SWIRL_MAX_ITERATIONS = 30
-_SWIRL_TOLERANCE = 1.0e-12   # Newton step on v_t left, relative to max |U_T| + 1 m/s
+_SWIRL_TOLERANCE = 1.0e-12  # Newton step on v_t left, relative to max |U_T| + 1 m/s
 
 #: Inputs: name -> (kind, units, default, description). Kinds: 'op' (num_rotors, num_nodes),
 #: 'rotor' (num_rotors,), 'radial' (num_rotors, num_radial), 'node' (num_nodes,).
 PITT_PETERS_INPUTS = {
-    'rpm': ('op', 'rpm', 1000.0, 'Rotor speed'),
-    'axial_velocity': ('op', 'm/s', 0.0,
-                       'Velocity of the hub relative to the air along the thrust axis (> 0: '
-                       'flow through the disk as in climb)'),
-    'inplane_velocity': ('op2', 'm/s', 0.0,
-                         'Velocity of the hub relative to the air along the disk e_x and e_y'),
-    'radius': ('rotor', 'm', 1.0, 'Rotor tip radius'),
-    'hub_radius': ('rotor', 'm', 0.2, 'Hub radius'),
-    'station_radius': ('radial', 'm', None, 'Radius of the blade-element centres'),
-    'station_width': ('radial', 'm', None, 'Radial quadrature width of each blade element'),
-    'chord': ('radial', 'm', 0.1, 'Blade chord at the stations'),
-    'twist': ('radial', 'rad', 0.2, 'Blade pitch relative to the rotor plane at the stations'),
-    'density': ('node', 'kg/m**3', SEA_LEVEL_DENSITY, 'Air density'),
-    'speed_of_sound': ('node', 'm/s', SEA_LEVEL_SPEED_OF_SOUND, 'Speed of sound'),
-    'dynamic_viscosity': ('node', 'Pa*s', 1.7894e-5, 'Dynamic viscosity of air'),
+    "rpm": ("op", "rpm", 1000.0, "Rotor speed"),
+    "axial_velocity": (
+        "op",
+        "m/s",
+        0.0,
+        "Velocity of the hub relative to the air along the thrust axis (> 0: "
+        "flow through the disk as in climb)",
+    ),
+    "inplane_velocity": (
+        "op2",
+        "m/s",
+        0.0,
+        "Velocity of the hub relative to the air along the disk e_x and e_y",
+    ),
+    "radius": ("rotor", "m", 1.0, "Rotor tip radius"),
+    "hub_radius": ("rotor", "m", 0.2, "Hub radius"),
+    "station_radius": ("radial", "m", None, "Radius of the blade-element centres"),
+    "station_width": ("radial", "m", None, "Radial quadrature width of each blade element"),
+    "chord": ("radial", "m", 0.1, "Blade chord at the stations"),
+    "twist": ("radial", "rad", 0.2, "Blade pitch relative to the rotor plane at the stations"),
+    "density": ("node", "kg/m**3", SEA_LEVEL_DENSITY, "Air density"),
+    "speed_of_sound": ("node", "m/s", SEA_LEVEL_SPEED_OF_SOUND, "Speed of sound"),
+    "dynamic_viscosity": ("node", "Pa*s", 1.7894e-5, "Dynamic viscosity of air"),
 }
 
 #: Per-operating-point vector inputs (and the states) and their sizes.
-_OP_VECTOR = {'inflow_states': 3, 'inplane_velocity': 2}
+_OP_VECTOR = {"inflow_states": 3, "inplane_velocity": 2}
 
 
 def declare_pitt_peters_options(options):
     """Declare the options shared by the Pitt–Peters components (and the rotor group)."""
-    options.declare('num_rotors', default=1, types=int, lower=1, desc='Number of rotors')
-    options.declare('num_nodes', default=1, types=int, lower=1,
-                    desc='Number of operating points (flight conditions) per rotor')
-    options.declare('num_radial', default=25, types=int, lower=1,
-                    desc='Number of radial stations per blade')
-    options.declare('num_azimuth', default=25, types=int, lower=3,
-                    desc='Number of equally spaced azimuthal stations (>= 3, so that the first '
-                         'harmonics of the loading are resolved)')
-    options.declare('num_blades', default=2, types=(int, list, tuple, np.ndarray),
-                    desc='Blades per rotor: one int for all rotors or one per rotor')
-    options.declare('spin_direction', default=1, types=(int, list, tuple, np.ndarray),
-                    desc='+1 (right-handed about the thrust axis) or -1, one for all or per rotor')
-    options.declare('polar', default=LinearQuadraticPolar(), types=Polar,
-                    desc='Sectional airfoil polar (lpc_mdo.components.aero.polar.Polar)')
-    options.declare('tip_loss', default=True, types=bool, desc="Apply Prandtl's tip loss")
-    options.declare('hub_loss', default=True, types=bool, desc="Apply Prandtl's hub loss")
-    options.declare('loss_placement', default='momentum', values=LOSS_PLACEMENTS,
-                    desc="Prandtl factor on the blade-element loads ('blade_element', docs "
-                         "theory/rotors 'Pitt-Peters inflow') or on the momentum side of the "
-                         "inflow equation ('momentum')")
-    options.declare('tangential_induction', default=True, types=bool,
-                    desc='Include the wake swirl v_t = B d/(4 pi rho r U_m) per station (as the '
-                         'BEM does); False: neglect it (docs theory/rotors "Pitt-Peters inflow")')
+    options.declare("num_rotors", default=1, types=int, lower=1, desc="Number of rotors")
+    options.declare(
+        "num_nodes",
+        default=1,
+        types=int,
+        lower=1,
+        desc="Number of operating points (flight conditions) per rotor",
+    )
+    options.declare(
+        "num_radial", default=25, types=int, lower=1, desc="Number of radial stations per blade"
+    )
+    options.declare(
+        "num_azimuth",
+        default=25,
+        types=int,
+        lower=3,
+        desc="Number of equally spaced azimuthal stations (>= 3, so that the first "
+        "harmonics of the loading are resolved)",
+    )
+    options.declare(
+        "num_blades",
+        default=2,
+        types=(int, list, tuple, np.ndarray),
+        desc="Blades per rotor: one int for all rotors or one per rotor",
+    )
+    options.declare(
+        "spin_direction",
+        default=1,
+        types=(int, list, tuple, np.ndarray),
+        desc="+1 (right-handed about the thrust axis) or -1, one for all or per rotor",
+    )
+    options.declare(
+        "polar",
+        default=LinearQuadraticPolar(),
+        types=Polar,
+        desc="Sectional airfoil polar (lpc_mdo.components.aero.polar.Polar)",
+    )
+    options.declare("tip_loss", default=True, types=bool, desc="Apply Prandtl's tip loss")
+    options.declare("hub_loss", default=True, types=bool, desc="Apply Prandtl's hub loss")
+    options.declare(
+        "loss_placement",
+        default="momentum",
+        values=LOSS_PLACEMENTS,
+        desc="Prandtl factor on the blade-element loads ('blade_element', docs "
+        "theory/rotors 'Pitt-Peters inflow') or on the momentum side of the "
+        "inflow equation ('momentum')",
+    )
+    options.declare(
+        "tangential_induction",
+        default=True,
+        types=bool,
+        desc="Include the wake swirl v_t = B d/(4 pi rho r U_m) per station (as the "
+        'BEM does); False: neglect it (docs theory/rotors "Pitt-Peters inflow")',
+    )
 
 
 def input_shape(kind, nr, nn, nrad):
     """Shape of a Pitt–Peters input of the given kind."""
-    return {'op': (nr, nn), 'op2': (nr, nn, 2), 'rotor': (nr,), 'radial': (nr, nrad),
-            'node': (nn,)}[kind]
+    return {
+        "op": (nr, nn),
+        "op2": (nr, nn, 2),
+        "rotor": (nr,),
+        "radial": (nr, nrad),
+        "node": (nn,),
+    }[kind]
 
 
 def add_pitt_peters_inputs(comp, nr, nn, nrad):
     """Add the inputs of :data:`PITT_PETERS_INPUTS` to a component."""
     eta = (np.arange(nrad) + 0.5) / nrad
-    defaults = {'station_radius': np.tile(0.2 + 0.8 * eta, (nr, 1)),
-                'station_width': np.full((nr, nrad), 0.8 / nrad)}
+    defaults = {
+        "station_radius": np.tile(0.2 + 0.8 * eta, (nr, 1)),
+        "station_width": np.full((nr, nrad), 0.8 / nrad),
+    }
     for name, (kind, units, default, desc) in PITT_PETERS_INPUTS.items():
         shape = input_shape(kind, nr, nn, nrad)
         val = defaults[name] if default is None else np.full(shape, default)
@@ -150,9 +196,21 @@ def check_pitt_peters_inputs(comp, inputs, hub_loss):
     (:func:`~lpc_mdo.components.rotor.bem_inflow.check_section_inputs`): om.AnalysisError
     names the input, the first offending entry and the allowed range.
     """
-    check_section_inputs(comp, inputs, hub_loss, names=PITT_PETERS_INPUTS,
-                         positive=('rpm', 'radius', 'chord', 'station_width', 'density',
-                                   'speed_of_sound', 'dynamic_viscosity'))
+    check_section_inputs(
+        comp,
+        inputs,
+        hub_loss,
+        names=PITT_PETERS_INPUTS,
+        positive=(
+            "rpm",
+            "radius",
+            "chord",
+            "station_width",
+            "density",
+            "speed_of_sound",
+            "dynamic_viscosity",
+        ),
+    )
 
 
 def atan2_cs(y, x):
@@ -165,11 +223,19 @@ def atan2_cs(y, x):
 
 def rotor_blade_options(comp):
     """Blade counts and spin directions (num_rotors,) of a component's options, checked."""
-    nr = comp.options['num_rotors']
-    blades = per_rotor(comp.options['num_blades'], nr, 'num_blades', kind=int, lower=1,
-                       owner=comp.msginfo)
-    spin = per_rotor(comp.options['spin_direction'], nr, 'spin_direction', kind=int, lower=-1,
-                     upper=1, owner=comp.msginfo)
+    nr = comp.options["num_rotors"]
+    blades = per_rotor(
+        comp.options["num_blades"], nr, "num_blades", kind=int, lower=1, owner=comp.msginfo
+    )
+    spin = per_rotor(
+        comp.options["spin_direction"],
+        nr,
+        "spin_direction",
+        kind=int,
+        lower=-1,
+        upper=1,
+        owner=comp.msginfo,
+    )
     for i, s in enumerate(spin.tolist()):
         check_choice(f"spin_direction[{i}]", s, (1, -1), where=comp.msginfo)
     return blades.astype(float), spin.astype(float)
@@ -200,23 +266,33 @@ class PittPetersBladeElements:
 
     #: Integrals: name -> (field, radius power, azimuth factor, times B).
     INTEGRALS = {
-        'thrust': ('t', 0, None, True),
-        'moment_cos': ('t', 1, 'cos', True),
-        'moment_sin': ('t', 1, 'sin', True),
-        'torque': ('d', 1, None, True),
-        'drag_sin': ('d', 0, 'sin', True),
-        'drag_cos': ('d', 0, 'cos', True),
-        'loss_area': ('F', 1, None, False),
+        "thrust": ("t", 0, None, True),
+        "moment_cos": ("t", 1, "cos", True),
+        "moment_sin": ("t", 1, "sin", True),
+        "torque": ("d", 1, None, True),
+        "drag_sin": ("d", 0, "sin", True),
+        "drag_cos": ("d", 0, "cos", True),
+        "loss_area": ("F", 1, None, False),
     }
 
-    def __init__(self, shape, blades, spin, polar, tip_loss, hub_loss, loss_placement,
-                 tangential_induction=True, owner=''):
+    def __init__(
+        self,
+        shape,
+        blades,
+        spin,
+        polar,
+        tip_loss,
+        hub_loss,
+        loss_placement,
+        tangential_induction=True,
+        owner="",
+    ):
         nr, nn, nrad, naz = shape
         self.shape = shape
         self.polar = polar
         self.tip_loss, self.hub_loss = tip_loss, hub_loss
-        self.loads_have_loss = loss_placement == 'blade_element' and (tip_loss or hub_loss)
-        self.momentum_loss = loss_placement == 'momentum' and (tip_loss or hub_loss)
+        self.loads_have_loss = loss_placement == "blade_element" and (tip_loss or hub_loss)
+        self.momentum_loss = loss_placement == "momentum" and (tip_loss or hub_loss)
         self.swirl = tangential_induction
         self._vt_guess = 0.0
         self.owner = owner
@@ -242,35 +318,41 @@ class PittPetersBladeElements:
         'speed_of_sound'; 'vip2' is norm(inplane_velocity)^2, through the swirl's mass flow).
         """
         st = SimpleNamespace()
-        big_r = x['radius'][:, None, None, None]
-        rh = x['hub_radius'][:, None, None, None]
-        r = x['station_radius'][:, None, :, None]
-        chord = x['chord'][:, None, :, None]
-        theta = x['twist'][:, None, :, None]
-        rho = x['density'][None, :, None, None]
-        mu = x['dynamic_viscosity'][None, :, None, None]
-        a = x['speed_of_sound'][None, :, None, None]
-        omega = (RPM_TO_RAD_S * x['rpm'])[:, :, None, None]
-        v_ax = x['axial_velocity'][:, :, None, None]
-        v_ip = x['inplane_velocity']
+        big_r = x["radius"][:, None, None, None]
+        rh = x["hub_radius"][:, None, None, None]
+        r = x["station_radius"][:, None, :, None]
+        chord = x["chord"][:, None, :, None]
+        theta = x["twist"][:, None, :, None]
+        rho = x["density"][None, :, None, None]
+        mu = x["dynamic_viscosity"][None, :, None, None]
+        a = x["speed_of_sound"][None, :, None, None]
+        omega = (RPM_TO_RAD_S * x["rpm"])[:, :, None, None]
+        v_ax = x["axial_velocity"][:, :, None, None]
+        v_ip = x["inplane_velocity"]
         lam0, lam_c, lam_s = (states[..., k][:, :, None, None] for k in range(3))
         g = lam_c * self.cos + lam_s * self.sin
 
         up = v_ax + omega * big_r * lam0 + omega * r * g
-        ut = (omega * r + v_ip[..., 0][:, :, None, None] * self.sin
-              + (self.spin[:, None] * v_ip[..., 1])[:, :, None, None] * self.cos)
+        ut = (
+            omega * r
+            + v_ip[..., 0][:, :, None, None] * self.sin
+            + (self.spin[:, None] * v_ip[..., 1])[:, :, None, None] * self.cos
+        )
         u = np.sqrt(v_ax * v_ax + ut * ut)
         if np.any(np.real(u) <= 0.0):
-            raise om.AnalysisError(f"{self.owner}: zero relative velocity at a blade station "
-                                   "(U_P = U_T = 0); the blade-element model is undefined there.")
+            raise om.AnalysisError(
+                f"{self.owner}: zero relative velocity at a blade station "
+                "(U_P = U_T = 0); the blade-element model is undefined there."
+            )
         re = rho * u * chord / mu
         mach = u / a
-        geo = SimpleNamespace(up=up, r=r, big_r=big_r, rh=rh, chord=chord, theta=theta, rho=rho,
-                              re=re, mach=mach)
+        geo = SimpleNamespace(
+            up=up, r=r, big_r=big_r, rh=rh, chord=chord, theta=theta, rho=rho, re=re, mach=mach
+        )
         if self.swirl:
             vip2 = np.sum(v_ip * v_ip, axis=-1)[:, :, None, None]
             um = np.sqrt(up * up + vip2)
-            kappa = self.half_b / (2.0 * np.pi * rho * r)          # B/(4 pi rho r)
+            kappa = self.half_b / (2.0 * np.pi * rho * r)  # B/(4 pi rho r)
             vt, sec = self._solve_swirl(geo, ut, um, kappa)
         else:
             vt = np.zeros_like(ut)
@@ -278,7 +360,7 @@ class PittPetersBladeElements:
         st.t, st.d, st.phi, st.F, st.vt = sec.t, sec.d, sec.phi, sec.F, vt
         st.v_ip = v_ip[:, :, None, None, :]
         st.r = r
-        st.width = x['station_width'][:, None, :, None]
+        st.width = x["station_width"][:, None, :, None]
         st.omega, st.big_r, st.lam0, st.g = omega, big_r, lam0, g
         if not partials:
             return st
@@ -287,42 +369,62 @@ class PittPetersBladeElements:
         # 'ut' = through the undisturbed U (Reynolds and Mach numbers) only.
         w2, ute, q, f_l = sec.w2, sec.ute, sec.q, sec.f_l
         pv, cphi, sphi, cx, ct, df = sec.pv, sec.cphi, sec.sphi, sec.cx, sec.ct, sec.df
-        ptd = {'up': ute / w2, 'ute': -up / w2}            # dphi/dU_P, dphi/d(U_T - v_t)
-        raw = {'dphi': ptd,
-               'dF': {'up': df['phi'] * ptd['up'], 'ute': df['phi'] * ptd['ute'], 'r': df['r'],
-                      'radius': df['radius'], 'hub_radius': df['hub_radius']}}
+        ptd = {"up": ute / w2, "ute": -up / w2}  # dphi/dU_P, dphi/d(U_T - v_t)
+        raw = {
+            "dphi": ptd,
+            "dF": {
+                "up": df["phi"] * ptd["up"],
+                "ute": df["phi"] * ptd["ute"],
+                "r": df["r"],
+                "radius": df["radius"],
+                "hub_radius": df["hub_radius"],
+            },
+        }
         for name, coeff, c_a, c_re, c_m, geo_c in (
-                ('dt', cx, pv.dcl_dalpha * cphi - pv.dcd_dalpha * sphi,
-                 pv.dcl_dreynolds * cphi - pv.dcd_dreynolds * sphi,
-                 pv.dcl_dmach * cphi - pv.dcd_dmach * sphi, -ct),
-                ('dd', ct, pv.dcl_dalpha * sphi + pv.dcd_dalpha * cphi,
-                 pv.dcl_dreynolds * sphi + pv.dcd_dreynolds * cphi,
-                 pv.dcl_dmach * sphi + pv.dcd_dmach * cphi, cx)):
+            (
+                "dt",
+                cx,
+                pv.dcl_dalpha * cphi - pv.dcd_dalpha * sphi,
+                pv.dcl_dreynolds * cphi - pv.dcd_dreynolds * sphi,
+                pv.dcl_dmach * cphi - pv.dcd_dmach * sphi,
+                -ct,
+            ),
+            (
+                "dd",
+                ct,
+                pv.dcl_dalpha * sphi + pv.dcd_dalpha * cphi,
+                pv.dcl_dreynolds * sphi + pv.dcd_dreynolds * cphi,
+                pv.dcl_dmach * sphi + pv.dcd_dmach * cphi,
+                cx,
+            ),
+        ):
             field = q * coeff * f_l
             base = q * f_l
             f_phi = base * (geo_c - c_a)
             if self.loads_have_loss:
-                f_phi = f_phi + q * coeff * df['phi']
-            f_u = base * (c_re * re + c_m * mach) / u   # through Re and M
-            p = {'up': 2.0 * up / w2 * field + f_phi * ptd['up'],
-                 'ute': 2.0 * ute / w2 * field + f_phi * ptd['ute'],
-                 'ut': f_u * ut / u,
-                 'vx': f_u * v_ax / u,
-                 'theta': base * c_a,
-                 'chord': field / chord + base * c_re * re / chord,
-                 'density': field / rho + base * c_re * re / rho,
-                 'dynamic_viscosity': -base * c_re * re / mu,
-                 'speed_of_sound': -base * c_m * mach / a}
+                f_phi = f_phi + q * coeff * df["phi"]
+            f_u = base * (c_re * re + c_m * mach) / u  # through Re and M
+            p = {
+                "up": 2.0 * up / w2 * field + f_phi * ptd["up"],
+                "ute": 2.0 * ute / w2 * field + f_phi * ptd["ute"],
+                "ut": f_u * ut / u,
+                "vx": f_u * v_ax / u,
+                "theta": base * c_a,
+                "chord": field / chord + base * c_re * re / chord,
+                "density": field / rho + base * c_re * re / rho,
+                "dynamic_viscosity": -base * c_re * re / mu,
+                "speed_of_sound": -base * c_m * mach / a,
+            }
             if self.loads_have_loss:
-                for key in ('r', 'radius', 'hub_radius'):
+                for key in ("r", "radius", "hub_radius"):
                     p[key] = q * coeff * df[key]
             raw[name] = p
         if self.swirl:
             dute = self._swirl_partials(raw, sec, vt, um, kappa, rho, r, up)
         else:
-            dute = {'ut': 1.0}
+            dute = {"ut": 1.0}
         for name, p in raw.items():
-            f_ute = p.pop('ute')
+            f_ute = p.pop("ute")
             for key, val in dute.items():
                 p[key] = p.get(key, 0.0) + f_ute * val
             setattr(st, name, p)
@@ -340,8 +442,10 @@ class PittPetersBladeElements:
         up = geo.up
         sec.w2 = up * up + ute * ute
         if np.any(np.real(sec.w2) <= 0.0):
-            raise om.AnalysisError(f"{self.owner}: zero relative velocity at a blade station "
-                                   "(U_P = U_T = 0); the blade-element model is undefined there.")
+            raise om.AnalysisError(
+                f"{self.owner}: zero relative velocity at a blade station "
+                "(U_P = U_T = 0); the blade-element model is undefined there."
+            )
         sec.phi = atan2_cs(up, ute)
         sec.pv = self.polar.evaluate(geo.theta - sec.phi, geo.re, geo.mach)
         sec.cphi, sec.sphi = np.cos(sec.phi), np.sin(sec.phi)
@@ -359,9 +463,9 @@ class PittPetersBladeElements:
         c_a = sec.pv.dcl_dalpha * sec.sphi + sec.pv.dcd_dalpha * sec.cphi
         f_phi = sec.q * sec.f_l * (sec.cx - c_a)
         if self.loads_have_loss:
-            f_phi = f_phi + sec.q * sec.ct * sec.df['phi']
+            f_phi = f_phi + sec.q * sec.ct * sec.df["phi"]
         sec.d_ute = 2.0 * ute / sec.w2 * sec.d + f_phi * dphi
-        sec.F_ute = sec.df['phi'] * dphi
+        sec.F_ute = sec.df["phi"] * dphi
         return sec
 
     def _swirl_residual(self, sec, vt, um, kappa):
@@ -407,48 +511,54 @@ class PittPetersBladeElements:
                     f"{self.owner}: the tangential-induction (swirl) equation has no unique "
                     f"solution at stations (rotor, node, radial, azimuth) {bad} (through-flow "
                     "U_m near zero, e.g. axial descent into the vortex-ring state); set option "
-                    "tangential_induction=False to neglect the swirl.")
+                    "tangential_induction=False to neglect the swirl."
+                )
             step = res / jac
             if not np.all(np.isfinite(step)):
                 break
             if np.max(np.abs(np.real(step))) <= _SWIRL_TOLERANCE * scale:
                 if not np.iscomplexobj(step):
-                    return vt, sec      # converged: the step left is below the tolerance
+                    return vt, sec  # converged: the step left is below the tolerance
                 # complex step: the imaginary part (the derivative) takes one more step
                 vt = vt - step
                 return vt, self._section(geo, ut - vt)
             vt = vt - step
         raise om.AnalysisError(
             f"{self.owner}: the tangential-induction (swirl) Newton did not converge in "
-            f"{_SWIRL_MAX_ITERATIONS} iterations (last step {np.max(np.abs(step)):.3g} m/s).")
+            f"{_SWIRL_MAX_ITERATIONS} iterations (last step {np.max(np.abs(step)):.3g} m/s)."
+        )
 
     def _swirl_partials(self, raw, sec, vt, um, kappa, rho, r, up):
         """d(U_T - v_t)/d(primitive) by the implicit-function theorem on the swirl residual."""
         _, jac = self._swirl_residual(sec, vt, um, kappa)
         f_m = sec.F if self.momentum_loss else 1.0
-        dd, d_f = raw['dd'], raw['dF']
-        dres = {key: -kappa * val for key, val in dd.items() if key != 'ute'}
-        dres['up'] = dres['up'] + vt * f_m * up / um
-        dres['vip2'] = vt * f_m / (2.0 * um)
-        dres['r'] = dres.get('r', 0.0) + kappa * sec.d / r
-        dres['density'] = dres['density'] + kappa * sec.d / rho
+        dd, d_f = raw["dd"], raw["dF"]
+        dres = {key: -kappa * val for key, val in dd.items() if key != "ute"}
+        dres["up"] = dres["up"] + vt * f_m * up / um
+        dres["vip2"] = vt * f_m / (2.0 * um)
+        dres["r"] = dres.get("r", 0.0) + kappa * sec.d / r
+        dres["density"] = dres["density"] + kappa * sec.d / rho
         if self.momentum_loss:
             for key, val in d_f.items():
-                if key != 'ute':
+                if key != "ute":
                     dres[key] = dres.get(key, 0.0) + vt * um * val
         # ute = U_T - v_t: d v_t/dy = -dR/dy / dR/dv_t, with U_T entering R through ute too.
-        dres['ut'] = dres.get('ut', 0.0) - kappa * dd['ute'] + (
-            vt * um * d_f['ute'] if self.momentum_loss else 0.0)
+        dres["ut"] = (
+            dres.get("ut", 0.0)
+            - kappa * dd["ute"]
+            + (vt * um * d_f["ute"] if self.momentum_loss else 0.0)
+        )
         dute = {key: val / jac for key, val in dres.items()}
-        dute['ut'] = dute['ut'] + 1.0
+        dute["ut"] = dute["ut"] + 1.0
         return dute
 
     def _loss(self, phi, r, big_r, rh, partials):
         """Prandtl factor F = F_tip F_hub (docs theory/rotors 'BEM inflow residual', classical) and
-        its partials."""
+        its partials.
+        """
         ones = np.ones(np.broadcast_shapes(phi.shape, r.shape), dtype=phi.dtype)
         zero = np.zeros(ones.shape)
-        d = {'phi': zero, 'r': zero, 'radius': zero, 'hub_radius': zero}
+        d = {"phi": zero, "r": zero, "radius": zero, "hub_radius": zero}
         if not (self.tip_loss or self.hub_loss):
             return ones, d
         s = np.sin(phi)
@@ -459,10 +569,10 @@ class PittPetersBladeElements:
         factors = []
         if self.tip_loss:
             k = self.half_b * (big_r - r) / r
-            factors.append(('tip', k))
+            factors.append(("tip", k))
         if self.hub_loss:
             k = self.half_b * (r - rh) / rh
-            factors.append(('hub', k))
+            factors.append(("hub", k))
         values, slopes = [], []
         for _, k in factors:
             f = k / abs_s
@@ -476,20 +586,20 @@ class PittPetersBladeElements:
         if not partials:
             return big_f, d
         # d|sin phi|/dphi / |sin phi| = cos(phi)/sin(phi) (0 where floored: f is constant there)
-        with np.errstate(divide='ignore', invalid='ignore'):
+        with np.errstate(divide="ignore", invalid="ignore"):
             cot = np.where(floored, 0.0, np.cos(phi) / np.where(floored, 1.0, s))
         d_phi, d_r, d_big_r, d_rh = zero, zero, zero, zero
         for idx, ((kind, _), (f, slope)) in enumerate(zip(factors, slopes, strict=True)):
             other = values[1 - idx] if len(values) == 2 else 1.0
             scale = other * slope
             d_phi = d_phi - scale * f * cot
-            if kind == 'tip':
+            if kind == "tip":
                 d_r = d_r - scale * self.half_b * big_r / (r * r * abs_s)
                 d_big_r = d_big_r + scale * self.half_b / (r * abs_s)
             else:
                 d_r = d_r + scale * self.half_b / (rh * abs_s)
                 d_rh = d_rh - scale * self.half_b * r / (rh * rh * abs_s)
-        d = {'phi': d_phi, 'r': d_r, 'radius': d_big_r, 'hub_radius': d_rh}
+        d = {"phi": d_phi, "r": d_r, "radius": d_big_r, "hub_radius": d_rh}
         return big_f, d
 
     # ---------------------------------------------------------------- chain rule to the inputs
@@ -502,27 +612,33 @@ class PittPetersBladeElements:
         """
         shape = self.shape
         zero = np.zeros(shape)
-        f_up, f_ut = p['up'], p['ut']
+        f_up, f_ut = p["up"], p["ut"]
         out = {}
         for key in keys:
-            if key == 'inflow_states':
-                out[key] = np.stack([f_up * st.omega * st.big_r, f_up * st.omega * st.r * self.cos,
-                                     f_up * st.omega * st.r * self.sin], axis=-1)
-            elif key == 'rpm':
+            if key == "inflow_states":
+                out[key] = np.stack(
+                    [
+                        f_up * st.omega * st.big_r,
+                        f_up * st.omega * st.r * self.cos,
+                        f_up * st.omega * st.r * self.sin,
+                    ],
+                    axis=-1,
+                )
+            elif key == "rpm":
                 out[key] = RPM_TO_RAD_S * (f_up * (st.big_r * st.lam0 + st.r * st.g) + f_ut * st.r)
-            elif key == 'axial_velocity':
-                out[key] = f_up + p.get('vx', zero)
-            elif key == 'inplane_velocity':
+            elif key == "axial_velocity":
+                out[key] = f_up + p.get("vx", zero)
+            elif key == "inplane_velocity":
                 out[key] = np.stack([f_ut * self.sin, f_ut * self.spin4 * self.cos], axis=-1)
-                if 'vip2' in p:
-                    out[key] = out[key] + 2.0 * p['vip2'][..., None] * st.v_ip
-            elif key == 'radius':
-                out[key] = f_up * st.omega * st.lam0 + p.get('radius', zero)
-            elif key == 'station_radius':
-                out[key] = f_up * st.omega * st.g + f_ut * st.omega + p.get('r', zero)
-            elif key == 'twist':
-                out[key] = p.get('theta', zero)
-            else:   # hub_radius, chord, density, dynamic_viscosity, speed_of_sound
+                if "vip2" in p:
+                    out[key] = out[key] + 2.0 * p["vip2"][..., None] * st.v_ip
+            elif key == "radius":
+                out[key] = f_up * st.omega * st.lam0 + p.get("radius", zero)
+            elif key == "station_radius":
+                out[key] = f_up * st.omega * st.g + f_ut * st.omega + p.get("r", zero)
+            elif key == "twist":
+                out[key] = p.get("theta", zero)
+            else:  # hub_radius, chord, density, dynamic_viscosity, speed_of_sound
                 out[key] = p.get(key, zero)
             out[key] = np.broadcast_to(out[key], shape + out[key].shape[4:])
         return out
@@ -530,7 +646,7 @@ class PittPetersBladeElements:
     # ---------------------------------------------------------------- integrals
     def _weight(self, st, name):
         _, power, trig, _ = self.INTEGRALS[name]
-        m = 1.0 if trig is None else (self.cos if trig == 'cos' else self.sin)
+        m = 1.0 if trig is None else (self.cos if trig == "cos" else self.sin)
         return (st.r * m if power else m), (m if power else None)
 
     def _factor(self, name):
@@ -558,17 +674,17 @@ class PittPetersBladeElements:
         wm = st.width * m
         out = {}
         for key, val in chained.items():
-            kind = PITT_PETERS_INPUTS[key][0] if key in PITT_PETERS_INPUTS else 'op'
+            kind = PITT_PETERS_INPUTS[key][0] if key in PITT_PETERS_INPUTS else "op"
             if key in _OP_VECTOR:
                 out[key] = fac * np.sum(wm[..., None] * val, axis=(2, 3))
-            elif kind == 'radial':
+            elif kind == "radial":
                 out[key] = fac * np.sum(wm * val, axis=3)
             else:
                 out[key] = fac[..., 0] * np.sum(wm * val, axis=(2, 3))
-        out['station_width'] = fac * np.sum(np.broadcast_to(m * field, self.shape), axis=3)
+        out["station_width"] = fac * np.sum(np.broadcast_to(m * field, self.shape), axis=3)
         if dm_dr is not None:
             extra = fac * np.sum(np.broadcast_to(st.width * dm_dr * field, self.shape), axis=3)
-            out['station_radius'] = out.get('station_radius', 0.0) + extra
+            out["station_radius"] = out.get("station_radius", 0.0) + extra
         return out
 
 
@@ -588,16 +704,21 @@ class SparsityPatterns:
 
     def __init__(self, nr, nn, nrad, naz):
         self.nr, self.nn, self.nrad, self.naz = nr, nn, nrad, naz
-        j, n, i, _ = np.meshgrid(np.arange(nr), np.arange(nn), np.arange(nrad), np.arange(naz),
-                                 indexing='ij')
-        self._station = {'op': (j * nn + n).ravel(), 'rotor': j.ravel(),
-                         'radial': (j * nrad + i).ravel(), 'node': n.ravel()}
+        j, n, i, _ = np.meshgrid(
+            np.arange(nr), np.arange(nn), np.arange(nrad), np.arange(naz), indexing="ij"
+        )
+        self._station = {
+            "op": (j * nn + n).ravel(),
+            "rotor": j.ravel(),
+            "radial": (j * nrad + i).ravel(),
+            "node": n.ravel(),
+        }
 
     def station(self, kind, m=1):
         """Rows and columns of a station output wrt an input of the given kind."""
-        base = self._station['op' if kind in ('op', 'op2') else kind]
+        base = self._station["op" if kind in ("op", "op2") else kind]
         size = base.size
-        if kind in ('op', 'op2') and m > 1:
+        if kind in ("op", "op2") and m > 1:
             rows = np.repeat(np.arange(size), m)
             cols = (base[:, None] * m + np.arange(m)).ravel()
             return rows, cols
@@ -608,20 +729,20 @@ class SparsityPatterns:
         nr, nn, nrad = self.nr, self.nn, self.nrad
         o = np.arange(nr * nn)
         rotor, node = o // nn, o % nn
-        if kind in ('op', 'op2'):
-            oo, a, b = np.meshgrid(o, np.arange(k), np.arange(m), indexing='ij')
+        if kind in ("op", "op2"):
+            oo, a, b = np.meshgrid(o, np.arange(k), np.arange(m), indexing="ij")
             return (oo * k + a).ravel(), (oo * m + b).ravel()
-        if kind == 'radial':
-            oo, a, i = np.meshgrid(o, np.arange(k), np.arange(nrad), indexing='ij')
+        if kind == "radial":
+            oo, a, i = np.meshgrid(o, np.arange(k), np.arange(nrad), indexing="ij")
             return (oo * k + a).ravel(), (rotor[oo] * nrad + i).ravel()
         rows = np.arange(nr * nn * k)
-        col = rotor if kind == 'rotor' else node
+        col = rotor if kind == "rotor" else node
         return rows, np.repeat(col, k)
 
 
 def input_kind(name):
     """Kind of an input or of the inflow states ('op' with 3 components)."""
-    return 'op' if name == 'inflow_states' else PITT_PETERS_INPUTS[name][0]
+    return "op" if name == "inflow_states" else PITT_PETERS_INPUTS[name][0]
 
 
 def input_size(name):
@@ -707,96 +828,157 @@ class PittPetersLoadsComp(om.ExplicitComponent):
 
     def setup(self):
         opts = self.options
-        nr, nn = opts['num_rotors'], opts['num_nodes']
-        nrad, naz = opts['num_radial'], opts['num_azimuth']
+        nr, nn = opts["num_rotors"], opts["num_nodes"]
+        nrad, naz = opts["num_radial"], opts["num_azimuth"]
         blades, spin = rotor_blade_options(self)
         self._field = PittPetersBladeElements(
-            (nr, nn, nrad, naz), blades, spin, opts['polar'], opts['tip_loss'], opts['hub_loss'],
-            opts['loss_placement'], opts['tangential_induction'], owner=self.msginfo)
+            (nr, nn, nrad, naz),
+            blades,
+            spin,
+            opts["polar"],
+            opts["tip_loss"],
+            opts["hub_loss"],
+            opts["loss_placement"],
+            opts["tangential_induction"],
+            owner=self.msginfo,
+        )
         add_pitt_peters_inputs(self, nr, nn, nrad)
-        self.add_input('inflow_states', val=np.tile([0.05, 0.0, 0.0], (nr, nn, 1)), units=None,
-                       desc='Inflow states (lambda_0, lambda_c, lambda_s) over Omega R')
+        self.add_input(
+            "inflow_states",
+            val=np.tile([0.05, 0.0, 0.0], (nr, nn, 1)),
+            units=None,
+            desc="Inflow states (lambda_0, lambda_c, lambda_s) over Omega R",
+        )
 
         shape = (nr, nn, nrad, naz)
-        self.add_output('thrust_per_span', val=np.zeros(shape), units='N/m',
-                        desc='Sectional thrust of one blade per unit span over (r, psi)')
-        self.add_output('drag_per_span', val=np.zeros(shape), units='N/m',
-                        desc='Sectional in-plane drag of one blade per unit span over (r, psi)')
-        self.add_output('inflow_angle', val=np.zeros(shape), units='rad',
-                        desc='Inflow angle atan2(U_P, U_T) over (r, psi)')
-        self.add_output('thrust', val=np.zeros((nr, nn)), units='N', desc='Rotor thrust')
-        self.add_output('torque', val=np.zeros((nr, nn)), units='N*m',
-                        desc='Rotor (shaft) torque')
-        self.add_output('inplane_force', val=np.zeros((nr, nn, 2)), units='N',
-                        desc='In-plane hub force along the disk e_x and e_y')
-        self.add_output('hub_moment', val=np.zeros((nr, nn, 2)), units='N*m',
-                        desc='Hub moment about the disk e_x and e_y')
+        self.add_output(
+            "thrust_per_span",
+            val=np.zeros(shape),
+            units="N/m",
+            desc="Sectional thrust of one blade per unit span over (r, psi)",
+        )
+        self.add_output(
+            "drag_per_span",
+            val=np.zeros(shape),
+            units="N/m",
+            desc="Sectional in-plane drag of one blade per unit span over (r, psi)",
+        )
+        self.add_output(
+            "inflow_angle",
+            val=np.zeros(shape),
+            units="rad",
+            desc="Inflow angle atan2(U_P, U_T) over (r, psi)",
+        )
+        self.add_output("thrust", val=np.zeros((nr, nn)), units="N", desc="Rotor thrust")
+        self.add_output("torque", val=np.zeros((nr, nn)), units="N*m", desc="Rotor (shaft) torque")
+        self.add_output(
+            "inplane_force",
+            val=np.zeros((nr, nn, 2)),
+            units="N",
+            desc="In-plane hub force along the disk e_x and e_y",
+        )
+        self.add_output(
+            "hub_moment",
+            val=np.zeros((nr, nn, 2)),
+            units="N*m",
+            desc="Hub moment about the disk e_x and e_y",
+        )
 
         pat = SparsityPatterns(nr, nn, nrad, naz)
-        wrt = ['inflow_states', 'rpm', 'axial_velocity', 'inplane_velocity', 'station_radius',
-               'chord', 'twist', 'density', 'dynamic_viscosity', 'speed_of_sound', 'radius']
-        if opts['hub_loss'] and (self._field.loads_have_loss or self._field.swirl):
-            wrt.append('hub_radius')
+        wrt = [
+            "inflow_states",
+            "rpm",
+            "axial_velocity",
+            "inplane_velocity",
+            "station_radius",
+            "chord",
+            "twist",
+            "density",
+            "dynamic_viscosity",
+            "speed_of_sound",
+            "radius",
+        ]
+        if opts["hub_loss"] and (self._field.loads_have_loss or self._field.swirl):
+            wrt.append("hub_radius")
         self._wrt = wrt
         # phi = atan2(U_P, U_T - v_t): with the swirl it depends on everything the drag does.
-        self._phi_wrt = wrt if self._field.swirl else [
-            'inflow_states', 'rpm', 'axial_velocity', 'inplane_velocity', 'station_radius',
-            'radius']
+        self._phi_wrt = (
+            wrt
+            if self._field.swirl
+            else [
+                "inflow_states",
+                "rpm",
+                "axial_velocity",
+                "inplane_velocity",
+                "station_radius",
+                "radius",
+            ]
+        )
         for name in wrt:
             kind, m = input_kind(name), input_size(name)
             rows, cols = pat.station(kind, m)
-            self.declare_partials(['thrust_per_span', 'drag_per_span'], name, rows=rows,
-                                  cols=cols)
+            self.declare_partials(["thrust_per_span", "drag_per_span"], name, rows=rows, cols=cols)
             if name in self._phi_wrt:
-                self.declare_partials('inflow_angle', name, rows=rows, cols=cols)
-            for out, k in (('thrust', 1), ('torque', 1), ('inplane_force', 2), ('hub_moment', 2)):
+                self.declare_partials("inflow_angle", name, rows=rows, cols=cols)
+            for out, k in (("thrust", 1), ("torque", 1), ("inplane_force", 2), ("hub_moment", 2)):
                 rows, cols = pat.op(k, kind, m)
                 self.declare_partials(out, name, rows=rows, cols=cols)
-        for out, k in (('thrust', 1), ('torque', 1), ('inplane_force', 2), ('hub_moment', 2)):
-            rows, cols = pat.op(k, 'radial')
-            self.declare_partials(out, 'station_width', rows=rows, cols=cols)
+        for out, k in (("thrust", 1), ("torque", 1), ("inplane_force", 2), ("hub_moment", 2)):
+            rows, cols = pat.op(k, "radial")
+            self.declare_partials(out, "station_width", rows=rows, cols=cols)
 
     def _values(self, inputs):
-        check_pitt_peters_inputs(self, inputs, self.options['hub_loss'])
+        check_pitt_peters_inputs(self, inputs, self.options["hub_loss"])
         return {name: inputs[name] for name in PITT_PETERS_INPUTS}
 
     def compute(self, inputs, outputs):
         fld = self._field
-        st = fld.evaluate(self._values(inputs), inputs['inflow_states'])
-        outputs['thrust_per_span'] = st.t
-        outputs['drag_per_span'] = st.d
-        outputs['inflow_angle'] = st.phi
-        ints = {name: fld.integrate(st, name) for name in
-                ('thrust', 'torque', 'moment_cos', 'moment_sin', 'drag_sin', 'drag_cos')}
-        outputs['thrust'] = ints['thrust']
-        outputs['torque'] = ints['torque']
+        st = fld.evaluate(self._values(inputs), inputs["inflow_states"])
+        outputs["thrust_per_span"] = st.t
+        outputs["drag_per_span"] = st.d
+        outputs["inflow_angle"] = st.phi
+        ints = {
+            name: fld.integrate(st, name)
+            for name in ("thrust", "torque", "moment_cos", "moment_sin", "drag_sin", "drag_cos")
+        }
+        outputs["thrust"] = ints["thrust"]
+        outputs["torque"] = ints["torque"]
         spin = fld.spin[:, None]
-        outputs['inplane_force'] = np.stack([-ints['drag_sin'], -spin * ints['drag_cos']], -1)
-        outputs['hub_moment'] = np.stack([-spin * ints['moment_sin'], -ints['moment_cos']], -1)
+        outputs["inplane_force"] = np.stack([-ints["drag_sin"], -spin * ints["drag_cos"]], -1)
+        outputs["hub_moment"] = np.stack([-spin * ints["moment_sin"], -ints["moment_cos"]], -1)
 
     def compute_partials(self, inputs, partials):
         fld = self._field
-        st = fld.evaluate(self._values(inputs), inputs['inflow_states'], partials=True)
+        st = fld.evaluate(self._values(inputs), inputs["inflow_states"], partials=True)
         keys = self._wrt
         dt = fld.chain(st, st.dt, keys)
         dd = fld.chain(st, st.dd, keys)
         dphi = fld.chain(st, st.dphi, self._phi_wrt)
         for name in keys:
-            partials['thrust_per_span', name] = dt[name].ravel()
-            partials['drag_per_span', name] = dd[name].ravel()
+            partials["thrust_per_span", name] = dt[name].ravel()
+            partials["drag_per_span", name] = dd[name].ravel()
             if name in self._phi_wrt:
-                partials['inflow_angle', name] = dphi[name].ravel()
+                partials["inflow_angle", name] = dphi[name].ravel()
 
         spin = fld.spin[:, None]
         ints = {}
-        for name, chained in (('thrust', dt), ('moment_cos', dt), ('moment_sin', dt),
-                              ('torque', dd), ('drag_sin', dd), ('drag_cos', dd)):
+        for name, chained in (
+            ("thrust", dt),
+            ("moment_cos", dt),
+            ("moment_sin", dt),
+            ("torque", dd),
+            ("drag_sin", dd),
+            ("drag_cos", dd),
+        ):
             ints[name] = fld.integrate_partials(st, name, chained)
-        comps = {'thrust': [(ints['thrust'], 1.0)], 'torque': [(ints['torque'], 1.0)],
-                 'inplane_force': [(ints['drag_sin'], -1.0), (ints['drag_cos'], -spin)],
-                 'hub_moment': [(ints['moment_sin'], -spin), (ints['moment_cos'], -1.0)]}
+        comps = {
+            "thrust": [(ints["thrust"], 1.0)],
+            "torque": [(ints["torque"], 1.0)],
+            "inplane_force": [(ints["drag_sin"], -1.0), (ints["drag_cos"], -spin)],
+            "hub_moment": [(ints["moment_sin"], -spin), (ints["moment_cos"], -1.0)],
+        }
         for out, parts in comps.items():
-            for name in keys + ['station_width']:
+            for name in keys + ["station_width"]:
                 if name not in parts[0][0]:
                     continue
                 vals = []

@@ -42,49 +42,72 @@ class RotorSpeedComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare("group", types=(list, tuple, np.ndarray),
-                             desc="speed-group index of each rotor")
+        self.options.declare(
+            "group", types=(list, tuple, np.ndarray), desc="speed-group index of each rotor"
+        )
         self.options.declare("num_groups", types=int, lower=1, desc="number of speed groups")
-        self.options.declare("num_nodes", default=1, types=int, lower=1,
-                             desc="number of operating points")
-        self.options.declare("mixing", default=None, types=(list, tuple, np.ndarray),
-                             allow_none=True,
-                             desc="(num_rotors, num_mixers) share of each mixer speed per "
-                                  "rotor (None: no mixer input)")
+        self.options.declare(
+            "num_nodes", default=1, types=int, lower=1, desc="number of operating points"
+        )
+        self.options.declare(
+            "mixing",
+            default=None,
+            types=(list, tuple, np.ndarray),
+            allow_none=True,
+            desc="(num_rotors, num_mixers) share of each mixer speed per "
+            "rotor (None: no mixer input)",
+        )
 
     def setup(self):
         group = np.asarray(self.options["group"], dtype=int)
         ng, nn = self.options["num_groups"], self.options["num_nodes"]
         if group.ndim != 1 or group.size == 0:
-            raise ValueError(f"{self.msginfo}: 'group' = {group.tolist()} is not allowed: must "
-                             "be a non-empty 1-D sequence of rotor-group indices")
+            raise ValueError(
+                f"{self.msginfo}: 'group' = {group.tolist()} is not allowed: must "
+                "be a non-empty 1-D sequence of rotor-group indices"
+            )
         check_range("group", group, lower=0, upper=ng - 1, where=self.msginfo)
         nr = group.size
         self._group = group
-        self.add_input("group_speed", np.full((nn, ng), 1000.0), units="rpm",
-                       desc="rotor speed of each group")
-        self.add_output("rpm", np.full((nr, nn), 1000.0), units="rpm",
-                        desc="rotor speed of each rotor")
+        self.add_input(
+            "group_speed", np.full((nn, ng), 1000.0), units="rpm", desc="rotor speed of each group"
+        )
+        self.add_output(
+            "rpm", np.full((nr, nn), 1000.0), units="rpm", desc="rotor speed of each rotor"
+        )
         rotor, node = np.meshgrid(np.arange(nr), np.arange(nn), indexing="ij")
-        self.declare_partials("rpm", "group_speed", rows=(rotor * nn + node).ravel(),
-                              cols=(node * ng + group[rotor]).ravel(), val=1.0)
+        self.declare_partials(
+            "rpm",
+            "group_speed",
+            rows=(rotor * nn + node).ravel(),
+            cols=(node * ng + group[rotor]).ravel(),
+            val=1.0,
+        )
 
         mixing = self.options["mixing"]
         self._mixing = None
         if mixing is not None:
             mixing = np.asarray(mixing, dtype=float)
             if mixing.ndim != 2 or mixing.shape[0] != nr or not np.all(np.isfinite(mixing)):
-                raise ValueError(f"{self.msginfo}: mixing has shape {mixing.shape}; allowed: "
-                                 f"finite values of shape ({nr}, num_mixers), one row per "
-                                 f"rotor.")
+                raise ValueError(
+                    f"{self.msginfo}: mixing has shape {mixing.shape}; allowed: "
+                    f"finite values of shape ({nr}, num_mixers), one row per "
+                    f"rotor."
+                )
             self._mixing = mixing
             nm = mixing.shape[1]
-            self.add_input("mixer_speed", np.zeros((nn, nm)), units="rpm",
-                           desc="speed of each mixer input")
+            self.add_input(
+                "mixer_speed", np.zeros((nn, nm)), units="rpm", desc="speed of each mixer input"
+            )
             # d rpm[i, k] / d mixer_speed[k, j] = mixing[i, j]
             r, k, j = np.meshgrid(np.arange(nr), np.arange(nn), np.arange(nm), indexing="ij")
-            self.declare_partials("rpm", "mixer_speed", rows=(r * nn + k).ravel(),
-                                  cols=(k * nm + j).ravel(), val=mixing[r, j].ravel())
+            self.declare_partials(
+                "rpm",
+                "mixer_speed",
+                rows=(r * nn + k).ravel(),
+                cols=(k * nm + j).ravel(),
+                val=mixing[r, j].ravel(),
+            )
 
     def compute(self, inputs, outputs):
         rpm = inputs["group_speed"][:, self._group].T

@@ -5,7 +5,7 @@ import openmdao.api as om
 
 from lpc_mdo.checks import RangeCheck, check_range
 
-PANEL_MODELS = ('curved', 'flat')
+PANEL_MODELS = ("curved", "flat")
 
 
 class PanelBucklingComp(om.ExplicitComponent):
@@ -56,51 +56,84 @@ class PanelBucklingComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare('num_elements', types=int, lower=1, desc='Number of skin panels')
-        self.options.declare('panel', default='curved', values=PANEL_MODELS,
-                             desc="'curved' (paper eq. 18, Roark) or 'flat' plate")
-        self.options.declare('flat_plate_coefficient', default=4.0, types=(int, float),
-                             check_valid=_check_positive,
-                             desc='Buckling coefficient k of the flat panel (> 0)')
+        self.options.declare("num_elements", types=int, lower=1, desc="Number of skin panels")
+        self.options.declare(
+            "panel",
+            default="curved",
+            values=PANEL_MODELS,
+            desc="'curved' (paper eq. 18, Roark) or 'flat' plate",
+        )
+        self.options.declare(
+            "flat_plate_coefficient",
+            default=4.0,
+            types=(int, float),
+            check_valid=_check_positive,
+            desc="Buckling coefficient k of the flat panel (> 0)",
+        )
 
     def setup(self):
-        ne = self.options['num_elements']
-        curved = self.options['panel'] == 'curved'
-        self._skins = ('top', 'bottom')
+        ne = self.options["num_elements"]
+        curved = self.options["panel"] == "curved"
+        self._skins = ("top", "bottom")
         for skin in self._skins:
-            self.add_input(f'{skin}_skin_stress', val=np.zeros(ne), units='Pa',
-                           desc=f'{skin} skin normal stress, tension positive')
-            self.add_input(f'{skin}_skin_thickness', val=np.full(ne, 1.5e-3), units='m',
-                           desc=f'{skin} skin thickness')
+            self.add_input(
+                f"{skin}_skin_stress",
+                val=np.zeros(ne),
+                units="Pa",
+                desc=f"{skin} skin normal stress, tension positive",
+            )
+            self.add_input(
+                f"{skin}_skin_thickness",
+                val=np.full(ne, 1.5e-3),
+                units="m",
+                desc=f"{skin} skin thickness",
+            )
             if curved:
-                self.add_input(f'{skin}_skin_radius', val=np.full(ne, 2.0), units='m',
-                               desc=f'radius of curvature of the {skin} skin panel')
-        self.add_input('box_width', val=np.full(ne, 0.5), units='m',
-                       desc='panel width b, spar to spar')
-        self.add_input('youngs_modulus', val=69.0e9, units='Pa', desc="Young's modulus E")
-        self.add_input('poisson_ratio', val=0.33, units=None, desc="Poisson's ratio")
+                self.add_input(
+                    f"{skin}_skin_radius",
+                    val=np.full(ne, 2.0),
+                    units="m",
+                    desc=f"radius of curvature of the {skin} skin panel",
+                )
+        self.add_input(
+            "box_width", val=np.full(ne, 0.5), units="m", desc="panel width b, spar to spar"
+        )
+        self.add_input("youngs_modulus", val=69.0e9, units="Pa", desc="Young's modulus E")
+        self.add_input("poisson_ratio", val=0.33, units=None, desc="Poisson's ratio")
         ar = np.arange(ne)
         for skin in self._skins:
-            crit, ratio = f'{skin}_skin_critical_stress', f'{skin}_skin_buckling_ratio'
-            self.add_output(crit, val=np.ones(ne), units='Pa',
-                            desc=f'critical buckling stress of the {skin} skin panel')
-            self.add_output(ratio, val=np.zeros(ne), units=None,
-                            desc=f'{skin} skin compressive stress over critical stress')
-            geo = [f'{skin}_skin_thickness', 'box_width']
+            crit, ratio = f"{skin}_skin_critical_stress", f"{skin}_skin_buckling_ratio"
+            self.add_output(
+                crit,
+                val=np.ones(ne),
+                units="Pa",
+                desc=f"critical buckling stress of the {skin} skin panel",
+            )
+            self.add_output(
+                ratio,
+                val=np.zeros(ne),
+                units=None,
+                desc=f"{skin} skin compressive stress over critical stress",
+            )
+            geo = [f"{skin}_skin_thickness", "box_width"]
             if curved:
-                geo.append(f'{skin}_skin_radius')
+                geo.append(f"{skin}_skin_radius")
             self.declare_partials([crit, ratio], geo, rows=ar, cols=ar)
-            self.declare_partials([crit, ratio], ['youngs_modulus', 'poisson_ratio'])
-            self.declare_partials(ratio, f'{skin}_skin_stress', rows=ar, cols=ar)
+            self.declare_partials([crit, ratio], ["youngs_modulus", "poisson_ratio"])
+            self.declare_partials(ratio, f"{skin}_skin_stress", rows=ar, cols=ar)
 
     def _critical(self, t, b, r, modulus, nu):
         """σ' and its partials wrt (t, b, r, E, ν)."""
         c = modulus / (1.0 - nu**2)
-        if self.options['panel'] == 'flat':
-            k = self.options['flat_plate_coefficient']
-            crit = k * np.pi**2 / 12.0 * c * (t / b)**2
-            d = {'t': 2.0 * crit / t, 'b': -2.0 * crit / b, 'E': crit / modulus,
-                 'nu': crit * 2.0 * nu / (1.0 - nu**2)}
+        if self.options["panel"] == "flat":
+            k = self.options["flat_plate_coefficient"]
+            crit = k * np.pi**2 / 12.0 * c * (t / b) ** 2
+            d = {
+                "t": 2.0 * crit / t,
+                "b": -2.0 * crit / b,
+                "E": crit / modulus,
+                "nu": crit * 2.0 * nu / (1.0 - nu**2),
+            }
             return crit, d
         beta = np.pi * t / b
         a = t / r
@@ -113,48 +146,71 @@ class PanelBucklingComp(om.ExplicitComponent):
         db_dbeta = 2.0 * beta**3 / root + 2.0 * beta
         db_dg = a**2 / (2.0 * root)
         d = {
-            't': c / 6.0 * (db_da / r + db_dbeta * np.pi / b),
-            'b': c / 6.0 * db_dbeta * (-beta / b),
-            'r': c / 6.0 * db_da * (-a / r),
-            'E': crit / modulus,
-            'nu': crit * 2.0 * nu / (1.0 - nu**2) + c / 6.0 * db_dg * (-24.0 * nu),
+            "t": c / 6.0 * (db_da / r + db_dbeta * np.pi / b),
+            "b": c / 6.0 * db_dbeta * (-beta / b),
+            "r": c / 6.0 * db_da * (-a / r),
+            "E": crit / modulus,
+            "nu": crit * 2.0 * nu / (1.0 - nu**2) + c / 6.0 * db_dg * (-24.0 * nu),
         }
         return crit, d
 
     def _geometry(self, inputs, skin):
-        t = inputs[f'{skin}_skin_thickness']
-        b = inputs['box_width']
-        r = inputs[f'{skin}_skin_radius'] if self.options['panel'] == 'curved' else None
+        t = inputs[f"{skin}_skin_thickness"]
+        b = inputs["box_width"]
+        r = inputs[f"{skin}_skin_radius"] if self.options["panel"] == "curved" else None
         return t, b, r
 
     def compute(self, inputs, outputs):
-        modulus, nu = inputs['youngs_modulus'], inputs['poisson_ratio']
-        check_range("poisson_ratio", nu[0], lower=-1.0, upper=0.5, lower_open=True,
-                    upper_open=True, error=om.AnalysisError, where=self.msginfo)
+        modulus, nu = inputs["youngs_modulus"], inputs["poisson_ratio"]
+        check_range(
+            "poisson_ratio",
+            nu[0],
+            lower=-1.0,
+            upper=0.5,
+            lower_open=True,
+            upper_open=True,
+            error=om.AnalysisError,
+            where=self.msginfo,
+        )
         for skin in self._skins:
             t, b, r = self._geometry(inputs, skin)
-            for name, val in ((f'{skin}_skin_thickness', t), ('box_width', b),
-                              (f'{skin}_skin_radius', r)):
+            for name, val in (
+                (f"{skin}_skin_thickness", t),
+                ("box_width", b),
+                (f"{skin}_skin_radius", r),
+            ):
                 if val is not None:
-                    check_range(name, val, lower=0.0, lower_open=True, units="m",
-                                error=om.AnalysisError, where=self.msginfo)
+                    check_range(
+                        name,
+                        val,
+                        lower=0.0,
+                        lower_open=True,
+                        units="m",
+                        error=om.AnalysisError,
+                        where=self.msginfo,
+                    )
             crit, _ = self._critical(t, b, r, modulus, nu)
-            outputs[f'{skin}_skin_critical_stress'] = crit
-            outputs[f'{skin}_skin_buckling_ratio'] = -inputs[f'{skin}_skin_stress'] / crit
+            outputs[f"{skin}_skin_critical_stress"] = crit
+            outputs[f"{skin}_skin_buckling_ratio"] = -inputs[f"{skin}_skin_stress"] / crit
 
     def compute_partials(self, inputs, partials):
-        modulus, nu = inputs['youngs_modulus'], inputs['poisson_ratio']
+        modulus, nu = inputs["youngs_modulus"], inputs["poisson_ratio"]
         for skin in self._skins:
             t, b, r = self._geometry(inputs, skin)
             crit, d = self._critical(t, b, r, modulus, nu)
-            sigma = inputs[f'{skin}_skin_stress']
-            names = {'t': f'{skin}_skin_thickness', 'b': 'box_width', 'r': f'{skin}_skin_radius',
-                     'E': 'youngs_modulus', 'nu': 'poisson_ratio'}
-            cname, rname = f'{skin}_skin_critical_stress', f'{skin}_skin_buckling_ratio'
+            sigma = inputs[f"{skin}_skin_stress"]
+            names = {
+                "t": f"{skin}_skin_thickness",
+                "b": "box_width",
+                "r": f"{skin}_skin_radius",
+                "E": "youngs_modulus",
+                "nu": "poisson_ratio",
+            }
+            cname, rname = f"{skin}_skin_critical_stress", f"{skin}_skin_buckling_ratio"
             for key, deriv in d.items():
                 partials[cname, names[key]] = deriv
                 partials[rname, names[key]] = sigma / crit**2 * deriv
-            partials[rname, f'{skin}_skin_stress'] = -1.0 / crit
+            partials[rname, f"{skin}_skin_stress"] = -1.0 / crit
 
 
 _check_positive = RangeCheck(lower=0.0, lower_open=True, where="PanelBucklingComp")

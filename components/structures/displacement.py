@@ -34,12 +34,22 @@ class VerticalDisplacementComp(om.ExplicitComponent):
 
     def setup(self):
         n = self.options["num_nodes"]
-        self.add_input("displacements", np.zeros((n, 3)), units="m",
-                       desc="node displacements, body frame")
-        self.add_output("vertical_displacement", np.zeros((1, n)), units="m",
-                        desc="signed vertical displacement of each node")
-        self.declare_partials("vertical_displacement", "displacements", rows=np.arange(n),
-                              cols=3 * np.arange(n) + 2, val=self.options["sign"])
+        self.add_input(
+            "displacements", np.zeros((n, 3)), units="m", desc="node displacements, body frame"
+        )
+        self.add_output(
+            "vertical_displacement",
+            np.zeros((1, n)),
+            units="m",
+            desc="signed vertical displacement of each node",
+        )
+        self.declare_partials(
+            "vertical_displacement",
+            "displacements",
+            rows=np.arange(n),
+            cols=3 * np.arange(n) + 2,
+            val=self.options["sign"],
+        )
 
     def compute(self, inputs, outputs):
         outputs["vertical_displacement"][0] = self.options["sign"] * inputs["displacements"][:, 2]

@@ -40,18 +40,27 @@ class MeshDeformationComp(om.ExplicitComponent):
 
     def setup(self):
         nx, ny = self.options["num_chord_nodes"], self.options["num_span_nodes"]
-        check_integer("num_span_nodes", ny, upper=None if ny % 2 else ny - 1,
-                      allowed="odd (a node on the symmetry plane)", where=self.msginfo)
+        check_integer(
+            "num_span_nodes",
+            ny,
+            upper=None if ny % 2 else ny - 1,
+            allowed="odd (a node on the symmetry plane)",
+            where=self.msginfo,
+        )
         half = ny // 2
         nr = half + 1
         self.add_input("mesh", np.zeros((nx, ny, 3)), units="m", desc="undeformed mesh")
-        self.add_input("right_displacements", np.zeros((nx * nr, 3)), units="m",
-                       desc="displacements of the right-half mesh nodes")
-        self.add_output("deformed_mesh", np.zeros((nx, ny, 3)), units="m",
-                        desc="deformed mesh")
+        self.add_input(
+            "right_displacements",
+            np.zeros((nx * nr, 3)),
+            units="m",
+            desc="displacements of the right-half mesh nodes",
+        )
+        self.add_output("deformed_mesh", np.zeros((nx, ny, 3)), units="m", desc="deformed mesh")
         n = nx * ny * 3
-        self.declare_partials("deformed_mesh", "mesh", rows=np.arange(n), cols=np.arange(n),
-                              val=1.0)
+        self.declare_partials(
+            "deformed_mesh", "mesh", rows=np.arange(n), cols=np.arange(n), val=1.0
+        )
         rows, cols, vals = [], [], []
         out_index = np.arange(n).reshape(nx, ny, 3)
         in_index = np.arange(nx * nr * 3).reshape(nx, nr, 3)
@@ -65,8 +74,9 @@ class MeshDeformationComp(om.ExplicitComponent):
         self._rows = np.concatenate(rows)
         self._cols = np.concatenate(cols)
         self._vals = np.concatenate(vals)
-        self.declare_partials("deformed_mesh", "right_displacements", rows=self._rows,
-                              cols=self._cols, val=self._vals)
+        self.declare_partials(
+            "deformed_mesh", "right_displacements", rows=self._rows, cols=self._cols, val=self._vals
+        )
 
     def compute(self, inputs, outputs):
         out = inputs["mesh"].reshape(-1).copy()

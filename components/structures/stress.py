@@ -10,21 +10,29 @@ from lpc_mdo.components.structures.box_section import TORSION_FORMULAS
 # bottom-front, then the web at local y = +w/2 (and, with web_points='both', at -w/2). For a right
 # wing (local y aft, local z down) "front" is y = -w/2 and "top" is z = -h/2.
 _CORNERS = ((-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0))
-_WEBS = {'one': (1.0,), 'both': (1.0, -1.0)}
+_WEBS = {"one": (1.0,), "both": (1.0, -1.0)}
 
 # Regularisation of the von Mises square root (Pa**2): keeps its derivative finite at zero stress
 # and changes the stress by at most 1e-4 Pa.
 _VM_EPS = 1e-8
 
-_VARS = ('N', 'Vz', 'Mx', 'My', 'Mz', 'w', 'h', 'tt', 'tb', 'tw', 'A', 'Iy', 'Iz', 'J')
+_VARS = ("N", "Vz", "Mx", "My", "Mz", "w", "h", "tt", "tb", "tw", "A", "Iy", "Iz", "J")
 # (input name, column within the element's entries) for each derivative variable
 _INPUT_OF = {
-    'N': ('section_forces', 0), 'Vz': ('section_forces', 2),
-    'Mx': ('section_moments', 0), 'My': ('section_moments', 1), 'Mz': ('section_moments', 2),
-    'w': ('box_width', None), 'h': ('box_height', None), 'tt': ('top_skin_thickness', None),
-    'tb': ('bottom_skin_thickness', None), 'tw': ('web_thickness', None), 'A': ('area', None),
-    'Iy': ('bending_inertia_vertical', None), 'Iz': ('bending_inertia_inplane', None),
-    'J': ('torsion_constant', None),
+    "N": ("section_forces", 0),
+    "Vz": ("section_forces", 2),
+    "Mx": ("section_moments", 0),
+    "My": ("section_moments", 1),
+    "Mz": ("section_moments", 2),
+    "w": ("box_width", None),
+    "h": ("box_height", None),
+    "tt": ("top_skin_thickness", None),
+    "tb": ("bottom_skin_thickness", None),
+    "tw": ("web_thickness", None),
+    "A": ("area", None),
+    "Iy": ("bending_inertia_vertical", None),
+    "Iz": ("bending_inertia_inplane", None),
+    "J": ("torsion_constant", None),
 }
 
 
@@ -92,65 +100,119 @@ class BoxStressComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare('num_elements', types=int, lower=1, desc='Number of beam elements')
-        self.options.declare('torsion_formula', default='polar', values=TORSION_FORMULAS,
-                             desc="Torsional shear: 'polar' (M_x r/J) or 'bredt' (M_x/(2 A_m t))")
-        self.options.declare('web_points', default='one', values=tuple(_WEBS),
-                             desc="'one': five points (paper); 'both': a sixth point on the "
-                                  'other web')
+        self.options.declare("num_elements", types=int, lower=1, desc="Number of beam elements")
+        self.options.declare(
+            "torsion_formula",
+            default="polar",
+            values=TORSION_FORMULAS,
+            desc="Torsional shear: 'polar' (M_x r/J) or 'bredt' (M_x/(2 A_m t))",
+        )
+        self.options.declare(
+            "web_points",
+            default="one",
+            values=tuple(_WEBS),
+            desc="'one': five points (paper); 'both': a sixth point on the other web",
+        )
 
     def setup(self):
-        ne = self.options['num_elements']
-        polar = self.options['torsion_formula'] == 'polar'
-        npts = 4 + len(_WEBS[self.options['web_points']])
+        ne = self.options["num_elements"]
+        polar = self.options["torsion_formula"] == "polar"
+        npts = 4 + len(_WEBS[self.options["web_points"]])
         self._npts = npts
 
-        self.add_input('section_forces', val=np.zeros((ne, 3)), units='N',
-                       desc='mean internal forces (axial, shear y, shear z), element frame')
-        self.add_input('section_moments', val=np.zeros((ne, 3)), units='N*m',
-                       desc='mean internal moments (torque, bending y, bending z), element frame')
-        self.add_input('box_width', val=np.full(ne, 0.5), units='m', desc='outer box width')
-        self.add_input('box_height', val=np.full(ne, 0.15), units='m', desc='outer box height')
-        self.add_input('top_skin_thickness', val=np.full(ne, 1.5e-3), units='m',
-                       desc='top skin thickness')
-        self.add_input('bottom_skin_thickness', val=np.full(ne, 1.5e-3), units='m',
-                       desc='bottom skin thickness')
-        self.add_input('web_thickness', val=np.full(ne, 1.5e-3), units='m',
-                       desc='mean spar web thickness')
-        self.add_input('area', val=np.ones(ne), units='m**2', desc='cross-section area')
-        self.add_input('bending_inertia_vertical', val=np.ones(ne), units='m**4',
-                       desc='second moment of area I_y (vertical bending)')
-        self.add_input('bending_inertia_inplane', val=np.ones(ne), units='m**4',
-                       desc='second moment of area I_z (in-plane bending)')
+        self.add_input(
+            "section_forces",
+            val=np.zeros((ne, 3)),
+            units="N",
+            desc="mean internal forces (axial, shear y, shear z), element frame",
+        )
+        self.add_input(
+            "section_moments",
+            val=np.zeros((ne, 3)),
+            units="N*m",
+            desc="mean internal moments (torque, bending y, bending z), element frame",
+        )
+        self.add_input("box_width", val=np.full(ne, 0.5), units="m", desc="outer box width")
+        self.add_input("box_height", val=np.full(ne, 0.15), units="m", desc="outer box height")
+        self.add_input(
+            "top_skin_thickness", val=np.full(ne, 1.5e-3), units="m", desc="top skin thickness"
+        )
+        self.add_input(
+            "bottom_skin_thickness",
+            val=np.full(ne, 1.5e-3),
+            units="m",
+            desc="bottom skin thickness",
+        )
+        self.add_input(
+            "web_thickness", val=np.full(ne, 1.5e-3), units="m", desc="mean spar web thickness"
+        )
+        self.add_input("area", val=np.ones(ne), units="m**2", desc="cross-section area")
+        self.add_input(
+            "bending_inertia_vertical",
+            val=np.ones(ne),
+            units="m**4",
+            desc="second moment of area I_y (vertical bending)",
+        )
+        self.add_input(
+            "bending_inertia_inplane",
+            val=np.ones(ne),
+            units="m**4",
+            desc="second moment of area I_z (in-plane bending)",
+        )
         if polar:
-            self.add_input('torsion_constant', val=np.ones(ne), units='m**4',
-                           desc='torsion constant J')
-        self.add_input('allowable_stress', val=350.0e6, units='Pa',
-                       desc='allowable von Mises stress')
-        self.add_output('von_mises_stress', val=np.zeros((ne, npts)), units='Pa',
-                        desc='von Mises stress at the stress points of each section')
-        self.add_output('stress_ratio', val=np.zeros((ne, npts)), units=None,
-                        desc='von Mises stress over the allowable stress')
-        self.add_output('top_skin_stress', val=np.zeros(ne), units='Pa',
-                        desc='normal stress in the top skin (outer fibre), tension positive')
-        self.add_output('bottom_skin_stress', val=np.zeros(ne), units='Pa',
-                        desc='normal stress in the bottom skin (outer fibre), tension positive')
+            self.add_input(
+                "torsion_constant", val=np.ones(ne), units="m**4", desc="torsion constant J"
+            )
+        self.add_input(
+            "allowable_stress", val=350.0e6, units="Pa", desc="allowable von Mises stress"
+        )
+        self.add_output(
+            "von_mises_stress",
+            val=np.zeros((ne, npts)),
+            units="Pa",
+            desc="von Mises stress at the stress points of each section",
+        )
+        self.add_output(
+            "stress_ratio",
+            val=np.zeros((ne, npts)),
+            units=None,
+            desc="von Mises stress over the allowable stress",
+        )
+        self.add_output(
+            "top_skin_stress",
+            val=np.zeros(ne),
+            units="Pa",
+            desc="normal stress in the top skin (outer fibre), tension positive",
+        )
+        self.add_output(
+            "bottom_skin_stress",
+            val=np.zeros(ne),
+            units="Pa",
+            desc="normal stress in the bottom skin (outer fibre), tension positive",
+        )
 
         # Which variables each output depends on (structurally).
-        self._vm_vars = [v for v in _VARS if polar or v != 'J']
+        self._vm_vars = [v for v in _VARS if polar or v != "J"]
         e = np.arange(ne)
         rows_vm = np.arange(ne * npts).reshape(ne, npts)
         for name, cols_of in self._input_columns(ne, self._vm_vars).items():
             ncol = cols_of.shape[1]
-            self.declare_partials(['von_mises_stress', 'stress_ratio'], name,
-                                  rows=np.repeat(rows_vm, ncol, axis=1).ravel(),
-                                  cols=np.tile(cols_of, (1, npts)).ravel())
-        self.declare_partials('stress_ratio', 'allowable_stress')
-        skin_vars = ('N', 'My', 'h', 'A', 'Iy')
+            self.declare_partials(
+                ["von_mises_stress", "stress_ratio"],
+                name,
+                rows=np.repeat(rows_vm, ncol, axis=1).ravel(),
+                cols=np.tile(cols_of, (1, npts)).ravel(),
+            )
+        self.declare_partials("stress_ratio", "allowable_stress")
+        skin_vars = ("N", "My", "h", "A", "Iy")
         for name, cols_of in self._input_columns(ne, skin_vars).items():
             ncol = cols_of.shape[1]
-            self.declare_partials(['top_skin_stress', 'bottom_skin_stress'], name,
-                                  rows=np.repeat(e, ncol), cols=cols_of.ravel())
+            self.declare_partials(
+                ["top_skin_stress", "bottom_skin_stress"],
+                name,
+                rows=np.repeat(e, ncol),
+                cols=cols_of.ravel(),
+            )
 
     @staticmethod
     def _input_columns(ne, variables):
@@ -164,34 +226,50 @@ class BoxStressComp(om.ExplicitComponent):
         return {name: np.stack(c, axis=1) for name, c in cols.items()}
 
     def _variables(self, inputs):
-        forces, moments = inputs['section_forces'], inputs['section_moments']
-        x = {'N': forces[:, 0], 'Vz': forces[:, 2], 'Mx': moments[:, 0], 'My': moments[:, 1],
-             'Mz': moments[:, 2]}
-        for var in ('w', 'h', 'tt', 'tb', 'tw', 'A', 'Iy', 'Iz', 'J'):
+        forces, moments = inputs["section_forces"], inputs["section_moments"]
+        x = {
+            "N": forces[:, 0],
+            "Vz": forces[:, 2],
+            "Mx": moments[:, 0],
+            "My": moments[:, 1],
+            "Mz": moments[:, 2],
+        }
+        for var in ("w", "h", "tt", "tb", "tw", "A", "Iy", "Iz", "J"):
             name = _INPUT_OF[var][0]
             if name in inputs:
                 x[var] = inputs[name]
         return x
 
     def _check(self, x):
-        for var in ('w', 'h', 'tt', 'tb', 'tw', 'A', 'Iy', 'Iz', 'J'):
+        for var in ("w", "h", "tt", "tb", "tw", "A", "Iy", "Iz", "J"):
             if var in x:
-                check_range(_INPUT_OF[var][0], x[var], lower=0.0, lower_open=True,
-                            error=om.AnalysisError, where=self.msginfo)
+                check_range(
+                    _INPUT_OF[var][0],
+                    x[var],
+                    lower=0.0,
+                    lower_open=True,
+                    error=om.AnalysisError,
+                    where=self.msginfo,
+                )
 
     def _terms(self, x, derivs):
         """σ, τ (ne, npts) and, if derivs, their partials {var: (ne, npts)}."""
-        polar = self.options['torsion_formula'] == 'polar'
-        webs = _WEBS[self.options['web_points']]
+        polar = self.options["torsion_formula"] == "polar"
+        webs = _WEBS[self.options["web_points"]]
         points = list(_CORNERS) + [(sy, 0.0) for sy in webs]
         sy = np.array([p[0] for p in points])
         sz = np.array([p[1] for p in points])
         is_web = np.arange(len(points)) >= 4
         col = np.newaxis
-        w, h, tt, tb, tw = x['w'][:, col], x['h'][:, col], x['tt'][:, col], x['tb'][:, col], \
-            x['tw'][:, col]
-        area, iy, iz = x['A'][:, col], x['Iy'][:, col], x['Iz'][:, col]
-        n, vz, mx, my, mz = (x[k][:, col] for k in ('N', 'Vz', 'Mx', 'My', 'Mz'))
+        w, h, tt, tb, tw = (
+            x["w"][:, col],
+            x["h"][:, col],
+            x["tt"][:, col],
+            x["tb"][:, col],
+            x["tw"][:, col],
+        )
+        area, iy, iz = x["A"][:, col], x["Iy"][:, col], x["Iz"][:, col]
+        n, vz, mx, my, mz = (x[k][:, col] for k in ("N", "Vz", "Mx", "My", "Mz"))
         zero = np.zeros((w.shape[0], len(points)))
 
         sigma = n / area + my * sz * h / (2.0 * iy) - mz * sy * w / (2.0 * iz)
@@ -199,7 +277,7 @@ class BoxStressComp(om.ExplicitComponent):
         # Torsional shear at each point (sign: + on the web at +y, - on the web at -y).
         sign_t = np.where(is_web, sy, 1.0)
         if polar:
-            j = x['J'][:, col]
+            j = x["J"][:, col]
             r = np.where(is_web, 0.5 * w, 0.5 * np.sqrt(w * w + h * h))
             tau_t = sign_t * mx * r / j
         else:
@@ -217,83 +295,95 @@ class BoxStressComp(om.ExplicitComponent):
 
         ds = {k: zero.copy() for k in self._vm_vars}
         dt = {k: zero.copy() for k in self._vm_vars}
-        ds['N'] = ds['N'] + 1.0 / area
-        ds['A'] = ds['A'] - n / area**2
-        ds['My'] = ds['My'] + sz * h / (2.0 * iy)
-        ds['h'] = ds['h'] + my * sz / (2.0 * iy)
-        ds['Iy'] = ds['Iy'] - my * sz * h / (2.0 * iy**2)
-        ds['Mz'] = ds['Mz'] - sy * w / (2.0 * iz)
-        ds['w'] = ds['w'] - mz * sy / (2.0 * iz)
-        ds['Iz'] = ds['Iz'] + mz * sy * w / (2.0 * iz**2)
+        ds["N"] = ds["N"] + 1.0 / area
+        ds["A"] = ds["A"] - n / area**2
+        ds["My"] = ds["My"] + sz * h / (2.0 * iy)
+        ds["h"] = ds["h"] + my * sz / (2.0 * iy)
+        ds["Iy"] = ds["Iy"] - my * sz * h / (2.0 * iy**2)
+        ds["Mz"] = ds["Mz"] - sy * w / (2.0 * iz)
+        ds["w"] = ds["w"] - mz * sy / (2.0 * iz)
+        ds["Iz"] = ds["Iz"] + mz * sy * w / (2.0 * iz**2)
 
         if polar:
-            dt['Mx'] = dt['Mx'] + sign_t * r / j
-            dt['J'] = dt['J'] - tau_t / j
+            dt["Mx"] = dt["Mx"] + sign_t * r / j
+            dt["J"] = dt["J"] - tau_t / j
             dr_dw = np.where(is_web, 0.5, w / (4.0 * np.where(is_web, 1.0, r)))
             dr_dh = np.where(is_web, 0.0, h / (4.0 * np.where(is_web, 1.0, r)))
-            dt['w'] = dt['w'] + sign_t * mx / j * dr_dw
-            dt['h'] = dt['h'] + sign_t * mx / j * dr_dh
+            dt["w"] = dt["w"] + sign_t * mx / j * dr_dw
+            dt["h"] = dt["h"] + sign_t * mx / j * dr_dh
         else:
-            dt['Mx'] = dt['Mx'] + sign_t / (2.0 * am * t_wall)
+            dt["Mx"] = dt["Mx"] + sign_t / (2.0 * am * t_wall)
             d_am = -tau_t / am
-            dt['w'] = dt['w'] + d_am * hm
-            dt['h'] = dt['h'] + d_am * wm
-            dt['tt'] = dt['tt'] - d_am * 0.5 * wm - np.where(~is_web & (sz < 0.0),
-                                                              tau_t / t_wall, 0.0)
-            dt['tb'] = dt['tb'] - d_am * 0.5 * wm - np.where(~is_web & (sz > 0.0),
-                                                              tau_t / t_wall, 0.0)
-            dt['tw'] = dt['tw'] - d_am * hm - np.where(is_web, tau_t / t_wall, 0.0)
+            dt["w"] = dt["w"] + d_am * hm
+            dt["h"] = dt["h"] + d_am * wm
+            dt["tt"] = (
+                dt["tt"] - d_am * 0.5 * wm - np.where(~is_web & (sz < 0.0), tau_t / t_wall, 0.0)
+            )
+            dt["tb"] = (
+                dt["tb"] - d_am * 0.5 * wm - np.where(~is_web & (sz > 0.0), tau_t / t_wall, 0.0)
+            )
+            dt["tw"] = dt["tw"] - d_am * hm - np.where(is_web, tau_t / t_wall, 0.0)
 
         # Transverse shear in the webs.
         web = is_web.astype(float)
         c_q = web * vz / (2.0 * tw * iy)
-        dt['Vz'] = dt['Vz'] + web * q / (2.0 * tw * iy)
-        dt['Iy'] = dt['Iy'] - tau_s / iy
-        dt['tw'] = dt['tw'] - tau_s / tw + c_q * h * h / 4.0
-        dt['w'] = dt['w'] + c_q * t_cap * h / 2.0
-        dt['h'] = dt['h'] + c_q * (w * t_cap / 2.0 + tw * h / 2.0)
-        dt['tt'] = dt['tt'] + c_q * w * h / 4.0
-        dt['tb'] = dt['tb'] + c_q * w * h / 4.0
+        dt["Vz"] = dt["Vz"] + web * q / (2.0 * tw * iy)
+        dt["Iy"] = dt["Iy"] - tau_s / iy
+        dt["tw"] = dt["tw"] - tau_s / tw + c_q * h * h / 4.0
+        dt["w"] = dt["w"] + c_q * t_cap * h / 2.0
+        dt["h"] = dt["h"] + c_q * (w * t_cap / 2.0 + tw * h / 2.0)
+        dt["tt"] = dt["tt"] + c_q * w * h / 4.0
+        dt["tb"] = dt["tb"] + c_q * w * h / 4.0
         return sigma, tau, ds, dt
 
     def compute(self, inputs, outputs):
         x = self._variables(inputs)
         self._check(x)
         sigma, tau, _, _ = self._terms(x, derivs=False)
-        allowable = inputs['allowable_stress']
-        check_range("allowable_stress", allowable[0], lower=0.0, lower_open=True, units="Pa",
-                    error=om.AnalysisError, where=self.msginfo)
+        allowable = inputs["allowable_stress"]
+        check_range(
+            "allowable_stress",
+            allowable[0],
+            lower=0.0,
+            lower_open=True,
+            units="Pa",
+            error=om.AnalysisError,
+            where=self.msginfo,
+        )
         vm = np.sqrt(sigma**2 + 3.0 * tau**2 + _VM_EPS)
-        outputs['von_mises_stress'] = vm
-        outputs['stress_ratio'] = vm / allowable
-        bending = x['My'] * x['h'] / (2.0 * x['Iy'])
-        outputs['top_skin_stress'] = x['N'] / x['A'] - bending
-        outputs['bottom_skin_stress'] = x['N'] / x['A'] + bending
+        outputs["von_mises_stress"] = vm
+        outputs["stress_ratio"] = vm / allowable
+        bending = x["My"] * x["h"] / (2.0 * x["Iy"])
+        outputs["top_skin_stress"] = x["N"] / x["A"] - bending
+        outputs["bottom_skin_stress"] = x["N"] / x["A"] + bending
 
     def compute_partials(self, inputs, partials):
-        ne = self.options['num_elements']
+        ne = self.options["num_elements"]
         x = self._variables(inputs)
         sigma, tau, ds, dt = self._terms(x, derivs=True)
         vm = np.sqrt(sigma**2 + 3.0 * tau**2 + _VM_EPS)
         dvm = {k: (sigma * ds[k] + 3.0 * tau * dt[k]) / vm for k in self._vm_vars}
-        allowable = inputs['allowable_stress']
+        allowable = inputs["allowable_stress"]
         for name, variables in self._grouped(self._vm_vars).items():
             # rows (e, point), cols (variables of that input): (ne, npts, k)
             val = np.stack([dvm[v] for v in variables], axis=-1).ravel()
-            partials['von_mises_stress', name] = val
-            partials['stress_ratio', name] = val / allowable
-        partials['stress_ratio', 'allowable_stress'] = -(vm / allowable**2).reshape(-1, 1)
+            partials["von_mises_stress", name] = val
+            partials["stress_ratio", name] = val / allowable
+        partials["stress_ratio", "allowable_stress"] = -(vm / allowable**2).reshape(-1, 1)
 
-        n, my, h, area, iy = x['N'], x['My'], x['h'], x['A'], x['Iy']
-        skin = {'N': (1.0 / area, 1.0 / area),
-                'My': (-h / (2.0 * iy), h / (2.0 * iy)),
-                'h': (-my / (2.0 * iy), my / (2.0 * iy)),
-                'A': (-n / area**2, -n / area**2),
-                'Iy': (my * h / (2.0 * iy**2), -my * h / (2.0 * iy**2))}
-        for name, variables in self._grouped(('N', 'My', 'h', 'A', 'Iy')).items():
-            for i, out in enumerate(('top_skin_stress', 'bottom_skin_stress')):
+        n, my, h, area, iy = x["N"], x["My"], x["h"], x["A"], x["Iy"]
+        skin = {
+            "N": (1.0 / area, 1.0 / area),
+            "My": (-h / (2.0 * iy), h / (2.0 * iy)),
+            "h": (-my / (2.0 * iy), my / (2.0 * iy)),
+            "A": (-n / area**2, -n / area**2),
+            "Iy": (my * h / (2.0 * iy**2), -my * h / (2.0 * iy**2)),
+        }
+        for name, variables in self._grouped(("N", "My", "h", "A", "Iy")).items():
+            for i, out in enumerate(("top_skin_stress", "bottom_skin_stress")):
                 partials[out, name] = np.stack(
-                    [np.broadcast_to(skin[v][i], (ne,)) for v in variables], axis=-1).ravel()
+                    [np.broadcast_to(skin[v][i], (ne,)) for v in variables], axis=-1
+                ).ravel()
 
     @staticmethod
     def _grouped(variables):

@@ -41,11 +41,12 @@ class WingBoxSection:
     camber: float
     top_radius: float
     bottom_radius: float
-    source: str = ''
+    source: str = ""
 
     @classmethod
-    def from_coordinates(cls, coordinates, front_spar=0.25, rear_spar=0.75, beam_axis=0.5,
-                         source=''):
+    def from_coordinates(
+        cls, coordinates, front_spar=0.25, rear_spar=0.75, beam_axis=0.5, source=""
+    ):
         """
         Compute the section numbers from airfoil coordinates in Selig order.
 
@@ -59,19 +60,35 @@ class WingBoxSection:
         source : str
             Label stored with the numbers.
         """
-        check_number("front_spar", front_spar, lower=0.0, upper=beam_axis, lower_open=True,
-                     upper_open=True, allowed=f"in (0, beam_axis = {beam_axis:g})")
-        check_number("rear_spar", rear_spar, lower=beam_axis, upper=1.0, lower_open=True,
-                     upper_open=True, allowed=f"in (beam_axis = {beam_axis:g}, 1)")
+        check_number(
+            "front_spar",
+            front_spar,
+            lower=0.0,
+            upper=beam_axis,
+            lower_open=True,
+            upper_open=True,
+            allowed=f"in (0, beam_axis = {beam_axis:g})",
+        )
+        check_number(
+            "rear_spar",
+            rear_spar,
+            lower=beam_axis,
+            upper=1.0,
+            lower_open=True,
+            upper_open=True,
+            allowed=f"in (beam_axis = {beam_axis:g}, 1)",
+        )
         xy = np.asarray(coordinates, dtype=float)
         if xy.ndim != 2 or xy.shape[1] != 2 or xy.shape[0] < 5:
             raise ValueError(f"coordinates must have shape (n >= 5, 2), got {xy.shape}.")
         le = int(np.argmin(xy[:, 0]))
-        upper, lower = xy[:le + 1][::-1], xy[le:]
-        for name, surf in (('upper', upper), ('lower', lower)):
+        upper, lower = xy[: le + 1][::-1], xy[le:]
+        for name, surf in (("upper", upper), ("lower", lower)):
             if np.any(np.diff(surf[:, 0]) <= 0.0):
-                raise ValueError(f"coordinates: the {name} surface is not monotonic in x/c; "
-                                 "expected Selig order (TE -> upper -> LE -> lower -> TE).")
+                raise ValueError(
+                    f"coordinates: the {name} surface is not monotonic in x/c; "
+                    "expected Selig order (TE -> upper -> LE -> lower -> TE)."
+                )
 
         def y_of(surf, x):
             return np.interp(x, surf[:, 0], surf[:, 1])
@@ -80,9 +97,16 @@ class WingBoxSection:
         stations = np.array([front_spar, mid, rear_spar])
         radii = [_arc_radius(stations, y_of(s, stations)) for s in (upper, lower)]
         y_up, y_lo = y_of(upper, beam_axis), y_of(lower, beam_axis)
-        return cls(front_spar=front_spar, rear_spar=rear_spar, beam_axis=beam_axis,
-                   thickness=float(y_up - y_lo), camber=float(0.5 * (y_up + y_lo)),
-                   top_radius=radii[0], bottom_radius=radii[1], source=source)
+        return cls(
+            front_spar=front_spar,
+            rear_spar=rear_spar,
+            beam_axis=beam_axis,
+            thickness=float(y_up - y_lo),
+            camber=float(0.5 * (y_up + y_lo)),
+            top_radius=radii[0],
+            bottom_radius=radii[1],
+            source=source,
+        )
 
     @classmethod
     def from_file(cls, path, front_spar=0.25, rear_spar=0.75, beam_axis=0.5):
@@ -106,12 +130,26 @@ def _arc_radius(x, y):
 #: exactly x/c = 0.25, 0.5 and 0.75, so no interpolation enters. tests/test_structures_geometry.py
 #: recomputes them from those files.
 WING_BOX_SECTIONS = {
-    'ls413': WingBoxSection(0.25, 0.75, 0.5, thickness=0.1243, camber=0.02075,
-                            top_radius=1.9089296147276130, bottom_radius=2.5495526693349944,
-                            source='LS(1)-0413 (GA(W)-2), UIUC ls413.dat'),
-    'ls417': WingBoxSection(0.25, 0.75, 0.5, thickness=0.1636, camber=0.02089,
-                            top_radius=1.4929635168850313, bottom_radius=1.8327388853441626,
-                            source='LS(1)-0417 (GA(W)-1), UIUC ls417.dat'),
+    "ls413": WingBoxSection(
+        0.25,
+        0.75,
+        0.5,
+        thickness=0.1243,
+        camber=0.02075,
+        top_radius=1.9089296147276130,
+        bottom_radius=2.5495526693349944,
+        source="LS(1)-0413 (GA(W)-2), UIUC ls413.dat",
+    ),
+    "ls417": WingBoxSection(
+        0.25,
+        0.75,
+        0.5,
+        thickness=0.1636,
+        camber=0.02089,
+        top_radius=1.4929635168850313,
+        bottom_radius=1.8327388853441626,
+        source="LS(1)-0417 (GA(W)-1), UIUC ls417.dat",
+    ),
 }
 
 
@@ -124,15 +162,20 @@ def wing_box_section(vehicle, coordinates=None):
     """
     box = vehicle.wing_box
     if coordinates is not None:
-        return WingBoxSection.from_coordinates(coordinates, box.front_spar, box.rear_spar,
-                                               box.beam_axis, source=vehicle.wing.airfoil)
+        return WingBoxSection.from_coordinates(
+            coordinates, box.front_spar, box.rear_spar, box.beam_axis, source=vehicle.wing.airfoil
+        )
     sec = WING_BOX_SECTIONS.get(vehicle.wing.airfoil)
     if sec is None or (sec.front_spar, sec.rear_spar, sec.beam_axis) != (
-            box.front_spar, box.rear_spar, box.beam_axis):
+        box.front_spar,
+        box.rear_spar,
+        box.beam_axis,
+    ):
         raise ValueError(
             f"no packaged wing-box section for airfoil {vehicle.wing.airfoil!r} with front_spar="
             f"{box.front_spar}, rear_spar={box.rear_spar}, beam_axis={box.beam_axis}; packaged: "
-            f"{sorted(WING_BOX_SECTIONS)} with 0.25/0.75/0.5. Pass the airfoil coordinates.")
+            f"{sorted(WING_BOX_SECTIONS)} with 0.25/0.75/0.5. Pass the airfoil coordinates."
+        )
     return sec
 
 
@@ -205,65 +248,121 @@ class WingBoxGeometryComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare('num_nodes', default=9, types=int, lower=2,
-                             desc='Beam nodes per half wing (num_bays + 1)')
-        self.options.declare('section', default=WING_BOX_SECTIONS['ls413'],
-                             types=WingBoxSection,
-                             desc='Airfoil thickness/camber/skin radii and spar fractions')
-        self.options.declare('wing', default=None, types=LiftingSurface, allow_none=True,
-                             desc='lpc_mdo.vehicle.LiftingSurface giving the input defaults; '
-                                  'None = the reference vehicle\'s wing')
+        self.options.declare(
+            "num_nodes",
+            default=9,
+            types=int,
+            lower=2,
+            desc="Beam nodes per half wing (num_bays + 1)",
+        )
+        self.options.declare(
+            "section",
+            default=WING_BOX_SECTIONS["ls413"],
+            types=WingBoxSection,
+            desc="Airfoil thickness/camber/skin radii and spar fractions",
+        )
+        self.options.declare(
+            "wing",
+            default=None,
+            types=LiftingSurface,
+            allow_none=True,
+            desc="lpc_mdo.vehicle.LiftingSurface giving the input defaults; "
+            "None = the reference vehicle's wing",
+        )
 
     def setup(self):
-        n = self.options['num_nodes']
+        n = self.options["num_nodes"]
         ne = n - 1
-        wing = self.options['wing']
+        wing = self.options["wing"]
         if wing is None:
             wing = reference_vehicle().wing
-        self.add_input('wing_area', val=wing.area, units='m**2', desc='wing reference area')
-        self.add_input('wing_aspect_ratio', val=wing.aspect_ratio, units=None,
-                       desc='wing aspect ratio')
-        self.add_input('wing_taper_ratio', val=wing.taper_ratio, units=None,
-                       desc='tip chord over root chord')
-        self.add_input('wing_sweep', val=wing.sweep, units='rad', desc='leading-edge sweep')
-        self.add_input('wing_dihedral', val=wing.dihedral, units='rad',
-                       desc='dihedral, positive tip up')
-        self.add_input('wing_incidence', val=wing.incidence, units='rad',
-                       desc='section incidence, positive nose up')
-        self.add_input('wing_root_leading_edge', val=np.array(wing.root_leading_edge), units='m',
-                       desc='leading edge of the root chord, body frame')
+        self.add_input("wing_area", val=wing.area, units="m**2", desc="wing reference area")
+        self.add_input(
+            "wing_aspect_ratio", val=wing.aspect_ratio, units=None, desc="wing aspect ratio"
+        )
+        self.add_input(
+            "wing_taper_ratio", val=wing.taper_ratio, units=None, desc="tip chord over root chord"
+        )
+        self.add_input("wing_sweep", val=wing.sweep, units="rad", desc="leading-edge sweep")
+        self.add_input(
+            "wing_dihedral", val=wing.dihedral, units="rad", desc="dihedral, positive tip up"
+        )
+        self.add_input(
+            "wing_incidence",
+            val=wing.incidence,
+            units="rad",
+            desc="section incidence, positive nose up",
+        )
+        self.add_input(
+            "wing_root_leading_edge",
+            val=np.array(wing.root_leading_edge),
+            units="m",
+            desc="leading edge of the root chord, body frame",
+        )
 
-        self.add_output('nodes', val=np.zeros((n, 3)), units='m',
-                        desc='wing-box beam nodes, body frame, root to tip')
-        self.add_output('chord', val=np.ones(n), units='m', desc='local chord at the nodes')
-        self.add_output('box_width', val=np.ones(ne), units='m', desc='spar-to-spar box width')
-        self.add_output('box_height', val=np.ones(ne), units='m', desc='box height')
-        self.add_output('top_skin_radius', val=np.ones(ne), units='m',
-                        desc='radius of curvature of the top skin panel')
-        self.add_output('bottom_skin_radius', val=np.ones(ne), units='m',
-                        desc='radius of curvature of the bottom skin panel')
+        self.add_output(
+            "nodes",
+            val=np.zeros((n, 3)),
+            units="m",
+            desc="wing-box beam nodes, body frame, root to tip",
+        )
+        self.add_output("chord", val=np.ones(n), units="m", desc="local chord at the nodes")
+        self.add_output("box_width", val=np.ones(ne), units="m", desc="spar-to-spar box width")
+        self.add_output("box_height", val=np.ones(ne), units="m", desc="box height")
+        self.add_output(
+            "top_skin_radius",
+            val=np.ones(ne),
+            units="m",
+            desc="radius of curvature of the top skin panel",
+        )
+        self.add_output(
+            "bottom_skin_radius",
+            val=np.ones(ne),
+            units="m",
+            desc="radius of curvature of the bottom skin panel",
+        )
 
         self._eta = np.linspace(0.0, 1.0, n)
         xrows, zrows = 3 * np.arange(n), 3 * np.arange(n) + 2
         xz = np.sort(np.concatenate([xrows, zrows]))
-        self.declare_partials('nodes', ['wing_area', 'wing_aspect_ratio'])
-        self.declare_partials('nodes', ['wing_taper_ratio', 'wing_incidence'], rows=xz,
-                              cols=np.zeros_like(xz))
-        self.declare_partials('nodes', 'wing_sweep', rows=xrows, cols=np.zeros(n))
-        self.declare_partials('nodes', 'wing_dihedral', rows=zrows, cols=np.zeros(n))
-        self.declare_partials('nodes', 'wing_root_leading_edge', rows=np.arange(3 * n),
-                              cols=np.tile(np.arange(3), n), val=1.0)
-        self.declare_partials(['chord', 'box_width', 'box_height', 'top_skin_radius',
-                               'bottom_skin_radius'],
-                              ['wing_area', 'wing_aspect_ratio', 'wing_taper_ratio'])
+        self.declare_partials("nodes", ["wing_area", "wing_aspect_ratio"])
+        self.declare_partials(
+            "nodes", ["wing_taper_ratio", "wing_incidence"], rows=xz, cols=np.zeros_like(xz)
+        )
+        self.declare_partials("nodes", "wing_sweep", rows=xrows, cols=np.zeros(n))
+        self.declare_partials("nodes", "wing_dihedral", rows=zrows, cols=np.zeros(n))
+        self.declare_partials(
+            "nodes",
+            "wing_root_leading_edge",
+            rows=np.arange(3 * n),
+            cols=np.tile(np.arange(3), n),
+            val=1.0,
+        )
+        self.declare_partials(
+            ["chord", "box_width", "box_height", "top_skin_radius", "bottom_skin_radius"],
+            ["wing_area", "wing_aspect_ratio", "wing_taper_ratio"],
+        )
 
     def _planform(self, inputs):
-        area, ar, taper = inputs['wing_area'], inputs['wing_aspect_ratio'], \
-            inputs['wing_taper_ratio']
-        for name, val, units in (('wing_area', area, 'm**2'), ('wing_aspect_ratio', ar, None),
-                                 ('wing_taper_ratio', taper, None)):
-            check_range(name, val, lower=0.0, lower_open=True, units=units,
-                        error=om.AnalysisError, where=self.msginfo)
+        area, ar, taper = (
+            inputs["wing_area"],
+            inputs["wing_aspect_ratio"],
+            inputs["wing_taper_ratio"],
+        )
+        for name, val, units in (
+            ("wing_area", area, "m**2"),
+            ("wing_aspect_ratio", ar, None),
+            ("wing_taper_ratio", taper, None),
+        ):
+            check_range(
+                name,
+                val,
+                lower=0.0,
+                lower_open=True,
+                units=units,
+                error=om.AnalysisError,
+                where=self.msginfo,
+            )
         span = np.sqrt(ar * area)
         root_chord = 2.0 * area / ((1.0 + taper) * span)
         chord = root_chord * (1.0 - (1.0 - taper) * self._eta)
@@ -271,57 +370,69 @@ class WingBoxGeometryComp(om.ExplicitComponent):
         return span, root_chord, chord, y
 
     def _section_factors(self, incidence):
-        sec = self.options['section']
+        sec = self.options["section"]
         kx = sec.beam_axis * np.cos(incidence) + sec.camber * np.sin(incidence)
         kz = sec.beam_axis * np.sin(incidence) - sec.camber * np.cos(incidence)
         return kx, kz
 
     def compute(self, inputs, outputs):
-        sec = self.options['section']
+        sec = self.options["section"]
         _, _, chord, y = self._planform(inputs)
-        kx, kz = self._section_factors(inputs['wing_incidence'])
-        le = inputs['wing_root_leading_edge']
+        kx, kz = self._section_factors(inputs["wing_incidence"])
+        le = inputs["wing_root_leading_edge"]
         nodes = np.zeros((chord.size, 3), dtype=chord.dtype)
-        nodes[:, 0] = le[0] - y * np.tan(inputs['wing_sweep']) - chord * kx
+        nodes[:, 0] = le[0] - y * np.tan(inputs["wing_sweep"]) - chord * kx
         nodes[:, 1] = le[1] + y
-        nodes[:, 2] = le[2] - y * np.tan(inputs['wing_dihedral']) + chord * kz
-        outputs['nodes'] = nodes
-        outputs['chord'] = chord
+        nodes[:, 2] = le[2] - y * np.tan(inputs["wing_dihedral"]) + chord * kz
+        outputs["nodes"] = nodes
+        outputs["chord"] = chord
         mean = 0.5 * (chord[:-1] + chord[1:])
-        outputs['box_width'] = (sec.rear_spar - sec.front_spar) * mean
-        outputs['box_height'] = sec.thickness * mean
-        outputs['top_skin_radius'] = sec.top_radius * mean
-        outputs['bottom_skin_radius'] = sec.bottom_radius * mean
+        outputs["box_width"] = (sec.rear_spar - sec.front_spar) * mean
+        outputs["box_height"] = sec.thickness * mean
+        outputs["top_skin_radius"] = sec.top_radius * mean
+        outputs["bottom_skin_radius"] = sec.bottom_radius * mean
 
     def compute_partials(self, inputs, partials):
-        sec = self.options['section']
-        area, ar, taper = inputs['wing_area'], inputs['wing_aspect_ratio'], \
-            inputs['wing_taper_ratio']
+        sec = self.options["section"]
+        area, ar, taper = (
+            inputs["wing_area"],
+            inputs["wing_aspect_ratio"],
+            inputs["wing_taper_ratio"],
+        )
         _, root_chord, chord, y = self._planform(inputs)
-        incidence = inputs['wing_incidence']
+        incidence = inputs["wing_incidence"]
         kx, kz = self._section_factors(incidence)
-        tan_sweep, tan_dih = np.tan(inputs['wing_sweep']), np.tan(inputs['wing_dihedral'])
+        tan_sweep, tan_dih = np.tan(inputs["wing_sweep"]), np.tan(inputs["wing_dihedral"])
 
         # c_j = 2 sqrt(S)/((1 + λ) sqrt(AR)) (1 - (1 - λ) η_j); y_j = sqrt(AR S) η_j/2
-        dc = {'wing_area': chord / (2.0 * area), 'wing_aspect_ratio': -chord / (2.0 * ar),
-              'wing_taper_ratio': -chord / (1.0 + taper) + root_chord * self._eta}
-        dy = {'wing_area': y / (2.0 * area), 'wing_aspect_ratio': y / (2.0 * ar)}
+        dc = {
+            "wing_area": chord / (2.0 * area),
+            "wing_aspect_ratio": -chord / (2.0 * ar),
+            "wing_taper_ratio": -chord / (1.0 + taper) + root_chord * self._eta,
+        }
+        dy = {"wing_area": y / (2.0 * area), "wing_aspect_ratio": y / (2.0 * ar)}
 
-        for wrt in ('wing_area', 'wing_aspect_ratio'):
-            d = np.column_stack([-tan_sweep * dy[wrt] - kx * dc[wrt], dy[wrt],
-                                 -tan_dih * dy[wrt] + kz * dc[wrt]])
-            partials['nodes', wrt] = d.reshape(-1, 1)
-        partials['nodes', 'wing_taper_ratio'] = np.column_stack(
-            [-kx * dc['wing_taper_ratio'], kz * dc['wing_taper_ratio']]).ravel()
+        for wrt in ("wing_area", "wing_aspect_ratio"):
+            d = np.column_stack(
+                [-tan_sweep * dy[wrt] - kx * dc[wrt], dy[wrt], -tan_dih * dy[wrt] + kz * dc[wrt]]
+            )
+            partials["nodes", wrt] = d.reshape(-1, 1)
+        partials["nodes", "wing_taper_ratio"] = np.column_stack(
+            [-kx * dc["wing_taper_ratio"], kz * dc["wing_taper_ratio"]]
+        ).ravel()
         # d kx/di = -kz, d kz/di = kx
-        partials['nodes', 'wing_incidence'] = np.column_stack([chord * kz, chord * kx]).ravel()
-        partials['nodes', 'wing_sweep'] = -y / np.cos(inputs['wing_sweep'])**2
-        partials['nodes', 'wing_dihedral'] = -y / np.cos(inputs['wing_dihedral'])**2
+        partials["nodes", "wing_incidence"] = np.column_stack([chord * kz, chord * kx]).ravel()
+        partials["nodes", "wing_sweep"] = -y / np.cos(inputs["wing_sweep"]) ** 2
+        partials["nodes", "wing_dihedral"] = -y / np.cos(inputs["wing_dihedral"]) ** 2
 
-        factors = {'box_width': sec.rear_spar - sec.front_spar, 'box_height': sec.thickness,
-                   'top_skin_radius': sec.top_radius, 'bottom_skin_radius': sec.bottom_radius}
+        factors = {
+            "box_width": sec.rear_spar - sec.front_spar,
+            "box_height": sec.thickness,
+            "top_skin_radius": sec.top_radius,
+            "bottom_skin_radius": sec.bottom_radius,
+        }
         for wrt, d in dc.items():
-            partials['chord', wrt] = d[:, np.newaxis]
+            partials["chord", wrt] = d[:, np.newaxis]
             dmean = 0.5 * (d[:-1] + d[1:])
             for of, factor in factors.items():
                 partials[of, wrt] = factor * dmean[:, np.newaxis]

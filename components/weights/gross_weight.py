@@ -85,8 +85,9 @@ class GrossWeightComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare("num_motors", default=9, types=int, lower=1,
-                             desc="number of motors (8 lift + 1 pusher)")
+        self.options.declare(
+            "num_motors", default=9, types=int, lower=1, desc="number of motors (8 lift + 1 pusher)"
+        )
 
     def setup(self):
         nm = self.options["num_motors"]
@@ -95,24 +96,27 @@ class GrossWeightComp(om.ExplicitComponent):
             self.add_input(name, 0.0, units="kg", desc=desc)
         self.add_input("motor_mass", np.zeros(nm), units="kg", desc="mass of each motor")
 
-        self.add_output("structures_mass", 500.0, units="kg", ref=1e2,
-                        desc="W_structures (eq. 32)")
-        self.add_output("powertrain_mass", 100.0, units="kg", ref=1e2,
-                        desc="W_powertrain (eq. 33)")
+        self.add_output("structures_mass", 500.0, units="kg", ref=1e2, desc="W_structures (eq. 32)")
+        self.add_output("powertrain_mass", 100.0, units="kg", ref=1e2, desc="W_powertrain (eq. 33)")
         self.add_output("gross_mass", 3000.0, units="kg", ref=1e3, desc="gross mass W0 (eq. 31)")
-        self.add_output("mass_breakdown", np.zeros(nb), units="kg", ref=1e2,
-                        desc="items of eq. 31: " + ", ".join(BREAKDOWN_LABELS))
+        self.add_output(
+            "mass_breakdown",
+            np.zeros(nb),
+            units="kg",
+            ref=1e2,
+            desc="items of eq. 31: " + ", ".join(BREAKDOWN_LABELS),
+        )
 
         for name, index, _ in _SCALAR_MASSES:
             self.declare_partials("gross_mass", name, val=1.0)
             self.declare_partials("mass_breakdown", name, rows=[index], cols=[0], val=1.0)
         for name in _STRUCTURES:
             self.declare_partials("structures_mass", name, val=1.0)
-        self.declare_partials("powertrain_mass", ["motor_mass", "power_electronics_mass"],
-                              val=1.0)
+        self.declare_partials("powertrain_mass", ["motor_mass", "power_electronics_mass"], val=1.0)
         self.declare_partials("gross_mass", "motor_mass", val=np.ones((1, nm)))
-        self.declare_partials("mass_breakdown", "motor_mass", rows=np.full(nm, _MOTORS),
-                              cols=np.arange(nm), val=1.0)
+        self.declare_partials(
+            "mass_breakdown", "motor_mass", rows=np.full(nm, _MOTORS), cols=np.arange(nm), val=1.0
+        )
 
     def compute(self, inputs, outputs):
         breakdown = np.zeros(len(BREAKDOWN_LABELS), dtype=inputs["motor_mass"].dtype)
@@ -120,8 +124,14 @@ class GrossWeightComp(om.ExplicitComponent):
             breakdown[index] = inputs[name][0]
         breakdown[_MOTORS] = np.sum(inputs["motor_mass"])
         for name in [n for n, _, _ in _SCALAR_MASSES] + ["motor_mass"]:
-            check_range(name, inputs[name], lower=0.0, units="kg", error=om.AnalysisError,
-                        where=self.msginfo)
+            check_range(
+                name,
+                inputs[name],
+                lower=0.0,
+                units="kg",
+                error=om.AnalysisError,
+                where=self.msginfo,
+            )
         outputs["mass_breakdown"] = breakdown
         outputs["structures_mass"] = np.sum(breakdown[:4])
         outputs["powertrain_mass"] = breakdown[_MOTORS] + inputs["power_electronics_mass"]

@@ -32,9 +32,11 @@ def transport_inertia(r):
     r = np.asarray(r)
     rr = np.sum(r * r, axis=-1)
     p = rr[..., None, None] * _EYE - r[..., :, None] * r[..., None, :]
-    dp = (2.0 * _EYE[:, :, None] * r[..., None, None, :]
-          - _EYE[:, None, :] * r[..., None, :, None]
-          - r[..., :, None, None] * _EYE[None, :, :])
+    dp = (
+        2.0 * _EYE[:, :, None] * r[..., None, None, :]
+        - _EYE[:, None, :] * r[..., None, :, None]
+        - r[..., :, None, None] * _EYE[None, :, :]
+    )
     return p, dp
 
 
@@ -63,12 +65,16 @@ class MassItem:
         if not (isinstance(self.name, str) and self.name.isidentifier()):
             raise ValueError(f"MassItem.name = {self.name!r}; must be a Python identifier.")
         if not isinstance(self.count, int):
-            raise ValueError(f"MassItem '{self.name}': 'count' must be an integer, got "
-                             f"{type(self.count).__name__} {self.count!r}")
+            raise ValueError(
+                f"MassItem '{self.name}': 'count' must be an integer, got "
+                f"{type(self.count).__name__} {self.count!r}"
+            )
         check_integer("count", self.count, lower=1, where=f"MassItem '{self.name}'")
         if not isinstance(self.own_inertia, bool):
-            raise ValueError(f"MassItem '{self.name}': own_inertia = {self.own_inertia!r}; "
-                             "must be True or False.")
+            raise ValueError(
+                f"MassItem '{self.name}': own_inertia = {self.own_inertia!r}; "
+                "must be True or False."
+            )
 
 
 def _check_items(name, value):
@@ -80,8 +86,9 @@ def _check_items(name, value):
     names = [item.name for item in value]
     duplicates = sorted({n for n in names if names.count(n) > 1})
     if duplicates:
-        raise ValueError(f"Option '{name}': duplicate MassItem names {duplicates}; each name "
-                         "must be unique.")
+        raise ValueError(
+            f"Option '{name}': duplicate MassItem names {duplicates}; each name must be unique."
+        )
 
 
 class MassPropertiesComp(om.ExplicitComponent):
@@ -134,8 +141,12 @@ class MassPropertiesComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare("items", types=(list, tuple), check_valid=_check_items,
-                             desc="kinds of bodies (MassItem: name, count, own_inertia)")
+        self.options.declare(
+            "items",
+            types=(list, tuple),
+            check_valid=_check_items,
+            desc="kinds of bodies (MassItem: name, count, own_inertia)",
+        )
 
     def setup(self):
         items = self.options["items"]
@@ -148,29 +159,40 @@ class MassPropertiesComp(om.ExplicitComponent):
             cg_shape = (3,) if c == 1 else (c, 3)
             inertia_shape = (3, 3) if c == 1 else (c, 3, 3)
             self.add_input(f"{name}_mass", np.zeros(c), units="kg", desc=f"mass of {name}")
-            self.add_input(f"{name}_cg", np.zeros(cg_shape), units="m",
-                           desc=f"cg of {name}, body frame")
+            self.add_input(
+                f"{name}_cg", np.zeros(cg_shape), units="m", desc=f"cg of {name}, body frame"
+            )
             if item.own_inertia:
-                self.add_input(f"{name}_inertia", np.zeros(inertia_shape), units="kg*m**2",
-                               desc=f"inertia tensor of {name} about its own cg, body axes")
+                self.add_input(
+                    f"{name}_inertia",
+                    np.zeros(inertia_shape),
+                    units="kg*m**2",
+                    desc=f"inertia tensor of {name} about its own cg, body axes",
+                )
         self._num_bodies = start
 
         self.add_output("total_mass", 1.0, units="kg", desc="total mass")
         self.add_output("cg", np.zeros(3), units="m", desc="centre of gravity, body frame")
-        self.add_output("inertia", np.eye(3), units="kg*m**2",
-                        desc="inertia tensor about the cg, body axes")
+        self.add_output(
+            "inertia", np.eye(3), units="kg*m**2", desc="inertia tensor about the cg, body axes"
+        )
 
         for item in items:
             c, name = item.count, item.name
             self.declare_partials("total_mass", f"{name}_mass", val=np.ones((1, c)))
             self.declare_partials("cg", f"{name}_mass")
-            self.declare_partials("cg", f"{name}_cg", rows=np.tile(np.arange(3), c),
-                                  cols=np.arange(3 * c))
+            self.declare_partials(
+                "cg", f"{name}_cg", rows=np.tile(np.arange(3), c), cols=np.arange(3 * c)
+            )
             self.declare_partials("inertia", [f"{name}_mass", f"{name}_cg"])
             if item.own_inertia:
-                self.declare_partials("inertia", f"{name}_inertia",
-                                      rows=np.tile(np.arange(9), c), cols=np.arange(9 * c),
-                                      val=1.0)
+                self.declare_partials(
+                    "inertia",
+                    f"{name}_inertia",
+                    rows=np.tile(np.arange(9), c),
+                    cols=np.arange(9 * c),
+                    val=1.0,
+                )
 
     def _gather(self, inputs):
         """Return masses (N,) and cgs (N, 3) of all bodies, checked."""
@@ -180,8 +202,14 @@ class MassPropertiesComp(om.ExplicitComponent):
             mass = inputs[f"{name}_mass"]
             cg = inputs[f"{name}_cg"].reshape(item.count, 3)
             check_range(f"{name}_cg", cg, units="m", error=om.AnalysisError, where=self.msginfo)
-            check_range(f"{name}_mass", mass, lower=0.0, units="kg", error=om.AnalysisError,
-                        where=self.msginfo)
+            check_range(
+                f"{name}_mass",
+                mass,
+                lower=0.0,
+                units="kg",
+                error=om.AnalysisError,
+                where=self.msginfo,
+            )
             masses.append(mass)
             cgs.append(cg)
         return np.concatenate(masses), np.concatenate(cgs)
@@ -189,8 +217,15 @@ class MassPropertiesComp(om.ExplicitComponent):
     def compute(self, inputs, outputs):
         masses, points = self._gather(inputs)
         total = np.sum(masses)
-        check_range("total mass", total, lower=0.0, lower_open=True, units="kg",
-                    error=om.AnalysisError, where=self.msginfo)
+        check_range(
+            "total mass",
+            total,
+            lower=0.0,
+            lower_open=True,
+            units="kg",
+            error=om.AnalysisError,
+            where=self.msginfo,
+        )
         cg = masses @ points / total
         p, _ = transport_inertia(points - cg)
         inertia = np.einsum("i,iab->ab", masses, p)
@@ -217,5 +252,6 @@ class MassPropertiesComp(om.ExplicitComponent):
             partials["inertia", f"{name}_mass"] = p[sl].reshape(-1, 9).T
             # (c, a, b, l) -> rows (a, b), cols (body, l)
             dinertia = masses[sl, None, None, None] * dp[sl]
-            partials["inertia", f"{name}_cg"] = (
-                dinertia.transpose(1, 2, 0, 3).reshape(9, 3 * item.count))
+            partials["inertia", f"{name}_cg"] = dinertia.transpose(1, 2, 0, 3).reshape(
+                9, 3 * item.count
+            )

@@ -20,8 +20,14 @@ from lpc_mdo.components.weights.mass_properties import transport_inertia
 # Body-frame sign of each inertia-tensor entry after the M4 -> body rotation diag(-1, 1, -1)
 # (x aft -> forward, z up -> down): I_xy and I_yz change sign, I_xz does not.
 _FLIP = np.array([[1.0, -1.0, 1.0], [-1.0, 1.0, -1.0], [1.0, -1.0, 1.0]])
-_INERTIA_KEYS = {"inertia_xx": (0, 0), "inertia_yy": (1, 1), "inertia_zz": (2, 2),
-                 "inertia_xy": (0, 1), "inertia_xz": (0, 2), "inertia_yz": (1, 2)}
+_INERTIA_KEYS = {
+    "inertia_xx": (0, 0),
+    "inertia_yy": (1, 1),
+    "inertia_zz": (2, 2),
+    "inertia_xy": (0, 1),
+    "inertia_xz": (0, 2),
+    "inertia_yz": (1, 2),
+}
 
 # (name, units, description, default, lower bound, strict) of the regressors (docs theory/weights
 # 'M4 regressions').
@@ -82,13 +88,21 @@ class _M4RegressionComp(om.ExplicitComponent):
 
     def initialize(self):
         data = m4_coefficients()
-        self.options.declare("mass_factor", default=1.0, types=(int, float),
-                             check_valid=_positive,
-                             desc="factor on the regression mass and own inertias (> 0); "
-                                  "paper 1.0, public run scripts 1.3")
-        self.options.declare("nose", default=tuple(data["frame"]["nose"]),
-                             types=(list, tuple, np.ndarray), check_valid=_point,
-                             desc="fuselage nose (body-frame origin) in the M4 frame, m")
+        self.options.declare(
+            "mass_factor",
+            default=1.0,
+            types=(int, float),
+            check_valid=_positive,
+            desc="factor on the regression mass and own inertias (> 0); "
+            "paper 1.0, public run scripts 1.3",
+        )
+        self.options.declare(
+            "nose",
+            default=tuple(data["frame"]["nose"]),
+            types=(list, tuple, np.ndarray),
+            check_valid=_point,
+            desc="fuselage nose (body-frame origin) in the M4 frame, m",
+        )
 
     def _sub_parts(self):
         """Return [(mass fraction, {'cg_x': coeffs, ...}, cg_x_factor)] of the sub-parts."""
@@ -102,12 +116,23 @@ class _M4RegressionComp(om.ExplicitComponent):
         for name, units, desc, default, _, _ in self._regressors:
             self.add_input(name, default, units=units, desc=desc)
         prefix = self._prefix
-        self.add_output(f"{prefix}_mass", 100.0, units="kg", ref=100.0,
-                        desc=f"mass of the {self._what} (M4 regression)")
-        self.add_output(f"{prefix}_cg", np.zeros(3), units="m",
-                        desc=f"cg of the {self._what}, body frame")
-        self.add_output(f"{prefix}_inertia", np.eye(3), units="kg*m**2", ref=100.0,
-                        desc=f"inertia tensor of the {self._what} about its cg, body axes")
+        self.add_output(
+            f"{prefix}_mass",
+            100.0,
+            units="kg",
+            ref=100.0,
+            desc=f"mass of the {self._what} (M4 regression)",
+        )
+        self.add_output(
+            f"{prefix}_cg", np.zeros(3), units="m", desc=f"cg of the {self._what}, body frame"
+        )
+        self.add_output(
+            f"{prefix}_inertia",
+            np.eye(3),
+            units="kg*m**2",
+            ref=100.0,
+            desc=f"inertia tensor of the {self._what} about its cg, body axes",
+        )
 
         factor = float(self.options["mass_factor"])
         nose = np.asarray(self.options["nose"], dtype=float)
@@ -134,7 +159,7 @@ class _M4RegressionComp(om.ExplicitComponent):
 
         for j, (name, *_) in enumerate(self._regressors):
             self.declare_partials(f"{prefix}_mass", name, val=self._mass_map[j])
-            self.declare_partials(f"{prefix}_cg", name, val=self._cg_total[:, j:j + 1])
+            self.declare_partials(f"{prefix}_cg", name, val=self._cg_total[:, j : j + 1])
             self.declare_partials(f"{prefix}_inertia", name)
 
     def _evaluate(self, inputs):
@@ -142,8 +167,15 @@ class _M4RegressionComp(om.ExplicitComponent):
         values = []
         for name, units, _, _, lower, strict in self._regressors:
             value = inputs[name][0]
-            check_range(name, value, lower=lower, lower_open=strict, units=units,
-                        error=om.AnalysisError, where=self.msginfo)
+            check_range(
+                name,
+                value,
+                lower=lower,
+                lower_open=strict,
+                units=units,
+                error=om.AnalysisError,
+                where=self.msginfo,
+            )
             values.append(value)
         xt = np.array(values + [1.0])
         mass = self._mass_map @ xt
@@ -151,20 +183,23 @@ class _M4RegressionComp(om.ExplicitComponent):
             raise om.AnalysisError(
                 f"{self.msginfo}: {self._prefix}_mass = {mass.real} kg from the M4 regression "
                 f"at {dict(zip([r[0] for r in self._regressors], xt.real[:-1], strict=True))}; "
-                "must be > 0 (inputs far outside the regression's data).")
+                "must be > 0 (inputs far outside the regression's data)."
+            )
         points = self._cg_map @ xt
         return xt, mass, points, points - self._cg_total @ xt
 
     def compute(self, inputs, outputs):
         xt, mass, _, r = self._evaluate(inputs)
         p, _ = transport_inertia(r)
-        inertia = (np.einsum("kabn,n->ab", self._own, xt)
-                   + mass * np.einsum("k,kab->ab", self._weights, p))
+        inertia = np.einsum("kabn,n->ab", self._own, xt) + mass * np.einsum(
+            "k,kab->ab", self._weights, p
+        )
         if np.any(np.diag(inertia).real < 0.0):
             raise om.AnalysisError(
                 f"{self.msginfo}: {self._prefix}_inertia diagonal = "
                 f"{np.diag(inertia).real.tolist()} kg*m**2 from the M4 regression; must be >= 0 "
-                "(inputs far outside the regression's data).")
+                "(inputs far outside the regression's data)."
+            )
         prefix = self._prefix
         outputs[f"{prefix}_mass"] = mass
         outputs[f"{prefix}_cg"] = self._cg_total @ xt
@@ -175,12 +210,14 @@ class _M4RegressionComp(om.ExplicitComponent):
         p, dp = transport_inertia(r)
         nx = len(self._regressors)
         dr = self._cg_map[:, :, :nx] - self._cg_total[None, :, :nx]  # (K, 3, nx)
-        jac = (self._own[..., :nx].sum(axis=0)
-               + np.einsum("k,kab,n->abn", self._weights, p, self._mass_map[:nx])
-               + mass * np.einsum("k,kabl,kln->abn", self._weights, dp, dr))
+        jac = (
+            self._own[..., :nx].sum(axis=0)
+            + np.einsum("k,kab,n->abn", self._weights, p, self._mass_map[:nx])
+            + mass * np.einsum("k,kabl,kln->abn", self._weights, dp, dr)
+        )
         jac = jac.reshape(9, nx)
         for j, (name, *_) in enumerate(self._regressors):
-            partials[f"{self._prefix}_inertia", name] = jac[:, j:j + 1]
+            partials[f"{self._prefix}_inertia", name] = jac[:, j : j + 1]
 
 
 class _SinglePartRegressionComp(_M4RegressionComp):
@@ -189,9 +226,13 @@ class _SinglePartRegressionComp(_M4RegressionComp):
     def initialize(self):
         super().initialize()
         k_x = m4_coefficients()[self._prefix]["cg_x_factor"]
-        self.options.declare("cg_x_factor", default=k_x, types=(int, float),
-                             check_valid=_positive,
-                             desc=f"k_x in x_cg = x_nose - k_x cg_X (> 0); {k_x} as coded")
+        self.options.declare(
+            "cg_x_factor",
+            default=k_x,
+            types=(int, float),
+            check_valid=_positive,
+            desc=f"k_x in x_cg = x_nose - k_x cg_X (> 0); {k_x} as coded",
+        )
 
     def _sub_parts(self):
         return [(1.0, m4_coefficients()[self._prefix], float(self.options["cg_x_factor"]))]
@@ -254,7 +295,6 @@ class FuselageRegressionComp(_SinglePartRegressionComp):
     _what = "fuselage"
 
 
-
 class WingRegressionComp(_SinglePartRegressionComp):
     """
     Wing structural mass, cg and inertia from the M4 regression (public-code alternative).
@@ -294,7 +334,6 @@ class WingRegressionComp(_SinglePartRegressionComp):
 
     _prefix = "wing"
     _what = "wing"
-
 
 
 class BoomRegressionComp(_M4RegressionComp):
@@ -397,10 +436,13 @@ class EmpennageRegressionComp(_M4RegressionComp):
 
     def initialize(self):
         super().initialize()
-        self.options.declare("htail_mass_fraction",
-                             default=m4_coefficients()["empennage"]["htail_mass_fraction"],
-                             types=(int, float), check_valid=_fraction,
-                             desc="h-tail share of the empennage mass in [0, 1]; 0.65 as coded")
+        self.options.declare(
+            "htail_mass_fraction",
+            default=m4_coefficients()["empennage"]["htail_mass_fraction"],
+            types=(int, float),
+            check_valid=_fraction,
+            desc="h-tail share of the empennage mass in [0, 1]; 0.65 as coded",
+        )
 
     def _sub_parts(self):
         data = m4_coefficients()["empennage"]

@@ -18,21 +18,43 @@ __all__ = ["motor_analysis"]
 
 
 _RESULT_NAMES = (
-    'mass', 'peak_torque', 'diameter', 'resistance', 'inductance_d', 'inductance_q',
-    'flux_linkage', 'air_gap_flux_density', 'em_torque', 'efficiency', 'input_power',
-    'output_power', 'power_loss', 'copper_loss', 'iron_loss', 'windage_loss', 'current_q',
-    'current_d', 'current', 'voltage', 'voltage_margin', 'torque_limit', 'torque_margin',
-    'voltage_torque_margin',
+    "mass",
+    "peak_torque",
+    "diameter",
+    "resistance",
+    "inductance_d",
+    "inductance_q",
+    "flux_linkage",
+    "air_gap_flux_density",
+    "em_torque",
+    "efficiency",
+    "input_power",
+    "output_power",
+    "power_loss",
+    "copper_loss",
+    "iron_loss",
+    "windage_loss",
+    "current_q",
+    "current_d",
+    "current",
+    "voltage",
+    "voltage_margin",
+    "torque_limit",
+    "torque_margin",
+    "voltage_torque_margin",
 )
 
 
 def _positive_array(name, value, units):
-    return np.asarray(check_range(name, value, lower=0.0, lower_open=True, units=units,
-                                  where="motor"), dtype=float)
+    return np.asarray(
+        check_range(name, value, lower=0.0, lower_open=True, units=units, where="motor"),
+        dtype=float,
+    )
 
 
-def motor_analysis(length, rotor_torque, rotor_rpm, length_to_diameter=0.5, gear_ratio=4.0,
-                   parameters=None):
+def motor_analysis(
+    length, rotor_torque, rotor_rpm, length_to_diameter=0.5, gear_ratio=4.0, parameters=None
+):
     """
     Size a PMSM from its length and analyse it at given rotor torques and speeds.
 
@@ -72,24 +94,26 @@ def motor_analysis(length, rotor_torque, rotor_rpm, length_to_diameter=0.5, gear
     om.AnalysisError
         If an inner solve fails.
     """
-    length_arr = _positive_array('length', length, 'm')
-    torque_arr = _positive_array('rotor_torque', rotor_torque, 'N*m')
-    rpm_arr = _positive_array('rotor_rpm', rotor_rpm, 'rpm')
-    ratio = _positive_array('length_to_diameter', length_to_diameter, None)
-    gear = _positive_array('gear_ratio', gear_ratio, None)
+    length_arr = _positive_array("length", length, "m")
+    torque_arr = _positive_array("rotor_torque", rotor_torque, "N*m")
+    rpm_arr = _positive_array("rotor_rpm", rotor_rpm, "rpm")
+    ratio = _positive_array("length_to_diameter", length_to_diameter, None)
+    gear = _positive_array("gear_ratio", gear_ratio, None)
     if ratio.ndim or gear.ndim:
         raise ValueError("motor: 'length_to_diameter' and 'gear_ratio' must be scalars.")
     if parameters is None:
         parameters = MotorParameters()
     if not isinstance(parameters, MotorParameters):
-        raise ValueError(f"motor: 'parameters' = {parameters!r} must be a MotorParameters "
-                         "instance or None.")
+        raise ValueError(
+            f"motor: 'parameters' = {parameters!r} must be a MotorParameters instance or None."
+        )
     parameters = dataclasses.replace(parameters, gear_ratio=float(gear))
     scalar = length_arr.ndim == 0 and torque_arr.ndim == 0 and rpm_arr.ndim == 0
 
     if length_arr.ndim > 1:
-        raise ValueError(f"motor: 'length' must be a scalar or 1-D (num_motors,), got shape "
-                         f"{length_arr.shape}.")
+        raise ValueError(
+            f"motor: 'length' must be a scalar or 1-D (num_motors,), got shape {length_arr.shape}."
+        )
     length_arr = np.atleast_1d(length_arr)
     nm = length_arr.size
     try:
@@ -101,28 +125,35 @@ def motor_analysis(length, rotor_torque, rotor_rpm, length_to_diameter=0.5, gear
         if len(point_shape) != 2 or point_shape[0] != nm:
             raise ValueError
     except ValueError:
-        raise ValueError(f"motor: 'rotor_torque' {np.shape(rotor_torque)} and 'rotor_rpm' "
-                         f"{np.shape(rotor_rpm)} must be scalars, (num_nodes,) or "
-                         f"(num_motors, num_nodes) with num_motors = {nm} (length).") from None
+        raise ValueError(
+            f"motor: 'rotor_torque' {np.shape(rotor_torque)} and 'rotor_rpm' "
+            f"{np.shape(rotor_rpm)} must be scalars, (num_nodes,) or "
+            f"(num_motors, num_nodes) with num_motors = {nm} (length)."
+        ) from None
     nn = point_shape[1]
 
     prob = om.Problem(reports=False, comm=serial_comm())
-    prob.model.add_subsystem('motor', MotorGroup(num_motors=nm, num_nodes=nn,
-                                                 length_to_diameter=float(ratio),
-                                                 parameters=parameters), promotes=['*'])
+    prob.model.add_subsystem(
+        "motor",
+        MotorGroup(
+            num_motors=nm, num_nodes=nn, length_to_diameter=float(ratio), parameters=parameters
+        ),
+        promotes=["*"],
+    )
     prob.setup()
-    prob.set_val('length', length_arr, units='m')
-    prob.set_val('rotor_torque', torque_arr, units='N*m')
-    prob.set_val('rotor_rpm', rpm_arr, units='rpm')
+    prob.set_val("length", length_arr, units="m")
+    prob.set_val("rotor_torque", torque_arr, units="N*m")
+    prob.set_val("rotor_rpm", rpm_arr, units="rpm")
     prob.run_model()
 
     result = {}
     for name in _RESULT_NAMES:
         value = np.array(prob.get_val(name))
         if not np.all(np.isfinite(value)):
-            raise om.AnalysisError(f"motor: the analysis returned non-finite '{name}' = "
-                                   f"{value.tolist()}.")
+            raise om.AnalysisError(
+                f"motor: the analysis returned non-finite '{name}' = {value.tolist()}."
+            )
         result[name] = float(value.ravel()[0]) if scalar else value
-    flag = np.array(prob.get_val('beyond_voltage_limit')) > 0.5
-    result['beyond_voltage_limit'] = bool(flag.ravel()[0]) if scalar else flag
+    flag = np.array(prob.get_val("beyond_voltage_limit")) > 0.5
+    result["beyond_voltage_limit"] = bool(flag.ravel()[0]) if scalar else flag
     return result

@@ -44,17 +44,31 @@ def blade_stations(radius, hub_radius, radial_stations):
         Station radii and widths (m), which sum to radius - hub_radius.
     """
     radius = float(_positive("radius", radius))
-    hub_radius = check_number("hub_radius", hub_radius, lower=0.0, upper=radius,
-                              lower_open=True, upper_open=True, units="m")
+    hub_radius = check_number(
+        "hub_radius",
+        hub_radius,
+        lower=0.0,
+        upper=radius,
+        lower_open=True,
+        upper_open=True,
+        units="m",
+    )
     if np.ndim(radial_stations) == 0:
         n = check_integer("radial_stations", radial_stations, lower=1)
         eta, q = station_fractions(n)
         return hub_radius + (radius - hub_radius) * eta, (radius - hub_radius) * q
     r = np.asarray(radial_stations, dtype=float).ravel()
-    if (r.size < 1 or not np.all(np.isfinite(r)) or np.any(np.diff(r) <= 0.0)
-            or r[0] <= hub_radius or r[-1] >= radius):
-        raise ValueError(f"radial_stations = {r.tolist()}; allowed: increasing radii strictly "
-                         f"between hub_radius ({hub_radius}) and radius ({radius}) m")
+    if (
+        r.size < 1
+        or not np.all(np.isfinite(r))
+        or np.any(np.diff(r) <= 0.0)
+        or r[0] <= hub_radius
+        or r[-1] >= radius
+    ):
+        raise ValueError(
+            f"radial_stations = {r.tolist()}; allowed: increasing radii strictly "
+            f"between hub_radius ({hub_radius}) and radius ({radius}) m"
+        )
     edges = np.concatenate([[hub_radius], 0.5 * (r[1:] + r[:-1]), [radius]])
     return r, np.diff(edges)
 
@@ -77,20 +91,29 @@ def _operating_points(**arrays):
     out = {}
     for name, v in zip(arrays, values, strict=True):
         if v.ndim > 1:
-            raise ValueError(f"'{name}' = {v.tolist()} is not allowed: must be a scalar or a "
-                             "1-D array")
+            raise ValueError(
+                f"'{name}' = {v.tolist()} is not allowed: must be a scalar or a 1-D array"
+            )
         check_range(name, v)
         out[name] = np.atleast_1d(v)
     return out, scalar
 
 
-def _set_common(prob, radius, hub_radius, r, width, chord, twist, rpm, density, viscosity,
-                speed_of_sound, nn):
-    for name, value in (('radius', radius), ('hub_radius', hub_radius), ('station_radius', r),
-                        ('station_width', width), ('chord', chord), ('twist', twist),
-                        ('rpm', rpm[None, :]), ('density', np.full(nn, density)),
-                        ('dynamic_viscosity', np.full(nn, viscosity)),
-                        ('speed_of_sound', np.full(nn, speed_of_sound))):
+def _set_common(
+    prob, radius, hub_radius, r, width, chord, twist, rpm, density, viscosity, speed_of_sound, nn
+):
+    for name, value in (
+        ("radius", radius),
+        ("hub_radius", hub_radius),
+        ("station_radius", r),
+        ("station_width", width),
+        ("chord", chord),
+        ("twist", twist),
+        ("rpm", rpm[None, :]),
+        ("density", np.full(nn, density)),
+        ("dynamic_viscosity", np.full(nn, viscosity)),
+        ("speed_of_sound", np.full(nn, speed_of_sound)),
+    ):
         prob.set_val(name, value)
 
 
@@ -99,9 +122,22 @@ def _squeeze(result, scalar):
     return {k: (v[0] if scalar else v) for k, v in result.items()}
 
 
-def bem(radius, hub_radius, num_blades, radial_stations, chord, twist_deg, rpm, axial_velocity,
-        airfoil, density=SEA_LEVEL_DENSITY, viscosity=1.81e-5, speed_of_sound=340.3,
-        tip_loss=True, hub_loss=True):
+def bem(
+    radius,
+    hub_radius,
+    num_blades,
+    radial_stations,
+    chord,
+    twist_deg,
+    rpm,
+    axial_velocity,
+    airfoil,
+    density=SEA_LEVEL_DENSITY,
+    viscosity=1.81e-5,
+    speed_of_sound=340.3,
+    tip_loss=True,
+    hub_loss=True,
+):
     """
     Blade element momentum analysis of one rotor in axial flow (hover, climb, propeller).
 
@@ -156,39 +192,88 @@ def bem(radius, hub_radius, num_blades, radial_stations, chord, twist_deg, rpm, 
     chord = _positive("chord", _station_values("chord", chord, n))
     twist = np.radians(_station_values("twist_deg", twist_deg, n))
     ops, scalar = _operating_points(rpm=rpm, axial_velocity=axial_velocity)
-    _positive("rpm", ops['rpm'])
-    for name, value in (('density', density), ('viscosity', viscosity),
-                        ('speed_of_sound', speed_of_sound)):
+    _positive("rpm", ops["rpm"])
+    for name, value in (
+        ("density", density),
+        ("viscosity", viscosity),
+        ("speed_of_sound", speed_of_sound),
+    ):
         _positive(name, value)
-    nn = ops['rpm'].size
+    nn = ops["rpm"].size
     polar = get_polar(airfoil)
-    kw = dict(num_nodes=nn, num_radial=n, num_blades=int(num_blades), polar=polar,
-              tip_loss=tip_loss, hub_loss=hub_loss)
+    kw = dict(
+        num_nodes=nn,
+        num_radial=n,
+        num_blades=int(num_blades),
+        polar=polar,
+        tip_loss=tip_loss,
+        hub_loss=hub_loss,
+    )
     prob = om.Problem(reports=False, comm=serial_comm())
-    prob.model.add_subsystem('inflow', BEMInflowComp(**kw), promotes=['*'])
-    prob.model.add_subsystem('loads', BEMLoadsComp(**kw), promotes=['*'])
-    prob.model.add_subsystem('performance', RotorPerformanceComp(num_nodes=nn), promotes=['*'])
+    prob.model.add_subsystem("inflow", BEMInflowComp(**kw), promotes=["*"])
+    prob.model.add_subsystem("loads", BEMLoadsComp(**kw), promotes=["*"])
+    prob.model.add_subsystem("performance", RotorPerformanceComp(num_nodes=nn), promotes=["*"])
     prob.setup()
-    _set_common(prob, radius, hub_radius, r, width, chord, twist, ops['rpm'], density, viscosity,
-                speed_of_sound, nn)
-    prob.set_val('axial_velocity', ops['axial_velocity'][None, :])
+    _set_common(
+        prob,
+        radius,
+        hub_radius,
+        r,
+        width,
+        chord,
+        twist,
+        ops["rpm"],
+        density,
+        viscosity,
+        speed_of_sound,
+        nn,
+    )
+    prob.set_val("axial_velocity", ops["axial_velocity"][None, :])
     prob.run_model()
-    out = {name: prob.get_val(name)[0] for name in (
-        'thrust', 'torque', 'power', 'thrust_coefficient', 'power_coefficient',
-        'figure_of_merit', 'efficiency', 'advance_ratio', 'tip_mach', 'inflow_angle',
-        'angle_of_attack')}
-    out['normal_load'] = prob.get_val('thrust_per_span')[0]
-    out['tangential_load'] = prob.get_val('drag_per_span')[0]
+    out = {
+        name: prob.get_val(name)[0]
+        for name in (
+            "thrust",
+            "torque",
+            "power",
+            "thrust_coefficient",
+            "power_coefficient",
+            "figure_of_merit",
+            "efficiency",
+            "advance_ratio",
+            "tip_mach",
+            "inflow_angle",
+            "angle_of_attack",
+        )
+    }
+    out["normal_load"] = prob.get_val("thrust_per_span")[0]
+    out["tangential_load"] = prob.get_val("drag_per_span")[0]
     result = _squeeze(out, scalar)
     result.update(station_radius=r, station_width=width)
     return result
 
 
-def pitt_peters(radius, hub_radius, num_blades, radial_stations, chord, twist_deg, rpm,
-                edgewise_velocity, disk_angle_deg, airfoil, num_azimuth=25,
-                density=SEA_LEVEL_DENSITY, viscosity=1.81e-5, speed_of_sound=340.3,
-                tip_loss=True, hub_loss=True,
-                loss_placement='momentum', tangential_induction=True, spin_direction=1):
+def pitt_peters(
+    radius,
+    hub_radius,
+    num_blades,
+    radial_stations,
+    chord,
+    twist_deg,
+    rpm,
+    edgewise_velocity,
+    disk_angle_deg,
+    airfoil,
+    num_azimuth=25,
+    density=SEA_LEVEL_DENSITY,
+    viscosity=1.81e-5,
+    speed_of_sound=340.3,
+    tip_loss=True,
+    hub_loss=True,
+    loss_placement="momentum",
+    tangential_induction=True,
+    spin_direction=1,
+):
     """
     Steady Pitt–Peters analysis of one rotor in edgewise (or any non-axial) flight.
 
@@ -241,39 +326,73 @@ def pitt_peters(radius, hub_radius, num_blades, radial_stations, chord, twist_de
     n = r.size
     chord = _positive("chord", _station_values("chord", chord, n))
     twist = np.radians(_station_values("twist_deg", twist_deg, n))
-    ops, scalar = _operating_points(rpm=rpm, edgewise_velocity=edgewise_velocity,
-                                    disk_angle_deg=disk_angle_deg)
-    _positive("rpm", ops['rpm'])
-    if np.any(ops['edgewise_velocity'] < 0.0):
-        raise ValueError(f"edgewise_velocity = {ops['edgewise_velocity'].tolist()}; allowed: "
-                         ">= 0 m/s (the disk angle of attack sets the direction)")
-    for name, value in (('density', density), ('viscosity', viscosity),
-                        ('speed_of_sound', speed_of_sound)):
+    ops, scalar = _operating_points(
+        rpm=rpm, edgewise_velocity=edgewise_velocity, disk_angle_deg=disk_angle_deg
+    )
+    _positive("rpm", ops["rpm"])
+    if np.any(ops["edgewise_velocity"] < 0.0):
+        raise ValueError(
+            f"edgewise_velocity = {ops['edgewise_velocity'].tolist()}; allowed: "
+            ">= 0 m/s (the disk angle of attack sets the direction)"
+        )
+    for name, value in (
+        ("density", density),
+        ("viscosity", viscosity),
+        ("speed_of_sound", speed_of_sound),
+    ):
         _positive(name, value)
-    nn = ops['rpm'].size
-    alpha = np.radians(ops['disk_angle_deg'])
-    speed = ops['edgewise_velocity']
+    nn = ops["rpm"].size
+    alpha = np.radians(ops["disk_angle_deg"])
+    speed = ops["edgewise_velocity"]
     inplane = np.zeros((1, nn, 2))
     inplane[0, :, 0] = speed * np.cos(alpha)
-    kw = dict(num_nodes=nn, num_radial=n, num_azimuth=int(num_azimuth),
-              num_blades=int(num_blades), spin_direction=int(spin_direction),
-              polar=get_polar(airfoil), tip_loss=tip_loss, hub_loss=hub_loss,
-              loss_placement=loss_placement, tangential_induction=tangential_induction)
+    kw = dict(
+        num_nodes=nn,
+        num_radial=n,
+        num_azimuth=int(num_azimuth),
+        num_blades=int(num_blades),
+        spin_direction=int(spin_direction),
+        polar=get_polar(airfoil),
+        tip_loss=tip_loss,
+        hub_loss=hub_loss,
+        loss_placement=loss_placement,
+        tangential_induction=tangential_induction,
+    )
     prob = om.Problem(reports=False, comm=serial_comm())
-    prob.model.add_subsystem('inflow', PittPetersInflowComp(**kw), promotes=['*'])
-    prob.model.add_subsystem('loads', PittPetersLoadsComp(**kw), promotes=['*'])
+    prob.model.add_subsystem("inflow", PittPetersInflowComp(**kw), promotes=["*"])
+    prob.model.add_subsystem("loads", PittPetersLoadsComp(**kw), promotes=["*"])
     prob.setup()
-    _set_common(prob, radius, hub_radius, r, width, chord, twist, ops['rpm'], density, viscosity,
-                speed_of_sound, nn)
-    prob.set_val('axial_velocity', (-speed * np.sin(alpha))[None, :])
-    prob.set_val('inplane_velocity', inplane)
+    _set_common(
+        prob,
+        radius,
+        hub_radius,
+        r,
+        width,
+        chord,
+        twist,
+        ops["rpm"],
+        density,
+        viscosity,
+        speed_of_sound,
+        nn,
+    )
+    prob.set_val("axial_velocity", (-speed * np.sin(alpha))[None, :])
+    prob.set_val("inplane_velocity", inplane)
     prob.run_model()
-    out = {name: prob.get_val(name)[0] for name in (
-        'thrust', 'torque', 'inflow_states', 'inplane_force', 'hub_moment', 'inflow_angle')}
-    out['power'] = out['torque'] * ops['rpm'] * RPM_TO_RAD_S
-    out['normal_load'] = prob.get_val('thrust_per_span')[0]
-    out['tangential_load'] = prob.get_val('drag_per_span')[0]
+    out = {
+        name: prob.get_val(name)[0]
+        for name in (
+            "thrust",
+            "torque",
+            "inflow_states",
+            "inplane_force",
+            "hub_moment",
+            "inflow_angle",
+        )
+    }
+    out["power"] = out["torque"] * ops["rpm"] * RPM_TO_RAD_S
+    out["normal_load"] = prob.get_val("thrust_per_span")[0]
+    out["tangential_load"] = prob.get_val("drag_per_span")[0]
     result = _squeeze(out, scalar)
-    result.update(azimuth=azimuth_angles(int(num_azimuth)), station_radius=r,
-                  station_width=width)
+    result.update(azimuth=azimuth_angles(int(num_azimuth)), station_radius=r, station_width=width)
     return result

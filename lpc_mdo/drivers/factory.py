@@ -81,7 +81,8 @@ def make_driver(optimizer="IPOPT", **settings):
             + (" (it is, but was built without SNOPT)" if available else "")
             + ". SNOPT is licensed software: build pyoptsparse with your SNOPT source "
             "(OpenMDAO's build_pyoptsparse, or conda-forge pyoptsparse plus SNOPT), or use "
-            "make_driver('IPOPT'), which needs only pip install 'lpc-mdo[ipopt]'.")
+            "make_driver('IPOPT'), which needs only pip install 'lpc-mdo[ipopt]'."
+        )
 
     aliases = {"max_iter": "maxiter", "maxiter": "max_iter", "print_level": "disp"}
     for key, value in settings.items():

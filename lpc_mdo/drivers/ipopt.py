@@ -98,10 +98,20 @@ class IpoptDriver(omi.DriverHooks):
     def __init__(self, **kwargs):
         super().__init__(**kwargs)
         omi.set_supports(
-            self, optimization=True, inequality_constraints=True, equality_constraints=True,
-            two_sided_constraints=True, linear_constraints=True, simultaneous_derivatives=True,
-            total_jac_sparsity=True, gradients=True, multiple_objectives=False,
-            active_set=False, integer_design_vars=False, distributed_design_vars=False)
+            self,
+            optimization=True,
+            inequality_constraints=True,
+            equality_constraints=True,
+            two_sided_constraints=True,
+            linear_constraints=True,
+            simultaneous_derivatives=True,
+            total_jac_sparsity=True,
+            gradients=True,
+            multiple_objectives=False,
+            active_set=False,
+            integer_design_vars=False,
+            distributed_design_vars=False,
+        )
 
         self.opt_settings = {}
         self.analysis_errors = []
@@ -117,32 +127,55 @@ class IpoptDriver(omi.DriverHooks):
 
     def declare_options(self):
         """Declare the options listed in the class docstring."""
-        self.options.declare("max_iter", default=200, types=int, lower=0,
-                             desc="Maximum number of IPOPT iterations.")
-        self.options.declare("tol", default=1e-6, types=float, lower=0.0,
-                             desc="IPOPT convergence tolerance (driver-scaled space).")
-        self.options.declare("print_level", default=5, types=int, lower=0, upper=12,
-                             desc="IPOPT console output level, 0 (silent) to 12.")
-        self.options.declare("output_file", default=None, types=str, allow_none=True,
-                             desc="IPOPT log file; relative paths go into the outputs folder.")
-        self.options.declare("warm_start", default=None, types=IpoptMultipliers,
-                             allow_none=True,
-                             desc="Multipliers of a previous run (driver.multipliers) to "
-                                  "warm-start IPOPT from the current design point.")
+        self.options.declare(
+            "max_iter", default=200, types=int, lower=0, desc="Maximum number of IPOPT iterations."
+        )
+        self.options.declare(
+            "tol",
+            default=1e-6,
+            types=float,
+            lower=0.0,
+            desc="IPOPT convergence tolerance (driver-scaled space).",
+        )
+        self.options.declare(
+            "print_level",
+            default=5,
+            types=int,
+            lower=0,
+            upper=12,
+            desc="IPOPT console output level, 0 (silent) to 12.",
+        )
+        self.options.declare(
+            "output_file",
+            default=None,
+            types=str,
+            allow_none=True,
+            desc="IPOPT log file; relative paths go into the outputs folder.",
+        )
+        self.options.declare(
+            "warm_start",
+            default=None,
+            types=IpoptMultipliers,
+            allow_none=True,
+            desc="Multipliers of a previous run (driver.multipliers) to "
+            "warm-start IPOPT from the current design point.",
+        )
 
     def check_setup(self):
         """Reject a problem with more than one objective before any model run."""
         objectives = omi.objective_meta(self)
         if len(objectives) > 1:
-            raise RuntimeError(f"{self.msginfo}: IPOPT takes one objective, "
-                               f"got {len(objectives)}: {list(objectives)}.")
+            raise RuntimeError(
+                f"{self.msginfo}: IPOPT takes one objective, "
+                f"got {len(objectives)}: {list(objectives)}."
+            )
 
     def _reset_caches(self):
-        self._x_model = None       # x at which the model was last run successfully
-        self._x_failed = None      # x at which the model last raised AnalysisError
-        self._x_jac = None         # x at which the nonlinear Jacobian was last computed
+        self._x_model = None  # x at which the model was last run successfully
+        self._x_failed = None  # x at which the model last raised AnalysisError
+        self._x_jac = None  # x at which the nonlinear Jacobian was last computed
         self._jac_cache = None
-        self._funcs = None         # (objective, nonlinear constraint vector) at _x_model
+        self._funcs = None  # (objective, nonlinear constraint vector) at _x_model
 
     # ------------------------------------------------------------------ problem layout
 
@@ -214,8 +247,7 @@ class IpoptDriver(omi.DriverHooks):
                 continue
             for dv in omi.relevant_design_vars(self, con):
                 sl = self._dv_slices[dv]
-                rr, cc = np.meshgrid(np.arange(size), np.arange(sl.start, sl.stop),
-                                     indexing="ij")
+                rr, cc = np.meshgrid(np.arange(size), np.arange(sl.start, sl.stop), indexing="ij")
                 rows.append(r0 + rr.ravel())
                 cols.append(cc.ravel())
         if not rows:
@@ -284,16 +316,23 @@ class IpoptDriver(omi.DriverHooks):
         self._jac_cols = np.concatenate([nl_cols, lin_c]).astype(int)
         self._lin_vals = self._lin_jac[lin_r, lin_c]
 
-        nlp = cyipopt.Problem(n=self._n, m=self._m, problem_obj=_IpoptCallbacks(self, cyipopt),
-                              lb=self._x_lower, ub=self._x_upper,
-                              cl=self._g_lower, cu=self._g_upper)
+        nlp = cyipopt.Problem(
+            n=self._n,
+            m=self._m,
+            problem_obj=_IpoptCallbacks(self, cyipopt),
+            lb=self._x_lower,
+            ub=self._x_upper,
+            cl=self._g_lower,
+            cu=self._g_upper,
+        )
         settings = dict(DEFAULT_IPOPT_SETTINGS)
         settings["max_iter"] = self.options["max_iter"]
         settings["tol"] = self.options["tol"]
         settings["print_level"] = self.options["print_level"]
         if self.options["output_file"]:
-            settings["output_file"] = str(problem.get_outputs_dir(mkdir=True)
-                                          / self.options["output_file"])
+            settings["output_file"] = str(
+                problem.get_outputs_dir(mkdir=True) / self.options["output_file"]
+            )
         warm = self.options["warm_start"]
         if warm is not None:
             settings.update(WARM_START_SETTINGS)
@@ -347,8 +386,11 @@ class IpoptDriver(omi.DriverHooks):
     def _store_funcs(self):
         obj = next(iter(self.get_objective_values().values()))
         cons = self.get_constraint_values(lintype="nonlinear")
-        g = (np.concatenate([np.atleast_1d(cons[c]) for c in self._nl_cons])
-             if self._nl_cons else np.zeros(0))
+        g = (
+            np.concatenate([np.atleast_1d(cons[c]) for c in self._nl_cons])
+            if self._nl_cons
+            else np.zeros(0)
+        )
         self._funcs = (float(np.asarray(obj).ravel()[0]), g)
 
     def _evaluate(self, x):
@@ -422,9 +464,11 @@ class IpoptDriver(omi.DriverHooks):
         lagrange = np.zeros(self._m)
         zl = np.zeros(self._n)
         zu = np.zeros(self._n)
-        for target, slices, key in ((lagrange, self._con_slices, "constraints"),
-                                    (zl, self._dv_slices, "lower"),
-                                    (zu, self._dv_slices, "upper")):
+        for target, slices, key in (
+            (lagrange, self._con_slices, "constraints"),
+            (zl, self._dv_slices, "lower"),
+            (zu, self._dv_slices, "upper"),
+        ):
             for name, value in warm.get(key, {}).items():
                 if name not in slices:
                     continue
@@ -433,7 +477,8 @@ class IpoptDriver(omi.DriverHooks):
                 if value.size != sl.stop - sl.start:
                     raise ValueError(
                         f"{self.msginfo}: warm_start multipliers for '{name}' have size "
-                        f"{value.size}, but the problem has size {sl.stop - sl.start}.")
+                        f"{value.size}, but the problem has size {sl.stop - sl.start}."
+                    )
                 target[sl] = value
         return lagrange, zl, zu
 
@@ -470,6 +515,7 @@ class _IpoptCallbacks:
         def grad(x):
             jac = drv._gradients(x)
             return None if jac is None else jac[0].copy()
+
         return self._guard(grad, x)
 
     def jacobianstructure(self):
@@ -485,10 +531,23 @@ class _IpoptCallbacks:
                 return None
             nl = jac[1:][drv._nl_rows, drv._nl_cols]
             return np.concatenate([nl, drv._lin_vals])
+
         return self._guard(jacobian, x)
 
-    def intermediate(self, alg_mod, iter_count, obj_value, inf_pr, inf_du, mu, d_norm,
-                     regularization_size, alpha_du, alpha_pr, ls_trials):
+    def intermediate(
+        self,
+        alg_mod,
+        iter_count,
+        obj_value,
+        inf_pr,
+        inf_du,
+        mu,
+        d_norm,
+        regularization_size,
+        alpha_du,
+        alpha_pr,
+        ls_trials,
+    ):
         drv = self._driver
         drv._ipopt_iterations = int(iter_count)
         # Returning False stops IPOPT cleanly (user interrupt or a Python error in a callback).

@@ -33,14 +33,18 @@ class SlsqpDriver(omi.ScipyHooks):
         super().__init__(**kwargs)
         self.options["optimizer"] = "SLSQP"
         self.analysis_errors = []
-        self._last_good = None     # (scaled objective, constraint values) of the last good point
+        self._last_good = None  # (scaled objective, constraint values) of the last good point
         self._last_failed = False  # whether the model holds a failed trial point
 
     def declare_options(self):
         """Declare ``failure_penalty`` on top of ``ScipyOptimizeDriver``'s options."""
-        self.options.declare("failure_penalty", default=1.0e6, lower=0.0,
-                             desc="added to the last successful scaled objective at a point "
-                                  "where the model raised om.AnalysisError")
+        self.options.declare(
+            "failure_penalty",
+            default=1.0e6,
+            lower=0.0,
+            desc="added to the last successful scaled objective at a point "
+            "where the model raised om.AnalysisError",
+        )
 
     def run(self):
         """
@@ -85,9 +89,12 @@ class SlsqpDriver(omi.ScipyHooks):
         omi.clear_pending_error(self)
         self._last_failed = True
         self.analysis_errors.append(str(error))
-        issue_warning(f"model evaluation {self.iter_count} failed ({error}); SLSQP's line "
-                      "search is given the last good point's values plus failure_penalty",
-                      prefix=self.msginfo, category=DriverWarning)
+        issue_warning(
+            f"model evaluation {self.iter_count} failed ({error}); SLSQP's line "
+            "search is given the last good point's values plus failure_penalty",
+            prefix=self.msginfo,
+            category=DriverWarning,
+        )
         value, cache = self._last_good
         omi.set_scipy_constraint_cache(self, cache)
         return value + self.options["failure_penalty"]

@@ -217,8 +217,11 @@ def design_var_metadata(source):
 
 
 def _responses(source, kind):
-    return {name: meta for name, meta in _metadata_vars(open_reader(source)).items()
-            if meta.get("type") == kind}
+    return {
+        name: meta
+        for name, meta in _metadata_vars(open_reader(source)).items()
+        if meta.get("type") == kind
+    }
 
 
 def constraint_metadata(source):
@@ -324,8 +327,11 @@ def read_value(source, name, units=None, case=None):
         if value is None:
             raise MissingVariableError(f"No finite {kind} bound is declared for {target!r}.")
         return value
-    cases = ([final_case(cr, case)] if case is not None
-             else [c for c in (last_case(cr, "problem"), last_case(cr, "driver")) if c])
+    cases = (
+        [final_case(cr, case)]
+        if case is not None
+        else [c for c in (last_case(cr, "problem"), last_case(cr, "driver")) if c]
+    )
     for c in cases:
         try:
             val = c.get_val(name, units=units) if units else c.get_val(name)
@@ -334,8 +340,10 @@ def read_value(source, name, units=None, case=None):
         except TypeError as err:  # incompatible units
             raise ValueError(str(err)) from None
         return np.atleast_1d(np.array(val, dtype=float))
-    raise MissingVariableError(f"Variable {name!r} is not in the recorded cases "
-                               f"({', '.join(c.name for c in cases) or 'none'}).")
+    raise MissingVariableError(
+        f"Variable {name!r} is not in the recorded cases "
+        f"({', '.join(c.name for c in cases) or 'none'})."
+    )
 
 
 def recorded_units(source, name):
@@ -360,8 +368,9 @@ def recorded_units(source, name):
     """
     md = open_reader(source).problem_metadata
     outputs = md["abs2prom"]["output"]
-    abs_name = name if name in outputs else next(
-        (a for a, prom in outputs.items() if prom == name), None)
+    abs_name = (
+        name if name in outputs else next((a for a, prom in outputs.items() if prom == name), None)
+    )
     if abs_name is None:
         meta = md["variables"].get(name)
         return meta.get("units") if isinstance(meta, dict) else None

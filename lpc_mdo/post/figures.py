@@ -107,12 +107,20 @@ def convergence_history(source, refs=None):
         objs = case.get_objectives()
         objective.append(float(np.ravel(objs[obj_name])[0]) if obj_name in objs else np.nan)
         rows = constraint_rows(cr, case, refs=refs)
-        violation.append(max((float(r["relative_violation"].max()) for r in rows
-                              if r["values"].size), default=0.0))
+        violation.append(
+            max(
+                (float(r["relative_violation"].max()) for r in rows if r["values"].size),
+                default=0.0,
+            )
+        )
         derivs.append(case.derivatives is not None)
-    return dict(objective_name=obj_name, iteration=np.arange(len(objective)),
-                objective=np.array(objective), max_violation=np.array(violation),
-                derivatives=np.array(derivs, dtype=bool))
+    return dict(
+        objective_name=obj_name,
+        iteration=np.arange(len(objective)),
+        objective=np.array(objective),
+        max_violation=np.array(violation),
+        derivatives=np.array(derivs, dtype=bool),
+    )
 
 
 def plot_convergence(source, path, refs=None, title=None):
@@ -151,8 +159,9 @@ def plot_convergence(source, path, refs=None, title=None):
     ax_obj.plot(it, hist["objective"], "-", color="C0")
     d = hist["derivatives"]
     if d.any():
-        ax_obj.plot(it[d], hist["objective"][d], "o", ms=3, color="C0",
-                    label="derivatives evaluated")
+        ax_obj.plot(
+            it[d], hist["objective"][d], "o", ms=3, color="C0", label="derivatives evaluated"
+        )
         ax_obj.legend(loc="best", fontsize="small")
     ax_obj.set_ylabel(f"objective: {hist['objective_name']}")
     ax_con.semilogy(it, np.maximum(hist["max_violation"], _VIOLATION_FLOOR), "-", color="C3")
@@ -176,9 +185,12 @@ def _grouped_bars(ax, categories, series, ylabel):
     x = np.arange(len(categories))
     for k, (label, values) in enumerate(series):
         ax.bar(x + (k - (n - 1) / 2) * width, values, width, label=label, color=f"C{k}")
-    ax.set_xticks(x, [str(c) for c in categories],
-                  rotation=45 if len(categories) > 6 else 0,
-                  ha="right" if len(categories) > 6 else "center")
+    ax.set_xticks(
+        x,
+        [str(c) for c in categories],
+        rotation=45 if len(categories) > 6 else 0,
+        ha="right" if len(categories) > 6 else "center",
+    )
     ax.set_ylabel(ylabel)
     ax.grid(True, axis="y", alpha=0.3)
     if len(series) > 1:
@@ -237,8 +249,9 @@ def _condition_value(cr, name, units, reduce):
     return float(_REDUCE[reduce](val))
 
 
-def plot_per_condition(designs, variable, conditions, path, units=None, reduce="sum",
-                       ylabel=None, title=None):
+def plot_per_condition(
+    designs, variable, conditions, path, units=None, reduce="sum", ylabel=None, title=None
+):
     """
     Plot a value per design condition as bars grouped by design (paper Fig. 16).
 
@@ -284,29 +297,30 @@ def plot_per_condition(designs, variable, conditions, path, units=None, reduce="
         for i, (_, cr) in enumerate(designs):
             for j, cond in enumerate(conditions):
                 try:
-                    table[i, j] = _condition_value(cr, variable.format(condition=cond), units,
-                                                   reduce)
+                    table[i, j] = _condition_value(
+                        cr, variable.format(condition=cond), units, reduce
+                    )
                 except MissingVariableError:
                     pass
         keep = ~np.all(np.isnan(table), axis=0)
         if not keep.any():
             raise MissingVariableError(
-                f"{variable!r} is recorded for none of the conditions {conditions}.")
+                f"{variable!r} is recorded for none of the conditions {conditions}."
+            )
         categories = [c for c, k in zip(conditions, keep, strict=True) if k]
         table = table[:, keep]
     else:
         table = np.array([read_value(cr, variable, units).ravel() for _, cr in designs])
         if table.shape[1] != len(conditions):
-            raise ValueError(f"{variable!r} has {table.shape[1]} entries for "
-                             f"{len(conditions)} conditions.")
+            raise ValueError(
+                f"{variable!r} has {table.shape[1]} entries for {len(conditions)} conditions."
+            )
         categories = conditions
     series = [(label, table[i]) for i, (label, _) in enumerate(designs)]
     fig, (ax,) = _figure(figsize=(max(6.4, 0.45 * len(categories) * len(series) + 2), 4.0))
     name = variable.replace("{condition}.", "").replace("{condition}", "")
-    first = (variable.format(condition=categories[0]) if "{condition}" in variable
-             else variable)
-    _grouped_bars(ax, categories, series,
-                  ylabel or _axis_label(name, units, designs[0][1], first))
+    first = variable.format(condition=categories[0]) if "{condition}" in variable else variable
+    _grouped_bars(ax, categories, series, ylabel or _axis_label(name, units, designs[0][1], first))
     if title:
         ax.set_title(title)
     return _save(fig, path)
@@ -316,8 +330,18 @@ def plot_per_condition(designs, variable, conditions, path, units=None, reduce="
 # Distributions and planform
 
 
-def plot_distribution(designs, names, path, x=None, units=None, x_units=None, limit=None,
-                      ylabel=None, xlabel=None, title=None):
+def plot_distribution(
+    designs,
+    names,
+    path,
+    x=None,
+    units=None,
+    x_units=None,
+    limit=None,
+    ylabel=None,
+    xlabel=None,
+    title=None,
+):
     """
     Plot recorded arrays along their index or along another recorded array.
 
@@ -369,14 +393,21 @@ def plot_distribution(designs, names, path, x=None, units=None, x_units=None, li
                 parts = [label] if len(designs) > 1 else []
                 parts += [name] if len(names) > 1 or len(designs) == 1 else []
                 parts += [f"[:, {j}]"] if y.shape[1] > 1 else []
-                ax.plot(xs, y[:, j], styles[m % len(styles)], color=f"C{k}", marker=".",
-                        label=" ".join(parts) if j == 0 or y.shape[1] <= 5 else None)
+                ax.plot(
+                    xs,
+                    y[:, j],
+                    styles[m % len(styles)],
+                    color=f"C{k}",
+                    marker=".",
+                    label=" ".join(parts) if j == 0 or y.shape[1] <= 5 else None,
+                )
     if limit is not None:
         ax.axhline(limit, color="k", ls="--", lw=1, label=f"limit {limit:g}")
     cr0 = designs[0][1]
     ax.set_xlabel(xlabel or (_axis_label(x, x_units, cr0) if x else "index"))
-    ax.set_ylabel(ylabel or _axis_label(names[0] if len(names) == 1 else "value", units, cr0,
-                                        names[0]))
+    ax.set_ylabel(
+        ylabel or _axis_label(names[0] if len(names) == 1 else "value", units, cr0, names[0])
+    )
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize="small")
     if title:
@@ -426,16 +457,18 @@ def plot_planform(designs, meshes, path, rotors=(), units="m", mirror=False, tit
             if mesh.ndim != 3 or mesh.shape[2] != 3:
                 raise ValueError(f"{name!r} has shape {mesh.shape}; a mesh is (nx, ny, 3).")
             outline = np.vstack([mesh[0, :, :2], mesh[-1, ::-1, :2], mesh[:1, 0, :2]])
-            for sign in ((1.0, -1.0) if mirror else (1.0,)):
-                ax.plot(sign * outline[:, 1], outline[:, 0], label=label if first else None,
-                        **style)
+            for sign in (1.0, -1.0) if mirror else (1.0,):
+                ax.plot(
+                    sign * outline[:, 1], outline[:, 0], label=label if first else None, **style
+                )
                 first = False
         for hub_name, radius_name in rotors:
             hubs = read_value(cr, hub_name, units).reshape(-1, 3)
             radii = np.broadcast_to(read_value(cr, radius_name, units).ravel(), (len(hubs),))
             for (hx, hy, _), r in zip(hubs, radii, strict=True):
-                ax.add_patch(Circle((hy, hx), r, fill=False, lw=0.8, color=style["color"],
-                                    ls=style["ls"]))
+                ax.add_patch(
+                    Circle((hy, hx), r, fill=False, lw=0.8, color=style["color"], ls=style["ls"])
+                )
     ax.set_aspect("equal", adjustable="datalim")
     ax.autoscale_view()
     ax.set_xlabel(f"y ({units})")
@@ -509,8 +542,17 @@ def sweep_points(sources, x, group=None, x_units=None, group_units=None):
     return points
 
 
-def plot_sweep(runs, path, y=None, y_units=None, xlabel="parameter", ylabel=None,
-               group_label=None, highlight=(), title=None):
+def plot_sweep(
+    runs,
+    path,
+    y=None,
+    y_units=None,
+    xlabel="parameter",
+    ylabel=None,
+    group_label=None,
+    highlight=(),
+    title=None,
+):
     """
     Plot the objective (or any recorded scalar) against a parameter (paper Figs. 17-18).
 
@@ -544,6 +586,7 @@ def plot_sweep(runs, path, y=None, y_units=None, xlabel="parameter", ylabel=None
     Path
         The PNG written.
     """
+
     def value(src):
         if y is None:
             return objective_value(src)
@@ -557,10 +600,15 @@ def plot_sweep(runs, path, y=None, y_units=None, xlabel="parameter", ylabel=None
         yname, yv = value(src)
         groups.setdefault(gv, []).append((float(xv), yv))
     fig, (ax,) = _figure()
+
     def order(item):
         gv = item[0]
-        return (gv is None, isinstance(gv, str), gv if isinstance(gv, (int, float)) else 0.0,
-                str(gv))
+        return (
+            gv is None,
+            isinstance(gv, str),
+            gv if isinstance(gv, (int, float)) else 0.0,
+            str(gv),
+        )
 
     for k, (gv, pts) in enumerate(sorted(groups.items(), key=order)):
         pts = np.array(sorted(pts))

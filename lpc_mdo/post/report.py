@@ -121,10 +121,18 @@ LPC_DESIGN_QUANTITIES = (
 
 #: Wing-box design variables of VehicleGroup (per bay, root to tip).
 LPC_THICKNESS_DISTRIBUTIONS = (
-    DistributionSpec("skin_thickness", ("top_skin_thickness", "bottom_skin_thickness"),
-                     units="mm", title="Skin thickness, root to tip"),
-    DistributionSpec("spar_thickness", ("front_spar_thickness", "rear_spar_thickness"),
-                     units="mm", title="Spar thickness, root to tip"),
+    DistributionSpec(
+        "skin_thickness",
+        ("top_skin_thickness", "bottom_skin_thickness"),
+        units="mm",
+        title="Skin thickness, root to tip",
+    ),
+    DistributionSpec(
+        "spar_thickness",
+        ("front_spar_thickness", "rear_spar_thickness"),
+        units="mm",
+        title="Spar thickness, root to tip",
+    ),
 )
 
 
@@ -135,9 +143,16 @@ def lpc_distributions(vehicle):
     """
     allowable = vehicle.material.allowable_stress / 1e6
     return LPC_THICKNESS_DISTRIBUTIONS + tuple(
-        DistributionSpec(f"stress_{c.name}", (f"{c.name}.von_mises_stress",), units="MPa",
-                         limit=allowable, title=f"Beam stress, {c.name}")
-        for c in vehicle.conditions if c.kind == "structural")
+        DistributionSpec(
+            f"stress_{c.name}",
+            (f"{c.name}.von_mises_stress",),
+            units="MPa",
+            limit=allowable,
+            title=f"Beam stress, {c.name}",
+        )
+        for c in vehicle.conditions
+        if c.kind == "structural"
+    )
 
 
 def _powered_conditions(vehicle):
@@ -151,12 +166,20 @@ def _all_lift_rotor_conditions(vehicle):
     from lpc_mdo.groups.condition_kinds import condition_class
 
     n = len(vehicle.lift_rotors)
-    return tuple(c.name for c in vehicle.conditions
-                 if len(condition_class(c.kind).motor_sets(vehicle, c).get("lift", ())) == n)
+    return tuple(
+        c.name
+        for c in vehicle.conditions
+        if len(condition_class(c.kind).motor_sets(vehicle, c).get("lift", ())) == n
+    )
+
 
 LPC_SWEEPS = (
-    SweepSpec("sweep_energy_density", "battery.specific_energy", x_units="W*h/kg",
-              xlabel="battery energy density (Wh/kg)"),
+    SweepSpec(
+        "sweep_energy_density",
+        "battery.specific_energy",
+        x_units="W*h/kg",
+        xlabel="battery energy density (Wh/kg)",
+    ),
     SweepSpec("sweep_final_soc", "lower:state_of_charge", xlabel="final state of charge"),
 )
 
@@ -254,9 +277,17 @@ class ReportSpec:
     @classmethod
     def generic(cls, **overrides):
         """A spec with every LPC-specific part off (only the generic tables and figures)."""
-        off = dict(design_quantities=(), meshes=(), rotors=(), mass_breakdown=None,
-                   power=None, figure_of_merit=None, distributions=(), sweeps=(),
-                   trim_residuals=False)
+        off = dict(
+            design_quantities=(),
+            meshes=(),
+            rotors=(),
+            mass_breakdown=None,
+            power=None,
+            figure_of_merit=None,
+            distributions=(),
+            sweeps=(),
+            trim_residuals=False,
+        )
         return cls(**{**off, **overrides})
 
 
@@ -299,16 +330,21 @@ def find_case_files(case_files_or_dir):
     src = case_files_or_dir
     if isinstance(src, (str, PathLike)) and Path(src).is_dir():
         root = Path(src)
-        found = [(None, p) for p in sorted(root.rglob("*"))
-                 if p.suffix in _CASE_SUFFIXES and p.is_file() and _is_sqlite(p)]
+        found = [
+            (None, p)
+            for p in sorted(root.rglob("*"))
+            if p.suffix in _CASE_SUFFIXES and p.is_file() and _is_sqlite(p)
+        ]
     else:
         root = None
         if isinstance(src, (str, PathLike)):
             src = [src]
         elif isinstance(src, Mapping):
             src = list(src.items())
-        found = [(item[0], Path(item[1])) if isinstance(item, tuple) else (None, Path(item))
-                 for item in src]
+        found = [
+            (item[0], Path(item[1])) if isinstance(item, tuple) else (None, Path(item))
+            for item in src
+        ]
     out, seen = [], set()
     for label, path in found:
         if not path.is_file():
@@ -374,8 +410,10 @@ def _run_section(index, label, cr, spec):
     def constraints():
         table = tables.constraint_table(cr, tol=spec.tol, refs=spec.refs)
         status = [row[-1] for row in table.rows]
-        counts = {s: sum(1 for t in status if t.startswith(s))
-                  for s in ("active", "partially active", "inactive", "violated")}
+        counts = {
+            s: sum(1 for t in status if t.startswith(s))
+            for s in ("active", "partially active", "inactive", "violated")
+        }
         summary = ", ".join(f"{n} {s}" for s, n in counts.items() if n)
         index.add(f"**Constraints** (Table 7), final case: {summary}.", "")
         index.table(table, f"constraints_{slug}")
@@ -402,8 +440,9 @@ def _run_section(index, label, cr, spec):
         _try(index, f"design variables of {label}", design_variables)
 
     def convergence():
-        path = figures.plot_convergence(cr, index.out_dir / "figures" / f"convergence_{slug}.png",
-                                        refs=spec.refs, title=label)
+        path = figures.plot_convergence(
+            cr, index.out_dir / "figures" / f"convergence_{slug}.png", refs=spec.refs, title=label
+        )
         index.figure(path, f"Convergence of {label}")
 
     index.add("**Convergence**:", "")
@@ -438,81 +477,128 @@ def _comparison_parts(index, runs, spec):
     fig_dir = index.out_dir / "figures"
 
     if spec.design_quantities:
+
         def design_table():
             table = tables.design_table(runs, spec.design_quantities)
             if len(table.columns) == 1:
-                raise MissingVariableError("none of the design quantities is recorded ("
-                                           + ", ".join(Quantity.coerce(q).name for q in
-                                                       spec.design_quantities) + ").")
+                raise MissingVariableError(
+                    "none of the design quantities is recorded ("
+                    + ", ".join(Quantity.coerce(q).name for q in spec.design_quantities)
+                    + ")."
+                )
             index.table(table, "designs")
+
         index.add("### Design comparison (Table 8)", "")
         _try(index, "design table", design_table)
 
     if spec.meshes:
+
         def planform():
             kept = _runs_with(index, runs, spec.meshes)
             rotors = [pair for pair in spec.rotors if all(_recorded(cr, pair) for _, cr in kept)]
             for pair in spec.rotors:
                 if pair not in rotors:
                     index.add(f"*Rotor disks {pair} left out: not recorded in every run.*", "")
-            path = figures.plot_planform(kept, spec.meshes, fig_dir / "planform.png",
-                                         rotors=rotors)
+            path = figures.plot_planform(kept, spec.meshes, fig_dir / "planform.png", rotors=rotors)
             index.figure(path, "Planform")
+
         index.add("### Planform (Fig. 15)", "")
         _try(index, "planform", planform)
 
     if spec.mass_breakdown:
+
         def mass():
             kept = _runs_with(index, runs, [spec.mass_breakdown])
-            path = figures.plot_bars(kept, spec.mass_breakdown, fig_dir / "mass_breakdown.png",
-                                     labels=spec.mass_labels, units=spec.mass_units)
+            path = figures.plot_bars(
+                kept,
+                spec.mass_breakdown,
+                fig_dir / "mass_breakdown.png",
+                labels=spec.mass_labels,
+                units=spec.mass_units,
+            )
             index.figure(path, "Mass breakdown")
+
         index.add("### Mass breakdown (Figs. 19-20)", "")
         _try(index, "mass breakdown", mass)
 
     for key, stem, heading, conditions, reduce, units in (
-            ("power", "power", "Power per condition (Fig. 16b)", spec.conditions, "sum",
-             spec.power_units),
-            ("figure_of_merit", "figure_of_merit", "Figure of merit per condition (Fig. 16a)",
-             spec.fom_conditions, "mean", None)):
+        (
+            "power",
+            "power",
+            "Power per condition (Fig. 16b)",
+            spec.conditions,
+            "sum",
+            spec.power_units,
+        ),
+        (
+            "figure_of_merit",
+            "figure_of_merit",
+            "Figure of merit per condition (Fig. 16a)",
+            spec.fom_conditions,
+            "mean",
+            None,
+        ),
+    ):
         variable = getattr(spec, key)
         if not variable:
             continue
 
-        def per_condition(variable=variable, stem=stem, conditions=conditions, reduce=reduce,
-                          units=units):
-            names = ([variable.format(condition=c) for c in conditions]
-                     if "{condition}" in variable else [variable])
+        def per_condition(
+            variable=variable, stem=stem, conditions=conditions, reduce=reduce, units=units
+        ):
+            names = (
+                [variable.format(condition=c) for c in conditions]
+                if "{condition}" in variable
+                else [variable]
+            )
             kept = _runs_with(index, runs, names, any_of=True)
-            path = figures.plot_per_condition(kept, variable, conditions,
-                                              fig_dir / f"{stem}.png", units=units,
-                                              reduce=reduce)
+            path = figures.plot_per_condition(
+                kept, variable, conditions, fig_dir / f"{stem}.png", units=units, reduce=reduce
+            )
             index.figure(path, stem.replace("_", " "))
+
         index.add(f"### {heading}", "")
         _try(index, stem.replace("_", " "), per_condition)
 
     for dist in spec.distributions:
+
         def distribution(dist=dist):
             names = list(dist.names) + ([dist.x] if dist.x else [])
             kept = _runs_with(index, runs, names)
-            path = figures.plot_distribution(kept, dist.names, fig_dir / f"{dist.stem}.png",
-                                             x=dist.x, units=dist.units, x_units=dist.x_units,
-                                             limit=dist.limit, title=dist.title)
+            path = figures.plot_distribution(
+                kept,
+                dist.names,
+                fig_dir / f"{dist.stem}.png",
+                x=dist.x,
+                units=dist.units,
+                x_units=dist.x_units,
+                limit=dist.limit,
+                title=dist.title,
+            )
             index.figure(path, dist.stem.replace("_", " "))
+
         index.add(f"### Distribution: {dist.title or dist.stem}", "")
         _try(index, dist.stem, distribution)
 
     for sweep in spec.sweeps:
+
         def sweep_figure(sweep=sweep):
-            points = figures.sweep_points(runs, sweep.x, sweep.group, sweep.x_units,
-                                          sweep.group_units)
+            points = figures.sweep_points(
+                runs, sweep.x, sweep.group, sweep.x_units, sweep.group_units
+            )
             if len({x for _, x, _ in points}) < 2:
-                raise MissingVariableError(f"fewer than two runs with different values of "
-                                           f"{sweep.x!r} ({len(points)} record it).")
-            path = figures.plot_sweep(points, fig_dir / f"{sweep.stem}.png",
-                                      xlabel=sweep.xlabel or sweep.x,
-                                      group_label=sweep.group_label)
+                raise MissingVariableError(
+                    f"fewer than two runs with different values of "
+                    f"{sweep.x!r} ({len(points)} record it)."
+                )
+            path = figures.plot_sweep(
+                points,
+                fig_dir / f"{sweep.stem}.png",
+                xlabel=sweep.xlabel or sweep.x,
+                group_label=sweep.group_label,
+            )
             index.figure(path, sweep.stem.replace("_", " "))
+
         index.add(f"### Sweep: {sweep.xlabel or sweep.x} (Figs. 17-18)", "")
         _try(index, sweep.stem, sweep_figure)
 
@@ -555,8 +641,9 @@ def write_report(case_files_or_dir, out_dir, spec=None):
     runs = [(label, tables.open_reader(path)) for label, path in files]
     index = _Index(out_dir)
 
-    index.add("# Optimization report", "",
-              f"Generated by lpc_mdo.post from {len(runs)} case file(s):", "")
+    index.add(
+        "# Optimization report", "", f"Generated by lpc_mdo.post from {len(runs)} case file(s):", ""
+    )
     index.add(*(f"- **{label}**: `{path}`" for label, path in files), "")
 
     index.add("## Statistics (Table 9)", "")

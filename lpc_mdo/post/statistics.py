@@ -141,8 +141,11 @@ def write_run_stats(driver_result, path, peak_memory_mb=None):
     path = Path(path)
     if path.is_dir():
         path = path / RUN_STATS_FILENAME
-    get = (driver_result.get if hasattr(driver_result, "get")
-           else lambda key: getattr(driver_result, key, None))
+    get = (
+        driver_result.get
+        if hasattr(driver_result, "get")
+        else lambda key: getattr(driver_result, key, None)
+    )
     data = {"format": RUN_STATS_FORMAT}
     for key, kind in RUN_STATS_KEYS.items():
         data[key] = _coerce(peak_memory_mb if key == "peak_memory_mb" else get(key), kind)
@@ -244,10 +247,18 @@ def model_size(source):
         outputs = [n for n in abs2prom["output"] if not n.startswith(_AUTO_IVC + ".")]
         comps = {n.rpartition(".")[0] for n in outputs + list(abs2prom["input"])}
         groups = {p for c in comps for p in _parents(c)}
-        return dict(components=len(comps), groups=len(groups), implicit_components=None,
-                    explicit_components=None, inputs=len(abs2prom["input"]),
-                    outputs=len(outputs), output_size=None, implicit_outputs=None,
-                    implicit_output_size=None, component_classes=Counter())
+        return dict(
+            components=len(comps),
+            groups=len(groups),
+            implicit_components=None,
+            explicit_components=None,
+            inputs=len(abs2prom["input"]),
+            outputs=len(outputs),
+            output_size=None,
+            implicit_outputs=None,
+            implicit_output_size=None,
+            component_classes=Counter(),
+        )
 
     counts = Counter()
     classes = Counter()
@@ -262,8 +273,7 @@ def model_size(source):
             elif kind == "component" and name != _AUTO_IVC:
                 counts["components"] += 1
                 ctype = child.get("component_type")
-                counts["implicit_components" if ctype == "implicit"
-                       else "explicit_components"] += 1
+                counts["implicit_components" if ctype == "implicit" else "explicit_components"] += 1
                 classes[child.get("class")] += 1
                 for var in child.get("children") or []:
                     size = _shape_size(var.get("shape"))
@@ -277,8 +287,17 @@ def model_size(source):
                             counts["implicit_output_size"] += size
 
     walk(tree, "")
-    keys = ("components", "groups", "implicit_components", "explicit_components", "inputs",
-            "outputs", "output_size", "implicit_outputs", "implicit_output_size")
+    keys = (
+        "components",
+        "groups",
+        "implicit_components",
+        "explicit_components",
+        "inputs",
+        "outputs",
+        "output_size",
+        "implicit_outputs",
+        "implicit_output_size",
+    )
     return {**{k: counts[k] for k in keys}, "component_classes": classes}
 
 
@@ -326,8 +345,11 @@ def run_statistics(source, run_stats="auto"):
         stats = read_run_stats(run_stats)
     stats = stats or {}
 
-    ids = (cr.list_cases("driver", recurse=False, out_stream=None)
-           if "driver" in cr.list_sources(out_stream=None) else [])
+    ids = (
+        cr.list_cases("driver", recurse=False, out_stream=None)
+        if "driver" in cr.list_sources(out_stream=None)
+        else []
+    )
     cases = [cr.get_case(i) for i in ids]
     deriv_cases = sum(1 for c in cases if c.derivatives is not None)
 
@@ -343,16 +365,23 @@ def run_statistics(source, run_stats="auto"):
 
     dvs, cons = design_var_metadata(cr), constraint_metadata(cr)
     out = dict(
-        wall_time=wall, wall_time_source=wall_source, driver_cases=len(cases),
-        derivative_cases=deriv_cases, iter_count=stats.get("iter_count"),
-        model_evals=stats.get("model_evals"), deriv_evals=stats.get("deriv_evals"),
+        wall_time=wall,
+        wall_time_source=wall_source,
+        driver_cases=len(cases),
+        derivative_cases=deriv_cases,
+        iter_count=stats.get("iter_count"),
+        model_evals=stats.get("model_evals"),
+        deriv_evals=stats.get("deriv_evals"),
         mean_model_time=mean("model_time", "model_evals"),
         mean_deriv_time=mean("deriv_time", "deriv_evals"),
-        peak_memory_mb=stats.get("peak_memory_mb"), success=stats.get("success"),
+        peak_memory_mb=stats.get("peak_memory_mb"),
+        success=stats.get("success"),
         exit_status=stats.get("exit_status"),
-        design_vars=len(dvs), design_var_size=sum(m["size"] for m in dvs.values()),
+        design_vars=len(dvs),
+        design_var_size=sum(m["size"] for m in dvs.values()),
         objectives=len(objective_metadata(cr)),
-        constraints=len(cons), constraint_size=sum(m["size"] for m in cons.values()),
+        constraints=len(cons),
+        constraint_size=sum(m["size"] for m in cons.values()),
     )
     out.update(model_size(cr))
     return out
@@ -409,9 +438,13 @@ def statistics_table(runs, run_stats="auto"):
     """
     runs = normalize_designs(runs)
     stats = [run_statistics(cr, run_stats) for _, cr in runs]
-    rows = [[label] + [s[key] for s in stats] for key, label in STATISTICS_ROWS
-            if any(s[key] is not None for s in stats)]
-    notes = ["Model counts exclude OpenMDAO's automatic _auto_ivc component.",
-             "Iterations, evaluation counts and times come from run_stats.json when present."]
-    return Table(["metric"] + [label for label, _ in runs], rows, "Optimization statistics",
-                 notes)
+    rows = [
+        [label] + [s[key] for s in stats]
+        for key, label in STATISTICS_ROWS
+        if any(s[key] is not None for s in stats)
+    ]
+    notes = [
+        "Model counts exclude OpenMDAO's automatic _auto_ivc component.",
+        "Iterations, evaluation counts and times come from run_stats.json when present.",
+    ]
+    return Table(["metric"] + [label for label, _ in runs], rows, "Optimization statistics", notes)

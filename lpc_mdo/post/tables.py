@@ -147,8 +147,14 @@ class Table:
             writer = csv.writer(fh)
             writer.writerow(self.columns)
             for row in self.rows:
-                writer.writerow(["" if v is None else (repr(float(v)) if isinstance(
-                    v, (float, np.floating)) else v) for v in row])
+                writer.writerow(
+                    [
+                        ""
+                        if v is None
+                        else (repr(float(v)) if isinstance(v, (float, np.floating)) else v)
+                        for v in row
+                    ]
+                )
         return md_path, csv_path
 
 
@@ -186,8 +192,9 @@ def limit_scale(meta, lower=None, upper=None, equals=None, ref=None):
     mag = np.nanmax(np.vstack(limits), axis=0) if limits else np.zeros(size)
     mag = np.nan_to_num(mag)
     if meta.get("ref") is not None:
-        fallback = np.max(np.abs(np.asarray(meta["ref"], float)
-                                 - np.asarray(meta.get("ref0") or 0.0, float)))
+        fallback = np.max(
+            np.abs(np.asarray(meta["ref"], float) - np.asarray(meta.get("ref0") or 0.0, float))
+        )
     elif meta.get("scaler") is not None:
         fallback = 1.0 / np.min(np.abs(np.asarray(meta["scaler"], float)))
     else:
@@ -303,10 +310,20 @@ def constraint_rows(source, case=None, tol=DEFAULT_TOL, refs=None):
         g = np.asarray(values[name], float).ravel()
         scale = limit_scale(meta, lower, upper, equals, refs.get(name))
         violation, active, violated = entry_status(g, lower, upper, equals, scale, tol)
-        rows.append(dict(name=name, units=meta.get("units"), lower=lower, upper=upper,
-                         equals=equals, values=g, violation=violation,
-                         relative_violation=violation / scale, active=active,
-                         violated=violated))
+        rows.append(
+            dict(
+                name=name,
+                units=meta.get("units"),
+                lower=lower,
+                upper=upper,
+                equals=equals,
+                values=g,
+                violation=violation,
+                relative_violation=violation / scale,
+                active=active,
+                violated=violated,
+            )
+        )
     return rows
 
 
@@ -346,19 +363,45 @@ def constraint_table(source, case=None, tol=DEFAULT_TOL, refs=None):
     """
     rows = []
     for r in constraint_rows(source, case, tol, refs):
-        rows.append([r["name"], r["units"] or "", _scalar_or_range(r["lower"]),
-                     _scalar_or_range(r["upper"]), _scalar_or_range(r["equals"]),
-                     int(r["values"].size), float(r["values"].min()), float(r["values"].max()),
-                     100.0 * float(r["relative_violation"].max()),
-                     f"{int(r['active'].sum())}/{r['active'].size}",
-                     _status(r["active"], r["violated"])])
-    notes = [f"Active: within tol*r of a limit; violated: beyond it by more than tol*r "
-             f"(tol = {tol:g}; r = max(|limit|, |ref - ref0|) for a scaled constraint, "
-             f"else |limit|, else 1"
-             + (", or the given reference" if refs else "") + ").",
-             "% viol. = 100 * max over entries of violation / r."]
-    return Table(["constraint", "units", "lower", "upper", "equals", "size", "min", "max",
-                  "% viol.", "active", "status"], rows, "Constraints", notes)
+        rows.append(
+            [
+                r["name"],
+                r["units"] or "",
+                _scalar_or_range(r["lower"]),
+                _scalar_or_range(r["upper"]),
+                _scalar_or_range(r["equals"]),
+                int(r["values"].size),
+                float(r["values"].min()),
+                float(r["values"].max()),
+                100.0 * float(r["relative_violation"].max()),
+                f"{int(r['active'].sum())}/{r['active'].size}",
+                _status(r["active"], r["violated"]),
+            ]
+        )
+    notes = [
+        f"Active: within tol*r of a limit; violated: beyond it by more than tol*r "
+        f"(tol = {tol:g}; r = max(|limit|, |ref - ref0|) for a scaled constraint, "
+        f"else |limit|, else 1" + (", or the given reference" if refs else "") + ").",
+        "% viol. = 100 * max over entries of violation / r.",
+    ]
+    return Table(
+        [
+            "constraint",
+            "units",
+            "lower",
+            "upper",
+            "equals",
+            "size",
+            "min",
+            "max",
+            "% viol.",
+            "active",
+            "status",
+        ],
+        rows,
+        "Constraints",
+        notes,
+    )
 
 
 def design_variable_table(source, tol=DEFAULT_TOL, expand=True):
@@ -398,9 +441,11 @@ def design_variable_table(source, tol=DEFAULT_TOL, expand=True):
         lo, up = recorded_bound(meta.get("lower"), size), recorded_bound(meta.get("upper"), size)
         lo_a = np.full(size, np.nan) if lo is None else lo
         up_a = np.full(size, np.nan) if up is None else up
-        width = np.where(np.isnan(lo_a) | np.isnan(up_a),
-                         np.maximum(np.nan_to_num(np.fmax(np.abs(lo_a), np.abs(up_a))), 1.0),
-                         up_a - lo_a)
+        width = np.where(
+            np.isnan(lo_a) | np.isnan(up_a),
+            np.maximum(np.nan_to_num(np.fmax(np.abs(lo_a), np.abs(up_a))), 1.0),
+            up_a - lo_a,
+        )
         x1 = np.asarray(last[name], float).ravel()
         x0 = np.asarray(first[name], float).ravel() if name in first else np.full(size, np.nan)
         at_lo = np.abs(x1 - lo_a) <= tol * width
@@ -410,21 +455,55 @@ def design_variable_table(source, tol=DEFAULT_TOL, expand=True):
         if expand:
             for i in range(size):
                 label = name if size == 1 else f"{name}[{i}]"
-                rows.append([label, units, _nan_none(lo_a[i]), _nan_none(up_a[i]),
-                             _nan_none(x0[i]), float(x1[i]), str(flags[i])])
+                rows.append(
+                    [
+                        label,
+                        units,
+                        _nan_none(lo_a[i]),
+                        _nan_none(up_a[i]),
+                        _nan_none(x0[i]),
+                        float(x1[i]),
+                        str(flags[i]),
+                    ]
+                )
         else:
-            flag = ", ".join(f"{n} {k}" for k, n in (("lower", at_lo.sum()),
-                                                     ("upper", at_up.sum())) if n)
-            rows.append([name, units, size, _scalar_or_range(lo), _scalar_or_range(up),
-                         _nan_none(np.nanmin(x0) if name in first else np.nan),
-                         _nan_none(np.nanmax(x0) if name in first else np.nan),
-                         float(x1.min()), float(x1.max()), flag])
-    columns = (["design variable", "units", "lower", "upper", "initial", "final", "at bound"]
-               if expand else
-               ["design variable", "units", "size", "lower", "upper", "initial min",
-                "initial max", "final min", "final max", "at bound"])
-    notes = [f"Initial: first driver case; final: last driver case. At bound: within "
-             f"tol*(upper - lower) of it (tol = {tol:g})."]
+            flag = ", ".join(
+                f"{n} {k}" for k, n in (("lower", at_lo.sum()), ("upper", at_up.sum())) if n
+            )
+            rows.append(
+                [
+                    name,
+                    units,
+                    size,
+                    _scalar_or_range(lo),
+                    _scalar_or_range(up),
+                    _nan_none(np.nanmin(x0) if name in first else np.nan),
+                    _nan_none(np.nanmax(x0) if name in first else np.nan),
+                    float(x1.min()),
+                    float(x1.max()),
+                    flag,
+                ]
+            )
+    columns = (
+        ["design variable", "units", "lower", "upper", "initial", "final", "at bound"]
+        if expand
+        else [
+            "design variable",
+            "units",
+            "size",
+            "lower",
+            "upper",
+            "initial min",
+            "initial max",
+            "final min",
+            "final max",
+            "at bound",
+        ]
+    )
+    notes = [
+        f"Initial: first driver case; final: last driver case. At bound: within "
+        f"tol*(upper - lower) of it (tol = {tol:g})."
+    ]
     return Table(columns, rows, "Design variables", notes)
 
 
@@ -488,4 +567,3 @@ def design_table(designs, quantities, case=None, title="Design comparison"):
             q = Quantity(q.name, q.label, recorded_units(cr, q.name), q.index)
         titles.append(q.title)
     return Table(["design"] + titles, rows, title, notes)
-

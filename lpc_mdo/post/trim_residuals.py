@@ -50,8 +50,10 @@ def _problem_case(source, case):
     """The given case, else the last problem case (``'final'``), which holds every output."""
     found = final_case(source, case) if case is not None else last_case(source, "problem")
     if found is None:
-        raise MissingVariableError("the case file holds no problem case (prob.record('final')), "
-                                   "which the trim residuals need (every output).")
+        raise MissingVariableError(
+            "the case file holds no problem case (prob.record('final')), "
+            "which the trim residuals need (every output)."
+        )
     return found
 
 
@@ -83,7 +85,7 @@ def trim_residuals(source, case=None, vehicle=None):
         When the case holds no condition's accelerations, or not ``gross_mass``/``inertia``.
     """
     vehicle = vehicle or reference_vehicle()
-    source = open_reader(source)   # once: every read_value below would reopen a path
+    source = open_reader(source)  # once: every read_value below would reopen a path
     case = _problem_case(source, case)
     mass = float(read_value(source, "gross_mass", "kg", case)[0])
     inertia = read_value(source, "inertia", "kg*m**2", case).reshape(3, 3)
@@ -94,10 +96,12 @@ def trim_residuals(source, case=None, vehicle=None):
         name = condition.name
         try:
             values = {
-                "linear_acceleration": read_value(source, f"{name}.linear_acceleration",
-                                                  "m/s**2", case).ravel(),
-                "angular_acceleration": read_value(source, f"{name}.angular_acceleration",
-                                                   "rad/s**2", case).ravel(),
+                "linear_acceleration": read_value(
+                    source, f"{name}.linear_acceleration", "m/s**2", case
+                ).ravel(),
+                "angular_acceleration": read_value(
+                    source, f"{name}.angular_acceleration", "rad/s**2", case
+                ).ravel(),
             }
         except MissingVariableError:
             continue
@@ -109,13 +113,21 @@ def trim_residuals(source, case=None, vehicle=None):
                 residual = mass * (value - row.target)
             else:
                 residual = moment[row.index]
-            rows.append(dict(condition=name, component=row.component, declared=declared,
-                             acceleration=float(value), target=float(row.target),
-                             residual=float(residual),
-                             percent_of_weight=100.0 * abs(float(residual)) / weight))
+            rows.append(
+                dict(
+                    condition=name,
+                    component=row.component,
+                    declared=declared,
+                    acceleration=float(value),
+                    target=float(row.target),
+                    residual=float(residual),
+                    percent_of_weight=100.0 * abs(float(residual)) / weight,
+                )
+            )
     if not rows:
-        raise MissingVariableError("no condition's linear_acceleration/angular_acceleration is "
-                                   "recorded in the case.")
+        raise MissingVariableError(
+            "no condition's linear_acceleration/angular_acceleration is recorded in the case."
+        )
     return rows
 
 
@@ -150,16 +162,37 @@ def trim_residual_table(source, case=None, limit_percent=0.1, vehicle=None):
         forces = [abs(r["residual"]) for r in mine if r["component"] in LINEAR_COMPONENTS]
         moments = [abs(r["residual"]) for r in mine if r["component"] in ANGULAR_COMPONENTS]
         percent = max(r["percent_of_weight"] for r in mine)
-        out.append([name, " ".join(r["component"] for r in mine),
-                    " ".join(r["component"] for r in mine if r["declared"]) or "none",
-                    max(forces) if forces else None, max(moments) if moments else None,
-                    percent, percent <= limit_percent])
+        out.append(
+            [
+                name,
+                " ".join(r["component"] for r in mine),
+                " ".join(r["component"] for r in mine if r["declared"]) or "none",
+                max(forces) if forces else None,
+                max(moments) if moments else None,
+                percent,
+                percent <= limit_percent,
+            ]
+        )
     n_ok = sum(1 for r in rows if r["percent_of_weight"] <= limit_percent)
-    notes = [f"W0 = m g = {weight:.6g} N; residual = m (a - a_target) for u, v, w and I alpha "
-             f"for p, q, r (paper Table 7 reports trim this way).",
-             f"{n_ok} of {len(rows)} Table 6 trim rows within {limit_percent:g} % of W0; the "
-             f"largest: {worst['condition']} {worst['component']}, "
-             f"{worst['residual']:.4g} ({worst['percent_of_weight']:.3g} %).",
-             "'declared': the rows the run constrained; the others are evaluated all the same."]
-    return Table(["condition", "rows", "declared", "max |force| (N)", "max |moment| (N m)",
-                  "max % of W0", "trimmed"], out, "Trim residuals (Table 6 rows)", notes)
+    notes = [
+        f"W0 = m g = {weight:.6g} N; residual = m (a - a_target) for u, v, w and I alpha "
+        f"for p, q, r (paper Table 7 reports trim this way).",
+        f"{n_ok} of {len(rows)} Table 6 trim rows within {limit_percent:g} % of W0; the "
+        f"largest: {worst['condition']} {worst['component']}, "
+        f"{worst['residual']:.4g} ({worst['percent_of_weight']:.3g} %).",
+        "'declared': the rows the run constrained; the others are evaluated all the same.",
+    ]
+    return Table(
+        [
+            "condition",
+            "rows",
+            "declared",
+            "max |force| (N)",
+            "max |moment| (N m)",
+            "max % of W0",
+            "trimmed",
+        ],
+        out,
+        "Trim residuals (Table 6 rows)",
+        notes,
+    )

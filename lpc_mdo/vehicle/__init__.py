@@ -88,7 +88,6 @@ it skips validation and does not update the design-variable initial values that 
 data.
 """
 
-
 from __future__ import annotations
 
 import functools
@@ -235,4 +234,3 @@ def design_variable_count(vehicle: Vehicle | None = None) -> int:
         The vehicle; ``None`` uses :func:`reference_vehicle`.
     """
     return (reference_vehicle() if vehicle is None else vehicle).design_variable_count()
-

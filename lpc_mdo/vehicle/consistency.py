@@ -24,8 +24,6 @@ from lpc_mdo.vehicle.schema import VehicleSpecError
 # Checks across fields
 
 
-
-
 def _close(a, b) -> bool:
     return bool(np.allclose(a, b, rtol=1e-9, atol=1e-6))
 
@@ -92,17 +90,22 @@ def _check_conditions(parts: dict) -> None:
         for key in ("name", "design_variable_prefix"):
             value = getattr(c, key)
             if not value.isidentifier():
-                raise VehicleSpecError(f"'{path}.{key}' = {value!r} is not allowed: must be "
-                                       f"{_IDENTIFIER}")
+                raise VehicleSpecError(
+                    f"'{path}.{key}' = {value!r} is not allowed: must be {_IDENTIFIER}"
+                )
         if c.name in seen:
-            raise VehicleSpecError(f"'{path}.name' = {c.name!r} repeats "
-                                   f"'conditions[{seen[c.name]}].name'; names must be unique")
+            raise VehicleSpecError(
+                f"'{path}.name' = {c.name!r} repeats "
+                f"'conditions[{seen[c.name]}].name'; names must be unique"
+            )
         seen[c.name] = i
         if c.kind not in CONDITION_KINDS:
             allowed = ", ".join(repr(k) for k in CONDITION_KINDS)
-            raise VehicleSpecError(f"'{path}.kind' = {c.kind!r} is not allowed: must be one of "
-                                   f"{allowed} (register a new kind with "
-                                   f"lpc_mdo.groups.condition_kinds.register_condition_kind)")
+            raise VehicleSpecError(
+                f"'{path}.kind' = {c.kind!r} is not allowed: must be one of "
+                f"{allowed} (register a new kind with "
+                f"lpc_mdo.groups.condition_kinds.register_condition_kind)"
+            )
         CONDITION_KINDS[c.kind].check(i, c, vehicle)
 
 
@@ -120,4 +123,3 @@ class _PartialVehicle:
 
     def __init__(self, parts: dict):
         self.__dict__.update(parts)
-

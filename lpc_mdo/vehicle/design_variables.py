@@ -53,6 +53,7 @@ def _design_variable_specs(parts: dict) -> dict[str, _DVSpec]:
     conditions own (:class:`lpc_mdo.groups.condition_base.ConditionLayout`).
     """
     from lpc_mdo.groups.condition_base import ConditionLayout
+
     wing, htail = parts["wing"], parts["horizontal_tail"]
     groups = [parts["lift_rotors"][i] for i, _ in _pairs(parts["lift_rotors"])]
     groups.append(parts["pusher"])
@@ -122,8 +123,10 @@ def _design_variable_specs(parts: dict) -> dict[str, _DVSpec]:
             )
         initial_from = ""
         if dv.initial_from:
-            initial_from = ", ".join(f"conditions[{index[c]}].{dv.initial_from}"
-                                     f"{suffix[dv.initial_from]}" for c in dv.conditions)
+            initial_from = ", ".join(
+                f"conditions[{index[c]}].{dv.initial_from}{suffix[dv.initial_from]}"
+                for c in dv.conditions
+            )
         specs[name] = _DVSpec(dv.description, dv.units, dv.shape, initial_from, dv.initial)
     return specs
 
@@ -200,4 +203,3 @@ def _read_design_variable(data, spec: _DVSpec, path: str) -> DesignVariable:
         description=spec.description,
         initial_from=spec.initial_from,
     )
-

@@ -665,6 +665,5 @@ class Vehicle:
         raise KeyError(f"no design condition {name!r}; the vehicle's conditions are {names}")
 
 
-
 def _pairs(rotors: tuple[Rotor, ...]) -> tuple[tuple[int, int], ...]:
     return tuple(tuple(i for i, r in enumerate(rotors) if r.pair == p) for p in range(_NUM_PAIRS))

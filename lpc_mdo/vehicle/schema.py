@@ -24,7 +24,6 @@ class VehicleSpecError(ValueError):
     """An invalid vehicle file or dict; the message names the key, the value and what is allowed."""
 
 
-
 # ------------------------------------------------------------------------------------------------
 # Schema: each dataclass field carries a _Spec in its metadata.
 
@@ -67,7 +66,6 @@ def _spec(f: dataclasses.Field) -> _Spec:
     return f.metadata.get("spec", _Spec())
 
 
-
 # ------------------------------------------------------------------------------------------------
 # Generic reading and checking
 
@@ -82,8 +80,12 @@ def _is_number(value) -> bool:
 
 def _bounds(spec: _Spec) -> dict:
     """The range of a spec as :func:`lpc_mdo.checks.check_range` keywords."""
-    return dict(lower=spec.gt if spec.gt is not None else spec.ge, lower_open=spec.gt is not None,
-                upper=spec.lt if spec.lt is not None else spec.le, upper_open=spec.lt is not None)
+    return dict(
+        lower=spec.gt if spec.gt is not None else spec.ge,
+        lower_open=spec.gt is not None,
+        upper=spec.lt if spec.lt is not None else spec.le,
+        upper_open=spec.lt is not None,
+    )
 
 
 def _range_text(spec: _Spec) -> str:
@@ -192,10 +194,14 @@ def _string(value, spec: _Spec, path: str) -> str:
                 raise VehicleSpecError(f"'{path}' = {value!r}: polar file not found")
             return os.path.abspath(value)
         allowed = ", ".join(repr(c) for c in spec.choices)
-        extra = (f", or a polar file ({', '.join(_POLAR_SUFFIXES)}: alpha [deg], cl, cd)"
-                 if spec.polar_file else "")
-        raise VehicleSpecError(f"'{path}' = {value!r} is not allowed: must be one of "
-                               f"{allowed}{extra}")
+        extra = (
+            f", or a polar file ({', '.join(_POLAR_SUFFIXES)}: alpha [deg], cl, cd)"
+            if spec.polar_file
+            else ""
+        )
+        raise VehicleSpecError(
+            f"'{path}' = {value!r} is not allowed: must be one of {allowed}{extra}"
+        )
     return value
 
 
@@ -224,4 +230,3 @@ def _table_list(cls, spec: _Spec, value, path: str) -> tuple:
     if not value:
         raise VehicleSpecError(f"'{path}' must have at least one entry ({spec.count_note})")
     return tuple(cls(**_read_fields(cls, v, f"{path}[{i}]")) for i, v in enumerate(value))
-
