@@ -273,7 +273,7 @@ class ConditionLayout:
             )
 
     def entry(self, condition, variable):
-        """The :class:`LayoutEntry` of ``variable`` of condition ``condition`` (names)."""
+        """Return the :class:`LayoutEntry` of ``variable`` of condition ``condition`` (names)."""
         return self.entries[condition][variable]
 
     def trim_variables(self, condition):
@@ -286,7 +286,7 @@ class ConditionLayout:
 
 
 def vehicle_condition(vehicle, name):
-    """The condition called ``name`` of a (possibly partly built) vehicle."""
+    """Return the condition called ``name`` of a (possibly partly built) vehicle."""
     for c in vehicle.conditions:
         if c.name == name:
             return c
@@ -299,7 +299,7 @@ def _cached_layout(vehicle):
 
 
 def condition_layout(vehicle):
-    """The :class:`ConditionLayout` of a vehicle (cached per vehicle)."""
+    """Return the :class:`ConditionLayout` of a vehicle (cached per vehicle)."""
     try:
         return _cached_layout(vehicle)
     except TypeError:  # an unhashable, partly built vehicle
@@ -373,13 +373,13 @@ class ConditionGroup(om.Group):
 
     @classmethod
     def variables(cls, vehicle, condition):
-        """The design variables the condition owns: tuple of :class:`ConditionVariable`."""
+        """Return the design variables the condition owns: tuple of :class:`ConditionVariable`."""
         return ()
 
     @classmethod
     def vehicle_inputs(cls, vehicle, condition):
         """
-        Connections from vehicle-level outputs: tuple of (source, target, src_indices).
+        Return the connections from vehicle-level outputs: tuple of (source, target, src_indices).
 
         ``source`` is a promoted output of the assembly, ``target`` an input of the condition
         (relative to it), ``src_indices`` None or indices as ``connect`` takes them.
@@ -392,13 +392,13 @@ class ConditionGroup(om.Group):
 
     @classmethod
     def trim_rows(cls, vehicle, condition):
-        """The condition's trim rows of paper Table 6: tuple of :class:`TrimRow`."""
+        """Return the condition's trim rows of paper Table 6: tuple of :class:`TrimRow`."""
         return ()
 
     @classmethod
     def constraints(cls, vehicle, condition, bounds):
         """
-        The condition's constraints besides trim: tuple of :class:`ConditionConstraint`.
+        Return the condition's constraints besides trim: tuple of :class:`ConditionConstraint`.
 
         ``bounds(name)`` returns the (lower, upper) arrays of a design variable, in its shape,
         with the problem's overrides (some constraints bound outputs by them); None: the
@@ -409,7 +409,7 @@ class ConditionGroup(om.Group):
     @classmethod
     def motor_sets(cls, vehicle, condition):
         """
-        The motors the condition runs, by set: dict prefix -> indices.
+        Return the motors the condition runs, by set: dict prefix -> indices.
 
         ``lift``: indices into ``vehicle.lift_rotors`` of the running lift rotors (output
         ``lift_motor_torque_margin``, one entry per running rotor); ``pusher``: ``(0,)``

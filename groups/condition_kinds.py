@@ -48,7 +48,7 @@ def register_condition_kind(kind, cls):
 
 
 def condition_class(kind):
-    """The group class registered for condition kind ``kind`` (KeyError naming the kinds)."""
+    """Return the group class registered for condition kind ``kind`` (KeyError naming the kinds)."""
     try:
         return CONDITION_KINDS[kind]
     except KeyError:

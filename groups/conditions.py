@@ -87,7 +87,7 @@ def _declare_aero(group):
 
 
 def num_lift_pairs(lift_rotors):
-    """Number of mirror-symmetric lift-rotor pairs (rotor groups of the per-group variables)."""
+    """Count the mirror-symmetric lift-rotor pairs (rotor groups of the per-group variables)."""
     return len({r.pair for r in lift_rotors})
 
 
@@ -269,7 +269,7 @@ def _add_lift_rotors(group, vehicle, rotors, speed_groups, num_groups, edgewise,
 
 
 def _add_pusher(group, vehicle):
-    """The pusher by BEM with its motor, promoted as ``pusher_*``."""
+    """Add the pusher by BEM with its motor, promoted as ``pusher_*``."""
     opts = group.options
     pusher = vehicle.pusher
     polar = opts["rotor_polar"] if opts["pusher_polar"] is None else opts["pusher_polar"]
@@ -438,9 +438,10 @@ def _add_power(group, motors):
 
 class HoverCondition(ConditionGroup):
     """
-    Hover (and one-engine-inoperative hover): BEM lift rotors, their motors, trim, and in hover
-    the noise at the paper's observer (paper Sec. IV; docs: theory/dynamics and
-    theory/acoustics).
+    Hover (and one-engine-inoperative hover): BEM lift rotors, their motors, trim and noise.
+
+    The noise, in hover, is that at the paper's observer (paper Sec. IV; docs: theory/dynamics
+    and theory/acoustics).
 
     Kinds ``hover`` and ``oei``. The failed rotor of an OEI case (``failed_rotor`` in the vehicle
     file) is left out; the working rotors have their own speeds (one speed group each), while in
@@ -512,7 +513,7 @@ class HoverCondition(ConditionGroup):
 
     @staticmethod
     def active_lift_rotors(vehicle, condition):
-        """Indices into ``vehicle.lift_rotors`` of the rotors that run."""
+        """Return the indices into ``vehicle.lift_rotors`` of the rotors that run."""
         return [i for i in range(len(vehicle.lift_rotors)) if i != condition.failed_rotor]
 
     @classmethod
@@ -663,11 +664,12 @@ def _rotor_thickness_to_chord(vehicle, index):
 
 class SteadyFlightCondition(ConditionGroup):
     """
-    Climb, cruise or descent (kind ``steady``): VLM + parasite drag, the pusher by BEM and its
-    motor, trim in F_x, F_z, M_y (paper Sec. IV; docs: theory/dynamics). Pitch, elevator and
-    pusher speed are inputs (design variables). With ``stability`` (default: the condition
-    named by the vehicle's ``mission.cruise_condition``) the neutral point and the static
-    margin (paper eq. 30) are added.
+    Climb, cruise or descent (kind ``steady``): VLM + parasite drag, the BEM pusher and trim.
+
+    The pusher by BEM has its motor; trim is in F_x, F_z, M_y (paper Sec. IV; docs:
+    theory/dynamics). Pitch, elevator and pusher speed are inputs (design variables). With
+    ``stability`` (default: the condition named by the vehicle's ``mission.cruise_condition``)
+    the neutral point and the static margin (paper eq. 30) are added.
     """
 
     field_rules = {
@@ -745,10 +747,12 @@ class SteadyFlightCondition(ConditionGroup):
 
 class TransitionCondition(ConditionGroup):
     """
-    A quasi-steady transition point: prescribed speed and pitch, VLM + drag, Pitt–Peters lift
-    rotors, the BEM pusher and all nine motors (paper Sec. IV; docs theory/dynamics 'Design conditions'). The full
-    problem constrains u_dot and w_dot to the prescribed acceleration (dV/dt cos theta,
-    dV/dt sin theta) and v_dot, p_dot, q_dot, r_dot to zero.
+    A quasi-steady transition point: prescribed speed and pitch, VLM + drag and rotors.
+
+    The rotors are the Pitt–Peters lift rotors and the BEM pusher, with all nine motors (paper
+    Sec. IV; docs theory/dynamics 'Design conditions'). The full problem constrains u_dot and
+    w_dot to the prescribed acceleration (dV/dt cos theta, dV/dt sin theta) and v_dot, p_dot,
+    q_dot, r_dot to zero.
 
     The rotors turn at their pair's ``lift_rpm`` (1, 4; the paper's per-pair speed)
     plus the roll and yaw differentials ``roll_yaw_rpm`` (1, 2; not in the paper; left
@@ -871,15 +875,16 @@ class TransitionCondition(ConditionGroup):
 
 class StructuralCondition(ConditionGroup):
     """
-    +3g or -1g pull-up/push-over: VLM at the load factor, trim in F_z only, and the wing-box
-    beam of the right half wing loaded by the VLM panel forces plus its own inertia at the load
-    factor, with stress and curved-panel buckling (paper Sec. III.D, IV; docs theory/structures).
-    Pitch is an input (design variable); the elevator is held at zero. With ``ks_rho`` the
-    stress ratios, the buckling ratios (all bays but the tip bay) and the vertical tip-ward
-    displacement in the direction of the load (-w at positive, +w at negative load factor) are
-    also aggregated by KS (paper eq. 7): ``stress_ratio_ks``, ``top_skin_buckling_ratio_ks``,
-    ``bottom_skin_buckling_ratio_ks``, ``displacement_ks`` (m). The beam's material is the
-    vehicle's ``[material]``: inputs ``material_youngs_modulus``, ``material_shear_modulus``,
+    +3g or -1g pull-up/push-over: VLM at the load factor, trim in F_z only, and the wing-box beam.
+
+    The beam is that of the right half wing, loaded by the VLM panel forces plus its own inertia at
+    the load factor, with stress and curved-panel buckling (paper Sec. III.D, IV; docs
+    theory/structures). Pitch is an input (design variable); the elevator is held at zero. With
+    ``ks_rho`` the stress ratios, the buckling ratios (all bays but the tip bay) and the vertical
+    tip-ward displacement in the direction of the load (-w at positive, +w at negative load factor)
+    are also aggregated by KS (paper eq. 7): ``stress_ratio_ks``, ``top_skin_buckling_ratio_ks``,
+    ``bottom_skin_buckling_ratio_ks``, ``displacement_ks`` (m). The beam's material is the vehicle's
+    ``[material]``: inputs ``material_youngs_modulus``, ``material_shear_modulus``,
     ``material_density`` (the box's own weight), ``material_poisson_ratio`` and
     ``material_allowable_stress``.
     """
@@ -914,7 +919,7 @@ class StructuralCondition(ConditionGroup):
 
     @staticmethod
     def compressed_skin(condition):
-        """The skin in compression: ``top`` under a positive load factor, else ``bottom``."""
+        """Return the skin in compression: ``top`` under a positive load factor, else ``bottom``."""
         return "top" if condition.load_factor > 0 else "bottom"
 
     @classmethod

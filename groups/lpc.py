@@ -246,7 +246,7 @@ class LPCGroup(om.Group):
 
 @functools.cache
 def _declared_options(cls):
-    """The options condition class ``cls`` declares (from a throw-away instance)."""
+    """Return the options condition class ``cls`` declares (from a throw-away instance)."""
     return frozenset(cls().options)
 
 
@@ -257,7 +257,7 @@ def _declares(cls, option):
 
 def included_conditions(vehicle, names=None, where="LPCGroup"):
     """
-    The vehicle's conditions to include, in vehicle-file order.
+    Return the vehicle's conditions to include, in vehicle-file order.
 
     Parameters
     ----------
@@ -295,7 +295,7 @@ def zero_lift_angle(polar, reynolds, mach):
 
 def _airfoil_models(vehicle, rotor_polar, wing_zero_lift_angle):
     """
-    The lift-rotor polar, the pusher polar and the wing's sectional zero-lift angle.
+    Return the lift-rotor polar, the pusher polar and the wing's sectional zero-lift angle.
 
     A given ``rotor_polar`` serves every rotor; otherwise the lift rotors take the table of their
     airfoil and the pusher that of its own. One lift-rotor polar serves all eight lift rotors

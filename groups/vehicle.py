@@ -277,13 +277,13 @@ def calibrated_other_mass(vehicle):
     mass. The target is ``masses.target_gross_mass``; with ``masses.other_cg_rule =
     'hover_balance'`` the cg of W_other also puts the vehicle's cg above the mean lift-hub x.
 
-    The paper calibrates W_other at the initial design because the NASA reference does not
-    itemise every weight (docs theory/weights 'Gross mass'). Gross mass and cg are affine in W_other and its
-    position, so one run of the vehicle group with W_other = 0 gives both exactly. Every other
-    item is held at its initial-design value as the model computes it: the wing mass from the
-    wing-box beam at the initial thicknesses, the motor masses from the motor sizing (paper
-    eq. 23), the fuselage, boom and empennage masses from the M4 regressions, and the fixed
-    masses of the vehicle file.
+    The paper calibrates W_other at the initial design because the NASA reference does not itemise
+    every weight (docs theory/weights 'Gross mass'). Gross mass and cg are affine in W_other and its
+    position, so one run of the vehicle group with W_other = 0 gives both exactly. Every other item
+    is held at its initial-design value as the model computes it: the wing mass from the wing-box
+    beam at the initial thicknesses, the motor masses from the motor sizing (paper eq. 23), the
+    fuselage, boom and empennage masses from the M4 regressions, and the fixed masses of the vehicle
+    file.
 
     Parameters
     ----------

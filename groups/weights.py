@@ -30,20 +30,25 @@ from lpc_mdo.components.weights.regressions import (
 
 
 def num_motors(vehicle=None):
-    """Number of motors of a vehicle: one per lift rotor and one for the pusher."""
+    """Return the number of motors of a vehicle: one per lift rotor and one for the pusher."""
     return len(_vehicle(vehicle).lift_rotors) + 1
 
 
 def num_motor_groups(vehicle=None):
-    """Number of motor designs (rotor groups) of a vehicle: one per lift pair and the pusher."""
+    """
+    Return the number of motor designs (rotor groups) of a vehicle.
+
+    One per lift pair and the pusher.
+    """
     return len(_vehicle(vehicle).lift_rotor_pairs) + 1
 
 
 def vehicle_mass_items(vehicle=None):
     """
-    Kinds of bodies of a vehicle's mass properties, as :class:`MassItem` (inputs
-    ``{name}_mass``, ``{name}_cg`` and, for parts with an own inertia, ``{name}_inertia``).
-    ``motor`` has one row per motor (:func:`num_motors`).
+    Return the kinds of bodies of a vehicle's mass properties, as :class:`MassItem`.
+
+    Their inputs are ``{name}_mass``, ``{name}_cg`` and, for parts with an own inertia,
+    ``{name}_inertia``. ``motor`` has one row per motor (:func:`num_motors`).
     """
     return (
         MassItem("wing", own_inertia=True),

@@ -39,7 +39,7 @@ __all__ = [
 
 
 def _fmt(x) -> str:
-    """A bound as the messages show it (6 significant digits)."""
+    """Format a bound as the messages show it (6 significant digits)."""
     return f"{x:.6g}"
 
 
@@ -52,7 +52,7 @@ def _show(value) -> str:
 
 
 def _plain(value):
-    """A numpy scalar as the Python number it holds (so the message shows ``-3.0``)."""
+    """Return a numpy scalar as the Python number it holds (so the message shows ``-3.0``)."""
     if isinstance(value, np.generic):
         value = value.item()
     if isinstance(value, complex):
@@ -66,7 +66,9 @@ def _prefix(where) -> str:
 
 def range_text(lower=None, upper=None, *, lower_open=False, upper_open=False) -> str:
     """
-    The allowed range as the messages word it: ``"> 0"``, ``"in [0, 1)"``, ``""`` if unbounded.
+    Return the allowed range as the messages word it.
+
+    For example ``"> 0"``, ``"in [0, 1)"``, or ``""`` if unbounded.
 
     Parameters
     ----------

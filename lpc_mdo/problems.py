@@ -122,7 +122,7 @@ def _bounds(name, dv, overrides):
 
 def trim_constraints(vehicle, condition, lateral_trim=True):
     """
-    The trim constraints of a condition (its Table 6 rows), grouped by output.
+    Return the trim constraints of a condition (its Table 6 rows), grouped by output.
 
     Parameters
     ----------
@@ -307,8 +307,11 @@ def declare_problem(
 
 
 def attach_recorder(prob, path):
-    """One SQLite recorder on the driver (every iteration) and the problem (``'final'``, every
-    variable), so a single case file holds the run and what post-processing needs.
+    """
+    Attach one SQLite recorder to the driver and the problem.
+
+    The driver records every iteration and the problem ``'final'`` with every variable, so a
+    single case file holds the run and what post-processing needs.
     """
     recorder = om.SqliteRecorder(str(path))
     prob.driver.add_recorder(recorder)
@@ -319,9 +322,10 @@ def attach_recorder(prob, path):
 
 def copy_design_variables(source, target, vehicle, names=None):
     """
-    Set the vehicle file's design-variable arrays of ``target`` (a set-up problem) from
-    ``source`` (a set-up problem or a recorded case), by name, in the vehicle file's units;
-    arrays that either side lacks are skipped.
+    Set the vehicle file's design-variable arrays of ``target`` from ``source``.
+
+    ``target`` is a set-up problem, ``source`` a set-up problem or a recorded case; arrays are
+    copied by name, in the vehicle file's units; arrays that either side lacks are skipped.
     """
     for name in names or vehicle.design_variables:
         dv = vehicle.design_variables[name]
@@ -343,7 +347,7 @@ def build_analysis_problem(
     **options,
 ):
     """
-    The full lift-plus-cruise model of a vehicle at its initial design, ready to run.
+    Build the full lift-plus-cruise model of a vehicle at its initial design, ready to run.
 
     Parameters
     ----------

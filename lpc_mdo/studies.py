@@ -30,7 +30,7 @@ def structural_sizing_problem(
     **model_options,
 ):
     """
-    The paper's wing structural optimization (Table 4) as an OpenMDAO problem.
+    Build the paper's wing structural optimization (Table 4) as an OpenMDAO problem.
 
     Minimise the wing-box mass over the 32 skin and spar thicknesses (8 bays each) and the
     pitch angles of the vehicle's structural conditions (the reference: +3g and -1g), subject

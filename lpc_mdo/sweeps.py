@@ -26,7 +26,11 @@ SWEEP_PARAMETERS = {
 
 
 def sweep_vehicle(vehicle, parameter, value):
-    """The vehicle with one sweep parameter set (energy density in Wh/kg, SoC limit in -)."""
+    """
+    Return the vehicle with one sweep parameter set.
+
+    The energy density is in Wh/kg, the SoC limit in -.
+    """
     if parameter == "energy_density":
         if not value > 0.0:
             raise ValueError(f"sweep: energy_density = {value}; allowed: > 0 Wh/kg.")
@@ -41,7 +45,7 @@ def sweep_vehicle(vehicle, parameter, value):
 
 
 def reference_value(vehicle, parameter):
-    """The vehicle's own value of a sweep parameter."""
+    """Return the vehicle's own value of a sweep parameter."""
     if parameter == "energy_density":
         return vehicle.battery.energy_density / 3600.0
     if parameter == "final_soc":
@@ -68,8 +72,10 @@ class SweepPoint:
 
 def sweep_chains(values, reference, workers):
     """
-    Ordered chains of sweep values: from the reference outwards (each point next to the one
-    before it), split further until there are ``workers`` chains or single points.
+    Return ordered chains of sweep values, from the reference outwards.
+
+    Each point is next to the one before it; the chains are split further until there are
+    ``workers`` chains or single points.
     """
     values = sorted(set(float(v) for v in values))
     lower = [v for v in values if v <= reference][::-1]

@@ -33,9 +33,11 @@ from lpc_mdo.groups.condition_base import condition_layout
 
 
 def driver_scaling(meta):
-    """(scaler, adder) of a design variable or response from its metadata (scaled = (x +
-    adder) * scaler). The metadata of ``get_design_vars``/``get_constraints`` keep ref/ref0 as
-    declared and leave scaler/adder None when they were declared through refs.
+    """
+    Return (scaler, adder) of a design variable or response from its metadata.
+
+    Scaled = (x + adder) * scaler. The metadata of ``get_design_vars``/``get_constraints`` keep
+    ref/ref0 as declared and leave scaler/adder None when they were declared through refs.
     """
     adder, scaler = determine_adder_scaler(
         meta.get("ref0"), meta.get("ref"), meta.get("adder"), meta.get("scaler")
@@ -95,8 +97,10 @@ def _trim_variables(prob, vehicle, conditions):
 
 @functools.lru_cache(maxsize=1)
 def _scratch_dir():
-    """A per-process folder for the trim problems' OpenMDAO output folders (removed at exit),
-    so that trimming does not leave 15 ``trim_<condition>_out`` folders in the user's.
+    """
+    Return a per-process folder for the trim problems' OpenMDAO output folders (removed at exit).
+
+    Trimming thus does not leave 15 ``trim_<condition>_out`` folders in the user's.
     """
     path = tempfile.mkdtemp(prefix="lpc_mdo_trim_")
     atexit.register(shutil.rmtree, path, ignore_errors=True)

@@ -176,11 +176,13 @@ def run_sequence(
 
 def default_optimizer(name):
     """
-    The optimizer the paper uses for a problem: IPOPT for the presizing and the subproblems,
-    SQP for the full problem and the baseline (paper Sec. II.E: SNOPT; SciPy's SLSQP when
-    pyoptsparse has no SNOPT). From the warm-started subproblem 4 design, SLSQP reached a
-    feasible full-problem design (every constraint within 1e-4 scaled) in ~150 iterations
-    where IPOPT (L-BFGS) was still 2.5 % heavier and infeasible after 245 (measured).
+    Return the optimizer the paper uses for a problem.
+
+    IPOPT for the presizing and the subproblems, SQP for the full problem and the baseline (paper
+    Sec. II.E: SNOPT; SciPy's SLSQP when pyoptsparse has no SNOPT). From the warm-started subproblem
+    4 design, SLSQP reached a feasible full-problem design (every constraint within 1e-4 scaled) in
+    ~150 iterations where IPOPT (L-BFGS) was still 2.5 % heavier and infeasible after 245
+    (measured).
     """
     from lpc_mdo.drivers import pyoptsparse_optimizers
 
@@ -203,12 +205,12 @@ def solve_baseline(
     comm=None,
 ):
     """
-    The baseline design (paper Sec. II.F, eq. 8-9) by continuation in the penalty weight alpha.
+    Solve the baseline design by continuation in the penalty weight alpha.
 
-    Each alpha is one :func:`solve_stage` of problem 'baseline', started (and rescaled) from the
-    previous one's final case; the first from ``start_case``, best the full problem's optimum
-    (the baseline for alpha -> 0). The intermediate case files are ``<stem>_alpha<a>.sql``
-    beside ``case_file``, which holds the last alpha's run.
+    The baseline design is that of paper Sec. II.F, eq. 8-9. Each alpha is one :func:`solve_stage`
+    of problem 'baseline', started (and rescaled) from the previous one's final case; the first from
+    ``start_case``, best the full problem's optimum (the baseline for alpha -> 0). The intermediate
+    case files are ``<stem>_alpha<a>.sql`` beside ``case_file``, which holds the last alpha's run.
 
     Parameters
     ----------

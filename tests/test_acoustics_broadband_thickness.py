@@ -1,11 +1,12 @@
 """Gill-Lee broadband and Barry-Magliozzi thickness noise against the reference page cases.
 
-Case (docs theory/acoustics , "LPC hover, single lift rotor", a
-transcription of the public code): R = 1.524 m, B = 2, 1200 rpm, rho = 1.213457 kg/m**3,
-a = 339.885 m/s, C_T = T/(rho pi R**2 (Omega R)**2) = 0.014977; chord linear 0.3 -> 0.1 m at 25
-stations rbar = linspace(0.2 R + 0.01, R - 0.01, 25)/R (docs theory/acoustics 'Tonal loading noise', docs theory/rotors 'Validation'); observer 80 m away,
-15 deg below the rotor plane (ex_lpc); modes m = 1..3. The public code integrates with
-dr = 0.8 R/(N_r - 1) at every station, which the radial_weights option reproduces.
+Case (docs theory/acoustics , "LPC hover, single lift rotor", a transcription of the public code):
+R = 1.524 m, B = 2, 1200 rpm, rho = 1.213457 kg/m**3, a = 339.885 m/s,
+C_T = T/(rho pi R**2 (Omega R)**2) = 0.014977; chord linear 0.3 -> 0.1 m at 25 stations
+rbar = linspace(0.2 R + 0.01, R - 0.01, 25)/R (docs theory/acoustics 'Tonal loading noise',
+docs theory/rotors 'Validation'); observer 80 m away, 15 deg below the rotor plane (ex_lpc);
+modes m = 1..3. The public code integrates with dr = 0.8 R/(N_r - 1) at every station,
+which the radial_weights option reproduces.
 """
 
 import numpy as np
@@ -60,9 +61,10 @@ def _gill_lee(weights):
 
 @pytest.mark.parametrize("weights, tol", [(CODE_WEIGHTS, 0.01), (None, 1.0)])
 def test_gill_lee_reference_case(weights, tol):
-    # Reference: Gill-Lee OASPL 77.76 dB unweighted and 78.33 dBA A-weighted per band (docs theory/acoustics ).
-    # With the code's radial weights the spectrum must match to 0.01 dB (the page's rounding);
-    # with the default element-cell weights (blade area 4 % smaller) within 1 dB (acceptance).
+    # Reference: Gill-Lee OASPL 77.76 dB unweighted and 78.33 dBA A-weighted per band
+    # (docs theory/acoustics ). With the code's radial weights the spectrum must match to 0.01 dB
+    # (the page's rounding); with the default element-cell weights (blade area 4 % smaller)
+    # within 1 dB (acceptance).
     oaspl, oaspl_a = _gill_lee(weights)
     assert abs(oaspl - 77.76) < tol
     assert abs(oaspl_a - 78.33) < tol
@@ -90,9 +92,10 @@ def _thickness(tc, weights=CODE_WEIGHTS):
 @pytest.mark.parametrize("tc, reference", [(0.12 * CHORD, 52.36), (np.full(NRAD, 0.12), 67.28)])
 def test_barry_magliozzi_reference_cases(tc, reference):
     # Reference: BM thickness noise of modes 1..3 summed, 52.36 dB with ex_lpc's
-    # thickness_to_chord = 0.12 * chord (quirk Q16, passed here as input data) and 67.28 dB with
-    # t/c = 0.12 (docs theory/acoustics ). Tolerance 1 dB (acceptance). Observed +0.15 dB: the page's numbers
-    # were produced with the J_{n+-1} argument scaled by (n +- 1) (docs theory/acoustics 'Public-code compatibility', not reproduced);
+    # thickness_to_chord = 0.12 * chord (quirk Q16, passed here as input data)
+    # and 67.28 dB with t/c = 0.12 (docs theory/acoustics ). Tolerance 1 dB (acceptance).
+    # Observed +0.15 dB: the page's numbers were produced with the J_{n+-1} argument scaled
+    # by (n +- 1) (docs theory/acoustics 'Public-code compatibility', not reproduced);
     # with that quirk a transcription gives 52.36 and 67.28 exactly.
     total = energetic_sum(_thickness(tc))
     assert abs(total - reference) < 1.0
@@ -110,10 +113,11 @@ def test_barry_magliozzi_scales_with_thickness_and_distance():
 
 @pytest.mark.parametrize("num_rotors, reference", [(1, 78.34), (8, 87.37)])
 def test_total_reference_case(num_rotors, reference):
-    # docs theory/acoustics  totals: one rotor 78.34 dBA, 8 identical co-located rotors 87.37 dBA. The page's
-    # tonal part carries code quirks (Q13, Q17, Q18) and BEM loads we do not have; here the loads
-    # come from thrust 4863.5 N and torque 803.4 N*m (docs theory/rotors 'Validation') with the assumed hover shape. The
-    # broadband part dominates by more than 20 dB, so the total must agree to 0.1 dB.
+    # docs theory/acoustics totals: one rotor 78.34 dBA, 8 identical co-located rotors 87.37 dBA.
+    # The page's tonal part carries code quirks (Q13, Q17, Q18) and BEM loads we do not have; here
+    # the loads come from thrust 4863.5 N and torque 803.4 N*m (docs theory/rotors 'Validation')
+    # with the assumed hover shape. The broadband part dominates by more than 20 dB,
+    # so the total must agree to 0.1 dB.
     res = rotor_noise(
         [RADIUS] * num_rotors,
         [RPM] * num_rotors,

@@ -47,7 +47,8 @@ def _problem(nr, data, **options):
 
 
 def test_total_comp_closed_form():
-    # docs theory/acoustics 'Total noise': incoherent sums of 10**(L/10) (numpy re-computation; 1e-12 relative).
+    # docs theory/acoustics 'Total noise': incoherent sums of 10**(L/10) (numpy re-computation;
+    # 1e-12 relative).
     rng = np.random.default_rng(1)
     lo, th, bb = (rng.uniform(20.0, 80.0, s) for s in ((3, 2), (3, 2), (3, 5)))
     prob = om.Problem(reports=False)

@@ -1,4 +1,7 @@
-"""Observer position and rotor-observer geometry (docs theory/acoustics 'Observer and constraint', 'Observer geometry')."""
+"""Observer position and rotor-observer geometry.
+
+Reference: docs theory/acoustics 'Observer and constraint', 'Observer geometry'.
+"""
 
 import numpy as np
 import openmdao.api as om
@@ -27,8 +30,9 @@ def _geometry(hub, direction, observer, velocity=(0.0, 0.0, 0.0), a=340.0, rotat
 
 
 def test_default_observer_is_paper_hover_observer():
-    # docs theory/acoustics 'Observer and constraint': 100 m from the rotors, 45 deg below the rotor plane; seen from the observer the
-    # vehicle is at (70.71, 0, -70.71) m, i.e. the observer is at centroid + (-70.71, 0, 70.71).
+    # docs theory/acoustics 'Observer and constraint': 100 m from the rotors,
+    # 45 deg below the rotor plane; seen from the observer the vehicle is at (70.71, 0, -70.71) m,
+    # i.e. the observer is at centroid + (-70.71, 0, 70.71).
     hubs = np.array([[1.0, -5.0, -1.0], [6.0, -5.0, -1.5], [1.0, 5.0, -1.0], [6.0, 5.0, -1.5]])
     prob = om.Problem(reports=False)
     prob.model.add_subsystem("p", ObserverPositionComp(num_rotors=4), promotes=["*"])
@@ -59,8 +63,9 @@ def test_hover_geometry_and_azimuth_convention():
 
 
 def test_doppler_distance():
-    # docs theory/acoustics 'Tonal loading noise': r1 = S (1 - V.P/(S a)). Hub moving at 50 m/s straight towards an observer 100 m
-    # ahead: r1 = 100 (1 - 50/340); moving away: 100 (1 + 50/340). Exact, 1e-12.
+    # docs theory/acoustics 'Tonal loading noise': r1 = S (1 - V.P/(S a)).
+    # Hub moving at 50 m/s straight towards an observer 100 m ahead: r1 = 100 (1 - 50/340);
+    # moving away: 100 (1 + 50/340). Exact, 1e-12.
     for sign in (1.0, -1.0):
         prob = _geometry(
             [0.0, 0.0, 0.0], [0.0, 0.0, -1.0], [100.0, 0.0, 0.0], velocity=(sign * 50.0, 0.0, 0.0)

@@ -310,8 +310,9 @@ def test_kvurt_stalnov_hover_directivity_against_matlab():
     prob.run_model()
     loading = prob.get_val("loading_spl")[:, 0]
     assert np.max(np.abs(loading - KS_MATLAB)) < 1.0
-    # The reference page's table (docs theory/acoustics 'Validation') at 0 / 90 / 180 deg from the axis: 56.09, 46.73,
-    # 56.09 dB (on-axis and in-plane values are the same in either pairing); within 0.2 dB.
+    # The reference page's table (docs theory/acoustics 'Validation') at 0 / 90 / 180 deg from the
+    # axis: 56.09, 46.73, 56.09 dB (on-axis and in-plane values are the same in either pairing);
+    # within 0.2 dB.
     assert np.max(np.abs(loading[[0, 18, 36]] - [56.09, 46.73, 56.09])) < 0.2
 
 
@@ -464,8 +465,9 @@ def test_sears_function_closed_form():
 
 
 def test_loading_path_switch_is_smooth():
-    # docs theory/acoustics 'Tonal loading noise' path selection: weight of the unsteady path 0.5 tanh(100 (v - 0.1)) + 0.5; at the
-    # threshold v = 0.1 m/s the level is the mean of the two paths (exact algebra, 1e-12 dB).
+    # docs theory/acoustics 'Tonal loading noise' path selection: weight of the unsteady path
+    # 0.5 tanh(100 (v - 0.1)) + 0.5; at the threshold v = 0.1 m/s the level is the mean of the two
+    # paths (exact algebra, 1e-12 dB).
     levels = {}
     for path, speed in (("sears", 0.1), ("unsteady", 0.1), ("auto", 0.1)):
         prob = om.Problem(reports=False)

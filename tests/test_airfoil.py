@@ -1,4 +1,7 @@
-"""TablePolar, get_polar and the shipped airfoil tables (reference docs theory/aerodynamics 'Airfoil polars')."""
+"""TablePolar, get_polar and the shipped airfoil tables.
+
+Reference: docs theory/aerodynamics 'Airfoil polars'.
+"""
 
 import numpy as np
 import pytest

@@ -14,7 +14,8 @@ from lpc_mdo.components.rotor.bem_loads import BEMLoadsComp, RotorPerformanceCom
 class ReMachPolar(Polar):
     """Test polar with Reynolds and Mach dependence (exercises those partial paths).
 
-    cl = cl_ref / sqrt(1 - M^2) (Prandtl-Glauert), cd = cd_ref (Re/1e6)^-0.2, with docs theory/aerodynamics 'Linear-quadratic polar' polar as cl_ref, cd_ref.
+    cl = cl_ref / sqrt(1 - M^2) (Prandtl-Glauert), cd = cd_ref (Re/1e6)^-0.2,
+    with docs theory/aerodynamics 'Linear-quadratic polar' polar as cl_ref, cd_ref.
     """
 
     def __init__(self):
@@ -130,8 +131,9 @@ def test_against_independent_ning_solution():
     # Independent check: Ning's original residual R_N = sin(phi)(1 - k) - (V_x/V_t) cos(phi)
     # (1 + k') (propeller form, k = sigma C_x/(4 F sin^2), k' = sigma C_theta/(4 F sin cos)),
     # solved station by station with scipy's brentq from the first sign change above phi = 0;
-    # then the momentum-form loads of docs theory/rotors 'Loads and coefficients' (dT = 4 pi r rho u_x (u_x - V_x) F,
-    # dQ = 2 pi r^2 rho u_x u_theta F). Tolerances: 1e-10 rad on phi, 1e-9 relative on loads.
+    # then the momentum-form loads of docs theory/rotors 'Loads and coefficients'
+    # (dT = 4 pi r rho u_x (u_x - V_x) F, dQ = 2 pi r^2 rho u_x u_theta F). Tolerances:
+    # 1e-10 rad on phi, 1e-9 relative on loads.
     prob = _bem_problem()
     polar = LinearQuadraticPolar()
     r, _ = _stations()
@@ -189,7 +191,8 @@ def test_performance_values_and_partials():
     prob.set_val("density", [1.2, 1.0])
     prob.set_val("speed_of_sound", [340.0, 330.0])
     prob.run_model()
-    # Hand-computed from docs theory/rotors 'Loads and coefficients' definitions for rotor 0, node 0 (exact formulas):
+    # Hand-computed from docs theory/rotors 'Loads and coefficients' definitions for rotor 0,
+    # node 0 (exact formulas):
     n, d, omega = 20.0, 3.0, 1200.0 * np.pi / 30.0
     p = omega * 700.0
     ct_h, cq_h = (
@@ -207,7 +210,8 @@ def test_performance_values_and_partials():
     }
     for name, value in expected.items():
         np.testing.assert_allclose(prob.get_val(name)[0, 0], value, rtol=1e-12, atol=1e-15)
-    # Climb node of rotor 1: eta = J C_T / C_P (docs theory/rotors 'Loads and coefficients'), 1e-12 relative.
+    # Climb node of rotor 1: eta = J C_T / C_P (docs theory/rotors 'Loads and coefficients'),
+    # 1e-12 relative.
     j_ct_cp = (
         prob.get_val("advance_ratio")
         * prob.get_val("thrust_coefficient")

@@ -79,13 +79,15 @@ APC_PERFORMANCE = np.array(
 
 #: Thin-airfoil-like polar for the APC blade: the thin-airfoil slope 2 pi, cl0 = 0.30
 #: (alpha_L0 = -2.7 deg, thin-airfoil theory for about 3 % camber), a low-Reynolds profile drag
-#: cd0 = 0.028 (QPROP's default for propellers near Re = 1e5) and otherwise docs theory/aerodynamics 'Linear-quadratic polar'
-#: polar (stall at -10 and 15 deg, stall drag 0.012 and 0.052 above cd0).
+#: cd0 = 0.028 (QPROP's default for propellers near Re = 1e5) and otherwise
+#: docs theory/aerodynamics 'Linear-quadratic polar' polar (stall at -10 and 15 deg, stall drag
+#: 0.012 and 0.052 above cd0).
 APC_POLAR = LinearQuadraticPolar(cl0=0.30, cl_alpha=2.0 * np.pi, cd0=0.028, cd_stall=(0.040, 0.080))
 
-#: NACA 4412-like polar: a LinearQuadraticPolar fitted to the BladeAD NACA 4412 network's spot
-#: values at Re = 1e6, M = 0.1 (docs theory/aerodynamics 'Airfoil polars'): cl0 = 0.472, slope (0.895 - 0.038)/8 deg
-#: = 6.138 /rad, cd0 = 0.0066 and k = 0.0086 from cd(8 deg) = 0.0129; stall 14 deg, cl_max 1.6.
+#: NACA 4412-like polar: a LinearQuadraticPolar fitted to the BladeAD NACA 4412 network's
+#: spot values at Re = 1e6, M = 0.1 (docs theory/aerodynamics 'Airfoil polars'): cl0 = 0.472,
+#: slope (0.895 - 0.038)/8 deg = 6.138 /rad, cd0 = 0.0066 and k = 0.0086 from cd(8 deg) = 0.0129;
+#: stall 14 deg, cl_max 1.6.
 NACA4412_LIKE = LinearQuadraticPolar(
     alpha_stall=(np.radians(-10.0), np.radians(14.0)),
     cl_stall=(-0.55, 1.6),
@@ -139,9 +141,11 @@ def _bem(
 def test_bladead_example_reproduced():
     """BladeAD examples/ex_run_bem.py, docs theory/rotors 'Validation' table (public code run).
 
-    R = 1.2 m, B = 2, 35 stations, chord 0.25 -> 0.05 m and twist 50 -> 20 deg (linear, the
-    as-coded B-spline mapping of linear control points), 2000 rpm, rho = 1.22518316, the docs theory/aerodynamics 'Linear-quadratic polar'
-    polar, with the public code's tip-loss form (docs theory/rotors 'Public-code compatibility') and quadrature (docs theory/rotors 'Public-code compatibility') switched on.
+    R = 1.2 m, B = 2, 35 stations, chord 0.25 -> 0.05 m and twist 50 -> 20 deg
+    (linear, the as-coded B-spline mapping of linear control points), 2000 rpm,
+    rho = 1.22518316, the docs theory/aerodynamics 'Linear-quadratic polar' polar,
+    with the public code's tip-loss form (docs theory/rotors 'Public-code compatibility')
+    and quadrature (docs theory/rotors 'Public-code compatibility') switched on.
     Tolerance: the printed digits (relative 2e-6, 0.002 deg on phi).
     """
     n, radius = 35, 1.2
@@ -227,18 +231,22 @@ def test_hover_matches_momentum_theory():
     [(NACA4412_LIKE, 0.05, 0.05), (LinearQuadraticPolar(), 0.10, 0.10)],
 )
 def test_lpc_lift_rotor_hover(polar, thrust_tol, power_tol):
-    """Reference LPC lift rotor in hover at 100 m and 1200 rpm versus docs theory/rotors 'Validation'.
+    """
+    Reference LPC lift rotor in hover at 100 m and 1200 rpm versus docs theory/rotors 'Validation'.
 
-    docs theory/rotors 'Validation' gives T = 4863.5 N, P = 100.96 kW (FoM 0.798) from the public code with the BladeAD
-    NACA 4412 neural network, the as-coded tip loss and quadrature (docs theory/rotors 'Public-code compatibility', Q9) and the 100 m
-    atmosphere (CADDEE constants). That network is not available here, so the comparison is run
+    docs theory/rotors 'Validation' gives T = 4863.5 N, P = 100.96 kW (FoM 0.798) from
+    the public code with the BladeAD NACA 4412 neural network, the as-coded tip loss and
+    quadrature (docs theory/rotors 'Public-code compatibility', Q9) and the 100 m atmosphere
+    (CADDEE constants). That network is not available here, so the comparison is run
     with the public code's switches and
 
-    - a NACA 4412-like LinearQuadraticPolar fitted to the network's spot values (docs theory/aerodynamics 'Airfoil polars'):
-      T -1.9 %, P -4.0 %, within 5 %. The rest is the network's Reynolds and Mach dependence
-      (tip Mach 0.56) and its non-quadratic drag, which the fit at M = 0.1 leaves out;
-    - the project's default docs theory/aerodynamics 'Linear-quadratic polar' polar (cl0 = 0.5, slope 5.16 /rad vs 0.472 and 6.14 /rad of
-      NACA 4412): T -8.3 %, P -7.5 %, within 10 %; the difference is the airfoil.
+    - a NACA 4412-like LinearQuadraticPolar fitted to the network's spot values
+      (docs theory/aerodynamics 'Airfoil polars'): T -1.9 %, P -4.0 %, within 5 %. The rest is
+      the network's Reynolds and Mach dependence (tip Mach 0.56) and its non-quadratic drag,
+      which the fit at M = 0.1 leaves out;
+    - the project's default docs theory/aerodynamics 'Linear-quadratic polar' polar
+      (cl0 = 0.5, slope 5.16 /rad vs 0.472 and 6.14 /rad of NACA 4412): T -8.3 %, P -7.5 %,
+      within 10 %; the difference is the airfoil.
     """
     prob = om.Problem()
     prob.model.add_subsystem("atmosphere", AtmosphereComp(constants="caddee"), promotes=["*"])
@@ -270,9 +278,9 @@ def test_apc_sport_14x13():
     script, midpoint rule, 30 stations, geometry interpolated linearly at the stations) and the
     thin-airfoil-like APC_POLAR. Acceptance (issue): C_T and C_P within 15 % over
     J = 0.2 .. 0.9 and peak efficiency within 0.05. Achieved: C_T within 5.5 %, C_P within
-    10.7 %, peak eta 0.780 vs 0.736 measured. (The polar matters: with the docs theory/aerodynamics 'Linear-quadratic polar' polar C_T is off
-    by up to 48 %.) Reynolds effects are not modelled (the polar has none), so the rpm is
-    immaterial.
+    10.7 %, peak eta 0.780 vs 0.736 measured. (The polar matters: with the
+    docs theory/aerodynamics 'Linear-quadratic polar' polar C_T is off by up to 48 %.) Reynolds
+    effects are not modelled (the polar has none), so the rpm is immaterial.
     """
     radius, hub, n, rpm = 0.1778, 0.15, 30, 4000.0
     x = hub + (1 - hub) * (np.arange(n) + 0.5) / n

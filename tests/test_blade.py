@@ -37,7 +37,11 @@ def _geometry(num_radial=7, **options):
 
 
 def _bernstein(cp, t):
-    """Cubic Bezier in closed Bernstein form (docs theory/rotors 'Blade parameterization'), one row per curve."""
+    """
+    Cubic Bezier in closed Bernstein form (docs theory/rotors 'Blade parameterization').
+
+    One row per curve.
+    """
     basis = np.stack([comb(3, i) * t**i * (1.0 - t) ** (3 - i) for i in range(4)], axis=-1)
     return cp @ basis.T
 
@@ -58,8 +62,9 @@ def test_stations_partials_and_values(quadrature):
     data = prob.check_partials(method="cs", compact_print=True, out_stream=None)
     assert_check_partials(data, atol=1e-12, rtol=1e-12)
 
-    # Independent numbers (docs theory/rotors 'Stations and disk frame'): element centres r_i = r_h + (R - r_h)(i + 1/2)/N and
-    # the widths of both quadratures sum to the blade length R - r_h; 1e-12 absolute.
+    # Independent numbers (docs theory/rotors 'Stations and disk frame'):
+    # element centres r_i = r_h + (R - r_h)(i + 1/2)/N and the widths of both quadratures sum to the
+    # blade length R - r_h; 1e-12 absolute.
     rh = np.array(HUB) * RADII
     centres = rh[:, None] + (RADII - rh)[:, None] * (np.arange(5) + 0.5) / 5
     np.testing.assert_allclose(prob.get_val("hub_radius"), rh, atol=1e-12)
@@ -68,20 +73,24 @@ def test_stations_partials_and_values(quadrature):
     width = prob.get_val("station_width")
     if quadrature == "midpoint":
         np.testing.assert_allclose(width, np.repeat(((RADII - rh) / 5)[:, None], 5, 1), atol=1e-12)
-    else:  # public code (docs theory/rotors 'Public-code compatibility'): dr = (R - r_h)/(N - 1), end elements halved
+    else:
+        # public code (docs theory/rotors 'Public-code compatibility'): dr = (R - r_h)/(N - 1),
+        # end elements halved
         np.testing.assert_allclose(
             width[:, 1:-1], np.repeat(((RADII - rh) / 4)[:, None], 3, 1), atol=1e-12
         )
         np.testing.assert_allclose(width[:, 0], 0.5 * (RADII - rh) / 4, atol=1e-12)
-    # Azimuth psi_k = 2 pi k / N_psi (docs theory/rotors 'Stations and disk frame'): 0, 90, 180, 270 deg.
+    # Azimuth psi_k = 2 pi k / N_psi (docs theory/rotors 'Stations and disk frame'): 0, 90, 180,
+    # 270 deg.
     np.testing.assert_allclose(
         prob.get_val("azimuth", units="deg"), [0.0, 90.0, 180.0, 270.0], atol=1e-12
     )
 
 
 def test_geometry_as_coded_mapping():
-    # Reference docs theory/rotors 'Blade parameterization': value i of the spline, evaluated at t = i/(N - 1), goes to station i; the
-    # closed Bernstein form is the independent reference (1e-12 absolute).
+    # Reference docs theory/rotors 'Blade parameterization': value i of the spline,
+    # evaluated at t = i/(N - 1), goes to station i; the closed Bernstein form is the independent
+    # reference (1e-12 absolute).
     prob = _geometry()
     t = np.linspace(0.0, 1.0, 7)
     np.testing.assert_allclose(prob.get_val("chord"), _bernstein(CHORD_CP, t), atol=1e-12)

@@ -54,14 +54,16 @@ def test_partials(num_cp, order, vec_size):
 
 def test_cubic_four_cp_is_bezier():
     # 4 control points, order 4, knots [0,0,0,0,1,1,1,1]: single cubic Bezier segment
-    # (docs theory/rotors 'Blade parameterization'). Closed-form Bernstein comparison, 1e-12 absolute.
+    # (docs theory/rotors 'Blade parameterization'). Closed-form Bernstein comparison,
+    # 1e-12 absolute.
     x = np.array([0.0, 0.1, 0.25, 1.0 / 3.0, 0.5, 0.77, 0.9, 1.0])
     prob = _run(CP5, num_points=x.size, x_interp=x, units="m")
     np.testing.assert_allclose(prob.get_val("curve"), _bezier(CP5, x), rtol=0.0, atol=1e-12)
 
 
 def test_default_stations_uniform():
-    # Default stations: linspace(0, 1, num_points) (docs theory/rotors 'Blade parameterization'). Bernstein closed form, 1e-12 absolute.
+    # Default stations: linspace(0, 1, num_points) (docs theory/rotors 'Blade parameterization').
+    # Bernstein closed form, 1e-12 absolute.
     prob = _run(CP5, num_points=25)
     x = np.linspace(0.0, 1.0, 25)
     np.testing.assert_allclose(prob.model.spline.x_interp, x, rtol=0.0, atol=0.0)
@@ -79,7 +81,8 @@ def test_endpoint_interpolation(num_cp, order):
 
 def test_linear_control_points_give_linear_curve():
     # num_cp = order = 4: equally spaced control points give an exactly linear curve
-    # (linear precision of B-splines; docs theory/rotors 'Blade parameterization'). y = 0.3 - 0.2 x, 1e-14 absolute.
+    # (linear precision of B-splines; docs theory/rotors 'Blade parameterization'). y = 0.3 - 0.2 x,
+    # 1e-14 absolute.
     cp = np.linspace(0.3, 0.1, 4)
     x = np.linspace(0.0, 1.0, 13)
     curve = _run(cp, num_points=x.size).get_val("curve")[0]

@@ -44,9 +44,9 @@ def make_problem(components=None, values=None, conditions=(CRUISE,), **options):
 
 
 def test_form_factors_against_reference_table():
-    # docs theory/aerodynamics 'Drag build-up' table (Raymer form, no sweep): wing LS(1)-0413 1.2236, LS(1)-0417
-    # 1.3385, tails (t/c 0.15, (x/c)_m 0.3) 1.3506; fuselage f = 9.144/1.688 = 5.417,
-    # FF = 1.3910. Tolerance: the 4 printed decimals.
+    # docs theory/aerodynamics 'Drag build-up' table (Raymer form, no sweep):
+    # wing LS(1)-0413 1.2236, LS(1)-0417 1.3385, tails (t/c 0.15, (x/c)_m 0.3) 1.3506;
+    # fuselage f = 9.144/1.688 = 5.417, FF = 1.3910. Tolerance: the 4 printed decimals.
     comps = (
         LiftingSurfaceDrag("ls413", 0.13, 0.4),
         LiftingSurfaceDrag("ls417", 0.17, 0.4),
@@ -61,7 +61,8 @@ def test_form_factors_against_reference_table():
 
 def test_lpc_buildup_against_hand_calculation():
     comps, values = lpc_drag_components()
-    # MACs of docs theory/aerodynamics 'Drag build-up' table (wing 1.4601, h-tail 0.9469, v-tail 1.6343 m).
+    # MACs of docs theory/aerodynamics 'Drag build-up' table (wing 1.4601, h-tail 0.9469,
+    # v-tail 1.6343 m).
     assert_near_equal(
         [
             values["wing_mean_aerodynamic_chord"],
@@ -72,10 +73,11 @@ def test_lpc_buildup_against_hand_calculation():
         1e-4,
     )
     prob = make_problem()
-    # Independent evaluation of docs theory/aerodynamics 'Drag build-up' with the math module: Raymer wetted areas 2 S (1 + 0.2 t/c),
-    # Torenbeek fuselage pi D L (1 - 2/f)^(2/3) (1 + 1/f^2) with D = sqrt(H W), booms
-    # 8 pi d L_c (d = 0.3048 m, our assumption), the docs theory/aerodynamics 'Drag build-up' skin friction with the LPC laminar
-    # fractions (wing 0.7, others 0.1), Q = 1.1, rotors 0.111484 m^2.
+    # Independent evaluation of docs theory/aerodynamics 'Drag build-up' with the math module:
+    # Raymer wetted areas 2 S (1 + 0.2 t/c), Torenbeek fuselage pi D L (1 - 2/f)^(2/3) (1 + 1/f^2)
+    # with D = sqrt(H W), booms 8 pi d L_c (d = 0.3048 m, our assumption),
+    # the docs theory/aerodynamics 'Drag build-up' skin friction with the LPC laminar fractions
+    # (wing 0.7, others 0.1), Q = 1.1, rotors 0.111484 m^2.
     v, rho, mu, a = (CRUISE[k] for k in ("speed", "density", "dynamic_viscosity", "speed_of_sound"))
     mach = v / a
 

@@ -8,8 +8,9 @@ from openmdao.utils.assert_utils import assert_check_partials, assert_near_equal
 from lpc_mdo.components.dynamics.eom import EquationsOfMotionComp
 from lpc_mdo.constants import GRAVITY
 
-# Reference docs theory/dynamics 'Equations of motion' check case (CADDEE code form, reference point = origin, inertia as given
-# about the reference point, no gravity): m, cg, I, F = (100, 100, 100) N, M = (20, 20, 20) N m.
+# Reference docs theory/dynamics 'Equations of motion' check case (CADDEE code form,
+# reference point = origin, inertia as given about the reference point, no gravity):
+# m, cg, I, F = (100, 100, 100) N, M = (20, 20, 20) N m.
 MASS = 7126.1992
 CG = np.array([12.57675332, 0.0, 7.084392152])
 I_REF = np.array(

@@ -23,8 +23,8 @@ def _problem(comp, **values):
 
 def test_frames():
     frames = rotor_frames(TILTED)
-    # Reference docs theory/rotors 'Stations and disk frame': lift rotor n = (0, 0, -1) -> e_x forward, e_y right; pusher n = (1, 0, 0)
-    # -> e_x = n x e_y = down (hand-derived, exact).
+    # Reference docs theory/rotors 'Stations and disk frame': lift rotor n = (0, 0, -1) -> e_x
+    # forward, e_y right; pusher n = (1, 0, 0) -> e_x = n x e_y = down (hand-derived, exact).
     np.testing.assert_allclose(frames[0], [[1, 0, 0], [0, 1, 0], [0, 0, -1]], atol=1e-15)
     np.testing.assert_allclose(frames[1], [[0, 0, 1], [0, 1, 0], [1, 0, 0]], atol=1e-15)
     for f in frames:  # orthonormal; (e_x, e_y, -n) right-handed

@@ -11,7 +11,8 @@ def make_problem():
     prob.model.add_subsystem("kin", KinematicsComp(num_nodes=3), promotes=["*"])
     prob.setup(force_alloc_complex=True)
     # Hover, paper climb (V sin(gamma) = 4.572 m/s at 6 deg) and paper cruise (M 0.17 at
-    # 999.74 m: V = 57.190 m/s, docs theory/rotors 'BEM inflow residual'); ICAO densities and speeds of sound.
+    # 999.74 m: V = 57.190 m/s, docs theory/rotors 'BEM inflow residual'); ICAO densities and speeds
+    # of sound.
     prob.set_val("speed", [0.0, 4.572 / np.sin(np.radians(6.0)), 57.19])
     prob.set_val("pitch", np.radians([0.0, 8.0, 2.0]))
     prob.set_val("flight_path_angle", np.radians([0.0, 6.0, 0.0]))
@@ -25,7 +26,8 @@ def make_problem():
 def test_values_against_closed_form():
     prob = make_problem()
     speed = prob.get_val("speed")
-    # Closed forms (docs theory/rotors 'BEM inflow residual'): alpha = theta - gamma; cruise M 0.17 at 1000 m.
+    # Closed forms (docs theory/rotors 'BEM inflow residual'): alpha = theta - gamma;
+    # cruise M 0.17 at 1000 m.
     assert_near_equal(prob.get_val("angle_of_attack"), np.radians([0.0, 2.0, 2.0]), 1e-12)
     assert_near_equal(prob.get_val("mach")[2], 0.17, 1e-4)
     assert_near_equal(
@@ -33,7 +35,8 @@ def test_values_against_closed_form():
     )
     assert_near_equal(np.hypot(prob.get_val("u"), prob.get_val("w")), speed, 1e-12)
     assert prob.get_val("u")[0] == 0.0 and prob.get_val("reynolds_per_length")[0] == 0.0
-    # Cruise Reynolds number on the 1.460 m wing MAC (docs theory/geometry 'Reference vehicle'): about 4e6.
+    # Cruise Reynolds number on the 1.460 m wing MAC (docs theory/geometry 'Reference vehicle'):
+    # about 4e6.
     assert_near_equal(
         prob.get_val("reynolds_per_length")[2] * 1.460, 1.11164 * 57.19 * 1.46 / 1.7579e-5, 1e-12
     )

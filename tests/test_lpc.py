@@ -1,6 +1,7 @@
-"""The full lift-plus-cruise model (paper Table 6: 161 design variables, 96 constraints; and our
-10 transition roll/yaw lift-rotor speed differentials, with 40 linear bounds on each rotor's
-speed).
+"""The full lift-plus-cruise model.
+
+Paper Table 6: 161 design variables, 96 constraints; and our 10 transition roll/yaw lift-rotor
+speed differentials, with 40 linear bounds on each rotor's speed.
 """
 
 from collections import Counter
@@ -158,8 +159,11 @@ def test_transition_rotor_speed_bounds_are_the_pair_bounds(lpc):
 
 
 def test_initial_design(lpc):
-    """The calibration target (true by construction: W_other is calibrated so that the initial
-    design weighs the paper's 3723.99 kg, Table 8), next to checks it does not imply.
+    """
+    The calibration target, next to checks it does not imply.
+
+    The target is true by construction: W_other is calibrated so that the initial design weighs
+    the paper's 3723.99 kg (Table 8).
     """
     assert_near_equal(lpc.get_val("gross_mass", units="kg"), 3723.99, 1e-10)
     # Independent of the calibration: the gross mass is the sum of the breakdown's items.

@@ -75,7 +75,9 @@ REFERENCE_CASES = {
 @pytest.mark.parametrize("case", sorted(REFERENCE_CASES))
 def test_reference_operating_points(case):
     """
-    The three operating points of docs theory/motor 'Validation' (lsdo_motor run unchanged) through motor_analysis.
+    The three operating points of docs theory/motor 'Validation' through motor_analysis.
+
+    The reference is lsdo_motor, run unchanged.
 
     Tolerance: the printed precision of each reference number (half a unit in its last digit),
     with a floor of 1e-9 relative. Every value agrees; no difference needs explaining. The floor
@@ -123,8 +125,9 @@ def test_voltage_limit_report():
 
 
 def test_torque_margin_definition():
-    # Torque margin = T_pk/T_em - 1 (paper Sec. V, docs theory/motor 'Torque margin'): case C, T_pk 93.4297526 and T_em
-    # 77.42764173 from docs theory/motor 'Validation' -> 0.2066719, to the printed precision (1e-8).
+    # Torque margin = T_pk/T_em - 1 (paper Sec. V, docs theory/motor 'Torque margin'): case C,
+    # T_pk 93.4297526 and T_em 77.42764173 from docs theory/motor 'Validation' -> 0.2066719,
+    # to the printed precision (1e-8).
     result = motor_analysis(0.08, 300.0, 1500.0)
     assert_near_equal(result["torque_margin"], 93.4297526 / 77.42764173 - 1.0, tolerance=1e-8)
 
@@ -254,8 +257,9 @@ def test_component_partials(comp_class, method):
 
 
 def test_torque_limit_is_largest_quartic_root():
-    # T_lim (bracketed solve) equals the largest real root of the docs theory/motor 'Voltage-limited torque' quartic found by
-    # numpy.roots on the raw reference coefficients A..E: 1e-9 relative (root conditioning).
+    # T_lim (bracketed solve) equals the largest real root of the
+    # docs theory/motor 'Voltage-limited torque' quartic found by numpy.roots on the raw reference
+    # coefficients A..E: 1e-9 relative (root conditioning).
     from lpc_mdo.components.motor.parameters import MotorParameters
     from lpc_mdo.components.motor.torque_limit import _quartic
 

@@ -107,7 +107,8 @@ def test_case_a_reference_values():
 
 
 def test_case_c_reference_values():
-    # docs theory/motor 'Validation' case C (L = 0.08 m, L/D = 0.5): R_dc 0.00506054 ohm to the printed precision.
+    # docs theory/motor 'Validation' case C (L = 0.08 m, L/D = 0.5): R_dc 0.00506054 ohm to the
+    # printed precision.
     prob = _chain(np.array([0.08]), ratio=0.5)
     assert_near_equal(
         prob.get_val("resistance")[0], 0.00506054, tolerance=printed_tolerance(0.00506054)

@@ -32,7 +32,8 @@ def _run(torque, flux=FLUX_LINKAGE, l_d=INDUCTANCE_D, l_q=INDUCTANCE_Q):
 
 
 def test_base_values_case_a():
-    # docs theory/motor 'Validation' case A: I_base 1003.07 A and T_base 2704.52 N*m (printed to 6 digits: 1e-5 relative).
+    # docs theory/motor 'Validation' case A: I_base 1003.07 A and T_base 2704.52 N*m
+    # (printed to 6 digits: 1e-5 relative).
     i_base, t_base = mtpa_base(FLUX_LINKAGE, INDUCTANCE_D, INDUCTANCE_Q, POLE_PAIRS)
     assert_near_equal(i_base, 1003.07, tolerance=1e-5)
     assert_near_equal(t_base, 2704.52, tolerance=1e-5)

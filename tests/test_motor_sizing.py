@@ -68,8 +68,8 @@ def test_case_a_reference_values():
 
 
 def test_case_c_reference_values():
-    # docs theory/motor 'Validation' case C (L = 0.08 m, L/D = 0.5): D 0.16, mass 5.46888449 kg, T_pk 93.4297526 N*m,
-    # to the printed precision.
+    # docs theory/motor 'Validation' case C (L = 0.08 m, L/D = 0.5): D 0.16, mass 5.46888449 kg,
+    # T_pk 93.4297526 N*m, to the printed precision.
     prob = _run(0.08, ratio=0.5)
     for name, expected in (("diameter", 0.16), ("mass", 5.46888449), ("peak_torque", 93.4297526)):
         assert_near_equal(prob.get_val(name)[0], expected, tolerance=printed_tolerance(expected))
@@ -171,8 +171,9 @@ def test_bad_parameters_raise(field, value):
 
 
 def test_parameters_derived_values():
-    # docs theory/motor 'Equivalent circuit'/7.5 constants derived from the defaults: K_dp1 = 1 (q = 1), B_r(75 C) = 1.1208 T and
-    # H_c(75 C) = 847138 A/m (the values lsdo_motor hard-codes), A_cu = 1.2e-5 m**2, f_i = 500 Hz.
+    # docs theory/motor 'Equivalent circuit'/7.5 constants derived from the defaults:
+    # K_dp1 = 1 (q = 1), B_r(75 C) = 1.1208 T and H_c(75 C) = 847138 A/m (the values lsdo_motor
+    # hard-codes), A_cu = 1.2e-5 m**2, f_i = 500 Hz.
     par = MotorParameters()
     assert_near_equal(par.winding_factor, 1.0, tolerance=1e-15)
     assert_near_equal(par.remanence, 1.1208, tolerance=1e-14)

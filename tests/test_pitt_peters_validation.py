@@ -3,8 +3,10 @@
 The independent transcription below re-implements docs theory/rotors 'Pitt-Peters inflow'
 for one rotor in edgewise flight with plain numpy and scipy.optimize.fsolve (phi = arctan, an
 explicit 3x3 L matrix, the residual in the form lambda - L c). Its switches select either the
-public BladeAD code as it is (to reproduce the docs theory/rotors 'Validation' table) or the project defaults (to check the
-vectorized components to solver precision). The public-code quirks (docs theory/rotors 'Public-code compatibility') appear only here, in the test.
+public BladeAD code as it is (to reproduce the docs theory/rotors 'Validation' table)
+or the project defaults (to check the vectorized components to solver precision).
+The public-code quirks (docs theory/rotors 'Public-code compatibility') appear only here,
+in the test.
 """
 
 import numpy as np
@@ -22,11 +24,15 @@ from lpc_mdo.components.rotor.pitt_peters_inflow import (
 )
 from lpc_mdo.components.rotor.pitt_peters_loads import PittPetersLoadsComp
 
-POLAR = LinearQuadraticPolar()  # docs theory/aerodynamics 'Linear-quadratic polar' example polar (the docs theory/rotors 'Validation' polar)
-RHO_REF = 1.22518316  # density of the docs theory/rotors 'Validation' / docs theory/rotors 'Validation' runs
+# docs theory/aerodynamics 'Linear-quadratic polar' example polar
+# (the docs theory/rotors 'Validation' polar)
+POLAR = LinearQuadraticPolar()
+# density of the docs theory/rotors 'Validation' / docs theory/rotors 'Validation' runs
+RHO_REF = 1.22518316
 BLADES = 2
 
-# Blade of BladeAD examples/ex_run_pitt_peters.py (docs theory/rotors 'Validation' and docs theory/rotors 'Validation').
+# Blade of BladeAD examples/ex_run_pitt_peters.py (docs theory/rotors 'Validation' and
+# docs theory/rotors 'Validation').
 REF_BLADE = dict(
     radius=1.2,
     chord=np.linspace(0.25, 0.05, 35),
@@ -201,7 +207,7 @@ def run_component(
     return prob
 
 
-# Reference docs theory/rotors 'Validation' (BladeAD ex_run_pitt_peters.py run as it is): V, T (N), Q (N m).
+# docs theory/rotors 'Validation' (BladeAD ex_run_pitt_peters.py run as it is): V, T (N), Q (N m).
 TABLE_9_3 = [
     (0.0, 3432.127, 802.623),
     (10.0, 3432.798, 803.001),
@@ -219,8 +225,8 @@ STATES_9_3 = {
 
 @pytest.mark.parametrize("speed, thrust, torque", TABLE_9_3)
 def test_transcription_reproduces_reference_table(speed, thrust, torque):
-    # Source: docs theory/rotors 'Validation' table (3 decimals) and states (6 decimals). Tolerance: the printed
-    # digits (0.5 in the last place, plus margin for the fsolve tolerance).
+    # Source: docs theory/rotors 'Validation' table (3 decimals) and states (6 decimals). Tolerance:
+    # the printed digits (0.5 in the last place, plus margin for the fsolve tolerance).
     states, t, q, _ = transcription(**REF_BLADE, speed=speed, **AS_CODED)
     assert t == pytest.approx(thrust, abs=1e-3)
     assert q == pytest.approx(torque, abs=1e-3)
@@ -229,8 +235,9 @@ def test_transcription_reproduces_reference_table(speed, thrust, torque):
 
 
 def test_transcription_reference_l10_variant():
-    # Source: docs theory/rotors 'Validation', "the same transcription with the default L10 placement gives, at
-    # V = 50: (0.051673, 0.066138, 0.034229) and T = 3669.32 N". Tolerance: printed digits.
+    # Source: docs theory/rotors 'Validation', "the same transcription with the default L10
+    # placement gives, at V = 50: (0.051673, 0.066138, 0.034229) and T = 3669.32 N". Tolerance:
+    # printed digits.
     states, t, _, _ = transcription(**REF_BLADE, speed=50.0, **dict(AS_CODED, coupling="L10"))
     np.testing.assert_allclose(states, [0.051673, 0.066138, 0.034229], atol=1e-6)
     assert t == pytest.approx(3669.32, abs=0.01)
@@ -322,7 +329,11 @@ def test_zero_moment_inflow_ratio(mu_x, mu_y, mu_z):
 
 
 def swirl_free_bem_hover(radius, chord, twist, rpm, rho=1.225):
-    """Independent classical hover BEM (docs theory/rotors 'BEM inflow residual', F/r tip loss, midpoint) without swirl."""
+    """
+    Independent classical hover BEM without swirl.
+
+    Per docs theory/rotors 'BEM inflow residual', with F/r tip loss and the midpoint rule.
+    """
     n = len(chord)
     rh, r, w = station_inputs(radius, n)
     omega = rpm * np.pi / 30
@@ -371,13 +382,14 @@ def test_hover_momentum_placement_matches_swirl_free_bem(blade):
 @pytest.mark.parametrize("blade", [LPC_BLADE, REF_BLADE], ids=["lpc", "bladead_example"])
 def test_hover_against_repository_bem(blade):
     # Issue acceptance: at zero edgewise speed Pitt–Peters (defaults: F on the momentum side,
-    # tangential induction per station) reproduces the repository BEM's hover thrust (BEMInflowComp
-    # + BEMLoadsComp, docs theory/rotors 'BEM inflow residual', 'Loads and coefficients' classical defaults, with wake swirl) within 2 % on the
-    # same blade, stations, polar and atmosphere. Measured (2026-11-22): thrust +0.02 % (LPC
-    # blade) and -0.4 % (BladeAD example blade), torque -0.3 % and -2.0 %; the rest is the
-    # uniform Pitt–Peters inflow against the BEM's local one. Without the swirl the same
-    # comparison gave +2.4 % (F on the loads) and +6.5 % (F on the momentum side): the swirl is
-    # 5.6 % of the BEM thrust on the LPC blade.
+    # tangential induction per station) reproduces the repository BEM's hover thrust
+    # (BEMInflowComp + BEMLoadsComp, docs theory/rotors 'BEM inflow residual',
+    # 'Loads and coefficients' classical defaults, with wake swirl) within 2 %
+    # on the same blade, stations, polar and atmosphere. Measured (2026-11-22):
+    # thrust +0.02 % (LPC blade) and -0.4 % (BladeAD example blade), torque -0.3 % and -2.0 %;
+    # the rest is the uniform Pitt–Peters inflow against the BEM's local one. Without the swirl
+    # the same comparison gave +2.4 % (F on the loads) and +6.5 % (F on the momentum side):
+    # the swirl is 5.6 % of the BEM thrust on the LPC blade.
     nrad = len(blade["chord"])
     rh, r, w = station_inputs(blade["radius"], nrad)
     prob = om.Problem()

@@ -30,9 +30,10 @@ def test_lpc_wing_mesh_against_vehicle_geometry():
     prob = make_problem(26, 1, values=planform_values(wing))
     mesh = prob.get_val("mesh")
     assert mesh.shape == (2, 27, 3)
-    # Span and chords from docs theory/aerodynamics 'Drag build-up' table (b = 15.4127 m, c_root = 2.1195 m,
-    # lambda = 0.2) and the vehicle file (LE sweep 7.81 deg, dihedral -2 deg, incidence
-    # 2.04 deg, root LE (-1.95925, 0, -1.07290) m); tolerance 1e-4 (table rounding).
+    # Span and chords from docs theory/aerodynamics 'Drag build-up' table
+    # (b = 15.4127 m, c_root = 2.1195 m, lambda = 0.2) and the vehicle file
+    # (LE sweep 7.81 deg, dihedral -2 deg, incidence 2.04 deg, root LE (-1.95925, 0, -1.07290) m);
+    # tolerance 1e-4 (table rounding).
     assert_near_equal(mesh[0, -1, 1] - mesh[0, 0, 1], 15.4127, 1e-4)
     le_root, le_tip = mesh[0, 13], mesh[0, 26]
     assert_near_equal(le_root, [-1.95925, 0.0, -1.07290], 1e-12)
@@ -58,7 +59,8 @@ def test_lpc_wing_mesh_against_vehicle_geometry():
 
 
 def test_spacing_and_twist():
-    # Cosine stations eta_j = -cos(pi j/N) (docs theory/aerodynamics 'Reference-vehicle defaults' "half-cosine"), uniform -1 + 2j/N.
+    # Cosine stations eta_j = -cos(pi j/N) (docs theory/aerodynamics 'Reference-vehicle defaults'
+    # "half-cosine"), uniform -1 + 2j/N.
     assert_near_equal(
         span_stations(4, "cosine"), [-1, -math.sqrt(0.5), 0, math.sqrt(0.5), 1], 1e-15
     )

@@ -1,4 +1,7 @@
-"""LinearQuadraticPolar (docs theory/aerodynamics 'Viterna extrapolation', 'Linear-quadratic polar')."""
+"""LinearQuadraticPolar.
+
+Reference: docs theory/aerodynamics 'Viterna extrapolation', 'Linear-quadratic polar'.
+"""
 
 import numpy as np
 import pytest
@@ -15,7 +18,8 @@ def values(alpha):
 
 
 def test_attached_flow_closed_form():
-    # docs theory/aerodynamics 'Linear-quadratic polar': cl = cl0 + cl_alpha a, cd = cd0 + k (cl_alpha a)^2 with
+    # docs theory/aerodynamics 'Linear-quadratic polar':
+    # cl = cl0 + cl_alpha a, cd = cd0 + k (cl_alpha a)^2 with
     # k = [(0.06 - 0.008)/(0.5 - 1.5)^2 + (0.02 - 0.008)/(0.5 + 1)^2]/2 = 0.028667.
     a = np.radians([-5.0, 0.0, 5.0, 10.0])
     k = 0.5 * (0.052 / 1.0 + 0.012 / 2.25)
@@ -25,8 +29,8 @@ def test_attached_flow_closed_form():
 
 
 def test_viterna_closed_form_at_30_and_90_degrees():
-    # docs theory/aerodynamics 'Viterna extrapolation' with AR = 10: CD_max = 1.29, A1 = 0.645, B1 = 1.29; positive stall at 15 deg,
-    # cl_s = 1.5, cd_s = 0.06.
+    # docs theory/aerodynamics 'Viterna extrapolation' with AR = 10: CD_max = 1.29, A1 = 0.645,
+    # B1 = 1.29; positive stall at 15 deg, cl_s = 1.5, cd_s = 0.06.
     s, c = np.sin(np.radians(15.0)), np.cos(np.radians(15.0))
     a2 = (1.5 - 1.29 * s * c) * s / c**2
     b2 = (0.06 - 1.29 * s**2) / c

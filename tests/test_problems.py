@@ -29,7 +29,8 @@ def sizes(prob):
         ("subproblem_1", (4 + 20 + 10 + 5 + 3 + 3 + 8 + 1 + 1 + 45, 1 + 2 + 9 + 25 + 1 + 1 + 40)),
         ("subproblem_2", (28 + 4, 16 + 8)),
         ("subproblem_3", (32 + 2, 2 + 14)),
-        # Subproblem 4: planform in climb, cruise and descent (Table 2: cruise only; see problems.py).
+        # Subproblem 4: planform in climb, cruise and descent (Table 2: cruise only;
+        # see problems.py).
         ("subproblem_4", (5 + 3 * 3, 3 * 3 + 1)),
         ("full", (161 + 10, 96 - 10 + 40)),
         ("baseline", (161 + 10, 96 - 10 + 40)),

@@ -26,7 +26,8 @@ def test_reference_layout_is_reproduced():
     assert_near_equal(prob.get_val("lift_hub_position"), hubs, 1e-12)
     assert_near_equal(prob.get_val("pusher_hub_position"), VEHICLE.pusher.hub_position, 1e-12)
     assert_near_equal(prob.get_val("lift_rotor_radius"), np.full(8, 1.524), 1e-12)
-    # (1.524 + 1.524)/15.41 = 0.1978 (docs theory/geometry 'Rotor layout and radius intersection' reading (a)).
+    # (1.524 + 1.524)/15.41 = 0.1978 (docs theory/geometry 'Rotor layout and radius intersection'
+    # reading (a)).
     assert_near_equal(
         prob.get_val("radius_intersection"), np.full(2, 3.048 / VEHICLE.wing.span), 1e-12
     )

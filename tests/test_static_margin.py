@@ -1,4 +1,7 @@
-"""Neutral point (paper eq. 30) and static margin (docs theory/dynamics 'Neutral point and static margin')."""
+"""Neutral point (paper eq. 30) and static margin.
+
+Reference: docs theory/dynamics 'Neutral point and static margin'.
+"""
 
 import openmdao.api as om
 import pytest

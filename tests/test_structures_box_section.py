@@ -61,7 +61,8 @@ def test_bredt_torsion_constant_closed_forms():
     b, t = 0.3, 2e-3
     prob = _run(b, b, t, t, t, t, torsion_formula="bredt")
     assert_near_equal(prob.get_val("torsion_constant"), [t * (b - t) ** 3], 1e-12)
-    # Rectangle with skins t_c and webs t_w: equals the Bredt form quoted in docs theory/structures 'Box section',
+    # Rectangle with skins t_c and webs t_w: equals the Bredt form quoted in
+    # docs theory/structures 'Box section',
     # J = 2 t_w t_c (w - t_w)² (h - t_c)²/(w t_w + h t_c - t_w² - t_c²).
     w, h, tc, tw = 0.8087064, 0.26502895, 6.5e-3, 0.3e-3
     prob = _run(w, h, tc, tc, tw, tw, torsion_formula="bredt")
@@ -73,7 +74,8 @@ def test_bredt_torsion_constant_closed_forms():
 
 
 def test_neutral_axis_shift_as_coded():
-    # Unequal skins: the reference's z_c = (t_top - t_bot)(w - 2 t_web)/w enters I_y (docs theory/structures 'Box section');
+    # Unequal skins: the reference's z_c = (t_top - t_bot)(w - 2 t_web)/w enters I_y
+    # (docs theory/structures 'Box section');
     # hand computation for w = 0.5, h = 0.2, t_top = 4 mm, t_bot = 2 mm, t_web = 1 mm:
     # z_c = 0.002*0.498/0.5 = 1.992e-3; d_top = 0.1 - 0.002 - z_c = 0.096008,
     # d_bot = -0.1 + 0.001 - z_c = -0.100992, h_w = 0.194;

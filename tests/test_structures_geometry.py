@@ -33,8 +33,10 @@ def _run(section=WING_BOX_SECTIONS["ls413"], num_nodes=9, **values):
 
 
 def test_reference_planform():
-    # Reference docs theory/geometry 'Reference vehicle': b = sqrt(12.12 * 19.6) = 15.41 m, c_root = 2.119 m, c_tip = 0.424 m.
-    # Default inputs are the reference vehicle's wing; 9 nodes = 8 equal bays (docs theory/structures 'Material, mesh and load transfer').
+    # Reference docs theory/geometry 'Reference vehicle': b = sqrt(12.12 * 19.6) = 15.41 m,
+    # c_root = 2.119 m, c_tip = 0.424 m.
+    # Default inputs are the reference vehicle's wing; 9 nodes = 8 equal bays
+    # (docs theory/structures 'Material, mesh and load transfer').
     prob = _run()
     nodes, chord = prob.get_val("nodes"), prob.get_val("chord")
     assert_near_equal(nodes[-1, 1] - nodes[0, 1], 15.4127220 / 2, 1e-7)

@@ -67,7 +67,8 @@ def test_total_force_and_moment_are_conserved():
     # Statics: the nodal loads have the resultant force and moment (about the origin) of the
     # aerodynamic forces, the point masses and the lumped element masses (element mass at its
     # mid-point = half at each node), all at n g along the body gravity direction
-    # (-sin θ, sin φ cos θ, cos φ cos θ) (docs theory/dynamics 'Gravity'). Round-off only: 1e-12 relative.
+    # (-sin θ, sin φ cos θ, cos φ cos θ) (docs theory/dynamics 'Gravity').
+    # Round-off only: 1e-12 relative.
     prob = _setup()
     nodes, points = prob.get_val("nodes"), prob.get_val("aero_points")
     forces = prob.get_val("aero_forces")

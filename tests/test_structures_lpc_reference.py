@@ -1,4 +1,7 @@
-"""The reference LPC half-wing box beam (docs theory/structures 'Validation', aframe NASA_LPC_beam.py)."""
+"""The reference LPC half-wing box beam.
+
+Reference: docs theory/structures 'Validation', aframe NASA_LPC_beam.py.
+"""
 
 import numpy as np
 import pytest
@@ -66,7 +69,8 @@ def test_mass_and_tip_deflection(result):
 
 
 def test_displacements(result):
-    # docs theory/structures 'Validation' nodal displacements, 6 significant digits (the root values are exactly 0).
+    # docs theory/structures 'Validation' nodal displacements, 6 significant digits
+    # (the root values are exactly 0).
     disp = result["displacements"]
     assert_near_equal(
         disp[1:, 2],
@@ -114,7 +118,8 @@ def test_displacements(result):
 
 
 def test_section_properties(result):
-    # docs theory/structures 'Validation' A, I_y, I_z, J (as printed: A to 5, the inertias to 7 significant digits).
+    # docs theory/structures 'Validation' A, I_y, I_z, J (as printed: A to 5,
+    # the inertias to 7 significant digits).
     assert_near_equal(
         result["area"],
         [0.010682, 0.009410, 0.007859, 0.006327, 0.004784, 0.003065, 0.001846, 0.000212],
@@ -171,8 +176,9 @@ def test_section_properties(result):
 
 
 def test_corner_von_mises_stresses(result):
-    # docs theory/structures 'Validation' table, points 0-3: the reference's points 0, 1, 2, 3 are our points 2, 3, 0, 1 (its
-    # section loads have the opposite sign, see BoxStressComp); 6 digits printed -> 1e-5.
+    # docs theory/structures 'Validation' table, points 0-3: the reference's points 0, 1, 2, 3
+    # are our points 2, 3, 0, 1 (its section loads have the opposite sign, see BoxStressComp);
+    # 6 digits printed -> 1e-5.
     ref = np.array(
         [
             [1.01017e8, 1.01049e8, 1.01315e8, 1.01347e8],
@@ -189,8 +195,9 @@ def test_corner_von_mises_stresses(result):
 
 
 def test_web_point_follows_statics(result):
-    # The docs theory/structures 'Validation' point-4 column cannot be reproduced from the formula the reference page states
-    # (it implies e.g. a 43 N shear in the tip element, which carries the 1475 N tip load).
+    # The docs theory/structures 'Validation' point-4 column cannot be reproduced from the
+    # formula the reference page states (it implies e.g. a 43 N shear in the tip element,
+    # which carries the 1475 N tip load).
     # Check instead against statics: the web shear uses V_z = the outboard load projected on the
     # element's local z axis, tau = V_z Q/(2 t_web I_y) + M_x (w/2)/J, σ = N/A - M_z (w/2)/I_z.
     sec = result["section_loads"]

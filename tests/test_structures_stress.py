@@ -73,8 +73,8 @@ def test_torsion_polar_and_bredt():
 
 def test_transverse_shear_and_both_webs():
     # Web shear τ_s = V_z Q/(2 t_web I_y), Q = W t_cap H/2 + t_web H²/4, t_cap = mean skin
-    # (docs theory/structures 'Stress', main branch); corners carry no transverse shear. With a torque the
-    # shear flows add on the web at +W/2 (point 4) and subtract at -W/2 (point 5).
+    # (docs theory/structures 'Stress', main branch); corners carry no transverse shear.
+    # With a torque the shear flows add on the web at +W/2 (point 4) and subtract at -W/2 (point 5).
     v, torque = 4.0e4, 2.0e3
     q = W * 0.5 * (T_TOP + T_BOT) * H / 2 + T_WEB * H**2 / 4
     tau_s = v * q / (2 * T_WEB * I_Y)

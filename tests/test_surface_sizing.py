@@ -11,7 +11,8 @@ def test_reference_wing_and_partials():
     prob.set_val("area", 19.6)
     prob.set_val("aspect_ratio", 12.12)
     prob.run_model()
-    # Reference docs theory/geometry 'Reference vehicle': b = 15.41 m, c_root = 2.119 m, c_tip = 0.424 m, MAC = 1.460 m.
+    # Reference docs theory/geometry 'Reference vehicle': b = 15.41 m, c_root = 2.119 m,
+    # c_tip = 0.424 m, MAC = 1.460 m.
     assert_near_equal(prob.get_val("span"), 15.41, 5e-4)
     assert_near_equal(prob.get_val("root_chord"), 2.119, 5e-4)
     assert_near_equal(prob.get_val("tip_chord"), 0.424, 5e-4)

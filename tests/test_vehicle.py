@@ -22,7 +22,7 @@ from lpc_mdo.vehicle import (
 
 @pytest.fixture
 def data():
-    """A fresh dict of the reference file, free to modify."""
+    """Return a fresh dict of the reference file, free to modify."""
     return read_vehicle_file()
 
 
@@ -199,7 +199,7 @@ def test_invalid_toml_is_reported(tmp_path):
 
 
 def _set(*keys_and_value):
-    """A mutator that sets data[k0][k1]... = value."""
+    """Return a mutator that sets data[k0][k1]... = value."""
     *keys, value = keys_and_value
 
     def mutate(d):

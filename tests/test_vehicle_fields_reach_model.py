@@ -71,10 +71,12 @@ def test_wing_planform_reaches_the_wing_box(reference):
     ):
         assert_near_equal(prob.get_val(f"vehicle.wing_box.wing_{name}"), value, 1e-15)
 
-    # Beam nodes by the planform of WingBoxGeometryComp's docstring (docs theory/geometry 'Reference vehicle', docs theory/structures 'Material, mesh and load transfer')
-    # evaluated with the vehicle's own LiftingSurface properties: chord c(eta) linear from
-    # c_root to c_tip, leading edge x0 - y tan(sweep), z0 - y tan(dihedral), node at the beam
-    # axis and the camber line of the section, pitched by the incidence.
+    # Beam nodes by the planform of WingBoxGeometryComp's docstring
+    # (docs theory/geometry 'Reference vehicle',
+    # docs theory/structures 'Material, mesh and load transfer') evaluated with the vehicle's own
+    # LiftingSurface properties: chord c(eta) linear from c_root to c_tip, leading edge
+    # x0 - y tan(sweep), z0 - y tan(dihedral), node at the beam axis and the camber line of the
+    # section, pitched by the incidence.
     sec = wing_box_section(WING)
     eta = np.linspace(0.0, 1.0, WING.wing_box.num_bays + 1)
     chord = wing.root_chord + (wing.tip_chord - wing.root_chord) * eta

@@ -32,8 +32,8 @@ def test_initial_design_is_calibrated_to_the_paper_gross_mass():
     """
     Check the initial gross mass, 3723.99 kg (paper Table 8), and the motor and wing masses.
 
-    3723.99 kg is the calibration target of W_other (docs theory/weights 'Gross mass'), so the gross mass
-    holds by construction; the tests next to it check the build-up independently.
+    3723.99 kg is the calibration target of W_other (docs theory/weights 'Gross mass'),
+    so the gross mass holds by construction; the tests next to it check the build-up independently.
     """
     prob = vehicle_problem()
     assert_near_equal(prob.get_val("gross_mass", units="kg"), 3723.99, 1e-10)
@@ -144,8 +144,9 @@ def test_totals_of_gross_mass_and_geometry():
         out_stream=None,
     )
     assert_check_totals(data, atol=1e-8, rtol=1e-7)
-    # A kilogram of battery adds itself plus what the M4 fuselage and boom regressions add for
-    # it (battery mass is one of their regressors, docs theory/weights 'M4 regressions'), so slightly more than 1.
+    # A kilogram of battery adds itself plus what the M4 fuselage and boom regressions add
+    # for it (battery mass is one of their regressors, docs theory/weights 'M4 regressions'),
+    # so slightly more than 1.
     totals = prob.compute_totals("gross_mass", "battery_mass")
     assert 1.0 < totals["gross_mass", "battery_mass"][0, 0] < 1.1
 

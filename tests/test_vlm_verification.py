@@ -67,9 +67,10 @@ def solve(prob, alpha_deg, **values):
     "span_panels, chord_panels, cl, cdi", [(10, 2, 0.44264, 0.005877), (20, 6, 0.43333, 0.005926)]
 )
 def test_public_code_reference_numbers(span_panels, chord_panels, cl, cdi):
-    # docs theory/aerodynamics 'Validation' (VortexAD_temp ex1_oas.py, run with csdl_alpha): b = 10 m, c = 1 m,
-    # 11 x 3 and 21 x 7 nodes, linear spacing, alpha = 5 deg, V = 60 m/s, rho = 1.225. Same
-    # lattice and wake (its finite 100-s wake and force-point kernel differ by < 1e-5).
+    # docs theory/aerodynamics 'Validation' (VortexAD_temp ex1_oas.py, run with csdl_alpha):
+    # b = 10 m, c = 1 m, 11 x 3 and 21 x 7 nodes, linear spacing, alpha = 5 deg, V = 60 m/s,
+    # rho = 1.225. Same lattice and wake (its finite 100-s wake and force-point kernel differ
+    # by < 1e-5).
     # Tolerances: the 5 printed digits.
     prob = wing_problem(span_panels, chord_panels, span=10.0)
     solve(prob, 5.0, speed=60.0)

@@ -5,8 +5,9 @@ from openmdao.utils.assert_utils import assert_check_partials, assert_near_equal
 
 from lpc_mdo.components.weights.gross_weight import BREAKDOWN_LABELS, GrossWeightComp
 
-# Public-code tally of docs theory/weights 'Gross mass' (kg): fuselage 411.8, booms 153.5, empennage 73.5, wing 375.7,
-# battery 800, motors 330.1, payload 1340 (540 + 800), systems 244 -> "about 3729 kg".
+# Public-code tally of docs theory/weights 'Gross mass' (kg): fuselage 411.8, booms 153.5,
+# empennage 73.5, wing 375.7, battery 800, motors 330.1, payload 1340 (540 + 800),
+# systems 244 -> "about 3729 kg".
 TALLY = dict(
     wing_mass=375.7,
     fuselage_mass=411.8,
@@ -31,8 +32,8 @@ def run(num_motors=9, **values):
 
 
 def test_public_code_tally():
-    # Ref docs theory/weights 'Gross mass': the sum of the public-code masses is 3728.6 kg (hand sum of the printed items,
-    # 1e-12); one motor entry of 330.1 kg stands for all motors.
+    # Ref docs theory/weights 'Gross mass': the sum of the public-code masses is 3728.6 kg
+    # (hand sum of the printed items, 1e-12); one motor entry of 330.1 kg stands for all motors.
     prob = run(num_motors=1, motor_mass=[330.1], **TALLY)
     assert_near_equal(prob.get_val("gross_mass"), 3728.6, 1e-12)
     assert_near_equal(prob.get_val("structures_mass"), 375.7 + 411.8 + 73.5 + 153.5, 1e-12)

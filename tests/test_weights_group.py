@@ -26,8 +26,9 @@ def weights_problem(**options):
 
 def test_placeholder_calibration_inputs():
     inputs = placeholder_calibration_inputs()
-    # Wing: M4 wing regression at (19.6, 12.12, 9.144, 800, 57.1897) -> 283.3605 kg (docs theory/weights 'M4 regressions'
-    # row 4 at V = 57.19 m/s; the 1e-4 m/s difference moves it by 2.4e-5 kg), 1e-6.
+    # Wing: M4 wing regression at (19.6, 12.12, 9.144, 800, 57.1897) -> 283.3605 kg
+    # (docs theory/weights 'M4 regressions' row 4 at V = 57.19 m/s; the 1e-4 m/s difference moves it
+    # by 2.4e-5 kg), 1e-6.
     assert_near_equal(inputs["wing_mass"], 283.3605, 1e-6)
     # Motors, paper eq. 23 by hand: (pi/2)(30e3)(0.85)(0.2^2)(0.1)/15 = 10.681415 kg (L 0.10 m),
     # (pi/2)(30e3)(0.85)(0.3^2)(0.15)/15 = 36.049776 kg (pusher, L 0.15 m), 1e-6.

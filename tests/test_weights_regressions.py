@@ -15,7 +15,7 @@ from lpc_mdo.components.weights.regressions import (
 NOSE = np.array([2.464, 0.0, 5.113]) * 0.3048
 MAIN = ("wing_area", "wing_aspect_ratio", "fuselage_length", "battery_mass", "cruise_speed")
 
-# Reference page (models_structures_motor_vehicle.md) docs theory/weights 'M4 regressions', validation points computed from the
+# docs theory/weights 'M4 regressions', validation points computed from the
 # coefficients: (S_w, AR, L, m_b, V) -> fuselage mass, total boom mass, wing (regression) mass,
 # fuselage cg_X, cg_Z (M4 frame). Printed with 4 decimals.
 VALIDATION = [
@@ -55,15 +55,17 @@ def test_validation_points(point):
 
 
 def test_empennage_validation_points():
-    # Reference docs theory/weights 'M4 regressions': (S_h, S_v) = (3.5, 2.5) -> 54.4502 kg; (3.7, 2.54) -> 56.5389 kg (4 decimals).
+    # Reference docs theory/weights 'M4 regressions': (S_h, S_v) = (3.5, 2.5) -> 54.4502 kg;
+    # (3.7, 2.54) -> 56.5389 kg (4 decimals).
     for areas, mass in (((3.5, 2.5), 54.4502), ((3.7, 2.54), 56.5389)):
         prob = run(EmpennageRegressionComp(), htail_area=areas[0], vtail_area=areas[1])
         assert_near_equal(prob.get_val("empennage_mass"), mass, 1e-6)
 
 
 def test_fuselage_frame_and_factors():
-    # Reference docs theory/weights 'M4 regressions' (as coded): body cg = (x_n - 0.88 cg_X, 0, z_n - cg_Z); cg_X, cg_Z at the
-    # paper cruise speed from the docs theory/weights 'M4 regressions' row 4 inputs (by hand from the docs theory/weights 'M4 regressions' coefficients:
+    # docs theory/weights 'M4 regressions' (as coded): body cg = (x_n - 0.88 cg_X, 0, z_n - cg_Z);
+    # cg_X, cg_Z at the paper cruise speed from the docs theory/weights 'M4 regressions' row 4
+    # inputs (by hand from the docs theory/weights 'M4 regressions' coefficients:
     # cg_X = 3.8911491674, cg_Z = 1.6855289202, 1e-9 m).
     x = dict(zip(MAIN, (19.6, 12.12, 9.144, 800.0, 57.19), strict=True))
     prob = run(FuselageRegressionComp(), **x)
@@ -72,8 +74,8 @@ def test_fuselage_frame_and_factors():
         [NOSE[0] - 0.88 * 3.8911491674, 0.0, NOSE[2] - 1.6855289202],
         1e-9,
     )
-    # Own inertia: Ixx, Iyy, Izz, Ixz of docs theory/weights 'M4 regressions' at these inputs (plain arithmetic, 1e-9 relative);
-    # rotating x aft/z up to x forward/z down keeps I_xz.
+    # Own inertia: Ixx, Iyy, Izz, Ixz of docs theory/weights 'M4 regressions' at these inputs
+    # (plain arithmetic, 1e-9 relative); rotating x aft/z up to x forward/z down keeps I_xz.
     c = m4_coefficients()["fuselage"]
     xt = np.array([19.6, 12.12, 9.144, 800.0, 57.19, 1.0])
     ixx, iyy, izz, ixz = (
@@ -91,7 +93,8 @@ def test_fuselage_frame_and_factors():
 
 
 def test_boom_parallel_axis():
-    # Independent evaluation of docs theory/weights 'M4 regressions' with the docs theory/weights 'Public-code compatibility' correction, written out per group:
+    # Independent evaluation of docs theory/weights 'M4 regressions' with the
+    # docs theory/weights 'Public-code compatibility' correction, written out per group:
     # m_g = m/4; cg = mean of the group cgs with y = 0; I = sum_g [diag(Ixx, Iyy, Izz)_g +
     # m_g ((r.r) 1 - r r^T)], r = cg_g - cg (body frame: x, z flipped about the nose).
     data = m4_coefficients()["booms"]
@@ -123,7 +126,8 @@ def test_boom_parallel_axis():
 
 
 def test_empennage_parallel_axis():
-    # Two sub-parts with mass fractions 0.65 / 0.35 (docs theory/weights 'M4 regressions'); independent evaluation as above.
+    # Two sub-parts with mass fractions 0.65 / 0.35 (docs theory/weights 'M4 regressions');
+    # independent evaluation as above.
     data = m4_coefficients()["empennage"]
     xt = np.array([3.7, 2.54, 1.0])
     mass = float(np.dot(data["mass"], xt))

@@ -1,7 +1,9 @@
 """
-Tabulated airfoil polars: smooth (C1) interpolation over alpha, Reynolds and Mach, Viterna to
-+-90 deg and reverse flow to +-180 deg (docs theory/aerodynamics 'Airfoil polars', 'Viterna
-extrapolation', 'Linear-quadratic polar').
+Tabulated airfoil polars with smooth interpolation, Viterna and reverse-flow extrapolation.
+
+Smooth (C1) interpolation over alpha, Reynolds and Mach, Viterna to +-90 deg and reverse flow to
++-180 deg (docs theory/aerodynamics 'Airfoil polars', 'Viterna extrapolation', 'Linear-quadratic
+polar').
 
 :func:`get_polar` turns an airfoil name ('naca0012', 'naca0015', 'ls413', 'ls417'), a user table
 of (alpha [deg], cl, cd) at one Reynolds and Mach number (array, dict or file) or a ready
@@ -398,7 +400,7 @@ class TablePolar(Polar):
     # ------------------------------------------------------------------------------ evaluation
 
     def _fixed_conditions(self, reynolds, mach):
-        """The cached :class:`_FixedConditions` of these query conditions (made if new)."""
+        """Return the cached :class:`_FixedConditions` of these query conditions (made if new)."""
         caches = self.__dict__.setdefault("_condition_caches", [])
         for k, cache in enumerate(caches):
             if cache.matches(reynolds, mach):
@@ -529,7 +531,7 @@ class TablePolar(Polar):
         cls, alpha_deg, cl, cd, reynolds=1e6, mach=0.0, name="user table", **kwargs
     ):
         """
-        A single-(Re, M) polar from a table of alpha [deg], cl, cd (any order; sorted here).
+        Build a single-(Re, M) polar from a table of alpha [deg], cl, cd (any order; sorted here).
 
         Reynolds and Mach derivatives are zero (the table holds for every Re and M).
         """
@@ -558,9 +560,11 @@ class TablePolar(Polar):
     @classmethod
     def from_text(cls, path, **kwargs):
         """
-        Read a polar text file: every line with at least three numbers gives alpha [deg], cl, cd
-        (its first three columns); other lines (headers, comments) are skipped, so XFOIL polar
-        files (alpha CL CD CDp CM ...) load as they are.
+        Read a polar text file of alpha [deg], cl, cd rows.
+
+        Every line with at least three numbers gives alpha [deg], cl, cd (its first three
+        columns); other lines (headers, comments) are skipped, so XFOIL polar files (alpha CL CD
+        CDp CM ...) load as they are.
         """
         rows = []
         with open(path, encoding="utf-8", errors="replace") as fh:
@@ -604,7 +608,7 @@ def _named_polar(key):
 
 def get_polar(airfoil):
     """
-    A :class:`~lpc_mdo.components.aero.polar.Polar` from an airfoil name, a table or a Polar.
+    Get a :class:`~lpc_mdo.components.aero.polar.Polar` from an airfoil name, a table or a Polar.
 
     Parameters
     ----------

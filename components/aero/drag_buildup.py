@@ -580,13 +580,14 @@ def max_thickness_sweep(surface, mirrored=True):
 
 
 def lpc_drag_components(vehicle=None, boom_diameter=LPC_BOOM_DIAMETER):
-    """Drag-build-up components and input values of the LPC vehicle (docs theory/aerodynamics 'Drag
-    build-up').
+    """
+    Return the drag-build-up components and input values of the LPC vehicle.
 
-    Components: wing, horizontal_tail, vertical_tail (LiftingSurfaceDrag with the vehicle's
-    t/c, (x/c)_m, laminar fraction and maximum-thickness sweep), fuselage (BodyDrag) and booms
-    (8 parts, FF 1.1, L_c 2.4384 m, wetted area pi d L_c with the assumed diameter d, 1 ft by
-    default; the sources give no boom size). The rotor hubs are the lumped drag area 0.111484 m**2.
+    See docs theory/aerodynamics 'Drag build-up'. Components: wing, horizontal_tail, vertical_tail
+    (LiftingSurfaceDrag with the vehicle's t/c, (x/c)_m, laminar fraction and maximum-thickness
+    sweep), fuselage (BodyDrag) and booms (8 parts, FF 1.1, L_c 2.4384 m, wetted area pi d L_c with
+    the assumed diameter d, 1 ft by default; the sources give no boom size). The rotor hubs are the
+    lumped drag area 0.111484 m**2.
 
     Returns
     -------

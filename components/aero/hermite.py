@@ -17,9 +17,10 @@ __all__ = ["HermiteAxis", "tensor_eval"]
 
 class HermiteAxis:
     """
-    A 1-D grid with C1 cubic Hermite interpolation whose node slopes are 3-point finite
-    differences (the slope of the parabola through each node and its neighbours; one-sided
-    parabolas at the ends), so the interpolant is linear in the node values.
+    A 1-D grid with C1 cubic Hermite interpolation and 3-point finite-difference node slopes.
+
+    The node slopes are the slopes of the parabola through each node and its neighbours
+    (one-sided parabolas at the ends), so the interpolant is linear in the node values.
 
     The interpolant on interval k is sum_j W_kj(t) f_(s_k + j), j < width, with W_kj cubic in the
     local coordinate t; :meth:`weights` returns the window start s_k and the weights and their

@@ -88,16 +88,19 @@ def _hermite(x, x0, x1, f0, d0, f1, d1):
 
 
 def viterna_cd_max(aspect_ratio=10.0):
-    """Viterna's maximum drag coefficient CD_max = 1.11 + 0.018 AR (docs theory/aerodynamics
-    'Viterna extrapolation'; 1.29 for AR = 10).
+    """
+    Return Viterna's maximum drag coefficient CD_max = 1.11 + 0.018 AR (1.29 for AR = 10).
+
+    See docs theory/aerodynamics 'Viterna extrapolation'.
     """
     return 1.11 + 0.018 * aspect_ratio
 
 
 def viterna_coefficients(alpha_stall, cl_stall, cd_stall, cd_max):
     """
-    Viterna–Corrigan coefficients A2, B2 of one stall point (docs theory/aerodynamics 'Viterna
-    extrapolation').
+    Return the Viterna–Corrigan coefficients A2, B2 of one stall point.
+
+    See docs theory/aerodynamics 'Viterna extrapolation'.
 
     A2 = (cl_s - CD_max sin a_s cos a_s) sin a_s/cos^2 a_s,  B2 = (cd_s - CD_max sin^2 a_s)/cos a_s;
     works elementwise on arrays of stall points.
@@ -110,8 +113,9 @@ def viterna_coefficients(alpha_stall, cl_stall, cd_stall, cd_max):
 
 def viterna(a, cd_max, a2, b2):
     """
-    Viterna–Corrigan post-stall law and its alpha slopes (docs theory/aerodynamics 'Viterna
-    extrapolation'), to +-90 deg.
+    Evaluate the Viterna–Corrigan post-stall law and its alpha slopes, to +-90 deg.
+
+    See docs theory/aerodynamics 'Viterna extrapolation'.
 
     cl = A1 sin 2a + A2 cos^2 a/sin a,  cd = B1 sin^2 a + B2 cos a,  A1 = CD_max/2, B1 = CD_max.
     Returns (cl, cd, dcl/da, dcd/da).

@@ -70,8 +70,10 @@ def per_rotor(
 
 
 def azimuth_angles(num_azimuth):
-    """Azimuthal stations psi_k = 2 pi k / N_psi, k = 0..N_psi-1, rad (docs theory/rotors
-    'Stations and disk frame').
+    """
+    Return the azimuthal stations psi_k = 2 pi k / N_psi, k = 0..N_psi-1, rad.
+
+    See docs theory/rotors 'Stations and disk frame'.
     """
     return 2.0 * np.pi * np.arange(num_azimuth) / num_azimuth
 

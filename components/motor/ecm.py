@@ -38,8 +38,9 @@ def _complex_safe_abs(x):
 
 class MotorECMParametersComp(PointwiseExplicitComp):
     """
-    Geometry-derived equivalent-circuit parameters of the PMSM (docs theory/motor 'Equivalent
-    circuit'), per motor.
+    Geometry-derived equivalent-circuit parameters of the PMSM, per motor.
+
+    See docs theory/motor 'Equivalent circuit'.
 
     - yoke pitch tau_y = pi (D_i + h_slot)/(2p); yoke path L_j1 = pi (D - h_ys)/(4p);
     - magnet: b_m = (D_2 - 0.002) pi theta_m/360 with theta_m = 0.78 * 360/(2p); A_m = b_m l;
@@ -249,8 +250,9 @@ _MAGNET_NAMES = tuple(name for name, *_ in _MAGNET_INPUTS)
 
 def magnet_circuit(b_delta, v):
     """
-    Evaluate the magnet MEC of docs theory/motor 'Magnet circuit' at the air-gap flux density
-    ``b_delta`` (complex-safe).
+    Evaluate the magnet MEC at the air-gap flux density ``b_delta`` (complex-safe).
+
+    The MEC is that of docs theory/motor 'Magnet circuit'.
 
     Returns a dict with the air-gap flux phi_air = alpha_i tau_p l B_delta, the air-gap and
     total MMFs, the bridge flux phi_f, the bridge leakage phi_s and the magnet flux
@@ -284,8 +286,9 @@ def magnet_circuit(b_delta, v):
 
 def magnet_operating_flux(circuit, v):
     """
-    Magnet operating flux phi_r - F_m lambda_m for the circuit of :func:`magnet_circuit` (docs
-    theory/motor 'Magnet circuit').
+    Return the magnet operating flux phi_r - F_m lambda_m for a :func:`magnet_circuit` circuit.
+
+    See docs theory/motor 'Magnet circuit'.
 
     F_m = F_tot + phi_mag/lambda_leak with the leakage permeance lambda_leak = l b_m mu_0/0.0005.
     """
@@ -296,8 +299,9 @@ def magnet_operating_flux(circuit, v):
 
 class MagnetCircuitComp(PointwiseImplicitComp):
     """
-    Magnet magnetic equivalent circuit: air-gap flux density B_delta (implicit, docs theory/motor
-    'Magnet circuit').
+    Magnet magnetic equivalent circuit: air-gap flux density B_delta (implicit).
+
+    See docs theory/motor 'Magnet circuit'.
 
     For a trial B_delta the circuit gives the tooth, yoke and air-gap MMFs (iron B-H fit
     H(B) = (1.12832651 e^(B+1) + 200) B**1.4), the bridge flux (B(H) = 1.92e-3 tanh(H/300 -
@@ -357,8 +361,9 @@ class MagnetCircuitComp(PointwiseImplicitComp):
 
 class MagnetFluxComp(PointwiseExplicitComp):
     """
-    Magnet MEC post-processing (docs theory/motor 'Magnet circuit'): pole flux, MMFs and per-unit
-    permeances.
+    Magnet MEC post-processing: pole flux, MMFs and per-unit permeances.
+
+    See docs theory/motor 'Magnet circuit'.
 
     With phi the flux per pole (as coded, the magnet operating flux phi_r - F_m lambda_m = phi_mag
     at the MEC solution; see the module docstring):
@@ -492,8 +497,9 @@ _Q_AXIS_NAMES = tuple(name for name, *_ in _Q_AXIS_INPUTS)
 
 def q_axis_current(flux_q, v, par):
     """
-    Q-axis current I_q,tmp that drives the q-axis flux ``flux_q`` (docs theory/motor 'Inductances';
-    complex-safe).
+    Return the q-axis current I_q,tmp that drives the q-axis flux ``flux_q`` (complex-safe).
+
+    See docs theory/motor 'Inductances'.
 
     I_q,tmp = p (F_sigma,q + F_t1,q + F_j1,q)/(0.9 m K_aq K_dp1 W), K_aq = 0.36/K_f.
     """

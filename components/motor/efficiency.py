@@ -71,8 +71,9 @@ MOTOR_NAMES = tuple(name for name, *_ in MOTOR_INPUTS)
 
 def loss_model(v, par, with_partials=False):
     """
-    Currents, MTPA voltage, losses, powers and efficiency of docs theory/motor 'Losses and
-    efficiency' (complex-safe, pointwise).
+    Compute the currents, MTPA voltage, losses, powers and efficiency (complex-safe, pointwise).
+
+    The model is that of docs theory/motor 'Losses and efficiency'.
 
     Parameters
     ----------
@@ -210,8 +211,9 @@ def loss_model(v, par, with_partials=False):
 
 class MotorLossComp(om.ExplicitComponent):
     """
-    PMSM currents, terminal voltage, losses, input power and efficiency (docs theory/motor 'Losses
-    and efficiency', paper eq. 24).
+    PMSM currents, terminal voltage, losses, input power and efficiency.
+
+    See docs theory/motor 'Losses and efficiency' and paper eq. 24.
 
     With the MTPA q-axis current I_q (MTPAComp), the electrical speed omega = rpm G 2 pi/60 p,
     the load torque T_L = Q_r/G (G the gear ratio) and, as coded, f = omega p/60:
@@ -362,8 +364,9 @@ class MotorLossComp(om.ExplicitComponent):
 
 class EMTorqueComp(PointwiseImplicitComp):
     """
-    Electromagnetic torque from the efficiency residual (implicit; paper eq. 24, docs theory/motor
-    'Losses and efficiency').
+    Electromagnetic torque from the efficiency residual (implicit).
+
+    See paper eq. 24 and docs theory/motor 'Losses and efficiency':
 
         R = eta(T_em) T_em - T_L = 0,  T_L = rotor_torque/gear_ratio,
 
@@ -530,8 +533,9 @@ class EMTorqueComp(PointwiseImplicitComp):
 
 class MotorMarginComp(om.ExplicitComponent):
     """
-    Torque margin and voltage-limit report of each operating point (docs theory/motor 'Torque
-    margin').
+    Torque margin and voltage-limit report of each operating point.
+
+    See docs theory/motor 'Torque margin'.
 
     - torque_margin = T_pk/T_em - 1 (paper: available/required - 1, constrained >= 0.10; the
       full problem aggregates T_em over a motor's conditions with KS before this ratio);

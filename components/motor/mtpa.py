@@ -11,7 +11,9 @@ from lpc_mdo.numerics import safeguarded_newton
 
 def mtpa_base(flux_linkage, inductance_d, inductance_q, pole_pairs):
     """
-    Return the base current and torque of the per-unit MTPA quartic (docs theory/motor 'MTPA'; complex-safe).
+    Return the base current and torque of the per-unit MTPA quartic (complex-safe).
+
+    See docs theory/motor 'MTPA'.
 
     I_base = -Psi_F/(L_d - L_q), T_base = 1.5 p Psi_F I_base.
     """
@@ -53,8 +55,9 @@ def mtpa_current_pu(torque_pu, owner="MTPA"):
 
 class MTPAComp(om.ImplicitComponent):
     """
-    Q-axis current of maximum-torque-per-ampere control (implicit; paper eq. 26, docs theory/motor
-    'MTPA').
+    Q-axis current of maximum-torque-per-ampere control (implicit).
+
+    See paper eq. 26 and docs theory/motor 'MTPA'.
 
     With I_base = -Psi_F/(L_d - L_q) and T_base = 1.5 p Psi_F I_base, the per-unit q-axis current
     I_q* = I_q/I_base at the per-unit EM torque T* = T_em/T_base solves

@@ -77,8 +77,9 @@ MECHANICAL_LOSS = 100.0  # P_m, W
 
 def field_strength_from_flux_density(b):
     """
-    Iron B-H fit H(B) = (a exp(b B + c) + 200) B**1.4, (a, b, c) = (1.12832651, 1, 1) (docs
-    theory/motor 'Magnet circuit').
+    Evaluate the iron B-H fit H(B) = (a exp(b B + c) + 200) B**1.4.
+
+    (a, b, c) = (1.12832651, 1, 1); see docs theory/motor 'Magnet circuit'.
 
     Complex-step safe. ``b`` in T, returns A/m.
     """
@@ -87,8 +88,9 @@ def field_strength_from_flux_density(b):
 
 def bridge_flux_density(h):
     """
-    Magnet-bridge fit B(H) = a_H tanh(H/300 - 0.25) + 0.4, a_H = 1.92052530e-3 (docs theory/motor
-    'Magnet circuit').
+    Evaluate the magnet-bridge fit B(H) = a_H tanh(H/300 - 0.25) + 0.4.
+
+    a_H = 1.92052530e-3; see docs theory/motor 'Magnet circuit'.
 
     Complex-step safe. ``h`` in A/m, returns T.
     """

@@ -11,8 +11,9 @@ _MAX_DOUBLINGS = 200
 
 def _quartic(v, par):
     """
-    Monic voltage-limit torque quartic in x = T/T_s, T_s = 1.5 p Psi_F I_w (docs theory/motor
-    'Voltage-limited torque').
+    Return the monic voltage-limit torque quartic in x = T/T_s, T_s = 1.5 p Psi_F I_w.
+
+    See docs theory/motor 'Voltage-limited torque'.
 
     Returns (torque_scale, b, c, d, e) with P(x) = x**4 + b x**3 + c x**2 + d x + e, i.e. the
     reference quartic A T**4 + B T**3 + C T**2 + D T + E divided by A T_s**4 (A > 0 always).
@@ -60,8 +61,9 @@ def _quartic(v, par):
 
 class TorqueLimitComp(PointwiseImplicitComp):
     """
-    Voltage-limited EM torque T_lim at each operating speed (implicit, docs theory/motor
-    'Voltage-limited torque').
+    Voltage-limited EM torque T_lim at each operating speed (implicit).
+
+    See docs theory/motor 'Voltage-limited torque'.
 
     The largest torque reachable on the voltage ellipse abs(U) = V_lim (no current limit) is where
     the quartic in I_q of the voltage constraint has a double root; its discriminant (divided by

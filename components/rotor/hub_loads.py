@@ -118,8 +118,9 @@ def _frames(comp):
 
 class RotorVelocityComp(om.ExplicitComponent):
     """
-    Freestream velocity of each rotor resolved in its disk frame (docs theory/rotors 'Stations and
-    disk frame').
+    Freestream velocity of each rotor resolved in its disk frame.
+
+    See docs theory/rotors 'Stations and disk frame'.
 
     V_x = V . n (axial, positive through the disk as for a propeller moving forward, i.e. in
     climb for a lift rotor), and the in-plane components (V . e_x, V . e_y). V is the vehicle's

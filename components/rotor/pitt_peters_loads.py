@@ -192,9 +192,10 @@ def add_pitt_peters_inputs(comp, nr, nn, nrad):
 
 def check_pitt_peters_inputs(comp, inputs, hub_loss):
     """
-    Check the physical range of the inputs (real parts) with the BEM section check
-    (:func:`~lpc_mdo.components.rotor.bem_inflow.check_section_inputs`): om.AnalysisError
-    names the input, the first offending entry and the allowed range.
+    Check the physical range of the inputs (real parts) with the BEM section check.
+
+    The check is :func:`~lpc_mdo.components.rotor.bem_inflow.check_section_inputs`:
+    om.AnalysisError names the input, the first offending entry and the allowed range.
     """
     check_section_inputs(
         comp,
@@ -553,8 +554,10 @@ class PittPetersBladeElements:
         return dute
 
     def _loss(self, phi, r, big_r, rh, partials):
-        """Prandtl factor F = F_tip F_hub (docs theory/rotors 'BEM inflow residual', classical) and
-        its partials.
+        """
+        Return the Prandtl factor F = F_tip F_hub and its partials.
+
+        Classical; see docs theory/rotors 'BEM inflow residual'.
         """
         ones = np.ones(np.broadcast_shapes(phi.shape, r.shape), dtype=phi.dtype)
         zero = np.zeros(ones.shape)

@@ -175,8 +175,9 @@ def local_stiffness(
     length, area, inertia_vertical, inertia_inplane, torsion_constant, youngs_modulus, shear_modulus
 ):
     """
-    Return the local 12 x 12 element stiffness matrices (num_elements, 12, 12), docs
-    theory/structures 'Frame element'.
+    Return the local 12 x 12 element stiffness matrices (num_elements, 12, 12).
+
+    See docs theory/structures 'Frame element'.
 
     The matrix is linear in each of E A, G J, E I_y and E I_z, so passing unit values of one
     property (and zeros for the others) gives its derivative.
@@ -979,8 +980,9 @@ class BeamForcesComp(_FrameMixin, om.ExplicitComponent):
 
 class BeamMassComp(_FrameMixin, om.ExplicitComponent):
     """
-    Element masses, total mass and centre of gravity of the frame (docs theory/structures 'Box
-    section').
+    Element masses, total mass and centre of gravity of the frame.
+
+    See docs theory/structures 'Box section'.
 
     m_e = ρ A_e L_e; mass = Σ m_e; cg = Σ m_e (x_a + x_b)/2 / mass. Analytic partials.
 

@@ -10,8 +10,9 @@ TORSION_FORMULAS = ("polar", "bredt")
 
 class BoxSectionComp(om.ExplicitComponent):
     """
-    Section properties of a rectangular box beam, per element (docs theory/structures 'Box
-    section').
+    Section properties of a rectangular box beam, per element.
+
+    See docs theory/structures 'Box section'.
 
     The box has outer width w (spar to spar) and height h, skins t_top, t_bot and two webs
     (spars) t_front, t_rear. As in the reference model the beam uses one web thickness, the mean

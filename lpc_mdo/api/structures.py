@@ -188,8 +188,9 @@ def box_beam(
     """
     Solve a box beam of consecutive nodes from box dimensions and wall thicknesses.
 
-    The same model as BoxBeamGroup: box section (docs theory/structures 'Box section'), frame FEM, stresses at
-    five points per element (docs theory/structures 'Stress') and skin-panel buckling (paper eq. 18).
+    The same model as BoxBeamGroup: box section (docs theory/structures 'Box section'), frame
+    FEM, stresses at five points per element (docs theory/structures 'Stress') and skin-panel
+    buckling (paper eq. 18).
 
     Parameters
     ----------

@@ -102,9 +102,11 @@ __all__ = [
 
 class FailedCaseFlags:
     """
-    Driver mixin: a model evaluation that raised ``om.AnalysisError`` is recorded as a driver
-    case with ``success = 0`` and the error as ``msg`` (OpenMDAO records every evaluation with
-    ``success = 1``), so post-processing can leave its stale outputs out (``case.success``).
+    Driver mixin that records a model evaluation that raised ``om.AnalysisError`` as failed.
+
+    Such an evaluation is recorded as a driver case with ``success = 0`` and the error as
+    ``msg`` (OpenMDAO records every evaluation with ``success = 1``), so post-processing can
+    leave its stale outputs out (``case.success``).
 
     The error is the exception being handled when the case is recorded, or ``_failure`` when a
     driver caught it itself before leaving the recording block.

@@ -10,8 +10,7 @@ __all__ = ["SlsqpDriver"]
 
 class SlsqpDriver(omi.ScipyHooks):
     """
-    OpenMDAO's ``ScipyOptimizeDriver`` with SLSQP that backs off from points where the model
-    fails.
+    OpenMDAO's ``ScipyOptimizeDriver`` with SLSQP that backs off from points where the model fails.
 
     SciPy's SLSQP has no notion of a failed evaluation, and ``ScipyOptimizeDriver`` re-raises
     the first exception of the model, ending the run: an ``om.AnalysisError`` at one line-search

@@ -137,9 +137,11 @@ LPC_THICKNESS_DISTRIBUTIONS = (
 
 
 def lpc_distributions(vehicle):
-    """The wing-box thicknesses and, per structural condition of the vehicle, the beam stress
-    (BeamGroup ``von_mises_stress``, (num_elements, 5) recovery points; limit: the material's
-    allowable).
+    """
+    Return the wing-box thicknesses and the beam stress per structural condition of the vehicle.
+
+    The stress is BeamGroup ``von_mises_stress``, (num_elements, 5) recovery points; limit: the
+    material's allowable.
     """
     allowable = vehicle.material.allowable_stress / 1e6
     return LPC_THICKNESS_DISTRIBUTIONS + tuple(
@@ -190,10 +192,10 @@ class ReportSpec:
     What :func:`write_report` writes and the variable names of its LPC-specific parts.
 
     The defaults are the lift-plus-cruise names as far as they are settled (VehicleGroup design
-    variables, WeightsGroup, RotorLayoutComp, VLM ``{surface}_mesh``, ``electrical_power`` of
-    the power sum, condition groups of docs theory/dynamics 'Design conditions'); override any field when the
-    assembled model promotes differently. :meth:`generic` switches every LPC part off. Names
-    may be anything :func:`~lpc_mdo.post.tables.read_value` accepts.
+    variables, WeightsGroup, RotorLayoutComp, VLM ``{surface}_mesh``, ``electrical_power`` of the
+    power sum, condition groups of docs theory/dynamics 'Design conditions'); override any field
+    when the assembled model promotes differently. :meth:`generic` switches every LPC part off.
+    Names may be anything :func:`~lpc_mdo.post.tables.read_value` accepts.
 
     Attributes
     ----------
@@ -276,7 +278,7 @@ class ReportSpec:
 
     @classmethod
     def generic(cls, **overrides):
-        """A spec with every LPC-specific part off (only the generic tables and figures)."""
+        """Return a spec with every LPC-specific part off (only the generic tables and figures)."""
         off = dict(
             design_quantities=(),
             meshes=(),
@@ -461,7 +463,11 @@ def _recorded(cr, names, any_of=False):
 
 
 def _runs_with(index, runs, names, any_of=False):
-    """The runs that record ``names`` (all of them, or any with ``any_of``); notes the others."""
+    """
+    Return the runs that record ``names`` and note the others.
+
+    A run must record all of them, or any with ``any_of``.
+    """
     names = list(names)
     kept = [(label, cr) for label, cr in runs if _recorded(cr, names, any_of)]
     if not kept:

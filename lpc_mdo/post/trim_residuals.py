@@ -47,7 +47,7 @@ def _declared_indices(metadata, name):
 
 
 def _problem_case(source, case):
-    """The given case, else the last problem case (``'final'``), which holds every output."""
+    """Return the given case, else the last problem case (``'final'``), which holds every output."""
     found = final_case(source, case) if case is not None else last_case(source, "problem")
     if found is None:
         raise MissingVariableError(

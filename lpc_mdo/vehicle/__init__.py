@@ -33,17 +33,16 @@ follow.
 
 Design variables
 ----------------
-``Vehicle.design_variables`` maps the design-variable names to :class:`DesignVariable`, in the
-order of the vehicle file's ``[design_variables]`` tables. The vehicle-level ones are fixed by the
+``Vehicle.design_variables`` maps the design-variable names to :class:`DesignVariable`, in the order
+of the vehicle file's ``[design_variables]`` tables. The vehicle-level ones are fixed by the
 vehicle; each condition adds those its kind declares (rotor speeds, pitch, elevator), named
 ``{design_variable_prefix}_{variable}`` and stacked as rows where conditions share a prefix
 (:class:`lpc_mdo.groups.condition_base.ConditionLayout`). The reference vehicle has the 31 below:
-the paper's 161 (Table 6) and the 10 roll and yaw speed differentials of the transition lift rotors, which the
-paper does not have. Without them no trim variable acts on roll in transition, where the pusher's
-torque reaction rolls the vehicle (1.1-1.4e3 N m at our optimum, 3-4 % of the weight as a
-moment in N m; the paper's trim residuals of at most 25 N m, Table 7, imply that its model
-leaves that torque out). Rows of the per-group DVs: lift pairs 0..3, then the
-pusher.
+the paper's 161 (Table 6) and the 10 roll and yaw speed differentials of the transition lift rotors,
+which the paper does not have. Without them no trim variable acts on roll in transition, where the
+pusher's torque reaction rolls the vehicle (1.1-1.4e3 N m at our optimum, 3-4 % of the weight as a
+moment in N m; the paper's trim residuals of at most 25 N m, Table 7, imply that its model leaves
+that torque out). Rows of the per-group DVs: lift pairs 0..3, then the pusher.
 
 =======================  =======  ================================================================
 name                     shape    meaning
@@ -198,7 +197,7 @@ def load_vehicle(path: str | os.PathLike | None = None) -> Vehicle:
 
 @functools.cache
 def reference_vehicle() -> Vehicle:
-    """The packaged reference vehicle, loaded once (it is immutable)."""
+    """Return the packaged reference vehicle, loaded once (it is immutable)."""
     return load_vehicle()
 
 

@@ -47,7 +47,8 @@ class _DVSpec:
 
 
 def _design_variable_specs(parts: dict) -> dict[str, _DVSpec]:
-    """The design variables (paper Table 6), sized from the built vehicle parts.
+    """
+    Return the design variables (paper Table 6), sized from the built vehicle parts.
 
     The vehicle-level ones (planform, rotors, battery, motors, wing box), then those the
     conditions own (:class:`lpc_mdo.groups.condition_base.ConditionLayout`).
@@ -132,7 +133,7 @@ def _design_variable_specs(parts: dict) -> dict[str, _DVSpec]:
 
 
 def _dv_values(value, shape: tuple[int, ...], path: str) -> tuple[float, ...]:
-    """A number (the same for every entry) or a nested list of ``shape`` -> flat floats."""
+    """Convert a number (the same for every entry) or a nested list of ``shape`` to flat floats."""
     if _is_number(value):
         return (_number(value, _Spec(), path),) * math.prod(shape)
     if isinstance(value, list):

@@ -41,7 +41,8 @@ class Airfoil:
     description: str
 
 
-#: Airfoils a vehicle file may name (docs theory/aerodynamics 'Reference-vehicle defaults', docs theory/weights 'M4 regressions', docs theory/structures 'Frame element').
+#: Airfoils a vehicle file may name (docs theory/aerodynamics 'Reference-vehicle defaults', docs
+#: theory/weights 'M4 regressions', docs theory/structures 'Frame element').
 AIRFOILS: dict[str, Airfoil] = {
     a.name: a
     for a in (
@@ -235,7 +236,10 @@ class Booms:
 
 @dataclass(frozen=True)
 class WingBox:
-    """Wing-box layout of the beam model (docs theory/structures 'Material, mesh and load transfer').
+    """
+    Wing-box layout of the beam model.
+
+    See docs theory/structures 'Material, mesh and load transfer'.
 
     Attributes
     ----------

@@ -79,7 +79,7 @@ def _is_number(value) -> bool:
 
 
 def _bounds(spec: _Spec) -> dict:
-    """The range of a spec as :func:`lpc_mdo.checks.check_range` keywords."""
+    """Return the range of a spec as :func:`lpc_mdo.checks.check_range` keywords."""
     return dict(
         lower=spec.gt if spec.gt is not None else spec.ge,
         lower_open=spec.gt is not None,
@@ -206,7 +206,7 @@ def _string(value, spec: _Spec, path: str) -> str:
 
 
 def _array(value, shape: tuple[int, ...], spec: _Spec, path: str) -> tuple:
-    """A nested list of numbers with ``shape`` -> nested tuples of converted floats."""
+    """Convert a nested list of numbers with ``shape`` to nested tuples of converted floats."""
     if not shape:
         return _number(value, spec, path)
     n = shape[0]
