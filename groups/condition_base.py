@@ -413,7 +413,11 @@ class ConditionGroup(om.Group):
 
         ``lift``: indices into ``vehicle.lift_rotors`` of the running lift rotors (output
         ``lift_motor_torque_margin``, one entry per running rotor); ``pusher``: ``(0,)``
-        (``pusher_motor_torque_margin``).
+        (``pusher_motor_torque_margin``). These are also the condition's motor operating
+        points, under the same names in every kind: shaft torque ``{prefix}_torque`` and rotor
+        speed (``lift_rotor_rpm``, ``pusher_rpm``), one row per motor of the set, so that a
+        discipline batched over all conditions (one motor model for every condition's motors)
+        can gather them by these declarations and hand its results back.
         """
         return {}
 

@@ -1,6 +1,6 @@
 """Gill-Lee broadband and Barry-Magliozzi thickness noise against the reference page cases.
 
-Case (docs theory/acoustics , "LPC hover, single lift rotor", a transcription of the public code):
+Case (docs theory/acoustics, "LPC hover, single lift rotor", a transcription of the public code):
 R = 1.524 m, B = 2, 1200 rpm, rho = 1.213457 kg/m**3, a = 339.885 m/s,
 C_T = T/(rho pi R**2 (Omega R)**2) = 0.014977; chord linear 0.3 -> 0.1 m at 25 stations
 rbar = linspace(0.2 R + 0.01, R - 0.01, 25)/R (docs theory/acoustics 'Tonal loading noise',

@@ -27,7 +27,7 @@ from lpc_mdo.components.rotor.pitt_peters_loads import PittPetersLoadsComp
 # docs theory/aerodynamics 'Linear-quadratic polar' example polar
 # (the docs theory/rotors 'Validation' polar)
 POLAR = LinearQuadraticPolar()
-# density of the docs theory/rotors 'Validation' / docs theory/rotors 'Validation' runs
+# density of the docs theory/rotors 'Validation' runs
 RHO_REF = 1.22518316
 BLADES = 2
 
