@@ -19,7 +19,7 @@ from lpc_mdo.components.design_deviation import DesignDeviationComp
 from lpc_mdo.groups.condition_base import condition_layout
 from lpc_mdo.groups.condition_kinds import condition_class
 from lpc_mdo.groups.lpc import LPCGroup, included_conditions, openmdao_units
-from lpc_mdo.vehicle import load_vehicle
+from lpc_mdo.vehicle import load_vehicle, reference_vehicle
 
 #: Constraint kinds a problem may declare.
 CONSTRAINT_KINDS = (
@@ -203,7 +203,7 @@ def declare_problem(
         (output, ref): ref None = the vehicle's target gross mass; ``("baseline", None)`` =
         the baseline design's penalised gross mass (eq. 8-9; needs a :class:`BaselineModel`).
     """
-    vehicle = vehicle or model.options["vehicle"] or load_vehicle()
+    vehicle = vehicle or model.options["vehicle"] or reference_vehicle()
     where = type(model).__name__
     conditions = included_conditions(vehicle, model.options["conditions"], where=where)
     layout = condition_layout(vehicle)
