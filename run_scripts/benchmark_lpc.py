@@ -26,6 +26,7 @@ os.environ.setdefault("OPENMDAO_REPORTS", "0")
 import openmdao.api as om  # noqa: E402
 
 from lpc_mdo.groups.lpc import LPCGroup  # noqa: E402
+from lpc_mdo.problems import declare_problem  # noqa: E402
 
 PAPER_FORWARD_S = 7.06
 PAPER_DERIVATIVE_S = 24.84
@@ -35,6 +36,7 @@ def build():
     """Return the set-up full LPC model with a driver, so that totals use the driver scaling."""
     prob = om.Problem(reports=False)
     prob.model = LPCGroup()
+    declare_problem(prob.model)  # paper Table 6: 171 design variables, 96 + 40 constraints
     prob.driver = om.ScipyOptimizeDriver()  # only so compute_totals uses the driver's scaling
     prob.setup(mode="rev")
     prob.final_setup()

@@ -25,6 +25,7 @@ import numpy as np  # noqa: E402
 import openmdao.api as om  # noqa: E402
 
 from lpc_mdo.groups.lpc import LPCGroup  # noqa: E402
+from lpc_mdo.problems import declare_problem  # noqa: E402
 
 
 def jacobian(prob, method=None, step=None):
@@ -57,6 +58,7 @@ def main(argv=None):
 
     prob = om.Problem(reports=False)
     prob.model = LPCGroup()
+    declare_problem(prob.model)  # paper Table 6: 171 design variables, 96 + 40 constraints
     prob.setup(mode="rev", force_alloc_complex=True)
     prob.run_model()
     adjoint = jacobian(prob)
