@@ -164,7 +164,10 @@ def _add_motors(group, vehicle, prefix, num_motors, rpm):
     """Motors of the ``prefix`` rotors (torque floored at idle), promoted as ``{prefix}_motor_*``.
 
     Inputs ``{prefix}_torque`` (rotor shaft torque), ``rpm`` (each rotor's speed),
-    ``{prefix}_motor_length``.
+    ``{prefix}_motor_length``; outputs ``{prefix}_motor_input_power``, ``_em_torque``,
+    ``_torque_margin``, ``_peak_torque`` and ``_voltage_margin`` (1 - abs(U)/V_lim: below 0
+    the MTPA operating point needs more than the voltage limit, i.e. flux weakening, which the
+    motor model does not have; the problem kind ``voltage_margin`` constrains it).
     """
     group.add_subsystem(
         f"{prefix}_shaft",
@@ -183,7 +186,13 @@ def _add_motors(group, vehicle, prefix, num_motors, rpm):
         promotes_inputs=[("length", f"{prefix}_motor_length"), ("rotor_rpm", rpm)],
         promotes_outputs=[
             (name, f"{prefix}_motor_{name}")
-            for name in ("input_power", "em_torque", "torque_margin", "peak_torque")
+            for name in (
+                "input_power",
+                "em_torque",
+                "torque_margin",
+                "peak_torque",
+                "voltage_margin",
+            )
         ],
     )
     group.connect(f"{prefix}_shaft.motor_load_torque", f"{prefix}_motors.rotor_torque")

@@ -35,6 +35,12 @@ CONSTRAINT_KINDS = (
 )
 #: Finer kinds a subproblem may name instead of 'torque_margin' (which means both).
 TORQUE_MARGIN_KINDS = ("lift_torque_margin", "pusher_torque_margin")
+#: Kinds beyond paper Table 6, declared only when a problem names them: ``voltage_margin``, every
+#: motor's MTPA operating point within the motor voltage limit (``motor.voltage_limit``; 1 -
+#: abs(U)/V_lim >= 0). The paper does not constrain it and the motor model has no flux
+#: weakening, so a negative margin means the torque is computed at a voltage the drive does not
+#: have (the reference vehicle's pusher at its initial speeds: about -4.9 in transition).
+OPTIONAL_CONSTRAINT_KINDS = ("voltage_margin",)
 # Paper eq. 8-9: the set S of design variables the initial specification gives (beta = 1) -
 # every sizing variable; the operating variables (rotor speeds, pitch, elevator) are free - and
 # the penalty weight alpha.
@@ -190,7 +196,8 @@ def declare_problem(
         0.06 % of the weight at the optimum): 86 constraints.
     constraint_kinds : sequence of str
         Constraint kinds to declare, from :data:`CONSTRAINT_KINDS` (or
-        :data:`TORQUE_MARGIN_KINDS` for one motor kind).
+        :data:`TORQUE_MARGIN_KINDS` for one motor kind), plus any of
+        :data:`OPTIONAL_CONSTRAINT_KINDS`.
     design_variables : sequence or None
         Vehicle-level design variables to declare: names, or (name, flat indices) pairs (None:
         all of them). The design variables of the included conditions are always declared.
@@ -216,11 +223,12 @@ def declare_problem(
             if name not in dvs:
                 raise ValueError(f"{where}: option '{label}' names {name!r}; allowed: {list(dvs)}")
     wanted = set(constraint_kinds)
-    unknown = sorted(wanted - set(CONSTRAINT_KINDS) - set(TORQUE_MARGIN_KINDS))
+    allowed_kinds = CONSTRAINT_KINDS + TORQUE_MARGIN_KINDS + OPTIONAL_CONSTRAINT_KINDS
+    unknown = sorted(wanted - set(allowed_kinds))
     if unknown:
         raise ValueError(
             f"{where}: option 'constraint_kinds' has unknown kinds {unknown}; "
-            f"allowed: {CONSTRAINT_KINDS + TORQUE_MARGIN_KINDS}"
+            f"allowed: {allowed_kinds}"
         )
     if "static_margin" in wanted and not static_margin:
         wanted.discard("static_margin")
@@ -299,6 +307,10 @@ def declare_problem(
     motor_sets = set()
     for c in conditions:
         motor_sets.update(condition_class(c.kind).motor_sets(vehicle, c))
+    if "voltage_margin" in wanted:
+        for c in conditions:
+            for prefix in condition_class(c.kind).motor_sets(vehicle, c):
+                model.add_constraint(f"{c.name}.{prefix}_motor_voltage_margin", lower=0.0)
     for prefix in sorted(motor_sets):
         if "torque_margin" in wanted or f"{prefix}_torque_margin" in wanted:
             model.add_constraint(

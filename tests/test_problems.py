@@ -1,5 +1,6 @@
 """Problem builders: the paper's warm-start subproblems (Table 2) and the full problem."""
 
+import numpy as np
 import pytest
 
 from lpc_mdo.problems import PROBLEM_NAMES, build_problem
@@ -100,3 +101,36 @@ def test_subproblem_1_keeps_the_battery_in_its_trust_region():
     assert (dv["lower"], dv["upper"]) == pytest.approx((640.0, 960.0))
     with pytest.raises(ValueError, match="design_variable_bounds' names 'wing'"):
         build_problem("subproblem_4", vehicle=vehicle, design_variable_bounds={"wing": (0, 1)})
+
+
+def test_motor_voltage_limit_reaches_a_reported_margin_and_an_optional_constraint():
+    """The vehicle's motor voltage limit sets each motor's voltage margin 1 - abs(U)/V_lim.
+
+    Halving the limit turns a margin m into 1 - 2 (1 - m) (closed form, same operating point);
+    the optional constraint kind ``voltage_margin`` declares one row per motor and condition.
+    """
+    import dataclasses
+
+    import openmdao.api as om
+
+    from lpc_mdo.groups.lpc import LPCGroup
+    from lpc_mdo.problems import declare_problem
+    from lpc_mdo.vehicle import reference_vehicle
+
+    def margins(vehicle):
+        prob = om.Problem(LPCGroup(vehicle=vehicle, conditions=["hover", "cruise"]), reports=False)
+        declare_problem(prob.model, vehicle, constraint_kinds=["voltage_margin"])
+        prob.setup()
+        prob.run_model()
+        cons = prob.model.get_constraints()
+        return prob.get_val("hover.lift_motor_voltage_margin").ravel(), cons
+
+    base = reference_vehicle()
+    half = dataclasses.replace(
+        base, motor=dataclasses.replace(base.motor, voltage_limit=base.motor.voltage_limit / 2)
+    )
+    m_base, cons = margins(base)
+    m_half, _ = margins(half)
+    assert set(cons) == {"hover.lift_motor_voltage_margin", "cruise.pusher_motor_voltage_margin"}
+    assert sum(meta["size"] for meta in cons.values()) == 8 + 1
+    np.testing.assert_allclose(m_half, 1.0 - 2.0 * (1.0 - m_base), rtol=1e-10)
