@@ -300,10 +300,11 @@ def vlm(
     Examples
     --------
     >>> import lpc_mdo.api as lpc
-    >>> wing = {"span": 10.0, "root_chord": 1.0, "num_spanwise": 20, "num_chordwise": 2}
+    >>> wing = {"span": 10.0, "root_chord": 1.0, "num_spanwise": 10, "num_chordwise": 2,
+    ...         "spacing": "uniform"}
     >>> out = lpc.vlm(wing, alpha_deg=5.0, velocity=60.0)
-    >>> round(out["CL"], 3)
-    0.432
+    >>> print(f"{out['CL']:.5f} {out['CDi']:.6f}")
+    0.44264 0.005877
     """
     if isinstance(surfaces, dict):
         surfaces = [surfaces]
