@@ -5,6 +5,8 @@ plain functions live in this package, one module per discipline:
 
 acoustics
     :func:`~lpc_mdo.api.acoustics.rotor_noise`.
+airfoil
+    :func:`~lpc_mdo.api.airfoil.airfoil_polar`.
 motor
     :func:`~lpc_mdo.api.motor.motor_analysis` (``lpc.motor``).
 rotor
@@ -12,15 +14,19 @@ rotor
     :func:`~lpc_mdo.api.rotor.blade_stations`.
 structures
     :func:`~lpc_mdo.api.structures.beam`, :func:`~lpc_mdo.api.structures.box_beam`.
+vlm
+    :func:`~lpc_mdo.api.vlm.vlm`.
 weights
     :func:`~lpc_mdo.api.weights.mass_breakdown`,
     :func:`~lpc_mdo.api.weights.format_mass_breakdown`.
 """
 
 from lpc_mdo.api.acoustics import rotor_noise
+from lpc_mdo.api.airfoil import airfoil_polar
 from lpc_mdo.api.motor import motor_analysis as motor
 from lpc_mdo.api.rotor import bem, blade_stations, pitt_peters
 from lpc_mdo.api.structures import beam, box_beam
+from lpc_mdo.api.vlm import vlm
 from lpc_mdo.api.weights import format_mass_breakdown, mass_breakdown
 from lpc_mdo.components.acoustics.a_weighting import a_weighting
 from lpc_mdo.drivers import IpoptDriver, IpoptMultipliers, SlsqpDriver, make_driver
@@ -56,5 +62,7 @@ __all__ = [
     "reference_vehicle",
     "RotorNoiseGroup",
     "a_weighting",
+    "airfoil_polar",
     "rotor_noise",
+    "vlm",
 ]
