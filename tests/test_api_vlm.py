@@ -1,9 +1,6 @@
 """lpc_mdo.api.vlm against published and closed-form numbers, and its argument checks."""
 
-import contextlib
-import io
 import math
-import re
 
 import numpy as np
 import openmdao.api as om
@@ -251,81 +248,3 @@ def test_bad_argument_is_a_named_error(kwargs, match):
     args.update(kwargs)
     with pytest.raises(ValueError, match=match):
         lpc.vlm(**args)
-
-
-# The README section "Quick numbers without a model" text this slice proposes (the coordinator
-# pastes it into README.md): the same characters as /tmp/r3-api_readme.md below its "---8<---"
-# line. test_readme_examples runs its python blocks and checks each "# -> " line against what
-# the block prints.
-README_SECTION = """\
-Vortex-lattice aerodynamics of lifting surfaces given as planform dicts (`span`, `root_chord`,
-`tip_chord`, `sweep_le_deg`, `dihedral_deg`, `twist_root_deg`, `twist_tip_deg`, `root_le`,
-`num_spanwise`, `num_chordwise`, `spacing`, optional `airfoil` and cranked-planform `sections`;
-body axes, x forward and z down). All surfaces are one lattice, so a tail sees the wing's
-downwash; CM is about `reference_point`, positive nose up, with the first surface's mean
-aerodynamic chord; drag is induced drag only:
-
-```python
-import lpc_mdo.api as lpc
-
-# rectangular flat plate, AR 10 (the public LPC code's VLM check case); CM about c/4
-wing = dict(span=10.0, root_chord=1.0, num_spanwise=10, num_chordwise=2, spacing="uniform")
-aero = lpc.vlm(wing, alpha_deg=5.0, velocity=60.0, reference_point=(-0.25, 0.0, 0.0))
-print(f"CL {aero['CL']:.5f}  CDi {aero['CDi']:.6f}  CM {aero['CM']:.4f}")
-# -> CL 0.44264  CDi 0.005877  CM 0.0015
-
-# a cranked GA(W)-2 wing (break at 40 % half span) and a tail, at two angles of attack
-wing = dict(name="wing", span=14.0, root_chord=1.8, tip_chord=0.8, sweep_le_deg=3.0,
-            sections=[(0.4, 1.5, 0.1)], airfoil="ls413", num_spanwise=24)
-tail = dict(name="tail", span=4.0, root_chord=0.9, tip_chord=0.6, root_le=(-6.0, 0.0, -0.5),
-            num_spanwise=8)
-aero = lpc.vlm([wing, tail], alpha_deg=[0.0, 4.0], velocity=50.0, reference_point=(-0.6, 0, 0))
-print("CL", " ".join(f"{v:.3f}" for v in aero["CL"]))
-# -> CL 0.365 0.755
-print("CM", " ".join(f"{v:.3f}" for v in aero["CM"]))
-# -> CM 0.101 0.007
-print("tail lift (N)", " ".join(f"{v:.0f}" for v in aero["surfaces"]["tail"]["lift"]))
-# -> tail lift (N) -512 389
-```
-
-The airfoil polars the rotor and wing models use, with angles in degrees (cm from the table's
-angles only, NaN post stall; None for a user table without cm):
-
-```python
-import lpc_mdo.api as lpc
-
-polar = lpc.airfoil_polar("naca0012", alpha_deg=[0.0, 4.0, 8.0], reynolds=1e6)
-for key in ("cl", "cd", "cm"):
-    print(key, " ".join(f"{v:.4f}" for v in polar[key]))
-# -> cl 0.0000 0.4271 0.9109
-# -> cd 0.0054 0.0073 0.0121
-# -> cm 0.0000 0.0060 -0.0040
-```
-
-Rotor noise at several observers; without a torque only the thickness and broadband parts
-(which do not need the in-plane load) are computed, and the loading, tonal and total levels are
-not returned:
-
-```python
-import lpc_mdo.api as lpc
-
-noise = lpc.rotor_noise(radius=1.524, rpm=1200.0, thrust=4863.5, chord=0.2,
-                        parts=("thickness", "broadband"), observer_distance=[100.0, 200.0])
-print("broadband dBA", " ".join(f"{v:.1f}" for v in noise["broadband_oaspl_a"][:, 0]))
-# -> broadband dBA 81.1 63.4
-```
-"""
-
-
-def _python_blocks(markdown):
-    return re.findall(r"```python\n(.*?)```", markdown, flags=re.S)
-
-
-@pytest.mark.parametrize("index", range(3))
-def test_readme_examples(index):
-    block = _python_blocks(README_SECTION)[index]
-    printed = io.StringIO()
-    with contextlib.redirect_stdout(printed):
-        exec(compile(block, f"README block {index}", "exec"), {})  # noqa: S102
-    expected = [line[len("# -> ") :] for line in block.splitlines() if line.startswith("# -> ")]
-    assert expected and printed.getvalue().splitlines() == expected

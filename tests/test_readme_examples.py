@@ -2,7 +2,9 @@
 
 Each marked block runs in a fresh interpreter (so that an example that registers a condition kind
 cannot leak into other tests), in a temporary folder holding ``my_lpc.toml``, a copy of the
-reference vehicle file, which the examples load as "your own vehicle file".
+reference vehicle file, which the examples load as "your own vehicle file". A block whose comments
+say what it prints (``# -> <line>``) must print exactly those lines: the numbers the README
+shows are the numbers the code gives.
 """
 
 import re
@@ -42,3 +44,6 @@ def test_readme_example_runs(code, tmp_path):
         timeout=300,
     )
     assert result.returncode == 0, result.stderr[-3000:]
+    expected = [line[len("# -> ") :] for line in code.splitlines() if line.startswith("# -> ")]
+    if expected:
+        assert result.stdout.splitlines() == expected
