@@ -41,7 +41,7 @@ WARM_START_STAGE_SETTINGS = {
 # optimum: 76 dBA and torque margins -0.2 within 75 evaluations): the penalty pulls the rotor
 # blades back to the initial ones, which our noise model cannot accept. Raising alpha from the
 # optimum (the alpha -> 0 baseline) by decades kept every step feasible: 1 -> 10 -> 100 took
-# 103, 198 and 7 SLSQP iterations (167, 329, 10 s; measured 2026-11-22).
+# 103, 198 and 7 SLSQP model evaluations (167, 329, 10 s; measured 2026-11-22).
 BASELINE_CONTINUATION = (1.0, 10.0, 100.0)
 
 
@@ -200,8 +200,8 @@ def default_optimizer(name):
     IPOPT for the presizing and the subproblems, SQP for the full problem and the baseline (paper
     Sec. II.E: SNOPT; SciPy's SLSQP when pyoptsparse has no SNOPT). From the warm-started subproblem
     4 design, SLSQP reached a feasible full-problem design (every constraint within 1e-4 scaled) in
-    ~150 iterations where IPOPT (L-BFGS) was still 2.5 % heavier and infeasible after 245
-    (measured).
+    ~150 model evaluations where IPOPT (L-BFGS) was still 2.5 % heavier and infeasible after 245
+    iterations (measured; SLSQP's counts before 2026-12-02 were model evaluations).
     """
     from lpc_mdo.drivers import pyoptsparse_optimizers
 
