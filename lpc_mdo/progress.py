@@ -25,8 +25,10 @@ class ProgressLine(CaseRecorder):
     """
     Print ``label  iter  eval  objective  max violation  elapsed`` per model evaluation.
 
-    ``iter`` counts the optimizer's iterations (``-`` for a driver whose count is not known,
-    :func:`optimizer_iterations`), ``eval`` the model evaluations (driver cases).
+    ``iter`` is the optimizer iteration the evaluation belongs to: 0 for the start point, then
+    the iterations completed (:func:`optimizer_iterations`) plus one, the numbering of IPOPT's
+    own table (``-`` for a driver whose count is not known); ``eval`` counts the model
+    evaluations (driver cases), several per iteration when a line search cuts a step.
 
     Parameters
     ----------
@@ -59,7 +61,7 @@ class ProgressLine(CaseRecorder):
         if (self._iterations - 1) % self.every:
             return
         driver = recording_requester
-        counters = f"{self.label:>16}  iter {_format_count(optimizer_iterations(driver))}  " + (
+        counters = f"{self.label:>16}  iter {_format_count(self._iteration(driver))}  " + (
             f"eval {self._iterations:5d}"
         )
         if not metadata["success"]:  # an evaluation that raised AnalysisError
@@ -78,6 +80,13 @@ class ProgressLine(CaseRecorder):
             file=self.stream or sys.stdout,
             flush=True,
         )
+
+    def _iteration(self, driver):
+        """Optimizer iteration of the evaluation just recorded: 0 the start, then done + 1."""
+        done = optimizer_iterations(driver)
+        if done is None:
+            return None
+        return 0 if self._iterations == 1 else done + 1
 
     # A driver recorder receives only driver iterations; the other hooks have nothing to do.
     def record_iteration_system(self, recording_requester, data, metadata):
