@@ -96,7 +96,7 @@ def _optimize(args):
         static_margin=not args.no_static_margin,
         driver_settings=settings,
         trim_first=not args.no_trim,
-        progress=True,
+        progress=not args.quiet,
     )
     # Each stage prints a progress line per iteration (and IPOPT its own table unless
     # --quiet); Ctrl-C stops cleanly: the case file keeps every recorded iteration and a

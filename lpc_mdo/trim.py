@@ -22,6 +22,7 @@ import atexit
 import functools
 import shutil
 import tempfile
+import time
 from dataclasses import dataclass
 
 import numpy as np
@@ -111,7 +112,7 @@ def _scratch_dir():
 _INHERITED_OPTIONS = ("rotor_polar", "wing_zero_lift_angle", "ks_rho", "structural_coupling")
 
 
-def trim(prob, conditions=None, tol=1e-10, max_iter=30, separate=True):
+def trim(prob, conditions=None, tol=1e-10, max_iter=30, separate=True, report=None, label="trim"):
     """
     Trim conditions of a set-up LPC problem by their trim variables (module docstring).
 
@@ -132,6 +133,11 @@ def trim(prob, conditions=None, tol=1e-10, max_iter=30, separate=True):
         Solve each condition in its own single-condition problem (the same vehicle design,
         copied over), whose model runs cost a fraction of the whole model's; the trim
         variables found are copied back. False: solve in ``prob`` itself.
+    report : callable or None
+        Called with one line per condition when it is trimmed (:func:`lpc_mdo.progress.trim_line`:
+        the largest driver-scaled residual before and after, iterations, seconds); None: quiet.
+    label : str
+        Start of each reported line (the stage's name).
 
     Returns
     -------
@@ -154,6 +160,7 @@ def trim(prob, conditions=None, tol=1e-10, max_iter=30, separate=True):
     prob.run_model()
     residuals, iterations, messages, worst = {}, 0, [], 0.0
     for cond in conditions:
+        started = time.perf_counter()
         target = prob
         if separate:
             options = {k: prob.model.options[k] for k in _INHERITED_OPTIONS}
@@ -174,7 +181,7 @@ def trim(prob, conditions=None, tol=1e-10, max_iter=30, separate=True):
         if not cons:
             raise ValueError(f"trim: no trim constraints declared for conditions ['{cond}'].")
         variables = _trim_variables(target, vehicle, [cond])
-        sol, scaled = _solve_block(
+        sol, scaled, initial = _solve_block(
             target, target.model.get_design_vars(), cons, variables, tol, max_iter
         )
         if separate:
@@ -190,6 +197,12 @@ def trim(prob, conditions=None, tol=1e-10, max_iter=30, separate=True):
         worst = max(worst, block_max)
         if block_max >= 1e-6:
             messages.append(f"{cond}: max scaled residual {block_max:.3g} ({sol.message})")
+        if report is not None:
+            from lpc_mdo.progress import trim_line
+
+            before = float(np.max(np.abs(initial))) if initial.size else 0.0
+            seconds = time.perf_counter() - started
+            report(trim_line(label, cond, before, block_max, int(sol.njev or 0), seconds))
     if separate:
         prob.run_model()
     return TrimResult(
@@ -202,7 +215,11 @@ def trim(prob, conditions=None, tol=1e-10, max_iter=30, separate=True):
 
 
 def _solve_block(prob, dv_meta, cons, variables, tol, max_iter):
-    """Bounded least squares of one condition's trim residuals in its trim variables."""
+    """
+    Bounded least squares of one condition's trim residuals in its trim variables.
+
+    Returns the scipy result and the scaled residuals at the solution and at the start.
+    """
 
     def scaling(name):
         return (*driver_scaling(dv_meta[name]), dv_meta[name]["units"])
@@ -287,6 +304,7 @@ def _solve_block(prob, dv_meta, cons, variables, tol, max_iter):
         return np.vstack(rows)
 
     try:
+        initial = residual(x0)  # least_squares starts here: the model run is reused
         sol = least_squares(
             residual,
             x0,
@@ -300,4 +318,4 @@ def _solve_block(prob, dv_meta, cons, variables, tol, max_iter):
         )
     except om.AnalysisError as err:
         raise om.AnalysisError(f"trim: the model failed during the trim solve: {err}") from err
-    return sol, residual(sol.x)
+    return sol, residual(sol.x), initial

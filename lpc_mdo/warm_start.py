@@ -41,7 +41,7 @@ WARM_START_STAGE_SETTINGS = {
 # optimum: 76 dBA and torque margins -0.2 within 75 evaluations): the penalty pulls the rotor
 # blades back to the initial ones, which our noise model cannot accept. Raising alpha from the
 # optimum (the alpha -> 0 baseline) by decades kept every step feasible: 1 -> 10 -> 100 took
-# 103, 198 and 7 SLSQP iterations (167, 329, 10 s; measured 2026-11-22).
+# 103, 198 and 7 SLSQP model evaluations (167, 329, 10 s; measured 2026-11-22).
 BASELINE_CONTINUATION = (1.0, 10.0, 100.0)
 
 
@@ -138,7 +138,7 @@ def run_sequence(
     log : callable
         Progress messages.
     progress : bool
-        A progress line per driver iteration (:class:`lpc_mdo.progress.ProgressLine`).
+        Progress lines of the trim and the optimizer (see :func:`solve_stage`).
 
     Returns
     -------
@@ -174,6 +174,25 @@ def run_sequence(
     return results
 
 
+def _write_interrupted_stats(prob, case_file, start, when):
+    """Write the run statistics known at a Ctrl-C: the driver's counts so far, success False."""
+    from lpc_mdo.progress import optimizer_iterations
+
+    driver = prob.driver
+    known = {
+        key: getattr(driver.result, key, None)
+        for key in ("model_evals", "model_time", "deriv_evals", "deriv_time")
+    }
+    iterations = optimizer_iterations(driver)
+    known.update(
+        runtime=time.perf_counter() - start,
+        iter_count=driver.iter_count if iterations is None else iterations,
+        success=False,
+        exit_status=f"interrupted (Ctrl-C) {when}",
+    )
+    write_run_stats(known, run_stats_path(case_file), peak_memory_mb=process_peak_memory_mb())
+
+
 def default_optimizer(name):
     """
     Return the optimizer the paper uses for a problem.
@@ -181,8 +200,8 @@ def default_optimizer(name):
     IPOPT for the presizing and the subproblems, SQP for the full problem and the baseline (paper
     Sec. II.E: SNOPT; SciPy's SLSQP when pyoptsparse has no SNOPT). From the warm-started subproblem
     4 design, SLSQP reached a feasible full-problem design (every constraint within 1e-4 scaled) in
-    ~150 iterations where IPOPT (L-BFGS) was still 2.5 % heavier and infeasible after 245
-    (measured).
+    ~150 model evaluations where IPOPT (L-BFGS) was still 2.5 % heavier and infeasible after 245
+    iterations (measured; SLSQP's counts before 2026-12-02 were model evaluations).
     """
     from lpc_mdo.drivers import pyoptsparse_optimizers
 
@@ -301,7 +320,8 @@ def solve_stage(
         Trim the problem's conditions before optimizing (see :func:`run_sequence`).
     log : callable
     progress : bool
-        Print a progress line per driver iteration (:class:`lpc_mdo.progress.ProgressLine`).
+        Print a progress line per model evaluation (:class:`lpc_mdo.progress.ProgressLine`)
+        and, through ``log``, one per trimmed condition (:func:`lpc_mdo.progress.trim_line`).
     comm : MPI communicator or None
         The problem's communicator (MPI.COMM_SELF for one problem per rank).
     **model_options
@@ -312,6 +332,14 @@ def solve_stage(
     StageResult
         Also written: ``<case file stem>.run_stats.json`` (driver statistics and the process's
         peak memory so far, for the report's Table 9).
+
+    Raises
+    ------
+    KeyboardInterrupt
+        On Ctrl-C (also when IPOPT stopped on it), after writing the run statistics known so
+        far (``success`` false, ``exit_status`` says when) and, during the optimization, a
+        'final' case of the current point; :func:`lpc_mdo.progress.interrupt_message` says
+        what the case file holds.
     """
     if vehicle is None or isinstance(vehicle, (str, os.PathLike)):
         vehicle = load_vehicle(vehicle)
@@ -338,9 +366,14 @@ def solve_stage(
     if case is not None:
         load_design_variables(prob, case, vehicle)
     trim_seconds, trim_message = 0.0, ""
+    start = time.perf_counter()
     if trim_first:
-        start = time.perf_counter()
-        trimmed = trim(prob)
+        try:
+            trimmed = trim(prob, report=log if progress else None, label=name)
+        except KeyboardInterrupt:  # nothing recorded yet: no 'final' case of an untrimmed point
+            _write_interrupted_stats(prob, case_file, start, "during the trim")
+            prob.cleanup()
+            raise
         trim_seconds = time.perf_counter() - start
         trim_message = trimmed.message
         prob.record("trimmed")
@@ -348,8 +381,11 @@ def solve_stage(
     start = time.perf_counter()
     try:
         result = prob.run_driver()
+        if getattr(prob.driver, "user_stopped", False):  # IPOPT stopped cleanly on Ctrl-C
+            raise KeyboardInterrupt
     except KeyboardInterrupt:
         prob.record("final")
+        _write_interrupted_stats(prob, case_file, start, "during the optimization")
         prob.cleanup()
         raise
     seconds = time.perf_counter() - start

@@ -67,7 +67,7 @@ def test_optimize_subproblem_4_and_report(tmp_path, capsys):
     text = capsys.readouterr().out
     assert "subproblem_4: trim" in text and "subproblem_4: success=True" in text
     # The progress line of every iteration: label, iteration, objective, violation, time.
-    assert re.search(r"subproblem_4  iter +1  objective .* max violation .* s", text)
+    assert re.search(r"subproblem_4  iter +\d+  eval +1  objective .* max violation .* s", text)
     assert (out / "subproblem_4.run_stats.json").exists()
     case = om.CaseReader(str(out / "subproblem_4.sql")).get_case("final")
     assert case.get_val("cruise.static_margin")[0] >= 0.08 - 1e-6

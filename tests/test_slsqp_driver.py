@@ -91,7 +91,7 @@ def test_failed_evaluation_is_recorded_as_failed_case(tmp_path):
     assert failed[0].msg.endswith("no solution at x = 10")
     assert len(driver_cases(path)) == len(cases) - 1
     assert last_case(path).success
-    assert "iter     3  evaluation failed: 'bowl' <class Bowl>" in out.getvalue()
+    assert "eval     3  evaluation failed: 'bowl' <class Bowl>" in out.getvalue()
 
 
 def test_scipy_driver_without_back_off_ends_the_run():

@@ -179,3 +179,27 @@ class PointwiseImplicitComp(om.ImplicitComponent):
             self._shapes,
             partials,
         )
+        # dR/dstate is diagonal (pointwise): solve_linear divides by it.
+        self._state_jac_diag = np.array(partials[name, name]).reshape(self._shapes[name])
+
+    def solve_linear(self, d_outputs, d_residuals, mode):
+        """
+        Solve the linear system of the state: dR/dstate is diagonal, so divide by it.
+
+        The component thus solves its own linear system, and the motor group needs no
+        DirectSolver (a group with one is treated as atomic by OpenMDAO's relevance).
+
+        Parameters
+        ----------
+        d_outputs : Vector
+            Unscaled output derivatives (solution in fwd, right-hand side in rev).
+        d_residuals : Vector
+            Unscaled residual derivatives (right-hand side in fwd, solution in rev).
+        mode : str
+            'fwd' or 'rev'.
+        """
+        name = self._state_name
+        if mode == "fwd":
+            d_outputs[name] = d_residuals[name] / self._state_jac_diag
+        else:
+            d_residuals[name] = d_outputs[name] / self._state_jac_diag

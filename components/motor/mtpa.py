@@ -216,6 +216,24 @@ class MTPAComp(om.ImplicitComponent):
         if np.any(current.real <= 0.0):
             outputs["current_q"] = np.where(current.real > 0.0, current, 1.0)
 
+    def solve_linear(self, d_outputs, d_residuals, mode):
+        """
+        Solve the linear system of I_q: dR/dI_q is diagonal, so divide by it (no DirectSolver).
+
+        Parameters
+        ----------
+        d_outputs : Vector
+            Unscaled output derivatives (solution in fwd, right-hand side in rev).
+        d_residuals : Vector
+            Unscaled residual derivatives (right-hand side in fwd, solution in rev).
+        mode : str
+            'fwd' or 'rev'.
+        """
+        if mode == "fwd":
+            d_outputs["current_q"] = d_residuals["current_q"] / self._state_jac_diag
+        else:
+            d_residuals["current_q"] = d_outputs["current_q"] / self._state_jac_diag
+
     def linearize(self, inputs, outputs, partials):
         p = self.options["parameters"].pole_pairs
         psi, l_d, l_q = (
@@ -239,7 +257,8 @@ class MTPAComp(om.ImplicitComponent):
             "inductance_q": -1.5 * p * psi**2 / saliency**2,
             "inductance_d": 1.5 * p * psi**2 / saliency**2,
         }
-        partials["current_q", "current_q"] = (dr_dx / i_base).ravel()
+        self._state_jac_diag = dr_dx / i_base  # dR/dI_q: diagonal (pointwise)
+        partials["current_q", "current_q"] = self._state_jac_diag.ravel()
         partials["current_q", "em_torque"] = (dr_dt / t_base).ravel()
         for name in ("flux_linkage", "inductance_d", "inductance_q"):
             partials["current_q", name] = (

@@ -73,7 +73,7 @@ class IpoptDriver(omi.DriverHooks):
     tol : float
         IPOPT convergence tolerance (IPOPT option ``tol``), in the driver-scaled space.
     print_level : int
-        IPOPT console verbosity, 0 (silent) to 12.
+        IPOPT console verbosity, 0 (silent, also without IPOPT's banner) to 12.
     output_file : str or None
         IPOPT log file; a relative path is placed in the problem's outputs folder.
     warm_start : IpoptMultipliers or None
@@ -329,6 +329,8 @@ class IpoptDriver(omi.DriverHooks):
         settings["max_iter"] = self.options["max_iter"]
         settings["tol"] = self.options["tol"]
         settings["print_level"] = self.options["print_level"]
+        if self.options["print_level"] == 0:
+            settings["sb"] = "yes"  # no "This program contains Ipopt ..." banner either
         if self.options["output_file"]:
             settings["output_file"] = str(
                 problem.get_outputs_dir(mkdir=True) / self.options["output_file"]
@@ -365,6 +367,16 @@ class IpoptDriver(omi.DriverHooks):
             self._status_msg = self._status_msg.decode()
         self.fail = status not in _IPOPT_SUCCESS
         return self.fail
+
+    @property
+    def user_stopped(self):
+        """Whether the last run stopped on a Ctrl-C during a model evaluation."""
+        return self._user_stop
+
+    @property
+    def optimizer_iterations(self):
+        """IPOPT iterations completed so far (its intermediate callback's count)."""
+        return self._ipopt_iterations
 
     def update_result(self, result):
         """

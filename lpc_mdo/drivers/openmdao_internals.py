@@ -24,6 +24,12 @@ Hooks a ``Driver`` subclass has to override (OpenMDAO's own drivers do the same)
   with ``success = 0`` (OpenMDAO records every evaluation as a success).
 * ``ScipyOptimizeDriver._objfunc`` - SciPy's objective callback; routed to
   :meth:`ScipyHooks.objective_callback` so SLSQP can back off from a failed evaluation.
+* ``openmdao.drivers.scipy_optimizer.minimize`` - the ``scipy.optimize.minimize`` that
+  ``ScipyOptimizeDriver.run`` calls with ``callback=None``; :func:`scipy_iteration_callback`
+  replaces it for the duration of a run by one that passes a callback (SciPy calls it after
+  every major iteration: the driver's iteration count).
+* ``ScipyOptimizeDriver._update_result`` - routed to :meth:`ScipyHooks.update_result` after
+  OpenMDAO's own.
 
 Driver state read or written from outside OpenMDAO's own methods:
 
@@ -174,6 +180,20 @@ class ScipyHooks(FailedCaseFlags, om.ScipyOptimizeDriver):
     def _objfunc(self, x_new):
         return self.objective_callback(x_new)
 
+    def _update_result(self, result):
+        super()._update_result(result)
+        self.update_result(result)
+
+    def update_result(self, result):
+        """
+        Fill ``driver.result`` after a run (called after OpenMDAO's own).
+
+        Parameters
+        ----------
+        result : DriverResult
+            The result object of the driver.
+        """
+
     def declare_options(self):
         """Declare options on top of ``ScipyOptimizeDriver``'s (called by ``__init__``)."""
 
@@ -192,6 +212,34 @@ class ScipyHooks(FailedCaseFlags, om.ScipyOptimizeDriver):
             Objective value (driver-scaled).
         """
         return scipy_objective(self, x_new)
+
+
+@contextlib.contextmanager
+def scipy_iteration_callback(callback):
+    """
+    Make ``ScipyOptimizeDriver.run`` pass ``callback`` to ``scipy.optimize.minimize``.
+
+    SciPy calls it after every major iteration with the iterate (``intermediate_result``);
+    OpenMDAO's driver passes no callback of its own.
+
+    Parameters
+    ----------
+    callback : callable
+        ``callback(intermediate_result)``; returns nothing.
+    """
+    from openmdao.drivers import scipy_optimizer
+
+    original = scipy_optimizer.minimize
+
+    def minimize(*args, **kwargs):
+        kwargs["callback"] = callback
+        return original(*args, **kwargs)
+
+    scipy_optimizer.minimize = minimize
+    try:
+        yield
+    finally:
+        scipy_optimizer.minimize = original
 
 
 # ---------------------------------------------------------------------- driver set-up

@@ -34,6 +34,7 @@ class SlsqpDriver(omi.ScipyHooks):
         self.analysis_errors = []
         self._last_good = None  # (scaled objective, constraint values) of the last good point
         self._last_failed = False  # whether the model holds a failed trial point
+        self._iterations = 0  # SLSQP major iterations of the current run
 
     def declare_options(self):
         """Declare ``failure_penalty`` on top of ``ScipyOptimizeDriver``'s options."""
@@ -57,11 +58,34 @@ class SlsqpDriver(omi.ScipyHooks):
         self.analysis_errors = []
         self._last_good = None
         self._last_failed = False
-        fail = super().run()
+        self._iterations = 0
+        with omi.scipy_iteration_callback(self._iteration_done):
+            fail = super().run()
         if self._last_failed:  # the model holds a failed trial point: evaluate the result
             omi.scipy_objective(self, omi.scipy_result_x(self))
             omi.raise_pending_error(self)
         return fail
+
+    @property
+    def optimizer_iterations(self):
+        """SLSQP major iterations completed so far (SciPy's callback count; at the end ``nit``)."""
+        return self._iterations
+
+    def _iteration_done(self, intermediate_result):
+        self._iterations += 1
+
+    def update_result(self, result):
+        """
+        Record SLSQP's major iterations as ``iter_count`` (OpenMDAO's: model evaluations).
+
+        ``model_evals`` keeps the model evaluations.
+
+        Parameters
+        ----------
+        result : DriverResult
+            The result object of the driver.
+        """
+        result.iter_count = self.optimizer_iterations
 
     def objective_callback(self, x_new):
         """
