@@ -1,7 +1,13 @@
 """Analyze the reference vehicle at its initial design: a run script to copy and edit.
 
     python run_scripts/run_analysis.py            # run, record and print
-    openmdao n2 run_scripts/run_analysis.py       # N2 diagram of the same model
+    openmdao n2 --problem run_analysis -o run_analysis_n2.html run_scripts/run_analysis.py
+                                                  # N2 diagram of the same model
+
+``--problem run_analysis`` is needed: building the vehicle runs a small calibration problem
+first (the 'other' mass, groups/vehicle.py), and without it ``openmdao n2`` draws that
+problem (the vehicle group alone) instead of the analysis. ``-o`` gives the diagram its own
+name so it does not replace the ``n2.html`` of another step (OpenMDAO's default name).
 
 The full model: the vehicle group and the 15 design conditions with their 171 design variables
 (the paper's 161 and 10 transition roll/yaw speed differentials) and 96 constraints (paper Table 6).
