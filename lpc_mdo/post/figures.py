@@ -24,6 +24,7 @@ from matplotlib.colors import to_rgba
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Circle, Patch, Polygon
+from matplotlib.ticker import MaxNLocator
 
 from lpc_mdo.checks import check_choice
 from lpc_mdo.post.case_data import (
@@ -294,6 +295,7 @@ def plot_convergence(source, path, refs=None, title=None):
     ax_con.semilogy(it, np.maximum(hist["max_violation"], _VIOLATION_FLOOR), "-", color="C3")
     ax_con.set_ylabel("Largest constraint\nviolation (relative, -)")
     ax_con.set_xlabel("Driver case (one per model evaluation, -)")
+    ax_con.xaxis.set_major_locator(MaxNLocator(integer=True))
     for ax in (ax_obj, ax_con):
         ax.grid(True, alpha=0.3)
     ax_obj.set_title(title or "Convergence history")
@@ -545,6 +547,7 @@ def plot_distribution(
     names = [names] if isinstance(names, str) else list(names)
     fig, (ax,) = _figure()
     styles = ["-", "--", "-.", ":"]
+    markers = [".", "o", "s", "^", "v", "x"]
     used = units
     for k, (label, cr) in enumerate(designs):
         for m, name in enumerate(names):
@@ -560,16 +563,26 @@ def plot_distribution(
                     raise ValueError(f"{x!r} has {xs.size} entries, {name!r} {y.shape[0]}.")
             for j in range(y.shape[1]):
                 parts = [label] if len(designs) > 1 else []
-                if len(names) > 1 or len(designs) == 1:
+                if len(names) > 1:
                     parts.append(describe(name)[0] if not parts else describe(name)[0].lower())
-                parts += [column_label.format(j + 1)] if y.shape[1] > 1 else []
+                if y.shape[1] > 1:
+                    words = column_label.format(j + 1)
+                    parts.append(words[0].upper() + words[1:] if not parts else words)
+                parts = parts or [describe(name)[0]]
+                # One design: every line its own colour, style and marker (so that equal
+                # lines stay visible); several: the design's colour, the array's line style
+                # and the column's marker.
+                single = len(designs) == 1
                 ax.plot(
                     xs,
                     y[:, j],
-                    styles[m % len(styles)],
-                    color=f"C{k}",
-                    marker=".",
-                    label=", ".join(parts) if j == 0 or y.shape[1] <= 5 else None,
+                    styles[(m * y.shape[1] + j) % len(styles)] if single else styles[m % 4],
+                    color=f"C{m * y.shape[1] + j}" if single else f"C{k}",
+                    marker=markers[(m * y.shape[1] + j) % len(markers)]
+                    if single
+                    else markers[j % 6],
+                    ms=4,
+                    label=", ".join(parts) if j == 0 or y.shape[1] <= 6 else None,
                 )
     cr0 = designs[0][1]
     if limit is not None:

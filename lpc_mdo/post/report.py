@@ -169,7 +169,7 @@ def lpc_distributions(vehicle):
             units="MPa",
             limit=allowable,
             title=f"Wing-box von Mises stress, condition {c.name}",
-            xlabel="Beam element (-)",
+            xlabel="Beam element, root (0) to tip (-)",
             limit_label="Allowable stress",
             column_label="recovery point {}",
         )
