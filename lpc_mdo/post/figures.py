@@ -92,7 +92,7 @@ LABELS = {
     "bottom_skin_thickness": ("Bottom skin thickness", "mm"),
     "front_spar_thickness": ("Front spar thickness", "mm"),
     "rear_spar_thickness": ("Rear spar thickness", "mm"),
-    "von_mises_stress": ("von Mises stress", "MPa"),
+    "von_mises_stress": ("Von Mises stress", "MPa"),
     "state_of_charge": ("Final state of charge", "-"),
     "lower:state_of_charge": ("Required final state of charge", "-"),
     "specific_energy": ("Battery energy density", "W*h/kg"),
@@ -819,8 +819,8 @@ def plot_planform(
         labels += [label for label, _ in designs]
     ax.set_aspect("equal", adjustable="datalim")
     ax.autoscale_view()
-    ax.set_xlabel(f"y, body frame, to the right ({units})")
-    ax.set_ylabel(f"x, body frame, forward ({units})")
+    ax.set_xlabel(f"Body y, to the right ({units})")
+    ax.set_ylabel(f"Body x, forward ({units})")
     ax.grid(True, alpha=0.3)
     if handles:
         ax.legend(handles, labels, fontsize="small", loc="lower right", framealpha=0.9)

@@ -573,7 +573,15 @@ def _comparison_parts(index, runs, spec):
                 extras["vertical_tail"] = (spec.vertical_tail, vehicle.vertical_tail)
             if spec.booms and recorded([spec.booms], "Booms"):
                 hubs = np.array([r.hub_position for r in vehicle.lift_rotors])
-                extras["booms"] = (spec.booms, hubs - np.array(vehicle.booms.attach_points))
+                counts = {tables.read_value(cr, spec.booms).size // 3 for _, cr in kept}
+                if counts == {len(hubs)}:
+                    extras["booms"] = (spec.booms, hubs - np.array(vehicle.booms.attach_points))
+                else:
+                    index.add(
+                        f"*Booms left out: {spec.booms!r} holds {sorted(counts)} hubs, the "
+                        f"vehicle has {len(hubs)} booms.*",
+                        "",
+                    )
             path = figures.plot_planform(
                 kept,
                 spec.meshes,
