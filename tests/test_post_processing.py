@@ -687,3 +687,15 @@ def test_report_run_label_of_a_run_folder(runs):
     # analysis_out/cases.sql is named by its folder, not "cases".
     ((label, _),) = report.find_case_files(runs["ipopt"][0])
     assert label == "ipopt"
+
+
+def test_bars_mark_what_a_run_did_not_compute(runs, tmp_path, drawn):
+    # Sellar records no hover.electrical_power: its slot is an 'x', not an empty (zero) bar.
+    designs = [("IPOPT", runs["ipopt"][0]), ("Sellar", runs["sellar"][0])]
+    figures.plot_per_condition(
+        designs, "{condition}.electrical_power", ["hover"], tmp_path / "power.png"
+    )
+    (ax,) = drawn[0].get_axes()
+    assert "not computed in that run" in _texts(ax)
+    marks = [line for line in ax.get_lines() if line.get_marker() == "x" and len(line.get_xdata())]
+    assert len(marks) == 1 and marks[0].get_ydata().tolist() == [0.0]

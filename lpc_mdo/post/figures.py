@@ -311,8 +311,16 @@ def _grouped_bars(ax, categories, series, ylabel, xlabel=None):
     n = max(len(series), 1)
     width = 0.8 / n
     x = np.arange(len(categories))
+    missing = False
     for k, (label, values) in enumerate(series):
-        ax.bar(x + (k - (n - 1) / 2) * width, values, width, label=label, color=f"C{k}")
+        pos = x + (k - (n - 1) / 2) * width
+        ax.bar(pos, values, width, label=label, color=f"C{k}")
+        absent = np.isnan(np.asarray(values, dtype=float))
+        if absent.any():  # an empty slot would read as zero: mark it
+            ax.plot(pos[absent], np.zeros(absent.sum()), "x", color=f"C{k}", ms=7, mew=1.5)
+            missing = True
+    if missing:
+        ax.plot([], [], "x", color="0.35", ms=7, mew=1.5, label="not computed in that run")
     ax.set_xticks(
         x,
         [str(c) for c in categories],
@@ -323,7 +331,7 @@ def _grouped_bars(ax, categories, series, ylabel, xlabel=None):
     if xlabel:
         ax.set_xlabel(xlabel)
     ax.grid(True, axis="y", alpha=0.3)
-    if len(series) > 1:
+    if len(series) > 1 or missing:
         ax.legend(fontsize="small")
 
 
@@ -475,7 +483,8 @@ def plot_per_condition(
             )
         categories = conditions
     series = [(label, table[i]) for i, (label, _) in enumerate(designs)]
-    fig, (ax,) = _figure(figsize=(max(6.4, 0.45 * len(categories) * len(series) + 2), 4.0))
+    width = min(max(6.4, 0.45 * len(categories) * len(series) + 2), 12.0)
+    fig, (ax,) = _figure(figsize=(width, 4.0))
     first = variable.format(condition=categories[0]) if "{condition}" in variable else variable
     _grouped_bars(
         ax,
@@ -669,15 +678,24 @@ def _radius(cr, name, index, units):
     return value[index : index + 1] if index != -1 else value[-1:]
 
 
-def _legend_handle(artist):
-    """Return a legend entry that looks like the part: a patch for filled parts, else a line."""
+def _legend_handle(artist, color=None):
+    """
+    Return a legend entry that looks like the part: a patch for filled parts, else a line.
+
+    With ``color`` the entry is drawn in that colour (grey when designs have the colours).
+    """
     if isinstance(artist, Line2D):
         return Line2D(
-            [], [], color=artist.get_color(), lw=artist.get_linewidth(), alpha=artist.get_alpha()
+            [],
+            [],
+            color=color or artist.get_color(),
+            lw=artist.get_linewidth(),
+            alpha=artist.get_alpha(),
         )
-    return Patch(
-        fc=artist.get_facecolor(), ec=artist.get_edgecolor(), ls=artist.get_linestyle(), lw=1.0
-    )
+    face, edge = artist.get_facecolor(), artist.get_edgecolor()
+    if color is not None:
+        face, edge = to_rgba(color, face[3]), to_rgba(color)
+    return Patch(fc=face, ec=edge, ls=artist.get_linestyle(), lw=1.0)
 
 
 def plot_planform(
@@ -812,7 +830,8 @@ def plot_planform(
                     [hy - r, hy + r], [hx, hx], "-", color=color, lw=3.0, solid_capstyle="butt"
                 )
                 draw("pusher_disk", line, "Pusher disk, edge-on (diameter)")
-    handles = [_legend_handle(artist) for label, artist in parts.items() if label]
+    grey = "0.35" if len(designs) > 1 else None
+    handles = [_legend_handle(artist, grey) for label, artist in parts.items() if label]
     labels = [label for label in parts if label]
     if len(designs) > 1:
         handles += [Line2D([], [], color=f"C{k}", lw=4) for k in range(len(designs))]
