@@ -22,7 +22,10 @@ from lpc_mdo.vehicle import reference_vehicle
 
 vehicle = reference_vehicle()  # or lpc_mdo.vehicle.load_vehicle("my_lpc.toml")
 prob = build_analysis_problem(vehicle, name="run_analysis")
-prob.add_recorder(om.SqliteRecorder(prob.get_outputs_dir(mkdir=True) / "cases.sql"))
+case_file = prob.get_outputs_dir(mkdir=True) / "cases.sql"
+if case_file.exists():  # the recorder starts the file afresh: say so
+    print(f"replacing {case_file} (the case file of an earlier run)")
+prob.add_recorder(om.SqliteRecorder(case_file))
 prob.recording_options["includes"] = ["*"]
 prob.final_setup()
 prob.run_model()

@@ -16,6 +16,7 @@ A variable absent from a case file raises
 :class:`~lpc_mdo.post.case_data.MissingVariableError` naming it.
 """
 
+import textwrap
 from pathlib import Path
 
 import numpy as np
@@ -67,6 +68,12 @@ def _figure(nrows=1, figsize=(6.4, 4.0), sharex=False):
     FigureCanvasAgg(fig)
     axes = fig.subplots(nrows, 1, sharex=sharex, squeeze=False)[:, 0]
     return fig, axes
+
+
+def _title(ax, text):
+    """Set the title, wrapped to the width of the figure so that none of it is cut off."""
+    width = ax.figure.get_figwidth()
+    ax.set_title(textwrap.fill(text, width=max(30, int(8.5 * width))))
 
 
 def _save(fig, path):
@@ -298,7 +305,7 @@ def plot_convergence(source, path, refs=None, title=None):
     ax_con.xaxis.set_major_locator(MaxNLocator(integer=True))
     for ax in (ax_obj, ax_con):
         ax.grid(True, alpha=0.3)
-    ax_obj.set_title(title or "Convergence history")
+    _title(ax_obj, title or "Convergence history")
     return _save(fig, path)
 
 
@@ -321,11 +328,15 @@ def _grouped_bars(ax, categories, series, ylabel, xlabel=None):
             missing = True
     if missing:
         ax.plot([], [], "x", color="0.35", ms=7, mew=1.5, label="not computed in that run")
+    names = [str(c) for c in categories]
+    # Rotate the names when they would not fit side by side (about 7 characters per inch).
+    crowded = sum(len(s) + 2 for s in names) > 7 * ax.figure.get_figwidth()
     ax.set_xticks(
         x,
-        [str(c) for c in categories],
-        rotation=45 if len(categories) > 6 else 0,
-        ha="right" if len(categories) > 6 else "center",
+        names,
+        rotation=45 if crowded else 0,
+        ha="right" if crowded else "center",
+        rotation_mode="anchor" if crowded else "default",
     )
     ax.set_ylabel(ylabel)
     if xlabel:
@@ -389,7 +400,7 @@ def plot_bars(
         raise ValueError(f"{len(labels)} labels for {size} entries of {name!r}.")
     fig, (ax,) = _figure(figsize=(max(6.4, 0.5 * size * len(series) + 2), 4.0))
     _grouped_bars(ax, labels, series, ylabel or _label_of(designs[0][1], name, used), xlabel=xlabel)
-    ax.set_title(title or describe(name)[0])
+    _title(ax, title or describe(name)[0])
     return _save(fig, path)
 
 
@@ -493,7 +504,7 @@ def plot_per_condition(
         ylabel or _label_of(designs[0][1], first, _plot_units(variable, units)),
         xlabel=xlabel,
     )
-    ax.set_title(title or f"{describe(variable)[0]} per design condition")
+    _title(ax, title or f"{describe(variable)[0]} per design condition")
     return _save(fig, path)
 
 
@@ -601,7 +612,7 @@ def plot_distribution(
     ax.set_ylabel(ylabel or _label_of(cr0, names[0], used))
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize="small")
-    ax.set_title(title or describe(names[0])[0])
+    _title(ax, title or describe(names[0])[0])
     return _save(fig, path)
 
 
@@ -843,7 +854,7 @@ def plot_planform(
     ax.grid(True, alpha=0.3)
     if handles:
         ax.legend(handles, labels, fontsize="small", loc="lower right", framealpha=0.9)
-    ax.set_title(title or "Planform, top view to scale")
+    _title(ax, title or "Planform, top view to scale")
     return _save(fig, path)
 
 
@@ -996,5 +1007,5 @@ def plot_sweep(
     ax.grid(True, alpha=0.3)
     if ax.get_legend_handles_labels()[0]:
         ax.legend(fontsize="small")
-    ax.set_title(title or f"{describe(yname)[0]} against {xlabel.split(' (')[0].lower()}")
+    _title(ax, title or f"{describe(yname)[0]} against {xlabel.split(' (')[0].lower()}")
     return _save(fig, path)

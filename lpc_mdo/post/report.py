@@ -673,6 +673,13 @@ def _comparison_parts(index, runs, spec):
                 title=title,
             )
             index.figure(path, stem.replace("_", " "))
+            if stem == "figure_of_merit" and variable == ReportSpec.figure_of_merit:
+                index.add(
+                    "The figure of merit is the hover definition T^1.5 / (sqrt(2 rho A) P) "
+                    "(BEM loads); with the freestream through the disk (transition) it can "
+                    "exceed 1 and is no longer an efficiency.",
+                    "",
+                )
 
         index.add(f"### {heading}", "")
         _try(index, stem.replace("_", " "), per_condition)
