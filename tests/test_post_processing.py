@@ -94,6 +94,11 @@ def paraboloid_run(path, driver, c_lower=15.0):
     )
     geom.add_output("hubs", np.array([[0.5, -2.0, 0.0], [0.5, 2.0, 0.0]]), units="m")
     geom.add_output("radii", np.array([0.6, 0.6]), units="m")
+    # Planform extras: fuselage length, pusher hub and radius (the last one), fin root LE.
+    geom.add_output("fus_length", 6.0, units="m")
+    geom.add_output("pusher_hub", np.array([-6.2, 0.0, 0.0]), units="m")
+    geom.add_output("all_radii", np.array([0.6, 0.8]), units="m")
+    geom.add_output("fin_le", np.array([-5.0, 0.0, -0.3]), units="m")
     geom.add_output("skin", np.array([4.0, 3.0, 2.0, 1.0]), units="mm")
     geom.add_output("stations", np.linspace(0.0, 4.0, 5), units="m")
     geom.add_output("stress", np.arange(8.0).reshape(4, 2), units="MPa")
@@ -447,6 +452,10 @@ def test_write_report_on_a_folder(runs, tmp_path):
         design_quantities=(("x", "x"), ("f", "f_xy")),
         meshes=("wing_mesh", "tail_mesh"),
         rotors=(("hubs", "radii"), ("no_hubs", "radii")),
+        fuselage="fus_length",
+        pusher=("pusher_hub", "all_radii", -1),
+        vertical_tail="fin_le",
+        booms="hubs",
         mass_breakdown="v",
         mass_labels=("x", "y", "x+y"),
         mass_units="cm",
@@ -484,6 +493,8 @@ def test_write_report_on_a_folder(runs, tmp_path):
     # as they leave out the rotor pair that no run records.
     assert "Runs left out (variables not recorded): sellar." in text
     assert "Rotor disks ('no_hubs', 'radii') left out" in text
+    # 2 hubs in the test model, 8 booms in the (reference) vehicle: no boom is drawn.
+    assert "Booms left out: 'hubs' holds [2] hubs, the vehicle has 8 booms." in text
     assert "## Skipped parts" not in text
 
 
@@ -509,3 +520,182 @@ def test_write_report_lpc_defaults_skip_absent_parts(runs, tmp_path):
         runs["ipopt"][0], tmp_path / "generic", report.ReportSpec.generic()
     )
     assert "Skipped" not in generic.read_text()
+
+
+# ------------------------------------------------------------------------------------------------
+# figures a person reads: titles, labels in words with units, the planform to scale
+
+# "Words (units)": starts with a capital letter, no variable-name underscores, units in brackets.
+WORDS_WITH_UNITS = re.compile(r"^[A-Z][^_]*\([^()_]+\)$")
+
+
+@pytest.fixture
+def drawn(monkeypatch):
+    """Collect the Figure objects the figure functions save, in order."""
+    figs = []
+    save = figures._save
+
+    def keep(fig, path):
+        figs.append(fig)
+        return save(fig, path)
+
+    monkeypatch.setattr(figures, "_save", keep)
+    return figs
+
+
+def _texts(ax):
+    legend = ax.get_legend()
+    return [t.get_text() for t in legend.get_texts()] if legend else []
+
+
+def test_label_table_gives_words_and_units():
+    assert figures.axis_label("mass_breakdown") == "Mass (kg)"
+    assert figures.axis_label("hover.electrical_power") == "Electrical power (kW)"
+    assert figures.axis_label("{condition}.electrical_power") == "Electrical power (kW)"
+    assert figures.axis_label("cruise.lift_figure_of_merit") == "Lift-rotor figure of merit (-)"
+    assert figures.axis_label("battery.specific_energy") == "Battery energy density (Wh/kg)"
+    # A name not in the table: its words, the given units.
+    assert figures.describe("plus_3g.tip_deflection") == ("Tip deflection", None)
+    assert figures.axis_label("tip_deflection", "mm") == "Tip deflection (mm)"
+    for name, (words, units) in figures.LABELS.items():
+        assert "_" not in words and words[0].isupper() and units, name
+
+
+def test_every_figure_has_a_title_and_axes_in_words_with_units(runs, tmp_path, drawn):
+    designs = [("IPOPT", runs["ipopt"][0]), ("SLSQP", runs["slsqp"][0])]
+    paths = [
+        figures.plot_convergence(runs["sellar"][0], tmp_path / "conv.png"),
+        figures.plot_bars(designs, "v", tmp_path / "bars.png", labels=["x", "y", "x+y"]),
+        figures.plot_per_condition(
+            designs, "{condition}.electrical_power", ["hover", "cruise"], tmp_path / "power.png"
+        ),
+        figures.plot_per_condition(
+            designs,
+            "{condition}.lift_figure_of_merit",
+            ["hover"],
+            tmp_path / "fom.png",
+            reduce="mean",
+        ),
+        figures.plot_distribution(
+            runs["ipopt"][0], "stress", tmp_path / "stress.png", x="stations", limit=5.0
+        ),
+        figures.plot_planform(designs, ["wing_mesh"], tmp_path / "plan.png"),
+        figures.plot_sweep(
+            figures.sweep_points(designs, "lower:c"), tmp_path / "sweep.png", xlabel="L (-)"
+        ),
+    ]
+    assert len(drawn) == len(paths) and all(_is_png(p) for p in paths)
+    for fig, path in zip(drawn, paths, strict=True):
+        axes = fig.get_axes()
+        assert axes[0].get_title(), path.name
+        for ax in axes:
+            if ax.get_ylabel():
+                assert WORDS_WITH_UNITS.match(ax.get_ylabel()), (path.name, ax.get_ylabel())
+            assert all("_" not in text for text in _texts(ax)), (path.name, _texts(ax))
+        xlabel = axes[-1].get_xlabel()
+        assert WORDS_WITH_UNITS.match(xlabel) or xlabel in ("Item", "Design condition"), xlabel
+    conv, bars, power, fom, stress, plan, sweep = drawn
+    assert conv.axes[0].get_ylabel() == "Objective: obj (-)"
+    assert bars.axes[0].get_ylabel() == "V (m)" and bars.axes[0].get_title() == "V"
+    # The table's kW: the bars are 1000 (x^2 + 1) W and 500 (y^2 + 1) W in kW.
+    ax = power.axes[0]
+    assert ax.get_ylabel() == "Electrical power (kW)"
+    assert ax.get_title() == "Electrical power per design condition"
+    x, y, _ = paraboloid_optimum(15.0)
+    heights = [bar.get_height() for bar in ax.containers[0]]
+    np.testing.assert_allclose(heights, [x**2 + 1.0, 0.5 * (y**2 + 1.0)], rtol=1e-5)
+    assert _texts(ax) == ["IPOPT", "SLSQP"]
+    assert fom.axes[0].get_ylabel() == "Lift-rotor figure of merit (-)"
+    ax = stress.axes[0]
+    assert (ax.get_xlabel(), ax.get_ylabel()) == ("Stations (m)", "Stress (MPa)")
+    assert _texts(ax) == ["Column 1", "Column 2", "Limit 5 MPa"]
+    assert plan.axes[0].get_aspect() == 1.0
+    assert plan.axes[0].get_ylabel() == "Body x, forward (m)"
+    assert sweep.axes[0].get_ylabel() == "F xy (-)"
+
+
+def test_planform_draws_every_part_to_scale(runs, tmp_path, drawn):
+    class Fin:  # root chord 1, tip chord 0.5, height 1, 45 deg sweep, t/c 0.1
+        root_chord, tip_chord, span, sweep, thickness_to_chord = 1.0, 0.5, 1.0, np.pi / 4, 0.1
+
+    offsets = [[1.0, 0.5, 0.0], [1.0, -0.5, 0.0]]  # hub minus wing junction
+    designs = [("IPOPT", runs["ipopt"][0]), ("SLSQP", runs["slsqp"][0])]
+    figures.plot_planform(
+        designs,
+        ["wing_mesh", "tail_mesh"],
+        tmp_path / "plan.png",
+        rotors=[("hubs", "radii")],
+        fuselage=("fus_length", 1.5),
+        pushers=[("pusher_hub", "all_radii", -1)],
+        vertical_tail=("fin_le", Fin),
+        booms=("hubs", offsets),
+    )
+    (ax,) = drawn[0].get_axes()
+    artists = ax.get_children()
+
+    def parts(gid):
+        return [a for a in artists if a.get_gid() == gid]
+
+    # Per design: 2 lift-rotor disks, 1 fuselage, 1 fin, 2 booms, 1 pusher, 2 surfaces.
+    counts = {g: len(parts(g)) for g in ("lift_rotor_disk", "fuselage", "vertical_tail")}
+    counts.update({g: len(parts(g)) for g in ("boom", "pusher_disk", "surface")})
+    assert counts == dict(
+        lift_rotor_disk=4, fuselage=2, vertical_tail=2, boom=4, pusher_disk=2, surface=4
+    )
+    disk = parts("lift_rotor_disk")[0]
+    assert disk.get_radius() == pytest.approx(0.6) and disk.center == pytest.approx((-2.0, 0.5))
+    body = parts("fuselage")[0].get_xy()  # (y, x) points
+    assert body[:, 1].max() == pytest.approx(0.0) and body[:, 1].min() == pytest.approx(-6.0)
+    assert np.abs(body[:, 0]).max() == pytest.approx(0.75)
+    pusher = parts("pusher_disk")[0].get_xydata()  # across y = +-0.8 m at x = -6.2 m
+    np.testing.assert_allclose(pusher, [[-0.8, -6.2], [0.8, -6.2]])
+    boom = parts("boom")[0].get_xydata()  # from the hub (0.5, -2) to the junction (-0.5, -2.5)
+    np.testing.assert_allclose(boom, [[-2.0, 0.5], [-2.5, -0.5]])
+    fin = parts("vertical_tail")[0].get_xy()
+    # Tip TE: -5 - 1 tan 45 - 0.5 = -6.5 behind the root TE -6; width t/c c_root = 0.1 m.
+    assert fin[:, 1].min() == pytest.approx(-6.5) and np.ptp(fin[:, 0]) == pytest.approx(0.1)
+    assert ax.get_aspect() == 1.0
+    legend = _texts(ax)
+    assert {"Lift-rotor disk (radius)", "Fuselage (length, maximum width)", "IPOPT"} <= set(legend)
+    assert all("_" not in text for text in legend)
+
+
+def test_fuselage_outline_has_the_true_length_and_width():
+    outline = figures.fuselage_outline(9.144, 1.557)
+    x, y = outline[:, 0], outline[:, 1]
+    assert (x.max(), x.min()) == (0.0, pytest.approx(-9.144))
+    assert y.max() == pytest.approx(1.557 / 2) and y.min() == pytest.approx(-1.557 / 2)
+    assert y[np.argmin(x)] == pytest.approx(0.15 * 1.557 / 2)  # the tail cone's end
+
+
+def test_report_says_when_it_replaces_files(runs, tmp_path):
+    out = tmp_path / "report"
+    notes = []
+    index = report.write_report(runs["ipopt"][0], out, report.ReportSpec.generic(), notes.append)
+    assert notes == []  # a new folder: nothing replaced
+    (out / "mine.txt").write_text("not the report's")
+    written = {index.resolve(), *((index.parent / link).resolve() for link in _links(index))}
+    report.write_report(runs["ipopt"][0], out, report.ReportSpec.generic(), notes.append)
+    (line,) = notes
+    assert line.startswith(f"report: replaced {len(written)} existing file(s) in {out}/ (")
+    assert line.endswith("; 1 other file(s) in it left as they were")
+    assert (out / "mine.txt").read_text() == "not the report's"
+    assert all(p.is_relative_to(out.resolve()) for p in written)  # it writes only there
+
+
+def test_report_run_label_of_a_run_folder(runs):
+    # analysis_out/cases.sql is named by its folder, not "cases".
+    ((label, _),) = report.find_case_files(runs["ipopt"][0])
+    assert label == "ipopt"
+
+
+def test_bars_mark_what_a_run_did_not_compute(runs, tmp_path, drawn):
+    # Sellar records no hover.electrical_power: its slot is an 'x', not an empty (zero) bar.
+    designs = [("IPOPT", runs["ipopt"][0]), ("Sellar", runs["sellar"][0])]
+    figures.plot_per_condition(
+        designs, "{condition}.electrical_power", ["hover"], tmp_path / "power.png"
+    )
+    (ax,) = drawn[0].get_axes()
+    assert "not computed in that run" in _texts(ax)
+    marks = [line for line in ax.get_lines() if line.get_marker() == "x" and len(line.get_xdata())]
+    assert len(marks) == 1 and marks[0].get_ydata().tolist() == [0.0]

@@ -23,6 +23,8 @@ from dataclasses import dataclass, field
 from os import PathLike
 from pathlib import Path
 
+import numpy as np
+
 from lpc_mdo.components.weights.gross_weight import BREAKDOWN_LABELS
 from lpc_mdo.post import figures, tables
 from lpc_mdo.post.statistics import statistics_table
@@ -38,6 +40,7 @@ __all__ = [
     "ReportSpec",
     "SweepSpec",
     "find_case_files",
+    "replaced_files_note",
     "write_report",
 ]
 
@@ -64,6 +67,13 @@ class DistributionSpec:
         Horizontal limit line, in ``units``.
     title : str or None
         Figure title.
+    ylabel, xlabel : str or None
+        Axis labels in words with units; None: from the label table
+        (:data:`lpc_mdo.post.figures.LABELS`).
+    limit_label : str
+        Legend words of the limit line.
+    column_label : str
+        Legend words of column j + 1 of a 2-D array.
     """
 
     stem: str
@@ -73,6 +83,10 @@ class DistributionSpec:
     x_units: str | None = None
     limit: float | None = None
     title: str | None = None
+    ylabel: str | None = None
+    xlabel: str | None = None
+    limit_label: str = "Limit"
+    column_label: str = "column {}"
 
 
 @dataclass(frozen=True)
@@ -125,13 +139,17 @@ LPC_THICKNESS_DISTRIBUTIONS = (
         "skin_thickness",
         ("top_skin_thickness", "bottom_skin_thickness"),
         units="mm",
-        title="Skin thickness, root to tip",
+        title="Wing-box skin thickness, root to tip",
+        ylabel="Skin thickness (mm)",
+        xlabel="Wing-box bay, root (0) to tip (-)",
     ),
     DistributionSpec(
         "spar_thickness",
         ("front_spar_thickness", "rear_spar_thickness"),
         units="mm",
-        title="Spar thickness, root to tip",
+        title="Wing-box spar thickness, root to tip",
+        ylabel="Spar thickness (mm)",
+        xlabel="Wing-box bay, root (0) to tip (-)",
     ),
 )
 
@@ -150,7 +168,10 @@ def lpc_distributions(vehicle):
             (f"{c.name}.von_mises_stress",),
             units="MPa",
             limit=allowable,
-            title=f"Beam stress, {c.name}",
+            title=f"Wing-box von Mises stress, condition {c.name}",
+            xlabel="Beam element, root (0) to tip (-)",
+            limit_label="Allowable stress",
+            column_label="recovery point {}",
         )
         for c in vehicle.conditions
         if c.kind == "structural"
@@ -180,9 +201,11 @@ LPC_SWEEPS = (
         "sweep_energy_density",
         "battery.specific_energy",
         x_units="W*h/kg",
-        xlabel="battery energy density (Wh/kg)",
+        xlabel="Battery energy density (Wh/kg)",
     ),
-    SweepSpec("sweep_final_soc", "lower:state_of_charge", xlabel="final state of charge"),
+    SweepSpec(
+        "sweep_final_soc", "lower:state_of_charge", xlabel="Required final state of charge (-)"
+    ),
 )
 
 
@@ -213,6 +236,19 @@ class ReportSpec:
     rotors : tuple of (str, str)
         (hub positions, radii) drawn as disks; default lift rotors
         ``('lift_hub_position', 'lift_rotor_radius')``; dropped with a note when absent.
+    fuselage : str or None
+        Fuselage length drawn in the planform (the maximum width is the vehicle's);
+        default ``'fuselage_length'``.
+    pusher : tuple or None
+        ``(hub position, radii, index)`` of the pusher disk; default
+        ``('pusher_hub_position', 'rotor_radius', -1)`` (the last radius is the pusher's).
+    vertical_tail : str or None
+        Root leading edge of the fin (its shape is the vehicle's); default
+        ``'vtail_root_leading_edge'``.
+    booms : str or None
+        Lift-rotor hub positions; each boom is drawn from a hub to its wing junction, which
+        keeps the vehicle's offset (hub minus ``booms.attach_points``) as in RotorLayoutComp;
+        default ``'lift_hub_position'``.
     mass_breakdown : str or None
         Vector for the mass bar chart; default ``'mass_breakdown'`` (GrossWeightComp).
     mass_labels : tuple of str or None
@@ -251,6 +287,10 @@ class ReportSpec:
     design_quantities: tuple = LPC_DESIGN_QUANTITIES
     meshes: tuple = ("wing_mesh", "horizontal_tail_mesh")
     rotors: tuple = (("lift_hub_position", "lift_rotor_radius"),)
+    fuselage: str | None = "fuselage_length"
+    pusher: tuple | None = ("pusher_hub_position", "rotor_radius", -1)
+    vertical_tail: str | None = "vtail_root_leading_edge"
+    booms: str | None = "lift_hub_position"
     mass_breakdown: str | None = "mass_breakdown"
     mass_labels: tuple | None = BREAKDOWN_LABELS
     mass_units: str | None = "kg"
@@ -283,6 +323,10 @@ class ReportSpec:
             design_quantities=(),
             meshes=(),
             rotors=(),
+            fuselage=None,
+            pusher=None,
+            vertical_tail=None,
+            booms=None,
             mass_breakdown=None,
             power=None,
             figure_of_merit=None,
@@ -308,7 +352,11 @@ def _is_sqlite(path):
 def _label(path, root):
     rel = path.relative_to(root) if root is not None else Path(path.name)
     parts = [p.removesuffix("_out") for p in rel.parent.parts]
-    if path.stem not in _GENERIC_STEMS or not parts:
+    if path.stem in _GENERIC_STEMS and not parts:
+        # analysis_out/cases.sql: the run is named by its folder.
+        folder = (root if root is not None else path.resolve().parent).name
+        parts.append(folder.removesuffix("_out") or path.stem)
+    elif path.stem not in _GENERIC_STEMS or not parts:
         parts.append(path.stem)
     return "/".join(parts)
 
@@ -375,6 +423,7 @@ class _Index:
         self.out_dir = out_dir
         self.lines = []
         self.skipped = []
+        self.written = []
 
     def add(self, *lines):
         self.lines.extend(lines)
@@ -384,11 +433,13 @@ class _Index:
 
     def table(self, table, stem, inline=True):
         md, csv = table.write(self.out_dir / "tables", stem)
+        self.written += [md, csv]
         if inline:
             self.add(table.to_markdown(heading=False))
         self.add(f"Files: [{md.name}]({self.link(md)}) · [{csv.name}]({self.link(csv)})", "")
 
     def figure(self, path, caption):
+        self.written.append(path)
         self.add(f"![{caption}]({self.link(path)})", "")
 
     def skip(self, part, reason):
@@ -443,7 +494,10 @@ def _run_section(index, label, cr, spec):
 
     def convergence():
         path = figures.plot_convergence(
-            cr, index.out_dir / "figures" / f"convergence_{slug}.png", refs=spec.refs, title=label
+            cr,
+            index.out_dir / "figures" / f"convergence_{slug}.png",
+            refs=spec.refs,
+            title=f"Convergence of {label}",
         )
         index.figure(path, f"Convergence of {label}")
 
@@ -501,12 +555,49 @@ def _comparison_parts(index, runs, spec):
 
         def planform():
             kept = _runs_with(index, runs, spec.meshes)
-            rotors = [pair for pair in spec.rotors if all(_recorded(cr, pair) for _, cr in kept)]
-            for pair in spec.rotors:
-                if pair not in rotors:
-                    index.add(f"*Rotor disks {pair} left out: not recorded in every run.*", "")
-            path = figures.plot_planform(kept, spec.meshes, fig_dir / "planform.png", rotors=rotors)
-            index.figure(path, "Planform")
+
+            def recorded(names, what):
+                if all(_recorded(cr, names) for _, cr in kept):
+                    return True
+                index.add(f"*{what} {tuple(names)} left out: not recorded in every run.*", "")
+                return False
+
+            rotors = [pair for pair in spec.rotors if recorded(pair, "Rotor disks")]
+            vehicle = spec.vehicle
+            extras = {}
+            if spec.fuselage and recorded([spec.fuselage], "Fuselage"):
+                extras["fuselage"] = (spec.fuselage, vehicle.fuselage.max_width)
+            if spec.pusher and recorded(spec.pusher[:2], "Pusher disk"):
+                extras["pushers"] = [spec.pusher]
+            if spec.vertical_tail and recorded([spec.vertical_tail], "Vertical tail"):
+                extras["vertical_tail"] = (spec.vertical_tail, vehicle.vertical_tail)
+            if spec.booms and recorded([spec.booms], "Booms"):
+                hubs = np.array([r.hub_position for r in vehicle.lift_rotors])
+                counts = {tables.read_value(cr, spec.booms).size // 3 for _, cr in kept}
+                if counts == {len(hubs)}:
+                    extras["booms"] = (spec.booms, hubs - np.array(vehicle.booms.attach_points))
+                else:
+                    index.add(
+                        f"*Booms left out: {spec.booms!r} holds {sorted(counts)} hubs, the "
+                        f"vehicle has {len(hubs)} booms.*",
+                        "",
+                    )
+            path = figures.plot_planform(
+                kept,
+                spec.meshes,
+                fig_dir / "planform.png",
+                rotors=rotors,
+                title="Planform, top view to scale (Fig. 15)",
+                **extras,
+            )
+            index.figure(path, "Planform, top view to scale")
+            if "booms" in extras:
+                index.add(
+                    "Booms: from each recorded lift-rotor hub to its wing junction, placed at "
+                    "the vehicle file's hub-to-junction offset (RotorLayoutComp keeps it). "
+                    "Fuselage: recorded length, the vehicle's maximum width, schematic shape.",
+                    "",
+                )
 
         index.add("### Planform (Fig. 15)", "")
         _try(index, "planform", planform)
@@ -515,19 +606,24 @@ def _comparison_parts(index, runs, spec):
 
         def mass():
             kept = _runs_with(index, runs, [spec.mass_breakdown])
+            labels = spec.mass_labels
+            if labels is not None:
+                labels = [str(label).replace("_", " ") for label in labels]
             path = figures.plot_bars(
                 kept,
                 spec.mass_breakdown,
                 fig_dir / "mass_breakdown.png",
-                labels=spec.mass_labels,
+                labels=labels,
                 units=spec.mass_units,
+                title="Mass breakdown (Figs. 19-20)",
+                xlabel="Mass item",
             )
             index.figure(path, "Mass breakdown")
 
         index.add("### Mass breakdown (Figs. 19-20)", "")
         _try(index, "mass breakdown", mass)
 
-    for key, stem, heading, conditions, reduce, units in (
+    for key, stem, heading, conditions, reduce, units, title in (
         (
             "power",
             "power",
@@ -535,6 +631,7 @@ def _comparison_parts(index, runs, spec):
             spec.conditions,
             "sum",
             spec.power_units,
+            "Electrical power per design condition, all motors (Fig. 16b)",
         ),
         (
             "figure_of_merit",
@@ -543,14 +640,22 @@ def _comparison_parts(index, runs, spec):
             spec.fom_conditions,
             "mean",
             None,
+            "Lift-rotor figure of merit per design condition, mean of the rotors (Fig. 16a)",
         ),
     ):
         variable = getattr(spec, key)
         if not variable:
             continue
+        if variable != getattr(ReportSpec, key):
+            title = None  # another variable: the figure's own title from the label table
 
         def per_condition(
-            variable=variable, stem=stem, conditions=conditions, reduce=reduce, units=units
+            variable=variable,
+            stem=stem,
+            conditions=conditions,
+            reduce=reduce,
+            units=units,
+            title=title,
         ):
             names = (
                 [variable.format(condition=c) for c in conditions]
@@ -559,9 +664,22 @@ def _comparison_parts(index, runs, spec):
             )
             kept = _runs_with(index, runs, names, any_of=True)
             path = figures.plot_per_condition(
-                kept, variable, conditions, fig_dir / f"{stem}.png", units=units, reduce=reduce
+                kept,
+                variable,
+                conditions,
+                fig_dir / f"{stem}.png",
+                units=units,
+                reduce=reduce,
+                title=title,
             )
             index.figure(path, stem.replace("_", " "))
+            if stem == "figure_of_merit" and variable == ReportSpec.figure_of_merit:
+                index.add(
+                    "The figure of merit is the hover definition T^1.5 / (sqrt(2 rho A) P) "
+                    "(BEM loads); with the freestream through the disk (transition) it can "
+                    "exceed 1 and is no longer an efficiency.",
+                    "",
+                )
 
         index.add(f"### {heading}", "")
         _try(index, stem.replace("_", " "), per_condition)
@@ -580,6 +698,10 @@ def _comparison_parts(index, runs, spec):
                 x_units=dist.x_units,
                 limit=dist.limit,
                 title=dist.title,
+                ylabel=dist.ylabel,
+                xlabel=dist.xlabel,
+                limit_label=dist.limit_label,
+                column_label=dist.column_label,
             )
             index.figure(path, dist.stem.replace("_", " "))
 
@@ -600,7 +722,7 @@ def _comparison_parts(index, runs, spec):
             path = figures.plot_sweep(
                 points,
                 fig_dir / f"{sweep.stem}.png",
-                xlabel=sweep.xlabel or sweep.x,
+                xlabel=sweep.xlabel or figures.axis_label(sweep.x, sweep.x_units),
                 group_label=sweep.group_label,
             )
             index.figure(path, sweep.stem.replace("_", " "))
@@ -609,7 +731,7 @@ def _comparison_parts(index, runs, spec):
         _try(index, sweep.stem, sweep_figure)
 
 
-def write_report(case_files_or_dir, out_dir, spec=None):
+def write_report(case_files_or_dir, out_dir, spec=None, notify=print):
     """
     Write every table and figure the case files support into ``out_dir``, with an index.md.
 
@@ -623,10 +745,14 @@ def write_report(case_files_or_dir, out_dir, spec=None):
         ``run_stats.json`` sits in its folder), one case file, a mapping label -> case file,
         or a sequence of case files or ``(label, case file)`` pairs.
     out_dir : str or os.PathLike
-        Report folder (created); existing files of the same names are overwritten.
+        Report folder (created); the report writes only inside it. Existing files of the same
+        names are replaced, and ``notify`` is told so in one line.
     spec : ReportSpec or None
         Variable names of the LPC-specific parts; None = ``ReportSpec()`` (LPC defaults), and
         ``ReportSpec.generic()`` leaves those parts out.
+    notify : callable or None
+        Called with one line of text when files that existed before are replaced (default:
+        ``print``); None says nothing.
 
     Returns
     -------
@@ -644,6 +770,7 @@ def write_report(case_files_or_dir, out_dir, spec=None):
         raise FileNotFoundError(f"No case files found in {str(case_files_or_dir)!r}.")
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
+    existing = {p.resolve() for p in out_dir.rglob("*") if p.is_file()}
     runs = [(label, tables.open_reader(path)) for label, path in files]
     index = _Index(out_dir)
 
@@ -669,4 +796,40 @@ def write_report(case_files_or_dir, out_dir, spec=None):
         index.add("## Skipped parts", "", *(f"- {note}" for note in index.skipped), "")
     path = out_dir / "index.md"
     path.write_text("\n".join(index.lines), encoding="utf-8")
+    index.written.append(path)
+    if notify is not None:
+        line = replaced_files_note(out_dir, existing, index.written)
+        if line:
+            notify(line)
     return path
+
+
+def replaced_files_note(out_dir, existing, written):
+    """
+    Return the one line that says which existing files a report replaced, or ''.
+
+    Parameters
+    ----------
+    out_dir : Path
+        The report folder.
+    existing : set of Path
+        Resolved paths of the files in it before the report was written.
+    written : Sequence of Path
+        Files the report wrote.
+
+    Returns
+    -------
+    str
+        E.g. ``'report: replaced 3 existing files in report/ (index.md, tables/statistics.md,
+        tables/statistics.csv)'``; files it did not write are named as left as they were.
+    """
+    written = list(dict.fromkeys(Path(p).resolve() for p in written))
+    replaced = [p for p in written if p in existing]
+    if not replaced:
+        return ""
+    root = out_dir.resolve()
+    names = [p.relative_to(root).as_posix() for p in replaced]
+    shown = ", ".join(names[:3]) + (f" and {len(names) - 3} more" if len(names) > 3 else "")
+    others = len(existing - set(written))
+    kept = f"; {others} other file(s) in it left as they were" if others else ""
+    return f"report: replaced {len(replaced)} existing file(s) in {out_dir}/ ({shown}){kept}"
