@@ -47,12 +47,21 @@ def test_missing_start_case_is_a_clear_error(tmp_path, capsys):
         ["sweep", "--start-case", missing],
     ):
         assert main(argv) == 2
-        assert f"--start-case '{missing}' is not a file" in capsys.readouterr().err
+        assert f"'--start-case' = '{missing}' does not exist" in capsys.readouterr().err
 
 
-def test_unknown_command_exits():
-    with pytest.raises(SystemExit):
-        main(["fly"])
+def test_unknown_command_is_a_one_line_error(capsys):
+    assert main(["fly"]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("lpc-mdo: error: argument command: invalid choice: 'fly'")
+    assert err.count("\n") == 1
+
+
+def test_help_exits_with_zero(capsys):
+    with pytest.raises(SystemExit) as exc:
+        main(["analyze", "--help"])
+    assert exc.value.code == 0
+    assert "--n2" in capsys.readouterr().out
 
 
 def test_optimize_subproblem_4_and_report(tmp_path, capsys):
