@@ -153,22 +153,27 @@ def _optimizer(flag):
 
 
 def _folder_problem(folder):
-    """Say why files cannot be written into a folder (created if missing), or return None."""
+    """Say why files cannot be written into a folder (created if missing), or return None.
+
+    The text follows the folder's name: ``is a file, not a folder``, ``cannot be created: ...``,
+    ``is not writable: ...``.
+    """
     target = Path(folder).absolute()
+    existing = target
     try:
         if target.exists() and not target.is_dir():
-            return f"'{target}' is a file, not a folder"
-        existing = target
+            return "is a file, not a folder"
         while not existing.exists():
             existing = existing.parent
         if not existing.is_dir():
-            return f"'{target}' cannot be created: '{existing}' is a regular file, not a folder"
+            return f"cannot be created: '{existing}' is a regular file, not a folder"
         # The one reliable test (os.access says yes to root on a read-only folder).
         with tempfile.TemporaryFile(dir=existing, prefix=".lpc-mdo-write-test-"):
             pass
     except OSError as err:
-        where = "" if existing == target else f" (where '{target}' would be created)"
-        return f"'{existing}' is not writable{where}: {err.strerror}"
+        if existing == target:
+            return f"is not writable: {err.strerror}"
+        return f"cannot be created: '{existing}' is not writable: {err.strerror}"
     return None
 
 
@@ -192,7 +197,7 @@ def check_output_folder(flag, path):
     problem = _folder_problem(path)
     if problem:
         raise CLIError(
-            f"'{flag}' = {os.fspath(path)!r}: {problem}: must be a folder that exists or can be "
+            f"'{flag}' = {os.fspath(path)!r} {problem}: must be a folder that exists or can be "
             "created, and is writable"
         )
 
@@ -222,7 +227,9 @@ def check_output_file(flag, path):
         raise CLIError(f"'{flag}' = {text!r} is a folder: must be {allowed}")
     problem = _folder_problem(target.parent)
     if problem:
-        raise CLIError(f"'{flag}' = {text!r}: its folder {problem}: must be {allowed}")
+        raise CLIError(
+            f"'{flag}' = {text!r}: its folder '{target.parent}' {problem}: must be {allowed}"
+        )
 
 
 def _sqlite_header_problem(path, size):
