@@ -429,6 +429,14 @@ def _preflight(args):
                     )
         if command == "sweep":
             _check_sweep_values(args)
+            if args.mpi:
+                try:
+                    import mpi4py  # noqa: F401
+                except ImportError as err:
+                    raise CLIError(
+                        "'--mpi' needs mpi4py, which is not importable here: must be run with "
+                        "mpi4py installed (pip install 'lpc-mdo[mpi]'), or use --processes N"
+                    ) from err
         if args.start_case is not None:
             open_case_file(
                 "--start-case", args.start_case, need_final=True, vehicle=args.vehicle_spec

@@ -375,6 +375,12 @@ def test_default_ipopt_without_cyipopt(paths, capsys, monkeypatch, no_pyoptspars
     assert main([*argv, "--output-dir", paths["out"]]) == 0
 
 
+def test_mpi_without_mpi4py(paths, capsys, monkeypatch):
+    monkeypatch.setitem(sys.modules, "mpi4py", None)  # import mpi4py raises ImportError
+    rc = main(["sweep", "--start-case", paths["good.sql"], "--mpi", "--output-dir", paths["out"]])
+    _assert_one_line_error(rc, capsys.readouterr(), "--mpi")
+
+
 def test_messages_say_what_is_allowed(paths, capsys, no_pyoptsparse):
     cases = {
         (*FULL, "--max-iter", "-1"): "'--max-iter' = -1 is out of range: must be >= 1",
