@@ -12,7 +12,15 @@ from lpc_mdo.cli import main
 
 def test_analyze_reference_vehicle(tmp_path, capsys):
     assert (
-        main(["analyze", "--output-dir", str(tmp_path / "out"), "--n2", str(tmp_path / "n2.html")])
+        main(
+            [
+                "analyze",
+                "--output-dir",
+                str(tmp_path / "out"),
+                "--n2",
+                str(tmp_path / "figures" / "n2.html"),  # a folder the command creates
+            ]
+        )
         == 0
     )
     text = capsys.readouterr().out
@@ -20,7 +28,7 @@ def test_analyze_reference_vehicle(tmp_path, capsys):
         "15 design conditions, 171 design variables, 96 constraints, 40 linear rotor-speed bounds"
     ) in text
     assert "gross" in text and "minus_1g" in text
-    assert (tmp_path / "n2.html").stat().st_size > 0
+    assert (tmp_path / "figures" / "n2.html").stat().st_size > 0
     assert (tmp_path / "out" / "constraints.md").exists()
     case = om.CaseReader(str(tmp_path / "out" / "cases.sql")).get_case("final")
     # The calibration target (true by construction: W_other is calibrated so that the initial
