@@ -1,11 +1,502 @@
-"""Command-line interface: ``lpc-mdo analyze | optimize | sweep | report``."""
+"""Command-line interface: ``lpc-mdo analyze | optimize | sweep | report``.
+
+A user error (an argument, a vehicle file, a case file or an output path that cannot work) ends
+the command with one line on stderr, ``lpc-mdo: error: <message>``, and exit code 2, before any
+model is built: the message names the argument, its value and what is allowed (the form of
+:mod:`lpc_mdo.checks`). ``--debug`` adds the traceback. An unexpected exception, a bug, still
+prints its traceback, followed by one line asking for a report, and exits with code 1.
+"""
 
 import argparse
 import os
+import sqlite3
 import sys
+import tempfile
+import tomllib
+import traceback
 from pathlib import Path
 
 import numpy as np
+
+from lpc_mdo.checks import check_choice, check_integer, check_number
+
+#: Exit code of a user error (as argparse's own), of a bug, and of Ctrl-C.
+EXIT_USER_ERROR, EXIT_BUG, EXIT_INTERRUPTED = 2, 1, 130
+
+SQLITE_MAGIC = b"SQLite format 3\x00"
+#: Tables every OpenMDAO SqliteRecorder file has.
+RECORDER_TABLES = ("metadata", "driver_iterations", "problem_cases", "global_iterations")
+CASE_FILE_TEXT = (
+    "an OpenMDAO case file (SQLite) written by lpc-mdo optimize or analyze, "
+    "e.g. optimize_out/full.sql"
+)
+OPTIMIZERS = ("IPOPT", "SNOPT", "SLSQP")
+
+
+class CLIError(Exception):
+    """A user error of the command line (the message names the argument, value and allowed)."""
+
+
+class _Parser(argparse.ArgumentParser):
+    """An ArgumentParser whose errors are :class:`CLIError` (one line, no usage block)."""
+
+    def error(self, message):
+        """Raise the parse error as a CLIError; :func:`main` prints it as one line."""
+        raise CLIError(f"{message} (see '{self.prog} --help')")
+
+
+# ------------------------------------------------------------------------------------------------
+# argparse type= validators: each names its argument and raises CLIError.
+
+
+def _integer(flag, lower):
+    """Return an argparse type: an integer >= ``lower``."""
+
+    def parse(text):
+        try:
+            value = int(text)
+        except ValueError:
+            value = text
+        return check_integer(flag, value, lower=lower, error=CLIError)
+
+    parse.__name__ = "integer"
+    return parse
+
+
+def _finite_float(flag):
+    """Return an argparse type: a finite number."""
+
+    def parse(text):
+        try:
+            value = float(text)
+        except ValueError:
+            value = text
+        return check_number(flag, value, error=CLIError)
+
+    parse.__name__ = "number"
+    return parse
+
+
+def _existing(flag, what, folder_ok=False):
+    """Return an argparse type: a path that exists (a file, or also a folder if ``folder_ok``)."""
+
+    def parse(text):
+        path = Path(text)
+        try:
+            exists, is_dir = path.exists(), path.is_dir()
+        except OSError as err:
+            raise CLIError(
+                f"'{flag}' = {text!r} cannot be read ({err.strerror}): must be {what}"
+            ) from err
+        if not exists:
+            raise CLIError(f"'{flag}' = {text!r} does not exist: must be {what}")
+        if is_dir and not folder_ok:
+            raise CLIError(f"'{flag}' = {text!r} is a folder: must be {what}")
+        if not is_dir and not os.access(path, os.R_OK):
+            raise CLIError(f"'{flag}' = {text!r} is not readable: must be {what}")
+        return text
+
+    parse.__name__ = "path"
+    return parse
+
+
+def optimizer_problem(name):
+    """
+    Say why an optimizer cannot run here, or return None if it can.
+
+    Parameters
+    ----------
+    name : str
+        ``'IPOPT'``, ``'SNOPT'`` or ``'SLSQP'``.
+
+    Returns
+    -------
+    str or None
+        What is missing and what to install.
+    """
+    from lpc_mdo.drivers import pyoptsparse_optimizers
+
+    if name == "SLSQP" or name in pyoptsparse_optimizers():
+        return None
+    if name == "SNOPT":
+        return (
+            "SNOPT is reached only through pyoptsparse built with SNOPT, which is not importable "
+            "here (SNOPT is licensed: build pyoptsparse with your SNOPT source, e.g. OpenMDAO's "
+            "build_pyoptsparse), or use IPOPT (pip install 'lpc-mdo[ipopt]') or SLSQP"
+        )
+    try:
+        import cyipopt  # noqa: F401
+    except ImportError:
+        return (
+            "IPOPT needs cyipopt (pip install 'lpc-mdo[ipopt]', or conda-forge cyipopt) or "
+            "pyoptsparse with IPOPT, neither of which is importable here; or use SLSQP"
+        )
+    return None
+
+
+def _optimizer(flag):
+    """Return an argparse type: an optimizer name (any case) that can run here."""
+
+    def parse(text):
+        name = check_choice(flag, text.upper(), OPTIMIZERS, error=CLIError)
+        missing = optimizer_problem(name)
+        if missing:
+            raise CLIError(f"'{flag}' = {text!r} is not available: {missing}")
+        return name
+
+    parse.__name__ = "optimizer"
+    return parse
+
+
+# ------------------------------------------------------------------------------------------------
+# Checks of paths and files, run before any model is built.
+
+
+def _folder_problem(folder):
+    """Say why files cannot be written into a folder (created if missing), or return None.
+
+    The text follows the folder's name: ``is a file, not a folder``, ``cannot be created: ...``,
+    ``is not writable: ...``.
+    """
+    target = Path(folder).absolute()
+    existing = target
+    try:
+        if target.exists() and not target.is_dir():
+            return "is a file, not a folder"
+        while not existing.exists():
+            existing = existing.parent
+        if not existing.is_dir():
+            return f"cannot be created: '{existing}' is a regular file, not a folder"
+        # The one reliable test (os.access says yes to root on a read-only folder).
+        with tempfile.TemporaryFile(dir=existing, prefix=".lpc-mdo-write-test-"):
+            pass
+    except OSError as err:
+        if existing == target:
+            return f"is not writable: {err.strerror}"
+        return f"cannot be created: '{existing}' is not writable: {err.strerror}"
+    return None
+
+
+def check_output_folder(flag, path):
+    """
+    Check that a folder exists or can be created, and that files can be written into it.
+
+    Parameters
+    ----------
+    flag : str
+        The argument, for the message.
+    path : str or os.PathLike
+        The folder (not created here).
+
+    Raises
+    ------
+    CLIError
+        If the path is a file, lies under a regular file, or the folder (or the existing folder
+        it would be created in) is not writable.
+    """
+    problem = _folder_problem(path)
+    if problem:
+        raise CLIError(
+            f"'{flag}' = {os.fspath(path)!r} {problem}: must be a folder that exists or can be "
+            "created, and is writable"
+        )
+
+
+def check_output_file(flag, path):
+    """
+    Check that a file can be written: not a folder, its folder exists or can be created.
+
+    Parameters
+    ----------
+    flag : str
+        The argument, for the message.
+    path : str or os.PathLike
+        The file.
+
+    Raises
+    ------
+    CLIError
+        If the path is a folder or its folder cannot be created or written into.
+    """
+    text = os.fspath(path)
+    target = Path(text).absolute()
+    allowed = (
+        "a file name (e.g. n2.html) in a folder that exists or can be created, and is writable"
+    )
+    if target.is_dir():
+        raise CLIError(f"'{flag}' = {text!r} is a folder: must be {allowed}")
+    problem = _folder_problem(target.parent)
+    if problem:
+        raise CLIError(
+            f"'{flag}' = {text!r}: its folder '{target.parent}' {problem}: must be {allowed}"
+        )
+
+
+def _sqlite_header_problem(path, size):
+    """Say what is wrong with an SQLite file's header or size, or return None."""
+    with open(path, "rb") as fh:
+        header = fh.read(100)
+    if len(header) < 100 or not header.startswith(SQLITE_MAGIC):
+        return None
+    page_size = int.from_bytes(header[16:18], "big")
+    page_size = 65536 if page_size == 1 else page_size
+    pages = int.from_bytes(header[28:32], "big")
+    # The header's page count is valid when the "version-valid-for" number equals the change
+    # counter (SQLite file format, section 1.3.7); the file then holds pages * page_size bytes.
+    if page_size < 512 or size % page_size:
+        return f"is truncated or damaged ({size} bytes, not whole pages of {page_size} bytes)"
+    if header[24:28] == header[92:96] and size < pages * page_size:
+        return f"is truncated ({size} bytes of the {pages * page_size} its header declares)"
+    return None
+
+
+def _not_sqlite_problem(path, head):
+    """Say what a file that is not SQLite seems to be."""
+    if not head:
+        return "is empty (0 bytes)"
+    try:
+        text = Path(path).read_text(encoding="utf-8-sig")
+        parsed = tomllib.loads(text)
+    except (UnicodeDecodeError, tomllib.TOMLDecodeError):
+        return f"is not an SQLite file (it starts with {head[:16]!r})"
+    if parsed:
+        return "is a TOML file (a vehicle file belongs to --vehicle), not an SQLite case file"
+    return "is a text file, not an SQLite case file"
+
+
+def open_case_file(flag, path, need_final=False, vehicle=None, given=None):
+    """
+    Check that a file is an OpenMDAO case file that holds what a command needs; open it.
+
+    The checks, in order: an SQLite file (its first 16 bytes), not truncated (its size against
+    the page count of its header), the tables of an OpenMDAO recorder, readable by
+    ``om.CaseReader``, at least one case; with ``need_final`` the problem case ``'final'``
+    (what :func:`lpc_mdo.warm_start.solve_stage` starts from); with ``vehicle`` that case holds
+    the vehicle's design variables in their shapes.
+
+    Parameters
+    ----------
+    flag : str
+        The argument, for the message.
+    path : str or os.PathLike
+        The file.
+    need_final : bool
+        Require the problem case ``'final'``.
+    vehicle : Vehicle or None
+        Require design variables of this vehicle in the ``'final'`` case.
+    given : str or None
+        The folder the user gave, if ``path`` was found in it (for the message).
+
+    Returns
+    -------
+    openmdao CaseReader
+        The reader of the file.
+
+    Raises
+    ------
+    CLIError
+        Naming the argument, the file and what is wrong.
+    """
+    import openmdao.api as om
+
+    text = os.fspath(path)
+    what = CASE_FILE_TEXT
+
+    def fail(problem):
+        named = f"{given!r}: its case file {text!r}" if given else repr(text)
+        return CLIError(f"'{flag}' = {named} {problem}: must be {what}")
+
+    size = os.path.getsize(text)
+    with open(text, "rb") as fh:
+        head = fh.read(16)
+    if head != SQLITE_MAGIC:
+        raise fail(_not_sqlite_problem(text, head))
+    problem = _sqlite_header_problem(text, size)
+    if problem:
+        raise fail(problem)
+    try:
+        uri = Path(text).absolute().as_uri() + "?mode=ro"
+        with sqlite3.connect(uri, uri=True) as con:
+            tables = {row[0] for row in con.execute("SELECT name FROM sqlite_master")}
+        con.close()
+    except sqlite3.Error as err:
+        raise fail(f"is a damaged SQLite file ({err})") from err
+    missing = [t for t in RECORDER_TABLES if t not in tables]
+    if missing:
+        listed = ", ".join(sorted(tables)) or "none"
+        raise fail(f"is an SQLite database but not an OpenMDAO case file (its tables: {listed})")
+    try:
+        reader = om.CaseReader(text)
+        problem_cases = reader.list_cases("problem", recurse=False, out_stream=None)
+        driver_cases = reader.list_cases("driver", recurse=False, out_stream=None)
+        final = reader.get_case("final") if "final" in problem_cases else None
+    except Exception as err:  # noqa: BLE001 - any failure to read the user's file is this error
+        raise fail(f"cannot be read by om.CaseReader ({type(err).__name__}: {err})") from err
+    if not problem_cases and not driver_cases:
+        raise fail("holds no cases (the run that wrote it recorded none)")
+    if need_final and final is None:
+        others = f" (problem cases: {', '.join(problem_cases)})" if problem_cases else ""
+        raise fail(
+            f"holds {len(driver_cases)} driver case(s) but not the problem case 'final'{others}, "
+            "which a start loads (lpc-mdo records it when a run ends)"
+        )
+    if vehicle is not None and final is not None:
+        found = 0
+        for name, dv in vehicle.design_variables.items():
+            try:
+                value = final.get_val(name)
+            except KeyError:
+                continue
+            found += 1
+            if np.size(value) != dv.size:
+                raise fail(
+                    f"holds design variable '{name}' with {np.size(value)} value(s) where the "
+                    f"vehicle has {dv.size} (a run of another vehicle file?)"
+                )
+        if not found:
+            raise fail(
+                f"holds none of the vehicle's {len(vehicle.design_variables)} design variables "
+                "(not an lpc-mdo run)"
+            )
+    return reader
+
+
+def load_vehicle_argument(flag, path):
+    """
+    Load and validate the vehicle file of an argument (None: the reference vehicle).
+
+    Parameters
+    ----------
+    flag : str
+        The argument, for the message.
+    path : str or None
+        The vehicle file.
+
+    Returns
+    -------
+    Vehicle
+        The validated vehicle.
+
+    Raises
+    ------
+    VehicleSpecError
+        For an invalid vehicle file (:func:`lpc_mdo.vehicle.load_vehicle`).
+    CLIError
+        For a file that is not text (e.g. a case file given as a vehicle file).
+    """
+    from lpc_mdo.vehicle import VehicleSpecError, load_vehicle
+
+    allowed = "a vehicle TOML file (UTF-8 text), e.g. a copy of lpc_mdo/data/lpc_reference.toml"
+    if path is not None:
+        with open(path, "rb") as fh:
+            head = fh.read(16)
+        if head == SQLITE_MAGIC:
+            raise CLIError(
+                f"'{flag}' = {path!r} is an SQLite file (a case file belongs to --start-case): "
+                f"must be {allowed}"
+            )
+    try:
+        return load_vehicle(path)
+    except VehicleSpecError as err:
+        label = "the reference vehicle" if path is None else repr(path)
+        raise VehicleSpecError(f"'{flag}' = {label}: {err}") from err
+    except UnicodeDecodeError as err:
+        raise CLIError(
+            f"'{flag}' = {path!r} is not UTF-8 text (byte {err.start}): must be {allowed}"
+        ) from err
+
+
+def _preflight(args):
+    """Check every path and file of the command before any model is built."""
+    command = args.command
+    args.vehicle_spec = load_vehicle_argument("--vehicle", args.vehicle)
+    check_output_folder("--output-dir", args.output_dir)
+    if command == "analyze" and args.n2:
+        check_output_file("--n2", args.n2)
+    if command in ("optimize", "sweep"):
+        from lpc_mdo.warm_start import default_optimizer
+
+        if args.optimizer is None:  # a given --optimizer was checked by its type
+            needed = {default_optimizer(args.problem)}
+            if args.problem == "sequence":
+                needed = {"IPOPT", default_optimizer("full")}
+            for name in sorted(needed):
+                missing = optimizer_problem(name)
+                if missing:
+                    raise CLIError(
+                        f"'--optimizer' = None (the default: {name} for --problem "
+                        f"{args.problem}) is not available: {missing}"
+                    )
+        if command == "sweep":
+            _check_sweep_values(args)
+            if args.mpi:
+                try:
+                    import mpi4py  # noqa: F401
+                except ImportError as err:
+                    raise CLIError(
+                        "'--mpi' needs mpi4py, which is not importable here: must be run with "
+                        "mpi4py installed (pip install 'lpc-mdo[mpi]'), or use --processes N"
+                    ) from err
+        if args.start_case is not None:
+            open_case_file(
+                "--start-case", args.start_case, need_final=True, vehicle=args.vehicle_spec
+            )
+    if command == "report":
+        _check_report_cases(args.cases)
+
+
+def _check_sweep_values(args):
+    from lpc_mdo.sweeps import SWEEP_PARAMETERS, sweep_vehicle
+
+    if not args.values:
+        return
+    if args.parameter == "all":
+        raise CLIError(
+            f"'--values' = {args.values} needs one '--parameter': must be used with "
+            f"--parameter {' or --parameter '.join(SWEEP_PARAMETERS)}"
+        )
+    for value in args.values:
+        try:
+            sweep_vehicle(args.vehicle_spec, args.parameter, value)
+        except ValueError as err:
+            reason = str(err).removeprefix("sweep: ")
+            raise CLIError(
+                f"'--values' = {value:g} is out of range for --parameter {args.parameter} "
+                f"({reason})"
+            ) from err
+        if args.parameter == "final_soc":  # a limit at or above the start is infeasible
+            initial = args.vehicle_spec.battery.initial_soc
+            check_number(
+                "--values",
+                value,
+                upper=initial,
+                upper_open=True,
+                allowed=f"below the vehicle's battery.initial_soc = {initial:g}",
+                error=CLIError,
+            )
+
+
+def _check_report_cases(cases):
+    from lpc_mdo.post.report import _CASE_SUFFIXES, find_case_files
+
+    given = None
+    if Path(cases).is_dir():
+        given = cases
+        files = [path for _, path in find_case_files(cases)]
+        if not files:
+            raise CLIError(
+                f"'cases' = {cases!r} is a folder without case files (no SQLite file named "
+                f"*{', *'.join(_CASE_SUFFIXES)} in it or its subfolders): must be {CASE_FILE_TEXT}"
+                ", or a folder holding such files"
+            )
+    else:
+        files = [cases]
+    for path in files:
+        open_case_file("cases", path, given=given)
+
+
+# ------------------------------------------------------------------------------------------------
+# The commands.
 
 
 def _analyze(args):
@@ -19,7 +510,7 @@ def _analyze(args):
     out.mkdir(parents=True, exist_ok=True)
     case_file = out / "cases.sql"
     prob = build_analysis_problem(
-        args.vehicle, recorder_path=case_file, static_margin=not args.no_static_margin
+        args.vehicle_spec, recorder_path=case_file, static_margin=not args.no_static_margin
     )
     prob.run_model()
     prob.record("final")
@@ -78,6 +569,7 @@ def _analyze(args):
     print(f"\nconstraint table (paper Table 7 layout): {out / 'constraints.md'}")
     print(f"case file: {case_file}")
     if args.n2:
+        Path(args.n2).absolute().parent.mkdir(parents=True, exist_ok=True)
         om.n2(str(case_file), outfile=str(args.n2), show_browser=False)
         print(f"N2 diagram: {args.n2}")
     return 0
@@ -92,7 +584,7 @@ def _optimize(args):
     if args.quiet:
         settings["print_level"] = 0
     common = dict(
-        vehicle=args.vehicle,
+        vehicle=args.vehicle_spec,
         static_margin=not args.no_static_margin,
         driver_settings=settings,
         trim_first=not args.no_trim,
@@ -136,10 +628,7 @@ def _sweep(args):
     from lpc_mdo.sweeps import SWEEP_PARAMETERS, run_sweep
 
     parameters = list(SWEEP_PARAMETERS) if args.parameter == "all" else [args.parameter]
-    values = {parameters[0]: args.values} if args.values else None
-    if args.values and len(parameters) > 1:
-        print("lpc-mdo: --values needs a single --parameter", file=sys.stderr)
-        return 2
+    values = {parameters[0]: args.values} if args.values else None  # checked by _preflight
     margins = {"on": (True,), "off": (False,), "both": (True, False)}[args.static_margin]
     points = run_sweep(
         args.output_dir,
@@ -168,22 +657,54 @@ def _sweep(args):
 
 def _report(args):
     from lpc_mdo.post.report import ReportSpec, write_report
-    from lpc_mdo.vehicle import load_vehicle
 
-    spec = ReportSpec(vehicle=load_vehicle(args.vehicle))
+    spec = ReportSpec(vehicle=args.vehicle_spec)
     index = write_report(args.cases, args.output_dir, spec)
     print(f"report: {index}")
     return 0
 
 
-def main(argv=None):
-    """Entry point of the ``lpc-mdo`` command."""
-    os.environ.setdefault("OPENMDAO_REPORTS", "0")
-    parser = argparse.ArgumentParser(prog="lpc-mdo", description=__doc__)
+def _add_debug(parser, default):
+    parser.add_argument(
+        "--debug",
+        action="store_true",
+        default=default,
+        help="show the traceback of an error (for a bug report)",
+    )
+
+
+def build_parser():
+    """
+    Return the argument parser of the ``lpc-mdo`` command.
+
+    Returns
+    -------
+    argparse.ArgumentParser
+        Its errors raise :class:`CLIError`.
+    """
+    from lpc_mdo.problems import PROBLEM_NAMES
+    from lpc_mdo.sweeps import SWEEP_PARAMETERS
+
+    parser = _Parser(
+        prog="lpc-mdo",
+        description="Analyze, optimize, sweep and report the NASA lift-plus-cruise eVTOL.",
+    )
+    _add_debug(parser, False)
     sub = parser.add_subparsers(dest="command", required=True)
-    analyze = sub.add_parser("analyze", help="analyze a vehicle's design conditions")
+    vehicle_type = _existing("--vehicle", "a vehicle TOML file")
+    positive = {flag: _integer(flag, 1) for flag in ("--max-iter", "--processes")}
+
+    def add_command(name, help):
+        command = sub.add_parser(name, help=help)
+        _add_debug(command, argparse.SUPPRESS)  # also accepted after the command
+        return command
+
+    analyze = add_command("analyze", "analyze a vehicle's design conditions")
     analyze.add_argument(
-        "--vehicle", default=None, help="vehicle TOML file (default: the reference vehicle)"
+        "--vehicle",
+        type=vehicle_type,
+        default=None,
+        help="vehicle TOML file (default: the reference vehicle)",
     )
     analyze.add_argument(
         "--output-dir",
@@ -198,10 +719,9 @@ def main(argv=None):
     )
     analyze.set_defaults(func=_analyze)
 
-    from lpc_mdo.problems import PROBLEM_NAMES
-
-    optimize = sub.add_parser(
-        "optimize", help="solve a subproblem, the full problem, or the warm-start sequence"
+    start_case_type = _existing("--start-case", CASE_FILE_TEXT)
+    optimize = add_command(
+        "optimize", "solve a subproblem, the full problem, or the warm-start sequence"
     )
     optimize.add_argument(
         "--problem",
@@ -211,18 +731,24 @@ def main(argv=None):
     )
     optimize.add_argument(
         "--optimizer",
+        type=_optimizer("--optimizer"),
         default=None,
-        choices=("IPOPT", "SNOPT", "SLSQP"),
+        choices=OPTIMIZERS,
         help="default: IPOPT for the presizing and subproblems, SQP (SNOPT "
         "if pyoptsparse has it, else SLSQP) for full and baseline",
     )
-    optimize.add_argument("--max-iter", type=int, default=200, help="iteration limit")
-    optimize.add_argument("--vehicle", default=None, help="vehicle TOML file")
+    optimize.add_argument(
+        "--max-iter", type=positive["--max-iter"], default=200, help="iteration limit"
+    )
+    optimize.add_argument("--vehicle", type=vehicle_type, default=None, help="vehicle TOML file")
     optimize.add_argument(
         "--no-static-margin", action="store_true", help="leave the static-margin constraint out"
     )
     optimize.add_argument(
-        "--start-case", default=None, help="case file whose final case gives the starting design"
+        "--start-case",
+        type=start_case_type,
+        default=None,
+        help="case file whose final case gives the starting design",
     )
     optimize.add_argument(
         "--output-dir", default="optimize_out", help="folder for case files and run statistics"
@@ -235,22 +761,25 @@ def main(argv=None):
     )
     optimize.set_defaults(func=_optimize)
 
-    sweep = sub.add_parser("sweep", help="parameter sweeps of the full problem (paper Sec. V.C)")
+    sweep = add_command("sweep", "parameter sweeps of the full problem (paper Sec. V.C)")
     sweep.add_argument(
         "--start-case",
+        type=start_case_type,
         required=True,
         help="case file whose final case starts every chain, e.g. the sequence's full.sql",
     )
-    sweep.add_argument("--parameter", default="all", choices=("energy_density", "final_soc", "all"))
+    sweep.add_argument("--parameter", default="all", choices=(*SWEEP_PARAMETERS, "all"))
     sweep.add_argument(
         "--values",
-        type=float,
+        type=_finite_float("--values"),
         nargs="+",
         default=None,
         help="values of the one --parameter (default: the paper's five)",
     )
     sweep.add_argument("--static-margin", default="both", choices=("on", "off", "both"))
-    sweep.add_argument("--processes", type=int, default=2, help="local worker processes")
+    sweep.add_argument(
+        "--processes", type=positive["--processes"], default=2, help="local worker processes"
+    )
     sweep.add_argument(
         "--mpi",
         action="store_true",
@@ -262,44 +791,102 @@ def main(argv=None):
         choices=PROBLEM_NAMES,
         help="problem each point solves (default: full)",
     )
-    sweep.add_argument("--max-iter", type=int, default=200, help="iteration limit per point")
+    sweep.add_argument(
+        "--max-iter", type=positive["--max-iter"], default=200, help="iteration limit per point"
+    )
     sweep.add_argument(
         "--optimizer",
+        type=_optimizer("--optimizer"),
         default=None,
-        choices=("IPOPT", "SNOPT", "SLSQP"),
+        choices=OPTIMIZERS,
         help="default: as optimize (SNOPT if pyoptsparse has it, else SLSQP)",
     )
-    sweep.add_argument("--vehicle", default=None, help="vehicle TOML file")
+    sweep.add_argument("--vehicle", type=vehicle_type, default=None, help="vehicle TOML file")
     sweep.add_argument("--output-dir", default="sweep_out", help="folder for case files")
     sweep.set_defaults(func=_sweep)
 
-    report = sub.add_parser("report", help="tables and figures from case files")
-    report.add_argument("cases", help="a case file or a folder of case files")
+    report = add_command("report", "tables and figures from case files")
+    report.add_argument(
+        "cases",
+        type=_existing("cases", "a case file or a folder of case files", folder_ok=True),
+        help="a case file or a folder of case files",
+    )
     report.add_argument("--output-dir", default="report", help="report folder")
     report.add_argument(
         "--vehicle",
+        type=vehicle_type,
         default=None,
         help="vehicle file the runs were made with (its conditions and trim "
         "rows; default: the reference vehicle)",
     )
     report.set_defaults(func=_report)
+    return parser
 
-    args = parser.parse_args(argv)
+
+def _user_error(err):
+    """Whether an exception is a user error: CLIError, VehicleSpecError, lpc_mdo's ValueError."""
     from lpc_mdo.vehicle import VehicleSpecError
 
-    start_case = getattr(args, "start_case", None)
-    if start_case is not None and not os.path.isfile(start_case):
-        print(
-            f"lpc-mdo: --start-case {start_case!r} is not a file (a case file written by "
-            "lpc-mdo optimize, e.g. optimize_out/full.sql)",
-            file=sys.stderr,
-        )
-        return 2
+    if isinstance(err, (CLIError, VehicleSpecError)):
+        return True
+    if not isinstance(err, ValueError) or err.__traceback__ is None:
+        return False
+    # A ValueError raised by lpc_mdo's own checks (which name the field), not by a library.
+    package = Path(__file__).resolve().parent
+    raised_in = Path(traceback.extract_tb(err.__traceback__)[-1].filename).resolve()
+    return package in raised_in.parents
+
+
+def _one_line(err):
+    return " ".join(part.strip() for part in str(err).splitlines() if part.strip())
+
+
+def main(argv=None):
+    """
+    Run the ``lpc-mdo`` command.
+
+    Parameters
+    ----------
+    argv : list of str or None
+        The arguments (None: ``sys.argv[1:]``).
+
+    Returns
+    -------
+    int
+        Exit code: 0 success, 1 an optimization that did not converge or a bug (with its
+        traceback), 2 a user error (one line ``lpc-mdo: error: ...``), 130 interrupted.
+    """
+    os.environ.setdefault("OPENMDAO_REPORTS", "0")
+    argv = sys.argv[1:] if argv is None else list(argv)
+    debug = "--debug" in argv
     try:
+        args = build_parser().parse_args(argv)
+        debug = args.debug
+        _preflight(args)
         return args.func(args)
-    except VehicleSpecError as err:
-        print(f"lpc-mdo: error in vehicle file: {err}", file=sys.stderr)
-        return 2
+    except KeyboardInterrupt:
+        print("lpc-mdo: interrupted", file=sys.stderr)
+        return EXIT_INTERRUPTED
+    except (CLIError, ValueError) as err:  # VehicleSpecError is a ValueError
+        if not _user_error(err):
+            return _bug(err)
+        if debug:
+            traceback.print_exc()
+        print(f"lpc-mdo: error: {_one_line(err)}", file=sys.stderr)
+        return EXIT_USER_ERROR
+    except Exception as err:  # not hidden: the traceback, then what to do with it
+        return _bug(err)
+
+
+def _bug(err):
+    traceback.print_exc()
+    print(
+        f"lpc-mdo: internal error: {type(err).__name__}: {_one_line(err)} - this is a bug of "
+        "lpc-mdo (or an input its checks miss): please report it with the command and the "
+        "traceback above",
+        file=sys.stderr,
+    )
+    return EXIT_BUG
 
 
 if __name__ == "__main__":

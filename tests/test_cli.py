@@ -12,7 +12,15 @@ from lpc_mdo.cli import main
 
 def test_analyze_reference_vehicle(tmp_path, capsys):
     assert (
-        main(["analyze", "--output-dir", str(tmp_path / "out"), "--n2", str(tmp_path / "n2.html")])
+        main(
+            [
+                "analyze",
+                "--output-dir",
+                str(tmp_path / "out"),
+                "--n2",
+                str(tmp_path / "figures" / "n2.html"),  # a folder the command creates
+            ]
+        )
         == 0
     )
     text = capsys.readouterr().out
@@ -20,7 +28,7 @@ def test_analyze_reference_vehicle(tmp_path, capsys):
         "15 design conditions, 171 design variables, 96 constraints, 40 linear rotor-speed bounds"
     ) in text
     assert "gross" in text and "minus_1g" in text
-    assert (tmp_path / "n2.html").stat().st_size > 0
+    assert (tmp_path / "figures" / "n2.html").stat().st_size > 0
     assert (tmp_path / "out" / "constraints.md").exists()
     case = om.CaseReader(str(tmp_path / "out" / "cases.sql")).get_case("final")
     # The calibration target (true by construction: W_other is calibrated so that the initial
@@ -47,12 +55,21 @@ def test_missing_start_case_is_a_clear_error(tmp_path, capsys):
         ["sweep", "--start-case", missing],
     ):
         assert main(argv) == 2
-        assert f"--start-case '{missing}' is not a file" in capsys.readouterr().err
+        assert f"'--start-case' = '{missing}' does not exist" in capsys.readouterr().err
 
 
-def test_unknown_command_exits():
-    with pytest.raises(SystemExit):
-        main(["fly"])
+def test_unknown_command_is_a_one_line_error(capsys):
+    assert main(["fly"]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("lpc-mdo: error: argument command: invalid choice: 'fly'")
+    assert err.count("\n") == 1
+
+
+def test_help_exits_with_zero(capsys):
+    with pytest.raises(SystemExit) as exc:
+        main(["analyze", "--help"])
+    assert exc.value.code == 0
+    assert "--n2" in capsys.readouterr().out
 
 
 def test_optimize_subproblem_4_and_report(tmp_path, capsys):

@@ -1,0 +1,483 @@
+"""Bad command-line uses of ``lpc-mdo``: each is one line ``lpc-mdo: error: ...``, exit code 2.
+
+Issue 18 items 2 and 3. Every misuse is caught before any model is built: the commands
+themselves (``_analyze``, ``_optimize``, ``_sweep``, ``_report``) are replaced by stubs that fail
+the test if they are reached, so a misuse that only fails later is a failure here, and no test
+builds the model. The start-case files are small OpenMDAO case files written here: one holds the
+reference vehicle's design variables in a problem case 'final' (what a start loads,
+:func:`lpc_mdo.warm_start.solve_stage`), the others are broken in one way each.
+"""
+
+import os
+import shutil
+import sqlite3
+import subprocess
+import sys
+import tempfile
+from importlib import resources
+from pathlib import Path
+
+import numpy as np
+import openmdao.api as om
+import pytest
+
+from lpc_mdo import cli
+from lpc_mdo.checks import check_range
+from lpc_mdo.cli import main
+from lpc_mdo.vehicle import load_vehicle
+
+REFERENCE_TOML = resources.files("lpc_mdo") / "data" / "lpc_reference.toml"
+
+
+def _design_variable_problem(path, sizes, driver_cases=True, final=True):
+    """Record a case file whose outputs are design variables named as the reference vehicle's."""
+    prob = om.Problem(reports=False)
+    ivc = prob.model.add_subsystem("design", om.IndepVarComp(), promotes=["*"])
+    for name, size in sizes.items():
+        ivc.add_output(name, np.ones(size))
+    prob.model.add_subsystem(
+        "objective", om.ExecComp("y = 2.0 * x", x=np.ones(1)), promotes_outputs=["y"]
+    )
+    first = next(iter(sizes))
+    prob.model.connect(first, "objective.x", src_indices=[0])
+    prob.model.add_design_var(first, lower=-10.0, upper=10.0)
+    prob.model.add_objective("y")
+    recorder = om.SqliteRecorder(str(path))
+    if driver_cases:
+        prob.driver = om.ScipyOptimizeDriver(optimizer="SLSQP", disp=False, maxiter=3)
+        prob.driver.add_recorder(recorder)
+    if final or not driver_cases:  # a problem recorder writes the file even with no case
+        prob.add_recorder(recorder)
+    prob.setup()
+    prob.run_driver() if driver_cases else prob.final_setup()
+    if final:
+        prob.record("final")
+    prob.cleanup()
+
+
+@pytest.fixture(scope="module")
+def files(tmp_path_factory):
+    """Case files, good and broken, and other inputs; name -> path (str)."""
+    root = tmp_path_factory.mktemp("inputs")
+    vehicle = load_vehicle(None)
+    sizes = {name: dv.size for name, dv in vehicle.design_variables.items()}
+    paths = {}
+
+    def path(name):
+        paths[name] = str(root / name)
+        return root / name
+
+    _design_variable_problem(path("good.sql"), sizes)
+    _design_variable_problem(path("driver_only.sql"), sizes, final=False)
+    _design_variable_problem(path("zero_cases.sql"), sizes, driver_cases=False, final=False)
+    _design_variable_problem(path("foreign.sql"), {"x": 1, "z": 2})
+    _design_variable_problem(path("wrong_shape.sql"), {**sizes, "rotor_radius": 3})
+    good = (root / "good.sql").read_bytes()
+    page = int.from_bytes(good[16:18], "big")
+    assert len(good) % page == 0 and len(good) // page > 4
+    path("truncated.sql").write_bytes(good[: len(good) // 2 + 100])
+    path("truncated_at_page.sql").write_bytes(good[: 2 * page])
+    damaged = bytearray(good)
+    for i in range(200, len(damaged), 50):
+        damaged[i] ^= 0xFF
+    path("corrupted.sql").write_bytes(bytes(damaged))
+    path("random_bytes.sql").write_bytes(np.random.default_rng(18).bytes(5000))
+    path("empty.sql").write_bytes(b"")
+    with sqlite3.connect(path("not_a_recorder.sqlite")) as con:
+        con.execute("CREATE TABLE measurements (x REAL)")
+    con.close()
+    path("vehicle.toml").write_text(REFERENCE_TOML.read_text(encoding="utf-8"), encoding="utf-8")
+    text = REFERENCE_TOML.read_text(encoding="utf-8")
+    path("unknown_key.toml").write_text(text.replace("[wing]\n", "[wing]\nspam = 1\n", 1))
+    path("not_toml.toml").write_text("[wing\narea = \n")
+    path("binary.toml").write_bytes(b"\xff\xfe\x00\x81" + os.urandom(64))
+    path("a_file.txt").write_text("a regular file\n")
+    path("empty_folder").mkdir()
+    path("folder_with_empty_run").mkdir()
+    shutil.copy(paths["zero_cases.sql"], root / "folder_with_empty_run" / "cases.sql")
+    path("good_folder").mkdir()
+    shutil.copy(paths["good.sql"], root / "good_folder" / "cases.sql")
+    paths["missing"] = str(root / "missing" / "nothing.sql")
+    paths["root"] = str(root)
+    return paths
+
+
+def _unwritable_folder(tmp_path):
+    """Return a folder no file can be created in: mode 0o555, or for root a system folder."""
+    folder = tmp_path / "read_only"
+    folder.mkdir()
+    folder.chmod(0o555)
+    for candidate in (folder, Path("/sys"), Path("/proc/self")):
+        try:
+            with tempfile.TemporaryFile(dir=candidate):
+                pass
+        except OSError:
+            return str(candidate)
+    return None  # root on a system without a read-only folder
+
+
+@pytest.fixture
+def paths(files, tmp_path):
+    """``files`` plus per-test paths: an unwritable folder and a fresh output folder."""
+    out = dict(files)
+    out["unwritable"] = _unwritable_folder(tmp_path)
+    out["out"] = str(tmp_path / "out")
+    yield out
+    (tmp_path / "read_only").chmod(0o755)
+
+
+@pytest.fixture(autouse=True)
+def commands_must_not_start(monkeypatch):
+    """Replace the commands: a misuse must be caught before any long work starts."""
+    reached = []
+
+    def stub(args):
+        reached.append(args)
+        return 0
+
+    for name in ("_analyze", "_optimize", "_sweep", "_report"):
+        monkeypatch.setattr(cli, name, stub)
+    return reached
+
+
+@pytest.fixture
+def no_pyoptsparse(monkeypatch):
+    """Behave as if pyoptsparse were not installed (whether it is or not)."""
+    import lpc_mdo.drivers
+
+    monkeypatch.setattr(lpc_mdo.drivers, "pyoptsparse_optimizers", lambda: ())
+
+
+# (id, argv with {placeholders} of the ``paths`` fixture, the argument the message names)
+FULL = ["optimize", "--problem", "full", "--output-dir", "{out}"]
+SWEEP = ["sweep", "--output-dir", "{out}"]
+MISUSES = [
+    # --start-case files
+    ("start_case_corrupted", [*FULL, "--start-case", "{corrupted.sql}"], "--start-case"),
+    ("start_case_truncated", [*FULL, "--start-case", "{truncated.sql}"], "--start-case"),
+    (
+        "start_case_truncated_page",
+        [*FULL, "--start-case", "{truncated_at_page.sql}"],
+        "--start-case",
+    ),
+    ("start_case_not_recorder", [*FULL, "--start-case", "{not_a_recorder.sqlite}"], "--start-case"),
+    ("start_case_zero_cases", [*FULL, "--start-case", "{zero_cases.sql}"], "--start-case"),
+    ("start_case_no_final", [*FULL, "--start-case", "{driver_only.sql}"], "--start-case"),
+    ("start_case_toml", [*FULL, "--start-case", "{vehicle.toml}"], "--start-case"),
+    ("start_case_empty_file", [*FULL, "--start-case", "{empty.sql}"], "--start-case"),
+    ("start_case_random_bytes", [*FULL, "--start-case", "{random_bytes.sql}"], "--start-case"),
+    ("start_case_other_model", [*FULL, "--start-case", "{foreign.sql}"], "--start-case"),
+    ("start_case_wrong_shape", [*FULL, "--start-case", "{wrong_shape.sql}"], "--start-case"),
+    ("start_case_missing", [*FULL, "--start-case", "{missing}"], "--start-case"),
+    ("start_case_folder", [*FULL, "--start-case", "{empty_folder}"], "--start-case"),
+    ("sequence_start_case_zero", ["optimize", "--start-case", "{zero_cases.sql}"], "--start-case"),
+    ("sweep_start_case_zero", [*SWEEP, "--start-case", "{zero_cases.sql}"], "--start-case"),
+    ("sweep_start_case_toml", [*SWEEP, "--start-case", "{vehicle.toml}"], "--start-case"),
+    ("sweep_without_start_case", SWEEP, "--start-case"),
+    # output folders and files
+    ("analyze_unwritable_output", ["analyze", "--output-dir", "{unwritable}/out"], "--output-dir"),
+    ("analyze_output_under_file", ["analyze", "--output-dir", "{a_file.txt}/out"], "--output-dir"),
+    ("optimize_output_is_file", ["optimize", "--output-dir", "{a_file.txt}"], "--output-dir"),
+    (
+        "sweep_output_under_file",
+        ["sweep", "--start-case", "{good.sql}", "--output-dir", "{a_file.txt}/sweep"],
+        "--output-dir",
+    ),
+    (
+        "report_unwritable_output",
+        ["report", "{good.sql}", "--output-dir", "{unwritable}"],
+        "--output-dir",
+    ),
+    ("n2_under_file", ["analyze", "--output-dir", "{out}", "--n2", "{a_file.txt}/n2.html"], "--n2"),
+    ("n2_is_folder", ["analyze", "--output-dir", "{out}", "--n2", "{empty_folder}"], "--n2"),
+    ("n2_unwritable", ["analyze", "--output-dir", "{out}", "--n2", "{unwritable}/n2.html"], "--n2"),
+    # integers
+    ("max_iter_negative", [*FULL, "--max-iter", "-1"], "--max-iter"),
+    ("max_iter_zero", [*FULL, "--max-iter", "0"], "--max-iter"),
+    ("max_iter_not_integer", [*FULL, "--max-iter", "2.5"], "--max-iter"),
+    ("max_iter_text", [*FULL, "--max-iter", "many"], "--max-iter"),
+    (
+        "sweep_processes_zero",
+        [*SWEEP, "--start-case", "{good.sql}", "--processes", "0"],
+        "--processes",
+    ),
+    (
+        "sweep_max_iter_negative",
+        [*SWEEP, "--start-case", "{good.sql}", "--max-iter", "-5"],
+        "--max-iter",
+    ),
+    # vehicle files
+    ("vehicle_missing", ["analyze", "--vehicle", "{missing}"], "--vehicle"),
+    ("vehicle_folder", ["analyze", "--vehicle", "{empty_folder}"], "--vehicle"),
+    ("vehicle_is_case_file", [*FULL, "--vehicle", "{good.sql}"], "--vehicle"),
+    ("vehicle_binary", ["analyze", "--vehicle", "{binary.toml}"], "--vehicle"),
+    ("vehicle_unknown_key", ["analyze", "--vehicle", "{unknown_key.toml}"], "--vehicle"),
+    ("vehicle_not_toml", ["report", "{good.sql}", "--vehicle", "{not_toml.toml}"], "--vehicle"),
+    # report inputs
+    ("report_missing_folder", ["report", "{missing}", "--output-dir", "{out}"], "'cases'"),
+    ("report_empty_folder", ["report", "{empty_folder}", "--output-dir", "{out}"], "'cases'"),
+    (
+        "report_zero_case_run",
+        ["report", "{folder_with_empty_run}", "--output-dir", "{out}"],
+        "'cases'",
+    ),
+    ("report_toml", ["report", "{vehicle.toml}", "--output-dir", "{out}"], "'cases'"),
+    ("report_corrupted", ["report", "{corrupted.sql}", "--output-dir", "{out}"], "'cases'"),
+    # optimizers
+    ("optimizer_snopt_missing", [*FULL, "--optimizer", "SNOPT"], "--optimizer"),
+    (
+        "sweep_optimizer_snopt",
+        [*SWEEP, "--start-case", "{good.sql}", "--optimizer", "snopt"],
+        "--optimizer",
+    ),
+    ("optimizer_unknown", [*FULL, "--optimizer", "NLOPT"], "--optimizer"),
+    # sweep values
+    (
+        "values_without_parameter",
+        [*SWEEP, "--start-case", "{good.sql}", "--values", "300"],
+        "--values",
+    ),
+    (
+        "values_negative_energy_density",
+        [*SWEEP, "--start-case", "{good.sql}", "--parameter", "energy_density", "--values", "-300"],
+        "--values",
+    ),
+    (
+        "values_final_soc_above_one",
+        [*SWEEP, "--start-case", "{good.sql}", "--parameter", "final_soc", "--values", "1.5"],
+        "--values",
+    ),
+    (
+        "values_nan",
+        [*SWEEP, "--start-case", "{good.sql}", "--parameter", "final_soc", "--values", "nan"],
+        "--values",
+    ),
+    ("values_text", [*SWEEP, "--start-case", "{good.sql}", "--values", "high"], "--values"),
+    # the command line itself
+    ("unknown_command", ["fly"], "command"),
+    ("unknown_problem", ["optimize", "--problem", "subproblem_9"], "--problem"),
+    ("unknown_option", ["analyze", "--bogus"], "--bogus"),
+    (
+        "unknown_parameter",
+        [*SWEEP, "--start-case", "{good.sql}", "--parameter", "wing_area"],
+        "--parameter",
+    ),
+]
+
+
+def _assert_one_line_error(rc, captured, argument):
+    """Assert exit code 2, no traceback, one stderr line naming ``argument`` (capsys or run)."""
+    out = captured.out if hasattr(captured, "out") else captured.stdout
+    err = captured.err if hasattr(captured, "err") else captured.stderr
+    assert rc == 2, err
+    assert "Traceback" not in err and "Traceback" not in out
+    lines = err.splitlines()
+    assert len(lines) == 1, err
+    assert lines[0].startswith("lpc-mdo: error: ")
+    assert argument in lines[0], lines[0]
+
+
+def _format(template, paths):
+    return [_fill(arg, paths) for arg in template]
+
+
+def _fill(arg, paths):
+    for key, value in paths.items():
+        if value is not None:
+            arg = arg.replace("{" + key + "}", value)
+    assert "{" not in arg, f"unknown placeholder in {arg!r}"
+    return arg
+
+
+@pytest.mark.parametrize(
+    ("argv", "argument"), [m[1:] for m in MISUSES], ids=[m[0] for m in MISUSES]
+)
+def test_misuse_is_one_line_error(
+    argv, argument, paths, capsys, commands_must_not_start, no_pyoptsparse
+):
+    if any("{unwritable}" in arg for arg in argv) and paths["unwritable"] is None:
+        pytest.skip("no folder is unwritable for this user")
+    rc = main(_format(argv, paths))
+    _assert_one_line_error(rc, capsys.readouterr(), argument)
+    assert not commands_must_not_start, "the command started: the error was not caught early"
+
+
+def test_enough_misuses():
+    # Issue 18 asks for the 27 misuses of its list; the suite holds more kinds.
+    assert len(MISUSES) >= 30
+    assert len({m[0] for m in MISUSES}) == len(MISUSES)
+
+
+# --- The checks let good input through (else the misuses above would prove nothing) ---------
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        [*FULL, "--start-case", "{good.sql}", "--max-iter", "1"],
+        [
+            "optimize",
+            "--problem",
+            "full",
+            "--output-dir",
+            "{out}/new/deeper",
+            "--optimizer",
+            "slsqp",
+        ],
+        [
+            *SWEEP,
+            "--start-case",
+            "{good.sql}",
+            "--parameter",
+            "final_soc",
+            "--values",
+            "0.2",
+            "0.3",
+        ],
+        ["analyze", "--output-dir", "{out}", "--n2", "{out}/missing_folder/n2.html"],
+        ["analyze", "--vehicle", "{vehicle.toml}", "--output-dir", "{out}"],
+        ["report", "{good_folder}", "--output-dir", "{out}"],
+        ["report", "{good.sql}", "--output-dir", "{out}"],
+    ],
+    ids=[
+        "start_case",
+        "new_output_dir",
+        "sweep_values",
+        "n2_new_folder",
+        "vehicle",
+        "report_folder",
+        "report_file",
+    ],
+)
+def test_good_input_reaches_the_command(argv, paths, capsys, commands_must_not_start):
+    assert main(_format(argv, paths)) == 0, capsys.readouterr().err
+    assert len(commands_must_not_start) == 1
+    assert capsys.readouterr().err == ""
+
+
+def test_the_checks_create_nothing(paths, capsys):
+    # The output folder is created by the command, not by the checks of a failing command line.
+    assert main(["optimize", "--output-dir", paths["out"], "--max-iter", "-1"]) == 2
+    assert not Path(paths["out"]).exists()
+
+
+def test_optimizer_name_is_case_insensitive(paths, commands_must_not_start):
+    assert main([*_format(FULL, paths), "--optimizer", "slsqp"]) == 0
+    assert commands_must_not_start[0].optimizer == "SLSQP"
+
+
+def test_default_ipopt_without_cyipopt(paths, capsys, monkeypatch, no_pyoptsparse):
+    monkeypatch.setitem(sys.modules, "cyipopt", None)  # import cyipopt raises ImportError
+    rc = main(["optimize", "--problem", "subproblem_1", "--output-dir", paths["out"]])
+    _assert_one_line_error(rc, capsys.readouterr(), "--optimizer")
+    # An explicit SLSQP needs nothing beyond SciPy.
+    argv = ["optimize", "--problem", "subproblem_1", "--optimizer", "SLSQP"]
+    assert main([*argv, "--output-dir", paths["out"]]) == 0
+
+
+def test_mpi_without_mpi4py(paths, capsys, monkeypatch):
+    monkeypatch.setitem(sys.modules, "mpi4py", None)  # import mpi4py raises ImportError
+    rc = main(["sweep", "--start-case", paths["good.sql"], "--mpi", "--output-dir", paths["out"]])
+    _assert_one_line_error(rc, capsys.readouterr(), "--mpi")
+
+
+def test_messages_say_what_is_allowed(paths, capsys, no_pyoptsparse):
+    cases = {
+        (*FULL, "--max-iter", "-1"): "'--max-iter' = -1 is out of range: must be >= 1",
+        (*FULL, "--start-case", "{zero_cases.sql}"): "holds no cases",
+        (*FULL, "--start-case", "{driver_only.sql}"): "not the problem case 'final'",
+        (*FULL, "--start-case", "{vehicle.toml}"): "is a TOML file",
+        (*FULL, "--start-case", "{truncated_at_page.sql}"): "is truncated",
+        (*FULL, "--start-case", "{not_a_recorder.sqlite}"): "not an OpenMDAO case file",
+        (*FULL, "--optimizer", "SNOPT"): "pyoptsparse",
+        ("report", "{empty_folder}"): "without case files",
+        ("analyze", "--output-dir", "{a_file.txt}/out"): "is a regular file, not a folder",
+    }
+    for argv, text in cases.items():
+        assert main(_format(argv, paths)) == 2
+        assert text in capsys.readouterr().err, argv
+
+
+# --- --debug and bugs ----------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("where", ["before", "after"])
+def test_debug_shows_the_traceback(where, paths, capsys):
+    argv = [*_format(FULL, paths), "--max-iter", "-1"]
+    argv = ["--debug", *argv] if where == "before" else [*argv, "--debug"]
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert "Traceback" in err
+    assert err.splitlines()[-1] == "lpc-mdo: error: '--max-iter' = -1 is out of range: must be >= 1"
+
+
+def test_a_bug_keeps_its_traceback(paths, capsys, monkeypatch):
+    def broken(args):
+        raise RuntimeError("boom")
+
+    monkeypatch.setattr(cli, "_analyze", broken)
+    assert main(["analyze", "--output-dir", paths["out"]]) == 1
+    err = capsys.readouterr().err
+    assert "Traceback" in err and "RuntimeError: boom" in err
+    last = err.splitlines()[-1]
+    assert last.startswith("lpc-mdo: internal error: RuntimeError: boom") and "bug" in last
+
+
+def test_value_error_of_a_library_is_a_bug(paths, capsys, monkeypatch):
+    def broken(args):
+        np.zeros(2).reshape(3)  # a ValueError raised by numpy, not by lpc_mdo's checks
+
+    monkeypatch.setattr(cli, "_analyze", broken)
+    assert main(["analyze", "--output-dir", paths["out"]]) == 1
+    assert "Traceback" in capsys.readouterr().err
+
+
+def test_value_error_of_lpc_mdo_is_a_user_error(paths, capsys, monkeypatch):
+    def checked(args):
+        check_range("num_radial", 1, lower=2)
+
+    monkeypatch.setattr(cli, "_analyze", checked)
+    rc = main(["analyze", "--output-dir", paths["out"]])
+    _assert_one_line_error(rc, capsys.readouterr(), "'num_radial' = 1")
+
+
+# --- Through a real process: nothing but the one line reaches the terminal -----------------
+
+SUBPROCESS_MISUSES = [
+    (["optimize", "--problem", "full", "--start-case", "{corrupted.sql}"], "--start-case"),
+    (["optimize", "--max-iter", "-1"], "--max-iter"),
+    (["report", "{empty_folder}"], "'cases'"),
+    (["analyze", "--vehicle", "{binary.toml}"], "--vehicle"),
+]
+
+
+@pytest.mark.parametrize(
+    ("argv", "argument"),
+    SUBPROCESS_MISUSES,
+    ids=["corrupted_start_case", "max_iter", "report_empty", "binary_vehicle"],
+)
+def test_misuse_in_a_process(argv, argument, paths):
+    run = subprocess.run(
+        [sys.executable, "-m", "lpc_mdo.cli", *_format(argv, paths)],
+        capture_output=True,
+        text=True,
+        cwd=paths["root"],
+        timeout=120,
+    )
+    _assert_one_line_error(run.returncode, run, argument)
+
+
+def test_entry_point_in_a_process(paths):
+    script = shutil.which("lpc-mdo") or shutil.which(
+        "lpc-mdo", path=str(Path(sys.executable).parent)
+    )
+    if script is None:
+        pytest.skip("the lpc-mdo entry point is not installed")
+    run = subprocess.run(
+        [script, "sweep", "--start-case", paths["good.sql"], "--processes", "0"],
+        capture_output=True,
+        text=True,
+        cwd=paths["root"],
+        timeout=120,
+    )
+    _assert_one_line_error(run.returncode, run, "--processes")
