@@ -618,7 +618,10 @@ def _optimize(args):
                 **common,
             )
     except KeyboardInterrupt:
-        print("lpc-mdo: interrupted; the case files hold the iterations so far", file=sys.stderr)
+        from lpc_mdo.progress import interrupt_message
+
+        # What each case file of the output folder holds (driver cases, a 'final' case or not).
+        print(f"lpc-mdo: {interrupt_message(out)}", file=sys.stderr)
         return 130
     print(f"case file: {case_file}")
     return 0 if stage.success else 1
