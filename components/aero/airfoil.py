@@ -649,7 +649,7 @@ def check_polar_file_arrays(path, alpha_deg, cl, cd):
         if np.any(bad):
             row = int(np.argwhere(bad)[0][0])
             fail(
-                f"{label} in row {row} is {values.reshape(values.shape[0], -1)[row][0]!r}; "
+                f"{label} in row {row} is {float(values.reshape(values.shape[0], -1)[row][0])!r}; "
                 f"allowed: finite numbers"
             )
         if values.shape[:1] != alpha_deg.shape:

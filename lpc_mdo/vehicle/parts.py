@@ -282,8 +282,12 @@ class FixedMasses:
     Attributes
     ----------
     payload, systems, other, power_electronics : float
-        Masses (kg). ``other`` is an initial guess, calibrated so that the initial gross mass
-        equals ``target_gross_mass``.
+        Masses (kg). ``other`` (W_other) is not read by the vehicle model
+        (:class:`lpc_mdo.groups.vehicle.VehicleGroup`, hence every problem): it calibrates
+        W_other so that the initial gross mass equals ``target_gross_mass``
+        (:func:`lpc_mdo.groups.vehicle.calibrated_other_mass`). ``other`` is used only where
+        no calibration runs: as the default W_other of a stand-alone
+        :class:`lpc_mdo.groups.weights.WeightsGroup` (``other_mass=None``).
     payload_cg, systems_cg, other_cg, power_electronics_cg : tuple of 3 float
         Centres of gravity, body frame (m).
     target_gross_mass : float
