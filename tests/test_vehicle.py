@@ -233,7 +233,7 @@ BAD_INPUTS = {
         _set("design_variables", "wing_span", {}),
         "unknown key 'design_variables.wing_span'",
     ),
-    "missing key": (_delete("wing", "area"), "missing key 'wing.area' (m^2, > 0)"),
+    "missing key": (_delete("wing", "area"), "missing key 'wing.area' (m^2, in [0.1, 200])"),
     "missing angle key": (
         _delete("lift_rotors", 3, "twist_cp_deg"),
         "missing key 'lift_rotors[3].twist_cp_deg' (4 numbers, deg, in (-90, 90))",
@@ -271,11 +271,11 @@ BAD_INPUTS = {
     ),
     "negative area": (
         _set("wing", "area", -3.0),
-        "'wing.area' = -3.0 is out of range: must be > 0 (m^2)",
+        "'wing.area' = -3.0 is out of range: must be in [0.1, 200] (m^2)",
     ),
     "negative length": (
         _set("fuselage", "length", -9.144),
-        "'fuselage.length' = -9.144 is out of range: must be > 0 (m)",
+        "'fuselage.length' = -9.144 is out of range: must be in [1, 30] (m)",
     ),
     "not finite": (
         _set("fuselage", "max_width", float("nan")),
@@ -291,15 +291,15 @@ BAD_INPUTS = {
     ),
     "negative rotor radius": (
         _set("lift_rotors", 3, "radius", -1.0),
-        "'lift_rotors[3].radius' = -1.0 is out of range: must be > 0 (m)",
+        "'lift_rotors[3].radius' = -1.0 is out of range: must be in [0.1, 10] (m)",
     ),
     "negative chord": (
         _set("lift_rotors", 2, "chord_cp", [0.3, 0.2, -0.1, 0.1]),
-        "'lift_rotors[2].chord_cp[2]' = -0.1 is out of range: must be > 0 (m)",
+        "'lift_rotors[2].chord_cp[2]' = -0.1 is out of range: must be in (0, 2] (m)",
     ),
     "angle out of range": (
         _set("wing", "sweep_deg", 95.0),
-        "'wing.sweep_deg' = 95.0 is out of range: must be in (-90, 90) (deg)",
+        "'wing.sweep_deg' = 95.0 is out of range: must be in [-70, 70] (deg)",
     ),
     "altitude above the troposphere": (
         _set("conditions", 7, "altitude", 20000.0),

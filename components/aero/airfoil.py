@@ -41,6 +41,7 @@ Prandtl–Glauert for Mach); ``lpc_mdo/data/README.md`` says how.
 
 import functools
 import os
+import zipfile
 from importlib import resources
 from pathlib import Path
 
@@ -499,8 +500,24 @@ class TablePolar(Polar):
 
     @classmethod
     def from_npz(cls, path, **kwargs):
-        """Load a table in the ``lpc_mdo/data/airfoil_<name>.npz`` format (alpha in degrees)."""
-        with np.load(path, allow_pickle=False) as data:
+        """Load a table in the ``lpc_mdo/data/airfoil_<name>.npz`` format (alpha in degrees).
+
+        The content must be a zip archive of arrays (a text file named ``.npz`` is an error that
+        names the path); the arrays pass :func:`check_polar_file_arrays`.
+        """
+        with open(path, "rb") as fh:
+            head = fh.read(4)
+        if head not in (b"PK\x03\x04", b"PK\x05\x06"):
+            raise ValueError(
+                f"polar file '{path}' is not an .npz archive (it starts with {head!r}); allowed: "
+                f"an .npz written by numpy.savez, or a text table (alpha [deg], cl, cd) named "
+                f"{', '.join(_TEXT_SUFFIXES)}"
+            )
+        try:
+            data = np.load(path, allow_pickle=False)
+        except (OSError, ValueError, EOFError, zipfile.BadZipFile) as exc:
+            raise ValueError(f"polar file '{path}' is not a readable .npz archive: {exc}") from exc
+        with data:
             keys = set(data.files)
             missing = {"alpha_deg", "cl", "cd"} - keys
             if missing:
@@ -508,23 +525,20 @@ class TablePolar(Polar):
                     f"{path}: missing arrays {sorted(missing)}; an airfoil table "
                     f"needs alpha_deg, cl, cd (and optionally reynolds, mach, cm)"
                 )
-            alpha = np.radians(data["alpha_deg"])
+            try:
+                alpha_deg, cl, cd = (
+                    np.asarray(data[k], dtype=float) for k in ("alpha_deg", "cl", "cd")
+                )
+            except (ValueError, TypeError) as exc:
+                raise ValueError(f"polar file '{path}': arrays are not numbers: {exc}") from exc
+            check_polar_file_arrays(path, alpha_deg, cl, cd)
+            alpha = np.radians(alpha_deg)
             reynolds = data["reynolds"] if "reynolds" in keys else np.array([1e6])
             mach = data["mach"] if "mach" in keys else np.array([0.0])
             cm = data["cm"] if "cm" in keys else None
             name = str(data["name"]) if "name" in keys else Path(path).stem
             pressure = PressureTable.from_npz_data(data) if "cp_upper" in keys else None
-            return cls(
-                alpha,
-                reynolds,
-                mach,
-                data["cl"],
-                data["cd"],
-                cm,
-                name=name,
-                pressure=pressure,
-                **kwargs,
-            )
+            return cls(alpha, reynolds, mach, cl, cd, cm, name=name, pressure=pressure, **kwargs)
 
     @classmethod
     def from_alpha_cl_cd(
@@ -564,26 +578,100 @@ class TablePolar(Polar):
 
         Every line with at least three numbers gives alpha [deg], cl, cd (its first three
         columns); other lines (headers, comments) are skipped, so XFOIL polar files (alpha CL CD
-        CDp CM ...) load as they are.
+        CDp CM ...) load as they are. The file must be UTF-8 text (a UTF-8 BOM is accepted) and
+        its rows must pass :func:`check_polar_file_arrays`.
         """
+        with open(path, "rb") as fh:
+            raw = fh.read()
+        if raw[:4] == b"PK\x03\x04":
+            raise ValueError(
+                f"polar file '{path}' is an .npz (zip) archive; allowed: name it .npz, or give a "
+                f"text table of alpha [deg], cl, cd rows"
+            )
+        if b"\0" in raw:
+            raise ValueError(
+                f"polar file '{path}' is binary (it holds NUL bytes); allowed: a text table of "
+                f"alpha [deg], cl, cd rows, or an .npz archive named .npz"
+            )
+        try:
+            text = raw.decode("utf-8-sig")
+        except UnicodeDecodeError as exc:
+            raise ValueError(
+                f"polar file '{path}' is not UTF-8 text (byte {exc.start}); allowed: a UTF-8 "
+                f"text table of alpha [deg], cl, cd rows"
+            ) from exc
         rows = []
-        with open(path, encoding="utf-8", errors="replace") as fh:
-            for line in fh:
-                parts = line.replace(",", " ").split()
-                try:
-                    values = [float(p) for p in parts[:3]]
-                except ValueError:
-                    continue
-                if len(values) == 3:
-                    rows.append(values)
-        if len(rows) < 5:
+        for line in text.splitlines():
+            parts = line.replace(",", " ").split()
+            try:
+                values = [float(p) for p in parts[:3]]
+            except ValueError:
+                continue
+            if len(values) == 3:
+                rows.append(values)
+        if len(rows) < _MIN_POLAR_ROWS:
             raise ValueError(
                 f"{path}: found {len(rows)} rows of (alpha [deg], cl, cd); allowed:"
-                f" a text table with at least 5 such rows"
+                f" a text table with at least {_MIN_POLAR_ROWS} such rows"
             )
         rows = np.array(rows)
+        check_polar_file_arrays(path, rows[:, 0], rows[:, 1], rows[:, 2])
         kwargs.setdefault("name", Path(path).stem)
         return cls.from_alpha_cl_cd(rows[:, 0], rows[:, 1], rows[:, 2], **kwargs)
+
+
+#: Fewest alpha rows of a polar file.
+_MIN_POLAR_ROWS = 5
+#: Angles (deg) a polar file must cover: the attached range of a blade section in hover,
+#: transition and cruise. The stall detection needs a stall point beyond +-2 blends (3 deg) on
+#: each side, and past the table's ends the Viterna extrapolation from its stall points takes
+#: over, so a table that stops short of +10 deg would put stall where the section is attached.
+POLAR_FILE_ALPHA_SPAN_DEG = (-5.0, 10.0)
+_TEXT_SUFFIXES = (".txt", ".dat", ".csv", ".pol")
+
+
+def check_polar_file_arrays(path, alpha_deg, cl, cd):
+    """Check the arrays of a polar file; raise a ValueError naming the path and the problem.
+
+    ``alpha_deg`` is 1-D, at least 5 finite angles, strictly increasing (a repeated angle is an
+    error) and covering :data:`POLAR_FILE_ALPHA_SPAN_DEG`; ``cl`` and ``cd`` are finite with
+    ``cd > 0`` and have as many rows as ``alpha_deg`` (further axes are Reynolds and Mach).
+    """
+    alpha_deg, cl, cd = (np.asarray(v, dtype=float) for v in (alpha_deg, cl, cd))
+
+    def fail(what):
+        raise ValueError(f"polar file '{path}': {what}")
+
+    if alpha_deg.ndim != 1 or alpha_deg.size < _MIN_POLAR_ROWS:
+        fail(f"alpha has shape {alpha_deg.shape}; allowed: at least {_MIN_POLAR_ROWS} angles")
+    for label, values in (("alpha", alpha_deg), ("cl", cl), ("cd", cd)):
+        bad = ~np.isfinite(values)
+        if np.any(bad):
+            row = int(np.argwhere(bad)[0][0])
+            fail(
+                f"{label} in row {row} is {float(values.reshape(values.shape[0], -1)[row][0])!r}; "
+                f"allowed: finite numbers"
+            )
+        if values.shape[:1] != alpha_deg.shape:
+            fail(
+                f"{label} has {values.shape[0] if values.ndim else 0} rows and alpha "
+                f"{alpha_deg.size}; allowed: one row per angle"
+            )
+    step = np.diff(alpha_deg)
+    if np.any(step <= 0.0):
+        i = int(np.argmax(step <= 0.0))
+        fail(
+            f"alpha is not strictly increasing: row {i + 1} = {alpha_deg[i + 1]:g} deg after "
+            f"{alpha_deg[i]:g} deg; allowed: increasing angles without repeats"
+        )
+    if np.any(cd <= 0.0):
+        fail(f"cd has the value {float(np.min(cd)):g}; allowed: cd > 0")
+    lo, hi = POLAR_FILE_ALPHA_SPAN_DEG
+    if alpha_deg[0] > lo or alpha_deg[-1] < hi:
+        fail(
+            f"alpha spans {alpha_deg[0]:g}..{alpha_deg[-1]:g} deg; allowed: a table that "
+            f"covers at least {lo:g}..{hi:g} deg (the attached range the rotor model needs)"
+        )
 
 
 # ------------------------------------------------------------------------------------------------

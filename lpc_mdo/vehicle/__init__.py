@@ -97,6 +97,7 @@ from importlib import resources
 
 from lpc_mdo.vehicle.consistency import (
     _check_conditions,
+    _check_geometry,
     _check_lift_rotors,
     _check_mission,
     _check_pusher,
@@ -121,7 +122,7 @@ from lpc_mdo.vehicle.parts import (
     Vehicle,
     WingBox,
 )
-from lpc_mdo.vehicle.schema import VehicleSpecError, _read_fields
+from lpc_mdo.vehicle.schema import BASE_DIR, VehicleSpecError, _read_fields
 
 __all__ = [
     "AIRFOILS",
@@ -169,10 +170,31 @@ def read_vehicle_file(path: str | os.PathLike | None = None) -> dict:
     """
     if path is None:
         resource = resources.files("lpc_mdo").joinpath("data", "lpc_reference.toml")
-        text, label = resource.read_text(encoding="utf-8"), "lpc_reference.toml"
+        raw, label = resource.read_bytes(), "lpc_reference.toml"
     else:
-        with open(path, encoding="utf-8") as fh:
-            text, label = fh.read(), os.fspath(path)
+        label = os.fspath(path)
+        if os.path.isdir(path):
+            raise VehicleSpecError(f"vehicle file '{label}' is a directory; allowed: a TOML file")
+        try:
+            with open(path, "rb") as fh:
+                raw = fh.read()
+        except FileNotFoundError as exc:
+            raise VehicleSpecError(
+                f"vehicle file '{label}' not found (looked at '{os.path.abspath(path)}')"
+            ) from exc
+        except OSError as exc:
+            raise VehicleSpecError(f"vehicle file '{label}' cannot be read: {exc}") from exc
+    if b"\0" in raw:
+        raise VehicleSpecError(
+            f"vehicle file '{label}' is binary (it holds NUL bytes); allowed: a UTF-8 TOML file"
+        )
+    try:
+        text = raw.decode("utf-8-sig")  # a UTF-8 byte-order mark is accepted and dropped
+    except UnicodeDecodeError as exc:
+        raise VehicleSpecError(
+            f"vehicle file '{label}' is not UTF-8 text (invalid byte {raw[exc.start]:#04x} at "
+            f"offset {exc.start}); allowed: a UTF-8 TOML file"
+        ) from exc
     try:
         return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
@@ -190,9 +212,17 @@ def load_vehicle(path: str | os.PathLike | None = None) -> Vehicle:
     Raises
     ------
     VehicleSpecError
-        If the file is not valid TOML or any value is missing, unknown, mistyped or out of range.
+        If the file is missing, not UTF-8 text or not valid TOML, or any value is missing,
+        unknown, mistyped or out of range. A relative polar-file path (a rotor ``airfoil``) is
+        looked up in the vehicle file's folder, then in the working directory.
     """
-    return vehicle_from_dict(read_vehicle_file(path))
+    data = read_vehicle_file(path)
+    folder = None if path is None else os.path.dirname(os.path.abspath(path))
+    token = BASE_DIR.set(folder)
+    try:
+        return vehicle_from_dict(data)
+    finally:
+        BASE_DIR.reset(token)
 
 
 @functools.cache
@@ -212,6 +242,7 @@ def vehicle_from_dict(data: Mapping) -> Vehicle:
     values = _read_fields(Vehicle, data, "", skip="design_variables")
     _check_lift_rotors(values["lift_rotors"])
     _check_pusher(values["pusher"])
+    _check_geometry(values)
     _check_conditions(values)
     wing_box = values["wing_box"]
     if wing_box.rear_spar <= wing_box.front_spar:

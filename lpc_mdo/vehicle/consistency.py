@@ -123,3 +123,89 @@ class _PartialVehicle:
 
     def __init__(self, parts: dict):
         self.__dict__.update(parts)
+
+
+# ------------------------------------------------------------------------------------------------
+# Geometric and energy consistency
+
+#: Largest angle (deg) between a lift rotor's thrust axis and body -z, and between the pusher's
+#: thrust axis and body +x (the flight direction). 30 deg admits canted rotors and a tilted
+#: pusher; beyond it a lift rotor would not mainly lift nor the pusher mainly push.
+MAX_THRUST_AXIS_ANGLE_DEG = 30.0
+#: Hubs closer than this (m) share a position.
+_SAME_POSITION = 1e-3
+
+
+def _angle_deg(a, b) -> float:
+    cos = float(np.dot(a, b) / (np.linalg.norm(a) * np.linalg.norm(b)))
+    return float(np.degrees(np.arccos(np.clip(cos, -1.0, 1.0))))
+
+
+def _check_thrust_axes(lift_rotors: tuple[Rotor, ...], pusher: Rotor) -> None:
+    """Lift-rotor thrust axes within 30 deg of -z (up), the pusher's within 30 deg of +x."""
+    wanted = [
+        (f"lift_rotors[{i}]", r, (0.0, 0.0, -1.0), "-z (up)") for i, r in enumerate(lift_rotors)
+    ]
+    wanted.append(("pusher", pusher, (1.0, 0.0, 0.0), "+x (the flight direction)"))
+    for path, rotor, direction, label in wanted:
+        angle = _angle_deg(rotor.thrust_axis, direction)
+        if angle > MAX_THRUST_AXIS_ANGLE_DEG:
+            raise VehicleSpecError(
+                f"'{path}.thrust_axis' = {list(rotor.thrust_axis)!r} is out of range: must be "
+                f"within {MAX_THRUST_AXIS_ANGLE_DEG:g} deg of body {label}, got {angle:.1f} deg"
+            )
+
+
+def _check_rotor_positions(lift_rotors: tuple[Rotor, ...], pusher: Rotor) -> None:
+    """No two hubs at one position; lift-rotor disks at similar height do not overlap.
+
+    Two lift-rotor disks are at similar height when their hubs are closer along the first
+    rotor's thrust axis than the smaller radius; their hub distance in that disk plane must then
+    be at least R_i + R_j (no clearance is required: the reference's inner and outer rotors are
+    0.16 m apart, 5 % of a diameter).
+    """
+    rotors = [(f"lift_rotors[{i}]", r) for i, r in enumerate(lift_rotors)] + [("pusher", pusher)]
+    for k, (path_i, a) in enumerate(rotors):
+        for path_j, b in rotors[k + 1 :]:
+            d = np.subtract(b.hub_position, a.hub_position)
+            if np.linalg.norm(d) < _SAME_POSITION:
+                raise VehicleSpecError(
+                    f"'{path_j}.hub_position' = {list(b.hub_position)!r} is not allowed: it is "
+                    f"the position of '{path_i}.hub_position'; no two rotors share a position"
+                )
+            if path_j == "pusher":
+                continue
+            n = np.asarray(a.thrust_axis, dtype=float)
+            axial = abs(float(np.dot(d, n)))
+            in_plane = float(np.linalg.norm(d - np.dot(d, n) * n))
+            if axial < min(a.radius, b.radius) and in_plane < a.radius + b.radius:
+                raise VehicleSpecError(
+                    f"'{path_j}.hub_position' = {list(b.hub_position)!r} is not allowed: its "
+                    f"disk overlaps that of '{path_i}' (hub distance in the disk plane "
+                    f"{in_plane:.3f} m; must be >= R_i + R_j = {a.radius + b.radius:.3f} m for "
+                    f"disks {axial:.3f} m apart along the thrust axis)"
+                )
+
+
+def _check_limits(parts: dict) -> None:
+    """``min_final_soc`` below ``initial_soc``; the noise observer at least a rotor radius away."""
+    limits, battery = parts["constraints"], parts["battery"]
+    if limits.min_final_soc >= battery.initial_soc:
+        raise VehicleSpecError(
+            f"'constraints.min_final_soc' = {limits.min_final_soc!r} is out of range: must be < "
+            f"'battery.initial_soc' = {battery.initial_soc!r} (the mission uses energy)"
+        )
+    radius = max(r.radius for r in (*parts["lift_rotors"], parts["pusher"]))
+    distance = parts["noise_observer"].distance
+    if distance < radius:
+        raise VehicleSpecError(
+            f"'noise_observer.distance' = {distance!r} is out of range: must be >= the largest "
+            f"rotor radius {radius:g} (m); the noise model is a far-field one"
+        )
+
+
+def _check_geometry(parts: dict) -> None:
+    """Thrust axes, rotor positions and the energy and noise limits (see the functions above)."""
+    _check_thrust_axes(parts["lift_rotors"], parts["pusher"])
+    _check_rotor_positions(parts["lift_rotors"], parts["pusher"])
+    _check_limits(parts)

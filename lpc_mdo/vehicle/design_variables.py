@@ -175,6 +175,17 @@ def _read_design_variable(data, spec: _DVSpec, path: str) -> DesignVariable:
     }
     initial = values.get("initial", spec.initial)
     lower, upper = values["lower"], values["upper"]
+    if spec.units == "rad":
+        # Pitch, twist and elevator angles lie within +-90 deg; larger values in rad are
+        # degrees written with units = "rad".
+        for key in ("initial", "lower", "upper"):
+            for x in values.get(key, ()):
+                if not -math.pi / 2 <= x <= math.pi / 2:
+                    raise VehicleSpecError(
+                        f"'{path}.{key}' = {_fmt(x / scale)} is out of range: must be in "
+                        f"[-90, 90] deg = [-1.5708, 1.5708] rad (units = {units!r}; degree "
+                        f"values need units = 'deg')"
+                    )
     ref = _number(data["ref"], _Spec(units=units, gt=0), f"{path}.ref") * scale
 
     def entry(key, k):

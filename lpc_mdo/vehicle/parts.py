@@ -56,6 +56,10 @@ AIRFOILS: dict[str, Airfoil] = {
 _NUM_LIFT_ROTORS = 8
 _NUM_PAIRS = 4
 _PUSHER_GROUP = 4
+#: Bound of every body-frame coordinate (m): a vehicle of this class is at most 30 m long and
+#: wide; 50 m catches positions in mm or in ft x 1000.
+_REACH = 50.0
+_MAX_FIXED_MASS = 10000.0  # kg
 _IDENTIFIER = "an identifier (letters, digits and '_', not starting with a digit)"
 _AIRFOIL_NAMES = tuple(AIRFOILS)
 
@@ -94,13 +98,16 @@ class LiftingSurface:
         Laminar part of the skin-friction build-up (-).
     """
 
-    area: float = _param("m^2", gt=0)
-    aspect_ratio: float = _param(gt=0)
+    # 0.1-200 m^2: tails to wings of 500-20000 kg vehicles (the reference wing in ft^2 is 211).
+    area: float = _param("m^2", ge=0.1, le=200)
+    # 0.5-30: a low fin (reference vertical tail 1.17) to a sailplane wing.
+    aspect_ratio: float = _param(ge=0.5, le=30)
     taper_ratio: float = _param(gt=0, le=1)
-    sweep: float = _angle(gt=-90, lt=90)
-    dihedral: float = _angle(gt=-90, lt=90)
+    # Leading-edge sweep up to 70 deg (reference fin 51 deg); dihedral up to 30 deg either way.
+    sweep: float = _angle(ge=-70, le=70)
+    dihedral: float = _angle(ge=-30, le=30)
     incidence: float = _angle(ge=-30, le=30)
-    root_leading_edge: tuple[float, ...] = _param("m", shape=(3,))
+    root_leading_edge: tuple[float, ...] = _param("m", ge=-_REACH, le=_REACH, shape=(3,))
     airfoil: str = _param(choices=_AIRFOIL_NAMES)
     laminar_fraction: float = _param(ge=0, le=1)
 
@@ -150,9 +157,10 @@ class Fuselage:
         Maximum width (m).
     """
 
-    length: float = _param("m", gt=0)
-    max_height: float = _param("m", gt=0)
-    max_width: float = _param("m", gt=0)
+    # 1-30 m long, 0.5-10 m high and wide: a one-seat to an airliner-sized cabin (catches mm).
+    length: float = _param("m", ge=1, le=30)
+    max_height: float = _param("m", ge=0.5, le=10)
+    max_width: float = _param("m", ge=0.5, le=10)
 
     @property
     def fineness_ratio(self) -> float:
@@ -192,11 +200,15 @@ class Rotor:
     """
 
     name: str = _param()
-    hub_position: tuple[float, ...] = _param("m", shape=(3,))
-    radius: float = _param("m", gt=0)
-    num_blades: int = _param(ge=1)
-    hub_radius_ratio: float = _param(ge=0, lt=1)
-    chord_cp: tuple[float, ...] = _param("m", gt=0, shape=(4,))
+    hub_position: tuple[float, ...] = _param("m", ge=-_REACH, le=_REACH, shape=(3,))
+    # 0.1-10 m: a small propeller to a helicopter rotor (the reference lift rotor is 1.524 m).
+    radius: float = _param("m", ge=0.1, le=10)
+    # 2-8 blades: the range of built rotors and propellers.
+    num_blades: int = _param(ge=2, le=8)
+    # Hub up to half the radius: beyond it the blade is a stub.
+    hub_radius_ratio: float = _param(ge=0, le=0.5)
+    # Chord up to 2 m (the reference root chord is 0.3 m; catches mm).
+    chord_cp: tuple[float, ...] = _param("m", gt=0, le=2, shape=(4,))
     twist_cp: tuple[float, ...] = _angle(gt=-90, lt=90, shape=(4,))
     spin_direction: int = _param(choices=(-1, 1))
     thrust_axis: tuple[float, ...] = _param(shape=(3,), unit_vector=True)
@@ -229,9 +241,12 @@ class Booms:
         Boom-wing junction of the boom of ``lift_rotors[i]``, body frame (m).
     """
 
-    length: float = _param("m", gt=0)
-    form_factor: float = _param(gt=0)
-    attach_points: tuple[tuple[float, ...], ...] = _param("m", shape=(_NUM_LIFT_ROTORS, 3))
+    # A boom is 0.1-30 m long (at most a fuselage length); form factors of bodies are 1-3.
+    length: float = _param("m", ge=0.1, le=30)
+    form_factor: float = _param(ge=1, le=3)
+    attach_points: tuple[tuple[float, ...], ...] = _param(
+        "m", ge=-_REACH, le=_REACH, shape=(_NUM_LIFT_ROTORS, 3)
+    )
 
 
 @dataclass(frozen=True)
@@ -256,7 +271,8 @@ class WingBox:
     front_spar: float = _param(gt=0, lt=1)
     rear_spar: float = _param(gt=0, lt=1)
     beam_axis: float = _param(gt=0, lt=1)
-    num_bays: int = _param(ge=1)
+    # 1-50 bays: each adds 4 thickness design variables (the reference has 8).
+    num_bays: int = _param(ge=1, le=50)
 
 
 @dataclass(frozen=True)
@@ -266,8 +282,12 @@ class FixedMasses:
     Attributes
     ----------
     payload, systems, other, power_electronics : float
-        Masses (kg). ``other`` is an initial guess, calibrated so that the initial gross mass
-        equals ``target_gross_mass``.
+        Masses (kg). ``other`` (W_other) is not read by the vehicle model
+        (:class:`lpc_mdo.groups.vehicle.VehicleGroup`, hence every problem): it calibrates
+        W_other so that the initial gross mass equals ``target_gross_mass``
+        (:func:`lpc_mdo.groups.vehicle.calibrated_other_mass`). ``other`` is used only where
+        no calibration runs: as the default W_other of a stand-alone
+        :class:`lpc_mdo.groups.weights.WeightsGroup` (``other_mass=None``).
     payload_cg, systems_cg, other_cg, power_electronics_cg : tuple of 3 float
         Centres of gravity, body frame (m).
     target_gross_mass : float
@@ -278,15 +298,17 @@ class FixedMasses:
         lift-hub x, i.e. the lift rotors trim hover with equal thrust.
     """
 
-    payload: float = _param("kg", ge=0)
-    payload_cg: tuple[float, ...] = _param("m", shape=(3,))
-    systems: float = _param("kg", ge=0)
-    systems_cg: tuple[float, ...] = _param("m", shape=(3,))
-    other: float = _param("kg", ge=0)
-    other_cg: tuple[float, ...] = _param("m", shape=(3,))
-    power_electronics: float = _param("kg", ge=0)
-    power_electronics_cg: tuple[float, ...] = _param("m", shape=(3,))
-    target_gross_mass: float = _param("kg", gt=0)
+    # Each fixed mass is 0-10 t, half the largest gross mass of the class (catches g and 1e30).
+    payload: float = _param("kg", ge=0, le=_MAX_FIXED_MASS)
+    payload_cg: tuple[float, ...] = _param("m", ge=-_REACH, le=_REACH, shape=(3,))
+    systems: float = _param("kg", ge=0, le=_MAX_FIXED_MASS)
+    systems_cg: tuple[float, ...] = _param("m", ge=-_REACH, le=_REACH, shape=(3,))
+    other: float = _param("kg", ge=0, le=_MAX_FIXED_MASS)
+    other_cg: tuple[float, ...] = _param("m", ge=-_REACH, le=_REACH, shape=(3,))
+    power_electronics: float = _param("kg", ge=0, le=_MAX_FIXED_MASS)
+    power_electronics_cg: tuple[float, ...] = _param("m", ge=-_REACH, le=_REACH, shape=(3,))
+    # 500-20000 kg: a one-seat eVTOL to the heaviest of the class (the reference is 3724 kg).
+    target_gross_mass: float = _param("kg", ge=500, le=20000)
     other_cg_rule: str = _param(choices=("fixed", "hover_balance"))
 
 
@@ -313,12 +335,16 @@ class Material:
     """
 
     name: str = _param()
-    youngs_modulus: float = _param("Pa", gt=0)
-    shear_modulus: float = _param("Pa", gt=0)
-    density: float = _param("kg/m^3", gt=0)
+    # Structural solids: E 1-1000 GPa (wood to diamond), G 1-500 GPa, density 500-20000 kg/m^3
+    # (balsa-free wood to tungsten); GPa or g/cm^3 written by mistake fall outside.
+    youngs_modulus: float = _param("Pa", ge=1e9, le=1e12)
+    shear_modulus: float = _param("Pa", ge=1e9, le=5e11)
+    density: float = _param("kg/m^3", ge=500, le=20000)
     poisson_ratio: float = _param(gt=-1, lt=0.5)
-    allowable_stress: float = _param("Pa", gt=0)
-    min_gauge: float = _param("m", gt=0)
+    # 1 MPa-10 GPa: above any engineering material's strength (aluminium 350 MPa).
+    allowable_stress: float = _param("Pa", ge=1e6, le=1e10)
+    # 0.01-50 mm: a foil to a thick plate (catches mm written as m).
+    min_gauge: float = _param("m", ge=1e-5, le=0.05)
 
 
 @dataclass(frozen=True)
@@ -337,10 +363,12 @@ class Battery:
         Centre of gravity, body frame (m).
     """
 
-    mass: float = _param("kg", gt=0)
-    energy_density: float = _param("Wh/kg", gt=0, suffix="_wh_per_kg", scale=3600.0)
+    # 1-20000 kg: at most the heaviest gross mass of the class.
+    mass: float = _param("kg", ge=1, le=20000)
+    # 50-1000 Wh/kg at pack level: lead-acid to beyond lithium-sulphur; catches J/kg (x 3600).
+    energy_density: float = _param("Wh/kg", ge=50, le=1000, suffix="_wh_per_kg", scale=3600.0)
     initial_soc: float = _param(gt=0, le=1)
-    cg: tuple[float, ...] = _param("m", shape=(3,))
+    cg: tuple[float, ...] = _param("m", ge=-_REACH, le=_REACH, shape=(3,))
 
     @property
     def energy(self) -> float:
@@ -372,16 +400,21 @@ class Motor:
         Torque per mass Q_sp used in the sizing mass (N*m/kg).
     """
 
-    length_to_diameter: float = _param(gt=0)
-    gear_ratio: float = _param(gt=0)
-    pole_pairs: int = _param(ge=1)
-    num_phases: int = _param(ge=1)
-    num_slots: int = _param(ge=1)
-    rated_current: float = _param("A", gt=0)
-    voltage_limit: float = _param("V", gt=0)
-    electric_loading: float = _param("A/m", gt=0)
-    magnetic_loading: float = _param("T", gt=0)
-    torque_density: float = _param("N*m/kg", gt=0)
+    # Ranges of built radial-flux PMSMs: L/D 0.05-5, gears 0.1-50 (1 = direct drive), up to 50
+    # pole pairs, 12 phases, 500 slots, 1-5000 A; supply 24-3000 V (traction packs are
+    # 300-1000 V; the limit sets the torque margin, docs theory/motor 'Torque margin');
+    # electric loading 1-300 kA/m, air-gap flux 0.1-2.5 T (iron saturates near 2 T),
+    # 1-100 N*m/kg.
+    length_to_diameter: float = _param(ge=0.05, le=5)
+    gear_ratio: float = _param(ge=0.1, le=50)
+    pole_pairs: int = _param(ge=1, le=50)
+    num_phases: int = _param(ge=1, le=12)
+    num_slots: int = _param(ge=1, le=500)
+    rated_current: float = _param("A", ge=1, le=5000)
+    voltage_limit: float = _param("V", ge=24, le=3000)
+    electric_loading: float = _param("A/m", ge=1e3, le=3e5)
+    magnetic_loading: float = _param("T", ge=0.1, le=2.5)
+    torque_density: float = _param("N*m/kg", ge=1, le=100)
 
 
 @dataclass(frozen=True)
@@ -487,15 +520,20 @@ class ConstraintLimits:
         Wing-tip displacement in the structural subproblem (m).
     """
 
-    max_noise: float = _param("dBA", gt=0, le=200)
+    # 20-200 dBA: a quiet room to beyond the pain threshold.
+    max_noise: float = _param("dBA", ge=20, le=200)
     min_static_margin: float = _param(gt=-1, lt=1)
-    min_torque_margin: float = _param(ge=0)
+    # A torque margin is a fraction of the rated torque: 0-1.
+    min_torque_margin: float = _param(ge=0, le=1)
     max_tip_mach: float = _param(gt=0, le=1)
-    radius_intersection: float = _param(ge=0)
+    # A span fraction (<= 1) or a clearance in m (at most 10 m, a rotor radius of the class).
+    radius_intersection: float = _param(ge=0, le=10)
     radius_intersection_definition: str = _param(choices=("span_fraction", "clearance"))
-    max_buckling_ratio: float = _param(gt=0)
+    # Stress over the critical buckling stress: 1 is the limit, 10 ignores buckling.
+    max_buckling_ratio: float = _param(gt=0, le=10)
     min_final_soc: float = _param(ge=0, lt=1)
-    max_displacement: float = _param("m", gt=0)
+    # Wing-tip deflection up to 10 m, more than half the largest span of the class.
+    max_displacement: float = _param("m", gt=0, le=10)
 
 
 @dataclass(frozen=True)
@@ -510,7 +548,8 @@ class NoiseObserver:
         Angle below the rotor plane (rad); file key ``elevation_deg``.
     """
 
-    distance: float = _param("m", gt=0)
+    # Up to 10 km, where a rotor is inaudible; at least a rotor radius (checked with the rotors).
+    distance: float = _param("m", gt=0, le=10000)
     elevation: float = _angle(ge=-90, le=90)
 
 

@@ -9,6 +9,7 @@ tables (:mod:`lpc_mdo.vehicle.design_variables`) are read with it.
 
 from __future__ import annotations
 
+import contextvars
 import dataclasses
 import functools
 import math
@@ -185,14 +186,45 @@ def _integer(value, spec: _Spec, path: str) -> int:
     return n
 
 
+#: Folder of the vehicle file being read (None for a dict): relative polar paths are looked up
+#: there first, then in the working directory.
+BASE_DIR: contextvars.ContextVar[str | None] = contextvars.ContextVar("BASE_DIR", default=None)
+
+
+def _polar_file(value: str, path: str) -> str:
+    """Resolve and load a polar file named in a vehicle file; return its absolute path.
+
+    A relative path is looked up in the vehicle file's folder, then in the working directory.
+    The file is loaded (``components.aero.airfoil.get_polar``) so that a malformed table is a
+    :class:`VehicleSpecError` naming the key, not an error during the run.
+    """
+    from lpc_mdo.components.aero.airfoil import get_polar
+
+    candidate = os.path.expanduser(value)
+    if os.path.isabs(candidate):
+        places = [candidate]
+    else:
+        base = BASE_DIR.get()
+        places = [os.path.join(base, candidate)] if base is not None else []
+        places.append(os.path.join(os.getcwd(), candidate))
+    found = next((p for p in places if os.path.isfile(p)), None)
+    if found is None:
+        looked = ", ".join(repr(os.path.abspath(p)) for p in places)
+        raise VehicleSpecError(f"'{path}' = {value!r}: polar file not found (looked at {looked})")
+    found = os.path.abspath(found)
+    try:
+        get_polar(found)
+    except (ValueError, OSError) as exc:
+        raise VehicleSpecError(f"'{path}' = {value!r}: invalid polar file: {exc}") from exc
+    return found
+
+
 def _string(value, spec: _Spec, path: str) -> str:
     if not isinstance(value, str):
         raise VehicleSpecError(f"'{path}' must be a string, got {_show(value)}")
     if spec.choices and value not in spec.choices:
         if spec.polar_file and value.lower().endswith(_POLAR_SUFFIXES):
-            if not os.path.isfile(value):
-                raise VehicleSpecError(f"'{path}' = {value!r}: polar file not found")
-            return os.path.abspath(value)
+            return _polar_file(value, path)
         allowed = ", ".join(repr(c) for c in spec.choices)
         extra = (
             f", or a polar file ({', '.join(_POLAR_SUFFIXES)}: alpha [deg], cl, cd)"

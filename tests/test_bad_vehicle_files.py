@@ -1,0 +1,681 @@
+"""Bad vehicle files: each is one VehicleSpecError that names the key, never a traceback.
+
+Issue 18 item 1: values that passed the type check and broke the model later (or ran on
+nonsense), geometric inconsistencies, malformed polar files and files that are not UTF-8 TOML.
+Each case mutates the reference vehicle (its dict or its file text) and asserts the exception
+type, that the message names the key and a fragment that says what is wrong.
+"""
+
+import copy
+import importlib.util
+import math
+import zipfile
+from importlib import resources
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from lpc_mdo.vehicle import (
+    VehicleSpecError,
+    load_vehicle,
+    read_vehicle_file,
+    reference_vehicle,
+    vehicle_from_dict,
+)
+
+REFERENCE_TEXT = (
+    resources.files("lpc_mdo").joinpath("data", "lpc_reference.toml").read_text("utf-8")
+)
+REFERENCE_DATA = read_vehicle_file()
+CRUISE = 7  # index of the cruise condition in the reference file
+H = math.sqrt(0.5)
+
+
+def _set(*keys_and_value):
+    """Return a mutator that sets data[k0][k1]... = value."""
+    *keys, value = keys_and_value
+
+    def mutate(d):
+        for key in keys[:-1]:
+            d = d[key]
+        d[keys[-1]] = value
+
+    return mutate
+
+
+def _all_lift_rotors(key, value):
+    def mutate(d):
+        for rotor in d["lift_rotors"]:
+            rotor[key] = copy.deepcopy(value)
+
+    return mutate
+
+
+def _mirror_pair(i, j, key, value):
+    """Set rotor i's key to value and its mirror partner j's to the y-mirrored value."""
+
+    def mutate(d):
+        d["lift_rotors"][i][key] = list(value)
+        d["lift_rotors"][j][key] = [value[0], -value[1], value[2]]
+
+    return mutate
+
+
+def _both(*mutators):
+    def mutate(d):
+        for m in mutators:
+            m(d)
+
+    return mutate
+
+
+def _hub(i):
+    return REFERENCE_DATA["lift_rotors"][i]["hub_position"]
+
+
+# (id, mutation, key the message names, fragment of what is wrong)
+DICT_CASES = [
+    # The values issue 18 lists (passed validation, failed or ran on nonsense later)
+    (
+        "max_height 1e30",
+        _set("fuselage", "max_height", 1e30),
+        "fuselage.max_height",
+        "in [0.5, 10] (m)",
+    ),
+    (
+        "max_height in mm",
+        _set("fuselage", "max_height", 1688.0),
+        "fuselage.max_height",
+        "out of range",
+    ),
+    ("payload 1e30", _set("masses", "payload", 1e30), "masses.payload", "in [0, 10000] (kg)"),
+    ("density 1e30", _set("material", "density", 1e30), "material.density", "in [500, 20000]"),
+    (
+        "target mass 100",
+        _set("masses", "target_gross_mass", 100.0),
+        "masses.target_gross_mass",
+        "in [500, 20000] (kg)",
+    ),
+    (
+        "num_blades 1e6",
+        _set("lift_rotors", 0, "num_blades", 1000000),
+        "lift_rotors[0].num_blades",
+        "in [2, 8]",
+    ),
+    (
+        "E 1e30",
+        _set("material", "youngs_modulus", 1e30),
+        "material.youngs_modulus",
+        "in [1e+09, 1e+12] (Pa)",
+    ),
+    (
+        "G 1 Pa",
+        _set("material", "shear_modulus", 1.0),
+        "material.shear_modulus",
+        "in [1e+09, 5e+11] (Pa)",
+    ),
+    (
+        "cruise duration 1e30",
+        _set("conditions", CRUISE, "duration", 1e30),
+        f"conditions[{CRUISE}].duration",
+        "(s)",
+    ),
+    (
+        "energy density 1e30",
+        _set("battery", "energy_density_wh_per_kg", 1e30),
+        "battery.energy_density_wh_per_kg",
+        "in [50, 1000] (Wh/kg)",
+    ),
+    (
+        "energy density in J/kg",
+        _set("battery", "energy_density_wh_per_kg", 400.0 * 3600),
+        "battery.energy_density_wh_per_kg",
+        "in [50, 1000]",
+    ),
+    ("other mass 1e30", _set("masses", "other", 1e30), "masses.other", "in [0, 10000] (kg)"),
+    (
+        "observer 1e-9 m",
+        _set("noise_observer", "distance", 1e-9),
+        "noise_observer.distance",
+        "must be >= the largest rotor radius",
+    ),
+    (
+        "voltage 0.001 V",
+        _set("motor", "voltage_limit", 0.001),
+        "motor.voltage_limit",
+        "in [24, 3000] (V)",
+    ),
+    (
+        "pitch DV rad with degrees",
+        _set("design_variables", "climb_pitch", "units", "rad"),
+        "design_variables.climb_pitch.lower",
+        "degree values need units = 'deg'",
+    ),
+    (
+        "lift rotors thrust forward",
+        _all_lift_rotors("thrust_axis", [1.0, 0.0, 0.0]),
+        "lift_rotors[0].thrust_axis",
+        "within 30 deg of body -z (up), got 90.0 deg",
+    ),
+    (
+        "lift rotors thrust down",
+        _all_lift_rotors("thrust_axis", [0.0, 0.0, 1.0]),
+        "lift_rotors[0].thrust_axis",
+        "got 180.0 deg",
+    ),
+    (
+        "lift rotors tilted 45 deg",
+        _all_lift_rotors("thrust_axis", [H, 0.0, -H]),
+        "lift_rotors[0].thrust_axis",
+        "got 45.0 deg",
+    ),
+    (
+        "pusher thrusts backwards",
+        _set("pusher", "thrust_axis", [-1.0, 0.0, 0.0]),
+        "pusher.thrust_axis",
+        "within 30 deg of body +x",
+    ),
+    (
+        "pusher thrusts up",
+        _set("pusher", "thrust_axis", [0.0, 0.0, -1.0]),
+        "pusher.thrust_axis",
+        "got 90.0 deg",
+    ),
+    (
+        "two lift rotors at one position",
+        _both(_mirror_pair(2, 4, "hub_position", _hub(0))),
+        "lift_rotors[2].hub_position",
+        "no two rotors share a position",
+    ),
+    (
+        "lift disks overlap",
+        _mirror_pair(2, 4, "hub_position", [-0.66020, -4.0, -0.77602]),
+        "lift_rotors[2].hub_position",
+        "disk overlaps that of 'lift_rotors[0]'",
+    ),
+    (
+        "front and rear disks overlap",
+        _mirror_pair(1, 7, "hub_position", [-2.0, -5.715, -0.9]),
+        "lift_rotors[1].hub_position",
+        "must be >= R_i + R_j = 3.048 m",
+    ),
+    (
+        "pusher at a lift hub",
+        _set("pusher", "hub_position", list(_hub(0))),
+        "pusher.hub_position",
+        "share a position",
+    ),
+    (
+        "min_final_soc above initial_soc",
+        _both(_set("battery", "initial_soc", 0.5), _set("constraints", "min_final_soc", 0.6)),
+        "constraints.min_final_soc",
+        "must be < 'battery.initial_soc' = 0.5",
+    ),
+    (
+        "min_final_soc = initial_soc",
+        _both(_set("battery", "initial_soc", 0.3), _set("constraints", "min_final_soc", 0.3)),
+        "constraints.min_final_soc",
+        "must be <",
+    ),
+    (
+        "observer inside a rotor radius",
+        _set("noise_observer", "distance", 1.0),
+        "noise_observer.distance",
+        "1.524 (m)",
+    ),
+    # Further plausibility ranges (units mistaken, or absurd magnitudes)
+    ("wing area 1e30", _set("wing", "area", 1e30), "wing.area", "in [0.1, 200] (m^2)"),
+    ("wing area in ft^2", _set("wing", "area", 211.0), "wing.area", "out of range"),
+    ("tail area 0", _set("horizontal_tail", "area", 0.0), "horizontal_tail.area", "in [0.1, 200]"),
+    (
+        "aspect ratio 1000",
+        _set("wing", "aspect_ratio", 1000.0),
+        "wing.aspect_ratio",
+        "in [0.5, 30]",
+    ),
+    (
+        "fin sweep 89 deg",
+        _set("vertical_tail", "sweep_deg", 89.0),
+        "vertical_tail.sweep_deg",
+        "in [-70, 70] (deg)",
+    ),
+    (
+        "dihedral 45 deg",
+        _set("wing", "dihedral_deg", 45.0),
+        "wing.dihedral_deg",
+        "in [-30, 30] (deg)",
+    ),
+    (
+        "wing LE in mm",
+        _set("wing", "root_leading_edge", [-1959.25, 0.0, -1072.9]),
+        "wing.root_leading_edge[0]",
+        "in [-50, 50] (m)",
+    ),
+    (
+        "fuselage length in mm",
+        _set("fuselage", "length", 9144.0),
+        "fuselage.length",
+        "in [1, 30] (m)",
+    ),
+    (
+        "fuselage width 1e-3",
+        _set("fuselage", "max_width", 1e-3),
+        "fuselage.max_width",
+        "in [0.5, 10]",
+    ),
+    (
+        "rotor radius in mm",
+        _set("lift_rotors", 3, "radius", 1524.0),
+        "lift_rotors[3].radius",
+        "in [0.1, 10] (m)",
+    ),
+    (
+        "rotor radius 1 mm",
+        _set("lift_rotors", 3, "radius", 1e-3),
+        "lift_rotors[3].radius",
+        "in [0.1, 10]",
+    ),
+    ("pusher one blade", _set("pusher", "num_blades", 1), "pusher.num_blades", "in [2, 8]"),
+    ("pusher 12 blades", _set("pusher", "num_blades", 12), "pusher.num_blades", "in [2, 8]"),
+    (
+        "chord in mm",
+        _set("lift_rotors", 1, "chord_cp", [300.0, 233.0, 167.0, 100.0]),
+        "lift_rotors[1].chord_cp[0]",
+        "in (0, 2] (m)",
+    ),
+    (
+        "hub ratio 0.9",
+        _set("lift_rotors", 0, "hub_radius_ratio", 0.9),
+        "lift_rotors[0].hub_radius_ratio",
+        "in [0, 0.5]",
+    ),
+    (
+        "hub position in mm",
+        _set("lift_rotors", 0, "hub_position", [-794.31, -5715.0, -683.36]),
+        "lift_rotors[0].hub_position[0]",
+        "in [-50, 50] (m)",
+    ),
+    ("boom length in mm", _set("booms", "length", 2438.4), "booms.length", "in [0.1, 30] (m)"),
+    ("boom form factor 0.5", _set("booms", "form_factor", 0.5), "booms.form_factor", "in [1, 3]"),
+    (
+        "attach point 1e30",
+        _set("booms", "attach_points", 0, [1e30, 0.0, 0.0]),
+        "booms.attach_points[0][0]",
+        "in [-50, 50]",
+    ),
+    ("1000 bays", _set("wing_box", "num_bays", 1000), "wing_box.num_bays", "in [1, 50]"),
+    ("systems 1e30", _set("masses", "systems", 1e30), "masses.systems", "in [0, 10000] (kg)"),
+    (
+        "power electronics in g",
+        _set("masses", "power_electronics", 40820.0),
+        "masses.power_electronics",
+        "in [0, 10000]",
+    ),
+    (
+        "payload cg 1e30",
+        _set("masses", "payload_cg", [1e30, 0.0, 0.0]),
+        "masses.payload_cg[0]",
+        "in [-50, 50] (m)",
+    ),
+    (
+        "target mass 1e9",
+        _set("masses", "target_gross_mass", 1e9),
+        "masses.target_gross_mass",
+        "in [500, 20000]",
+    ),
+    (
+        "density in g/cm^3",
+        _set("material", "density", 2.7),
+        "material.density",
+        "in [500, 20000] (kg/m^3)",
+    ),
+    ("E in GPa", _set("material", "youngs_modulus", 69.0), "material.youngs_modulus", "(Pa)"),
+    ("G in GPa", _set("material", "shear_modulus", 26.0), "material.shear_modulus", "(Pa)"),
+    (
+        "stress in MPa",
+        _set("material", "allowable_stress", 350.0),
+        "material.allowable_stress",
+        "in [1e+06, 1e+10] (Pa)",
+    ),
+    (
+        "min gauge in mm",
+        _set("material", "min_gauge", 0.3),
+        "material.min_gauge",
+        "in [1e-05, 0.05] (m)",
+    ),
+    ("battery 1e30 kg", _set("battery", "mass", 1e30), "battery.mass", "in [1, 20000] (kg)"),
+    (
+        "energy density 10",
+        _set("battery", "energy_density_wh_per_kg", 10.0),
+        "battery.energy_density_wh_per_kg",
+        "in [50, 1000]",
+    ),
+    (
+        "battery cg in mm",
+        _set("battery", "cg", [-2098.97, 0.0, 558.44]),
+        "battery.cg[0]",
+        "in [-50, 50]",
+    ),
+    ("gear ratio 1e6", _set("motor", "gear_ratio", 1e6), "motor.gear_ratio", "in [0.1, 50]"),
+    (
+        "rated current 1e9 A",
+        _set("motor", "rated_current", 1e9),
+        "motor.rated_current",
+        "in [1, 5000] (A)",
+    ),
+    (
+        "magnetic loading 85 T",
+        _set("motor", "magnetic_loading", 85.0),
+        "motor.magnetic_loading",
+        "in [0.1, 2.5] (T)",
+    ),
+    (
+        "electric loading in kA/m",
+        _set("motor", "electric_loading", 30.0),
+        "motor.electric_loading",
+        "(A/m)",
+    ),
+    (
+        "torque density 1e6",
+        _set("motor", "torque_density", 1e6),
+        "motor.torque_density",
+        "in [1, 100] (N*m/kg)",
+    ),
+    ("1000 pole pairs", _set("motor", "pole_pairs", 1000), "motor.pole_pairs", "in [1, 50]"),
+    (
+        "L/D 100",
+        _set("motor", "length_to_diameter", 100.0),
+        "motor.length_to_diameter",
+        "in [0.05, 5]",
+    ),
+    ("altitude 1e30", _set("conditions", 0, "altitude", 1e30), "conditions[0].altitude", "(m)"),
+    (
+        "speed in km/h",
+        _set("conditions", CRUISE, "speed", 205.9),
+        f"conditions[{CRUISE}].speed",
+        "(m/s)",
+    ),
+    (
+        "negative duration",
+        _set("conditions", 0, "duration", -1.0),
+        "conditions[0].duration",
+        "out of range",
+    ),
+    (
+        "noise limit 1e30",
+        _set("constraints", "max_noise", 1e30),
+        "constraints.max_noise",
+        "in [20, 200] (dBA)",
+    ),
+    (
+        "torque margin 10",
+        _set("constraints", "min_torque_margin", 10.0),
+        "constraints.min_torque_margin",
+        "in [0, 1]",
+    ),
+    (
+        "displacement in mm",
+        _set("constraints", "max_displacement", 500.0),
+        "constraints.max_displacement",
+        "(m)",
+    ),
+    (
+        "buckling ratio 1e30",
+        _set("constraints", "max_buckling_ratio", 1e30),
+        "constraints.max_buckling_ratio",
+        "in (0, 10]",
+    ),
+    ("observer 1e30 m", _set("noise_observer", "distance", 1e30), "noise_observer.distance", "(m)"),
+    ("NaN wing area", _set("wing", "area", float("nan")), "wing.area", "nan"),
+    (
+        "inf energy density",
+        _set("battery", "energy_density_wh_per_kg", float("inf")),
+        "battery.energy_density_wh_per_kg",
+        "inf",
+    ),
+]
+
+
+@pytest.mark.parametrize(
+    "mutate, key, fragment", [c[1:] for c in DICT_CASES], ids=[c[0] for c in DICT_CASES]
+)
+def test_bad_value_is_a_named_error(mutate, key, fragment):
+    data = copy.deepcopy(REFERENCE_DATA)
+    mutate(data)
+    with pytest.raises(VehicleSpecError) as info:
+        vehicle_from_dict(data)
+    message = str(info.value)
+    assert f"'{key}'" in message, message
+    assert fragment in message, message
+
+
+# ------------------------------------------------------------------------------------------------
+# Polar files: rotor lift_rotors[3] names a malformed file (written into tmp_path)
+
+ALPHA = np.arange(-10.0, 16.0, 1.0)  # covers the -5..+10 deg the model needs
+
+
+def _rows(alpha=ALPHA, cl=None, cd=None):
+    cl = 0.1 * alpha if cl is None else cl
+    cd = 0.01 + 1e-4 * alpha**2 if cd is None else cd
+    return "\n".join(f"{a:g} {c:g} {d:g}" for a, c, d in zip(alpha, cl, cd, strict=True)) + "\n"
+
+
+def _with(index, value, array):
+    array = np.array(array, dtype=float)
+    array[index] = value
+    return array
+
+
+def _npz_bytes(tmp_path, **arrays):
+    path = tmp_path / "scratch.npz"
+    np.savez(path, **arrays)
+    return path.read_bytes()
+
+
+def _zip_bytes(tmp_path):
+    path = tmp_path / "scratch.zip"
+    with zipfile.ZipFile(path, "w") as z:
+        z.writestr("readme.txt", "not an array")
+    return path.read_bytes()
+
+
+CD = 0.01 + 1e-4 * ALPHA**2
+# (id, file name, content: str, bytes, or a function of tmp_path giving bytes, message fragment)
+POLAR_CASES = [
+    ("three rows", "blade.dat", _rows(ALPHA[:3]), "found 3 rows"),
+    ("no numbers", "blade.dat", "alpha cl cd\nnone here\n", "found 0 rows"),
+    ("empty file", "blade.txt", "", "found 0 rows"),
+    ("duplicate alpha", "blade.dat", _rows(_with(5, ALPHA[4], ALPHA)), "not strictly increasing"),
+    ("decreasing alpha", "blade.dat", _rows(ALPHA[::-1]), "not strictly increasing"),
+    ("NaN cl", "blade.dat", _rows(cl=_with(3, np.nan, 0.1 * ALPHA)), "cl in row 3 is nan"),
+    ("inf cd", "blade.csv", _rows(cd=_with(2, np.inf, CD)), "cd in row 2 is inf"),
+    ("negative cd", "blade.dat", _rows(cd=_with(4, -0.01, CD)), "cd has the value -0.01"),
+    ("zero cd", "blade.pol", _rows(cd=0.0 * ALPHA), "allowed: cd > 0"),
+    ("span 0..5 deg", "blade.dat", _rows(np.linspace(0.0, 5.0, 11)), "covers at least -5..10 deg"),
+    ("span -5..8 deg", "blade.dat", _rows(np.linspace(-5.0, 8.0, 14)), "alpha spans -5..8 deg"),
+    ("text named .npz", "blade.npz", _rows(), "is not an .npz archive"),
+    ("empty .npz", "blade.npz", b"", "is not an .npz archive"),
+    ("zip without arrays", "blade.npz", _zip_bytes, "missing arrays"),
+    (
+        "npz negative cd",
+        "blade.npz",
+        lambda t: _npz_bytes(t, alpha_deg=ALPHA, cl=0.1 * ALPHA, cd=-CD),
+        "allowed: cd > 0",
+    ),
+    (
+        "npz duplicate alpha",
+        "blade.npz",
+        lambda t: _npz_bytes(t, alpha_deg=_with(1, ALPHA[0], ALPHA), cl=0.1 * ALPHA, cd=CD),
+        "not strictly increasing",
+    ),
+    (
+        "npz missing cd",
+        "blade.npz",
+        lambda t: _npz_bytes(t, alpha_deg=ALPHA, cl=0.1 * ALPHA),
+        "missing arrays ['cd']",
+    ),
+    (
+        "npz named .dat",
+        "blade.dat",
+        lambda t: _npz_bytes(t, alpha_deg=ALPHA, cl=0.1 * ALPHA, cd=CD),
+        "is an .npz (zip) archive",
+    ),
+    ("binary .dat", "blade.dat", bytes(range(256)), "is binary"),
+    (
+        "latin-1 .dat",
+        "blade.dat",
+        "# d\xe9j\xe0 vu\n".encode("latin-1") + _rows().encode(),
+        "not UTF-8",
+    ),
+]
+
+
+def _write_polar(tmp_path, name, content):
+    path = tmp_path / name
+    if callable(content):
+        content = content(tmp_path)
+    if isinstance(content, str):
+        path.write_text(content, encoding="utf-8")
+    else:
+        path.write_bytes(content)
+    return path
+
+
+@pytest.mark.parametrize(
+    "name, content, fragment", [c[1:] for c in POLAR_CASES], ids=[c[0] for c in POLAR_CASES]
+)
+def test_bad_polar_file_is_a_named_error(tmp_path, name, content, fragment):
+    path = _write_polar(tmp_path, name, content)
+    data = copy.deepcopy(REFERENCE_DATA)
+    data["lift_rotors"][3]["airfoil"] = str(path)
+    with pytest.raises(VehicleSpecError) as info:
+        vehicle_from_dict(data)
+    message = str(info.value)
+    assert "'lift_rotors[3].airfoil'" in message, message
+    assert str(path) in message, message
+    assert fragment in message, message
+
+
+def test_missing_polar_file_says_where_it_looked(tmp_path, monkeypatch):
+    vehicle_file = tmp_path / "vehicle" / "my_lpc.toml"
+    vehicle_file.parent.mkdir()
+    vehicle_file.write_text(
+        REFERENCE_TEXT.replace('airfoil = "naca0012"', 'airfoil = "polars/blade.dat"'), "utf-8"
+    )
+    work = tmp_path / "work"
+    work.mkdir()
+    monkeypatch.chdir(work)
+    with pytest.raises(VehicleSpecError) as info:
+        load_vehicle(vehicle_file)
+    message = str(info.value)
+    assert "'lift_rotors[0].airfoil' = 'polars/blade.dat': polar file not found" in message
+    assert str(vehicle_file.parent / "polars" / "blade.dat") in message  # the file's folder
+    assert str(work / "polars" / "blade.dat") in message  # then the working directory
+
+
+def test_relative_polar_path_is_resolved_against_the_vehicle_file_folder(tmp_path, monkeypatch):
+    folder = tmp_path / "vehicle"
+    (folder / "polars").mkdir(parents=True)
+    (folder / "polars" / "blade.dat").write_text("alpha cl cd\n" + _rows(), "utf-8")
+    vehicle_file = folder / "my_lpc.toml"
+    vehicle_file.write_text(
+        REFERENCE_TEXT.replace('airfoil = "naca0012"', 'airfoil = "polars/blade.dat"'), "utf-8"
+    )
+    monkeypatch.chdir(tmp_path)  # not the vehicle file's folder
+    vehicle = load_vehicle(vehicle_file)
+    expected = str((folder / "polars" / "blade.dat").resolve())
+    assert {r.airfoil for r in (*vehicle.lift_rotors, vehicle.pusher)} == {expected}
+
+
+# ------------------------------------------------------------------------------------------------
+# File content: encodings, binary, truncated, not a file
+
+TEXT_CASES = [
+    ("binary", b"\x00\x01\x02\x03" * 100, "is binary (it holds NUL bytes)"),
+    ("UTF-16", REFERENCE_TEXT[:2000].encode("utf-16"), "is binary"),
+    (
+        "latin-1",
+        REFERENCE_TEXT.replace("NASA lift-plus-cruise", "NASA l\xe9ger").encode(
+            "latin-1", "replace"
+        ),
+        "is not UTF-8 text (invalid byte 0xe9",
+    ),
+    ("png header", b"\x89PNG\r\n\x1a\n" + b"\xff" * 64, "is not UTF-8 text"),
+    (
+        "truncated before [motor]",
+        REFERENCE_TEXT.split("[motor]")[0].encode(),
+        "missing key 'motor'",
+    ),
+    (
+        "truncated mid-line",
+        (REFERENCE_TEXT.split("[fuselage]")[0] + "[fuselage]\nlength = ").encode(),
+        "is not valid TOML",
+    ),
+    ("BOM then invalid TOML", b"\xef\xbb\xbf" + b"[wing\narea = 1\n", "is not valid TOML"),
+]
+
+
+@pytest.mark.parametrize(
+    "content, fragment", [c[1:] for c in TEXT_CASES], ids=[c[0] for c in TEXT_CASES]
+)
+def test_bad_file_content_is_a_named_error(tmp_path, content, fragment):
+    path = tmp_path / "bad.toml"
+    path.write_bytes(content)
+    with pytest.raises(VehicleSpecError) as info:
+        load_vehicle(path)
+    message = str(info.value)
+    assert fragment in message, message
+    if "missing key" not in fragment:
+        assert f"vehicle file '{path}'" in message, message
+
+
+def test_missing_and_directory_paths_are_named_errors(tmp_path):
+    with pytest.raises(VehicleSpecError, match=r"vehicle file '.*nowhere\.toml' not found"):
+        load_vehicle(tmp_path / "nowhere.toml")
+    with pytest.raises(VehicleSpecError, match=r"is a directory; allowed: a TOML file"):
+        load_vehicle(tmp_path)
+
+
+def test_utf8_bom_is_accepted(tmp_path):
+    path = tmp_path / "bom.toml"
+    path.write_bytes(b"\xef\xbb\xbf" + REFERENCE_TEXT.encode("utf-8"))
+    assert load_vehicle(path) == reference_vehicle()
+
+
+# ------------------------------------------------------------------------------------------------
+# Good files still load
+
+
+def test_reference_vehicle_loads_unchanged():
+    vehicle = load_vehicle()
+    assert vehicle == reference_vehicle()
+    assert vehicle.design_variable_count() == 171
+
+
+def test_loiter_vehicle_of_the_loiter_test_loads(tmp_path):
+    spec = importlib.util.spec_from_file_location(
+        "loiter_test", Path(__file__).with_name("test_loiter_condition.py")
+    )
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    path = tmp_path / "lpc_loiter.toml"
+    path.write_text(REFERENCE_TEXT + module.LOITER, encoding="utf-8")
+    vehicle = load_vehicle(path)
+    assert [c.name for c in vehicle.conditions][-1] == "loiter"
+    assert vehicle.design_variable_count() == 171 + 3
+
+
+def test_a_good_polar_file_loads(tmp_path):
+    path = _write_polar(tmp_path, "blade.dat", "# XFOIL-like header\nalpha CL CD\n" + _rows())
+    data = copy.deepcopy(REFERENCE_DATA)
+    for rotor in data["lift_rotors"]:
+        rotor["airfoil"] = str(path)
+    vehicle = vehicle_from_dict(data)
+    assert vehicle.lift_rotors[3].airfoil == str(path.resolve())
+
+
+def test_case_counts():
+    # Issue 18 item 3: at least 60 parametrized bad-vehicle-file cases in this module.
+    assert len(DICT_CASES) + len(POLAR_CASES) + len(TEXT_CASES) >= 60
