@@ -509,6 +509,13 @@ def _analyze(args):
     out = Path(args.output_dir)
     out.mkdir(parents=True, exist_ok=True)
     case_file = out / "cases.sql"
+    replaced = [
+        p for p in (case_file, out / "constraints.md", out / "constraints.csv") if p.exists()
+    ]
+    if args.n2 and Path(args.n2).exists():
+        replaced.append(Path(args.n2))
+    if replaced:
+        print(f"lpc-mdo: replacing {', '.join(str(p) for p in replaced)}")
     prob = build_analysis_problem(
         args.vehicle_spec, recorder_path=case_file, static_margin=not args.no_static_margin
     )
@@ -537,7 +544,9 @@ def _analyze(args):
     print()
     print(
         f"  {'condition':<14}{'power [kW]':>12}{'u_dot':>9}{'w_dot':>9}{'q_dot':>9}"
-        "   (accelerations in m/s^2, rad/s^2; trim drives them to the targets)"
+        f"{'V margin':>10}   (accelerations in m/s^2, rad/s^2; trim drives them to the "
+        "targets; V margin: the lowest motor voltage margin 1 - |U|/V_lim, below 0 the "
+        "motor needs more than the voltage limit)"
     )
     from lpc_mdo.groups.condition_kinds import condition_class
 
@@ -551,7 +560,10 @@ def _analyze(args):
             if output
             else f"{'(none)':>12}"
         )
-        print(f"  {name:<14}{power}{lin[0]:>9.3f}{lin[2]:>9.3f}{ang[1]:>9.3f}")
+        motors = condition_class(condition.kind).motor_sets(vehicle, condition)
+        margins = [prob.get_val(f"{name}.{prefix}_motor_voltage_margin").min() for prefix in motors]
+        margin = f"{min(margins):>10.2f}" if margins else f"{'-':>10}"
+        print(f"  {name:<14}{power}{lin[0]:>9.3f}{lin[2]:>9.3f}{ang[1]:>9.3f}{margin}")
     summary = [f"final state of charge {prob.get_val('state_of_charge')[0]:.3f}"]
     for condition in prob.model.conditions:
         for con in condition_class(condition.kind).constraints(vehicle, condition, None):
@@ -575,6 +587,10 @@ def _analyze(args):
     return 0
 
 
+def _silent(message):
+    """Drop a stage's log line (``lpc-mdo optimize --quiet``)."""
+
+
 def _optimize(args):
     from lpc_mdo.warm_start import FULL_PROBLEMS, run_sequence, solve_baseline, solve_stage
 
@@ -589,6 +605,8 @@ def _optimize(args):
         driver_settings=settings,
         trim_first=not args.no_trim,
         progress=not args.quiet,
+        # --quiet: no stage summaries either; the exit code and the case file path remain.
+        log=_silent if args.quiet else print,
     )
     # Each stage prints a progress line per iteration (and IPOPT its own table unless
     # --quiet); Ctrl-C stops cleanly: the case file keeps every recorded iteration and a

@@ -90,3 +90,15 @@ def test_optimize_subproblem_4_and_report(tmp_path, capsys):
     assert case.get_val("cruise.static_margin")[0] >= 0.08 - 1e-6
     assert main(["report", str(out), "--output-dir", str(tmp_path / "report")]) == 0
     assert (tmp_path / "report" / "index.md").exists()
+
+
+def test_analyze_reports_voltage_margins_and_says_what_it_replaces(tmp_path, capsys):
+    # The motor voltage limit is visible: a column of the lowest voltage margin per condition;
+    # a second analysis into the same folder says which files it replaces.
+    out = tmp_path / "out"
+    assert main(["analyze", "--output-dir", str(out)]) == 0
+    first = capsys.readouterr().out
+    assert "V margin" in first and "replacing" not in first
+    assert main(["analyze", "--output-dir", str(out)]) == 0
+    second = capsys.readouterr().out
+    assert f"lpc-mdo: replacing {out / 'cases.sql'}" in second
