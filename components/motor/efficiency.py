@@ -10,9 +10,8 @@ from lpc_mdo.components.motor._numerics import (
     check_saliency,
     declare_pointwise_partials,
 )
-from lpc_mdo.components.motor._pointwise import PointwiseImplicitComp
+from lpc_mdo.components.motor._pointwise import PointwiseImplicitComp, _declare_common_options
 from lpc_mdo.components.motor.mtpa import mtpa_base, mtpa_current_pu
-from lpc_mdo.components.motor.parameters import MotorParameters
 from lpc_mdo.constants import RPM_TO_RAD_S
 from lpc_mdo.numerics import safeguarded_newton
 
@@ -20,29 +19,6 @@ _WINDAGE_COEFFICIENT = (
     mp.ROTOR_ROUGHNESS * np.pi * mp.ROTOR_FRICTION * mp.WINDAGE_AIR_DENSITY * (2.0 * np.pi) ** 2
 )  # P_w = C f**2 l D_2**4
 _RPM_TO_RAD_S = RPM_TO_RAD_S
-
-
-def _declare_shape_options(comp):
-    comp.options.declare(
-        "num_motors",
-        default=1,
-        types=int,
-        lower=1,
-        desc="Number of motors (different designs) evaluated at once",
-    )
-    comp.options.declare(
-        "num_nodes",
-        default=1,
-        types=int,
-        lower=1,
-        desc="Number of operating points (nodes) per motor",
-    )
-    comp.options.declare(
-        "parameters",
-        default=MotorParameters(),
-        types=MotorParameters,
-        desc="Fixed motor parameters",
-    )
 
 
 def _combine(*terms):
@@ -321,7 +297,7 @@ class MotorLossComp(om.ExplicitComponent):
     }
 
     def initialize(self):
-        _declare_shape_options(self)
+        _declare_common_options(self, per_node=True)
 
     def setup(self):
         nm, nn = self.options["num_motors"], self.options["num_nodes"]
@@ -582,7 +558,7 @@ class MotorMarginComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        _declare_shape_options(self)
+        _declare_common_options(self, per_node=True)
         self.options.declare(
             "include_torque_limit",
             default=True,

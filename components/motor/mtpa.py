@@ -5,7 +5,7 @@ import openmdao.api as om
 
 from lpc_mdo.checks import check_range
 from lpc_mdo.components.motor._numerics import check_saliency
-from lpc_mdo.components.motor.parameters import MotorParameters
+from lpc_mdo.components.motor._pointwise import _declare_common_options
 from lpc_mdo.numerics import safeguarded_newton
 
 
@@ -102,26 +102,7 @@ class MTPAComp(om.ImplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare(
-            "num_motors",
-            default=1,
-            types=int,
-            lower=1,
-            desc="Number of motors (different designs) evaluated at once",
-        )
-        self.options.declare(
-            "num_nodes",
-            default=1,
-            types=int,
-            lower=1,
-            desc="Number of operating points (nodes) per motor",
-        )
-        self.options.declare(
-            "parameters",
-            default=MotorParameters(),
-            types=MotorParameters,
-            desc="Fixed motor parameters",
-        )
+        _declare_common_options(self, per_node=True)
 
     def setup(self):
         nm, nn = self.options["num_motors"], self.options["num_nodes"]
