@@ -31,6 +31,7 @@ import argparse
 import concurrent.futures
 import datetime
 import os
+import pickle
 import queue
 import re
 import shutil
@@ -163,9 +164,9 @@ def polar_tables(coords, symmetric):
 
 
 def _xfoil_alphas():
-    """Return the two sweeps (0 deg up, -0.5 deg down), in XFOIL_SUBSTEP steps."""
-    up = np.arange(0.0, CP_ALPHA_DEG.max() + 1e-9, XFOIL_SUBSTEP)
-    down = np.arange(-XFOIL_SUBSTEP, CP_ALPHA_DEG.min() - 1e-9, -XFOIL_SUBSTEP)
+    """Return the two sweeps (0 deg up, -0.5 deg down) over the polar's angles, 0.5 deg steps."""
+    up = np.arange(0.0, ALPHA_DEG.max() + 1e-9, XFOIL_SUBSTEP)
+    down = np.arange(-XFOIL_SUBSTEP, ALPHA_DEG.min() - 1e-9, -XFOIL_SUBSTEP)
     return up, down
 
 
@@ -201,8 +202,11 @@ class Xfoil:
         self.lines.put(None)
 
     def run(self, *commands, timeout=30.0):
-        self.proc.stdin.write("\n".join((*commands, self.MARK)) + "\n")
-        self.proc.stdin.flush()
+        try:
+            self.proc.stdin.write("\n".join((*commands, self.MARK)) + "\n")
+            self.proc.stdin.flush()
+        except OSError:  # XFOIL died (e.g. a floating-point exception at high Mach)
+            raise TimeoutError("xfoil exited") from None
         out = []
         deadline = time.monotonic() + timeout
         while True:
@@ -241,16 +245,25 @@ def _start(workdir, display, reynolds):
 
 
 def xfoil_session(args):
-    """XFOIL for one airfoil and Reynolds number over all CP_MACH; returns the converged points."""
-    coords, reynolds, workdir, display = args
+    """
+    XFOIL for one airfoil and Reynolds number over all MACH; return the converged points.
+
+    For each Mach number two sweeps from a fresh boundary layer (0 deg up to the polar's
+    largest angle, -0.5 deg down to its smallest) in XFOIL_SUBSTEP steps; a sweep goes on from
+    the unconverged state after a failure (as XFOIL's ASEQ does) and stops after 4 failures in
+    a row, or when XFOIL dies (then XFOIL is restarted for the next sweep). Every converged
+    step keeps (cl, cd, cm); at the whole degrees of CP_ALPHA_DEG and where ``want_cp[k]`` the
+    pressure distribution (CPWR) too.
+    """
+    coords, reynolds, want_cp, workdir, display = args
     workdir = Path(workdir)
     workdir.mkdir(parents=True, exist_ok=True)
     np.savetxt(workdir / "airfoil.dat", coords, header="airfoil", comments="", fmt="%.7f")
-    stored = {round(float(a), 2) for a in CP_ALPHA_DEG}
+    cp_angles = {round(float(a), 2) for a in CP_ALPHA_DEG}
     result = {"mach": {}}
     xf = _start(workdir, display, reynolds)
     result["nodes"] = np.loadtxt(workdir / "nodes.txt")
-    for k, mach in enumerate(CP_MACH):
+    for k, mach in enumerate(MACH):
         converged = {}
         for sweep in _xfoil_alphas():
             try:
@@ -275,22 +288,77 @@ def xfoil_session(args):
                         continue
                     failures = 0
                     key = round(float(a), 2)
-                    if key in stored:
+                    cp = None
+                    if want_cp[k] and key in cp_angles:
                         name = f"cp_{k}_{key:+06.2f}.txt"
                         xf.run(f"CPWR {name}")
                         cp = np.loadtxt(workdir / name, skiprows=1)[:, -1]
-                        converged[key] = (
-                            float(m_cl[-1][1]),
-                            float(m_cd[-1][1]),
-                            float(m_cd[-1][0]),
-                            cp,
-                        )
+                    converged[key] = (
+                        float(m_cl[-1][1]),
+                        float(m_cd[-1][1]),
+                        float(m_cd[-1][0]),
+                        cp,
+                    )
             except TimeoutError:
                 xf.close()
                 xf = _start(workdir, display, reynolds)
         result["mach"][k] = converged
     xf.close()
     return reynolds, result
+
+
+def run_xfoil(coords, jobs, name, display, cache_dir=None):
+    """
+    Run the XFOIL sessions of one airfoil (one per REYNOLDS value, ``jobs`` in parallel).
+
+    With ``cache_dir`` the raw results are kept in ``cache_dir/xfoil_<name>.pkl`` and read
+    back on a rerun with the same grids and settings (to re-merge without rerunning XFOIL).
+    """
+    settings = (
+        ALPHA_DEG.tolist(),
+        REYNOLDS.tolist(),
+        MACH.tolist(),
+        CP_ALPHA_DEG.tolist(),
+        CP_REYNOLDS.tolist(),
+        CP_MACH.tolist(),
+        XFOIL_PANELS,
+        XFOIL_ITER,
+        XFOIL_SUBSTEP,
+        np.asarray(coords).tolist(),
+    )
+    cache = None if cache_dir is None else Path(cache_dir) / f"xfoil_{name}.pkl"
+    if cache is not None and cache.is_file():
+        with open(cache, "rb") as fh:
+            stored = pickle.load(fh)
+        if stored["settings"] == settings:
+            print(f"  {name}: XFOIL results read from {cache}")
+            return stored["results"]
+    want_cp = np.isin(MACH, CP_MACH)
+    with tempfile.TemporaryDirectory(prefix=f"xfoil_{name}_") as tmp:
+        tasks = [
+            (coords, rey, want_cp & np.isin(rey, CP_REYNOLDS), Path(tmp) / f"re{j}", display)
+            for j, rey in enumerate(REYNOLDS)
+        ]
+        with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+            results = [res for _, res in pool.map(xfoil_session, tasks)]
+    if cache is not None:
+        cache.parent.mkdir(parents=True, exist_ok=True)
+        with open(cache, "wb") as fh:
+            pickle.dump({"settings": settings, "results": results}, fh)
+    return results
+
+
+def xfoil_polar_arrays(results):
+    """XFOIL cl, cd, cm on ALPHA_DEG x REYNOLDS x MACH (NaN where XFOIL did not converge)."""
+    shape = (len(ALPHA_DEG), len(REYNOLDS), len(MACH))
+    out = {k: np.full(shape, np.nan) for k in ("cl", "cd", "cm")}
+    for j, res in enumerate(results):
+        for k, converged in res["mach"].items():
+            for i, a in enumerate(ALPHA_DEG):
+                point = converged.get(round(float(a), 2))
+                if point is not None:
+                    out["cl"][i, j, k], out["cd"][i, j, k], out["cm"][i, j, k] = point[:3]
+    return out
 
 
 def stations(n):
@@ -357,8 +425,8 @@ def start_display():
     return proc, f":{number}"
 
 
-def pressure_tables(coords, jobs, name, display):
-    """Run XFOIL over the Cp table's angles, Reynolds and Mach numbers; return the arrays."""
+def pressure_tables(results, name):
+    """Pressure tables on the Cp grid from the XFOIL sessions of :func:`run_xfoil`."""
     shape = (len(CP_ALPHA_DEG), len(CP_REYNOLDS), len(CP_MACH))
     x_st = stations(N_X)
     cp_u = np.full(shape + (N_X,), np.nan)
@@ -366,13 +434,11 @@ def pressure_tables(coords, jobs, name, display):
     conv = np.zeros(shape, dtype=bool)
     xf = {k: np.full(shape, np.nan) for k in ("cl", "cd", "cm")}
     y_u = y_l = None
-    with tempfile.TemporaryDirectory(prefix=f"xfoil_{name}_") as tmp:
-        tasks = [(coords, rey, Path(tmp) / f"re{j}", display) for j, rey in enumerate(CP_REYNOLDS)]
-        with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
-            results = list(pool.map(xfoil_session, tasks))
-    for j, (_, res) in enumerate(results):
+    for j, rey in enumerate(CP_REYNOLDS):
+        res = results[int(np.flatnonzero(np.isclose(REYNOLDS, rey))[0])]
         nodes = res["nodes"]
-        for k, converged in res["mach"].items():
+        for k, mach in enumerate(CP_MACH):
+            converged = res["mach"][int(np.flatnonzero(np.isclose(MACH, mach))[0])]
             for i, a in enumerate(CP_ALPHA_DEG):
                 key = round(float(a), 2)
                 if key not in converged:
@@ -445,6 +511,11 @@ def main(argv=None):
         action="store_true",
         help="skip the XFOIL Cp tables (wing files are then written without them)",
     )
+    parser.add_argument(
+        "--xfoil-cache",
+        default=None,
+        help="folder for the raw XFOIL results (reused on a rerun with the same settings)",
+    )
     args = parser.parse_args(argv)
 
     try:
@@ -500,8 +571,8 @@ def make_one(name, args, nf_version, asb_version, stamp, display, out_dir):
     )
     msg = f"{name}: polar {time.process_time() - t0:.1f} s CPU"
     if spec["pressure"] and display is not None:
-        p = pressure_tables(coords, args.jobs, name, display)
-        data.update(p)
+        results = run_xfoil(coords, args.jobs, name, display, args.xfoil_cache)
+        data.update(pressure_tables(results, name))
         data["cp_source"] = (
             f"{xfoil_version()}, PANE {XFOIL_PANELS} nodes, viscous, "
             f"n_crit={N_CRIT:g}, ITER {XFOIL_ITER}, sweeps from 0 deg in "
