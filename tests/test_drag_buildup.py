@@ -7,6 +7,7 @@ from openmdao.utils.assert_utils import assert_check_partials, assert_near_equal
 
 from lpc_mdo.components.aero.drag_buildup import (
     LPC_ROTOR_DRAG_AREA,
+    BluffDrag,
     BodyDrag,
     DragBuildupComp,
     FixedFormFactorDrag,
@@ -156,3 +157,24 @@ def test_bad_specs_and_inputs():
         r"must be > 0",
     ):
         prob.run_model()
+
+
+def test_bluff_part_adds_its_drag_area():
+    # A BluffDrag part adds count C_D A_front to D/q, independent of Re and M: two wheels of
+    # 0.675 m x 0.236 m frontal area at C_D 0.25 (Raymer, Aircraft Design 6th ed., Table 12.6,
+    # regular wheel and tire) give 2 * 0.25 * 0.1593 = 0.079650 m^2 (exact arithmetic, 1e-12).
+    wheel = BluffDrag("main_wheels", 0.25, 0.675 * 0.236, count=2)
+    wing = LiftingSurfaceDrag("wing", 0.13, 0.4)
+    values = {"wing_area": 19.6, "wing_mean_aerodynamic_chord": 1.46, "reference_area": 19.6}
+    prob = make_problem((wing, wheel), values, conditions=(CRUISE, {**CRUISE, "speed": 30.0}))
+    areas = prob.get_val("drag_areas")
+    assert_near_equal(areas[:, 1], [0.079650, 0.079650], 1e-12)
+    only_wing = make_problem((wing,), values, conditions=(CRUISE, {**CRUISE, "speed": 30.0}))
+    assert_near_equal(prob.get_val("CD0") - only_wing.get_val("CD0"), [0.079650 / 19.6] * 2, 1e-10)
+    data = prob.check_partials(method="cs", compact_print=True, out_stream=None)
+    assert_check_partials(data, atol=1e-8, rtol=1e-8)
+
+
+def test_bluff_part_rejects_bad_coefficient():
+    with pytest.raises(ValueError, match="drag_coefficient"):
+        BluffDrag("gear", -0.1, 0.1)
