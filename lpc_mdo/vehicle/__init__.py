@@ -101,6 +101,7 @@ from lpc_mdo.vehicle.consistency import (
     _check_lift_rotors,
     _check_mission,
     _check_pusher,
+    _check_wing,
 )
 from lpc_mdo.vehicle.design_variables import _read_design_variables
 from lpc_mdo.vehicle.parts import (
@@ -120,7 +121,9 @@ from lpc_mdo.vehicle.parts import (
     NoiseObserver,
     Rotor,
     Vehicle,
+    Wing,
     WingBox,
+    WingSection,
 )
 from lpc_mdo.vehicle.schema import BASE_DIR, VehicleSpecError, _read_fields
 
@@ -142,7 +145,9 @@ __all__ = [
     "Rotor",
     "Vehicle",
     "VehicleSpecError",
+    "Wing",
     "WingBox",
+    "WingSection",
     "design_variable_count",
     "load_vehicle",
     "read_vehicle_file",
@@ -240,6 +245,7 @@ def vehicle_from_dict(data: Mapping) -> Vehicle:
         At the first problem, naming the dotted key, the value and what is allowed.
     """
     values = _read_fields(Vehicle, data, "", skip="design_variables")
+    values["wing"] = _check_wing(values["wing"])
     _check_lift_rotors(values["lift_rotors"])
     _check_pusher(values["pusher"])
     _check_geometry(values)

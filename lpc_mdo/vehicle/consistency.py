@@ -7,6 +7,8 @@ the cruise condition a steady one).
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
 from lpc_mdo.vehicle.parts import (
@@ -16,6 +18,7 @@ from lpc_mdo.vehicle.parts import (
     DesignCondition,
     Mission,
     Rotor,
+    Wing,
     _pairs,
 )
 from lpc_mdo.vehicle.schema import VehicleSpecError
@@ -209,3 +212,45 @@ def _check_geometry(parts: dict) -> None:
     _check_thrust_axes(parts["lift_rotors"], parts["pusher"])
     _check_rotor_positions(parts["lift_rotors"], parts["pusher"])
     _check_limits(parts)
+
+
+def _check_wing(wing: Wing) -> Wing:
+    """Check the wing's planform keys; return the wing with the sections' taper ratio set.
+
+    ``planform = "trapezoid"`` needs ``taper_ratio`` and no ``sections``; ``planform =
+    "sections"`` needs ``sections`` (each starting with the previous one's tip chord) and no
+    ``taper_ratio`` (it is the sections' tip over root chord).
+    """
+    if wing.planform == "trapezoid":
+        if wing.taper_ratio is None:
+            raise VehicleSpecError(
+                "missing key 'wing.taper_ratio' (number, in (0, 1]; required with "
+                "wing.planform = 'trapezoid')"
+            )
+        if wing.sections is not None:
+            raise VehicleSpecError(
+                "'wing.sections' is given with wing.planform = 'trapezoid'; allowed: "
+                "[[wing.sections]] only with planform = 'sections' (or remove them)"
+            )
+        return wing
+    if wing.sections is None:
+        raise VehicleSpecError(
+            "missing key 'wing.sections' (list of [[wing.sections]] tables, root to tip; "
+            "required with wing.planform = 'sections')"
+        )
+    if wing.taper_ratio is not None:
+        raise VehicleSpecError(
+            f"'wing.taper_ratio' = {wing.taper_ratio!r} is given with wing.planform = "
+            "'sections'; allowed: no taper_ratio (the sections' chords set the taper), or "
+            "planform = 'trapezoid'"
+        )
+    for k in range(1, len(wing.sections)):
+        root, tip = wing.sections[k].root_chord, wing.sections[k - 1].tip_chord
+        if not np.isclose(root, tip, rtol=1e-6, atol=0.0):
+            raise VehicleSpecError(
+                f"'wing.sections[{k}].root_chord' = {root!r} differs from "
+                f"'wing.sections[{k - 1}].tip_chord' = {tip!r}; allowed: equal (within 1e-6), "
+                "a section starts where the previous one ends"
+            )
+    taper = wing.sections[-1].tip_chord / wing.sections[0].root_chord
+    return dataclasses.replace(wing, taper_ratio=taper)

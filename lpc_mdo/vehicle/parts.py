@@ -143,6 +143,101 @@ class LiftingSurface:
         return AIRFOILS[self.airfoil].max_thickness_location
 
 
+#: Wing planform kinds of the vehicle file's ``wing.planform``.
+WING_PLANFORMS = ("trapezoid", "sections")
+
+
+@dataclass(frozen=True)
+class WingSection:
+    """One span-wise section of a cranked wing, as an OpenVSP wing section (``XSec``) defines it.
+
+    The sections run from the root to the tip; a section's root chord is the previous section's
+    tip chord. Only their proportions enter the model: the planform is scaled to the wing-area
+    and aspect-ratio design variables with span fractions and chord ratios fixed (docs
+    theory/geometry 'Cranked wing planform').
+
+    Attributes
+    ----------
+    span : float
+        Section span (m) measured in the section's plane (OpenVSP ``Span``; its projection on
+        y is ``span cos(dihedral)``).
+    root_chord, tip_chord : float
+        Chords at the section's inboard and outboard ends (m).
+    sweep : float
+        Sweep of the line at ``sweep_location`` (rad), positive aft; file key ``sweep_deg``.
+    sweep_location : float
+        Chord fraction of the swept line (OpenVSP ``Sweep_Location``; 0 = leading edge).
+    twist : float
+        Twist of the section's tip chord relative to the wing root chord (rad), positive nose up
+        (OpenVSP absolute ``Twist``); file key ``twist_deg``.
+    dihedral : float
+        Dihedral (rad), positive tip up; file key ``dihedral_deg``.
+    """
+
+    # 1 mm to 100 m (catches a span in mm); chords 1 mm to 30 m.
+    span: float = _param("m", gt=0, le=100)
+    root_chord: float = _param("m", gt=0, le=30)
+    tip_chord: float = _param("m", ge=0, le=30)
+    sweep: float = _angle(ge=-70, le=70)
+    sweep_location: float = _param(ge=0, le=1)
+    twist: float = _angle(ge=-30, le=30)
+    dihedral: float = _angle(ge=-30, le=30)
+
+
+@dataclass(frozen=True)
+class Wing(LiftingSurface):
+    """The wing: a :class:`LiftingSurface` whose planform is a trapezoid or a list of sections.
+
+    ``planform = "trapezoid"`` uses ``taper_ratio``, ``sweep`` (leading edge) and ``dihedral``
+    of the surface; ``planform = "sections"`` uses ``sections`` (the NASA LPC wing of OpenVSP in
+    the reference vehicle) and sets ``taper_ratio`` to the sections' tip over root chord, and
+    ``sweep`` and ``dihedral`` remain whole-wing (root-to-tip leading-edge) figures for the
+    estimates that need one number. Either way the planform is scaled to ``area`` and
+    ``aspect_ratio`` (:class:`lpc_mdo.components.geometry.cranked_planform.SectionLayout`).
+
+    Attributes
+    ----------
+    planform : str
+        ``"trapezoid"`` or ``"sections"``.
+    sections : tuple of WingSection or None
+        Root to tip; required with ``planform = "sections"``, not allowed otherwise.
+    """
+
+    taper_ratio: float = _param(gt=0, le=1, optional=True)
+    planform: str = _param(choices=WING_PLANFORMS)
+    sections: tuple[WingSection, ...] = _param(
+        optional=True, count_note="the wing sections, [[wing.sections]] tables, root to tip"
+    )
+
+    def _geometry(self):
+        """Return the sections' planform at ``area`` and ``aspect_ratio``."""
+        from lpc_mdo.components.geometry.cranked_planform import SectionLayout
+
+        layout = SectionLayout.from_wing(self)
+        return layout.geometry(self.area, self.aspect_ratio, np.zeros(3))
+
+    @property
+    def root_chord(self) -> float:
+        """Root chord (m) of the planform scaled to ``area`` and ``aspect_ratio``."""
+        if self.planform == "trapezoid":
+            return super().root_chord
+        return float(self._geometry()["root_chord"])
+
+    @property
+    def tip_chord(self) -> float:
+        """Tip chord (m)."""
+        if self.planform == "trapezoid":
+            return super().tip_chord
+        return float(self._geometry()["tip_chord"])
+
+    @property
+    def mean_aerodynamic_chord(self) -> float:
+        """Mean aerodynamic chord (2/S) integral of c^2 over the half span (m)."""
+        if self.planform == "trapezoid":
+            return super().mean_aerodynamic_chord
+        return float(self._geometry()["mean_aerodynamic_chord"])
+
+
 @dataclass(frozen=True)
 class Fuselage:
     """Fuselage dimensions; the nose is the origin of the body frame.
@@ -630,8 +725,10 @@ class Vehicle:
     ----------
     name : str
         Label.
-    wing, horizontal_tail, vertical_tail : LiftingSurface
-        Lifting surfaces.
+    wing : Wing
+        The wing (trapezoid or sections).
+    horizontal_tail, vertical_tail : LiftingSurface
+        Tail surfaces.
     fuselage : Fuselage
         Fuselage.
     lift_rotors : tuple of 8 Rotor
@@ -664,7 +761,7 @@ class Vehicle:
     """
 
     name: str = _param()
-    wing: LiftingSurface = _param()
+    wing: Wing = _param()
     horizontal_tail: LiftingSurface = _param()
     vertical_tail: LiftingSurface = _param()
     fuselage: Fuselage = _param()

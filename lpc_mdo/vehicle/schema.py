@@ -50,6 +50,7 @@ class _Spec:
     count_note: str = ""
     derived: bool = False  # set by the loader, not read from the file
     polar_file: bool = False  # a string may also name an existing airfoil polar file
+    optional: bool = False  # the key may be absent (the field is then None); see _read_fields
 
 
 _POLAR_SUFFIXES = (".npz", ".txt", ".dat", ".csv", ".pol")
@@ -124,8 +125,13 @@ def _hints(cls) -> dict:
     return typing.get_type_hints(cls)
 
 
-def _check_keys(data, allowed: Mapping[str, str], path: str) -> None:
-    """Reject a non-table, unknown keys and missing keys; ``allowed`` maps key -> description."""
+def _check_keys(
+    data, allowed: Mapping[str, str], path: str, optional: frozenset = frozenset()
+) -> None:
+    """Reject a non-table, unknown keys and missing keys; ``allowed`` maps key -> description.
+
+    Keys in ``optional`` may be missing (the cross-field checks say when they are required).
+    """
     if not isinstance(data, Mapping):
         what = f"'{path}'" if path else "a vehicle description"
         raise VehicleSpecError(f"{what} must be a table, got {_show(data)}")
@@ -134,7 +140,7 @@ def _check_keys(data, allowed: Mapping[str, str], path: str) -> None:
             names = ", ".join(repr(k) for k in sorted(allowed))
             raise VehicleSpecError(f"unknown key '{_join(path, key)}'; allowed keys: {names}")
     for key, description in allowed.items():
-        if key not in data:
+        if key not in data and key not in optional:
             raise VehicleSpecError(f"missing key '{_join(path, key)}' ({description})")
 
 
@@ -142,9 +148,14 @@ def _read_fields(cls, data, path: str, skip: str = "") -> dict:
     """Check the keys of a table and convert every file-backed field of ``cls`` except ``skip``."""
     hints = _hints(cls)
     fields = {f.name + _spec(f).suffix: f for f in dataclasses.fields(cls) if not _spec(f).derived}
-    _check_keys(data, {k: _describe(hints[f.name], _spec(f)) for k, f in fields.items()}, path)
+    optional = frozenset(k for k, f in fields.items() if _spec(f).optional)
+    _check_keys(
+        data, {k: _describe(hints[f.name], _spec(f)) for k, f in fields.items()}, path, optional
+    )
     return {
-        f.name: _convert(hints[f.name], _spec(f), data[key], _join(path, key))
+        f.name: (
+            _convert(hints[f.name], _spec(f), data[key], _join(path, key)) if key in data else None
+        )
         for key, f in fields.items()
         if f.name != skip
     }
