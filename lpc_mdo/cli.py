@@ -581,9 +581,7 @@ def _analyze_constraints(analysis, args):
     from lpc_mdo.analysis import TRIM_TOLERANCE, trim_tolerances
     from lpc_mdo.post.tables import DEFAULT_TOL, constraint_rows, format_constraint_status
 
-    rows = constraint_rows(
-        str(args.case_file), case="final", tols=trim_tolerances(analysis.prob)
-    )
+    rows = constraint_rows(str(args.case_file), case="final", tols=trim_tolerances(analysis.prob))
     return (
         f"  constraints (status band: {DEFAULT_TOL:g} of the limit or scaling reference; trim "
         f"rows {TRIM_TOLERANCE:g}, 0.1 % of the weight):\n" + format_constraint_status(rows)
@@ -963,7 +961,8 @@ def main(argv=None):
     -------
     int
         Exit code: 0 success, 1 an optimization that did not converge, an analysis with a
-        condition that did not trim (named on stderr), or a bug (with its traceback), 2 a user error (one line ``lpc-mdo: error: ...``), 130 interrupted.
+        condition that did not trim (named on stderr), or a bug (with its traceback), 2 a
+        user error (one line ``lpc-mdo: error: ...``), 130 interrupted.
     """
     os.environ.setdefault("OPENMDAO_REPORTS", "0")
     argv = sys.argv[1:] if argv is None else list(argv)

@@ -58,7 +58,7 @@ def test_analyze_names_a_condition_that_cannot_trim(tmp_path, capsys):
     # Cruise trims at a pusher speed of 976 rpm (the reference vehicle's initial design);
     # with the pusher's cruise upper bound at 750 rpm its thrust cannot balance the drag.
     text = (resources.files("lpc_mdo") / "data" / "lpc_reference.toml").read_text()
-    block = "[design_variables.cruise_pusher_rpm]\nunits = \"rpm\"\ninitial = 1200.0\n"
+    block = '[design_variables.cruise_pusher_rpm]\nunits = "rpm"\ninitial = 1200.0\n'
     assert block + "lower = 700.0\nupper = 2500.0\n" in text
     path = tmp_path / "slow_pusher.toml"
     path.write_text(
