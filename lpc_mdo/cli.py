@@ -5,6 +5,11 @@ the command with one line on stderr, ``lpc-mdo: error: <message>``, and exit cod
 model is built: the message names the argument, its value and what is allowed (the form of
 :mod:`lpc_mdo.checks`). ``--debug`` adds the traceback. An unexpected exception, a bug, still
 prints its traceback, followed by one line asking for a report, and exits with code 1.
+
+``lpc-mdo analyze`` trims every design condition by its trim variables (``--no-trim``: the raw
+initial design, said so in its header). A condition whose largest scaled trim residual stays at
+or above :data:`lpc_mdo.analysis.TRIM_TOLERANCE` (0.1 % of the weight) is named in the summary
+and on stderr, and the command exits with code 1 after writing its case file and tables.
 """
 
 import argparse
@@ -499,71 +504,94 @@ def _check_report_cases(cases):
 # The commands.
 
 
-def _analyze(args):
-    import openmdao.api as om
-
-    from lpc_mdo.api.weights import format_mass_breakdown, mass_breakdown
-    from lpc_mdo.post.tables import constraint_table
-    from lpc_mdo.problems import build_analysis_problem
-
-    out = Path(args.output_dir)
-    out.mkdir(parents=True, exist_ok=True)
-    case_file = out / "cases.sql"
-    replaced = [
-        p for p in (case_file, out / "constraints.md", out / "constraints.csv") if p.exists()
-    ]
-    if args.n2 and Path(args.n2).exists():
-        replaced.append(Path(args.n2))
-    if replaced:
-        print(f"lpc-mdo: replacing {', '.join(str(p) for p in replaced)}")
-    prob = build_analysis_problem(
-        args.vehicle_spec, recorder_path=case_file, static_margin=not args.no_static_margin
-    )
-    prob.run_model()
-    prob.record("final")
-    vehicle = prob.vehicle
-
+def _analyze_header(analysis, args):
+    prob, vehicle = analysis.prob, analysis.vehicle
     dvs = prob.model.get_design_vars()
     cons = prob.model.get_constraints()
-    print(f"lpc-mdo analysis of '{vehicle.name}' (initial design)")
-    print(
-        f"  {len(prob.model.condition_names)} design conditions, "
-        f"{sum(m['size'] for m in dvs.values())} design variables, "
-        f"{sum(m['size'] for m in cons.values() if not m['linear'])} constraints, "
-        f"{sum(m['size'] for m in cons.values() if m['linear'])} linear rotor-speed bounds"
+    state = (
+        "initial design, trimmed: each condition by its rotor speeds, pitch and elevator"
+        if analysis.trimmed
+        else "initial design, NOT trimmed (--no-trim): the vehicle file's initial rotor "
+        "speeds, pitch and elevator; the accelerations are not at their targets"
     )
-    print(
-        f"  wing: S = {prob.get_val('wing_area')[0]:.2f} m^2, "
-        f"AR = {prob.get_val('wing_aspect_ratio')[0]:.2f}, "
-        f"span = {prob.get_val('wing_span')[0]:.2f} m; fuselage "
-        f"{prob.get_val('fuselage_length')[0]:.3f} m; rotor radii "
-        f"{np.array2string(prob.get_val('rotor_radius'), precision=3)} m"
+    return "\n".join(
+        [
+            f"lpc-mdo analysis of '{vehicle.name}' ({state})",
+            f"  {len(prob.model.condition_names)} design conditions, "
+            f"{sum(m['size'] for m in dvs.values())} design variables, "
+            f"{sum(m['size'] for m in cons.values() if not m['linear'])} constraints, "
+            f"{sum(m['size'] for m in cons.values() if m['linear'])} linear rotor-speed bounds",
+            f"  wing: S = {prob.get_val('wing_area')[0]:.2f} m^2, "
+            f"AR = {prob.get_val('wing_aspect_ratio')[0]:.2f}, "
+            f"span = {prob.get_val('wing_span')[0]:.2f} m; fuselage "
+            f"{prob.get_val('fuselage_length')[0]:.3f} m; rotor radii "
+            f"{np.array2string(prob.get_val('rotor_radius'), precision=3)} m",
+        ]
     )
-    print()
-    print(format_mass_breakdown(mass_breakdown(prob)))
-    print()
-    print(
-        f"  {'condition':<14}{'power [kW]':>12}{'u_dot':>9}{'w_dot':>9}{'q_dot':>9}"
-        f"{'V margin':>10}   (accelerations in m/s^2, rad/s^2; trim drives them to the "
-        "targets; V margin: the lowest motor voltage margin 1 - |U|/V_lim, below 0 the "
-        "motor needs more than the voltage limit)"
-    )
+
+
+def _analyze_masses(analysis, args):
+    from lpc_mdo.api.weights import format_mass_breakdown, mass_breakdown
+
+    return format_mass_breakdown(mass_breakdown(analysis.prob))
+
+
+def _analyze_conditions(analysis, args):
     from lpc_mdo.groups.condition_kinds import condition_class
 
+    prob, vehicle = analysis.prob, analysis.vehicle
+    trim = analysis.trim.conditions if analysis.trim else {}
+    lines = [
+        f"  {'condition':<14}{'power [kW]':>12}{'u_dot':>9}{'w_dot':>9}{'q_dot':>9}"
+        f"{'V margin':>10}{'trim residual':>15}   (accelerations in m/s^2, rad/s^2; structural "
+        "conditions show their load factor n instead of a power; V margin: the lowest motor "
+        "voltage margin 1 - |U|/V_lim, below 0 the motor needs more than the voltage limit; "
+        "trim residual: the largest scaled trim row, 1e-3 = 0.1 % of the weight)"
+    ]
     for condition in prob.model.conditions:
         name = condition.name
         lin = prob.get_val(f"{name}.linear_acceleration")[0]
         ang = prob.get_val(f"{name}.angular_acceleration")[0]
-        output = condition_class(condition.kind).power_output
-        power = (
-            f"{prob.get_val(f'{name}.{output}', units='kW')[0]:>12.1f}"
-            if output
-            else f"{'(none)':>12}"
-        )
-        motors = condition_class(condition.kind).motor_sets(vehicle, condition)
+        kind = condition_class(condition.kind)
+        if kind.power_output:
+            power = f"{prob.get_val(f'{name}.{kind.power_output}', units='kW')[0]:>12.1f}"
+        else:
+            factor = getattr(condition, "load_factor", None)
+            power = f"{f'n = {factor:+g}' if factor is not None else '-':>12}"
+        motors = kind.motor_sets(vehicle, condition)
         margins = [prob.get_val(f"{name}.{prefix}_motor_voltage_margin").min() for prefix in motors]
         margin = f"{min(margins):>10.2f}" if margins else f"{'-':>10}"
-        print(f"  {name:<14}{power}{lin[0]:>9.3f}{lin[2]:>9.3f}{ang[1]:>9.3f}{margin}")
+        residual = f"{trim[name].max_residual:>15.2e}" if name in trim else f"{'-':>15}"
+        if name in analysis.failed:
+            residual += "  NOT TRIMMED"
+        lines.append(
+            f"  {name:<14}{power}{lin[0]:>9.3f}{lin[2]:>9.3f}{ang[1]:>9.3f}{margin}{residual}"
+        )
+    return "\n".join(lines)
+
+
+def _analyze_trim_variables(analysis, args):
+    from lpc_mdo.analysis import format_trim_variables
+
+    title = "trim variables" if analysis.trimmed else "trim variables (initial values, not trimmed)"
+    return f"  {title}:\n" + format_trim_variables(analysis.prob)
+
+
+def _analyze_constraints(analysis, args):
+    from lpc_mdo.analysis import TRIM_TOLERANCE, trim_tolerances
+    from lpc_mdo.post.tables import DEFAULT_TOL, constraint_rows, format_constraint_status
+
+    rows = constraint_rows(str(args.case_file), case="final", tols=trim_tolerances(analysis.prob))
+    return (
+        f"  constraints (status band: {DEFAULT_TOL:g} of the limit or scaling reference; trim "
+        f"rows {TRIM_TOLERANCE:g}, 0.1 % of the weight):\n" + format_constraint_status(rows)
+    )
+
+
+def _analyze_summary(analysis, args):
+    from lpc_mdo.groups.condition_kinds import condition_class
+
+    prob, vehicle = analysis.prob, analysis.vehicle
     summary = [f"final state of charge {prob.get_val('state_of_charge')[0]:.3f}"]
     for condition in prob.model.conditions:
         for con in condition_class(condition.kind).constraints(vehicle, condition, None):
@@ -573,17 +601,70 @@ def _analyze(args):
     cruise = vehicle.mission.cruise_condition
     if cruise in prob.model.condition_names:
         summary.append(f"{cruise} static margin {prob.get_val(f'{cruise}.static_margin')[0]:.3f}")
-    print("\n  " + ", ".join(summary))
+    lines = ["  " + ", ".join(summary)]
+    if not analysis.trimmed:
+        lines.append("  trim: not trimmed (--no-trim)")
+    elif analysis.failed:
+        failed = ", ".join(f"{n} (residual {r:.3g})" for n, r in analysis.failed.items())
+        lines.append(f"  trim FAILED for {failed}: the values above are not a trimmed state")
+    else:
+        lines.append(f"  trim: all {len(analysis.trim.conditions)} conditions trimmed")
+    return "\n".join(lines)
+
+
+#: The sections ``lpc-mdo analyze`` prints, in order: each takes (Analysis, args) and returns
+#: text. A new table is one more function here.
+ANALYZE_SECTIONS = (
+    _analyze_header,
+    _analyze_masses,
+    _analyze_conditions,
+    _analyze_trim_variables,
+    _analyze_constraints,
+    _analyze_summary,
+)
+
+
+def _analyze(args):
+    import openmdao.api as om
+
+    from lpc_mdo.analysis import analyze_vehicle, trim_tolerances
+    from lpc_mdo.post.tables import constraint_table
+
+    out = Path(args.output_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    case_file = args.case_file = out / "cases.sql"
+    replaced = [
+        p for p in (case_file, out / "constraints.md", out / "constraints.csv") if p.exists()
+    ]
+    if args.n2 and Path(args.n2).exists():
+        replaced.append(Path(args.n2))
+    if replaced:
+        print(f"lpc-mdo: replacing {', '.join(str(p) for p in replaced)}")
+    analysis = analyze_vehicle(
+        args.vehicle_spec,
+        trim=not args.no_trim,
+        recorder_path=case_file,
+        static_margin=not args.no_static_margin,
+    )
+    prob = analysis.prob
+    tols = trim_tolerances(prob)
+    for section in ANALYZE_SECTIONS:
+        print(section(analysis, args))
+        print()
     prob.cleanup()
 
-    table = constraint_table(str(case_file), case="final")
+    table = constraint_table(str(case_file), case="final", tols=tols)
     table.write(str(out), "constraints")
-    print(f"\nconstraint table (paper Table 7 layout): {out / 'constraints.md'}")
+    print(f"constraint table (paper Table 7 layout): {out / 'constraints.md'}")
     print(f"case file: {case_file}")
     if args.n2:
         Path(args.n2).absolute().parent.mkdir(parents=True, exist_ok=True)
         om.n2(str(case_file), outfile=str(args.n2), show_browser=False)
         print(f"N2 diagram: {args.n2}")
+    if analysis.failed:
+        names = ", ".join(analysis.failed)
+        print(f"lpc-mdo: trim failed for {names} (exit status 1)", file=sys.stderr)
+        return 1
     return 0
 
 
@@ -738,6 +819,11 @@ def build_parser():
     analyze.add_argument(
         "--no-static-margin", action="store_true", help="leave the static-margin constraint out"
     )
+    analyze.add_argument(
+        "--no-trim",
+        action="store_true",
+        help="show the raw initial design, untrimmed (default: trim every condition)",
+    )
     analyze.set_defaults(func=_analyze)
 
     start_case_type = _existing("--start-case", CASE_FILE_TEXT)
@@ -874,8 +960,9 @@ def main(argv=None):
     Returns
     -------
     int
-        Exit code: 0 success, 1 an optimization that did not converge or a bug (with its
-        traceback), 2 a user error (one line ``lpc-mdo: error: ...``), 130 interrupted.
+        Exit code: 0 success, 1 an optimization that did not converge, an analysis with a
+        condition that did not trim (named on stderr), or a bug (with its traceback), 2 a
+        user error (one line ``lpc-mdo: error: ...``), 130 interrupted.
     """
     os.environ.setdefault("OPENMDAO_REPORTS", "0")
     argv = sys.argv[1:] if argv is None else list(argv)

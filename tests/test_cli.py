@@ -10,7 +10,7 @@ from openmdao.utils.assert_utils import assert_near_equal
 from lpc_mdo.cli import main
 
 
-def test_analyze_reference_vehicle(tmp_path, capsys):
+def test_analyze_reference_vehicle_is_trimmed(tmp_path, capsys):
     assert (
         main(
             [
@@ -24,19 +24,56 @@ def test_analyze_reference_vehicle(tmp_path, capsys):
         == 0
     )
     text = capsys.readouterr().out
+    assert "(initial design, trimmed: each condition by its rotor speeds" in text
     assert (
         "15 design conditions, 171 design variables, 96 constraints, 40 linear rotor-speed bounds"
     ) in text
     assert "gross" in text and "minus_1g" in text
+    assert "trim: all 15 conditions trimmed" in text
+    # Structural conditions show their load factor, not a power.
+    assert re.search(r"plus_3g +n = \+3 ", text) and re.search(r"minus_1g +n = -1 ", text)
+    assert "(none)" not in text
+    # Every declared constraint with its limit and status; the paper's initial design violates
+    # the hover noise limit (70 dBA) and satisfies the final state of charge (>= 0.2).
+    assert re.search(r"hover\.total_spl_a +- +<= 70 +\d+\.\d+ +violated", text)
+    assert re.search(r"state_of_charge +- +>= 0\.2 +0\.\d+ +satisfied", text)
+    assert re.search(r"cruise\.linear_acceleration +- +\= 0 .* active", text)
+    assert re.search(r"42 constraints: \d+ satisfied, \d+ active, \d+ violated", text)
+    # The trimmed variables per condition.
+    assert re.search(r"cruise +pusher_rpm [\d.]+ rpm; pitch [\d.]+ deg; elevator", text)
     assert (tmp_path / "figures" / "n2.html").stat().st_size > 0
     assert (tmp_path / "out" / "constraints.md").exists()
     case = om.CaseReader(str(tmp_path / "out" / "cases.sql")).get_case("final")
     # The calibration target (true by construction: W_other is calibrated so that the initial
-    # design weighs the paper's 3723.99 kg, Table 8); what the analysis itself computes: the
-    # untrimmed hover's thrust is below the weight (85 %).
+    # design weighs the paper's 3723.99 kg, Table 8).
     assert_near_equal(case.get_val("gross_mass", units="kg"), 3723.99, 1e-8)
+    # Closed form of the trimmed hover (zero pitch, no forward speed): the lift rotors carry
+    # the weight, sum T = m g, to the trim tolerance 1e-3 of the weight (0.1 %; the solver
+    # reaches ~1e-10). Untrimmed, the thrust is 85 % of it.
     thrust = case.get_val("hover.lift_thrust", units="N").sum()
-    assert 0.5 < thrust / (3723.99 * 9.81) < 1.0
+    assert thrust == pytest.approx(3723.99 * 9.80665, rel=1e-3)
+
+
+def test_analyze_names_a_condition_that_cannot_trim(tmp_path, capsys):
+    # Cruise trims at a pusher speed of 976 rpm (the reference vehicle's initial design);
+    # with the pusher's cruise upper bound at 750 rpm its thrust cannot balance the drag.
+    text = (resources.files("lpc_mdo") / "data" / "lpc_reference.toml").read_text()
+    block = '[design_variables.cruise_pusher_rpm]\nunits = "rpm"\ninitial = 1200.0\n'
+    assert block + "lower = 700.0\nupper = 2500.0\n" in text
+    path = tmp_path / "slow_pusher.toml"
+    path.write_text(
+        text.replace(
+            block + "lower = 700.0\nupper = 2500.0\n",
+            block.replace("1200.0", "740.0") + "lower = 700.0\nupper = 750.0\n",
+        )
+    )
+    assert main(["analyze", "--vehicle", str(path), "--output-dir", str(tmp_path / "out")]) == 1
+    captured = capsys.readouterr()
+    assert re.search(r"trim FAILED for cruise \(residual [\d.e-]+\)", captured.out)
+    assert re.search(r"cruise .*NOT TRIMMED", captured.out)
+    assert "climb" not in captured.out.split("trim FAILED for")[1].split("\n")[0]
+    assert "lpc-mdo: trim failed for cruise (exit status 1)" in captured.err
+    assert (tmp_path / "out" / "constraints.md").exists()  # written all the same
 
 
 def test_analyze_reports_a_bad_vehicle_file(tmp_path, capsys):
@@ -92,13 +129,20 @@ def test_optimize_subproblem_4_and_report(tmp_path, capsys):
     assert (tmp_path / "report" / "index.md").exists()
 
 
-def test_analyze_reports_voltage_margins_and_says_what_it_replaces(tmp_path, capsys):
-    # The motor voltage limit is visible: a column of the lowest voltage margin per condition;
-    # a second analysis into the same folder says which files it replaces.
+def test_analyze_no_trim_says_so_and_reports_voltage_margins(tmp_path, capsys):
+    # --no-trim shows the raw initial design and says so; the motor voltage limit is visible
+    # (a column of the lowest voltage margin per condition); a second analysis into the same
+    # folder says which files it replaces.
     out = tmp_path / "out"
-    assert main(["analyze", "--output-dir", str(out)]) == 0
+    assert main(["analyze", "--no-trim", "--output-dir", str(out)]) == 0
     first = capsys.readouterr().out
+    assert "(initial design, NOT trimmed (--no-trim)" in first
+    assert "trim: not trimmed (--no-trim)" in first
+    assert "trim variables (initial values, not trimmed)" in first
     assert "V margin" in first and "replacing" not in first
-    assert main(["analyze", "--output-dir", str(out)]) == 0
+    case = om.CaseReader(str(out / "cases.sql")).get_case("final")
+    thrust = case.get_val("hover.lift_thrust", units="N").sum()
+    assert 0.5 < thrust / (3723.99 * 9.80665) < 0.95  # untrimmed: 85 % of the weight
+    assert main(["analyze", "--no-trim", "--output-dir", str(out)]) == 0
     second = capsys.readouterr().out
     assert f"lpc-mdo: replacing {out / 'cases.sql'}" in second

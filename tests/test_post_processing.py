@@ -699,3 +699,20 @@ def test_bars_mark_what_a_run_did_not_compute(runs, tmp_path, drawn):
     assert "not computed in that run" in _texts(ax)
     marks = [line for line in ax.get_lines() if line.get_marker() == "x" and len(line.get_xdata())]
     assert len(marks) == 1 and marks[0].get_ydata().tolist() == [0.0]
+
+
+def test_constraint_status_words_and_own_tolerance():
+    import numpy as np
+
+    # satisfied / active / violated from entry_status's bands (tol * r).
+    _, active, violated = tables.entry_status([0.5], upper=1.0, scale=1.0)
+    assert tables.status_word(active, violated) == "satisfied"
+    _, active, violated = tables.entry_status([0.99995, 0.5], upper=1.0, scale=1.0)
+    assert tables.status_word(active, violated) == "active (1 of 2)"
+    _, active, violated = tables.entry_status([1.01], upper=1.0, scale=1.0)
+    assert tables.status_word(active, violated) == "violated"
+    # A trim-like row 5e-4 off its target reads violated at tol 1e-4, active at 1e-3.
+    _, active, violated = tables.entry_status(np.array([5e-4]), equals=0.0, scale=1.0)
+    assert tables.status_word(active, violated) == "violated"
+    _, active, violated = tables.entry_status([5e-4], equals=0.0, scale=1.0, tol=1e-3)
+    assert tables.status_word(active, violated) == "active"

@@ -62,3 +62,14 @@ def test_missing_trim_constraints_are_an_error():
     prob = build_analysis_problem(None, conditions=["hover"], constraint_kinds=["noise"])
     with pytest.raises(ValueError, match=r"no trim constraints .* conditions \['hover'\]"):
         trim(prob, separate=False)
+
+
+def test_trim_reports_each_condition():
+    prob = build_analysis_problem(
+        None, conditions=["hover", "cruise"], lateral_trim=False, constraint_kinds=["trim"]
+    )
+    result = trim(prob)
+    assert set(result.conditions) == {"hover", "cruise"}
+    for record in result.conditions.values():
+        assert record.max_residual < 1e-6 < record.initial_residual
+        assert record.iterations > 0 and record.method == "dogbox"

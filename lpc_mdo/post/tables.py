@@ -1,6 +1,10 @@
 """
 Tables from recorder (SQLite case) files, written as Markdown and CSV.
 
+:func:`format_constraint_status` prints the constraints of a case as text (``lpc-mdo
+analyze``): each with its limit(s), value(s) and status *satisfied* (inactive: a margin beyond
+the tolerance band), *active* or *violated* (the bands below).
+
 The tables are the constraints (paper Table 7), the design variables and a design comparison
 (paper Table 8).
 
@@ -68,6 +72,7 @@ __all__ = [
     "design_variable_table",
     "driver_cases",
     "entry_status",
+    "format_constraint_status",
     "final_case",
     "last_case",
     "limit_scale",
@@ -76,6 +81,7 @@ __all__ = [
     "open_reader",
     "read_value",
     "recorded_units",
+    "status_word",
 ]
 
 #: Default relative activity/feasibility tolerance (see the module docstring).
@@ -274,7 +280,7 @@ def constraint_limits(meta):
     return recorded_bound(meta.get("lower"), size), recorded_bound(meta.get("upper"), size), None
 
 
-def constraint_rows(source, case=None, tol=DEFAULT_TOL, refs=None):
+def constraint_rows(source, case=None, tol=DEFAULT_TOL, refs=None, tols=None):
     """
     Evaluate every constraint of a case: values, limits, violation and activity.
 
@@ -292,16 +298,20 @@ def constraint_rows(source, case=None, tol=DEFAULT_TOL, refs=None):
         Relative activity/feasibility tolerance (module docstring).
     refs : Mapping or None
         Constraint name -> reference magnitude for the violation (e.g. trim -> W0).
+    tols : Mapping or None
+        Constraint name -> its own relative tolerance instead of ``tol`` (e.g. the trim rows:
+        :func:`lpc_mdo.analysis.trim_tolerances`).
 
     Returns
     -------
     list of dict
         Per constraint: ``name, units, lower, upper, equals`` (arrays or None), ``values``,
-        ``violation``, ``relative_violation``, ``active``, ``violated`` (arrays).
+        ``violation``, ``relative_violation``, ``active``, ``violated`` (arrays), ``tol``.
     """
     cr = open_reader(source)
     values = final_case(cr, case).get_constraints()
     refs = refs or {}
+    tols = tols or {}
     rows = []
     for name, meta in constraint_metadata(cr).items():
         if name not in values:
@@ -309,7 +319,8 @@ def constraint_rows(source, case=None, tol=DEFAULT_TOL, refs=None):
         lower, upper, equals = constraint_limits(meta)
         g = np.asarray(values[name], float).ravel()
         scale = limit_scale(meta, lower, upper, equals, refs.get(name))
-        violation, active, violated = entry_status(g, lower, upper, equals, scale, tol)
+        row_tol = tols.get(name, tol)
+        violation, active, violated = entry_status(g, lower, upper, equals, scale, row_tol)
         rows.append(
             dict(
                 name=name,
@@ -322,9 +333,67 @@ def constraint_rows(source, case=None, tol=DEFAULT_TOL, refs=None):
                 relative_violation=violation / scale,
                 active=active,
                 violated=violated,
+                tol=row_tol,
             )
         )
     return rows
+
+
+def _limit_text(row):
+    """Return the limit(s) of a constraint row as text: ``= a``, ``>= a``, ``a .. b``."""
+
+    def text(arr):
+        value = _scalar_or_range(arr)
+        return f"{value:.4g}" if isinstance(value, float) else value
+
+    if row["equals"] is not None:
+        return f"= {text(row['equals'])}"
+    lower = None if row["lower"] is None or np.isnan(row["lower"]).all() else text(row["lower"])
+    upper = None if row["upper"] is None or np.isnan(row["upper"]).all() else text(row["upper"])
+    if lower is not None and upper is not None:
+        return f"{lower} .. {upper}"
+    return f">= {lower}" if lower is not None else f"<= {upper}"
+
+
+def status_word(active, violated):
+    """
+    Return the status of a constraint from its entries: satisfied, active or violated.
+
+    ``violated`` when an entry is violated (``k of n`` when not all), else ``active`` when an
+    entry is active (``k of n``), else ``satisfied`` (every entry with a margin beyond the
+    tolerance band; :func:`entry_status`).
+    """
+    n = active.size
+    if violated.any():
+        return "violated" if violated.all() else f"violated ({violated.sum()} of {n})"
+    if active.any():
+        return "active" if active.all() else f"active ({active.sum()} of {n})"
+    return "satisfied"
+
+
+def format_constraint_status(rows):
+    """
+    Return a text table of :func:`constraint_rows`: constraint, limit(s), value(s), status.
+
+    A vector constraint prints the range of its entries; the last line counts the statuses.
+    """
+    lines = [
+        f"  {'constraint':<38}{'units':<9}{'limit':>22}  {'value':>24}  status",
+    ]
+    counts = {"satisfied": 0, "active": 0, "violated": 0}
+    for r in rows:
+        g = r["values"]
+        value = f"{g[0]:.5g}" if g.size == 1 else f"{g.min():.4g} .. {g.max():.4g}"
+        status = status_word(r["active"], r["violated"])
+        counts[status.split()[0]] += 1
+        lines.append(
+            f"  {r['name']:<38}{r['units'] or '-':<9}{_limit_text(r):>22}  {value:>24}  {status}"
+        )
+    lines.append(
+        f"  {len(rows)} constraints: {counts['satisfied']} satisfied, {counts['active']} active, "
+        f"{counts['violated']} violated"
+    )
+    return "\n".join(lines)
 
 
 def _status(active, violated):
@@ -336,7 +405,7 @@ def _status(active, violated):
     return "inactive" if not active.any() else f"partially active ({active.sum()} of {n})"
 
 
-def constraint_table(source, case=None, tol=DEFAULT_TOL, refs=None):
+def constraint_table(source, case=None, tol=DEFAULT_TOL, refs=None, tols=None):
     """
     Constraint table like paper Table 7: limits, min/max over entries, % violation, activity.
 
@@ -353,6 +422,8 @@ def constraint_table(source, case=None, tol=DEFAULT_TOL, refs=None):
         Relative activity/feasibility tolerance.
     refs : Mapping or None
         Constraint name -> reference magnitude for % violation and the tolerance band.
+    tols : Mapping or None
+        Constraint name -> its own relative tolerance (see :func:`constraint_rows`).
 
     Returns
     -------
@@ -362,7 +433,7 @@ def constraint_table(source, case=None, tol=DEFAULT_TOL, refs=None):
         ``inactive``, ``partially active (k of n)``, ``violated [(k of n)]``.
     """
     rows = []
-    for r in constraint_rows(source, case, tol, refs):
+    for r in constraint_rows(source, case, tol, refs, tols):
         rows.append(
             [
                 r["name"],
@@ -384,6 +455,12 @@ def constraint_table(source, case=None, tol=DEFAULT_TOL, refs=None):
         f"else |limit|, else 1" + (", or the given reference" if refs else "") + ").",
         "% viol. = 100 * max over entries of violation / r.",
     ]
+    if tols:
+        own = sorted({float(t) for t in tols.values()})
+        notes.append(
+            f"{len(tols)} constraints use their own tol ({', '.join(f'{t:g}' for t in own)}; "
+            "the trim rows: 0.1 % of the weight, lpc_mdo.analysis.TRIM_TOLERANCE)."
+        )
     return Table(
         [
             "constraint",

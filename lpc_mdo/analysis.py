@@ -1,0 +1,170 @@
+"""Analysis of a vehicle at its initial design, trimmed: the one code path of ``lpc-mdo analyze``.
+
+:func:`analyze_vehicle` builds the full model of a vehicle (:func:`~lpc_mdo.problems.
+build_analysis_problem`), trims every design condition by its own trim variables (rotor speeds,
+pitch, elevator; :func:`lpc_mdo.trim.trim`) unless told not to, and records the problem case
+``'final'``. ``lpc-mdo analyze`` and ``run_scripts/run_analysis.py`` both call it.
+
+Trim tolerance
+--------------
+A condition counts as trimmed when its largest driver-scaled trim residual is below
+:data:`TRIM_TOLERANCE` = 1e-3. The force rows are scaled by g abs(n) and the moment rows by
+1 rad/s**2, so this is 0.1 % of the weight (times the load factor) as a force: the criterion the
+project's issues use for the Table 6 trim rows ("trim rows < 0.1 % of W0") and the default limit
+of :func:`lpc_mdo.post.trim_residuals.trim_residual_table`. The same tolerance is the status
+band of the trim rows in the constraint status (:func:`trim_tolerances`); the other constraints
+use :data:`lpc_mdo.post.tables.DEFAULT_TOL`.
+"""
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from lpc_mdo.groups.condition_base import condition_layout
+
+__all__ = [
+    "TRIM_TOLERANCE",
+    "Analysis",
+    "analyze_vehicle",
+    "format_trim_variables",
+    "trim_tolerances",
+    "trim_variable_values",
+]
+
+#: Largest driver-scaled trim residual of a trimmed condition (module docstring).
+TRIM_TOLERANCE = 1e-3
+#: Outputs of the trim rows of a condition.
+TRIM_OUTPUTS = ("linear_acceleration", "angular_acceleration")
+
+
+@dataclass
+class Analysis:
+    """
+    Result of :func:`analyze_vehicle`.
+
+    Attributes
+    ----------
+    prob : om.Problem
+        The set-up, run problem (call ``prob.cleanup()`` when done).
+    trimmed : bool
+        Whether the conditions were trimmed (False: the raw initial design).
+    trim : TrimResult or None
+        The trim's outcome (:func:`lpc_mdo.trim.trim`), None when not trimmed.
+    failed : dict
+        Condition -> largest scaled trim residual, for every condition whose residual is not
+        below :data:`TRIM_TOLERANCE` (empty when all trimmed or not trimmed).
+    """
+
+    prob: object
+    trimmed: bool
+    trim: object = None
+    failed: dict = field(default_factory=dict)
+
+    @property
+    def vehicle(self):
+        """The analyzed vehicle."""
+        return self.prob.vehicle
+
+
+def analyze_vehicle(
+    vehicle=None, trim=True, recorder_path=None, static_margin=True, report=None, **options
+):
+    """
+    Build, (trim,) run and record the full model of a vehicle at its initial design.
+
+    Parameters
+    ----------
+    vehicle : Vehicle, str, os.PathLike or None
+        A vehicle, a vehicle file, or None for the reference vehicle.
+    trim : bool
+        Trim every condition by its trim variables (:func:`lpc_mdo.trim.trim`); False: run the
+        raw initial design (the vehicle file's initial rotor speeds, pitch and elevator).
+    recorder_path : str, os.PathLike or None
+        Case file; the problem case ``'final'`` (every variable) is recorded into it.
+    static_margin : bool
+        Declare the cruise static-margin constraint.
+    report : callable or None
+        Called with one line per trimmed condition (see :func:`lpc_mdo.trim.trim`).
+    **options
+        Further options of :func:`~lpc_mdo.problems.build_analysis_problem` (``name``,
+        ``work_dir``, model options).
+
+    Returns
+    -------
+    Analysis
+        The problem, left at the (trimmed) design and run, and the trim's outcome.
+    """
+    from lpc_mdo.problems import build_analysis_problem
+    from lpc_mdo.trim import trim as trim_conditions
+
+    prob = build_analysis_problem(
+        vehicle, recorder_path=recorder_path, static_margin=static_margin, **options
+    )
+    result, failed = None, {}
+    if trim:
+        result = trim_conditions(prob, report=report, label="analyze")
+        failed = {
+            name: c.max_residual
+            for name, c in result.conditions.items()
+            if not c.max_residual < TRIM_TOLERANCE
+        }
+    else:
+        prob.run_model()
+    if recorder_path is not None:
+        prob.record("final")
+    return Analysis(prob, trim, result, failed)
+
+
+def trim_tolerances(prob, tol=TRIM_TOLERANCE):
+    """Return constraint name -> ``tol`` for every declared trim-row constraint of ``prob``."""
+    return {
+        name: tol
+        for name in prob.model.get_constraints()
+        if name.partition(".")[0] in prob.model.condition_names
+        and name.partition(".")[2] in TRIM_OUTPUTS
+    }
+
+
+def trim_variable_values(prob, condition):
+    """
+    Return the trim variables of a condition and their values.
+
+    Parameters
+    ----------
+    prob : om.Problem
+        A set-up problem of the vehicle (``prob.vehicle``).
+    condition : str
+        The condition's name.
+
+    Returns
+    -------
+    list of (str, numpy.ndarray, str)
+        (variable of the condition, e.g. ``lift_rpm``; its values; units), elevator and pitch
+        angles in degrees.
+    """
+    out = []
+    for variable, entry in condition_layout(prob.vehicle).entries[condition].items():
+        if not entry.variable.trim:
+            continue
+        units = entry.variable.units
+        units = "deg" if units in ("rad", "deg") else (None if units == "unitless" else units)
+        value = np.asarray(prob.get_val(entry.design_variable, units=units), float).ravel()
+        out.append((variable, value[entry.flat_indices], units or "-"))
+    return out
+
+
+def format_trim_variables(prob, conditions=None):
+    """Return a text table: one line per condition with its trim variables' values."""
+    names = prob.model.condition_names if conditions is None else conditions
+    lines = []
+    for name in names:
+        parts = []
+        for variable, value, units in trim_variable_values(prob, name):
+            text = (
+                f"{value[0]:.4g}"
+                if value.size == 1
+                else "[" + ", ".join(f"{v:.4g}" for v in value) + "]"
+            )
+            parts.append(f"{variable} {text} {units}")
+        lines.append(f"  {name:<14}{'; '.join(parts) or '(no trim variables)'}")
+    return "\n".join(lines)
