@@ -40,6 +40,10 @@ from lpc_mdo.components.dynamics.stability_derivatives import (
     AnglePerturbationComp,
     StabilityDerivativeComp,
 )
+from lpc_mdo.components.dynamics.body_pitching_moment import (
+    FuselagePitchingMomentComp,
+    fuselage_pitching_moment_options,
+)
 from lpc_mdo.components.dynamics.static_margin import NeutralPointComp, StaticMarginComp
 from lpc_mdo.components.energy.power import TotalPowerComp
 from lpc_mdo.components.kinematics import KinematicsComp
@@ -336,7 +340,7 @@ def _add_aerodynamics(
         promotes_inputs=vlm_inputs + ["angle_of_attack"],
         promotes_outputs=[
             ("force", "aero_force"),
-            ("moment", "aero_moment"),
+            ("moment", "vlm_moment"),
             "lift",
             "CL",
             "induced_drag",
@@ -348,6 +352,8 @@ def _add_aerodynamics(
     group.set_input_defaults(
         "wing_zero_lift_angle", np.full((1, opts["wing_panels"]), wing_zero_lift_angle), units="rad"
     )
+    fuselage_options = fuselage_pitching_moment_options(vehicle, wing_zero_lift_angle)
+    _add_body_moment(group, fuselage_options, "angle_of_attack", "vlm_moment", "aero_moment")
     group.set_input_defaults("elevator", np.zeros(1), units="rad")
 
     components, values = lpc_drag_components(vehicle)
@@ -395,8 +401,16 @@ def _add_aerodynamics(
             promotes_inputs=vlm_inputs + [("angle_of_attack", "perturbed_angle_of_attack")],
             promotes_outputs=[
                 ("force", "perturbed_aero_force"),
-                ("moment", "perturbed_aero_moment"),
+                ("moment", "perturbed_vlm_moment"),
             ],
+        )
+        _add_body_moment(
+            group,
+            fuselage_options,
+            "perturbed_angle_of_attack",
+            "perturbed_vlm_moment",
+            "perturbed_aero_moment",
+            prefix="perturbed_",
         )
         group.add_subsystem(
             "stability_derivatives",
@@ -417,6 +431,28 @@ def _add_aerodynamics(
             promotes_inputs=["neutral_point", "cg_x", ("mean_aerodynamic_chord", "wing_mac")],
             promotes_outputs=["static_margin"],
         )
+
+
+def _add_body_moment(group, fuselage_options, alpha, vlm_moment, aero_moment, prefix=""):
+    """Fuselage Munk-Multhopp couple added to the lattice moment (issue 16 item 4)."""
+    group.add_subsystem(
+        f"{prefix}fuselage_moment",
+        FuselagePitchingMomentComp(num_nodes=1, **fuselage_options),
+        promotes_inputs=[("angle_of_attack", alpha), "density", "speed"],
+        promotes_outputs=[("body_moment", f"{prefix}fuselage_moment")],
+    )
+    group.add_subsystem(
+        f"{prefix}aero_moment_sum",
+        om.AddSubtractComp(
+            output_name=aero_moment,
+            input_names=[vlm_moment, f"{prefix}fuselage_moment"],
+            vec_size=1,
+            length=3,
+            units="N*m",
+            desc="lattice plus fuselage pitching moment about the body origin",
+        ),
+        promotes=["*"],
+    )
 
 
 def _add_equations_of_motion(group, sources, forces_only=(), load_factor=1.0):

@@ -1,0 +1,105 @@
+"""Fuselage Munk-Multhopp pitching moment: apparent mass, wing flow field, couple, wiring."""
+
+import numpy as np
+import openmdao.api as om
+import pytest
+from openmdao.utils.assert_utils import assert_check_partials, assert_near_equal
+
+from lpc_mdo.components.dynamics.body_pitching_moment import (
+    FuselagePitchingMomentComp,
+    fuselage_strips,
+    lifting_line_upwash_gradient,
+    multhopp_flow_gradient,
+    munk_apparent_mass_factor,
+    wing_lift_slope,
+)
+
+
+@pytest.mark.parametrize(
+    "fineness, k1, k2",
+    # Lamb, Hydrodynamics (6th ed., 1932) sec. 373 table of prolate spheroids (a/b, alpha = k1,
+    # beta = k2), printed to 3 decimals: tolerance 0.002 on k2 - k1.
+    [(1.99, 0.209, 0.702), (3.99, 0.082, 0.860), (6.01, 0.045, 0.918), (9.97, 0.021, 0.960)],
+)
+def test_munk_factor_matches_lambs_table(fineness, k1, k2):
+    assert abs(munk_apparent_mass_factor(fineness) - (k2 - k1)) < 2e-3
+
+
+def test_munk_factor_limits():
+    # Sphere: k1 = k2 = 1/2 (no couple); infinitely slender body: k2 - k1 -> 1 (Munk, TR 184).
+    assert munk_apparent_mass_factor(1.0 + 1e-9) < 1e-6
+    assert munk_apparent_mass_factor(1e4) > 0.9999
+
+
+def test_lifting_line_far_wake_downwash():
+    # Elliptic lifting line: far behind the wing the downwash is uniform across the span,
+    # eps = 2 C_L/(pi A) (Anderson, Fundamentals of Aerodynamics, sec. 5.3.1, twice the
+    # downwash at the line). Tolerance 1 % (vortex discretization and core smoothing).
+    area, aspect = 19.6, 12.12
+    span = np.sqrt(area * aspect)
+    cla = wing_lift_slope(aspect, 0.0)
+    x = np.full(3, -5000.0)
+    y = np.array([0.0, 2.5, 5.7])
+    eps = lifting_line_upwash_gradient(x, y, span, area, cla, 0.0)
+    assert_near_equal(eps, np.full(3, -2.0 * cla / (np.pi * aspect)), 0.01)
+
+
+def test_upwash_ahead_of_the_wing_decays_and_is_zero_under_the_chord():
+    # Ahead of a lifting wing the flow turns up (Multhopp, NACA TM 1036): 1 < dbeta/dalpha,
+    # growing towards the leading edge; under the root chord the strip carries no moment.
+    x = np.array([-0.2, -1.0, -1.8, -2.5, -3.5, -6.0])
+    g = multhopp_flow_gradient(x, 0.0, 15.4, 19.6, 5.3, -1.96, 2.12)
+    assert 1.0 < g[0] < g[1] < g[2]
+    assert g[3] == 0.0 and g[4] == 0.0
+    assert 0.0 < g[5] < 1.0
+
+
+def test_couple_in_uniform_flow_is_munks():
+    # Without the wing (dbeta/dalpha = 1) a spheroid carries Munk's couple
+    # M = q Vol (k2 - k1) sin(2 alpha) (Munk, NACA TR 184, 1924), Vol = pi/6 L w^2;
+    # linear in alpha here: 2 q Vol (k2 - k1) alpha. Tolerance 1e-3 (midpoint strips).
+    length, width = 9.0, 1.5
+    _, _, strip = fuselage_strips(length, width, num_strips=400)
+    k = munk_apparent_mass_factor(length / width)
+    prob = om.Problem(reports=False)
+    prob.model.add_subsystem(
+        "fus",
+        FuselagePitchingMomentComp(
+            strip_factor=strip,
+            flow_gradient=np.ones_like(strip),
+            apparent_mass_factor=k,
+        ),
+        promotes=["*"],
+    )
+    prob.setup(force_alloc_complex=True)
+    alpha, rho, v = 0.03, 1.1, 60.0
+    prob.set_val("angle_of_attack", alpha)
+    prob.set_val("density", rho)
+    prob.set_val("speed", v)
+    prob.run_model()
+    vol = np.pi / 6.0 * length * width**2
+    expected = 0.5 * rho * v**2 * vol * k * 2.0 * alpha
+    assert_near_equal(prob.get_val("body_moment")[0, 1], expected, 1e-3)
+    assert prob.get_val("body_moment")[0, [0, 2]].tolist() == [0.0, 0.0]
+
+
+def test_partials():
+    strip = np.array([0.1, 0.3, 0.2])
+    prob = om.Problem(reports=False)
+    prob.model.add_subsystem(
+        "fus",
+        FuselagePitchingMomentComp(
+            num_nodes=2,
+            strip_factor=strip,
+            flow_gradient=np.array([1.4, 0.0, 0.6]),
+            apparent_mass_factor=0.8,
+            wing_zero_lift_angle=-0.1,
+        ),
+        promotes=["*"],
+    )
+    prob.setup(force_alloc_complex=True)
+    prob.set_val("angle_of_attack", [0.02, 0.05])
+    prob.set_val("density", [1.2, 1.0])
+    prob.set_val("speed", [50.0, 60.0])
+    prob.run_model()
+    assert_check_partials(prob.check_partials(method="cs", out_stream=None, compact_print=True))
