@@ -34,15 +34,15 @@ import openmdao.api as om
 
 from lpc_mdo.components.aero.drag_buildup import DragBuildupComp, lpc_drag_components
 from lpc_mdo.components.atmosphere import AtmosphereComp
+from lpc_mdo.components.dynamics.body_pitching_moment import (
+    FuselagePitchingMomentComp,
+    fuselage_pitching_moment_options,
+)
 from lpc_mdo.components.dynamics.eom import EquationsOfMotionComp
 from lpc_mdo.components.dynamics.force_sum import ForceSumComp
 from lpc_mdo.components.dynamics.stability_derivatives import (
     AnglePerturbationComp,
     StabilityDerivativeComp,
-)
-from lpc_mdo.components.dynamics.body_pitching_moment import (
-    FuselagePitchingMomentComp,
-    fuselage_pitching_moment_options,
 )
 from lpc_mdo.components.dynamics.static_margin import NeutralPointComp, StaticMarginComp
 from lpc_mdo.components.energy.power import TotalPowerComp

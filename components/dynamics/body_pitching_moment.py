@@ -59,7 +59,9 @@ def lifting_line_upwash_gradient(x, y, span, wing_area, lift_slope, x_bound, num
     g_edge = np.sqrt(np.clip(1.0 - (2.0 * edges / b) ** 2, 0.0, None))
     # Horseshoe k spans [edges[k], edges[k+1]] with strength = mean of its edge values.
     gk = 0.5 * (g_edge[:-1] + g_edge[1:])
-    delta = 4.0 * b / num_vortices
+    # Core radius of each leg: the local vortex spacing (fine near the tips, cosine spacing).
+    spacing = np.gradient(edges)
+    delta_a, delta_b = spacing[:-1], spacing[1:]
     xi = (x - x_bound)[..., None]  # distance ahead of the bound vortex
     ya = edges[:-1] - y[..., None]  # lateral offsets of the legs (left, right)
     yb = edges[1:] - y[..., None]
@@ -67,10 +69,10 @@ def lifting_line_upwash_gradient(x, y, span, wing_area, lift_slope, x_bound, num
         # Bound segment from ya to yb at xi: upwash ahead (xi > 0).
         bound = (yb / np.hypot(xi, yb) - ya / np.hypot(xi, ya)) / xi
         # Semi-infinite legs aft: downwash between them (ya < 0 < yb), upwash outside.
-        # A core of radius delta (a few vortex spacings) regularizes a leg passing close
+        # A core of radius delta (the local vortex spacing) regularizes a leg passing close
         # to the field point: 1/h -> h/(h^2 + delta^2) (Scully/Kaufmann-type smoothing).
-        left = (1.0 - xi / np.hypot(xi, ya)) * ya / (ya**2 + delta**2)
-        right = -(1.0 - xi / np.hypot(xi, yb)) * yb / (yb**2 + delta**2)
+        left = (1.0 - xi / np.hypot(xi, ya)) * ya / (ya**2 + delta_a**2)
+        right = -(1.0 - xi / np.hypot(xi, yb)) * yb / (yb**2 + delta_b**2)
     w_per_gamma = (bound + left + right) / (4.0 * np.pi)
     # Gamma_k/V = (2 S C_L/(pi b)) gk, so w/V per radian of alpha:
     return lift_slope * 2.0 * wing_area / (np.pi * b) * np.sum(gk * w_per_gamma, axis=-1)
