@@ -26,7 +26,9 @@ __all__ = [
     "TRIM_TOLERANCE",
     "Analysis",
     "analyze_vehicle",
+    "format_static_margin_budget",
     "format_trim_variables",
+    "static_margin_budget",
     "trim_tolerances",
     "trim_variable_values",
 ]
@@ -167,4 +169,58 @@ def format_trim_variables(prob, conditions=None):
             )
             parts.append(f"{variable} {text} {units}")
         lines.append(f"  {name:<14}{'; '.join(parts) or '(no trim variables)'}")
+    return "\n".join(lines)
+
+
+def static_margin_budget(prob, condition="cruise", wing_panels=None):
+    """
+    Contributions to the static margin of a condition solved with the stability option.
+
+    SM = (x_cg - x_np)/MAC with x_np = -(dM/dalpha)/(dF_z/dalpha) (both about the body
+    origin) is a sum over the parts i of the force and moment:
+
+        dSM_i = (dM_i/dalpha + x_cg dF_z,i/dalpha) / (dF_z/dalpha MAC),
+
+    each slope the difference of the nominal and the perturbed solve over their delta (the
+    model's own :class:`~lpc_mdo.components.dynamics.stability_derivatives.
+    StabilityDerivativeComp`). Parts: ``wing`` and ``horizontal_tail`` (the lattice's inviscid
+    and profile-drag panel forces of each surface) and ``fuselage`` (the Munk-Multhopp couple,
+    :mod:`lpc_mdo.components.dynamics.body_pitching_moment`); the airfoils' cm0, a couple
+    independent of alpha, moves the trim but not the neutral point. Returns a dict part ->
+    dSM and ``total`` (equal to the model's ``static_margin``).
+    """
+    c = condition
+    delta = prob.model._get_subsystem(f"{c}.stability_derivatives").options["delta"]
+    x_cg = prob.get_val(f"{c}.static_margin.cg_x", units="m")[0]
+    mac = prob.get_val(f"{c}.static_margin.mean_aerodynamic_chord", units="m")[0]
+    dfz = prob.get_val(f"{c}.normal_force_slope", units="N/rad")[0]
+    points = prob.get_val(f"{c}.vlm.force_points", units="m")
+    if wing_panels is None:
+        wing_panels = prob.get_val(f"{c}.wing_sectional_cl").shape[-1]
+
+    def part_loads(prefix):
+        f = prob.get_val(f"{c}.{prefix}.panel_forces", units="N")[0]
+        f = f + prob.get_val(f"{c}.{prefix}.viscous_panel_forces", units="N")[0]
+        m_y = points[:, 2] * f[:, 0] - points[:, 0] * f[:, 2]  # (r x F)_y about the origin
+        return f[:, 2], m_y
+
+    fz0, my0 = part_loads("vlm")
+    fz1, my1 = part_loads("vlm_perturbed")
+    dfz_p, dmy_p = (fz1 - fz0) / delta, (my1 - my0) / delta
+    budget = {}
+    for name, sl in (("wing", slice(0, wing_panels)), ("horizontal_tail", slice(wing_panels, None))):
+        budget[name] = (dmy_p[sl].sum() + x_cg * dfz_p[sl].sum()) / (dfz * mac)
+    m0 = prob.get_val(f"{c}.fuselage_moment", units="N*m")[0, 1]
+    m1 = prob.get_val(f"{c}.perturbed_fuselage_moment", units="N*m")[0, 1]
+    budget["fuselage"] = (m1 - m0) / delta / (dfz * mac)
+    budget["total"] = sum(budget.values())
+    return budget
+
+
+def format_static_margin_budget(prob, condition="cruise"):
+    """One line per part of :func:`static_margin_budget`, for ``lpc-mdo analyze``."""
+    budget = static_margin_budget(prob, condition)
+    model = prob.get_val(f"{condition}.static_margin")[0]
+    lines = [f"    {name:<16s} {value:+.4f}" for name, value in budget.items()]
+    lines.append(f"    {'(model)':<16s} {model:+.4f}")
     return "\n".join(lines)

@@ -612,6 +612,16 @@ def _analyze_summary(analysis, args):
     return "\n".join(lines)
 
 
+def _analyze_static_margin_budget(analysis, args):
+    from lpc_mdo.analysis import format_static_margin_budget
+
+    prob, cruise = analysis.prob, analysis.vehicle.mission.cruise_condition
+    if cruise not in prob.model.condition_names or args.no_static_margin:
+        return f"  static-margin budget: {cruise} has no stability solve"
+    title = f"static-margin budget of {cruise} (dSM per part, issue 16 item 4)"
+    return f"  {title}:\n" + format_static_margin_budget(prob, cruise)
+
+
 #: The sections ``lpc-mdo analyze`` prints, in order: each takes (Analysis, args) and returns
 #: text. A new table is one more function here.
 ANALYZE_SECTIONS = (
@@ -621,6 +631,7 @@ ANALYZE_SECTIONS = (
     _analyze_trim_variables,
     _analyze_constraints,
     _analyze_summary,
+    _analyze_static_margin_budget,
 )
 
 

@@ -103,3 +103,28 @@ def test_partials():
     prob.set_val("speed", [50.0, 60.0])
     prob.run_model()
     assert_check_partials(prob.check_partials(method="cs", out_stream=None, compact_print=True))
+
+
+def test_cruise_budget_sums_to_the_static_margin_and_fuselage_destabilizes():
+    from lpc_mdo.analysis import static_margin_budget
+    from lpc_mdo.components.aero.polar import LinearQuadraticPolar
+    from lpc_mdo.groups.lpc import LPCGroup
+
+    prob = om.Problem(reports=False)
+    prob.model = LPCGroup(
+        conditions=["cruise"], rotor_polar=LinearQuadraticPolar(), wing_zero_lift_angle=-0.07
+    )
+    prob.setup()
+    prob.run_model()
+    budget = static_margin_budget(prob, "cruise")
+    # The parts are a partition of the model's force and moment: they sum to its SM (the
+    # same differences, so to round-off).
+    assert_near_equal(budget["total"], prob.get_val("cruise.static_margin")[0], 1e-9)
+    # The lattice moment plus the fuselage couple is the model's aero moment ...
+    assert_near_equal(
+        prob.get_val("cruise.aero_moment"),
+        prob.get_val("cruise.vlm_moment") + prob.get_val("cruise.fuselage_moment"),
+        1e-12,
+    )
+    # ... and the fuselage moves the neutral point forward (Munk: a body alone is unstable).
+    assert budget["fuselage"] < 0.0
