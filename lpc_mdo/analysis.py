@@ -208,7 +208,8 @@ def static_margin_budget(prob, condition="cruise", wing_panels=None):
     fz1, my1 = part_loads("vlm_perturbed")
     dfz_p, dmy_p = (fz1 - fz0) / delta, (my1 - my0) / delta
     budget = {}
-    for name, sl in (("wing", slice(0, wing_panels)), ("horizontal_tail", slice(wing_panels, None))):
+    parts = (("wing", slice(0, wing_panels)), ("horizontal_tail", slice(wing_panels, None)))
+    for name, sl in parts:
         budget[name] = (dmy_p[sl].sum() + x_cg * dfz_p[sl].sum()) / (dfz * mac)
     m0 = prob.get_val(f"{c}.fuselage_moment", units="N*m")[0, 1]
     m1 = prob.get_val(f"{c}.perturbed_fuselage_moment", units="N*m")[0, 1]
