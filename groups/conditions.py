@@ -33,6 +33,8 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.aero.drag_buildup import DragBuildupComp, lpc_drag_components
+from lpc_mdo.components.aero.tail_efficiency import TailEfficiencyComp
+from lpc_mdo.components.aero.vlm_lattice import Lattice
 from lpc_mdo.components.atmosphere import AtmosphereComp
 from lpc_mdo.components.dynamics.body_pitching_moment import (
     FuselagePitchingMomentComp,
@@ -339,7 +341,7 @@ def _add_aerodynamics(
         VLMGroup(surfaces=surfaces, num_nodes=1),
         promotes_inputs=vlm_inputs + ["angle_of_attack"],
         promotes_outputs=[
-            ("force", "aero_force"),
+            ("force", "vlm_force"),
             ("moment", "vlm_moment"),
             "lift",
             "CL",
@@ -353,7 +355,8 @@ def _add_aerodynamics(
         "wing_zero_lift_angle", np.full((1, opts["wing_panels"]), wing_zero_lift_angle), units="rad"
     )
     fuselage_options = fuselage_pitching_moment_options(vehicle, wing_zero_lift_angle)
-    _add_body_moment(group, fuselage_options, "angle_of_attack", "vlm_moment", "aero_moment")
+    tail_options = _tail_efficiency_options(vehicle, surfaces)
+    _add_body_moment(group, fuselage_options, tail_options, "angle_of_attack", "vlm", "")
     group.set_input_defaults("elevator", np.zeros(1), units="rad")
 
     components, values = lpc_drag_components(vehicle)
@@ -400,17 +403,17 @@ def _add_aerodynamics(
             VLMGroup(surfaces=surfaces, num_nodes=1),
             promotes_inputs=vlm_inputs + [("angle_of_attack", "perturbed_angle_of_attack")],
             promotes_outputs=[
-                ("force", "perturbed_aero_force"),
+                ("force", "perturbed_vlm_force"),
                 ("moment", "perturbed_vlm_moment"),
             ],
         )
         _add_body_moment(
             group,
             fuselage_options,
+            tail_options,
             "perturbed_angle_of_attack",
-            "perturbed_vlm_moment",
-            "perturbed_aero_moment",
-            prefix="perturbed_",
+            "vlm_perturbed",
+            "perturbed_",
         )
         group.add_subsystem(
             "stability_derivatives",
@@ -433,8 +436,23 @@ def _add_aerodynamics(
         )
 
 
-def _add_body_moment(group, fuselage_options, alpha, vlm_moment, aero_moment, prefix=""):
-    """Fuselage Munk-Multhopp couple added to the lattice moment (issue 16 item 4)."""
+def _tail_efficiency_options(vehicle, surfaces):
+    """TailEfficiencyComp options: the tail's panels in the lattice and the file's eta_t."""
+    lattice = Lattice(surfaces)
+    start = surfaces[0].num_chord_panels * surfaces[0].num_span_panels  # wing first
+    return {
+        "num_panels": lattice.num_panels,
+        "tail_panels": (start, lattice.num_panels),
+        "dynamic_pressure_ratio": float(vehicle.stability.tail_dynamic_pressure_ratio),
+    }
+
+
+def _add_body_moment(group, fuselage_options, tail_options, alpha, vlm, prefix):
+    """Lattice loads plus the fuselage couple and the tail efficiency (issue 16 item 4).
+
+    ``{prefix}aero_force`` = ``{prefix}vlm_force`` + tail correction and ``{prefix}aero_moment``
+    = ``{prefix}vlm_moment`` + fuselage couple + tail correction, about the body origin.
+    """
     group.add_subsystem(
         f"{prefix}fuselage_moment",
         FuselagePitchingMomentComp(num_nodes=1, **fuselage_options),
@@ -442,17 +460,33 @@ def _add_body_moment(group, fuselage_options, alpha, vlm_moment, aero_moment, pr
         promotes_outputs=[("body_moment", f"{prefix}fuselage_moment")],
     )
     group.add_subsystem(
-        f"{prefix}aero_moment_sum",
-        om.AddSubtractComp(
-            output_name=aero_moment,
-            input_names=[vlm_moment, f"{prefix}fuselage_moment"],
-            vec_size=1,
-            length=3,
-            units="N*m",
-            desc="lattice plus fuselage pitching moment about the body origin",
-        ),
-        promotes=["*"],
+        f"{prefix}tail_efficiency",
+        TailEfficiencyComp(num_nodes=1, **tail_options),
+        promotes_inputs=["force_points"],
+        promotes_outputs=[
+            ("tail_force_correction", f"{prefix}tail_force_correction"),
+            ("tail_moment_correction", f"{prefix}tail_moment_correction"),
+        ],
     )
+    panel_forces = "panel_forces" if vlm == "vlm" else f"{vlm}.panel_forces"
+    group.connect(panel_forces, f"{prefix}tail_efficiency.panel_forces")
+    group.connect(f"{vlm}.viscous_panel_forces", f"{prefix}tail_efficiency.viscous_panel_forces")
+    for name, units, parts in (
+        ("force", "N", ("vlm_force", "tail_force_correction")),
+        ("moment", "N*m", ("vlm_moment", "fuselage_moment", "tail_moment_correction")),
+    ):
+        group.add_subsystem(
+            f"{prefix}aero_{name}_sum",
+            om.AddSubtractComp(
+                output_name=f"{prefix}aero_{name}",
+                input_names=[f"{prefix}{p}" for p in parts],
+                vec_size=1,
+                length=3,
+                units=units,
+                desc=f"aerodynamic {name} of the lattice with the stability corrections",
+            ),
+            promotes=["*"],
+        )
 
 
 def _add_equations_of_motion(group, sources, forces_only=(), load_factor=1.0):

@@ -184,9 +184,10 @@ def static_margin_budget(prob, condition="cruise", wing_panels=None):
     each slope the difference of the nominal and the perturbed solve over their delta (the
     model's own :class:`~lpc_mdo.components.dynamics.stability_derivatives.
     StabilityDerivativeComp`). Parts: ``wing`` and ``horizontal_tail`` (the lattice's inviscid
-    and profile-drag panel forces of each surface) and ``fuselage`` (the Munk-Multhopp couple,
-    :mod:`lpc_mdo.components.dynamics.body_pitching_moment`); the airfoils' cm0, a couple
-    independent of alpha, moves the trim but not the neutral point. Returns a dict part ->
+    and profile-drag panel forces of each surface; the tail's at eta_t q) and ``fuselage``
+    (the Munk-Multhopp couple, :mod:`lpc_mdo.components.dynamics.body_pitching_moment`); the
+    airfoils' cm0, a couple independent of alpha, moves the trim but not the neutral point.
+    Returns a dict part ->
     dSM and ``total`` (equal to the model's ``static_margin``).
     """
     c = condition
@@ -211,6 +212,12 @@ def static_margin_budget(prob, condition="cruise", wing_panels=None):
     parts = (("wing", slice(0, wing_panels)), ("horizontal_tail", slice(wing_panels, None)))
     for name, sl in parts:
         budget[name] = (dmy_p[sl].sum() + x_cg * dfz_p[sl].sum()) / (dfz * mac)
+    # Tail efficiency (TailEfficiencyComp): its correction belongs to the tail.
+    f0 = prob.get_val(f"{c}.tail_force_correction", units="N")[0, 2]
+    f1 = prob.get_val(f"{c}.perturbed_tail_force_correction", units="N")[0, 2]
+    t0 = prob.get_val(f"{c}.tail_moment_correction", units="N*m")[0, 1]
+    t1 = prob.get_val(f"{c}.perturbed_tail_moment_correction", units="N*m")[0, 1]
+    budget["horizontal_tail"] += ((t1 - t0) + x_cg * (f1 - f0)) / delta / (dfz * mac)
     m0 = prob.get_val(f"{c}.fuselage_moment", units="N*m")[0, 1]
     m1 = prob.get_val(f"{c}.perturbed_fuselage_moment", units="N*m")[0, 1]
     budget["fuselage"] = (m1 - m0) / delta / (dfz * mac)

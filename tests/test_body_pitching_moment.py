@@ -120,11 +120,49 @@ def test_cruise_budget_sums_to_the_static_margin_and_fuselage_destabilizes():
     # The parts are a partition of the model's force and moment: they sum to its SM (the
     # same differences, so to round-off).
     assert_near_equal(budget["total"], prob.get_val("cruise.static_margin")[0], 1e-9)
-    # The lattice moment plus the fuselage couple is the model's aero moment ...
+    # The lattice moment plus the fuselage couple and the tail-efficiency correction is the
+    # model's aero moment, and the tail's loads are eta_t = 0.9 times the lattice's ...
     assert_near_equal(
         prob.get_val("cruise.aero_moment"),
-        prob.get_val("cruise.vlm_moment") + prob.get_val("cruise.fuselage_moment"),
+        prob.get_val("cruise.vlm_moment")
+        + prob.get_val("cruise.fuselage_moment")
+        + prob.get_val("cruise.tail_moment_correction"),
         1e-12,
+    )
+    tail = (
+        prob.get_val("cruise.panel_forces")[0, 26:]
+        + prob.get_val("cruise.vlm.viscous_panel_forces")[0, 26:]
+    )
+    assert_near_equal(
+        prob.get_val("cruise.aero_force")[0] - prob.get_val("cruise.vlm_force")[0],
+        -0.1 * tail.sum(axis=0),
+        1e-9,
     )
     # ... and the fuselage moves the neutral point forward (Munk: a body alone is unstable).
     assert budget["fuselage"] < 0.0
+
+
+def test_tail_efficiency_scales_the_tail_loads():
+    from lpc_mdo.components.aero.tail_efficiency import TailEfficiencyComp
+
+    rng = np.random.default_rng(3)
+    prob = om.Problem(reports=False)
+    prob.model.add_subsystem(
+        "eta",
+        TailEfficiencyComp(
+            num_nodes=2, num_panels=5, tail_panels=(3, 5), dynamic_pressure_ratio=0.9
+        ),
+        promotes=["*"],
+    )
+    prob.setup(force_alloc_complex=True)
+    f, fv, r = rng.normal(size=(2, 5, 3)), rng.normal(size=(2, 5, 3)), rng.normal(size=(5, 3))
+    prob.set_val("panel_forces", f)
+    prob.set_val("viscous_panel_forces", fv)
+    prob.set_val("force_points", r)
+    prob.run_model()
+    # Closed form: the tail's loads at eta_t q are eta_t times the lattice's (Raymer eq. 16.12).
+    ft = (f + fv)[:, 3:]
+    assert_near_equal(prob.get_val("tail_force_correction"), -0.1 * ft.sum(axis=1), 1e-12)
+    m = np.cross(r[None, 3:], ft).sum(axis=1)
+    assert_near_equal(prob.get_val("tail_moment_correction"), -0.1 * m, 1e-12)
+    assert_check_partials(prob.check_partials(method="cs", out_stream=None, compact_print=True))

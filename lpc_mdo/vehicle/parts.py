@@ -345,6 +345,22 @@ class Booms:
 
 
 @dataclass(frozen=True)
+class Stability:
+    """
+    Longitudinal-stability allowances of the aerodynamics (docs theory/dynamics).
+
+    Attributes
+    ----------
+    tail_dynamic_pressure_ratio : float
+        Tail efficiency eta_t = q_t/q on the horizontal tail's forces (-); Raymer, *Aircraft
+        Design* (6th ed.) sec. 16.3: about 0.9 for a conventional tail.
+    """
+
+    # 0.5-1.2: a tail deep in a wing wake to one in a propeller slipstream.
+    tail_dynamic_pressure_ratio: float = _param(ge=0.5, le=1.2)
+
+
+@dataclass(frozen=True)
 class WingBox:
     """
     Wing-box layout of the beam model.
@@ -739,6 +755,8 @@ class Vehicle:
         Lift-rotor booms.
     wing_box : WingBox
         Wing-box layout.
+    stability : Stability
+        Longitudinal-stability allowances (tail efficiency).
     masses : FixedMasses
         Fixed masses and their cg.
     material : Material
@@ -772,6 +790,7 @@ class Vehicle:
     pusher: Rotor = _param()
     booms: Booms = _param()
     wing_box: WingBox = _param()
+    stability: Stability = _param()
     masses: FixedMasses = _param()
     material: Material = _param()
     battery: Battery = _param()
