@@ -35,6 +35,10 @@ import openmdao.api as om
 from lpc_mdo.components.aero.drag_buildup import DragBuildupComp, lpc_drag_components
 from lpc_mdo.components.aero.tail_efficiency import TailEfficiencyComp
 from lpc_mdo.components.aero.vlm_lattice import Lattice
+from lpc_mdo.components.aero.wing_zero_lift_moment import (
+    WingZeroLiftMomentComp,
+    wing_zero_lift_moment_options,
+)
 from lpc_mdo.components.atmosphere import AtmosphereComp
 from lpc_mdo.components.dynamics.body_pitching_moment import (
     FuselagePitchingMomentComp,
@@ -356,6 +360,13 @@ def _add_aerodynamics(
     )
     fuselage_options = fuselage_pitching_moment_options(vehicle, wing_zero_lift_angle)
     tail_options = _tail_efficiency_options(vehicle, surfaces)
+    group.add_subsystem(
+        "wing_camber_moment",
+        WingZeroLiftMomentComp(
+            num_nodes=1, **wing_zero_lift_moment_options(vehicle, wing_zero_lift_angle)
+        ),
+        promotes=["*"],
+    )
     _add_body_moment(group, fuselage_options, tail_options, "angle_of_attack", "vlm", "")
     group.set_input_defaults("elevator", np.zeros(1), units="rad")
 
@@ -451,7 +462,8 @@ def _add_body_moment(group, fuselage_options, tail_options, alpha, vlm, prefix):
     """Lattice loads plus the fuselage couple and the tail efficiency (issue 16 item 4).
 
     ``{prefix}aero_force`` = ``{prefix}vlm_force`` + tail correction and ``{prefix}aero_moment``
-    = ``{prefix}vlm_moment`` + fuselage couple + tail correction, about the body origin.
+    = ``{prefix}vlm_moment`` + fuselage couple + tail correction + the wing's cm0 couple,
+    about the body origin.
     """
     group.add_subsystem(
         f"{prefix}fuselage_moment",
@@ -475,11 +487,14 @@ def _add_body_moment(group, fuselage_options, tail_options, alpha, vlm, prefix):
         ("force", "N", ("vlm_force", "tail_force_correction")),
         ("moment", "N*m", ("vlm_moment", "fuselage_moment", "tail_moment_correction")),
     ):
+        names = [f"{prefix}{p}" for p in parts]
+        if name == "moment":  # the camber couple: independent of alpha, one for both solves
+            names.append("wing_camber_moment")
         group.add_subsystem(
             f"{prefix}aero_{name}_sum",
             om.AddSubtractComp(
                 output_name=f"{prefix}aero_{name}",
-                input_names=[f"{prefix}{p}" for p in parts],
+                input_names=names,
                 vec_size=1,
                 length=3,
                 units=units,

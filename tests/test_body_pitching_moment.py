@@ -120,13 +120,14 @@ def test_cruise_budget_sums_to_the_static_margin_and_fuselage_destabilizes():
     # The parts are a partition of the model's force and moment: they sum to its SM (the
     # same differences, so to round-off).
     assert_near_equal(budget["total"], prob.get_val("cruise.static_margin")[0], 1e-9)
-    # The lattice moment plus the fuselage couple and the tail-efficiency correction is the
+    # The lattice moment plus the fuselage and camber couples and the tail correction is the
     # model's aero moment, and the tail's loads are eta_t = 0.9 times the lattice's ...
     assert_near_equal(
         prob.get_val("cruise.aero_moment"),
         prob.get_val("cruise.vlm_moment")
         + prob.get_val("cruise.fuselage_moment")
-        + prob.get_val("cruise.tail_moment_correction"),
+        + prob.get_val("cruise.tail_moment_correction")
+        + prob.get_val("cruise.wing_camber_moment"),
         1e-12,
     )
     tail = (
@@ -166,3 +167,44 @@ def test_tail_efficiency_scales_the_tail_loads():
     m = np.cross(r[None, 3:], ft).sum(axis=1)
     assert_near_equal(prob.get_val("tail_moment_correction"), -0.1 * m, 1e-12)
     assert_check_partials(prob.check_partials(method="cs", out_stream=None, compact_print=True))
+
+
+def test_wing_cm0_couple():
+    from lpc_mdo.components.aero.wing_zero_lift_moment import (
+        WingZeroLiftMomentComp,
+        wing_zero_lift_moment_coefficient,
+    )
+
+    # An unswept wing of infinite aspect ratio is the section (Raymer eq. 16.13 limit), and
+    # sweep lowers it by cos^2 (DATCOM 4.1.4.1): closed forms, 1e-6.
+    assert_near_equal(wing_zero_lift_moment_coefficient(-0.1, 1e9, 0.0), -0.1, 1e-6)
+    assert_near_equal(
+        wing_zero_lift_moment_coefficient(-0.1, 10.0, 0.3),
+        -0.1 * 10.0 * np.cos(0.3) ** 2 / (10.0 + 2.0 * np.cos(0.3)),
+        1e-12,
+    )
+    prob = om.Problem(reports=False)
+    prob.model.add_subsystem(
+        "cm0", WingZeroLiftMomentComp(num_nodes=2, moment_coefficient=-0.09), promotes=["*"]
+    )
+    prob.setup(force_alloc_complex=True)
+    prob.set_val("density", [1.2, 1.0])
+    prob.set_val("speed", [50.0, 60.0])
+    prob.run_model()
+    # M = q S c Cm0 (nose down for a cambered section).
+    assert_near_equal(
+        prob.get_val("wing_camber_moment")[:, 1],
+        0.5 * np.array([1.2 * 2500.0, 3600.0]) * 19.6 * 1.46 * -0.09,
+        1e-12,
+    )
+    assert_check_partials(prob.check_partials(method="cs", out_stream=None, compact_print=True))
+
+
+def test_reference_wing_section_cm0_is_the_ls413s():
+    # LS(1)-0413 (GA(W)-2) quarter-chord cm0: the GA(W) family measures about -0.1 (McGhee &
+    # Beasley, NASA TN D-7428, GA(W)-1 at Re 4e6); sign and size only, tolerance 15 %.
+    from lpc_mdo.components.aero.airfoil import get_polar
+    from lpc_mdo.components.aero.wing_zero_lift_moment import airfoil_zero_lift_moment
+
+    cm0 = airfoil_zero_lift_moment(get_polar("ls413"), -0.07, 4e6, 0.17)
+    assert_near_equal(cm0, -0.1, 0.15)
