@@ -208,3 +208,47 @@ def test_reference_wing_section_cm0_is_the_ls413s():
 
     cm0 = airfoil_zero_lift_moment(get_polar("ls413"), -0.07, 4e6, 0.17)
     assert_near_equal(cm0, -0.1, 0.15)
+
+
+def _quarter_mac_x(surface):
+    # Body x of the quarter-MAC point of a trapezoid (Raymer, Aircraft Design, Fig. 7.3:
+    # ybar = b/6 (1 + 2 taper)/(1 + taper)).
+    lam = surface.taper_ratio
+    ybar = surface.span / 6.0 * (1.0 + 2.0 * lam) / (1.0 + lam)
+    return (
+        surface.root_leading_edge[0]
+        - ybar * np.tan(surface.sweep)
+        - 0.25 * surface.mean_aerodynamic_chord
+    )
+
+
+def test_reference_neutral_point_against_the_classic_formula():
+    # Wing-body-tail neutral point by the classic build-up (Raymer, Aircraft Design, eq. 16.9;
+    # Etkin & Reid, Dynamics of Flight, eq. 2.3,23): x_np = (x_w CLa_w + eta S_t/S CLa_t
+    # (1 - de/da) x_t + (dM/da)_fus/(q S)) / (CLa_w + eta S_t/S CLa_t (1 - de/da)), with
+    # DATCOM lift slopes, the far-wake de/da = 2 CLa_w/(pi A) and quarter-MAC aerodynamic
+    # centres. The lattice resolves the wing-tail interference and the tail's spanwise
+    # downwash that the formula lumps: tolerance 0.1 MAC (the two differ by 0.06 MAC).
+    from lpc_mdo.components.aero.polar import LinearQuadraticPolar
+    from lpc_mdo.components.dynamics.body_pitching_moment import fuselage_pitching_moment_options
+    from lpc_mdo.groups.lpc import LPCGroup
+    from lpc_mdo.vehicle import reference_vehicle
+
+    v = reference_vehicle()
+    w, t = v.wing, v.horizontal_tail
+    cla_w = wing_lift_slope(w.aspect_ratio, w.sweep)
+    cla_t = wing_lift_slope(t.aspect_ratio, t.sweep)
+    tail = v.stability.tail_dynamic_pressure_ratio * t.area / w.area * cla_t
+    tail *= 1.0 - 2.0 * cla_w / (np.pi * w.aspect_ratio)
+    o = fuselage_pitching_moment_options(v, -0.07)
+    fus = 0.5 * np.pi * o["apparent_mass_factor"] * np.sum(o["strip_factor"] * o["flow_gradient"])
+    x_np = (_quarter_mac_x(w) * cla_w + tail * _quarter_mac_x(t) + fus / w.area) / (cla_w + tail)
+
+    prob = om.Problem(reports=False)
+    prob.model = LPCGroup(
+        conditions=["cruise"], rotor_polar=LinearQuadraticPolar(), wing_zero_lift_angle=-0.07
+    )
+    prob.setup()
+    prob.run_model()
+    model = prob.get_val("cruise.neutral_point", units="m")[0]
+    assert abs(model - x_np) < 0.1 * w.mean_aerodynamic_chord
