@@ -7,7 +7,7 @@ lift-plus-cruise concept is its own NDARC weight statement (NASA SACD UAM refere
 configurations, https://sacd.larc.nasa.gov/uam-refs/, as transcribed in NASA's GUAM,
 github.com/nasa/Generic-Urban-Air-Mobility-GUAM,
 vehicles/Lift+Cruise/AeroProp/SFunction/build_Lift_plus_Cruise.m): landing gear 8.48397 slug
-= 123.81 kg of 2653.0 kg, f_LG = 0.04667.
+= 123.81 kg of 181.789 slug = 2653.02 kg, f_LG = 0.04667.
 """
 
 import openmdao.api as om
@@ -17,7 +17,7 @@ from lpc_mdo.checks import RangeCheck, check_range
 _SLUG = 14.593903  # kg per slug
 #: Landing-gear mass and total mass of the NASA LPC NDARC weight statement (GUAM), kg.
 NASA_LANDING_GEAR_MASS = 8.48397 * _SLUG
-NASA_TOTAL_MASS = 2653.014
+NASA_TOTAL_MASS = 181.789249 * _SLUG  # sum of the GUAM items, 181.789 slug
 #: f_LG of the NASA LPC.
 NASA_LANDING_GEAR_FRACTION = NASA_LANDING_GEAR_MASS / NASA_TOTAL_MASS
 

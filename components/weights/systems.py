@@ -76,7 +76,8 @@ class SystemsMassComp(om.ExplicitComponent):
         self.add_input("design_gross_mass", 3700.0, units="kg", desc="design gross mass")
         for name in SYSTEM_ITEMS:
             self.add_output(f"{name}_mass", 50.0, units="kg", desc=f"{name} mass (Raymer)")
-            self.declare_partials(f"{name}_mass", "design_gross_mass")
+            if name not in ("avionics", "electrical"):  # these depend on W_uav only
+                self.declare_partials(f"{name}_mass", "design_gross_mass")
         self.declare_partials("flight_controls_mass", ["fuselage_length", "wing_span"])
 
         o = self.options
@@ -116,8 +117,6 @@ class SystemsMassComp(om.ExplicitComponent):
         partials["flight_controls_mass", "wing_span"] = 0.371 * fc / inputs["wing_span"]
         mass = inputs["design_gross_mass"]
         partials["flight_controls_mass", "design_gross_mass"] = 0.80 * fc / mass
-        partials["avionics_mass", "design_gross_mass"] = 0.0
-        partials["electrical_mass", "design_gross_mass"] = 0.0
         ecs = _LB * w["environmental_control"]
         partials["environmental_control_mass", "design_gross_mass"] = 0.52 * ecs / mass
         partials["furnishings_mass", "design_gross_mass"] = 0.0582 + 0.0 * mass
