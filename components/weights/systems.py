@@ -62,13 +62,25 @@ class SystemsMassComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare("ultimate_load_factor", default=4.5, types=(int, float),
-                             check_valid=_positive, desc="N_z = 1.5 x limit load factor")  # fmt: skip
-        self.options.declare("num_persons", default=6, types=int, lower=1, desc="N_p")
-        self.options.declare("uninstalled_avionics_mass", default=18.14, types=(int, float),
-                             check_valid=_positive, desc="W_uav, kg")  # fmt: skip
-        self.options.declare("cruise_mach", default=0.168, types=(int, float),
-                             check_valid=_positive, desc="cruise Mach number")  # fmt: skip
+        opts = self.options
+        opts.declare(
+            "ultimate_load_factor",
+            default=4.5,
+            types=(int, float),
+            check_valid=_positive,
+            desc="N_z = 1.5 x limit load factor",
+        )
+        opts.declare("num_persons", default=6, types=int, lower=1, desc="N_p")
+        opts.declare(
+            "uninstalled_avionics_mass",
+            default=18.14,
+            types=(int, float),
+            check_valid=_positive,
+            desc="W_uav, kg (assumption: 40 lb)",
+        )
+        opts.declare(
+            "cruise_mach", default=0.168, types=(int, float), check_valid=_positive, desc="M"
+        )
 
     def setup(self):
         self.add_input("fuselage_length", 9.144, units="m", desc="fuselage length")
