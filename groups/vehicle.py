@@ -30,6 +30,7 @@ VEHICLE_DESIGN_VARIABLES = {
     "htail_aspect_ratio": None,
     "fuselage_length": "m",
     "rotor_radius": "m",
+    "blade_chord_cp": "m",
     "battery_mass": "kg",
     "motor_length": "m",
     "front_spar_thickness": "m",
@@ -102,8 +103,7 @@ class VehicleGroup(om.Group):
         W_other in kg; None = calibrated so that the initial design's gross mass equals the
         vehicle's ``masses.target_gross_mass`` (paper: 3723.99 kg).
     other_cg : sequence of 3 float or None
-        cg of W_other in m; None = calibrated with W_other (``masses.other_cg_rule``), or the
-        vehicle's ``other_cg`` when ``other_mass`` is given.
+        cg of W_other in m; None = the vehicle's ``masses.other_cg``.
     """
 
     def initialize(self):
@@ -125,8 +125,7 @@ class VehicleGroup(om.Group):
             default=None,
             types=(tuple, list, np.ndarray),
             allow_none=True,
-            desc="cg of W_other (m); None = calibrated with W_other (or the "
-            "vehicle's other_cg when other_mass is given)",
+            desc="cg of W_other (m); None = the vehicle's masses.other_cg",
         )
         self.options.declare(
             "wing_panels",
@@ -274,14 +273,16 @@ def calibrated_other_mass(vehicle):
 
     This is lpc-mdo's one W_other calibration: :class:`VehicleGroup` (so the full model) uses
     it, and :func:`lpc_mdo.groups.weights.calibrate_other_mass` (``lpc_mdo.api``) returns its
-    mass. The target is ``masses.target_gross_mass``; with ``masses.other_cg_rule =
-    'hover_balance'`` the cg of W_other also puts the vehicle's cg above the mean lift-hub x.
+    mass. The target is ``masses.target_gross_mass``. W_other is the named unitemised item
+    at ``masses.other_cg`` (a stated position; no rule moves it to balance hover).
 
     The paper calibrates W_other at the initial design because the NASA reference does not itemise
     every weight (docs theory/weights 'Gross mass'). Gross mass and cg are affine in W_other and its
     position, so one run of the vehicle group with W_other = 0 gives both exactly. Every other item
     is held at its initial-design value as the model computes it: the wing mass from the wing-box
-    beam at the initial thicknesses, the motor masses from the motor sizing (paper eq. 23), the
+    beam at the initial thicknesses (the vehicle file's gauges, sized at +3g/-1g by
+    ``run_scripts/size_wing_gauges.py``) plus its secondary structure, the rotor, landing-gear
+    and system items, the motor masses from the motor sizing (paper eq. 23), the
     fuselage, boom and empennage masses from the M4 regressions, and the fixed masses of the vehicle
     file.
 
@@ -317,9 +318,4 @@ def calibrated_other_mass(vehicle):
             f"items of the initial design weigh {bare_mass:.2f} kg, so W_other "
             f"would be {other:.2f} kg; allowed: a target above {bare_mass:.2f} kg."
         )
-    cg = np.array(masses.other_cg, dtype=float)
-    if masses.other_cg_rule == "hover_balance":
-        target_x = np.mean([r.hub_position[0] for r in vehicle.lift_rotors])
-        bare_x = float(prob.get_val("cg", units="m")[0])
-        cg[0] = (masses.target_gross_mass * target_x - bare_mass * bare_x) / other
-    return other, tuple(float(v) for v in cg)
+    return other, tuple(float(v) for v in masses.other_cg)

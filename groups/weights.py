@@ -19,6 +19,8 @@ import openmdao.api as om
 
 from lpc_mdo.checks import RangeCheck, check_choice
 from lpc_mdo.components.weights.gross_weight import GrossWeightComp
+from lpc_mdo.components.weights.item_placement import FuselageStationComp
+from lpc_mdo.components.weights.landing_gear import LandingGearMassComp
 from lpc_mdo.components.weights.mass_properties import MassItem, MassPropertiesComp
 from lpc_mdo.components.weights.regressions import (
     BoomRegressionComp,
@@ -27,6 +29,25 @@ from lpc_mdo.components.weights.regressions import (
     WingRegressionComp,
     m4_coefficients,
 )
+from lpc_mdo.components.weights.rotor_mass import RotorMassComp
+from lpc_mdo.components.weights.systems import SYSTEM_ITEMS, SystemsMassComp
+from lpc_mdo.components.weights.wing_secondary import WingSecondaryMassComp
+
+_FT = 0.3048
+#: NDARC fuselage length of the NASA LPC (GUAM build_Lift_plus_Cruise.m, f_ld = 29.93/6.13), m.
+NASA_FUSELAGE_LENGTH = 29.93 * _FT
+#: Fuselage stations (f_x = -x / L_fuselage, y, z; body frame, m) of the items that the NASA
+#: LPC NDARC weight statement places (GUAM build_Lift_plus_Cruise.m; GUAM frame in ft, x aft
+#: negative from the CAD origin: x_body = (x_guam + 2.464) 0.3048, z_body = (z_guam + 5.113)
+#: 0.3048): landing gear at (-13.325, 0, -1.391) ft, systems at (-16, 0, -6) ft. The Raymer
+#: system items without an NDARC position of their own sit at the NDARC systems cg.
+NASA_STATIONS = {
+    "landing_gear": (-(-13.32464336 + 2.464) * _FT / NASA_FUSELAGE_LENGTH, 0.0,
+                     (-1.391179415 + 5.113) * _FT),
+    "systems": (-(-16.0 + 2.464) * _FT / NASA_FUSELAGE_LENGTH, 0.0, (-6.0 + 5.113) * _FT),
+}  # fmt: skip
+#: Items placed at the NDARC systems station.
+SYSTEMS_AT_NASA_STATION = ("flight_controls", "avionics", "electrical", "environmental_control")
 
 
 def num_motors(vehicle=None):
@@ -52,16 +73,51 @@ def vehicle_mass_items(vehicle=None):
     """
     return (
         MassItem("wing", own_inertia=True),
+        MassItem("wing_secondary"),
         MassItem("fuselage", own_inertia=True),
         MassItem("empennage", own_inertia=True),
         MassItem("boom", own_inertia=True),
+        MassItem("landing_gear"),
         MassItem("battery"),
         MassItem("motor", count=num_motors(vehicle)),
+        MassItem("rotor", count=num_motors(vehicle)),
         MassItem("power_electronics"),
         MassItem("payload"),
+        *(MassItem(name) for name in SYSTEM_ITEMS),
         MassItem("systems"),
         MassItem("other"),
     )
+
+
+def max_load_factor(vehicle=None):
+    """Return the largest load factor of the vehicle's conditions (the +3g limit: 3.0)."""
+    return max(c.load_factor for c in _vehicle(vehicle).conditions)
+
+
+def speed_of_sound(altitude):
+    """Speed of sound (m/s), standard troposphere T = 288.16 - 6.5 h/1000 K (theory/atmosphere)."""
+    return math.sqrt(1.4 * 287.0 * (288.16 - 6.5e-3 * altitude))
+
+
+def rotor_group_blades(vehicle=None):
+    """Return the blade count of each rotor group (lift pairs in pair order, then the pusher)."""
+    vehicle = _vehicle(vehicle)
+    blades = {r.pair: r.num_blades for r in vehicle.lift_rotors}
+    return [blades[p] for p in sorted(blades)] + [vehicle.pusher.num_blades]
+
+
+def rotor_design_speeds(vehicle=None):
+    """
+    Return the design rotor speed (rpm) of each rotor group for the rotor weight model.
+
+    NDARC's AFDD00 blade and hub weights take the design hover tip speed: the lift pairs use
+    the initial ``hover_lift_rpm`` and the pusher the initial ``cruise_pusher_rpm`` design
+    variables of the vehicle file (fixed design values, not the condition's trim variables).
+    """
+    dvs = _vehicle(vehicle).design_variables
+    lift = np.asarray(dvs["hover_lift_rpm"].initial_array, dtype=float).ravel()
+    pusher = np.asarray(dvs["cruise_pusher_rpm"].initial_array, dtype=float).ravel()[:1]
+    return np.concatenate([lift, pusher])
 
 
 def _vehicle(vehicle):
@@ -300,14 +356,47 @@ class WeightsGroup(om.Group):
         self.add_subsystem("empennage", EmpennageRegressionComp(mass_factor=factor), promotes=["*"])
         if wing_model == "regression":
             self.add_subsystem("wing", WingRegressionComp(), promotes=["*"])
+        # Named items (docs theory/weights 'Mass items'): wing secondary structure (FLOPS),
+        # landing gear (NDARC fraction), systems (Raymer 15.3.3), rotor blades and hubs (NDARC
+        # AFDD00), placed from the geometry.
+        self.add_subsystem("wing_secondary", WingSecondaryMassComp(), promotes=["*"])
+        self.add_subsystem("landing_gear", LandingGearMassComp(), promotes=["*"])
+        cruise = vehicle.condition(vehicle.mission.cruise_condition)
+        self.add_subsystem(
+            "systems",
+            SystemsMassComp(
+                ultimate_load_factor=1.5 * max_load_factor(vehicle),
+                cruise_mach=cruise.speed / speed_of_sound(cruise.altitude),
+            ),
+            promotes=["*"],
+        )
+        stations = {"landing_gear": NASA_STATIONS["landing_gear"]}
+        stations.update({name: NASA_STATIONS["systems"] for name in SYSTEMS_AT_NASA_STATION})
+        self.add_subsystem("item_stations", FuselageStationComp(stations=stations), promotes=["*"])
+        self.add_subsystem(
+            "rotor_mass_model",
+            RotorMassComp(num_blades=rotor_group_blades(vehicle)),
+            promotes_inputs=["rotor_radius", "blade_chord_cp", "rotor_design_speed"],
+            promotes_outputs=[
+                ("blade_mass", "rotor_blade_mass"),
+                ("hub_mass", "rotor_hub_mass"),
+                "rotor_group_mass",
+            ],
+        )
         self.add_subsystem(
             "gross_weight", GrossWeightComp(num_motors=num_motors(vehicle)), promotes=["*"]
         )
         self.add_subsystem(
             "mass_properties",
             MassPropertiesComp(items=list(vehicle_mass_items(vehicle))),
-            promotes=["*"],
+            promotes_inputs=[
+                ("wing_secondary_cg", "wing_cg"),
+                ("furnishings_cg", "payload_cg"),
+                "*",
+            ],
+            promotes_outputs=["*"],
         )
+        self.connect("rotor_group_mass", "rotor_mass", src_indices=motor_group_indices(vehicle))
 
         masses = vehicle.masses
         placeholder = placeholder_calibration_inputs(vehicle)
@@ -326,6 +415,20 @@ class WeightsGroup(om.Group):
                 [r.hub_position for r in vehicle.lift_rotors] + [vehicle.pusher.hub_position],
                 "m",
             ),
+            "rotor_cg": (
+                [r.hub_position for r in vehicle.lift_rotors] + [vehicle.pusher.hub_position],
+                "m",
+            ),
+            "design_gross_mass": (masses.target_gross_mass, "kg"),
+            "wing_span": (vehicle.wing.span, "m"),
+            "rotor_radius": (vehicle.design_variables["rotor_radius"].initial_array, "m"),
+            "blade_chord_cp": (
+                np.asarray(vehicle.design_variables["blade_chord_cp"].initial_array).reshape(
+                    vehicle.design_variables["blade_chord_cp"].shape
+                ),
+                "m",
+            ),
+            "rotor_design_speed": (rotor_design_speeds(vehicle), "rpm"),
             "power_electronics_mass": (masses.power_electronics, "kg"),
             "power_electronics_cg": (masses.power_electronics_cg, "m"),
             "payload_mass": (masses.payload, "kg"),

@@ -117,6 +117,18 @@ def analyze_vehicle(
     return Analysis(prob, trim, result, failed)
 
 
+def format_mass_table(analysis):
+    """
+    Return the mass, cg and inertia table per mass item of an analysis (issue 17 item 4).
+
+    See :func:`lpc_mdo.api.weights.mass_properties`; NASA's cg of the LPC for comparison is in
+    docs theory/weights 'Mass items'.
+    """
+    from lpc_mdo.api.weights import format_mass_properties, mass_properties
+
+    return format_mass_properties(mass_properties(analysis.prob, analysis.vehicle))
+
+
 def trim_tolerances(prob, tol=TRIM_TOLERANCE):
     """Return constraint name -> ``tol`` for every declared trim-row constraint of ``prob``."""
     return {

@@ -531,9 +531,12 @@ def _analyze_header(analysis, args):
 
 
 def _analyze_masses(analysis, args):
+    from lpc_mdo.analysis import format_mass_table
     from lpc_mdo.api.weights import format_mass_breakdown, mass_breakdown
 
-    return format_mass_breakdown(mass_breakdown(analysis.prob))
+    return "\n\n".join(
+        [format_mass_breakdown(mass_breakdown(analysis.prob)), format_mass_table(analysis)]
+    )
 
 
 def _analyze_conditions(analysis, args):

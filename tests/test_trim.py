@@ -18,15 +18,20 @@ def test_hover_trims_to_weight_with_equal_rotor_speeds():
     weight = prob.get_val("gross_mass", units="kg")[0] * 9.81
     thrust = prob.get_val("hover.lift_thrust", units="N").sum()
     assert thrust == pytest.approx(weight, rel=1e-5)
-    # The reference vehicle's unitemised mass is placed for hover balance (vehicle file), so
-    # the four pairs trim at one speed.
+    # No mass is placed for hover balance: the cg (x -2.698 m, from the items) lies ahead of
+    # the lift-hub centroid (-2.881 m), so the front pairs (0, 2) trim faster than the rear
+    # pairs (1, 3) (measured 1340/1343 vs 1239/1242 rpm), and the thrust centroid lies at the cg.
     rpm = prob.get_val("hover_lift_rpm", units="rpm")
-    np.testing.assert_allclose(rpm, rpm[0], rtol=1e-4)
+    assert min(rpm[0], rpm[2]) > max(rpm[1], rpm[3]) + 50.0
+    hubs = np.array([r.hub_position[0] for r in prob.vehicle.lift_rotors])
+    rotor_thrust = prob.get_val("hover.lift_thrust", units="N").ravel()
+    thrust_x = rotor_thrust @ hubs / rotor_thrust.sum()
+    assert abs(thrust_x - prob.get_val("cg", units="m")[0]) < 0.05
     assert abs(result.residuals["hover.linear_acceleration"][0]) < 1e-5
 
 
 def test_transition_point_trims_to_the_prescribed_acceleration():
-    # transition_3 starts 6.6 m/s^2 off in w_dot and 1.5 rad/s^2 off in p_dot (initial design:
+    # transition_3 starts 6.8 m/s^2 off in w_dot and 0.99 rad/s^2 off in p_dot (initial design:
     # the pusher's torque reaction rolls it); 4 lift pair speeds, the roll and yaw
     # differentials, pusher speed and elevator against u_dot, w_dot, p_dot, q_dot, r_dot.
     prob = build_analysis_problem(
@@ -45,7 +50,7 @@ def test_transition_point_trims_to_the_prescribed_acceleration():
     # 2.3e-3 m/s^2 here (0.02 % of the weight as a force); the issue's criterion is 0.1 %.
     assert abs(acc[1]) < 1e-3 * 9.81
     np.testing.assert_allclose(prob.get_val("transition_3.angular_acceleration"), 0.0, atol=1e-6)
-    assert np.abs(before).max() > 1.0 and abs(roll_before) > 1.0  # it did have to move
+    assert np.abs(before).max() > 1.0 and abs(roll_before) > 0.5  # it did have to move
     # Closed form of the roll balance: the lift rotors' rolling moment about the body origin
     # cancels the pusher's (its torque reaction about x); the differentials did it.
     roll = sum(

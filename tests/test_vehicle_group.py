@@ -47,18 +47,24 @@ def test_initial_design_is_calibrated_to_the_paper_gross_mass():
 
 
 def test_gross_mass_is_the_sum_of_the_breakdown_items():
-    # Eqs. 31-33 from the breakdown: W0 is the sum of the ten items, W_structures that of wing,
-    # fuselage, empennage and booms, W_powertrain that of the motors and power electronics.
+    # Eqs. 31-33 from the breakdown: W0 is the sum of the items, W_structures that of wing box,
+    # wing secondary structure, fuselage, empennage, booms and landing gear, W_powertrain that
+    # of the motors, rotors and power electronics.
     prob = vehicle_problem()
     items = dict(zip(BREAKDOWN_LABELS, prob.get_val("mass_breakdown", units="kg"), strict=True))
     assert_near_equal(sum(items.values()), prob.get_val("gross_mass", units="kg")[0], 1e-14)
     assert_near_equal(
-        items["wing"] + items["fuselage"] + items["empennage"] + items["booms"],
+        items["wing"]
+        + items["wing_secondary"]
+        + items["fuselage"]
+        + items["empennage"]
+        + items["booms"]
+        + items["landing_gear"],
         prob.get_val("structures_mass", units="kg")[0],
         1e-14,
     )
     assert_near_equal(
-        items["motors"] + items["power_electronics"],
+        items["motors"] + items["rotors"] + items["power_electronics"],
         prob.get_val("powertrain_mass", units="kg")[0],
         1e-14,
     )
@@ -93,29 +99,30 @@ def test_calibrated_other_mass_moves_by_the_wing_and_motor_mass_differences():
     with pytest.raises(
         ValueError,
         match=r"masses.target_gross_mass = 2000.0 kg; .* allowed: "
-        r"a target above 2362.31 kg",
+        r"a target above 2787.60 kg",  # the design-gross-mass items scale with it
     ):
         calibrated_other_mass(low)
 
 
-def test_unitemised_mass_is_placed_for_hover_balance():
-    # masses.other_cg_rule = 'hover_balance': the initial cg lies above the mean lift-hub x, so
-    # that equal lift-rotor thrust trims hover (closed form: the mean of the 8 hub x values).
-    prob = vehicle_problem()
-    hub_x = np.mean([r.hub_position[0] for r in VEHICLE.lift_rotors])
-    assert_near_equal(prob.get_val("cg", units="m")[0], hub_x, 1e-10)
-    # 'fixed' keeps the file's other_cg: the cg is then 0.59 m ahead of the rotor centroid.
-    fixed = dataclasses.replace(
-        VEHICLE, masses=dataclasses.replace(VEHICLE.masses, other_cg_rule="fixed")
-    )
-    other, cg = calibrated_other_mass(fixed)
+def test_unitemised_mass_sits_at_its_stated_position():
+    # No rule places W_other to balance hover (issue 17 item 3): it sits at masses.other_cg,
+    # and moving that position by dx moves the vehicle cg by W_other / W0 dx (first moment,
+    # closed form), without changing W_other.
+    other, cg = calibrated_other_mass(VEHICLE)
     assert cg == VEHICLE.masses.other_cg
-    assert_near_equal(other, calibrated_other_mass(VEHICLE)[0], 1e-12)
-    fixed_prob = om.Problem(reports=False)
-    fixed_prob.model.add_subsystem("vehicle", VehicleGroup(vehicle=fixed), promotes=["*"])
-    fixed_prob.setup()
-    fixed_prob.run_model()
-    assert 0.5 < fixed_prob.get_val("cg", units="m")[0] - hub_x < 0.7
+    prob = vehicle_problem()
+    x0 = prob.get_val("cg", units="m")[0]
+    moved = dataclasses.replace(
+        VEHICLE,
+        masses=dataclasses.replace(VEHICLE.masses, other_cg=(cg[0] - 1.0, cg[1], cg[2])),
+    )
+    assert_near_equal(calibrated_other_mass(moved)[0], other, 1e-12)
+    moved_prob = om.Problem(reports=False)
+    moved_prob.model.add_subsystem("vehicle", VehicleGroup(vehicle=moved), promotes=["*"])
+    moved_prob.setup()
+    moved_prob.run_model()
+    shift = x0 - moved_prob.get_val("cg", units="m")[0]
+    assert_near_equal(shift, other / VEHICLE.masses.target_gross_mass, 1e-10)
 
 
 def test_totals_of_gross_mass_and_geometry():

@@ -8,31 +8,58 @@ from lpc_mdo.checks import check_range
 #: Order of the entries of the ``mass_breakdown`` output of :class:`GrossWeightComp`.
 BREAKDOWN_LABELS = (
     "wing",
+    "wing_secondary",
     "fuselage",
     "empennage",
     "booms",
+    "landing_gear",
     "battery",
     "motors",
+    "rotors",
     "power_electronics",
     "payload",
+    "flight_controls",
+    "avionics",
+    "electrical",
+    "environmental_control",
+    "furnishings",
     "systems",
     "other",
 )
 
-# (input, breakdown index, description); motor_mass is added separately (vector).
+# (input, breakdown label, description); motor_mass and rotor_mass are vectors (one per rotor).
 _SCALAR_MASSES = (
-    ("wing_mass", 0, "wing structural mass (wing-box beam, both halves)"),
-    ("fuselage_mass", 1, "fuselage structural mass (M4 regression)"),
-    ("empennage_mass", 2, "empennage structural mass (M4 regression)"),
-    ("boom_mass", 3, "total mass of the 8 booms (M4 regression)"),
-    ("battery_mass", 4, "battery mass (design variable)"),
-    ("power_electronics_mass", 6, "power electronics mass (paper: about 90 lb)"),
-    ("payload_mass", 7, "payload mass (fixed)"),
-    ("systems_mass", 8, "systems mass (fixed)"),
-    ("other_mass", 9, "other mass (fixed, calibrated to the initial gross mass)"),
+    ("wing_mass", "wing", "wing-box mass (beam, both halves)"),
+    ("wing_secondary_mass", "wing_secondary", "wing control surfaces and misc. items (FLOPS)"),
+    ("fuselage_mass", "fuselage", "fuselage structural mass (M4 regression)"),
+    ("empennage_mass", "empennage", "empennage structural mass (M4 regression)"),
+    ("boom_mass", "booms", "total mass of the 8 booms (M4 regression)"),
+    ("landing_gear_mass", "landing_gear", "landing-gear mass (NDARC fraction)"),
+    ("battery_mass", "battery", "battery mass (design variable)"),
+    ("power_electronics_mass", "power_electronics", "power electronics mass (about 90 lb)"),
+    ("payload_mass", "payload", "payload mass (fixed)"),
+    ("flight_controls_mass", "flight_controls", "flight controls (Raymer 15.54)"),
+    ("avionics_mass", "avionics", "avionics (Raymer 15.57)"),
+    ("electrical_mass", "electrical", "electrical system (Raymer 15.56)"),
+    ("environmental_control_mass", "environmental_control", "air conditioning (Raymer 15.58)"),
+    ("furnishings_mass", "furnishings", "furnishings (Raymer 15.59)"),
+    ("systems_mass", "systems", "further fixed systems of the vehicle file"),
+    ("other_mass", "other", "unitemised remainder (calibrated to the initial gross mass)"),
 )
-_STRUCTURES = ("wing_mass", "fuselage_mass", "empennage_mass", "boom_mass")
-_MOTORS = BREAKDOWN_LABELS.index("motors")
+_VECTOR_MASSES = (
+    ("motor_mass", "motors", "mass of each motor (paper eq. 23)"),
+    ("rotor_mass", "rotors", "blade and hub mass of each rotor (NDARC AFDD00)"),
+)
+_STRUCTURES = (
+    "wing_mass",
+    "wing_secondary_mass",
+    "fuselage_mass",
+    "empennage_mass",
+    "boom_mass",
+    "landing_gear_mass",
+)
+_POWERTRAIN = ("motor_mass", "rotor_mass", "power_electronics_mass")
+_INDEX = {label: i for i, label in enumerate(BREAKDOWN_LABELS)}
 
 
 class GrossWeightComp(om.ExplicitComponent):
@@ -42,23 +69,27 @@ class GrossWeightComp(om.ExplicitComponent):
     The build-up of paper eqs. 31-33 (reference/paper.md Sec. IV;
     docs theory/weights 'Gross mass').
 
-    - W_structures = W_wing + W_fuselage + W_empennage + W_booms             (eq. 32)
-    - W_powertrain = sum_j W_motor,j + W_power_electronics                  (eq. 33)
+    - W_structures = W_wing + W_wing,secondary + W_fuselage + W_empennage + W_booms
+      + W_landing_gear                                                       (eq. 32, extended)
+    - W_powertrain = sum_j (W_motor,j + W_rotor,j) + W_power_electronics   (eq. 33, extended)
     - W0 = W_structures + W_battery + W_powertrain + W_payload + W_systems + W_other  (eq. 31)
 
-    Masses in kg (the paper writes "weight"). The model is linear, so every partial is a
-    constant set once in setup.
+    with W_systems the sum of the named system items (flight controls, avionics, electrical,
+    environmental control, furnishings, further fixed systems). Masses in kg (the paper writes
+    "weight"). The model is linear, so every partial is a constant set once in setup.
 
     Inputs
     ------
-    wing_mass, fuselage_mass, empennage_mass, boom_mass : float, (1,), kg
-        Structural masses (wing from the beam; the others from the M4 regressions).
+    wing_mass, wing_secondary_mass, fuselage_mass, empennage_mass, boom_mass,
+    landing_gear_mass : float, (1,), kg
+        Structural masses.
     battery_mass : float, (1,), kg
         Battery mass (design variable).
-    motor_mass : float, (num_motors,), kg
-        Mass of each motor (paper eq. 23).
-    power_electronics_mass, payload_mass, systems_mass, other_mass : float, (1,), kg
-        Fixed masses.
+    motor_mass, rotor_mass : float, (num_motors,), kg
+        Mass of each motor (paper eq. 23) and of each rotor's blades and hub.
+    power_electronics_mass, payload_mass, flight_controls_mass, avionics_mass, electrical_mass,
+    environmental_control_mass, furnishings_mass, systems_mass, other_mass : float, (1,), kg
+        The other items (``other``: the unitemised remainder).
 
     Outputs
     -------
@@ -68,10 +99,9 @@ class GrossWeightComp(om.ExplicitComponent):
         W_powertrain.
     gross_mass : float, (1,), kg
         W0, the objective.
-    mass_breakdown : float, (10,), kg
-        The items of eq. 31 in the order of :data:`BREAKDOWN_LABELS`: wing, fuselage, empennage,
-        booms, battery, motors (sum), power electronics, payload, systems, other. An output so
-        that a recorded case holds the whole breakdown.
+    mass_breakdown : float, (18,), kg
+        The items in the order of :data:`BREAKDOWN_LABELS` (motors and rotors summed). An output
+        so that a recorded case holds the whole breakdown.
 
     Options
     -------
@@ -94,7 +124,8 @@ class GrossWeightComp(om.ExplicitComponent):
         nb = len(BREAKDOWN_LABELS)
         for name, _, desc in _SCALAR_MASSES:
             self.add_input(name, 0.0, units="kg", desc=desc)
-        self.add_input("motor_mass", np.zeros(nm), units="kg", desc="mass of each motor")
+        for name, _, desc in _VECTOR_MASSES:
+            self.add_input(name, np.zeros(nm), units="kg", desc=desc)
 
         self.add_output("structures_mass", 500.0, units="kg", ref=1e2, desc="W_structures (eq. 32)")
         self.add_output("powertrain_mass", 100.0, units="kg", ref=1e2, desc="W_powertrain (eq. 33)")
@@ -104,26 +135,32 @@ class GrossWeightComp(om.ExplicitComponent):
             np.zeros(nb),
             units="kg",
             ref=1e2,
-            desc="items of eq. 31: " + ", ".join(BREAKDOWN_LABELS),
+            desc="items: " + ", ".join(BREAKDOWN_LABELS),
         )
 
-        for name, index, _ in _SCALAR_MASSES:
+        for name, label, _ in _SCALAR_MASSES:
             self.declare_partials("gross_mass", name, val=1.0)
-            self.declare_partials("mass_breakdown", name, rows=[index], cols=[0], val=1.0)
+            self.declare_partials("mass_breakdown", name, rows=[_INDEX[label]], cols=[0], val=1.0)
+        for name, label, _ in _VECTOR_MASSES:
+            self.declare_partials("gross_mass", name, val=np.ones((1, nm)))
+            self.declare_partials(
+                "mass_breakdown",
+                name,
+                rows=np.full(nm, _INDEX[label]),
+                cols=np.arange(nm),
+                val=1.0,
+            )
         for name in _STRUCTURES:
             self.declare_partials("structures_mass", name, val=1.0)
-        self.declare_partials("powertrain_mass", ["motor_mass", "power_electronics_mass"], val=1.0)
-        self.declare_partials("gross_mass", "motor_mass", val=np.ones((1, nm)))
-        self.declare_partials(
-            "mass_breakdown", "motor_mass", rows=np.full(nm, _MOTORS), cols=np.arange(nm), val=1.0
-        )
+        for name in _POWERTRAIN:
+            size = nm if name != "power_electronics_mass" else 1
+            self.declare_partials("powertrain_mass", name, val=np.ones((1, size)))
 
     def compute(self, inputs, outputs):
-        breakdown = np.zeros(len(BREAKDOWN_LABELS), dtype=inputs["motor_mass"].dtype)
-        for name, index, _ in _SCALAR_MASSES:
-            breakdown[index] = inputs[name][0]
-        breakdown[_MOTORS] = np.sum(inputs["motor_mass"])
-        for name in [n for n, _, _ in _SCALAR_MASSES] + ["motor_mass"]:
+        dtype = inputs["motor_mass"].dtype
+        breakdown = np.zeros(len(BREAKDOWN_LABELS), dtype=dtype)
+        names = [n for n, _, _ in _SCALAR_MASSES + _VECTOR_MASSES]
+        for name in names:
             check_range(
                 name,
                 inputs[name],
@@ -132,7 +169,9 @@ class GrossWeightComp(om.ExplicitComponent):
                 error=om.AnalysisError,
                 where=self.msginfo,
             )
+        for name, label, _ in _SCALAR_MASSES + _VECTOR_MASSES:
+            breakdown[_INDEX[label]] = np.sum(inputs[name])
         outputs["mass_breakdown"] = breakdown
-        outputs["structures_mass"] = np.sum(breakdown[:4])
-        outputs["powertrain_mass"] = breakdown[_MOTORS] + inputs["power_electronics_mass"]
+        outputs["structures_mass"] = sum(np.sum(inputs[n]) for n in _STRUCTURES)
+        outputs["powertrain_mass"] = sum(np.sum(inputs[n]) for n in _POWERTRAIN)
         outputs["gross_mass"] = np.sum(breakdown)

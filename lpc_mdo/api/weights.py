@@ -8,7 +8,7 @@ import numpy as np
 
 from lpc_mdo.components.weights.gross_weight import BREAKDOWN_LABELS
 
-__all__ = ["format_mass_breakdown", "mass_breakdown"]
+__all__ = ["format_mass_breakdown", "format_mass_properties", "mass_breakdown", "mass_properties"]
 
 
 def mass_breakdown(source, prefix=""):
@@ -47,4 +47,87 @@ def format_mass_breakdown(breakdown):
         if label == "structures":
             lines.append("-" * 41)
         lines.append(f"{label.replace('_', ' '):<20}{value:>12.2f}{100.0 * value / gross:>8.1f}%")
+    return "\n".join(lines)
+
+
+def mass_properties(prob, vehicle=None, prefix=""):
+    """
+    Return the mass, cg and inertia of every mass item of a live problem, and the vehicle's.
+
+    Reads the inputs of the :class:`~lpc_mdo.components.weights.mass_properties.MassPropertiesComp`
+    of the :class:`~lpc_mdo.groups.weights.WeightsGroup` (promoted names, ``prefix`` as in
+    :func:`mass_breakdown`). Each row's inertia is its contribution to the vehicle's inertia
+    about the vehicle cg: its own inertia (items with one) plus m ((r.r) 1 - r r^T), r = p - cg
+    (parallel-axis theorem, docs theory/weights 'Mass properties'); the rows add up to the
+    vehicle's tensor.
+
+    Parameters
+    ----------
+    prob : om.Problem
+        A run problem (inputs are read, so not a driver case).
+    vehicle : Vehicle or None
+        Unused (the items are the MassPropertiesComp's own); kept for symmetry.
+    prefix : str
+        Path of the WeightsGroup with a trailing dot; '' when promoted.
+
+    Returns
+    -------
+    list of dict
+        One per body kind (rows with several bodies, e.g. 9 motors, are summed): ``name``,
+        ``mass`` (kg), ``cg`` (3, m; mass-weighted), ``inertia`` (3x3, kg m^2 about the
+        vehicle cg); the last row is ``name='vehicle'``.
+    """
+    from lpc_mdo.components.weights.mass_properties import MassPropertiesComp
+
+    group = prob.model._get_subsystem(prefix.rstrip(".")) if prefix else prob.model
+    comp = next(
+        s
+        for s in group.system_iter(recurse=True, typ=MassPropertiesComp)
+        if s.pathname.endswith("mass_properties")
+    )
+    path = comp.pathname
+
+    cg = np.asarray(prob.get_val(f"{prefix}cg", units="m"), float).ravel()
+    rows = []
+    for item in comp.options["items"]:
+        mass = np.asarray(prob.get_val(f"{path}.{item.name}_mass", units="kg"), float).ravel()
+        points = np.asarray(prob.get_val(f"{path}.{item.name}_cg", units="m"), float).reshape(
+            item.count, 3
+        )
+        r = points - cg
+        inertia = np.einsum("i,iab->ab", mass, np.einsum("ij,ij->i", r, r)[:, None, None]
+                            * np.eye(3) - r[:, :, None] * r[:, None, :])  # fmt: skip
+        if item.own_inertia:
+            own = prob.get_val(f"{path}.{item.name}_inertia", units="kg*m**2")
+            inertia = inertia + np.asarray(own, float).reshape(item.count, 3, 3).sum(axis=0)
+        total = float(mass.sum())
+        item_cg = mass @ points / total if total > 0.0 else points.mean(axis=0)
+        rows.append({"name": item.name, "mass": total, "cg": item_cg, "inertia": inertia})
+    rows.append(
+        {
+            "name": "vehicle",
+            "mass": float(np.asarray(prob.get_val(f"{prefix}total_mass", units="kg")).ravel()[0]),
+            "cg": cg,
+            "inertia": np.asarray(prob.get_val(f"{prefix}inertia", units="kg*m**2"), float),
+        }
+    )
+    return rows
+
+
+def format_mass_properties(rows):
+    """Return a text table of :func:`mass_properties` rows: mass, cg and inertia per item."""
+    head = (
+        f"{'item':<22}{'mass kg':>9}{'x m':>8}{'y m':>7}{'z m':>7}"
+        f"{'Ixx':>9}{'Iyy':>9}{'Izz':>9}{'Ixz':>8}  (kg m^2, about the vehicle cg)"
+    )
+    lines = [head]
+    for row in rows:
+        if row["name"] == "vehicle":
+            lines.append("-" * 88)
+        x, y, z = row["cg"]
+        i = row["inertia"]
+        lines.append(
+            f"{row['name'].replace('_', ' '):<22}{row['mass']:>9.2f}{x:>8.3f}{y:>7.3f}{z:>7.3f}"
+            f"{i[0, 0]:>9.0f}{i[1, 1]:>9.0f}{i[2, 2]:>9.0f}{i[0, 2]:>8.0f}"
+        )
     return "\n".join(lines)

@@ -403,10 +403,6 @@ class FixedMasses:
         Centres of gravity, body frame (m).
     target_gross_mass : float
         Gross mass of the initial design that ``other`` is calibrated to (kg).
-    other_cg_rule : str
-        'fixed': ``other_cg`` as given. 'hover_balance': the x of ``other_cg`` is an initial
-        guess, calibrated (like ``other``) so that the initial design's cg lies above the mean
-        lift-hub x, i.e. the lift rotors trim hover with equal thrust.
     """
 
     # Each fixed mass is 0-10 t, half the largest gross mass of the class (catches g and 1e30).
@@ -420,7 +416,6 @@ class FixedMasses:
     power_electronics_cg: tuple[float, ...] = _param("m", ge=-_REACH, le=_REACH, shape=(3,))
     # 500-20000 kg: a one-seat eVTOL to the heaviest of the class (the reference is 3724 kg).
     target_gross_mass: float = _param("kg", ge=500, le=20000)
-    other_cg_rule: str = _param(choices=("fixed", "hover_balance"))
 
 
 @dataclass(frozen=True)
