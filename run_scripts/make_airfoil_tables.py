@@ -8,6 +8,13 @@ What each file holds (all angles in degrees in the files; the runtime converts t
   (n_a, n_r, n_m): the polar from NeuralFoil 0.3.3 (an XFOIL-trained network; incompressible)
   with the Prandtl-Glauert rule for Mach (cl and cm divided by sqrt(1 - M^2), cd unchanged);
   ``confidence`` is NeuralFoil's analysis confidence (0..1).
+- wing airfoils only (``ls413``, ``ls417``), when XFOIL runs: ``cl``, ``cd``, ``cm`` are the
+  XFOIL/NeuralFoil merge (:func:`merge_polars`): XFOIL 6.99 in each (Re, M) slice's converged
+  attached range at M <= XFOIL_MACH_MAX, NeuralFoil elsewhere, a C1 smoothstep blend over
+  XFOIL_BLEND_DEG at the ends of the range; ``polar_xfoil_weight`` (n_a, n_r, n_m) is the weight
+  of XFOIL at every point (1 XFOIL, 0 NeuralFoil), ``polar_xfoil_range_deg`` (n_r, n_m, 2) the
+  trusted range (NaN where none), ``polar_xfoil_cl``/``_cd``/``_cm`` the raw XFOIL polar (NaN
+  where not converged) and ``polar_neuralfoil_cl``/``_cd``/``_cm`` the NeuralFoil one.
 - wing airfoils only (``ls413``, ``ls417``): the chordwise pressure coefficient from XFOIL 6.99
   (Debian package ``xfoil``), ``cp_alpha_deg`` (p_a), ``cp_reynolds`` (p_r), ``cp_mach`` (p_m),
   ``x`` (n_x stations, x/c from the leading edge, cosine spaced), ``y_upper``, ``y_lower`` (n_x,
@@ -361,6 +368,99 @@ def xfoil_polar_arrays(results):
     return out
 
 
+# ------------------------------------------------------------------------------ polar merge
+
+# XFOIL/NeuralFoil merge of the wing polars: XFOIL is used where it converged, in the attached
+# range of each (Re, M) slice and at M <= XFOIL_MACH_MAX, NeuralFoil elsewhere; the weight of
+# XFOIL falls from 1 to 0 over XFOIL_BLEND_DEG at each end of the trusted alpha range with the
+# C1 smoothstep 3t^2 - 2t^3, so the merged samples carry no jump.
+XFOIL_MACH_MAX = 0.5
+XFOIL_BLEND_DEG = 2.0
+
+
+def _smoothstep(t):
+    t = np.clip(t, 0.0, 1.0)
+    return t * t * (3.0 - 2.0 * t)
+
+
+def xfoil_trusted_range(alpha, cl, ok):
+    """
+    The attached-flow alpha range [a_lo, a_hi] in which one slice's XFOIL polar is trusted.
+
+    The run of consecutive converged angles that contains 0 deg, cut at XFOIL's own stall
+    points (the largest cl above 0 deg, the smallest cl below it) so that no post-stall XFOIL
+    value (a separated boundary layer, XFOIL's weak spot) enters the table. None if XFOIL did
+    not converge at 0 deg.
+    """
+    i0 = int(np.argmin(np.abs(alpha)))
+    if not ok[i0]:
+        return None
+    hi = i0
+    while hi + 1 < alpha.size and ok[hi + 1]:
+        hi += 1
+    lo = i0
+    while lo - 1 >= 0 and ok[lo - 1]:
+        lo -= 1
+    hi = i0 + int(np.argmax(cl[i0 : hi + 1]))
+    lo = lo + int(np.argmin(cl[lo : i0 + 1]))
+    return float(alpha[lo]), float(alpha[hi])
+
+
+def xfoil_weight(xf):
+    """
+    Weight of XFOIL (0..1) on ALPHA_DEG x REYNOLDS x MACH, and each slice's trusted range.
+
+    1 inside the trusted range (:func:`xfoil_trusted_range`) shrunk by XFOIL_BLEND_DEG at each
+    end, a smoothstep to 0 at the ends of that range, 0 outside it, at M > XFOIL_MACH_MAX and
+    where the slice did not converge at 0 deg.
+    """
+    shape = xf["cd"].shape
+    weight = np.zeros(shape)
+    ranges = np.full(shape[1:] + (2,), np.nan)
+    for j in range(shape[1]):
+        for k in range(shape[2]):
+            if MACH[k] > XFOIL_MACH_MAX + 1e-9:
+                continue
+            ok = np.isfinite(xf["cd"][:, j, k])
+            band = xfoil_trusted_range(ALPHA_DEG, xf["cl"][:, j, k], ok)
+            if band is None:
+                continue
+            a_lo, a_hi = band
+            ranges[j, k] = band
+            w = _smoothstep((ALPHA_DEG - a_lo) / XFOIL_BLEND_DEG) * _smoothstep(
+                (a_hi - ALPHA_DEG) / XFOIL_BLEND_DEG
+            )
+            weight[:, j, k] = np.where((ALPHA_DEG >= a_lo) & (ALPHA_DEG <= a_hi), w, 0.0)
+    return weight, ranges
+
+
+def merge_polars(nf, xf, name):
+    """
+    Merged cl, cd, cm: weight * XFOIL + (1 - weight) * NeuralFoil (see :func:`xfoil_weight`).
+
+    ``nf`` and ``xf`` are dicts of (n_a, n_r, n_m) arrays; returns the merged dict, the weight
+    and the trusted ranges. cd is blended in log space (positive, and the relative difference
+    of the two sources is what varies smoothly).
+    """
+    weight, ranges = xfoil_weight(xf)
+    out = {}
+    for key in ("cl", "cd", "cm"):
+        x = np.where(weight > 0.0, xf[key], 0.0)
+        if key == "cd":
+            lx = np.log(np.where(weight > 0.0, xf[key], 1.0))
+            out[key] = np.exp(weight * lx + (1.0 - weight) * np.log(nf[key]))
+        else:
+            out[key] = weight * x + (1.0 - weight) * nf[key]
+    full = weight == 1.0
+    ratio = xf["cd"][full] / nf["cd"][full]
+    print(
+        f"  {name}: XFOIL weight 1 at {full.sum()} of {weight.size} polar points, blend at "
+        f"{((weight > 0) & ~full).sum()}; cd XFOIL/NeuralFoil there: median "
+        f"{np.median(ratio):.3f}, range {ratio.min():.3f}..{ratio.max():.3f}"
+    )
+    return out, weight, ranges
+
+
 def stations(n):
     """Return ``n`` cosine-spaced chordwise stations x/c from 0 to 1."""
     beta = np.linspace(0.0, np.pi, n)
@@ -573,6 +673,26 @@ def make_one(name, args, nf_version, asb_version, stamp, display, out_dir):
     if spec["pressure"] and display is not None:
         results = run_xfoil(coords, args.jobs, name, display, args.xfoil_cache)
         data.update(pressure_tables(results, name))
+        xf = xfoil_polar_arrays(results)
+        merged, weight, ranges = merge_polars(dict(cl=cl, cd=cd, cm=cm), xf, name)
+        data.update(merged)
+        data.update(
+            polar_xfoil_weight=weight.astype(np.float32),
+            polar_xfoil_range_deg=ranges,
+            polar_xfoil_cl=xf["cl"].astype(np.float32),
+            polar_xfoil_cd=xf["cd"].astype(np.float32),
+            polar_xfoil_cm=xf["cm"].astype(np.float32),
+            polar_neuralfoil_cl=cl,
+            polar_neuralfoil_cd=cd,
+            polar_neuralfoil_cm=cm,
+        )
+        data["source"] = (
+            f"{xfoil_version()} (PANE {XFOIL_PANELS} nodes, viscous, n_crit={N_CRIT:g}, "
+            f"ITER {XFOIL_ITER}, Karman-Tsien, sweeps from 0 deg in {XFOIL_SUBSTEP} deg steps) "
+            f"in each slice's converged attached range at M <= {XFOIL_MACH_MAX:g} "
+            f"(polar_xfoil_weight = 1), smoothstep blend over {XFOIL_BLEND_DEG:g} deg at its "
+            f"ends (cd in log space); elsewhere (weight 0) " + data["source"]
+        )
         data["cp_source"] = (
             f"{xfoil_version()}, PANE {XFOIL_PANELS} nodes, viscous, "
             f"n_crit={N_CRIT:g}, ITER {XFOIL_ITER}, sweeps from 0 deg in "
