@@ -13,8 +13,8 @@ What each file holds (all angles in degrees in the files; the runtime converts t
   attached range at M <= XFOIL_MACH_MAX, NeuralFoil elsewhere, a C1 smoothstep blend over
   XFOIL_BLEND_DEG at the ends of the range; ``polar_xfoil_weight`` (n_a, n_r, n_m) is the weight
   of XFOIL at every point (1 XFOIL, 0 NeuralFoil), ``polar_xfoil_range_deg`` (n_r, n_m, 2) the
-  trusted range (NaN where none), ``polar_xfoil_cl``/``_cd``/``_cm`` the raw XFOIL polar (NaN
-  where not converged) and ``polar_neuralfoil_cl``/``_cd``/``_cm`` the NeuralFoil one.
+  trusted range (NaN where none), ``polar_xfoil_cl``/``_cd``/``_cm`` the XFOIL polar (NaN
+  where not converged; short gaps filled, marked in ``polar_xfoil_filled``) and ``polar_neuralfoil_cl``/``_cd``/``_cm`` the NeuralFoil one.
 - wing airfoils only (``ls413``, ``ls417``): the chordwise pressure coefficient from XFOIL 6.99
   (Debian package ``xfoil``), ``cp_alpha_deg`` (p_a), ``cp_reynolds`` (p_r), ``cp_mach`` (p_m),
   ``x`` (n_x stations, x/c from the leading edge, cosine spaced), ``y_upper``, ``y_lower`` (n_x,
@@ -376,6 +376,41 @@ def xfoil_polar_arrays(results):
 # C1 smoothstep 3t^2 - 2t^3, so the merged samples carry no jump.
 XFOIL_MACH_MAX = 0.5
 XFOIL_BLEND_DEG = 2.0
+# Isolated XFOIL failures inside a converged sweep (up to this many angles in a row, bounded by
+# converged angles on both sides) are filled by PCHIP in alpha through the slice's converged
+# points (marked in polar_xfoil_filled); a longer gap ends the trusted range.
+XFOIL_MAX_GAP = 2
+XFOIL_STALL_WINDOW_DEG = 3.0
+XFOIL_SLOPE_FRACTION = 0.5
+
+
+def fill_xfoil_gaps(xf):
+    """
+    Fill short non-converged gaps of the XFOIL polar (:data:`XFOIL_MAX_GAP`).
+
+    Returns the filled copy of ``xf`` and the boolean mask of the filled points.
+    """
+    from scipy.interpolate import PchipInterpolator
+
+    out = {k: v.copy() for k, v in xf.items()}
+    filled = np.zeros(xf["cd"].shape, dtype=bool)
+    for j in range(xf["cd"].shape[1]):
+        for k in range(xf["cd"].shape[2]):
+            ok = np.isfinite(xf["cd"][:, j, k]) & np.isfinite(xf["cl"][:, j, k])
+            good = np.flatnonzero(ok)
+            if good.size < 4:
+                continue
+            gap = np.zeros(ok.size, dtype=bool)
+            for i0, i1 in zip(good[:-1], good[1:]):
+                if 1 < i1 - i0 <= XFOIL_MAX_GAP + 1:
+                    gap[i0 + 1 : i1] = True
+            if not gap.any():
+                continue
+            for key in ("cl", "cd", "cm"):
+                f = PchipInterpolator(ALPHA_DEG[good], xf[key][good, j, k])
+                out[key][gap, j, k] = f(ALPHA_DEG[gap])
+            filled[:, j, k] = gap
+    return out, filled
 
 
 def _smoothstep(t):
@@ -387,9 +422,13 @@ def xfoil_trusted_range(alpha, cl, ok):
     """
     The attached-flow alpha range [a_lo, a_hi] in which one slice's XFOIL polar is trusted.
 
-    The run of consecutive converged angles that contains 0 deg, cut at XFOIL's own stall
-    points (the largest cl above 0 deg, the smallest cl below it) so that no post-stall XFOIL
-    value (a separated boundary layer, XFOIL's weak spot) enters the table. None if XFOIL did
+    The run of consecutive converged (or gap-filled, :func:`fill_xfoil_gaps`) angles that
+    contains 0 deg, cut at XFOIL's own stall
+    points so that no post-stall XFOIL value (a separated boundary layer, XFOIL's weak spot)
+    enters the table: the first angle above 0 deg whose cl is not exceeded within the next
+    XFOIL_STALL_WINDOW_DEG, and its mirror image below 0 deg (the rule the run time uses for
+    the table's stall points, components/aero/airfoil.py), or earlier where the lift slope
+    first falls below XFOIL_SLOPE_FRACTION of its value at 0 deg. None if XFOIL did
     not converge at 0 deg.
     """
     i0 = int(np.argmin(np.abs(alpha)))
@@ -401,9 +440,22 @@ def xfoil_trusted_range(alpha, cl, ok):
     lo = i0
     while lo - 1 >= 0 and ok[lo - 1]:
         lo -= 1
-    hi = i0 + int(np.argmax(cl[i0 : hi + 1]))
-    lo = lo + int(np.argmin(cl[lo : i0 + 1]))
-    return float(alpha[lo]), float(alpha[hi])
+    step = alpha[1] - alpha[0]
+    look = max(int(round(XFOIL_STALL_WINDOW_DEG / step)), 1)
+    up = next(
+        (i for i in range(i0, hi + 1) if cl[i] >= np.max(cl[i : min(i + look, hi) + 1])), hi
+    )
+    down = next(
+        (i for i in range(i0, lo - 1, -1) if cl[i] <= np.min(cl[max(i - look, lo) : i + 1])), lo
+    )
+    # ... and where the lift curve first flattens to XFOIL_SLOPE_FRACTION of its slope at 0 deg
+    # (the onset of separation; XFOIL's lift curve can wiggle there, and the runtime stall search
+    # and the alpha* inversion need a monotonic cl between the stall points).
+    slope = np.diff(cl) / step
+    limit = XFOIL_SLOPE_FRACTION * slope[i0 if i0 < slope.size else i0 - 1]
+    up = next((i for i in range(i0, up) if slope[i] < limit), up)
+    down = next((i for i in range(i0, down, -1) if slope[i - 1] < limit), down)
+    return float(alpha[down]), float(alpha[up])
 
 
 def xfoil_weight(xf):
@@ -439,10 +491,13 @@ def merge_polars(nf, xf, name):
     Merged cl, cd, cm: weight * XFOIL + (1 - weight) * NeuralFoil (see :func:`xfoil_weight`).
 
     ``nf`` and ``xf`` are dicts of (n_a, n_r, n_m) arrays; returns the merged dict, the weight
-    and the trusted ranges. cd is blended in log space (positive, and the relative difference
+    the trusted ranges, the mask of gap-filled XFOIL points and the gap-filled XFOIL polar.
+    cd is blended in log space (positive, and the relative difference
     of the two sources is what varies smoothly).
     """
+    xf, filled = fill_xfoil_gaps(xf)
     weight, ranges = xfoil_weight(xf)
+    filled &= weight > 0.0
     out = {}
     for key in ("cl", "cd", "cm"):
         x = np.where(weight > 0.0, xf[key], 0.0)
@@ -456,9 +511,10 @@ def merge_polars(nf, xf, name):
     print(
         f"  {name}: XFOIL weight 1 at {full.sum()} of {weight.size} polar points, blend at "
         f"{((weight > 0) & ~full).sum()}; cd XFOIL/NeuralFoil there: median "
-        f"{np.median(ratio):.3f}, range {ratio.min():.3f}..{ratio.max():.3f}"
+        f"{np.median(ratio):.3f}, range {ratio.min():.3f}..{ratio.max():.3f}; "
+        f"{filled.sum()} XFOIL points gap-filled"
     )
-    return out, weight, ranges
+    return out, weight, ranges, filled, xf
 
 
 def stations(n):
@@ -674,10 +730,11 @@ def make_one(name, args, nf_version, asb_version, stamp, display, out_dir):
         results = run_xfoil(coords, args.jobs, name, display, args.xfoil_cache)
         data.update(pressure_tables(results, name))
         xf = xfoil_polar_arrays(results)
-        merged, weight, ranges = merge_polars(dict(cl=cl, cd=cd, cm=cm), xf, name)
+        merged, weight, ranges, filled, xf = merge_polars(dict(cl=cl, cd=cd, cm=cm), xf, name)
         data.update(merged)
         data.update(
             polar_xfoil_weight=weight.astype(np.float32),
+            polar_xfoil_filled=filled,
             polar_xfoil_range_deg=ranges,
             polar_xfoil_cl=xf["cl"].astype(np.float32),
             polar_xfoil_cd=xf["cd"].astype(np.float32),

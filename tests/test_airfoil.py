@@ -52,11 +52,19 @@ def test_cambered_wing_airfoils_have_negative_zero_lift_angle(name):
 
 
 def test_mach_dependence_is_prandtl_glauert_in_attached_flow():
+    # NeuralFoil tables (NACA sections): Prandtl-Glauert by construction.
+    polar = get_polar("naca0012")
+    a = np.radians([2.0, 4.0])
+    cl0 = polar.evaluate(a, 3e6, 0.0).cl
+    cl5 = polar.evaluate(a, 3e6, 0.5).cl
+    np.testing.assert_allclose(cl5, cl0 / np.sqrt(1 - 0.25), rtol=1e-3)
+    # Wing sections: XFOIL's Karman-Tsien rule in attached flow (lpc_mdo/data/README.md), within
+    # 3 % of Prandtl-Glauert at M 0.5 (measured +2.0 % at 0 deg, +0.4 % at 4 deg).
     polar = get_polar("ls413")
     a = np.radians([0.0, 4.0])
     cl0 = polar.evaluate(a, 3e6, 0.0).cl
     cl5 = polar.evaluate(a, 3e6, 0.5).cl
-    np.testing.assert_allclose(cl5, cl0 / np.sqrt(1 - 0.25), rtol=1e-3)
+    np.testing.assert_allclose(cl5, cl0 / np.sqrt(1 - 0.25), rtol=0.03)
 
 
 # ----------------------------------------------------------------------------- smoothness
