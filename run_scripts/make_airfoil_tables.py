@@ -14,7 +14,8 @@ What each file holds (all angles in degrees in the files; the runtime converts t
   XFOIL_BLEND_DEG at the ends of the range; ``polar_xfoil_weight`` (n_a, n_r, n_m) is the weight
   of XFOIL at every point (1 XFOIL, 0 NeuralFoil), ``polar_xfoil_range_deg`` (n_r, n_m, 2) the
   trusted range (NaN where none), ``polar_xfoil_cl``/``_cd``/``_cm`` the XFOIL polar (NaN
-  where not converged; short gaps filled, marked in ``polar_xfoil_filled``) and ``polar_neuralfoil_cl``/``_cd``/``_cm`` the NeuralFoil one.
+  where not converged; short gaps filled, marked in ``polar_xfoil_filled``) and
+  ``polar_neuralfoil_cl``/``_cd``/``_cm`` the NeuralFoil one.
 - wing airfoils only (``ls413``, ``ls417``): the chordwise pressure coefficient from XFOIL 6.99
   (Debian package ``xfoil``), ``cp_alpha_deg`` (p_a), ``cp_reynolds`` (p_r), ``cp_mach`` (p_m),
   ``x`` (n_x stations, x/c from the leading edge, cosine spaced), ``y_upper``, ``y_lower`` (n_x,
@@ -401,7 +402,7 @@ def fill_xfoil_gaps(xf):
             if good.size < 4:
                 continue
             gap = np.zeros(ok.size, dtype=bool)
-            for i0, i1 in zip(good[:-1], good[1:]):
+            for i0, i1 in zip(good[:-1], good[1:], strict=True):
                 if 1 < i1 - i0 <= XFOIL_MAX_GAP + 1:
                     gap[i0 + 1 : i1] = True
             if not gap.any():
@@ -420,7 +421,7 @@ def _smoothstep(t):
 
 def xfoil_trusted_range(alpha, cl, ok):
     """
-    The attached-flow alpha range [a_lo, a_hi] in which one slice's XFOIL polar is trusted.
+    Return the attached-flow range [a_lo, a_hi] in which one slice's XFOIL polar is trusted.
 
     The run of consecutive converged (or gap-filled, :func:`fill_xfoil_gaps`) angles that
     contains 0 deg, cut at XFOIL's own stall
@@ -442,9 +443,7 @@ def xfoil_trusted_range(alpha, cl, ok):
         lo -= 1
     step = alpha[1] - alpha[0]
     look = max(int(round(XFOIL_STALL_WINDOW_DEG / step)), 1)
-    up = next(
-        (i for i in range(i0, hi + 1) if cl[i] >= np.max(cl[i : min(i + look, hi) + 1])), hi
-    )
+    up = next((i for i in range(i0, hi + 1) if cl[i] >= np.max(cl[i : min(i + look, hi) + 1])), hi)
     down = next(
         (i for i in range(i0, lo - 1, -1) if cl[i] <= np.min(cl[max(i - look, lo) : i + 1])), lo
     )
@@ -488,9 +487,9 @@ def xfoil_weight(xf):
 
 def merge_polars(nf, xf, name):
     """
-    Merged cl, cd, cm: weight * XFOIL + (1 - weight) * NeuralFoil (see :func:`xfoil_weight`).
+    Merge cl, cd, cm: weight * XFOIL + (1 - weight) * NeuralFoil (see :func:`xfoil_weight`).
 
-    ``nf`` and ``xf`` are dicts of (n_a, n_r, n_m) arrays; returns the merged dict, the weight
+    ``nf`` and ``xf`` are dicts of (n_a, n_r, n_m) arrays; returns the merged dict, the weight,
     the trusted ranges, the mask of gap-filled XFOIL points and the gap-filled XFOIL polar.
     cd is blended in log space (positive, and the relative difference
     of the two sources is what varies smoothly).

@@ -147,8 +147,11 @@ def test_blend_adds_no_kink_beyond_the_sources(name):
             d2x = np.abs(xfj[i + 1] - 2 * xfj[i] + xfj[i - 1])
             jump = np.abs(xfj[i] - nf[i, j, k])
             # smoothstep over 2 deg in 0.5 deg steps: |second difference of w| <= 6 (0.25)^2
-            bound = d2n + d2x + jump * 6 * 0.25**2 + 2 * 0.375 * np.abs(
-                np.diff(xfj - nf[:, j, k])[i - 1]
+            bound = (
+                d2n
+                + d2x
+                + jump * 6 * 0.25**2
+                + 2 * 0.375 * np.abs(np.diff(xfj - nf[:, j, k])[i - 1])
             )
             ratio_max = max(ratio_max, float(np.max(d2 / (bound + 1e-12))))
     assert ratio_max <= 1.5
