@@ -8,6 +8,14 @@ What each file holds (all angles in degrees in the files; the runtime converts t
   (n_a, n_r, n_m): the polar from NeuralFoil 0.3.3 (an XFOIL-trained network; incompressible)
   with the Prandtl-Glauert rule for Mach (cl and cm divided by sqrt(1 - M^2), cd unchanged);
   ``confidence`` is NeuralFoil's analysis confidence (0..1).
+- wing airfoils only (``ls413``, ``ls417``), when XFOIL runs: ``cl``, ``cd``, ``cm`` are the
+  XFOIL/NeuralFoil merge (:func:`merge_polars`): XFOIL 6.99 in each (Re, M) slice's converged
+  attached range at M <= XFOIL_MACH_MAX, NeuralFoil elsewhere, a C1 smoothstep blend over
+  XFOIL_BLEND_DEG at the ends of the range; ``polar_xfoil_weight`` (n_a, n_r, n_m) is the weight
+  of XFOIL at every point (1 XFOIL, 0 NeuralFoil), ``polar_xfoil_range_deg`` (n_r, n_m, 2) the
+  trusted range (NaN where none), ``polar_xfoil_cl``/``_cd``/``_cm`` the XFOIL polar (NaN
+  where not converged; short gaps filled, marked in ``polar_xfoil_filled``) and
+  ``polar_neuralfoil_cl``/``_cd``/``_cm`` the NeuralFoil one.
 - wing airfoils only (``ls413``, ``ls417``): the chordwise pressure coefficient from XFOIL 6.99
   (Debian package ``xfoil``), ``cp_alpha_deg`` (p_a), ``cp_reynolds`` (p_r), ``cp_mach`` (p_m),
   ``x`` (n_x stations, x/c from the leading edge, cosine spaced), ``y_upper``, ``y_lower`` (n_x,
@@ -361,6 +369,153 @@ def xfoil_polar_arrays(results):
     return out
 
 
+# ------------------------------------------------------------------------------ polar merge
+
+# XFOIL/NeuralFoil merge of the wing polars: XFOIL is used where it converged, in the attached
+# range of each (Re, M) slice and at M <= XFOIL_MACH_MAX, NeuralFoil elsewhere; the weight of
+# XFOIL falls from 1 to 0 over XFOIL_BLEND_DEG at each end of the trusted alpha range with the
+# C1 smoothstep 3t^2 - 2t^3, so the merged samples carry no jump.
+XFOIL_MACH_MAX = 0.5
+XFOIL_BLEND_DEG = 2.0
+# Isolated XFOIL failures inside a converged sweep (up to this many angles in a row, bounded by
+# converged angles on both sides) are filled by PCHIP in alpha through the slice's converged
+# points (marked in polar_xfoil_filled); a longer gap ends the trusted range.
+XFOIL_MAX_GAP = 2
+XFOIL_STALL_WINDOW_DEG = 3.0
+XFOIL_SLOPE_FRACTION = 0.5
+
+
+def fill_xfoil_gaps(xf):
+    """
+    Fill short non-converged gaps of the XFOIL polar (:data:`XFOIL_MAX_GAP`).
+
+    Returns the filled copy of ``xf`` and the boolean mask of the filled points.
+    """
+    from scipy.interpolate import PchipInterpolator
+
+    out = {k: v.copy() for k, v in xf.items()}
+    filled = np.zeros(xf["cd"].shape, dtype=bool)
+    for j in range(xf["cd"].shape[1]):
+        for k in range(xf["cd"].shape[2]):
+            ok = np.isfinite(xf["cd"][:, j, k]) & np.isfinite(xf["cl"][:, j, k])
+            good = np.flatnonzero(ok)
+            if good.size < 4:
+                continue
+            gap = np.zeros(ok.size, dtype=bool)
+            for i0, i1 in zip(good[:-1], good[1:], strict=True):
+                if 1 < i1 - i0 <= XFOIL_MAX_GAP + 1:
+                    gap[i0 + 1 : i1] = True
+            if not gap.any():
+                continue
+            for key in ("cl", "cd", "cm"):
+                f = PchipInterpolator(ALPHA_DEG[good], xf[key][good, j, k])
+                out[key][gap, j, k] = f(ALPHA_DEG[gap])
+            filled[:, j, k] = gap
+    return out, filled
+
+
+def _smoothstep(t):
+    t = np.clip(t, 0.0, 1.0)
+    return t * t * (3.0 - 2.0 * t)
+
+
+def xfoil_trusted_range(alpha, cl, ok):
+    """
+    Return the attached-flow range [a_lo, a_hi] in which one slice's XFOIL polar is trusted.
+
+    The run of consecutive converged (or gap-filled, :func:`fill_xfoil_gaps`) angles that
+    contains 0 deg, cut at XFOIL's own stall
+    points so that no post-stall XFOIL value (a separated boundary layer, XFOIL's weak spot)
+    enters the table: the first angle above 0 deg whose cl is not exceeded within the next
+    XFOIL_STALL_WINDOW_DEG, and its mirror image below 0 deg (the rule the run time uses for
+    the table's stall points, components/aero/airfoil.py), or earlier where the lift slope
+    first falls below XFOIL_SLOPE_FRACTION of its value at 0 deg. None if XFOIL did
+    not converge at 0 deg.
+    """
+    i0 = int(np.argmin(np.abs(alpha)))
+    if not ok[i0]:
+        return None
+    hi = i0
+    while hi + 1 < alpha.size and ok[hi + 1]:
+        hi += 1
+    lo = i0
+    while lo - 1 >= 0 and ok[lo - 1]:
+        lo -= 1
+    step = alpha[1] - alpha[0]
+    look = max(int(round(XFOIL_STALL_WINDOW_DEG / step)), 1)
+    up = next((i for i in range(i0, hi + 1) if cl[i] >= np.max(cl[i : min(i + look, hi) + 1])), hi)
+    down = next(
+        (i for i in range(i0, lo - 1, -1) if cl[i] <= np.min(cl[max(i - look, lo) : i + 1])), lo
+    )
+    # ... and where the lift curve first flattens to XFOIL_SLOPE_FRACTION of its slope at 0 deg
+    # (the onset of separation; XFOIL's lift curve can wiggle there, and the runtime stall search
+    # and the alpha* inversion need a monotonic cl between the stall points).
+    slope = np.diff(cl) / step
+    limit = XFOIL_SLOPE_FRACTION * slope[i0 if i0 < slope.size else i0 - 1]
+    up = next((i for i in range(i0, up) if slope[i] < limit), up)
+    down = next((i for i in range(i0, down, -1) if slope[i - 1] < limit), down)
+    return float(alpha[down]), float(alpha[up])
+
+
+def xfoil_weight(xf):
+    """
+    Weight of XFOIL (0..1) on ALPHA_DEG x REYNOLDS x MACH, and each slice's trusted range.
+
+    1 inside the trusted range (:func:`xfoil_trusted_range`) shrunk by XFOIL_BLEND_DEG at each
+    end, a smoothstep to 0 at the ends of that range, 0 outside it, at M > XFOIL_MACH_MAX and
+    where the slice did not converge at 0 deg.
+    """
+    shape = xf["cd"].shape
+    weight = np.zeros(shape)
+    ranges = np.full(shape[1:] + (2,), np.nan)
+    for j in range(shape[1]):
+        for k in range(shape[2]):
+            if MACH[k] > XFOIL_MACH_MAX + 1e-9:
+                continue
+            ok = np.isfinite(xf["cd"][:, j, k])
+            band = xfoil_trusted_range(ALPHA_DEG, xf["cl"][:, j, k], ok)
+            if band is None:
+                continue
+            a_lo, a_hi = band
+            ranges[j, k] = band
+            w = _smoothstep((ALPHA_DEG - a_lo) / XFOIL_BLEND_DEG) * _smoothstep(
+                (a_hi - ALPHA_DEG) / XFOIL_BLEND_DEG
+            )
+            weight[:, j, k] = np.where((ALPHA_DEG >= a_lo) & (ALPHA_DEG <= a_hi), w, 0.0)
+    return weight, ranges
+
+
+def merge_polars(nf, xf, name):
+    """
+    Merge cl, cd, cm: weight * XFOIL + (1 - weight) * NeuralFoil (see :func:`xfoil_weight`).
+
+    ``nf`` and ``xf`` are dicts of (n_a, n_r, n_m) arrays; returns the merged dict, the weight,
+    the trusted ranges, the mask of gap-filled XFOIL points and the gap-filled XFOIL polar.
+    cd is blended in log space (positive, and the relative difference
+    of the two sources is what varies smoothly).
+    """
+    xf, filled = fill_xfoil_gaps(xf)
+    weight, ranges = xfoil_weight(xf)
+    filled &= weight > 0.0
+    out = {}
+    for key in ("cl", "cd", "cm"):
+        x = np.where(weight > 0.0, xf[key], 0.0)
+        if key == "cd":
+            lx = np.log(np.where(weight > 0.0, xf[key], 1.0))
+            out[key] = np.exp(weight * lx + (1.0 - weight) * np.log(nf[key]))
+        else:
+            out[key] = weight * x + (1.0 - weight) * nf[key]
+    full = weight == 1.0
+    ratio = xf["cd"][full] / nf["cd"][full]
+    print(
+        f"  {name}: XFOIL weight 1 at {full.sum()} of {weight.size} polar points, blend at "
+        f"{((weight > 0) & ~full).sum()}; cd XFOIL/NeuralFoil there: median "
+        f"{np.median(ratio):.3f}, range {ratio.min():.3f}..{ratio.max():.3f}; "
+        f"{filled.sum()} XFOIL points gap-filled"
+    )
+    return out, weight, ranges, filled, xf
+
+
 def stations(n):
     """Return ``n`` cosine-spaced chordwise stations x/c from 0 to 1."""
     beta = np.linspace(0.0, np.pi, n)
@@ -573,6 +728,27 @@ def make_one(name, args, nf_version, asb_version, stamp, display, out_dir):
     if spec["pressure"] and display is not None:
         results = run_xfoil(coords, args.jobs, name, display, args.xfoil_cache)
         data.update(pressure_tables(results, name))
+        xf = xfoil_polar_arrays(results)
+        merged, weight, ranges, filled, xf = merge_polars(dict(cl=cl, cd=cd, cm=cm), xf, name)
+        data.update(merged)
+        data.update(
+            polar_xfoil_weight=weight.astype(np.float32),
+            polar_xfoil_filled=filled,
+            polar_xfoil_range_deg=ranges,
+            polar_xfoil_cl=xf["cl"].astype(np.float32),
+            polar_xfoil_cd=xf["cd"].astype(np.float32),
+            polar_xfoil_cm=xf["cm"].astype(np.float32),
+            polar_neuralfoil_cl=cl,
+            polar_neuralfoil_cd=cd,
+            polar_neuralfoil_cm=cm,
+        )
+        data["source"] = (
+            f"{xfoil_version()} (PANE {XFOIL_PANELS} nodes, viscous, n_crit={N_CRIT:g}, "
+            f"ITER {XFOIL_ITER}, Karman-Tsien, sweeps from 0 deg in {XFOIL_SUBSTEP} deg steps) "
+            f"in each slice's converged attached range at M <= {XFOIL_MACH_MAX:g} "
+            f"(polar_xfoil_weight = 1), smoothstep blend over {XFOIL_BLEND_DEG:g} deg at its "
+            f"ends (cd in log space); elsewhere (weight 0) " + data["source"]
+        )
         data["cp_source"] = (
             f"{xfoil_version()}, PANE {XFOIL_PANELS} nodes, viscous, "
             f"n_crit={N_CRIT:g}, ITER {XFOIL_ITER}, sweeps from 0 deg in "

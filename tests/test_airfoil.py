@@ -52,11 +52,19 @@ def test_cambered_wing_airfoils_have_negative_zero_lift_angle(name):
 
 
 def test_mach_dependence_is_prandtl_glauert_in_attached_flow():
+    # NeuralFoil tables (NACA sections): Prandtl-Glauert by construction.
+    polar = get_polar("naca0012")
+    a = np.radians([2.0, 4.0])
+    cl0 = polar.evaluate(a, 3e6, 0.0).cl
+    cl5 = polar.evaluate(a, 3e6, 0.5).cl
+    np.testing.assert_allclose(cl5, cl0 / np.sqrt(1 - 0.25), rtol=1e-3)
+    # Wing sections: XFOIL's Karman-Tsien rule in attached flow (lpc_mdo/data/README.md), within
+    # 3 % of Prandtl-Glauert at M 0.5 (measured +2.0 % at 0 deg, +0.4 % at 4 deg).
     polar = get_polar("ls413")
     a = np.radians([0.0, 4.0])
     cl0 = polar.evaluate(a, 3e6, 0.0).cl
     cl5 = polar.evaluate(a, 3e6, 0.5).cl
-    np.testing.assert_allclose(cl5, cl0 / np.sqrt(1 - 0.25), rtol=1e-3)
+    np.testing.assert_allclose(cl5, cl0 / np.sqrt(1 - 0.25), rtol=0.03)
 
 
 # ----------------------------------------------------------------------------- smoothness
@@ -320,7 +328,8 @@ def test_repeated_conditions_reuse_the_cached_re_mach_contraction():
                 (getattr(got, f"d{name}_dreynolds") * re, d_r[:, f] * re),
                 (getattr(got, f"d{name}_dmach"), d_m[:, f]),
             ):
-                np.testing.assert_allclose(value, ref, rtol=1e-12, atol=1e-13)
+                # round-off of two summation orders (1.1e-13 measured on a d/dalpha of 7)
+                np.testing.assert_allclose(value, ref, rtol=1e-12, atol=1e-12)
     assert len(polar._condition_caches) == 1
     complex_values = polar.evaluate(alpha0 + 0j, re + 0j, mach)
     np.testing.assert_allclose(
