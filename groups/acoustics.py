@@ -12,6 +12,7 @@ import openmdao.api as om
 
 from lpc_mdo.checks import check_integer
 from lpc_mdo.components.acoustics.a_weighting import AWeightingComp
+from lpc_mdo.components.acoustics.absorption import AtmosphericAbsorptionComp
 from lpc_mdo.components.acoustics.broadband import GillLeeBroadbandComp
 from lpc_mdo.components.acoustics.common import (
     blade_counts,
@@ -25,6 +26,7 @@ from lpc_mdo.components.acoustics.loads import (
     max_load_harmonics,
 )
 from lpc_mdo.components.acoustics.observer import ObserverGeometryComp, ObserverPositionComp
+from lpc_mdo.components.acoustics.propagation import SphericalPropagationComp
 from lpc_mdo.components.acoustics.thickness import BarryMagliozziThicknessComp
 from lpc_mdo.components.acoustics.tonal import LowsonLoadingNoiseComp, SearsGustLoadsComp
 from lpc_mdo.components.acoustics.total import TotalNoiseComp
@@ -129,6 +131,15 @@ class RotorNoiseGroup(om.Group):
     """
 
     def initialize(self):
+        self.options.declare(
+            "broadband_reference_distance",
+            default=100.0,
+            types=(int, float),
+            allow_none=True,
+            desc="Distance (m) at which the Gill-Lee spectrum is the source spectrum; it is "
+            "propagated to the observer by spherical spreading and ISO 9613-1 absorption. "
+            "None: the observer distance enters the Gill-Lee f8 term directly (old form).",
+        )
         opt = self.options
         opt.declare("num_rotors", default=1, types=int, lower=1, desc="Number of rotors")
         opt.declare(
@@ -317,10 +328,30 @@ class RotorNoiseGroup(om.Group):
                 num_bands=nb,
                 lowest_band_frequency=opt["lowest_band_frequency"],
                 edgewise_correction=opt["edgewise_broadband_correction"],
+                reference_distance=opt["broadband_reference_distance"],
                 **radial,
             ),
-            promotes=["*"],
+            promotes=["*"]
+            if opt["broadband_reference_distance"] is None
+            else [("broadband_spl", "broadband_source_spl"), "*"],
         )
+        if opt["broadband_reference_distance"] is not None:
+            self.add_subsystem(
+                "band_absorption",
+                AtmosphericAbsorptionComp(shape=(nb,), frequencies=self.band_frequencies),
+                promotes=[("absorption_coefficient", "band_absorption_coefficient"), "*"],
+            )
+            self.add_subsystem(
+                "broadband_propagation",
+                SphericalPropagationComp(
+                    num_rotors=nr,
+                    num_bands=nb,
+                    reference_distance=opt["broadband_reference_distance"],
+                    source_name="broadband_source_spl",
+                    output_name="broadband_spl",
+                ),
+                promotes=[("absorption_coefficient", "band_absorption_coefficient"), "*"],
+            )
         self.add_subsystem(
             "tonal_weighting",
             AWeightingComp(shape=(nr, nm), names=["loading_spl", "thickness_spl"]),

@@ -119,8 +119,15 @@ def test_rotor_noise_at_twice_the_distance():
     # - broadband (Gill-Lee) is an empirical spectrum in which S enters only through
     #   f8 = 4.97 C_T sin(theta) (1.5 (S/R) M_t - S/R + 15) (no spherical spreading): the band
     #   levels equal that formula (docs theory/acoustics 'Broadband noise', paper eq. 22)
-    #   evaluated here independently at both distances (1e-10).
-    out = lpc.rotor_noise(**_ROTOR, torque=803.4, observer_distance=[100.0, 200.0])
+    #   evaluated here independently at both distances (1e-10), in the public-code form
+    #   (broadband_reference_distance=None; the default propagation is tested in
+    #   tests/test_acoustics_propagation.py).
+    out = lpc.rotor_noise(
+        **_ROTOR,
+        torque=803.4,
+        observer_distance=[100.0, 200.0],
+        broadband_reference_distance=None,
+    )
     drop = out["loading_spl"][1] - out["loading_spl"][0]
     np.testing.assert_allclose(drop, -20.0 * np.log10(2.0), atol=1e-9)
     drop = out["thickness_spl"][1] - out["thickness_spl"][0]

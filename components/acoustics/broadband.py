@@ -83,6 +83,11 @@ class GillLeeBroadbandComp(om.ExplicitComponent):
 
     Options
     -------
+    reference_distance : float or None
+        If set, the spectrum is the source spectrum at this distance S_ref along the observer's
+        direction (S/R in f8 becomes S_ref/R; sin|theta_0| keeps the true direction) and the
+        caller propagates it to S (SphericalPropagationComp). None: S enters f8 directly (the
+        public-code form, whose level falls ~54 dB per decade in hover, not 20 dB).
     num_rotors : int
         Number of rotors.
     num_blades : int or sequence of int
@@ -127,10 +132,19 @@ class GillLeeBroadbandComp(om.ExplicitComponent):
             types=bool,
             desc="Add the Gill-Lee edgewise adjustment",
         )
+        self.options.declare(
+            "reference_distance",
+            default=None,
+            types=(int, float),
+            allow_none=True,
+            desc="Source distance S_ref of the spectrum (S/R = S_ref/R in f8), m; None: S",
+        )
         declare_radial_options(self.options)
 
     def setup(self):
         nr, nrad, nb = (self.options[k] for k in ("num_rotors", "num_radial", "num_bands"))
+        r_ref = self.options["reference_distance"]
+        self._r_ref = None if r_ref is None else float(r_ref)
         self._blades = blade_counts(self.options["num_blades"], nr).astype(float)
         _, self._w = radial_quadrature(
             nrad,
@@ -215,7 +229,7 @@ class GillLeeBroadbandComp(om.ExplicitComponent):
             "sigma": B * chord_sum / (np.pi * R),
             "csw": chord_sum,
             "sth": np.sqrt(z * z + _EPS_Z2) / S,
-            "sr": S / R,
+            "sr": (S if self._r_ref is None else self._r_ref) / R,
         }
         v["mt"] = v["vtip"] / a
         if not grad:
@@ -243,6 +257,8 @@ class GillLeeBroadbandComp(om.ExplicitComponent):
         sz = np.sqrt(z * z + _EPS_Z2)
         d["sth"] = {"axial_distance": z / (sz * S), "distance": -v["sth"] / S}
         d["sr"] = {"distance": one / R, "radius": -v["sr"] / R}
+        if self._r_ref is not None:
+            d["sr"]["distance"] = 0.0 * one
         return v, d
 
     def _parameters(self, v, dv):

@@ -1,0 +1,78 @@
+"""Propagation of a band spectrum from its reference distance: spherical spreading + absorption."""
+
+import numpy as np
+import openmdao.api as om
+
+_LN10 = np.log(10.0)
+
+
+class SphericalPropagationComp(om.ExplicitComponent):
+    """
+    Band levels at the observer from band levels defined at a reference distance r_ref.
+
+    L(f, S) = L_ref(f) - 20 log10(S/r_ref) - alpha(f) S (docs theory/acoustics 'Propagation'):
+    spherical spreading of a compact source (p ~ 1/S, e.g. Pierce, "Acoustics", 1989, sec. 4.1)
+    and the ISO 9613-1:1993 atmospheric absorption over the whole hub-observer path S (alpha in
+    dB/m from AtmosphericAbsorptionComp, taken at the band centre as ISO 9613-1 clause 8.2.1
+    allows).
+
+    Inputs
+    ------
+    source_spl : float, (num_rotors, num_bands), dB (units=None)
+        Band levels at r_ref (absorption not included).
+    distance : float, (num_rotors,), m
+        Hub-observer distance S (> 0).
+    absorption_coefficient : float, (num_bands,), dB/m (units=None)
+        Atmospheric attenuation coefficient per band.
+
+    Outputs
+    -------
+    spl : float, (num_rotors, num_bands), dB (units=None)
+        Band levels at the observer.
+
+    Options
+    -------
+    num_rotors, num_bands : int
+    reference_distance : float
+        r_ref, m (> 0).
+    source_name, output_name : str
+        Variable names of the source and observer spectra.
+    """
+
+    def initialize(self):
+        self.options.declare("num_rotors", default=1, types=int, lower=1)
+        self.options.declare("num_bands", default=38, types=int, lower=1)
+        self.options.declare("reference_distance", default=100.0, types=(int, float), lower=1e-6)
+        self.options.declare("source_name", default="source_spl", types=str)
+        self.options.declare("output_name", default="spl", types=str)
+
+    def setup(self):
+        nr, nb = self.options["num_rotors"], self.options["num_bands"]
+        src, out = self.options["source_name"], self.options["output_name"]
+        self.add_input(src, val=np.zeros((nr, nb)), units=None, desc="Band levels at r_ref, dB")
+        self.add_input("distance", val=np.full(nr, 100.0), units="m", desc="Hub-observer distance")
+        self.add_input(
+            "absorption_coefficient", val=np.zeros(nb), units=None, desc="Absorption, dB/m"
+        )
+        self.add_output(out, val=np.zeros((nr, nb)), units=None, desc="Band levels at observer, dB")
+        rows = np.arange(nr * nb)
+        self.declare_partials(out, src, rows=rows, cols=rows, val=1.0)
+        self.declare_partials(out, "distance", rows=rows, cols=rows // nb)
+        self.declare_partials(out, "absorption_coefficient", rows=rows, cols=rows % nb)
+
+    def compute(self, inputs, outputs):
+        S = inputs["distance"][:, None]
+        r_ref = float(self.options["reference_distance"])
+        outputs[self.options["output_name"]] = (
+            inputs[self.options["source_name"]]
+            - 20.0 * np.log10(S / r_ref)
+            - inputs["absorption_coefficient"][None, :] * S
+        )
+
+    def compute_partials(self, inputs, partials):
+        out = self.options["output_name"]
+        nb = self.options["num_bands"]
+        S = inputs["distance"][:, None]
+        alpha = inputs["absorption_coefficient"][None, :]
+        partials[out, "distance"] = (-20.0 / (S * _LN10) - alpha).ravel()
+        partials[out, "absorption_coefficient"] = np.repeat(-inputs["distance"], nb)
