@@ -612,6 +612,12 @@ def _analyze_summary(analysis, args):
     return "\n".join(lines)
 
 
+def _analyze_drag(analysis, args):
+    from lpc_mdo.analysis import format_drag_breakdown
+
+    return format_drag_breakdown(analysis.prob)
+
+
 #: The sections ``lpc-mdo analyze`` prints, in order: each takes (Analysis, args) and returns
 #: text. A new table is one more function here.
 ANALYZE_SECTIONS = (
@@ -619,6 +625,7 @@ ANALYZE_SECTIONS = (
     _analyze_masses,
     _analyze_conditions,
     _analyze_trim_variables,
+    _analyze_drag,
     _analyze_constraints,
     _analyze_summary,
 )
