@@ -32,7 +32,11 @@ in OEI), in transition ``roll_yaw_rpm`` (1, 2), ``pusher_rpm`` (1, 1), ``pitch``
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.components.aero.drag_buildup import DragBuildupComp, lpc_drag_components
+from lpc_mdo.components.aero.drag_buildup import (
+    LPC_LEAKAGE_PROTUBERANCE,
+    DragBuildupComp,
+    lpc_drag_components,
+)
 from lpc_mdo.components.aero.tail_efficiency import TailEfficiencyComp
 from lpc_mdo.components.aero.vlm_lattice import Lattice
 from lpc_mdo.components.aero.wing_zero_lift_moment import (
@@ -379,7 +383,9 @@ def _add_aerodynamics(
     }
     group.add_subsystem(
         "drag",
-        DragBuildupComp(components=components, num_nodes=1),
+        DragBuildupComp(
+            components=components, num_nodes=1, allowance_fraction=LPC_LEAKAGE_PROTUBERANCE
+        ),
         promotes_inputs=[
             (k, renames.get(k, f"drag_{k}"))
             for k in values
@@ -394,7 +400,12 @@ def _add_aerodynamics(
             "speed_of_sound",
             "angle_of_attack",
         ],
-        promotes_outputs=[("parasite_drag_force", "drag_force"), "parasite_drag", "CD0"],
+        promotes_outputs=[
+            ("parasite_drag_force", "drag_force"),
+            "parasite_drag",
+            "CD0",
+            "drag_breakdown",
+        ],
     )
     for name, value in values.items():
         if name not in renames and name not in ("wing_area", "fuselage_length"):

@@ -27,6 +27,7 @@ __all__ = [
     "Analysis",
     "analyze_vehicle",
     "format_static_margin_budget",
+    "format_drag_breakdown",
     "format_trim_variables",
     "static_margin_budget",
     "trim_tolerances",
@@ -243,4 +244,44 @@ def format_static_margin_budget(prob, condition="cruise"):
     model = prob.get_val(f"{condition}.static_margin")[0]
     lines = [f"    {name:<16s} {value:+.4f}" for name, value in budget.items()]
     lines.append(f"    {'(model)':<16s} {model:+.4f}")
+
+
+def format_drag_breakdown(prob, vehicle=None):
+    """Return a text table: C_D0 and D/q of each drag part in every wing-borne condition.
+
+    The parts are those of :func:`lpc_mdo.components.aero.drag_buildup.lpc_drag_components`
+    (then the lumped drag area and the leakage/protuberance allowance); conditions without a
+    ``drag_breakdown`` output (hover) are skipped.
+    """
+    from lpc_mdo.components.aero.drag_buildup import lpc_drag_components
+
+    vehicle = vehicle or prob.vehicle
+    comps, _ = lpc_drag_components(vehicle)
+    names = [c.name for c in comps] + ["lumped", "allowance"]
+    s_ref = float(prob.get_val("wing_area", units="m**2")[0])
+    rows = []
+    for name in prob.model.condition_names:
+        try:
+            breakdown = np.asarray(prob.get_val(f"{name}.drag_breakdown"))[0]
+        except KeyError:
+            continue
+        rows.append((name, breakdown))
+    if not rows:
+        return "  drag breakdown: no wing-borne condition"
+    header = f"  {'part':<20}" + "".join(f"{n[:12]:>13}" for n, _ in rows) + f"{'D/q [m^2]':>12}"
+    lines = [
+        f"  drag breakdown, C_D0 per part on S_ref = {s_ref:.2f} m^2 (D/q of the first column):",
+        header,
+    ]
+    for i, part in enumerate(names):
+        lines.append(
+            f"  {part:<20}"
+            + "".join(f"{b[i]:>13.5f}" for _, b in rows)
+            + f"{rows[0][1][i] * s_ref:>12.4f}"
+        )
+    lines.append(
+        f"  {'total C_D0':<20}"
+        + "".join(f"{b.sum():>13.5f}" for _, b in rows)
+        + f"{rows[0][1].sum() * s_ref:>12.4f}"
+    )
     return "\n".join(lines)

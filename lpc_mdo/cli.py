@@ -625,6 +625,12 @@ def _analyze_static_margin_budget(analysis, args):
     return f"  {title}:\n" + format_static_margin_budget(prob, cruise)
 
 
+def _analyze_drag(analysis, args):
+    from lpc_mdo.analysis import format_drag_breakdown
+
+    return format_drag_breakdown(analysis.prob)
+
+
 #: The sections ``lpc-mdo analyze`` prints, in order: each takes (Analysis, args) and returns
 #: text. A new table is one more function here.
 ANALYZE_SECTIONS = (
@@ -632,6 +638,7 @@ ANALYZE_SECTIONS = (
     _analyze_masses,
     _analyze_conditions,
     _analyze_trim_variables,
+    _analyze_drag,
     _analyze_constraints,
     _analyze_summary,
     _analyze_static_margin_budget,

@@ -6,13 +6,14 @@ import pytest
 from openmdao.utils.assert_utils import assert_check_partials, assert_near_equal
 
 from lpc_mdo.components.aero.drag_buildup import (
-    LPC_ROTOR_DRAG_AREA,
+    LPC_LEAKAGE_PROTUBERANCE,
     BluffDrag,
     BodyDrag,
     DragBuildupComp,
     FixedFormFactorDrag,
     LiftingSurfaceDrag,
     lpc_drag_components,
+    raymer_ga_tyre,
 )
 
 # Cruise (reference vehicle file): M 0.17 at 999.74 m, CADDEE atmosphere (docs theory/atmosphere):
@@ -29,6 +30,7 @@ CRUISE = {
 def make_problem(components=None, values=None, conditions=(CRUISE,), **options):
     if components is None:
         components, values = lpc_drag_components()
+        options.setdefault("allowance_fraction", LPC_LEAKAGE_PROTUBERANCE)
     prob = om.Problem(reports=False)
     prob.model.add_subsystem(
         "drag",
@@ -76,9 +78,9 @@ def test_lpc_buildup_against_hand_calculation():
     prob = make_problem()
     # Independent evaluation of docs theory/aerodynamics 'Drag build-up' with the math module:
     # Raymer wetted areas 2 S (1 + 0.2 t/c), Torenbeek fuselage pi D L (1 - 2/f)^(2/3) (1 + 1/f^2)
-    # with D = sqrt(H W), booms 8 pi d L_c (d = 0.3048 m, our assumption),
-    # the docs theory/aerodynamics 'Drag build-up' skin friction with the LPC laminar fractions
-    # (wing 0.7, others 0.1), Q = 1.1, rotors 0.111484 m^2.
+    # with D = sqrt(H W) (also for the 4 booms of 2 x 2.4384 m, d = 0.3048 m, Q 1.5), the
+    # docs theory/aerodynamics 'Drag build-up' skin friction with the LPC laminar fractions
+    # (wing 0.7, others 0.1), Q = 1.1; the bluff parts count C_D A.
     v, rho, mu, a = (CRUISE[k] for k in ("speed", "density", "dynamic_viscosity", "speed_of_sound"))
     mach = v / a
 
@@ -91,22 +93,50 @@ def test_lpc_buildup_against_hand_calculation():
     d_eq = math.sqrt(1.688 * 1.557)
     f_eq = 9.144 / d_eq
     swet_fus = math.pi * d_eq * 9.144 * (1 - 2 / f_eq) ** (2 / 3) * (1 + 1 / f_eq**2)
+    f_b = 4.8768 / 0.3048
+    swet_boom = 4 * math.pi * 0.3048 * 4.8768 * (1 - 2 / f_b) ** (2 / 3) * (1 + 1 / f_b**2)
+    # 16 blades, mean chord 0.2 m over 0.8 R = 1.2192 m, t/c 0.12; spinner cone r 0.274, l 0.548.
+    swet_blades = 16 * 2 * 1.024 * 0.2 * 1.2192
+    swet_spinner = math.pi * 0.274 * math.hypot(0.274, 0.548)
     swet = [
         2 * 19.6 * 1.026,
         2 * 3.7 * 1.03,
         2 * 2.54 * 1.03,
         swet_fus,
-        8 * math.pi * 0.3048 * 2.4384,
+        swet_boom,
+        swet_blades,
+        swet_spinner,
     ]
-    assert_near_equal(prob.get_val("wetted_areas"), swet, 1e-10)
-    ff = prob.get_val("form_factors")
-    lengths = [1.46012, 0.946904, 1.63433, 9.144, 2.4384]
-    lams = [0.7, 0.1, 0.1, 0.1, 0.1]
-    areas = [cf(L, p) * f * 1.1 * s for L, p, f, s in zip(lengths, lams, ff, swet, strict=True)]
-    assert_near_equal(prob.get_val("drag_areas")[0], areas, 1e-4)  # MAC rounding in `lengths`
+    friction = [0, 1, 2, 3, 4, 5, 8]
+    assert_near_equal(prob.get_val("wetted_areas")[friction], swet, 1e-10)
+    ff = prob.get_val("form_factors")[friction]
+    assert_near_equal(ff[4], 1 + 60 / f_b**3 + f_b / 400, 1e-12)
+    lengths = [1.46012, 0.946904, 1.63433, 9.144, 4.8768, 1.2192, 0.548]
+    lams = [0.7, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1]
+    qs = [1.1, 1.1, 1.1, 1.1, 1.5, 1.0, 1.0]
+    areas = [
+        cf(L, p) * f * qi * s for L, p, f, qi, s in zip(lengths, lams, ff, qs, swet, strict=True)
+    ]
+    assert_near_equal(prob.get_val("drag_areas")[0][friction], areas, 1e-4)  # MAC rounding
+    # Bluff parts: 8 hubs 0.63 x 0.3048 x 0.1524; 8 pylons 0.05 x 0.1524 x mean |dz| of the CAD
+    # hubs above the boom attach points; 2 + 1 wheels 0.25 D w (Raymer Table 11.1 tyres);
+    # 3 struts 0.30 x 0.5 x 0.0762.
+    dz = np.mean(np.abs([0.07773, 0.61722, 0.07346, 0.61539] * 2))
+    (dm, wm), (dn, wn) = raymer_ga_tyre(0.45 * 3723.99), raymer_ga_tyre(0.1 * 3723.99)
+    bluff = [
+        8 * 0.63 * 0.3048 * 0.1524,
+        8 * 0.05 * 0.1524 * dz,
+        2 * 0.25 * dm * wm,
+        0.25 * dn * wn,
+        3 * 0.30 * 0.5 * 0.0762,
+    ]
+    assert_near_equal(prob.get_val("drag_areas")[0][[6, 7, 9, 10, 11]], bluff, 1e-4)
     q = 0.5 * rho * v**2
-    total = sum(areas) + LPC_ROTOR_DRAG_AREA
+    total = (sum(areas) + sum(bluff)) * (1 + LPC_LEAKAGE_PROTUBERANCE)
     assert_near_equal(prob.get_val("CD0")[0], total / 19.6, 1e-4)
+    breakdown = prob.get_val("drag_breakdown")[0]
+    assert_near_equal(breakdown.sum(), prob.get_val("CD0")[0], 1e-12)
+    assert_near_equal(breakdown[-1], LPC_LEAKAGE_PROTUBERANCE * total / 1.05 / 19.6, 1e-4)
     assert_near_equal(prob.get_val("parasite_drag")[0], q * total, 1e-4)
     # Force along the relative wind (not the horizontal of quirk Q5).
     force = prob.get_val("parasite_drag_force")[0]
@@ -178,3 +208,39 @@ def test_bluff_part_adds_its_drag_area():
 def test_bluff_part_rejects_bad_coefficient():
     with pytest.raises(ValueError, match="drag_coefficient"):
         BluffDrag("gear", -0.1, 0.1)
+
+
+def test_raymer_tyre_sizing():
+    # Raymer, Aircraft Design 6th ed., Table 11.1 (general aviation): D = 1.51 W^0.349 in,
+    # width = 0.7150 W^0.312 in. W = 1000 lb: D = 1.51 * 11.14 = 16.83 in, w = 0.715 * 8.65
+    # = 6.18 in (hand arithmetic, 0.2 %).
+    d, w = raymer_ga_tyre(1000 * 0.45359237)
+    assert_near_equal([d / 0.0254, w / 0.0254], [16.83, 6.185], 2e-3)
+
+
+def test_stopped_rotor_hub_against_hoerner():
+    # Hoerner, Fluid-Dynamic Drag (1965) ch. 3: finite cylinder in cross flow, l/d = 1, C_D 0.63
+    # on l d. Hub 0.3048 x 0.1524 m: D/q = 0.63 * 0.04645 = 0.029265 m^2 per hub.
+    comps, values = lpc_drag_components()
+    hubs = next(c for c in comps if c.name == "lift_rotor_hubs")
+    assert_near_equal(hubs.drag_area / hubs.count, 0.029265, 1e-4)
+
+
+def test_lpc_zero_lift_drag_against_nasa():
+    # Published NASA LPC data (issue 16): a physics-based drag build-up of the complete vehicle
+    # gives CD0 ~ 0.040; the CFD-based model of Simmons, Buning and Murphy ("Full-Envelope
+    # Aero-Propulsive Model Identification for Lift+Cruise Aircraft Using Computational
+    # Experiments", AIAA 2021-3170; GUAM repository nasa/Generic-Urban-Air-Mobility-GUAM,
+    # vehicles/Lift+Cruise/AeroProp/Polynomial/.../LC_G_ab_CFM__Cp3FI_cv.m, glider model,
+    # 90 kt, no deflections) gives CD 0.0484 at alpha 0 (CL 0.229), a parabolic fit
+    # CD0 0.0417, max L/D 12.6 -- coarse grid, fully turbulent, booms and gear removed.
+    # Complete vehicle against the complete build-up: within 15 %.
+    prob = make_problem()
+    assert_near_equal(prob.get_val("CD0")[0], 0.040, 0.15)
+    # Like for like with the CFD (no booms, no gear): measured 0.029, 31 % under the CFD fit
+    # 0.0417; the difference is written down in docs theory/aerodynamics 'Drag build-up'
+    # (fully turbulent CFD vs 70 % laminar wing, lift-dependent profile drag missing here).
+    comps, values = lpc_drag_components(gear=False, booms=False)
+    clean = make_problem(comps, values)
+    cd0 = clean.get_val("CD0")[0]
+    assert 0.5 * 0.0417 < cd0 < 0.0417

@@ -22,13 +22,48 @@ __all__ = [
     "DragBuildupComp",
     "FixedFormFactorDrag",
     "LiftingSurfaceDrag",
+    "LPC_LEAKAGE_PROTUBERANCE",
     "lpc_drag_components",
     "max_thickness_sweep",
+    "raymer_ga_tyre",
 ]
-#: Rotor drag area of the public LPC model (docs theory/aerodynamics 'Drag build-up'), m**2.
-LPC_ROTOR_DRAG_AREA = 0.111484
-#: Boom diameter assumed for the LPC boom wetted area, m (not in the sources; 1 ft).
+#: Boom diameter, m: 1 ft (MCEVS/NASA OpenVSP LPC boom; not in the CAD table, an assumption).
 LPC_BOOM_DIAMETER = 0.3048
+#: Interference factor of the booms: Raymer, Aircraft Design, 6th ed., sec. 12.5.5, "nacelle or
+#: store mounted directly on the fuselage or wing", Q = 1.5.
+LPC_BOOM_INTERFERENCE = 1.5
+#: Blade thickness ratio for the blade wetted area 2 (1 + 0.2 t/c) c l (NACA 0012 rotor sections).
+LPC_BLADE_THICKNESS = 0.12
+#: Stopped lift-rotor hub: short cylinder, axis vertical, diameter = boom diameter and height
+#: half of it (assumptions: the sources give no hub size), C_D 0.63 on d h: Hoerner,
+#: Fluid-Dynamic Drag, 1965, ch. 3, finite circular cylinders in cross flow, l/d = 1 (the
+#: smallest tabulated ratio; 2-D subcritical value 1.2).
+LPC_HUB_DIAMETER, LPC_HUB_HEIGHT, LPC_HUB_CD = 0.3048, 0.1524, 0.63
+#: Lift-rotor pylon (motor mount between boom and hub): streamline strut, C_D 0.05 on frontal area
+#: (Raymer, 6th ed., Table 12.6, streamline strut 1/6 < t/c < 1/3); thickness 0.1524 m assumed,
+#: height = |z_hub - z_boom| from the CAD hub and boom attach points.
+LPC_PYLON_THICKNESS, LPC_PYLON_CD = 0.1524, 0.05
+#: Landing gear, fixed tricycle (assumed as on the NASA LPC OpenVSP model; GUAM lists a gear mass
+#: of 8.48 slug): tyres from Raymer, 6th ed., Table 11.1 (general aviation: D = 1.51 W^0.349,
+#: width = 0.7150 W^0.312, inches, W the load per wheel in lb; mains 90 % of the gross weight),
+#: C_D 0.25 on D x width ("regular wheel and tire", Raymer Table 12.6); three round struts
+#: (C_D 0.30, Raymer Table 12.6) 0.5 m long, 0.0762 m diameter (assumed).
+LPC_MAIN_GEAR_FRACTION = 0.9
+LPC_WHEEL_CD, LPC_STRUT_CD, LPC_STRUT_LENGTH, LPC_STRUT_DIAMETER = 0.25, 0.30, 0.5, 0.0762
+#: Leakage and protuberance allowance, fraction of the summed parasite drag areas (Raymer, 6th
+#: ed., sec. 12.5, leakage and protuberance drag estimated as a percentage of the parasite drag:
+#: 2-5 % for transports; the upper end is taken for the many joints of the LPC).
+LPC_LEAKAGE_PROTUBERANCE = 0.05
+
+
+def raymer_ga_tyre(load_kg):
+    """Tyre (diameter, width) in m of a general-aviation wheel carrying ``load_kg``.
+
+    Raymer, Aircraft Design, 6th ed., Table 11.1: D = 1.51 W^0.349, width = 0.7150 W^0.312,
+    inches, W in lb.
+    """
+    w_lb = load_kg / 0.45359237
+    return 1.51 * w_lb**0.349 * 0.0254, 0.7150 * w_lb**0.312 * 0.0254
 
 
 _SPEC_TYPES = PART_TYPES
@@ -123,6 +158,14 @@ class DragBuildupComp(om.ExplicitComponent):
             desc="multiplier of C_D0 and the parasite drag",
         )
         self.options.declare(
+            "allowance_fraction",
+            default=0.0,
+            types=float,
+            lower=0.0,
+            upper=1.0,
+            desc="leakage and protuberance allowance, fraction of the summed drag areas",
+        )
+        self.options.declare(
             "min_reynolds",
             default=1.0e3,
             types=float,
@@ -165,6 +208,12 @@ class DragBuildupComp(om.ExplicitComponent):
             units="m**2",
             desc="C_f FF Q S_wet per condition and component",
         )
+        self.add_output(
+            "drag_breakdown",
+            np.zeros((nn, nc + 2)),
+            units=None,
+            desc="C_D0 per part, then the lumped drag area and the allowance",
+        )
         self.add_output("CD0", np.zeros(nn), units=None, desc="parasite-drag coefficient")
         self.add_output("parasite_drag", np.zeros(nn), units="N", desc="parasite drag")
         self.add_output(
@@ -178,6 +227,19 @@ class DragBuildupComp(om.ExplicitComponent):
         nodewise = ("speed", "density", "dynamic_viscosity", "speed_of_sound")
         for out in ("skin_friction_coefficients", "drag_areas"):
             self.declare_partials(out, nodewise, rows=np.arange(nn * nc), cols=node_i)
+        nb = nc + 2
+        self.declare_partials(
+            "drag_breakdown", nodewise, rows=np.arange(nn * nb), cols=np.repeat(ar, nb)
+        )
+        self.declare_partials(
+            "drag_breakdown",
+            "lumped_drag_area",
+            rows=np.concatenate([ar * nb + nc, ar * nb + nc + 1]),
+            cols=np.zeros(2 * nn, int),
+        )
+        self.declare_partials(
+            "drag_breakdown", "reference_area", rows=np.arange(nn * nb), cols=np.zeros(nn * nb, int)
+        )
         for out in ("CD0", "parasite_drag"):
             self.declare_partials(out, nodewise, rows=ar, cols=ar)
             self.declare_partials(out, "lumped_drag_area", rows=ar, cols=np.zeros(nn, int))
@@ -205,6 +267,12 @@ class DragBuildupComp(om.ExplicitComponent):
                         "skin_friction_coefficients", name, rows=ar * nc + i, cols=np.zeros(nn, int)
                     )
                 self.declare_partials("drag_areas", name, rows=ar * nc + i, cols=np.zeros(nn, int))
+                self.declare_partials(
+                    "drag_breakdown",
+                    name,
+                    rows=np.concatenate([ar * nb + i, ar * nb + nc + 1]),
+                    cols=np.zeros(2 * nn, int),
+                )
                 self.declare_partials(
                     ["CD0", "parasite_drag"], name, rows=ar, cols=np.zeros(nn, int)
                 )
@@ -263,9 +331,20 @@ class DragBuildupComp(om.ExplicitComponent):
         q_int = np.array([s.interference_factor for s in comps])
         cf, *_ = self._friction(inputs, length)
         area = cf * (ff * q_int * swet)[None, :]
-        k = self.options["drag_factor"]
-        total = np.sum(area, axis=1) + inputs["lumped_drag_area"]
+        k0 = self.options["drag_factor"]
+        f_a = self.options["allowance_fraction"]
+        k = k0 * (1.0 + f_a)
+        lumped = inputs["lumped_drag_area"]
+        total = np.sum(area, axis=1) + lumped
         q = 0.5 * inputs["density"] * inputs["speed"] ** 2
+        s_ref = inputs["reference_area"]
+        outputs["drag_breakdown"] = (
+            k0
+            * np.concatenate(
+                [area, np.broadcast_to(lumped, (len(q), 1)), f_a * total[:, None]], axis=1
+            )
+            / s_ref
+        )
         outputs["wetted_areas"] = swet
         outputs["form_factors"] = ff
         outputs["skin_friction_coefficients"] = cf
@@ -286,7 +365,9 @@ class DragBuildupComp(om.ExplicitComponent):
 
     def compute_partials(self, inputs, partials):
         comps = self.options["components"]
-        k = self.options["drag_factor"]
+        k0 = self.options["drag_factor"]
+        f_a = self.options["allowance_fraction"]
+        k = k0 * (1.0 + f_a)
         swet, ff, length, derivs = self._evaluate(inputs)
         q_int = np.array([s.interference_factor for s in comps])
         cf, re_raw, dcf_dre, dcf_dm = self._friction(inputs, length)
@@ -319,6 +400,10 @@ class DragBuildupComp(om.ExplicitComponent):
             d_drag = k * (d_total * q + total * dq[name])
             partials["skin_friction_coefficients", name] = d.ravel()
             partials["drag_areas", name] = d_area.ravel()
+            d_breakdown = np.concatenate(
+                [d_area, np.zeros_like(d_total)[:, None], f_a * d_total[:, None]], axis=1
+            )
+            partials["drag_breakdown", name] = (k0 * d_breakdown / s_ref).ravel()
             partials["CD0", name] = k * d_total / s_ref
             partials["parasite_drag", name] = d_drag
             partials["parasite_drag_force", name] = (d_drag[:, None] * e_d).ravel()
@@ -329,6 +414,15 @@ class DragBuildupComp(om.ExplicitComponent):
         partials["parasite_drag", "lumped_drag_area"] = k * q
         partials["parasite_drag_force", "lumped_drag_area"] = (k * q[:, None] * e_d).ravel()
         partials["CD0", "reference_area"] = -k * total / s_ref**2
+        nn = len(q)
+        partials["drag_breakdown", "lumped_drag_area"] = (
+            np.concatenate([np.full(nn, k0), np.full(nn, k0 * f_a)]) / s_ref
+        )
+        breakdown = np.concatenate(
+            [area, np.broadcast_to(inputs["lumped_drag_area"], (nn, 1)), f_a * total[:, None]],
+            axis=1,
+        )
+        partials["drag_breakdown", "reference_area"] = (-k0 * breakdown / s_ref**2).ravel()
 
         # Geometry: d(C_f FF Q S_wet) with C_f depending on the length through Re.
         dcf_dl = dcf_dre * (rho * speed / mu)[:, None]  # (nn, nc)
@@ -348,6 +442,9 @@ class DragBuildupComp(om.ExplicitComponent):
                 if "length" in dep:
                     partials["skin_friction_coefficients", name] = d_cf
                 partials["drag_areas", name] = d_area
+                partials["drag_breakdown", name] = np.concatenate(
+                    [k0 * d_area / s_ref, k0 * f_a * d_area / s_ref]
+                )
                 partials["CD0", name] = k * d_area / s_ref
                 partials["parasite_drag", name] = k * d_area * q
                 partials["parasite_drag_force", name] = (k * (d_area * q)[:, None] * e_d).ravel()
@@ -366,22 +463,35 @@ def max_thickness_sweep(surface, mirrored=True):
     )
 
 
-def lpc_drag_components(vehicle=None, boom_diameter=LPC_BOOM_DIAMETER):
+def lpc_drag_components(vehicle=None, boom_diameter=LPC_BOOM_DIAMETER, gear=True, booms=True):
     """
     Return the drag-build-up components and input values of the LPC vehicle.
 
-    See docs theory/aerodynamics 'Drag build-up'. Components: wing, horizontal_tail, vertical_tail
-    (LiftingSurfaceDrag with the vehicle's t/c, (x/c)_m, laminar fraction and maximum-thickness
-    sweep), fuselage (BodyDrag) and booms (8 parts, FF 1.1, L_c 2.4384 m, wetted area pi d L_c with
-    the assumed diameter d, 1 ft by default; the sources give no boom size). The rotor hubs are the
-    lumped drag area 0.111484 m**2.
+    See docs theory/aerodynamics 'Drag build-up'. Parts:
+
+    - wing, horizontal_tail, vertical_tail: LiftingSurfaceDrag (vehicle t/c, (x/c)_m, laminar
+      fraction, maximum-thickness sweep);
+    - fuselage: BodyDrag;
+    - booms: 4 bodies (BodyDrag, count 4), each the two 8 ft "Rotor_i_Support" segments of a
+      boom line (length 2 L_c = 4.877 m), diameter ``boom_diameter``, Q = 1.5 (Raymer 12.5.5);
+    - lift_rotor_blades: the stopped blades aligned with the flow (parked fore and aft along the
+      booms): flow along the span, friction on 2 (1 + 0.2 t/c) c_mean (1 - r_hub/R) R per blade,
+      FF 1 (Hoerner, Fluid-Dynamic Drag, ch. 2: flat-plate friction; a section yawed 90 deg has
+      no pressure drag), Q 1, running length (1 - r_hub/R) R;
+    - lift_rotor_hubs, lift_rotor_pylons, landing gear wheels and struts: BluffDrag (constants
+      above);
+    - pusher_spinner: friction on a cone of base radius r_hub and length 2 r_hub (assumed), FF 1;
+    - allowance: leakage and protuberance, 5 % (``allowance_fraction`` of DragBuildupComp).
+
+    ``gear``/``booms`` False leave those parts out (like-for-like comparisons with NASA's CFD
+    model, which had no booms or gear).
 
     Returns
     -------
     components : tuple
         For the ``components`` option of :class:`DragBuildupComp`.
     values : dict
-        Input name -> value (SI) for the geometry, lumped drag area and reference area.
+        Input name -> value (SI) for the geometry and reference area.
     """
     from lpc_mdo.vehicle import reference_vehicle
 
@@ -407,11 +517,53 @@ def lpc_drag_components(vehicle=None, boom_diameter=LPC_BOOM_DIAMETER):
     values["fuselage_length"] = v.fuselage.length
     values["fuselage_max_height"] = v.fuselage.max_height
     values["fuselage_max_width"] = v.fuselage.max_width
+    if booms:
+        n_lines = len(v.booms.attach_points) // 2
+        comps.append(BodyDrag("booms", interference_factor=LPC_BOOM_INTERFERENCE, count=n_lines))
+        values["booms_length"] = 2.0 * v.booms.length
+        values["booms_max_height"] = boom_diameter
+        values["booms_max_width"] = boom_diameter
+
+    rotors = v.lift_rotors
+    blade_span = np.array([(1.0 - r.hub_radius_ratio) * r.radius for r in rotors])
+    # Mean chord of the cubic Bezier chord distribution = mean of its control points.
+    chord = np.array([np.mean(r.chord_cp) for r in rotors])
+    n_blades = np.array([r.num_blades for r in rotors])
+    n_total = int(np.sum(n_blades))
     comps.append(
-        FixedFormFactorDrag("booms", v.booms.form_factor, count=len(v.booms.attach_points))
+        FixedFormFactorDrag(
+            "lift_rotor_blades", 1.0, count=n_total, interference_factor=1.0, laminar_fraction=0.1
+        )
     )
-    values["booms_length"] = v.booms.length
-    values["booms_wetted_area"] = math.pi * boom_diameter * v.booms.length
-    values["lumped_drag_area"] = LPC_ROTOR_DRAG_AREA
+    values["lift_rotor_blades_length"] = float(np.sum(n_blades * blade_span) / n_total)
+    values["lift_rotor_blades_wetted_area"] = float(
+        2.0 * (1.0 + 0.2 * LPC_BLADE_THICKNESS) * np.sum(n_blades * chord * blade_span) / n_total
+    )
+    comps.append(
+        BluffDrag("lift_rotor_hubs", LPC_HUB_CD, LPC_HUB_DIAMETER * LPC_HUB_HEIGHT, len(rotors))
+    )
+    hub_z = np.array([r.hub_position[2] for r in rotors])
+    boom_z = np.array([p[2] for p in v.booms.attach_points])
+    pylon_height = float(np.mean(np.abs(hub_z - boom_z)))
+    comps.append(
+        BluffDrag(
+            "lift_rotor_pylons", LPC_PYLON_CD, LPC_PYLON_THICKNESS * pylon_height, len(rotors)
+        )
+    )
+    r_sp = v.pusher.hub_radius_ratio * v.pusher.radius
+    comps.append(
+        FixedFormFactorDrag("pusher_spinner", 1.0, interference_factor=1.0, laminar_fraction=0.1)
+    )
+    values["pusher_spinner_length"] = 2.0 * r_sp
+    values["pusher_spinner_wetted_area"] = math.pi * r_sp * math.sqrt(r_sp**2 + (2.0 * r_sp) ** 2)
+    if gear:
+        m = v.masses.target_gross_mass
+        d_main, w_main = raymer_ga_tyre(LPC_MAIN_GEAR_FRACTION * m / 2.0)
+        d_nose, w_nose = raymer_ga_tyre((1.0 - LPC_MAIN_GEAR_FRACTION) * m)
+        comps.append(BluffDrag("main_wheels", LPC_WHEEL_CD, d_main * w_main, 2))
+        comps.append(BluffDrag("nose_wheel", LPC_WHEEL_CD, d_nose * w_nose, 1))
+        comps.append(
+            BluffDrag("gear_struts", LPC_STRUT_CD, LPC_STRUT_LENGTH * LPC_STRUT_DIAMETER, 3)
+        )
     values["reference_area"] = v.wing.area
     return tuple(comps), values
