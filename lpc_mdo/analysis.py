@@ -244,6 +244,7 @@ def format_static_margin_budget(prob, condition="cruise"):
     model = prob.get_val(f"{condition}.static_margin")[0]
     lines = [f"    {name:<16s} {value:+.4f}" for name, value in budget.items()]
     lines.append(f"    {'(model)':<16s} {model:+.4f}")
+    return "\n".join(lines)
 
 
 def format_drag_breakdown(prob, vehicle=None):
