@@ -5,14 +5,17 @@ import functools
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.components.geometry.cranked_planform import CrankedPlanformComp, SectionLayout
 from lpc_mdo.components.geometry.planform import PlanformMeshComp
 from lpc_mdo.components.geometry.rotor_layout import RotorLayoutComp
+from lpc_mdo.components.geometry.section_mesh import SectionMeshComp
 from lpc_mdo.components.geometry.surface_sizing import SurfaceSizingComp
 from lpc_mdo.components.geometry.tail_position import TailPositionComp
 from lpc_mdo.components.motor.parameters import MotorParameters
 from lpc_mdo.components.motor.sizing import MotorSizingComp
 from lpc_mdo.components.structures.beam import BeamMassComp
 from lpc_mdo.components.structures.box_section import BoxSectionComp
+from lpc_mdo.components.structures.section_wing_box_geometry import SectionWingBoxGeometryComp
 from lpc_mdo.components.structures.wing_box_geometry import (
     WingBoxGeometryComp,
     wing_box_section,
@@ -140,6 +143,53 @@ class VehicleGroup(om.Group):
             desc="span-wise VLM panels of the horizontal tail (even; code 8)",
         )
 
+    def _add_section_wing(self, vehicle):
+        """
+        Add the planform and VLM mesh of a wing of span-wise sections (``planform = "sections"``).
+
+        One planform (:class:`CrankedPlanformComp`, docs theory/geometry 'Cranked wing
+        planform') gives span, root and tip chord, the MAC (drag build-up, static margin) and
+        its leading edge (``wing_mac_leading_edge``), and the section leading edges and chords
+        that the VLM mesh (:class:`SectionMeshComp`) and the wing box
+        (:class:`SectionWingBoxGeometryComp`) read.
+        """
+        wing = vehicle.wing
+        self._layout = SectionLayout.from_wing(wing)
+        self.add_subsystem(
+            "wing_planform",
+            CrankedPlanformComp(layout=self._layout),
+            promotes_inputs=[
+                ("area", "wing_area"),
+                ("aspect_ratio", "wing_aspect_ratio"),
+                ("root_leading_edge", "wing_root_leading_edge"),
+            ],
+            promotes_outputs=[
+                ("span", "wing_span"),
+                ("root_chord", "wing_root_chord"),
+                ("tip_chord", "wing_tip_chord"),
+                ("mean_aerodynamic_chord", "wing_mac"),
+                ("mac_leading_edge", "wing_mac_leading_edge"),
+                ("section_leading_edges", "wing_section_leading_edges"),
+                ("section_chords", "wing_section_chords"),
+            ],
+        )
+        self.add_subsystem(
+            "wing_mesh",
+            SectionMeshComp(
+                layout=self._layout,
+                num_chord_panels=1,
+                num_span_panels=self.options["wing_panels"],
+                spacing="cosine",
+            ),
+            promotes_inputs=[
+                ("section_leading_edges", "wing_section_leading_edges"),
+                ("section_chords", "wing_section_chords"),
+                ("incidence", "wing_incidence"),
+            ],
+            promotes_outputs=[("mesh", "wing_mesh")],
+        )
+        self.set_input_defaults("wing_incidence", wing.incidence, units="rad")
+
     def setup(self):
         vehicle = self.options["vehicle"] or reference_vehicle()
         other, other_cg = self.options["other_mass"], self.options["other_cg"]
@@ -148,17 +198,21 @@ class VehicleGroup(om.Group):
             other_cg = calibrated_cg if other_cg is None else other_cg
         wing, tail = vehicle.wing, vehicle.horizontal_tail
 
-        self.add_subsystem(
-            "wing_sizing",
-            SurfaceSizingComp(taper_ratio=wing.taper_ratio),
-            promotes_inputs=[("area", "wing_area"), ("aspect_ratio", "wing_aspect_ratio")],
-            promotes_outputs=[
-                ("span", "wing_span"),
-                ("root_chord", "wing_root_chord"),
-                ("tip_chord", "wing_tip_chord"),
-                ("mean_aerodynamic_chord", "wing_mac"),
-            ],
-        )
+        sections = wing.planform == "sections"
+        if sections:
+            self._add_section_wing(vehicle)
+        else:
+            self.add_subsystem(
+                "wing_sizing",
+                SurfaceSizingComp(taper_ratio=wing.taper_ratio),
+                promotes_inputs=[("area", "wing_area"), ("aspect_ratio", "wing_aspect_ratio")],
+                promotes_outputs=[
+                    ("span", "wing_span"),
+                    ("root_chord", "wing_root_chord"),
+                    ("tip_chord", "wing_tip_chord"),
+                    ("mean_aerodynamic_chord", "wing_mac"),
+                ],
+            )
         self.add_subsystem(
             "htail_sizing",
             SurfaceSizingComp(taper_ratio=tail.taper_ratio),
@@ -171,10 +225,10 @@ class VehicleGroup(om.Group):
             ],
         )
         self.add_subsystem("tail_position", TailPositionComp(vehicle=vehicle), promotes=["*"])
-        for name, prefix, surface, panels in (
-            ("wing", "wing", wing, self.options["wing_panels"]),
-            ("horizontal_tail", "htail", tail, self.options["tail_panels"]),
-        ):
+        meshes = [("horizontal_tail", "htail", tail, self.options["tail_panels"])]
+        if not sections:  # the section wing has its own mesh (_add_section_wing)
+            meshes.insert(0, ("wing", "wing", wing, self.options["wing_panels"]))
+        for name, prefix, surface, panels in meshes:
             self.add_subsystem(
                 f"{prefix}_mesh",
                 PlanformMeshComp(num_chord_panels=1, num_span_panels=panels, spacing="cosine"),
@@ -200,28 +254,49 @@ class VehicleGroup(om.Group):
         self.add_subsystem("rotor_layout", RotorLayoutComp(vehicle=vehicle), promotes=["*"])
 
         nodes = vehicle.wing_box.num_bays + 1
-        # The wing box shares the VLM mesh's sweep, dihedral, incidence and root leading edge
-        # (promoted inputs, defaults set above); the taper ratio is an option of the planform
-        # sizing, so the box's own input keeps the vehicle's value (its default from ``wing``).
-        self.add_subsystem(
-            "wing_box",
-            WingBoxGeometryComp(num_nodes=nodes, section=wing_box_section(vehicle), wing=wing),
-            promotes_inputs=[
-                "wing_area",
-                "wing_aspect_ratio",
-                "wing_sweep",
-                "wing_dihedral",
-                "wing_incidence",
-                "wing_root_leading_edge",
-            ],
-            promotes_outputs=[
-                ("nodes", "wing_box_nodes"),
-                "box_width",
-                "box_height",
-                "top_skin_radius",
-                "bottom_skin_radius",
-            ],
-        )
+        if sections:
+            self.add_subsystem(
+                "wing_box",
+                SectionWingBoxGeometryComp(
+                    layout=self._layout, num_nodes=nodes, section=wing_box_section(vehicle)
+                ),
+                promotes_inputs=[
+                    ("section_leading_edges", "wing_section_leading_edges"),
+                    ("section_chords", "wing_section_chords"),
+                    "wing_incidence",
+                ],
+                promotes_outputs=[
+                    ("nodes", "wing_box_nodes"),
+                    "box_width",
+                    "box_height",
+                    "top_skin_radius",
+                    "bottom_skin_radius",
+                ],
+            )
+        else:
+            # The wing box shares the VLM mesh's sweep, dihedral, incidence and root leading
+            # edge (promoted inputs, defaults set above); the taper ratio is an option of the
+            # planform sizing, so the box's own input keeps the vehicle's value (its default
+            # from ``wing``).
+            self.add_subsystem(
+                "wing_box",
+                WingBoxGeometryComp(num_nodes=nodes, section=wing_box_section(vehicle), wing=wing),
+                promotes_inputs=[
+                    "wing_area",
+                    "wing_aspect_ratio",
+                    "wing_sweep",
+                    "wing_dihedral",
+                    "wing_incidence",
+                    "wing_root_leading_edge",
+                ],
+                promotes_outputs=[
+                    ("nodes", "wing_box_nodes"),
+                    "box_width",
+                    "box_height",
+                    "top_skin_radius",
+                    "bottom_skin_radius",
+                ],
+            )
         self.add_subsystem("box_section", BoxSectionComp(num_elements=nodes - 1), promotes=["*"])
         self.add_subsystem(
             "box_mass",

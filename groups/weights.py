@@ -145,11 +145,24 @@ def wing_cg_estimate(vehicle=None):
 
     Trapezoidal half wing: spanwise centroid y_c = (b/6)(1 + 2 lambda)/(1 + lambda), chord there =
     the mean aerodynamic chord; x = x_LE,root - y_c tan(sweep_LE) - beam_axis * MAC,
-    z = z_LE,root - y_c tan(dihedral), y = 0. Used only as the default of the ``wing_cg`` input
+    z = z_LE,root - y_c tan(dihedral), y = 0. Sections (``planform = "sections"``): the leading
+    edge of the MAC of the section planform minus beam_axis * MAC. Used only as the default of the
+    ``wing_cg`` input
     until the beam model provides its mass centre.
     """
     vehicle = _vehicle(vehicle)
     wing = vehicle.wing
+    if getattr(wing, "planform", "trapezoid") == "sections":
+        # The same point of the section planform: the MAC's leading edge (its chord-weighted
+        # mean, docs theory/geometry 'Cranked wing planform') minus beam_axis * MAC, y = 0.
+        from lpc_mdo.components.geometry.cranked_planform import SectionLayout
+
+        geometry = SectionLayout.from_wing(wing).geometry(
+            wing.area, wing.aspect_ratio, np.array(wing.root_leading_edge)
+        )
+        x_le, _, z_le = geometry["mac_leading_edge"]
+        x_beam = vehicle.wing_box.beam_axis * geometry["mean_aerodynamic_chord"]
+        return np.array([x_le - x_beam, 0.0, z_le])
     lam = wing.taper_ratio
     y_c = wing.span / 6.0 * (1.0 + 2.0 * lam) / (1.0 + lam)
     x_le, _, z_le = wing.root_leading_edge

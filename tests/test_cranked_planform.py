@@ -161,7 +161,7 @@ def _sections_dict():
     data = read_vehicle_file()
     wing = data["wing"]
     wing["planform"] = "sections"
-    del wing["taper_ratio"]
+    wing.pop("taper_ratio", None)
     wing["sections"] = [
         {
             "span": float(s * FT),

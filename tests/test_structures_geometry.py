@@ -18,12 +18,20 @@ from lpc_mdo.vehicle import reference_vehicle
 
 # Selig coordinate files shipped with the tests (UIUC database; see data/airfoils/README.md).
 AIRFOILS = pathlib.Path(__file__).parent / "data" / "airfoils"
+# The trapezoidal planform this component builds: the reference wing's area, aspect ratio,
+# angles and root leading edge with the CADDEE taper ratio 0.2 (docs theory/geometry 'Reference
+# vehicle'; the reference vehicle itself now has the cranked NASA wing, planform = "sections").
+TRAPEZOID_WING = dataclasses.replace(
+    reference_vehicle().wing, planform="trapezoid", sections=None, taper_ratio=0.2
+)
 
 
 def _run(section=WING_BOX_SECTIONS["ls413"], num_nodes=9, **values):
     prob = om.Problem(reports=False)
     prob.model.add_subsystem(
-        "geometry", WingBoxGeometryComp(num_nodes=num_nodes, section=section), promotes=["*"]
+        "geometry",
+        WingBoxGeometryComp(num_nodes=num_nodes, section=section, wing=TRAPEZOID_WING),
+        promotes=["*"],
     )
     prob.setup(force_alloc_complex=True)
     for name, val in values.items():
