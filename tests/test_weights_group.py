@@ -1,3 +1,5 @@
+import dataclasses
+
 import numpy as np
 import openmdao.api as om
 import pytest
@@ -193,5 +195,18 @@ def test_wing_cg_estimate():
     # y_c = (b/6)(1.4/1.2) = 2.99692 m, MAC = 1.46007 m ->
     # x = -1.95925 - 2.99692 tan 7.81 deg - 0.5 x 1.46007 = -3.10035 m,
     # z = -1.07290 - 2.99692 tan(-2 deg) = -0.96825 m (5-digit hand arithmetic, 2e-5 m).
-    cg = wing_cg_estimate()
+    vehicle = reference_vehicle()
+    trapezoid = dataclasses.replace(
+        vehicle,
+        wing=dataclasses.replace(
+            vehicle.wing, planform="trapezoid", sections=None, taper_ratio=0.2
+        ),
+    )
+    cg = wing_cg_estimate(trapezoid)
     assert np.all(np.abs(cg - [-3.10035, 0.0, -0.96825]) < 2e-5)
+    # The reference wing (NASA OpenVSP sections): MAC leading edge (-2.19326, 3.38546, -0.95468)
+    # m and MAC 1.33328 m (docs theory/geometry 'Cranked wing planform', recomputed by
+    # tests/test_cranked_wing_vehicle.py from a hand integration) -> x = -2.19326 - 0.5 x 1.33328
+    # = -2.85990 m, z = -0.95468 m (2e-5 m).
+    cg = wing_cg_estimate()
+    assert np.all(np.abs(cg - [-2.85990, 0.0, -0.95468]) < 2e-5)
