@@ -149,7 +149,7 @@ def _scratch_dir():
 _INHERITED_OPTIONS = ("rotor_polar", "wing_zero_lift_angle", "ks_rho", "structural_coupling")
 
 
-def trim(prob, conditions=None, tol=1e-10, max_iter=30, separate=True, report=None, label="trim"):
+def trim(prob, conditions=None, tol=1e-10, max_iter=100, separate=True, report=None, label="trim"):
     """
     Trim conditions of a set-up LPC problem by their trim variables (module docstring).
 
