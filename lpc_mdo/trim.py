@@ -363,11 +363,15 @@ def _solve_block(prob, dv_meta, cons, variables, tol, max_iter):
         initial = residual(x0)  # least_squares starts here: the model run is reused
         sol, method = solve("dogbox"), "dogbox"
         if x0.size and np.max(np.abs(sol.fun)) >= 1e-6:
-            second = solve("trf")
-            spent = (sol.njev or 0) + (second.njev or 0)
-            if np.max(np.abs(second.fun)) < np.max(np.abs(sol.fun)):
-                sol, method = second, "trf"
-            sol.njev = spent
+            try:
+                second = solve("trf")
+            except ValueError:  # scipy refuses the fallback (e.g. a non-finite residual)
+                second = None  # keep dogbox's result, which the caller reports as not trimmed
+            if second is not None:
+                spent = (sol.njev or 0) + (second.njev or 0)
+                if np.max(np.abs(second.fun)) < np.max(np.abs(sol.fun)):
+                    sol, method = second, "trf"
+                sol.njev = spent
     except om.AnalysisError as err:
         raise om.AnalysisError(f"trim: the model failed during the trim solve: {err}") from err
     return sol, residual(sol.x), initial, method

@@ -41,7 +41,7 @@ LPC_BLADE_THICKNESS = 0.12
 LPC_HUB_DIAMETER, LPC_HUB_HEIGHT, LPC_HUB_CD = 0.3048, 0.1524, 0.63
 #: Lift-rotor pylon (motor mount between boom and hub): streamline strut, C_D 0.05 on frontal area
 #: (Raymer, 6th ed., Table 12.6, streamline strut 1/6 < t/c < 1/3); thickness 0.1524 m assumed,
-#: height = |z_hub - z_boom| from the CAD hub and boom attach points.
+#: height = the absolute difference of z_hub and z_boom from the CAD hub and boom attach points.
 LPC_PYLON_THICKNESS, LPC_PYLON_CD = 0.1524, 0.05
 #: Landing gear, fixed tricycle (assumed as on the NASA LPC OpenVSP model; GUAM lists a gear mass
 #: of 8.48 slug): tyres from Raymer, 6th ed., Table 11.1 (general aviation: D = 1.51 W^0.349,
