@@ -318,8 +318,18 @@ def _solve_block(prob, dv_meta, cons, variables, tol, max_iter):
         prob.run_model()
         state["x"] = np.array(x)
 
-    def residual(x):
-        set_x(x)
+    def residual(x, strict=False):
+        # A trial point at which the model fails (e.g. a motor stalls at a rotor speed near
+        # zero) is answered with infinite residuals: scipy's dogbox and trust-region-reflective
+        # methods then reject the step and shrink the trust region, as the optimizers back off
+        # from a failed evaluation. The start and the returned solution must evaluate (strict).
+        try:
+            set_x(x)
+        except om.AnalysisError:
+            state["x"] = None
+            if strict:
+                raise
+            return np.full(sum(m["size"] for m in cons.values()), np.inf)
         parts = []
         for name in cons:
             value = np.asarray(prob.get_val(sources[name]), dtype=float).ravel()
@@ -360,7 +370,7 @@ def _solve_block(prob, dv_meta, cons, variables, tol, max_iter):
         )
 
     try:
-        initial = residual(x0)  # least_squares starts here: the model run is reused
+        initial = residual(x0, strict=True)  # least_squares starts here: the run is reused
         sol, method = solve("dogbox"), "dogbox"
         if x0.size and np.max(np.abs(sol.fun)) >= 1e-6:
             try:
@@ -372,6 +382,7 @@ def _solve_block(prob, dv_meta, cons, variables, tol, max_iter):
                 if np.max(np.abs(second.fun)) < np.max(np.abs(sol.fun)):
                     sol, method = second, "trf"
                 sol.njev = spent
+        final = residual(sol.x, strict=True)
     except om.AnalysisError as err:
         raise om.AnalysisError(f"trim: the model failed during the trim solve: {err}") from err
-    return sol, residual(sol.x), initial, method
+    return sol, final, initial, method

@@ -69,10 +69,16 @@ def test_analyze_names_a_condition_that_cannot_trim(tmp_path, capsys):
     )
     assert main(["analyze", "--vehicle", str(path), "--output-dir", str(tmp_path / "out")]) == 1
     captured = capsys.readouterr()
-    assert re.search(r"trim FAILED for cruise \(residual [\d.e-]+\)", captured.out)
+    # The slower pusher also changes the pusher motor's size and so the vehicle's mass: other
+    # conditions may then need more than the trim's evaluation budget (transition_2 did, residual
+    # 1.9e-3, measured 2026-12-04); each failed condition is named, cruise among them.
+    assert re.search(
+        r"trim FAILED for (\w+ \(residual [\d.e-]+\), )*cruise \(residual [\d.e-]+\)",
+        captured.out,
+    )
     assert re.search(r"cruise .*NOT TRIMMED", captured.out)
     assert "climb" not in captured.out.split("trim FAILED for")[1].split("\n")[0]
-    assert "lpc-mdo: trim failed for cruise (exit status 1)" in captured.err
+    assert re.search(r"lpc-mdo: trim failed for ([\w, ]+, )?cruise \(exit status 1\)", captured.err)
     assert (tmp_path / "out" / "constraints.md").exists()  # written all the same
 
 

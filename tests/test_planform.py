@@ -1,3 +1,4 @@
+import dataclasses
 import math
 
 import numpy as np
@@ -26,7 +27,12 @@ def make_problem(num_span_panels=6, num_chord_panels=2, spacing="cosine", values
 
 
 def test_lpc_wing_mesh_against_vehicle_geometry():
-    wing = reference_vehicle().wing
+    # PlanformMeshComp builds one trapezoid: the reference wing's area, aspect ratio, sweep,
+    # dihedral and incidence with the taper-0.2 trapezoid of the vehicle file's "trapezoid"
+    # planform (the cranked reference wing is meshed by SectionMeshComp, tests of its own).
+    wing = dataclasses.replace(
+        reference_vehicle().wing, planform="trapezoid", sections=None, taper_ratio=0.2
+    )
     prob = make_problem(26, 1, values=planform_values(wing))
     mesh = prob.get_val("mesh")
     assert mesh.shape == (2, 27, 3)

@@ -1,10 +1,11 @@
 """Trim of design conditions by their trim variables (lpc_mdo.trim)."""
 
 import numpy as np
+import openmdao.api as om
 import pytest
 
 from lpc_mdo.problems import build_analysis_problem
-from lpc_mdo.trim import trim
+from lpc_mdo.trim import _solve_block, trim
 
 
 def test_hover_trims_to_weight_with_equal_rotor_speeds():
@@ -78,3 +79,38 @@ def test_trim_reports_each_condition():
     for record in result.conditions.values():
         assert record.max_residual < 1e-6 < record.initial_residual
         assert record.iterations > 0 and record.method == "dogbox"
+
+
+class _FailsBelowOne(om.ExplicitComponent):
+    """residual = ln(x/2); the model fails (AnalysisError) for x < 1, as a motor stalls."""
+
+    def setup(self):
+        self.add_input("x", 8.0)
+        self.add_output("residual", 0.0)
+        self.declare_partials("residual", "x")
+
+    def compute(self, inputs, outputs):
+        if inputs["x"][0] < 1.0:
+            raise om.AnalysisError("x < 1")
+        outputs["residual"] = np.log(inputs["x"] / 2.0)
+
+    def compute_partials(self, inputs, partials):
+        partials["residual", "x"] = 1.0 / inputs["x"]
+
+
+def test_trim_backs_off_from_a_failed_trial_point():
+    # The first Gauss-Newton step from x = 8 goes to x = 8 - 8 ln 4 < 0 (cut at the lower bound
+    # 0), where the model fails: the trim answers with infinite residuals, scipy shrinks its
+    # trust region, and the solve reaches the root x = 2 (closed form) instead of ending in the
+    # AnalysisError.
+    prob = om.Problem(reports=False)
+    prob.model.add_subsystem("comp", _FailsBelowOne(), promotes=["*"])
+    prob.model.add_design_var("x", lower=0.0, upper=10.0)
+    prob.model.add_constraint("residual", equals=0.0)
+    prob.setup()
+    prob.run_model()
+    dvs, cons = prob.model.get_design_vars(), prob.model.get_constraints()
+    sol, final, initial, _ = _solve_block(prob, dvs, cons, {"x": np.array([0])}, 1e-12, 100)
+    assert initial[0] == pytest.approx(np.log(4.0))
+    assert abs(final[0]) < 1e-9
+    assert prob.get_val("x")[0] == pytest.approx(2.0, rel=1e-9)

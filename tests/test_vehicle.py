@@ -74,9 +74,11 @@ def test_reference_values():
     assert wing.area == 19.6
     assert wing.aspect_ratio == 12.12
     assert wing.span == pytest.approx(15.41, rel=1e-3)
-    assert wing.mean_aerodynamic_chord == pytest.approx(
-        1.4601, abs=1e-4
-    )  # docs theory/aerodynamics 'Drag build-up'
+    # The cranked NASA wing: MAC 1.33328 m by a trapezoid-rule integration of the file's
+    # sections (tests/test_cranked_wing_vehicle.py::_hand_planform); 1e-4 m.
+    assert wing.planform == "sections" and len(wing.sections) == 4
+    assert wing.mean_aerodynamic_chord == pytest.approx(1.33328, abs=1e-4)
+    assert wing.root_chord == pytest.approx(1.66237, abs=1e-4)
     assert wing.airfoil == "ls413" and wing.thickness_to_chord == 0.13
     assert vehicle.horizontal_tail.root_chord == pytest.approx(1.1595, abs=1e-4)
     assert vehicle.vertical_tail.span == pytest.approx(1.7239, abs=1e-4)

@@ -3,7 +3,10 @@
 The audited fields' component defaults equal the reference vehicle's values, so a run of the
 reference vehicle cannot show whether they are wired; these tests change them
 (dataclasses.replace on the reference vehicle) and check the model's inputs and the outputs
-that depend on them.
+that depend on them. The wing fields audited here (taper, sweep, dihedral, incidence, root
+leading edge) are those of the "trapezoid" planform, so the wing tests start from the reference
+vehicle with its taper-0.2 trapezoid; the cranked planform's sections are audited in
+tests/test_cranked_wing_vehicle.py (a section chord reaches the wing box and its mass).
 """
 
 import dataclasses
@@ -21,6 +24,10 @@ from lpc_mdo.groups.weights import placeholder_calibration_inputs
 from lpc_mdo.vehicle import reference_vehicle
 
 REFERENCE = reference_vehicle()
+REFERENCE = dataclasses.replace(
+    REFERENCE,
+    wing=dataclasses.replace(REFERENCE.wing, planform="trapezoid", sections=None, taper_ratio=0.2),
+)
 
 
 def _wing(**fields):
