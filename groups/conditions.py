@@ -44,10 +44,7 @@ from lpc_mdo.components.aero.wing_zero_lift_moment import (
     wing_zero_lift_moment_options,
 )
 from lpc_mdo.components.atmosphere import AtmosphereComp
-from lpc_mdo.components.dynamics.body_pitching_moment import (
-    FuselagePitchingMomentComp,
-    fuselage_pitching_moment_options,
-)
+from lpc_mdo.components.dynamics.body_pitching_moment import BodyPitchingMomentComp
 from lpc_mdo.components.dynamics.eom import EquationsOfMotionComp
 from lpc_mdo.components.dynamics.force_sum import ForceSumComp
 from lpc_mdo.components.dynamics.stability_derivatives import (
@@ -146,6 +143,8 @@ _AERO_INPUTS = tuple(
         "htail_area",
         "htail_mac",
         "fuselage_length",
+        "body_moment_slope",
+        "body_moment_zero_lift",
     )
 )
 
@@ -362,7 +361,8 @@ def _add_aerodynamics(
     group.set_input_defaults(
         "wing_zero_lift_angle", np.full((1, opts["wing_panels"]), wing_zero_lift_angle), units="rad"
     )
-    fuselage_options = fuselage_pitching_moment_options(vehicle, wing_zero_lift_angle)
+    # alpha_0w of the body moment: the section zero-lift angle less the root incidence.
+    body_options = {"wing_zero_lift_angle": float(wing_zero_lift_angle) - vehicle.wing.incidence}
     tail_options = _tail_efficiency_options(vehicle, surfaces)
     group.add_subsystem(
         "wing_camber_moment",
@@ -371,7 +371,7 @@ def _add_aerodynamics(
         ),
         promotes=["*"],
     )
-    _add_body_moment(group, fuselage_options, tail_options, "angle_of_attack", "vlm", "")
+    _add_body_moment(group, body_options, tail_options, "angle_of_attack", "vlm", "")
     group.set_input_defaults("elevator", np.zeros(1), units="rad")
 
     components, values = lpc_drag_components(vehicle)
@@ -431,7 +431,7 @@ def _add_aerodynamics(
         )
         _add_body_moment(
             group,
-            fuselage_options,
+            body_options,
             tail_options,
             "perturbed_angle_of_attack",
             "vlm_perturbed",
@@ -469,7 +469,7 @@ def _tail_efficiency_options(vehicle, surfaces):
     }
 
 
-def _add_body_moment(group, fuselage_options, tail_options, alpha, vlm, prefix):
+def _add_body_moment(group, body_options, tail_options, alpha, vlm, prefix):
     """Lattice loads plus the fuselage couple and the tail efficiency (issue 16 item 4).
 
     ``{prefix}aero_force`` = ``{prefix}vlm_force`` + tail correction and ``{prefix}aero_moment``
@@ -477,10 +477,16 @@ def _add_body_moment(group, fuselage_options, tail_options, alpha, vlm, prefix):
     about the body origin.
     """
     group.add_subsystem(
-        f"{prefix}fuselage_moment",
-        FuselagePitchingMomentComp(num_nodes=1, **fuselage_options),
-        promotes_inputs=[("angle_of_attack", alpha), "density", "speed"],
-        promotes_outputs=[("body_moment", f"{prefix}fuselage_moment")],
+        f"{prefix}body_moment",
+        BodyPitchingMomentComp(num_nodes=1, **body_options),
+        promotes_inputs=[
+            ("angle_of_attack", alpha),
+            "density",
+            "speed",
+            "body_moment_slope",
+            "body_moment_zero_lift",
+        ],
+        promotes_outputs=[("body_moment", f"{prefix}body_moment")],
     )
     group.add_subsystem(
         f"{prefix}tail_efficiency",
@@ -496,7 +502,7 @@ def _add_body_moment(group, fuselage_options, tail_options, alpha, vlm, prefix):
     group.connect(f"{vlm}.viscous_panel_forces", f"{prefix}tail_efficiency.viscous_panel_forces")
     for name, units, parts in (
         ("force", "N", ("vlm_force", "tail_force_correction")),
-        ("moment", "N*m", ("vlm_moment", "fuselage_moment", "tail_moment_correction")),
+        ("moment", "N*m", ("vlm_moment", "body_moment", "tail_moment_correction")),
     ):
         names = [f"{prefix}{p}" for p in parts]
         if name == "moment":  # the camber couple: independent of alpha, one for both solves

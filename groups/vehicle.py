@@ -5,6 +5,10 @@ import functools
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.components.dynamics.body_pitching_moment import (
+    BodyMomentSlopeComp,
+    body_moment_slope_options,
+)
 from lpc_mdo.components.geometry.cranked_planform import CrankedPlanformComp, SectionLayout
 from lpc_mdo.components.geometry.planform import PlanformMeshComp
 from lpc_mdo.components.geometry.rotor_layout import RotorLayoutComp
@@ -252,6 +256,13 @@ class VehicleGroup(om.Group):
             "wing_root_leading_edge", np.array(wing.root_leading_edge), units="m"
         )
         self.add_subsystem("rotor_layout", RotorLayoutComp(vehicle=vehicle), promotes=["*"])
+        # Multhopp sums of the fuselage and booms for the aerodynamic conditions' body moment
+        # (docs theory/dynamics 'Fuselage, booms, camber and tail efficiency').
+        self.add_subsystem(
+            "body_moment_slope",
+            BodyMomentSlopeComp(**body_moment_slope_options(vehicle)),
+            promotes=["*"],
+        )
 
         nodes = vehicle.wing_box.num_bays + 1
         if sections:

@@ -197,9 +197,10 @@ def static_margin_budget(prob, condition="cruise", wing_panels=None):
     each slope the difference of the nominal and the perturbed solve over their delta (the
     model's own :class:`~lpc_mdo.components.dynamics.stability_derivatives.
     StabilityDerivativeComp`). Parts: ``wing`` and ``horizontal_tail`` (the lattice's inviscid
-    and profile-drag panel forces of each surface; the tail's at eta_t q) and ``fuselage``
-    (the Munk-Multhopp couple, :mod:`lpc_mdo.components.dynamics.body_pitching_moment`); the
-    airfoils' cm0, a couple independent of alpha, moves the trim but not the neutral point.
+    and profile-drag panel forces of each surface; the tail's at eta_t q), ``fuselage`` and
+    ``booms`` (the Munk-Multhopp couples,
+    :mod:`lpc_mdo.components.dynamics.body_pitching_moment`); the airfoils' cm0, a couple
+    independent of alpha, moves the trim but not the neutral point.
     Returns a dict part ->
     dSM and ``total`` (equal to the model's ``static_margin``).
     """
@@ -231,9 +232,13 @@ def static_margin_budget(prob, condition="cruise", wing_panels=None):
     t0 = prob.get_val(f"{c}.tail_moment_correction", units="N*m")[0, 1]
     t1 = prob.get_val(f"{c}.perturbed_tail_moment_correction", units="N*m")[0, 1]
     budget["horizontal_tail"] += ((t1 - t0) + x_cg * (f1 - f0)) / delta / (dfz * mac)
-    m0 = prob.get_val(f"{c}.fuselage_moment", units="N*m")[0, 1]
-    m1 = prob.get_val(f"{c}.perturbed_fuselage_moment", units="N*m")[0, 1]
-    budget["fuselage"] = (m1 - m0) / delta / (dfz * mac)
+    # Bodies (BodyPitchingMomentComp): the couple is linear in alpha with the slope
+    # q sum_b S_b, so each body's share of the difference is its S_b over the sum.
+    m0 = prob.get_val(f"{c}.body_moment", units="N*m")[0, 1]
+    m1 = prob.get_val(f"{c}.perturbed_body_moment", units="N*m")[0, 1]
+    slopes = prob.get_val(f"{c}.body_moment.body_moment_slope", units="m**3")
+    for name, share in zip(("fuselage", "booms"), slopes / slopes.sum(), strict=True):
+        budget[name] = share * (m1 - m0) / delta / (dfz * mac)
     budget["total"] = sum(budget.values())
     return budget
 

@@ -1,4 +1,4 @@
-"""Fuselage Munk-Multhopp pitching moment: apparent mass, wing flow field, couple, wiring."""
+"""Fuselage and boom Munk-Multhopp moment: apparent mass, wing flow field, couple, wiring."""
 
 import numpy as np
 import openmdao.api as om
@@ -6,13 +6,18 @@ import pytest
 from openmdao.utils.assert_utils import assert_check_partials, assert_near_equal
 
 from lpc_mdo.components.dynamics.body_pitching_moment import (
-    FuselagePitchingMomentComp,
-    fuselage_strips,
+    BodyMomentSlopeComp,
+    BodyPitchingMomentComp,
+    body_moment_slope_options,
+    boom_strips,
     lifting_line_upwash_gradient,
     multhopp_flow_gradient,
     munk_apparent_mass_factor,
     wing_lift_slope,
 )
+from lpc_mdo.vehicle import reference_vehicle
+
+REFERENCE = reference_vehicle()
 
 
 @pytest.mark.parametrize(
@@ -54,55 +59,102 @@ def test_upwash_ahead_of_the_wing_decays_and_is_zero_under_the_chord():
     assert 0.0 < g[5] < 1.0
 
 
-def test_couple_in_uniform_flow_is_munks():
-    # Without the wing (dbeta/dalpha = 1) a spheroid carries Munk's couple
-    # M = q Vol (k2 - k1) sin(2 alpha) (Munk, NACA TR 184, 1924), Vol = pi/6 L w^2;
-    # linear in alpha here: 2 q Vol (k2 - k1) alpha. Tolerance 1e-3 (midpoint strips).
-    length, width = 9.0, 1.5
-    _, _, strip = fuselage_strips(length, width, num_strips=400)
-    k = munk_apparent_mass_factor(length / width)
+def _slope_problem(options, length=9.0, area=19.6, span=15.4, root_chord=1.66):
     prob = om.Problem(reports=False)
-    prob.model.add_subsystem(
-        "fus",
-        FuselagePitchingMomentComp(
-            strip_factor=strip,
-            flow_gradient=np.ones_like(strip),
-            apparent_mass_factor=k,
-        ),
-        promotes=["*"],
-    )
+    prob.model.add_subsystem("slope", BodyMomentSlopeComp(**options), promotes=["*"])
     prob.setup(force_alloc_complex=True)
-    alpha, rho, v = 0.03, 1.1, 60.0
-    prob.set_val("angle_of_attack", alpha)
-    prob.set_val("density", rho)
-    prob.set_val("speed", v)
+    for name, value in (
+        ("fuselage_length", length),
+        ("wing_area", area),
+        ("wing_span", span),
+        ("wing_root_chord", root_chord),
+    ):
+        prob.set_val(name, value)
     prob.run_model()
-    vol = np.pi / 6.0 * length * width**2
-    expected = 0.5 * rho * v**2 * vol * k * 2.0 * alpha
-    assert_near_equal(prob.get_val("body_moment")[0, 1], expected, 1e-3)
-    assert prob.get_val("body_moment")[0, [0, 2]].tolist() == [0.0, 0.0]
+    return prob
 
 
-def test_partials():
-    strip = np.array([0.1, 0.3, 0.2])
+def _one_boom(x_front, x_rear, y, diameter, num_strips=200):
+    edges = np.linspace(x_front, x_rear, num_strips + 1)
+    k = float(munk_apparent_mass_factor((x_front - x_rear) / diameter))
+    return {
+        "boom_x": 0.5 * (edges[:-1] + edges[1:]),
+        "boom_y": np.full(num_strips, y),
+        "boom_strip_factor": np.full(num_strips, diameter**2 * (x_front - x_rear) / num_strips),
+        "boom_flow_mask": np.ones(num_strips),
+        "boom_apparent_mass_factor": k,
+    }
+
+
+def test_bodies_far_ahead_of_the_wing_carry_munks_couple():
+    # With the wing 10 km behind, the flow at the bodies is the free stream (g = 1) and each
+    # body carries Munk's couple M = q Vol (k2 - k1) sin(2 alpha) (Munk, NACA TR 184, 1924),
+    # i.e. a slope of 2 Vol (k2 - k1) per radian: the spheroid fuselage Vol = pi/6 L w^2; a
+    # boom line taken as a body of the cylinder's section, (pi/2) d^2 L. Tolerance 1e-3
+    # (midpoint strips); the zero-lift sums (g - 1) vanish to 1e-6 of the slope.
+    length, width = 9.0, 1.5
+    options = {
+        "fuselage_max_width": width,
+        "wing_sweep": 0.0,
+        "wing_root_leading_edge_x": -1.0e4,
+        "num_strips": 400,
+        **_one_boom(-1.0, -5.0, 2.5, 0.3),
+    }
+    prob = _slope_problem(options, length=length)
+    k_f = munk_apparent_mass_factor(length / width)
+    k_b = munk_apparent_mass_factor(4.0 / 0.3)
+    expected = [2.0 * np.pi / 6.0 * length * width**2 * k_f, 0.5 * np.pi * 0.3**2 * 4.0 * k_b]
+    assert_near_equal(prob.get_val("body_moment_slope", units="m**3"), expected, 1e-3)
+    assert np.all(np.abs(prob.get_val("body_moment_zero_lift")) < 1e-6 * np.array(expected))
+
+
+def test_slope_partials_and_a_longer_fuselage_destabilizes_more():
+    options = body_moment_slope_options(REFERENCE)
+    prob = _slope_problem(options)
+    data = prob.check_partials(method="cs", out_stream=None, compact_print=True)
+    assert_check_partials(data, atol=1e-9, rtol=1e-9)
+    # Longer fuselage at the same width: more strips' area ahead of the wing, a larger
+    # fineness (k2 - k1 closer to 1): the fuselage slope grows; the booms' does not change.
+    longer = _slope_problem(options, length=1.165 * 9.0)
+    assert longer.get_val("body_moment_slope")[0] > 1.1 * prob.get_val("body_moment_slope")[0]
+    assert_near_equal(
+        longer.get_val("body_moment_slope")[1], prob.get_val("body_moment_slope")[1], 1e-14
+    )
+
+
+def test_couple_and_partials():
     prob = om.Problem(reports=False)
     prob.model.add_subsystem(
-        "fus",
-        FuselagePitchingMomentComp(
-            num_nodes=2,
-            strip_factor=strip,
-            flow_gradient=np.array([1.4, 0.0, 0.6]),
-            apparent_mass_factor=0.8,
-            wing_zero_lift_angle=-0.1,
-        ),
+        "body",
+        BodyPitchingMomentComp(num_nodes=2, num_bodies=2, wing_zero_lift_angle=-0.1),
         promotes=["*"],
     )
     prob.setup(force_alloc_complex=True)
     prob.set_val("angle_of_attack", [0.02, 0.05])
     prob.set_val("density", [1.2, 1.0])
     prob.set_val("speed", [50.0, 60.0])
+    prob.set_val("body_moment_slope", [12.0, 2.0])
+    prob.set_val("body_moment_zero_lift", [-8.0, -0.5])
     prob.run_model()
+    # Closed form M_y = q sum_b (S_b alpha - Z_b alpha_0w), nothing about x and z.
+    q = 0.5 * np.array([1.2 * 50.0**2, 1.0 * 60.0**2])
+    expected = q * (14.0 * np.array([0.02, 0.05]) - (-8.5) * -0.1)
+    assert_near_equal(prob.get_val("body_moment")[:, 1], expected, 1e-14)
+    assert np.all(prob.get_val("body_moment")[:, [0, 2]] == 0.0)
     assert_check_partials(prob.check_partials(method="cs", out_stream=None, compact_print=True))
+
+
+def test_reference_booms():
+    # Two boom lines per side (|y| 2.515 and 5.715 m), each from its front to its rear hub
+    # (vehicle file: 4.307 m outer, 4.307 m inner); the strips under the wing's local chord
+    # carry nothing.
+    booms = boom_strips(REFERENCE)
+    assert sorted(set(np.round(np.abs(booms["boom_y"]), 4))) == [2.5146, 5.715]
+    assert booms["boom_x"].size == 4 * 20
+    covered = booms["boom_flow_mask"] == 0.0
+    assert 0 < covered.sum() < 4 * 20
+    assert np.all(booms["boom_x"][covered] < REFERENCE.wing.root_leading_edge[0])
+    assert_near_equal(booms["boom_strip_factor"].sum(), 4 * 0.3048**2 * 4.30682, 1e-5)
 
 
 def test_cruise_budget_sums_to_the_static_margin_and_fuselage_destabilizes():
@@ -125,7 +177,7 @@ def test_cruise_budget_sums_to_the_static_margin_and_fuselage_destabilizes():
     assert_near_equal(
         prob.get_val("cruise.aero_moment"),
         prob.get_val("cruise.vlm_moment")
-        + prob.get_val("cruise.fuselage_moment")
+        + prob.get_val("cruise.body_moment")
         + prob.get_val("cruise.tail_moment_correction")
         + prob.get_val("cruise.wing_camber_moment"),
         1e-12,
@@ -139,8 +191,9 @@ def test_cruise_budget_sums_to_the_static_margin_and_fuselage_destabilizes():
         -0.1 * tail.sum(axis=0),
         1e-9,
     )
-    # ... and the fuselage moves the neutral point forward (Munk: a body alone is unstable).
-    assert budget["fuselage"] < 0.0
+    # ... and the fuselage and booms move the neutral point forward (Munk: a body alone is
+    # unstable), the booms by less (about 1/6 of the fuselage's w^2 L, measured -0.013).
+    assert budget["fuselage"] < budget["booms"] < 0.0
 
 
 def test_tail_efficiency_scales_the_tail_loads():
@@ -230,7 +283,6 @@ def test_reference_neutral_point_against_the_classic_formula():
     # centres. The lattice resolves the wing-tail interference and the tail's spanwise
     # downwash that the formula lumps: tolerance 0.1 MAC (the two differ by 0.06 MAC).
     from lpc_mdo.components.aero.polar import LinearQuadraticPolar
-    from lpc_mdo.components.dynamics.body_pitching_moment import fuselage_pitching_moment_options
     from lpc_mdo.groups.lpc import LPCGroup
     from lpc_mdo.vehicle import reference_vehicle
 
@@ -240,8 +292,12 @@ def test_reference_neutral_point_against_the_classic_formula():
     cla_t = wing_lift_slope(t.aspect_ratio, t.sweep)
     tail = v.stability.tail_dynamic_pressure_ratio * t.area / w.area * cla_t
     tail *= 1.0 - 2.0 * cla_w / (np.pi * w.aspect_ratio)
-    o = fuselage_pitching_moment_options(v, -0.07)
-    fus = 0.5 * np.pi * o["apparent_mass_factor"] * np.sum(o["strip_factor"] * o["flow_gradient"])
+    # Fuselage and booms: Multhopp sums of the file's geometry (BodyMomentSlopeComp's).
+    fus = (
+        _slope_problem(body_moment_slope_options(v), 9.144, w.area, w.span, w.root_chord)
+        .get_val("body_moment_slope")
+        .sum()
+    )
     x_np = (_quarter_mac_x(w) * cla_w + tail * _quarter_mac_x(t) + fus / w.area) / (cla_w + tail)
 
     prob = om.Problem(reports=False)

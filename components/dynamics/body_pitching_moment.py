@@ -1,9 +1,10 @@
-"""Destabilizing pitching moment of the fuselage by Multhopp's strip method."""
+"""Destabilizing pitching moment of the fuselage and the booms by Multhopp's strip method."""
 
 import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.checks import check_range
+from lpc_mdo.components.aero.drag_buildup import LPC_BOOM_DIAMETER
 
 
 def munk_apparent_mass_factor(fineness_ratio):
@@ -19,8 +20,14 @@ def munk_apparent_mass_factor(fineness_ratio):
     k2 - k1 is 0 for a sphere and tends to 1 for an infinitely slender body (Raymer,
     *Aircraft Design* 6th ed., Fig. 16.13 plots the same curve).
     """
-    f = float(fineness_ratio)
-    check_range("fineness_ratio", f, lower=1.0, lower_open=True, where="munk_apparent_mass_factor")
+    f = fineness_ratio  # complex-safe (BodyMomentSlopeComp differentiates by complex step)
+    check_range(
+        "fineness_ratio",
+        float(np.real(f)),
+        lower=1.0,
+        lower_open=True,
+        where="munk_apparent_mass_factor",
+    )
     e = np.sqrt(1.0 - 1.0 / f**2)
     log = np.log((1.0 + e) / (1.0 - e))
     alpha0 = 2.0 * (1.0 - e**2) / e**3 * (0.5 * log - e)
@@ -50,13 +57,13 @@ def lifting_line_upwash_gradient(x, y, span, wing_area, lift_slope, x_bound, num
     lift_slope : float, 1/rad, the wing's C_La referred to the wing area
     x_bound : float, m
     """
-    x = np.asarray(x, dtype=float)
-    y = np.asarray(y, dtype=float)
-    b = float(span)
+    x = np.asarray(x)
+    y = np.asarray(y)
+    b = span
     # Horseshoe edges at cosine-spaced stations; strength = jump of Gamma/V per unit C_L.
     theta = np.linspace(0.0, np.pi, num_vortices + 1)
     edges = -0.5 * b * np.cos(theta)
-    g_edge = np.sqrt(np.clip(1.0 - (2.0 * edges / b) ** 2, 0.0, None))
+    g_edge = np.sin(theta)  # sqrt(1 - (2 y/b)^2) at y = -(b/2) cos(theta)
     # Horseshoe k spans [edges[k], edges[k+1]] with strength = mean of its edge values.
     gk = 0.5 * (g_edge[:-1] + g_edge[1:])
     # Core radius of each leg: the local vortex spacing (fine near the tips, cosine spacing).
@@ -67,12 +74,14 @@ def lifting_line_upwash_gradient(x, y, span, wing_area, lift_slope, x_bound, num
     yb = edges[1:] - y[..., None]
     with np.errstate(divide="ignore", invalid="ignore"):
         # Bound segment from ya to yb at xi: upwash ahead (xi > 0).
-        bound = (yb / np.hypot(xi, yb) - ya / np.hypot(xi, ya)) / xi
+        # sqrt(a^2 + b^2) rather than hypot: complex-safe for the complex-step derivatives.
+        ra, rb = np.sqrt(xi**2 + ya**2), np.sqrt(xi**2 + yb**2)
+        bound = (yb / rb - ya / ra) / xi
         # Semi-infinite legs aft: downwash between them (ya < 0 < yb), upwash outside.
         # A core of radius delta (the local vortex spacing) regularizes a leg passing close
         # to the field point: 1/h -> h/(h^2 + delta^2) (Scully/Kaufmann-type smoothing).
-        left = (1.0 - xi / np.hypot(xi, ya)) * ya / (ya**2 + delta_a**2)
-        right = -(1.0 - xi / np.hypot(xi, yb)) * yb / (yb**2 + delta_b**2)
+        left = (1.0 - xi / ra) * ya / (ya**2 + delta_a**2)
+        right = -(1.0 - xi / rb) * yb / (yb**2 + delta_b**2)
     w_per_gamma = (bound + left + right) / (4.0 * np.pi)
     # Gamma_k/V = (2 S C_L/(pi b)) gk, so w/V per radian of alpha:
     return lift_slope * 2.0 * wing_area / (np.pi * b) * np.sum(gk * w_per_gamma, axis=-1)
@@ -86,41 +95,51 @@ def multhopp_flow_gradient(x_stations, y, span, wing_area, lift_slope, x_leading
     :func:`lifting_line_upwash_gradient` with the bound vortex at the root quarter chord;
     zero under the root chord (DATCOM 4.2.2.1: the wing carries that part's load).
     """
-    x = np.asarray(x_stations, dtype=float)
+    x = np.asarray(x_stations)
     grad = 1.0 + lifting_line_upwash_gradient(
         x,
-        np.full_like(x, float(y)),
+        np.full(x.shape, y),
         span,
         wing_area,
         lift_slope,
         x_leading_edge - 0.25 * root_chord,
     )
-    under = (x <= x_leading_edge) & (x >= x_leading_edge - root_chord)
+    xr, le, c = np.real(x), np.real(x_leading_edge), np.real(root_chord)
+    under = (xr <= le) & (xr >= le - c)
     return np.where(under, 0.0, grad)
 
 
-class FuselagePitchingMomentComp(om.ExplicitComponent):
+class BodyPitchingMomentComp(om.ExplicitComponent):
     """
-    Pitching moment of a slender body in the wing's flow field (Munk-Multhopp strip method).
+    Pitching moment of the slender bodies (fuselage, booms) in the wing's flow field.
 
-    Multhopp (NACA TM 1036, 1942), as in Perkins & Hage (1949) eq. 5-23, DATCOM 4.2.2.1 and
-    Raymer (*Aircraft Design*, 6th ed.) sec. 16.3: the body of strip widths w_i and lengths
-    dx_i, at local flow angle beta_i, carries
+    Multhopp's strip method (NACA TM 1036, 1942), as in Perkins & Hage (1949) eq. 5-23,
+    DATCOM 4.2.2.1 and Raymer (*Aircraft Design*, 6th ed.) sec. 16.3: a body of strip widths
+    w_i and lengths dx_i, at local flow angle beta_i, carries
 
         M_y = q (pi/2) (k2 - k1) sum_i w_i^2 beta_i dx_i,
 
     (nose up positive, body y to the right) with Munk's apparent-mass factor k2 - k1
     (:func:`munk_apparent_mass_factor`). The local angle follows the wing's up- and
     downwash: beta_i = alpha + (g_i - 1)(alpha - alpha_0w), g_i = d(beta)/d(alpha) of
-    :func:`multhopp_flow_gradient` and alpha_0w the wing's zero-lift angle of attack, so the
-    slope is dM/dalpha = q (pi/2)(k2 - k1) sum w_i^2 g_i dx_i. The body's own lift is zero
-    in this potential-flow model (Munk), so only the moment is returned.
+    :func:`multhopp_flow_gradient` and alpha_0w the wing's zero-lift angle of attack. With the
+    design-dependent sums of :class:`BodyMomentSlopeComp`, S_b = (pi/2)(k2 - k1) sum w^2 g dx
+    and Z_b = (pi/2)(k2 - k1) sum w^2 (g - 1) dx per body b,
+
+        M_y = q sum_b (S_b alpha - Z_b alpha_0w).
+
+    The bodies' own lift is zero in this potential-flow model (Munk), so only the moment is
+    returned.
 
     Inputs
     ------
     angle_of_attack : (nn,), rad
     density : (nn,), kg/m**3
     speed : (nn,), m/s
+    body_moment_slope : (nb,), m**3
+        S_b, one per body.
+    body_moment_zero_lift : (nb,), m**3
+        Z_b, one per body.
 
     Outputs
     -------
@@ -129,58 +148,163 @@ class FuselagePitchingMomentComp(om.ExplicitComponent):
     Options
     -------
     num_nodes : int
-    strip_factor : array
-        w_i^2 dx_i per strip, m**3.
-    flow_gradient : array
-        g_i per strip.
-    apparent_mass_factor : float
-        k2 - k1.
+    num_bodies : int
     wing_zero_lift_angle : float
         alpha_0w, rad.
     """
 
     def initialize(self):
         self.options.declare("num_nodes", default=1, types=int, lower=1)
-        self.options.declare("strip_factor", types=np.ndarray, desc="w^2 dx per strip, m**3")
-        self.options.declare("flow_gradient", types=np.ndarray, desc="dbeta/dalpha per strip")
-        self.options.declare("apparent_mass_factor", types=float, desc="k2 - k1")
+        self.options.declare("num_bodies", default=2, types=int, lower=1)
         self.options.declare("wing_zero_lift_angle", default=0.0, types=float, desc="rad")
 
     def setup(self):
-        nn = self.options["num_nodes"]
-        check_range(
-            "apparent_mass_factor",
-            self.options["apparent_mass_factor"],
-            lower=0.0,
-            upper=1.0,
-            where=self.msginfo,
-        )
+        nn, nb = self.options["num_nodes"], self.options["num_bodies"]
         self.add_input("angle_of_attack", np.zeros(nn), units="rad", desc="angle of attack")
         self.add_input("density", np.full(nn, 1.225), units="kg/m**3", desc="air density")
         self.add_input("speed", np.zeros(nn), units="m/s", desc="airspeed")
+        self.add_input(
+            "body_moment_slope", np.zeros(nb), units="m**3", desc="dM/(q dalpha) per body"
+        )
+        self.add_input(
+            "body_moment_zero_lift",
+            np.zeros(nb),
+            units="m**3",
+            desc="(pi/2)(k2-k1) sum w^2 (g-1) dx per body",
+        )
         self.add_output("body_moment", np.zeros((nn, 3)), units="N*m", desc="body couple")
         ar = np.arange(nn)
         for name in ("angle_of_attack", "density", "speed"):
             self.declare_partials("body_moment", name, rows=3 * ar + 1, cols=ar)
-        k = self.options["apparent_mass_factor"]
-        sw = self.options["strip_factor"]
-        g = self.options["flow_gradient"]
-        self._slope = 0.5 * np.pi * k * np.sum(sw * g)  # dM/(q dalpha), m**3
-        self._offset = (
-            -0.5 * np.pi * k * np.sum(sw * (g - 1.0)) * self.options["wing_zero_lift_angle"]
-        )
+        rows = np.repeat(3 * ar + 1, nb)
+        cols = np.tile(np.arange(nb), nn)
+        for name in ("body_moment_slope", "body_moment_zero_lift"):
+            self.declare_partials("body_moment", name, rows=rows, cols=cols)
+
+    def _per_q(self, inputs):
+        slope = np.sum(inputs["body_moment_slope"])
+        offset = -np.sum(inputs["body_moment_zero_lift"]) * self.options["wing_zero_lift_angle"]
+        return slope, slope * inputs["angle_of_attack"] + offset
 
     def compute(self, inputs, outputs):
         q = 0.5 * inputs["density"] * inputs["speed"] ** 2
         outputs["body_moment"] = 0.0 * q[:, None]
-        outputs["body_moment"][:, 1] = q * (self._slope * inputs["angle_of_attack"] + self._offset)
+        outputs["body_moment"][:, 1] = q * self._per_q(inputs)[1]
 
     def compute_partials(self, inputs, partials):
         rho, v, a = inputs["density"], inputs["speed"], inputs["angle_of_attack"]
-        m_per_q = self._slope * a + self._offset
-        partials["body_moment", "angle_of_attack"] = 0.5 * rho * v**2 * self._slope
+        nb = self.options["num_bodies"]
+        q = 0.5 * rho * v**2
+        slope, m_per_q = self._per_q(inputs)
+        partials["body_moment", "angle_of_attack"] = q * slope
         partials["body_moment", "density"] = 0.5 * v**2 * m_per_q
         partials["body_moment", "speed"] = rho * v * m_per_q
+        partials["body_moment", "body_moment_slope"] = np.repeat(q * a, nb)
+        partials["body_moment", "body_moment_zero_lift"] = np.repeat(
+            -q * self.options["wing_zero_lift_angle"], nb
+        )
+
+
+class BodyMomentSlopeComp(om.ExplicitComponent):
+    """
+    Multhopp sums of the fuselage and the booms for the current wing and fuselage design.
+
+    For each body b (0 the fuselage, 1 the booms together):
+    S_b = (pi/2)(k2 - k1)_b sum_i w_i^2 g_i dx_i and Z_b = (pi/2)(k2 - k1)_b sum_i w_i^2
+    (g_i - 1) dx_i, the inputs of :class:`BodyPitchingMomentComp`.
+
+    - Fuselage: the ellipse strips of :func:`fuselage_strips` over the current
+      ``fuselage_length`` (stations and strip lengths scale with it; the widths follow
+      ``fuselage_max_width``), k2 - k1 of the spheroid of fineness L/w_max.
+    - Booms: each boom line a cylinder of diameter d from the front to the rear lift-rotor hub
+      at its span station (:func:`boom_strips`), k2 - k1 of the spheroid of its fineness (a
+      cylinder's is not tabulated: assumption). The boom strips, their stations and the strips
+      under the wing are fixed from the vehicle file (booms move little with the design).
+    - Flow gradient g_i: :func:`multhopp_flow_gradient` of the current wing (``wing_area``,
+      ``wing_span``, ``wing_root_chord``; lift slope of :func:`wing_lift_slope` at the current
+      aspect ratio b^2/S and the file's sweep), zero under the wing.
+
+    Partials by complex step inside :meth:`compute_partials` (each input one complex
+    evaluation; exact to round-off), since the lifting-line sums make analytic work out of
+    proportion.
+
+    Inputs
+    ------
+    fuselage_length : scalar, m
+    wing_area : scalar, m**2
+    wing_span : scalar, m
+    wing_root_chord : scalar, m
+
+    Outputs
+    -------
+    body_moment_slope : (2,), m**3
+    body_moment_zero_lift : (2,), m**3
+
+    Options
+    -------
+    fuselage_max_width : float, m
+    wing_sweep : float, rad (leading edge, whole wing)
+    wing_root_leading_edge_x : float, m
+    boom_x, boom_y, boom_strip_factor, boom_flow_mask : arrays (see :func:`boom_strips`)
+    boom_apparent_mass_factor : float
+    num_strips : int (fuselage strips)
+    """
+
+    _INPUTS = ("fuselage_length", "wing_area", "wing_span", "wing_root_chord")
+
+    def initialize(self):
+        self.options.declare("fuselage_max_width", types=float, desc="m")
+        self.options.declare("wing_sweep", types=float, desc="LE sweep, rad")
+        self.options.declare("wing_root_leading_edge_x", types=float, desc="m")
+        self.options.declare("boom_x", types=np.ndarray, desc="strip stations, m")
+        self.options.declare("boom_y", types=np.ndarray, desc="strip span stations, m")
+        self.options.declare("boom_strip_factor", types=np.ndarray, desc="w^2 dx, m**3")
+        self.options.declare("boom_flow_mask", types=np.ndarray, desc="0 under the wing, else 1")
+        self.options.declare("boom_apparent_mass_factor", types=float, desc="k2 - k1")
+        self.options.declare("num_strips", default=40, types=int, lower=4)
+
+    def setup(self):
+        for name, units, value in zip(
+            self._INPUTS, ("m", "m**2", "m", "m"), (9.144, 19.6, 15.41, 1.66), strict=True
+        ):
+            self.add_input(name, value, units=units)
+        self.add_output("body_moment_slope", np.zeros(2), units="m**3")
+        self.add_output("body_moment_zero_lift", np.zeros(2), units="m**3")
+        for out in ("body_moment_slope", "body_moment_zero_lift"):
+            self.declare_partials(out, self._INPUTS)
+
+    def _sums(self, length, area, span, root_chord):
+        o = self.options
+        le = o["wing_root_leading_edge_x"]
+        cla = wing_lift_slope(span**2 / area, o["wing_sweep"])
+        xc, _, strip = fuselage_strips(length, o["fuselage_max_width"], o["num_strips"])
+        g_f = multhopp_flow_gradient(xc, 0.0, span, area, cla, le, root_chord)
+        k_f = 0.5 * np.pi * munk_apparent_mass_factor(length / o["fuselage_max_width"])
+        # Booms: the same lifting line at each strip's own span station.
+        g_b = 1.0 + lifting_line_upwash_gradient(
+            o["boom_x"], o["boom_y"], span, area, cla, le - 0.25 * root_chord
+        )
+        g_b = g_b * o["boom_flow_mask"]
+        k_b = 0.5 * np.pi * o["boom_apparent_mass_factor"]
+        sb = o["boom_strip_factor"]
+        slope = [k_f * np.sum(strip * g_f), k_b * np.sum(sb * g_b)]
+        zero_lift = [k_f * np.sum(strip * (g_f - 1.0)), k_b * np.sum(sb * (g_b - 1.0))]
+        return slope, zero_lift
+
+    def compute(self, inputs, outputs):
+        slope, zero_lift = self._sums(*(inputs[n][0] for n in self._INPUTS))
+        outputs["body_moment_slope"] = slope
+        outputs["body_moment_zero_lift"] = zero_lift
+
+    def compute_partials(self, inputs, partials):
+        x = np.array([inputs[n][0] for n in self._INPUTS], dtype=complex)
+        h = 1e-30
+        for j, name in enumerate(self._INPUTS):
+            xj = x.copy()
+            xj[j] += 1j * h
+            slope, zero_lift = self._sums(*xj)
+            partials["body_moment_slope", name] = np.imag(slope) / h
+            partials["body_moment_zero_lift", name] = np.imag(zero_lift) / h
 
 
 def fuselage_strips(length, max_width, num_strips=40):
@@ -190,12 +314,13 @@ def fuselage_strips(length, max_width, num_strips=40):
     The vehicle file gives only length and maximum width, so the planform is taken as the
     ellipse w(x) = w_max sqrt(1 - (1 + 2x/L)^2) (assumption: the spheroid of the same length
     and width, the body for which k2 - k1 is exact; it has pi/4 of a box's w^2 integral).
+    Equal strips: the widths do not depend on L, the stations and w^2 dx scale with it
+    (complex-safe in ``length``).
     """
-    edges = np.linspace(0.0, -float(length), num_strips + 1)
-    xc = 0.5 * (edges[:-1] + edges[1:])
-    dx = -np.diff(edges)
-    w = max_width * np.sqrt(np.clip(1.0 - (1.0 + 2.0 * xc / length) ** 2, 0.0, None))
-    return xc, w, w**2 * dx
+    fraction = (np.arange(num_strips) + 0.5) / num_strips  # strip centres, x = -fraction L
+    xc = -length * fraction
+    w = max_width * np.sqrt(np.clip(1.0 - (1.0 - 2.0 * fraction) ** 2, 0.0, None))
+    return xc, w, w**2 * (length / num_strips)
 
 
 def wing_lift_slope(aspect_ratio, sweep, eta=0.95):
@@ -205,33 +330,67 @@ def wing_lift_slope(aspect_ratio, sweep, eta=0.95):
     C_La = 2 pi A / (2 + sqrt(4 + A^2/eta^2 (1 + tan^2 Lambda))), eta = 0.95 the section's
     lift slope over 2 pi (Raymer sec. 12.4).
     """
-    a = float(aspect_ratio)
+    a = aspect_ratio  # complex-safe
     return 2.0 * np.pi * a / (2.0 + np.sqrt(4.0 + a**2 / eta**2 * (1.0 + np.tan(sweep) ** 2)))
 
 
-def fuselage_pitching_moment_options(vehicle, wing_zero_lift_angle, num_strips=40):
+def boom_strips(vehicle, num_strips=20, diameter=None):
     """
-    Options of :class:`FuselagePitchingMomentComp` for a vehicle (fixed at setup).
+    Return the strips of a vehicle's booms, one boom line per distinct span station.
 
-    Fuselage strips from :func:`fuselage_strips`; the wing's flow field from its file
-    planform (area, aspect ratio, LE sweep, root leading edge and the trapezoid root chord)
-    and :func:`wing_lift_slope`; alpha_0w = (sectional zero-lift angle) - (root incidence).
-    The options do not follow wing or fuselage design variables (they are set from the file).
+    Each boom line is a cylinder of diameter ``diameter`` (default the drag build-up's
+    ``LPC_BOOM_DIAMETER``, 1 ft) from the most forward to the most aft lift-rotor hub at the
+    span station of its attach point (``[booms] attach_points``), in ``num_strips`` equal
+    strips. Strips under the wing's local chord (the file's planform at that span station)
+    carry no moment (DATCOM 4.2.2.1: the wing carries that part's load).
+
+    Returns
+    -------
+    dict
+        ``boom_x``, ``boom_y`` (strip stations, m), ``boom_strip_factor`` (w^2 dx, m**3),
+        ``boom_flow_mask`` (0 under the wing, else 1) and ``boom_apparent_mass_factor``.
     """
-    wing, fus = vehicle.wing, vehicle.fuselage
-    xc, _, strip = fuselage_strips(fus.length, fus.max_width, num_strips)
-    grad = multhopp_flow_gradient(
-        xc,
-        0.0,
-        wing.span,
-        wing.area,
-        wing_lift_slope(wing.aspect_ratio, wing.sweep),
-        wing.root_leading_edge[0],
-        wing.root_chord,
-    )
+    d = LPC_BOOM_DIAMETER if diameter is None else float(diameter)
+    wing = vehicle.wing
+    attach = np.array(vehicle.booms.attach_points, dtype=float)
+    hubs = np.array([r.hub_position for r in vehicle.lift_rotors], dtype=float)
+    if wing.planform == "sections":
+        geometry = wing._geometry()
+        sec_y = np.asarray(geometry["section_leading_edges"])[:, 1]
+        sec_x = np.asarray(geometry["section_leading_edges"])[:, 0] + wing.root_leading_edge[0]
+        sec_c = np.asarray(geometry["section_chords"])
+    else:
+        sec_y = np.array([0.0, 0.5 * wing.span])
+        sec_x = wing.root_leading_edge[0] - sec_y * np.tan(wing.sweep)
+        sec_c = np.array([wing.root_chord, wing.tip_chord])
+    xs, ys, factors, masks, lengths = [], [], [], [], []
+    for y in np.unique(np.round(attach[:, 1], 6)):
+        on_line = np.isclose(attach[:, 1], y, atol=1e-6)
+        front, rear = hubs[on_line, 0].max(), hubs[on_line, 0].min()
+        edges = np.linspace(front, rear, num_strips + 1)
+        xc = 0.5 * (edges[:-1] + edges[1:])
+        le = np.interp(abs(y), sec_y, sec_x)
+        chord = np.interp(abs(y), sec_y, sec_c)
+        xs.append(xc)
+        ys.append(np.full(num_strips, y))
+        factors.append(np.full(num_strips, d**2 * (front - rear) / num_strips))
+        masks.append(np.where((xc <= le) & (xc >= le - chord), 0.0, 1.0))
+        lengths.append(front - rear)
     return {
-        "strip_factor": strip,
-        "flow_gradient": grad,
-        "apparent_mass_factor": float(munk_apparent_mass_factor(fus.length / fus.max_width)),
-        "wing_zero_lift_angle": float(wing_zero_lift_angle) - float(wing.incidence),
+        "boom_x": np.concatenate(xs),
+        "boom_y": np.concatenate(ys),
+        "boom_strip_factor": np.concatenate(factors),
+        "boom_flow_mask": np.concatenate(masks),
+        "boom_apparent_mass_factor": float(munk_apparent_mass_factor(np.mean(lengths) / d)),
+    }
+
+
+def body_moment_slope_options(vehicle):
+    """Options of :class:`BodyMomentSlopeComp` for a vehicle (fuselage width, wing, booms)."""
+    wing = vehicle.wing
+    return {
+        "fuselage_max_width": float(vehicle.fuselage.max_width),
+        "wing_sweep": float(wing.sweep),
+        "wing_root_leading_edge_x": float(wing.root_leading_edge[0]),
+        **boom_strips(vehicle),
     }
