@@ -9,12 +9,13 @@ solves them one condition at a time by bounded Gauss-Newton least squares (scipy
 trust-region method) on the exact total derivatives, in the optimizer's scaled space. One
 condition at a time, because a shared trust region lets the hardest condition throttle the
 others; dogbox, because scipy's default (trust-region reflective) stalled on the transition and
-OEI blocks within 30 evaluations where dogbox converged in 5-7 (measured). Where dogbox does not
-reach the tolerance, the block is solved again from its start with trust-region reflective
-(``max_iter`` evaluations) and the better of the two kept: at the reference vehicle's initial
-design, transition_2 trims only with the yaw speed differential on its 100 rpm bound, where
-dogbox crawls (scaled residual 0.049 after 30 evaluations, 8.6e-4 after 400) and trust-region
-reflective converges to 5.5e-9 in 55 (measured 2026-12-03).
+OEI blocks within 30 evaluations where dogbox converged in 5-7 (measured). Dogbox gets
+:data:`DOGBOX_EVALUATIONS` evaluations; where it does not reach the tolerance, the block is
+solved again from its start with trust-region reflective (``max_iter`` evaluations) and the
+better of the two kept: at the reference vehicle's initial design, transition_2 and
+transition_3 trim with lift-pair speeds near their 100 rpm bound, where dogbox crawls (not
+below 1e-6 in 100 evaluations) and trust-region reflective converges in 52-85 (measured
+2026-12-04).
 
 Why this exists: the initial design is far from trim (transition w_dot of -7 m/s^2), and an
 optimizer with a quasi-Newton Hessian started there wanders into windmilling rotors and stalls
@@ -133,6 +134,14 @@ def _trim_variables(prob, vehicle, conditions):
     return merged
 
 
+#: Residual evaluations of the first (dogbox) attempt per condition. Every condition of the
+#: reference vehicle that dogbox trims takes 4-7 Jacobians; where it crawls (transition_2 and
+#: transition_3: 100 evaluations without reaching 1e-6), trust-region reflective from the start
+#: converges in 52-85, so a longer dogbox attempt is wasted (measured 2026-12-04: the whole
+#: trim 74 s with 100, 43 s with 20).
+DOGBOX_EVALUATIONS = 20
+
+
 @functools.lru_cache(maxsize=1)
 def _scratch_dir():
     """
@@ -165,8 +174,9 @@ def trim(prob, conditions=None, tol=1e-10, max_iter=100, separate=True, report=N
     tol : float
         Tolerance on the scaled residual, step and gradient (scipy ``ftol``/``xtol``/``gtol``).
     max_iter : int
-        Limit on residual evaluations per condition and method (dogbox, then, where it
-        does not reach 1e-6, trust-region reflective from the same start).
+        Limit on residual evaluations per condition of trust-region reflective, which runs
+        from the same start where dogbox (at most :data:`DOGBOX_EVALUATIONS` of them) does
+        not reach 1e-6.
     separate : bool
         Solve each condition in its own single-condition problem (the same vehicle design,
         copied over), whose model runs cost a fraction of the whole model's; the trim
@@ -356,7 +366,7 @@ def _solve_block(prob, dv_meta, cons, variables, tol, max_iter):
             rows.append(np.hstack(blocks))
         return np.vstack(rows)
 
-    def solve(method):
+    def solve(method, budget):
         return least_squares(
             residual,
             x0,
@@ -366,15 +376,15 @@ def _solve_block(prob, dv_meta, cons, variables, tol, max_iter):
             ftol=tol,
             xtol=tol,
             gtol=tol,
-            max_nfev=max_iter,
+            max_nfev=budget,
         )
 
     try:
         initial = residual(x0, strict=True)  # least_squares starts here: the run is reused
-        sol, method = solve("dogbox"), "dogbox"
+        sol, method = solve("dogbox", min(max_iter, DOGBOX_EVALUATIONS)), "dogbox"
         if x0.size and np.max(np.abs(sol.fun)) >= 1e-6:
             try:
-                second = solve("trf")
+                second = solve("trf", max_iter)
             except ValueError:  # scipy refuses the fallback (e.g. a non-finite residual)
                 second = None  # keep dogbox's result, which the caller reports as not trimmed
             if second is not None:
