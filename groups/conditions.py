@@ -341,11 +341,17 @@ def _add_aerodynamics(
         ("reference_area", "wing_area"),
         ("horizontal_tail_deflection", "elevator"),
         "wing_zero_lift_angle",
+        "reynolds_per_length",
+        "mach",
     ]
+    # The wing's profile drag grows with lift: its strips' c_d increment over the polar's
+    # minimum (the minimum is the build-up's wing friction), docs theory/aerodynamics
+    # 'Lift-dependent profile drag'.
+    lift_dependent = {"wing": vehicle.wing.airfoil}
     group.add_subsystem("kinematics", KinematicsComp(num_nodes=1), promotes=["*"])
     group.add_subsystem(
         "vlm",
-        VLMGroup(surfaces=surfaces, num_nodes=1),
+        VLMGroup(surfaces=surfaces, num_nodes=1, lift_dependent_drag=lift_dependent),
         promotes_inputs=vlm_inputs + ["angle_of_attack"],
         promotes_outputs=[
             ("force", "vlm_force"),
@@ -422,7 +428,7 @@ def _add_aerodynamics(
         group.add_subsystem("perturbation", AnglePerturbationComp(delta=delta), promotes=["*"])
         group.add_subsystem(
             "vlm_perturbed",
-            VLMGroup(surfaces=surfaces, num_nodes=1),
+            VLMGroup(surfaces=surfaces, num_nodes=1, lift_dependent_drag=lift_dependent),
             promotes_inputs=vlm_inputs + [("angle_of_attack", "perturbed_angle_of_attack")],
             promotes_outputs=[
                 ("force", "perturbed_vlm_force"),

@@ -3,6 +3,11 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.components.aero.alpha_star import AlphaStarComp
+from lpc_mdo.components.aero.lift_dependent_profile_drag import (
+    LiftDependentProfileDragComp,
+    StripFlowComp,
+)
 from lpc_mdo.components.aero.vlm_aic import VLMAICComp
 from lpc_mdo.components.aero.vlm_circulation import VLMCirculationComp
 from lpc_mdo.components.aero.vlm_forces import VLMPanelForcesComp
@@ -105,6 +110,12 @@ class VLMGroup(om.Group):
         self.options.declare(
             "num_nodes", default=1, types=int, lower=1, desc="number of flight conditions"
         )
+        self.options.declare(
+            "lift_dependent_drag",
+            default={},
+            types=dict,
+            desc="surface name -> airfoil: strips whose profile drag grows with lift (polar)",
+        )
 
     def setup(self):
         surfaces = tuple(self.options["surfaces"])
@@ -123,10 +134,62 @@ class VLMGroup(om.Group):
         )
         self.add_subsystem("induced_velocity", VLMInducedVelocityComp(**kw), promotes=["*"])
         self.add_subsystem("panel_forces", VLMPanelForcesComp(**kw), promotes=["*"])
+        self.add_subsystem("sectional", VLMSectionalLiftComp(**kw), promotes=["*"])
+        for surface in surfaces:
+            if surface.name in self.options["lift_dependent_drag"]:
+                self._add_lift_dependent_drag(surface, nn)
         self.add_subsystem("profile_drag", VLMProfileDragComp(**kw), promotes=["*"])
         self.add_subsystem("loads", VLMLoadsComp(num_nodes=nn, num_panels=npn), promotes=["*"])
-        self.add_subsystem("sectional", VLMSectionalLiftComp(**kw), promotes=["*"])
         self.add_subsystem("trefftz", VLMTrefftzDragComp(**kw), promotes=["*"])
 
+        unknown = set(self.options["lift_dependent_drag"]) - {s.name for s in surfaces}
+        if unknown:
+            raise ValueError(
+                f"{self.msginfo}: lift_dependent_drag names {sorted(unknown)}, which are not "
+                f"surfaces of the lattice ({[s.name for s in surfaces]})."
+            )
         self.set_input_defaults("density", np.full(nn, SEA_LEVEL_DENSITY), units="kg/m**3")
         self.set_input_defaults("speed", np.zeros(nn), units="m/s")
+
+    def _add_lift_dependent_drag(self, surface, nn):
+        """
+        Strip c_d of ``surface`` from its polar at the VLM's sectional c_l (module docstring).
+
+        Strip Reynolds and Mach numbers (:class:`StripFlowComp`), the section angle alpha* of
+        the sectional c_l (:class:`AlphaStarComp`, an implicit component that solves itself),
+        then the lift-dependent c_d increment (:class:`LiftDependentProfileDragComp`) into
+        ``{name}_sectional_cd``; the group then needs ``reynolds_per_length`` and ``mach``.
+        """
+        name, ns = surface.name, surface.num_span_panels
+        airfoil = self.options["lift_dependent_drag"][name]
+        self.add_subsystem(
+            f"{name}_strip_flow",
+            StripFlowComp(
+                num_nodes=nn,
+                num_chord_panels=surface.num_chord_panels,
+                num_span_panels=ns,
+            ),
+            promotes_inputs=[("mesh", f"{name}_mesh"), "reynolds_per_length", "mach"],
+        )
+        self.add_subsystem(
+            f"{name}_alpha_star",
+            AlphaStarComp(num_sections=nn * ns, airfoil=airfoil),
+        )
+        self.add_subsystem(
+            f"{name}_lift_dependent_drag",
+            LiftDependentProfileDragComp(num_nodes=nn, num_span_panels=ns, airfoil=airfoil),
+            promotes_outputs=[("sectional_cd", f"{name}_sectional_cd")],
+        )
+        self.connect(
+            f"{name}_sectional_cl",
+            f"{name}_alpha_star.lift_coefficient",
+            src_indices=np.arange(nn * ns),
+            flat_src_indices=True,
+        )
+        for source, target in (
+            ("strip_reynolds", "reynolds"),
+            ("strip_mach", "mach"),
+        ):
+            self.connect(f"{name}_strip_flow.{source}", f"{name}_alpha_star.{target}")
+            self.connect(f"{name}_strip_flow.{source}", f"{name}_lift_dependent_drag.{target}")
+        self.connect(f"{name}_alpha_star.alpha_star", f"{name}_lift_dependent_drag.alpha_star")

@@ -291,3 +291,113 @@ def format_drag_breakdown(prob, vehicle=None):
         + f"{rows[0][1].sum() * s_ref:>12.4f}"
     )
     return "\n".join(lines)
+
+
+def airframe_lift_drag(prob, condition):
+    """
+    Airframe (C_L, C_D) of a run wing-borne condition, on the wing area.
+
+    The aerodynamic force of the lattice (with its profile drag and the tail-efficiency
+    correction) plus the parasite-drag build-up, not the rotors, in wind axes: with
+    e_V = (cos a, 0, sin a) and e_L = (-sin a, 0, cos a) in body axes (x forward, z down),
+    D = -F . e_V and L = -F . e_L.
+    """
+    alpha = prob.get_val(f"{condition}.angle_of_attack", units="rad")[0]
+    force = (
+        prob.get_val(f"{condition}.aero_force", units="N")[0]
+        + prob.get_val(f"{condition}.drag_force", units="N")[0]
+    )
+    q_s = (
+        prob.get_val(f"{condition}.dynamic_pressure", units="Pa")[0]
+        * prob.get_val("wing_area", units="m**2")[0]
+    )
+    drag = -(force[0] * np.cos(alpha) + force[2] * np.sin(alpha))
+    lift = -(-force[0] * np.sin(alpha) + force[2] * np.cos(alpha))
+    return lift / q_s, drag / q_s
+
+
+def lift_to_drag(prob, condition=None, pitch_deg=None, work_dir=None):
+    """
+    Airframe lift-to-drag ratio of a wing-borne condition over a sweep of pitch angles.
+
+    The condition is evaluated alone (its own single-condition problem with ``prob``'s design
+    variables: rotor speeds and elevator as they are) at each pitch angle; lift and drag are
+    those of :func:`airframe_lift_drag`. Comparable with a glider polar of the airframe (NASA's
+    CFD model of the LPC, docs theory/aerodynamics 'Drag build-up').
+
+    Parameters
+    ----------
+    prob : om.Problem
+        A run LPC problem that holds ``condition``.
+    condition : str or None
+        A condition with aerodynamics; None: the mission's design cruise condition.
+    pitch_deg : array_like or None
+        Pitch angles, deg; None: -2 to 14 deg in 0.5 deg steps.
+    work_dir : str or None
+        Folder of the single-condition problem's OpenMDAO outputs (None: a temporary one).
+
+    Returns
+    -------
+    dict
+        ``pitch_deg``, ``CL``, ``CD``, ``L/D`` (arrays over the sweep), ``max_L/D`` and its
+        ``CL_at_max`` (the sweep's largest ratio, refined by a parabola through its
+        neighbours).
+    """
+    import tempfile
+
+    from lpc_mdo.groups.condition_base import condition_layout
+    from lpc_mdo.problems import build_analysis_problem, copy_design_variables
+
+    vehicle = prob.vehicle if hasattr(prob, "vehicle") else prob.model.options["vehicle"]
+    condition = condition or vehicle.mission.cruise_condition
+    pitch_deg = np.arange(-2.0, 14.0 + 1e-9, 0.5) if pitch_deg is None else np.asarray(pitch_deg)
+    names = [n for n, _ in condition_layout(vehicle).trim_variables(condition)]
+    pitch_names = [n for n in names if n.endswith("_pitch")]
+    if not pitch_names:
+        raise ValueError(
+            f"lift_to_drag: condition '{condition}' has no pitch design variable "
+            f"(its trim variables are {names}); allowed: a steady wing-borne condition."
+        )
+    single = build_analysis_problem(
+        vehicle,
+        name=f"lift_to_drag_{condition}",
+        conditions=[condition],
+        lateral_trim=False,
+        constraint_kinds=["trim"],
+        static_margin=False,
+        work_dir=work_dir or tempfile.mkdtemp(prefix="lpc_mdo_ld_"),
+        **{k: prob.model.options[k] for k in ("rotor_polar", "wing_zero_lift_angle")},
+    )
+    copy_design_variables(prob, single, vehicle)
+    pitch_name = pitch_names[0]
+    base = np.asarray(single.get_val(pitch_name, units="deg"), dtype=float).copy()
+    position = dict(condition_layout(vehicle).trim_variables(condition))[pitch_name]
+    cl, cd = [], []
+    for pitch in pitch_deg:
+        value = base.copy()
+        value.reshape(-1)[position] = pitch
+        single.set_val(pitch_name, value, units="deg")
+        single.run_model()
+        coefficients = airframe_lift_drag(single, condition)
+        cl.append(coefficients[0])
+        cd.append(coefficients[1])
+    cl, cd = np.array(cl), np.array(cd)
+    ratio = cl / cd
+    k = int(np.argmax(ratio))
+    best, cl_best = ratio[k], cl[k]
+    if 0 < k < ratio.size - 1:  # vertex of the parabola through the three points
+        y0, y1, y2 = ratio[k - 1 : k + 2]
+        denom = y0 - 2.0 * y1 + y2
+        if denom < 0.0:
+            t = 0.5 * (y0 - y2) / denom
+            best = y1 - 0.25 * (y0 - y2) * t
+            cl_best = cl[k] + t * 0.5 * (cl[k + 1] - cl[k - 1])
+    single.cleanup()
+    return {
+        "pitch_deg": pitch_deg,
+        "CL": cl,
+        "CD": cd,
+        "L/D": ratio,
+        "max_L/D": float(best),
+        "CL_at_max": float(cl_best),
+    }

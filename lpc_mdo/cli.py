@@ -631,6 +631,23 @@ def _analyze_drag(analysis, args):
     return format_drag_breakdown(analysis.prob)
 
 
+def _analyze_lift_to_drag(analysis, args):
+    from lpc_mdo.analysis import airframe_lift_drag, lift_to_drag
+
+    prob, cruise = analysis.prob, analysis.vehicle.mission.cruise_condition
+    if cruise not in prob.model.condition_names:
+        return f"  lift-to-drag: {cruise} is not in the model"
+    cl, cd = airframe_lift_drag(prob, cruise)
+    here = f"{cl / cd:.2f} at C_L {cl:.3f}, C_D {cd:.4f}"
+    sweep = lift_to_drag(prob, cruise)
+    state = "trimmed" if analysis.trimmed else "initial design"
+    return (
+        f"  {cruise} airframe lift-to-drag (wing, tail, profile and parasite drag; no rotors): "
+        f"{state} {here}; maximum {sweep['max_L/D']:.2f} at C_L {sweep['CL_at_max']:.3f} "
+        f"(pitch sweep -2..14 deg at the {cruise} speed, elevator and rotor speeds as above)"
+    )
+
+
 #: The sections ``lpc-mdo analyze`` prints, in order: each takes (Analysis, args) and returns
 #: text. A new table is one more function here.
 ANALYZE_SECTIONS = (
@@ -639,6 +656,7 @@ ANALYZE_SECTIONS = (
     _analyze_conditions,
     _analyze_trim_variables,
     _analyze_drag,
+    _analyze_lift_to_drag,
     _analyze_constraints,
     _analyze_summary,
     _analyze_static_margin_budget,

@@ -173,8 +173,22 @@ class AlphaStarComp(om.ImplicitComponent):
         residuals["alpha_star"] = inputs["lift_coefficient"] - g
 
     def solve_nonlinear(self, inputs, outputs):
-        target = inputs["lift_coefficient"]
-        re, m = inputs["reynolds"], inputs["mach"]
+        complex_step = any(
+            np.iscomplexobj(inputs[n]) for n in ("lift_coefficient", "reynolds", "mach")
+        )
+        if complex_step:
+            # Complex step: solve with the real parts, then one Newton step in complex
+            # arithmetic carries the imaginary parts (the derivative) exactly, since the
+            # Jacobian is exact at the converged real solution.
+            self._solve(*(np.real(inputs[n]) for n in ("lift_coefficient", "reynolds", "mach")))
+            alpha = self._solution.astype(complex)
+            g, dg_da, _, _ = self._lift(alpha, inputs["reynolds"], inputs["mach"])
+            outputs["alpha_star"] = alpha + (inputs["lift_coefficient"] - g) / dg_da
+            return
+        self._solve(inputs["lift_coefficient"], inputs["reynolds"], inputs["mach"])
+        outputs["alpha_star"] = self._solution
+
+    def _solve(self, target, re, m):
         bad = ~(np.isfinite(target) & np.isfinite(re) & np.isfinite(m))
         if np.any(bad):
             raise om.AnalysisError(
@@ -202,7 +216,7 @@ class AlphaStarComp(om.ImplicitComponent):
                 cl_lo[inside],
                 cl_hi[inside],
             )
-        outputs["alpha_star"] = alpha
+        self._solution = alpha
 
     def _bracketed_newton(self, target, re, m, a_lo, a_hi, f_lo, f_hi):
         """Solve cl(alpha) = target on [a_lo, a_hi] with cl(a_lo) < target < cl(a_hi)."""
