@@ -18,7 +18,7 @@ class StripFlowComp(om.ExplicitComponent):
     Chord Reynolds number and Mach number of each span-wise strip of a lifting surface.
 
     The strip chord is the mean of the chord lengths at its two span-wise mesh stations,
-    c_j = |x_TE - x_LE| (leading and trailing edge nodes of the mesh); Re_ij = (rho V/mu)_i c_j,
+    c_j = norm(x_TE - x_LE) (leading and trailing edge nodes of the mesh); Re_ij = (rho V/mu)_i c_j,
     M_ij = M_i.
 
     Inputs
