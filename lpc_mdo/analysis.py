@@ -332,7 +332,8 @@ def lift_to_drag(prob, condition=None, pitch_deg=None, work_dir=None):
     condition : str or None
         A condition with aerodynamics; None: the mission's design cruise condition.
     pitch_deg : array_like or None
-        Pitch angles, deg; None: -2 to 14 deg in 0.5 deg steps.
+        Pitch angles, deg; None: -2 to 14 deg in 1 deg steps (the parabola through the best
+        point and its neighbours finds the maximum within 0.05 % of a 0.05 deg sweep).
     work_dir : str or None
         Folder of the single-condition problem's OpenMDAO outputs (None: a temporary one).
 
@@ -350,7 +351,7 @@ def lift_to_drag(prob, condition=None, pitch_deg=None, work_dir=None):
 
     vehicle = prob.vehicle if hasattr(prob, "vehicle") else prob.model.options["vehicle"]
     condition = condition or vehicle.mission.cruise_condition
-    pitch_deg = np.arange(-2.0, 14.0 + 1e-9, 0.5) if pitch_deg is None else np.asarray(pitch_deg)
+    pitch_deg = np.arange(-2.0, 14.0 + 1e-9, 1.0) if pitch_deg is None else np.asarray(pitch_deg)
     names = [n for n, _ in condition_layout(vehicle).trim_variables(condition)]
     pitch_names = [n for n in names if n.endswith("_pitch")]
     if not pitch_names:
