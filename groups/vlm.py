@@ -55,7 +55,10 @@ class VLMGroup(om.Group):
     the aerodynamics through analytic partials.
 
     Subsystems (in order): geometry, freestream, normals, aic, circulation, induced_velocity,
-    panel_forces, profile_drag, loads, sectional, trefftz.
+    panel_forces, sectional, [per surface of ``lift_dependent_drag``: strip_flow, alpha_star,
+    lift_dependent_drag], profile_drag, loads, trefftz. With ``lift_dependent_drag`` the
+    surface's ``{name}_sectional_cd`` is computed (docs theory/aerodynamics 'Lift-dependent
+    profile drag') and the group reads ``reynolds_per_length`` and ``mach``.
 
     Inputs (promoted; nn = num_nodes, ns = span-wise panels of a surface):
 
@@ -98,6 +101,9 @@ class VLMGroup(om.Group):
     -------
     surfaces : tuple of VLMSurface
     num_nodes : int
+    lift_dependent_drag : dict
+        Surface name -> airfoil (anything ``get_polar`` takes) of the surfaces whose strips
+        carry the lift-dependent profile drag of their polar; default none (c_d an input).
     """
 
     def initialize(self):
@@ -119,6 +125,12 @@ class VLMGroup(om.Group):
 
     def setup(self):
         surfaces = tuple(self.options["surfaces"])
+        unknown = set(self.options["lift_dependent_drag"]) - {s.name for s in surfaces}
+        if unknown:
+            raise ValueError(
+                f"{self.msginfo}: lift_dependent_drag names {sorted(unknown)}, which are not "
+                f"surfaces of the lattice ({[s.name for s in surfaces]})."
+            )
         nn = self.options["num_nodes"]
         npn = Lattice(surfaces).num_panels
         kw = {"surfaces": surfaces, "num_nodes": nn}
@@ -142,12 +154,6 @@ class VLMGroup(om.Group):
         self.add_subsystem("loads", VLMLoadsComp(num_nodes=nn, num_panels=npn), promotes=["*"])
         self.add_subsystem("trefftz", VLMTrefftzDragComp(**kw), promotes=["*"])
 
-        unknown = set(self.options["lift_dependent_drag"]) - {s.name for s in surfaces}
-        if unknown:
-            raise ValueError(
-                f"{self.msginfo}: lift_dependent_drag names {sorted(unknown)}, which are not "
-                f"surfaces of the lattice ({[s.name for s in surfaces]})."
-            )
         self.set_input_defaults("density", np.full(nn, SEA_LEVEL_DENSITY), units="kg/m**3")
         self.set_input_defaults("speed", np.zeros(nn), units="m/s")
 

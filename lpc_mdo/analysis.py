@@ -316,7 +316,7 @@ def airframe_lift_drag(prob, condition):
     return lift / q_s, drag / q_s
 
 
-def lift_to_drag(prob, condition=None, pitch_deg=None, work_dir=None):
+def lift_to_drag(prob, condition=None, pitch_deg=None):
     """
     Airframe lift-to-drag ratio of a wing-borne condition over a sweep of pitch angles.
 
@@ -334,8 +334,6 @@ def lift_to_drag(prob, condition=None, pitch_deg=None, work_dir=None):
     pitch_deg : array_like or None
         Pitch angles, deg; None: -2 to 14 deg in 1 deg steps (the parabola through the best
         point and its neighbours finds the maximum within 0.05 % of a 0.05 deg sweep).
-    work_dir : str or None
-        Folder of the single-condition problem's OpenMDAO outputs (None: a temporary one).
 
     Returns
     -------
@@ -344,10 +342,8 @@ def lift_to_drag(prob, condition=None, pitch_deg=None, work_dir=None):
         ``CL_at_max`` (the sweep's largest ratio, refined by a parabola through its
         neighbours).
     """
-    import tempfile
-
     from lpc_mdo.groups.condition_base import condition_layout
-    from lpc_mdo.problems import build_analysis_problem, copy_design_variables
+    from lpc_mdo.trim import single_condition_problem
 
     vehicle = prob.vehicle if hasattr(prob, "vehicle") else prob.model.options["vehicle"]
     condition = condition or vehicle.mission.cruise_condition
@@ -359,17 +355,7 @@ def lift_to_drag(prob, condition=None, pitch_deg=None, work_dir=None):
             f"lift_to_drag: condition '{condition}' has no pitch design variable "
             f"(its trim variables are {names}); allowed: a steady wing-borne condition."
         )
-    single = build_analysis_problem(
-        vehicle,
-        name=f"lift_to_drag_{condition}",
-        conditions=[condition],
-        lateral_trim=False,
-        constraint_kinds=["trim"],
-        static_margin=False,
-        work_dir=work_dir or tempfile.mkdtemp(prefix="lpc_mdo_ld_"),
-        **{k: prob.model.options[k] for k in ("rotor_polar", "wing_zero_lift_angle")},
-    )
-    copy_design_variables(prob, single, vehicle)
+    single = single_condition_problem(prob, condition, name=f"lift_to_drag_{condition}")
     pitch_name = pitch_names[0]
     base = np.asarray(single.get_val(pitch_name, units="deg"), dtype=float).copy()
     position = dict(condition_layout(vehicle).trim_variables(condition))[pitch_name]

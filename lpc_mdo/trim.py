@@ -158,6 +158,32 @@ def _scratch_dir():
 _INHERITED_OPTIONS = ("rotor_polar", "wing_zero_lift_angle", "ks_rho", "structural_coupling")
 
 
+def single_condition_problem(prob, condition, name):
+    """
+    Return a set-up problem of one condition of ``prob``'s model with ``prob``'s design.
+
+    The same vehicle and model options (:data:`_INHERITED_OPTIONS`), the condition's trim
+    constraints only, no static margin; every design variable copied from ``prob`` (not run).
+    Its OpenMDAO output folder is in the per-process scratch folder.
+    """
+    from lpc_mdo.problems import build_analysis_problem, copy_design_variables
+
+    vehicle = prob.vehicle if hasattr(prob, "vehicle") else prob.model.options["vehicle"]
+    single = build_analysis_problem(
+        vehicle,
+        name=name,
+        conditions=[condition],
+        lateral_trim=False,
+        constraint_kinds=["trim"],
+        static_margin=False,
+        comm=prob.comm,
+        work_dir=_scratch_dir(),
+        **{k: prob.model.options[k] for k in _INHERITED_OPTIONS},
+    )
+    copy_design_variables(prob, single, vehicle)
+    return single
+
+
 def trim(prob, conditions=None, tol=1e-10, max_iter=100, separate=True, report=None, label="trim"):
     """
     Trim conditions of a set-up LPC problem by their trim variables (module docstring).
@@ -201,7 +227,7 @@ def trim(prob, conditions=None, tol=1e-10, max_iter=100, separate=True, report=N
     om.AnalysisError
         When the model fails during the solve.
     """
-    from lpc_mdo.problems import build_analysis_problem, copy_design_variables
+    from lpc_mdo.problems import copy_design_variables
 
     vehicle = prob.vehicle if hasattr(prob, "vehicle") else prob.model.options["vehicle"]
     conditions = list(prob.model.condition_names if conditions is None else conditions)
@@ -211,19 +237,7 @@ def trim(prob, conditions=None, tol=1e-10, max_iter=100, separate=True, report=N
         started = time.perf_counter()
         target = prob
         if separate:
-            options = {k: prob.model.options[k] for k in _INHERITED_OPTIONS}
-            target = build_analysis_problem(
-                vehicle,
-                name=f"trim_{cond}",
-                conditions=[cond],
-                lateral_trim=False,
-                constraint_kinds=["trim"],
-                static_margin=False,
-                comm=prob.comm,
-                work_dir=_scratch_dir(),
-                **options,
-            )
-            copy_design_variables(prob, target, vehicle)
+            target = single_condition_problem(prob, cond, name=f"trim_{cond}")
             target.run_model()
         cons = _trim_constraints(target, [cond])
         if not cons:

@@ -41,6 +41,11 @@ def test_analyze_reference_vehicle_is_trimmed(tmp_path, capsys):
     assert re.search(r"42 constraints: \d+ satisfied, \d+ active, \d+ violated", text)
     # The trimmed variables per condition.
     assert re.search(r"cruise +pusher_rpm [\d.]+ rpm; pitch [\d.]+ deg; elevator", text)
+    # The airframe L/D of trimmed cruise and its maximum (about 15, docs theory/aerodynamics).
+    found = re.search(r"trimmed (\d+\.\d+) at C_L [\d.]+, C_D [\d.]+; maximum (\d+\.\d+)", text)
+    assert found and 10.0 < float(found[1]) <= float(found[2]) < 20.0
+    # The static-margin budget names the fuselage and the booms.
+    assert re.search(r"fuselage +-0\.\d+", text) and re.search(r"booms +-0\.\d+", text)
     assert (tmp_path / "figures" / "n2.html").stat().st_size > 0
     assert (tmp_path / "out" / "constraints.md").exists()
     case = om.CaseReader(str(tmp_path / "out" / "cases.sql")).get_case("final")
