@@ -76,8 +76,8 @@ def _increment_problem(alpha, reynolds, mach, airfoil="ls413"):
 @pytest.mark.parametrize("airfoil", ["ls413", "naca0012"])
 def test_increment_against_the_polar(airfoil):
     # Independent numbers: the polar's c_d at alpha* less its minimum found by a 0.005 deg scan
-    # of -10..15 deg (one level, 50x finer than the component's first); tolerance 2e-7 in c_d
-    # (the scans' error is second order in their steps).
+    # of -10..15 deg (one level, 4x finer than the component's refinement and wider); tolerance
+    # 5e-7 in c_d (the scans' error is second order in their steps).
     polar = get_polar(airfoil)
     alpha = np.radians([-2.0, 0.0, 3.0, 6.0, 9.0])
     re = np.array([1.0e6, 2.0e6, 3.0e6, 4.0e6, 5.0e6])
@@ -89,7 +89,7 @@ def test_increment_against_the_polar(airfoil):
         low = polar.evaluate(fine, r, m).cd.min()
         expected.append(polar.evaluate(a, r, m).cd - low)
     increment = prob.get_val("sectional_cd")[0]
-    assert np.all(np.abs(increment - np.array(expected)) < 2e-7)
+    assert np.all(np.abs(increment - np.array(expected)) < 5e-7)
     assert np.all(increment >= 0.0)
     # At high lift the increment is the rise out of the drag bucket: positive and growing.
     assert increment[4] > increment[3] > 0.0

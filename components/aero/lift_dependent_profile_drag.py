@@ -6,11 +6,11 @@ import openmdao.api as om
 from .airfoil import get_polar
 
 #: Angles scanned for the minimum profile drag of a section (the polar's drag bucket), rad:
-#: -10..+15 deg in 0.25 deg steps, then +-0.25 deg about the best of them in 0.01 deg steps.
-#: The minimum of a smooth cd(alpha) is found to within cd'' (0.01 deg)^2/8: measured within
-#: 1e-7 of a 0.005 deg scan on the packaged tables (the coarse scan alone: 9e-6).
-MINIMUM_DRAG_SCAN = np.radians(np.arange(-10.0, 15.0 + 1e-9, 0.25))
-_REFINE = np.radians(np.arange(-0.25, 0.25 + 1e-9, 0.01))
+#: -6..+10 deg in 0.5 deg steps, then +-0.5 deg about the best of them in 0.02 deg steps. The
+#: minimum of a smooth cd(alpha) is found to within cd'' (0.02 deg)^2/8: measured within 3e-7 of
+#: a 0.005 deg scan of -10..15 deg on the packaged tables (Re 3e5-1e7, M 0-0.3).
+MINIMUM_DRAG_SCAN = np.radians(np.arange(-6.0, 10.0 + 1e-9, 0.5))
+_REFINE = np.radians(np.arange(-0.5, 0.5 + 1e-9, 0.02))
 
 
 class StripFlowComp(om.ExplicitComponent):
@@ -97,7 +97,8 @@ class LiftDependentProfileDragComp(om.ExplicitComponent):
     Delta c_d = c_d(alpha*, Re, M) - c_d,min(Re, M): the polar's drag at the section angle
     alpha* that gives the strip's VLM lift coefficient (:class:`AlphaStarComp`, paper eq. 16a)
     less the polar's minimum drag at the strip's Reynolds and Mach number (the bottom of the
-    drag bucket, scanned over :data:`MINIMUM_DRAG_SCAN`). The minimum belongs to the
+    drag bucket, scanned over :data:`MINIMUM_DRAG_SCAN` and refined; the angle is kept while Re
+    and M do not change). The minimum belongs to the
     parasite-drag build-up (skin friction and form factor of the wing, docs theory/aerodynamics
     'Drag build-up'); the increment is what lift adds to the section's profile drag, the term
     a build-up of C_D0 plus the lattice's induced drag leaves out (Raymer, *Aircraft Design*,
@@ -132,6 +133,7 @@ class LiftDependentProfileDragComp(om.ExplicitComponent):
         nn, ns = self.options["num_nodes"], self.options["num_span_panels"]
         n = nn * ns
         self._polar = get_polar(self.options["airfoil"])
+        self._minimum_angle = None
         self.add_input("alpha_star", np.zeros(n), units="rad", desc="section angle of attack")
         self.add_input("reynolds", np.full(n, 1e6), desc="chord Reynolds number")
         self.add_input("mach", np.zeros(n), desc="Mach number")
@@ -144,13 +146,21 @@ class LiftDependentProfileDragComp(om.ExplicitComponent):
         )
 
     def _minimum(self, reynolds, mach):
-        """Polar values at the angle of minimum drag of each section (scan)."""
-        re, m = np.real(reynolds)[:, None], np.real(mach)[:, None]
-        cd = self._polar.evaluate(MINIMUM_DRAG_SCAN[None, :], re, m).cd
-        grid = MINIMUM_DRAG_SCAN[np.argmin(cd, axis=1)][:, None] + _REFINE[None, :]
-        cd = self._polar.evaluate(grid, re, m).cd
-        angle = grid[np.arange(grid.shape[0]), np.argmin(cd, axis=1)]
-        return self._polar.evaluate(angle, reynolds, mach)
+        """
+        Polar values at the angle of minimum drag of each section (scan).
+
+        The angle depends on (Re, M) only, which stay fixed while a trim or a line search moves
+        the rotor speeds, pitch and elevator: the scan is kept for the last (Re, M) seen.
+        """
+        re, m = np.real(reynolds), np.real(mach)
+        last = self._minimum_angle
+        if last is None or not (np.array_equal(re, last[0]) and np.array_equal(m, last[1])):
+            cd = self._polar.evaluate(MINIMUM_DRAG_SCAN[None, :], re[:, None], m[:, None]).cd
+            grid = MINIMUM_DRAG_SCAN[np.argmin(cd, axis=1)][:, None] + _REFINE[None, :]
+            cd = self._polar.evaluate(grid, re[:, None], m[:, None]).cd
+            angle = grid[np.arange(grid.shape[0]), np.argmin(cd, axis=1)]
+            self._minimum_angle = last = (re.copy(), m.copy(), angle)
+        return self._polar.evaluate(last[2], reynolds, mach)
 
     def compute(self, inputs, outputs):
         re, m = inputs["reynolds"], inputs["mach"]
