@@ -343,22 +343,23 @@ def lift_to_drag(prob, condition=None, pitch_deg=None):
         neighbours).
     """
     from lpc_mdo.groups.condition_base import condition_layout
-    from lpc_mdo.trim import single_condition_problem
+    from lpc_mdo.trim import problem_vehicle, single_condition_problem
 
-    vehicle = prob.vehicle if hasattr(prob, "vehicle") else prob.model.options["vehicle"]
+    vehicle = problem_vehicle(prob)
     condition = condition or vehicle.mission.cruise_condition
     pitch_deg = np.arange(-2.0, 14.0 + 1e-9, 1.0) if pitch_deg is None else np.asarray(pitch_deg)
-    names = [n for n, _ in condition_layout(vehicle).trim_variables(condition)]
-    pitch_names = [n for n in names if n.endswith("_pitch")]
+    variables = dict(condition_layout(vehicle).trim_variables(condition))
+    pitch_names = [n for n in variables if n.endswith("_pitch")]
     if not pitch_names:
         raise ValueError(
             f"lift_to_drag: condition '{condition}' has no pitch design variable "
-            f"(its trim variables are {names}); allowed: a steady wing-borne condition."
+            f"(its trim variables are {list(variables)}); allowed: a steady wing-borne "
+            "condition."
         )
     single = single_condition_problem(prob, condition, name=f"lift_to_drag_{condition}")
     pitch_name = pitch_names[0]
     base = np.asarray(single.get_val(pitch_name, units="deg"), dtype=float).copy()
-    position = dict(condition_layout(vehicle).trim_variables(condition))[pitch_name]
+    position = variables[pitch_name]
     cl, cd = [], []
     for pitch in pitch_deg:
         value = base.copy()

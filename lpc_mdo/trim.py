@@ -158,6 +158,11 @@ def _scratch_dir():
 _INHERITED_OPTIONS = ("rotor_polar", "wing_zero_lift_angle", "ks_rho", "structural_coupling")
 
 
+def problem_vehicle(prob):
+    """Return the Vehicle of a set-up LPC problem (``prob.vehicle``, else the model option)."""
+    return prob.vehicle if hasattr(prob, "vehicle") else prob.model.options["vehicle"]
+
+
 def single_condition_problem(prob, condition, name):
     """
     Return a set-up problem of one condition of ``prob``'s model with ``prob``'s design.
@@ -168,7 +173,7 @@ def single_condition_problem(prob, condition, name):
     """
     from lpc_mdo.problems import build_analysis_problem, copy_design_variables
 
-    vehicle = prob.vehicle if hasattr(prob, "vehicle") else prob.model.options["vehicle"]
+    vehicle = problem_vehicle(prob)
     single = build_analysis_problem(
         vehicle,
         name=name,
@@ -229,7 +234,7 @@ def trim(prob, conditions=None, tol=1e-10, max_iter=100, separate=True, report=N
     """
     from lpc_mdo.problems import copy_design_variables
 
-    vehicle = prob.vehicle if hasattr(prob, "vehicle") else prob.model.options["vehicle"]
+    vehicle = problem_vehicle(prob)
     conditions = list(prob.model.condition_names if conditions is None else conditions)
     prob.run_model()
     residuals, iterations, messages, worst, per_condition = {}, 0, [], 0.0, {}

@@ -169,15 +169,15 @@ def test_rotor_noise_mirrored_observers_hear_the_same():
     # A symmetric pair of hovering rotors (hubs at y = -/+3 m, equal speed and thrust) heard by
     # two observers mirrored about the x-z plane: the same levels (the far field of a hovering
     # rotor is axisymmetric about its axis, and the pair is its own mirror image), 1e-9 dB.
-    out = lpc.rotor_noise(
+    pair = dict(
         radius=[1.5, 1.5],
         rpm=[1200.0, 1200.0],
         thrust=[4000.0, 4000.0],
         chord=0.2,
         torque=[800.0, 800.0],
         hub_position=[[0.0, -3.0, 0.0], [0.0, 3.0, 0.0]],
-        observer_position=[[-40.0, 60.0, 70.0], [-40.0, -60.0, 70.0]],
     )
+    out = lpc.rotor_noise(**pair, observer_position=[[-40.0, 60.0, 70.0], [-40.0, -60.0, 70.0]])
     np.testing.assert_allclose(out["total_spl_a"][0], out["total_spl_a"][1], rtol=0, atol=1e-9)
     # Per rotor: observer 1 hears rotor 0 as observer 0 hears rotor 1 (the mirror swaps them).
     for key in ("tonal_spl_a", "broadband_oaspl_a"):
@@ -185,13 +185,5 @@ def test_rotor_noise_mirrored_observers_hear_the_same():
         np.testing.assert_allclose(out[key][0], out[key][1][::-1], rtol=0, atol=1e-9, err_msg=key)
         assert abs(out[key][0][0] - out[key][0][1]) > 0.01  # the two rotors differ
     # ... and a different observer does not (the test can fail).
-    other = lpc.rotor_noise(
-        radius=[1.5, 1.5],
-        rpm=[1200.0, 1200.0],
-        thrust=[4000.0, 4000.0],
-        chord=0.2,
-        torque=[800.0, 800.0],
-        hub_position=[[0.0, -3.0, 0.0], [0.0, 3.0, 0.0]],
-        observer_position=[[-40.0, 30.0, 70.0]],
-    )
+    other = lpc.rotor_noise(**pair, observer_position=[[-40.0, 30.0, 70.0]])
     assert abs(other["total_spl_a"][0] - out["total_spl_a"][0]) > 0.01

@@ -62,8 +62,9 @@ class StripFlowComp(om.ExplicitComponent):
                 for c in range(3):
                     rows.append(row)
                     cols.append((side * (ns + 1) + j + k) * 3 + c)
-        self._mesh_rows, self._mesh_cols = np.concatenate(rows), np.concatenate(cols)
-        self.declare_partials("strip_reynolds", "mesh", rows=self._mesh_rows, cols=self._mesh_cols)
+        self.declare_partials(
+            "strip_reynolds", "mesh", rows=np.concatenate(rows), cols=np.concatenate(cols)
+        )
 
     def _chords(self, mesh):
         edge = mesh[-1] - mesh[0]  # (ny, 3), leading to trailing edge
@@ -103,7 +104,8 @@ class LiftDependentProfileDragComp(om.ExplicitComponent):
     'Drag build-up'); the increment is what lift adds to the section's profile drag, the term
     a build-up of C_D0 plus the lattice's induced drag leaves out (Raymer, *Aircraft Design*,
     6th ed., sec. 12.6: the drag-due-to-lift includes the profile drag's variation with lift;
-    Torenbeek, *Synthesis of Subsonic Airplane Design*, app. F). It is >= 0 by construction.
+    Torenbeek, *Synthesis of Subsonic Airplane Design*, app. F). It is >= 0 up to the scan's
+    resolution (within 3e-7 of the minimum).
 
     Derivatives: d c_d/d alpha* at alpha*, and the envelope theorem for the minimum,
     d c_d,min/dRe = dc_d/dRe at the scanned minimizing angle (likewise M).
