@@ -18,6 +18,7 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.checks import RangeCheck, check_choice
+from lpc_mdo.components.weights.drive_system import DriveSystemMassComp
 from lpc_mdo.components.weights.gross_weight import GrossWeightComp
 from lpc_mdo.components.weights.item_placement import FuselageStationComp
 from lpc_mdo.components.weights.landing_gear import LandingGearMassComp
@@ -81,6 +82,7 @@ def vehicle_mass_items(vehicle=None):
         MassItem("battery"),
         MassItem("motor", count=num_motors(vehicle)),
         MassItem("rotor", count=num_motors(vehicle)),
+        MassItem("drive_system", count=num_motors(vehicle)),
         MassItem("power_electronics"),
         MassItem("payload"),
         *(MassItem(name) for name in SYSTEM_ITEMS),
@@ -187,6 +189,8 @@ def placeholder_calibration_inputs(vehicle=None):
       m = (pi/2) A_bar B_bar D**2 L/Q_sp with D = L/(L/D), at the initial ``motor_length`` design
       variables and the vehicle's motor constants; 10.681 kg per lift motor (L = 0.10 m) and
       36.050 kg for the pusher motor (L = 0.15 m) for the reference vehicle.
+    - ``motor_peak_torque`` (N m, one per rotor group): the peak torque of those motors (the
+      motor model's polynomial in the mass, docs theory/motor 'Sizing').
 
     """
     vehicle = _vehicle(vehicle)
@@ -212,7 +216,14 @@ def placeholder_calibration_inputs(vehicle=None):
         * length
         / motor.torque_density
     )
-    return {"wing_mass": wing_mass, "motor_mass": group_mass[motor_group_indices(vehicle)]}
+    from lpc_mdo.components.motor.parameters import MotorParameters
+
+    peak = np.polyval(MotorParameters().peak_torque_coefficients, group_mass)
+    return {
+        "wing_mass": wing_mass,
+        "motor_mass": group_mass[motor_group_indices(vehicle)],
+        "motor_peak_torque": peak,
+    }
 
 
 def _check_wing_model(name, value):
@@ -397,19 +408,30 @@ class WeightsGroup(om.Group):
             ],
         )
         self.add_subsystem(
+            "drive_system_model",
+            DriveSystemMassComp(
+                num_groups=len(rotor_group_blades(vehicle)), gear_ratio=vehicle.motor.gear_ratio
+            ),
+            promotes=["*"],
+        )
+        self.add_subsystem(
             "gross_weight", GrossWeightComp(num_motors=num_motors(vehicle)), promotes=["*"]
         )
         self.add_subsystem(
             "mass_properties",
-            MassPropertiesComp(items=list(vehicle_mass_items(vehicle))),
+            MassPropertiesComp(items=list(vehicle_mass_items(vehicle)), item_table=True),
             promotes_inputs=[
                 ("wing_secondary_cg", "wing_cg"),
                 ("furnishings_cg", "payload_cg"),
+                ("drive_system_cg", "motor_cg"),
                 "*",
             ],
             promotes_outputs=["*"],
         )
         self.connect("rotor_group_mass", "rotor_mass", src_indices=motor_group_indices(vehicle))
+        self.connect(
+            "drive_system_group_mass", "drive_system_mass", src_indices=motor_group_indices(vehicle)
+        )
 
         masses = vehicle.masses
         placeholder = placeholder_calibration_inputs(vehicle)
@@ -424,6 +446,7 @@ class WeightsGroup(om.Group):
             "cruise_speed": (vehicle.condition(vehicle.mission.cruise_condition).speed, "m/s"),
             "battery_cg": (vehicle.battery.cg, "m"),
             "motor_mass": (placeholder["motor_mass"], "kg"),
+            "motor_peak_torque": (placeholder["motor_peak_torque"], "N*m"),
             "motor_cg": (
                 [r.hub_position for r in vehicle.lift_rotors] + [vehicle.pusher.hub_position],
                 "m",

@@ -466,7 +466,8 @@ def test_write_report_on_a_folder(runs, tmp_path):
         distributions=(report.DistributionSpec("stress", ("stress",), x="stations"),),
         sweeps=(report.SweepSpec("sweep_c", "lower:c"),),
         trim_residuals=False,
-    )  # the test models have no LPC trim outputs
+        mass_properties=False,
+    )  # the test models have no LPC trim or mass-item outputs
     index = report.write_report(runs["root"], tmp_path / "report", spec)
     links = _links(index)
     assert links and all((index.parent / link).is_file() for link in links)
@@ -512,6 +513,7 @@ def test_write_report_lpc_defaults_skip_absent_parts(runs, tmp_path):
         "sweep_energy_density",
         "sweep_final_soc",
         "trim residuals of opt",
+        "mass properties of opt",
     ):
         assert f"- {part}:" in text, part
     # The test model records hover.electrical_power etc. under the LPC default names.

@@ -52,6 +52,7 @@ def test_gross_mass_is_the_sum_of_the_breakdown_items():
             "wing_secondary",
             "landing_gear",
             "rotor",
+            "drive_system",
             "flight_controls",
             "avionics",
             "electrical",
@@ -112,6 +113,8 @@ def test_vehicle_mass_properties():
     moment = sum(prob.get_val(f"{n}_mass") * prob.get_val(f"{n}_cg") for n in names)
     moment = moment + prob.get_val("motor_mass") @ prob.get_val("motor_cg")
     moment = moment + prob.get_val("rotor_mass") @ prob.get_val("rotor_cg")
+    # Gearboxes sit with their motors.
+    moment = moment + prob.get_val("drive_system_mass") @ prob.get_val("motor_cg")
     # Wing secondary structure at the wing cg, furnishings at the seats (payload cg).
     moment = moment + prob.get_val("wing_secondary_mass") * prob.get_val("wing_cg")
     moment = moment + prob.get_val("furnishings_mass") * prob.get_val("payload_cg")

@@ -134,12 +134,36 @@ def test_mass_properties_table_adds_up():
     moment = sum(r["mass"] * r["cg"] for r in rows[:-1])
     assert_near_equal(moment / vehicle["mass"], vehicle["cg"], 1e-12)
     text = format_mass_properties(rows)
-    assert "landing gear" in text and "vehicle" in text
+    assert "landing gear" in text and "drive system" in text and "vehicle" in text
+
+
+def test_report_reads_the_mass_properties_of_a_recorded_case(tmp_path):
+    # The report reads the item table from the final case (includes=['*'], as the problems
+    # record it): the same rows as the live problem.
+    from lpc_mdo.post.report import mass_properties_table
+
+    prob = om.Problem(reports=False)
+    prob.model.add_subsystem("weights", WeightsGroup(), promotes=["*"])
+    path = tmp_path / "cases.sql"
+    prob.add_recorder(om.SqliteRecorder(str(path)))
+    prob.recording_options["includes"] = ["*"]
+    prob.setup()
+    prob.run_model()
+    prob.record("final")
+    prob.cleanup()
+    live = mass_properties(prob)
+    table = mass_properties_table(om.CaseReader(str(path)))
+    assert [r[0] for r in table.rows] == [r["name"].replace("_", " ") for r in live]
+    for row, ref in zip(table.rows, live, strict=True):
+        assert_near_equal(row[1], ref["mass"], 1e-12)
+        assert_near_equal(np.array(row[3:6]), ref["cg"], 1e-12)
+        assert_near_equal(row[6], ref["inertia"][0, 0], 1e-12)
+    assert_near_equal(table.rows[-1][2], 100.0, 1e-12)
 
 
 @pytest.mark.xfail(
     strict=True,
-    reason="issue 17: the named items leave 689.7 kg (18.5 % of the 3723.99 kg target) "
+    reason="issue 17: the named items leave 545.7 kg (14.7 % of the 3723.99 kg target) "
     "unitemised (measured); the gap is not closed by a fitted factor",
 )
 def test_unitemised_mass_is_at_most_ten_percent():

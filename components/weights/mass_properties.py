@@ -8,6 +8,10 @@ import openmdao.api as om
 from lpc_mdo.checks import check_integer, check_range
 
 _EYE = np.eye(3)
+#: Columns of the ``item_mass_properties`` output: mass, cg and the item's inertia about the
+#: vehicle cg (the six tensor entries).
+ITEM_COLUMNS = ("mass", "x", "y", "z", "Ixx", "Iyy", "Izz", "Ixy", "Ixz", "Iyz")
+_TENSOR = ((0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2))
 
 
 def transport_inertia(r):
@@ -128,11 +132,21 @@ class MassPropertiesComp(om.ExplicitComponent):
         Centre of gravity of the set, body frame.
     inertia : float, (3, 3), kg*m**2
         Inertia tensor about ``cg``, body axes.
+    item_mass_properties : float, (K, 10), (only with ``item_table``)
+        One row per kind of body (the K ``items``), columns :data:`ITEM_COLUMNS`: its mass (kg),
+        its mass-weighted cg (m; the mean of its bodies' positions while its mass is 0) and its
+        contribution to ``inertia`` (kg m**2: I_i + m_i P(r_i) summed over its bodies, r_i from
+        the vehicle cg; the rows add up to ``inertia``). Recorded with the other outputs, so a
+        report reads the mass, cg and inertia of every item from a case file. Partials analytic:
+        through the vehicle cg every row depends on every mass and position
+        (dc/dm_j = r_j/m, dc/dp_j = m_j/m 1).
 
     Options
     -------
     items : list of MassItem
         Kinds of bodies, unique names.
+    item_table : bool
+        Add the ``item_mass_properties`` output. Default False.
 
     Raises
     ------
@@ -146,6 +160,9 @@ class MassPropertiesComp(om.ExplicitComponent):
             types=(list, tuple),
             check_valid=_check_items,
             desc="kinds of bodies (MassItem: name, count, own_inertia)",
+        )
+        self.options.declare(
+            "item_table", default=False, types=bool, desc="add the item_mass_properties output"
         )
 
     def setup(self):
@@ -176,6 +193,32 @@ class MassPropertiesComp(om.ExplicitComponent):
         self.add_output(
             "inertia", np.eye(3), units="kg*m**2", desc="inertia tensor about the cg, body axes"
         )
+
+        if self.options["item_table"]:
+            self.add_output(
+                "item_mass_properties",
+                np.zeros((len(items), len(ITEM_COLUMNS))),
+                desc="per item: mass kg, cg m, inertia about the vehicle cg kg*m**2 "
+                "(columns " + ", ".join(ITEM_COLUMNS) + ")",
+            )
+            ncol = len(ITEM_COLUMNS)
+            # Dense in every mass and position (through the vehicle cg).
+            self.declare_partials(
+                "item_mass_properties", [f"{i.name}_{v}" for i in items for v in ("mass", "cg")]
+            )
+            for k, item in enumerate(items):
+                if item.own_inertia:
+                    # Row k's six tensor entries from the body's (a, b) input entries.
+                    rows = np.tile(k * ncol + 4 + np.arange(6), item.count)
+                    cols = (np.arange(item.count)[:, None] * 9
+                            + np.array([3 * a + b for a, b in _TENSOR])).ravel()  # fmt: skip
+                    self.declare_partials(
+                        "item_mass_properties",
+                        f"{item.name}_inertia",
+                        rows=rows,
+                        cols=cols,
+                        val=1.0,
+                    )
 
         for item in items:
             c, name = item.count, item.name
@@ -238,6 +281,25 @@ class MassPropertiesComp(om.ExplicitComponent):
         outputs["total_mass"] = total
         outputs["cg"] = cg
         outputs["inertia"] = inertia
+        if self.options["item_table"]:
+            outputs["item_mass_properties"] = self._item_table(inputs, masses, points, cg)
+
+    def _item_table(self, inputs, masses, points, cg):
+        """Rows of ``item_mass_properties`` (see the class docstring)."""
+        items = self.options["items"]
+        table = np.zeros((len(items), len(ITEM_COLUMNS)), dtype=masses.dtype)
+        p, _ = transport_inertia(points - cg)
+        for k, item in enumerate(items):
+            sl = self._slices[item.name]
+            m, pts = masses[sl], points[sl]
+            total = np.sum(m)
+            table[k, 0] = total
+            table[k, 1:4] = m @ pts / total if total.real > 0.0 else np.mean(pts, axis=0)
+            inertia = np.einsum("i,iab->ab", m, p[sl])
+            if item.own_inertia:
+                inertia = inertia + inputs[f"{item.name}_inertia"].reshape(-1, 3, 3).sum(axis=0)
+            table[k, 4:] = [inertia[a, b] for a, b in _TENSOR]
+        return table
 
     def compute_partials(self, inputs, partials):
         masses, points = self._gather(inputs)
@@ -254,4 +316,51 @@ class MassPropertiesComp(om.ExplicitComponent):
             dinertia = masses[sl, None, None, None] * dp[sl]
             partials["inertia", f"{name}_cg"] = dinertia.transpose(1, 2, 0, 3).reshape(
                 9, 3 * item.count
+            )
+        if self.options["item_table"]:
+            self._item_table_partials(partials, masses, points, total, r, p, dp)
+
+    def _item_table_partials(self, partials, masses, points, total, r, p, dp):
+        """Set the partials of ``item_mass_properties`` (analytic; see the class docstring)."""
+        items = self.options["items"]
+        ncol = len(ITEM_COLUMNS)
+        ia, ib = np.array(_TENSOR).T
+        blocks = {}
+        for item in items:
+            c = item.count
+            blocks[item.name, "mass"] = np.zeros((len(items), ncol, c))
+            blocks[item.name, "cg"] = np.zeros((len(items), ncol, c, 3))
+        for k, item in enumerate(items):
+            sl = self._slices[item.name]
+            m, pts = masses[sl], points[sl]
+            mk = np.sum(m)
+            dm = blocks[item.name, "mass"][k]
+            dcg = blocks[item.name, "cg"][k]
+            dm[0] = 1.0
+            if mk > 0.0:
+                cg_k = m @ pts / mk
+                dm[1:4] = ((pts - cg_k) / mk).T
+                dcg[1:4] = (m / mk)[None, :, None] * _EYE[:, None, :]
+            else:
+                dcg[1:4] = _EYE[:, None, :] / item.count
+            # Own bodies: d(m_i P(r_i)) at fixed vehicle cg.
+            dm[4:] += p[sl][:, ia, ib].T
+            dcg[4:] += (m[:, None, None, None] * dp[sl])[:, ia, ib, :].transpose(1, 0, 2)
+            # Every body through the vehicle cg: d I_k / d c = -G_k, G_k = dP(S_k),
+            # S_k = sum_{i in k} m_i r_i (dP is linear in r).
+            s_k = m @ r[sl]
+            g_k = transport_inertia(s_k)[1][ia, ib, :]  # (6, 3)
+            for other in items:
+                so = self._slices[other.name]
+                # dc/dm_j = r_j / total, dc/dp_j = m_j / total 1.
+                blocks[other.name, "mass"][k, 4:] -= g_k @ r[so].T / total
+                blocks[other.name, "cg"][k, 4:] -= (
+                    g_k[:, None, :] * (masses[so] / total)[None, :, None]
+                )
+        for item in items:
+            partials["item_mass_properties", f"{item.name}_mass"] = blocks[
+                item.name, "mass"
+            ].reshape(len(items) * ncol, item.count)
+            partials["item_mass_properties", f"{item.name}_cg"] = blocks[item.name, "cg"].reshape(
+                len(items) * ncol, 3 * item.count
             )

@@ -50,65 +50,57 @@ def format_mass_breakdown(breakdown):
     return "\n".join(lines)
 
 
-def mass_properties(prob, vehicle=None, prefix=""):
+def mass_properties(source, vehicle=None, prefix=""):
     """
-    Return the mass, cg and inertia of every mass item of a live problem, and the vehicle's.
+    Return the mass, cg and inertia of every mass item of a problem or a recorded case.
 
-    Reads the inputs of the :class:`~lpc_mdo.components.weights.mass_properties.MassPropertiesComp`
-    of the :class:`~lpc_mdo.groups.weights.WeightsGroup` (promoted names, ``prefix`` as in
-    :func:`mass_breakdown`). Each row's inertia is its contribution to the vehicle's inertia
-    about the vehicle cg: its own inertia (items with one) plus m ((r.r) 1 - r r^T), r = p - cg
-    (parallel-axis theorem, docs theory/weights 'Mass properties'); the rows add up to the
-    vehicle's tensor.
+    Reads the outputs ``{prefix}item_mass_properties`` (one row per kind of body of
+    :func:`lpc_mdo.groups.weights.vehicle_mass_items`, in that order; bodies of one kind, e.g. 9
+    motors, summed), ``{prefix}total_mass``, ``{prefix}cg`` and ``{prefix}inertia`` of the
+    :class:`~lpc_mdo.groups.weights.WeightsGroup`. Each row's inertia is its contribution to the
+    vehicle's inertia about the vehicle cg: its own inertia (items with one) plus
+    m ((r.r) 1 - r r^T), r = p - cg (parallel-axis theorem, docs theory/weights 'Mass
+    properties'); the rows add up to the vehicle's tensor. Outputs only, so a final case
+    recorded with ``includes=['*']`` (as :func:`lpc_mdo.problems` records it) works as well as
+    a live problem.
 
     Parameters
     ----------
-    prob : om.Problem
-        A run problem (inputs are read, so not a driver case).
+    source : om.Problem or Case
+        Anything with ``get_val(name, units=...)``.
     vehicle : Vehicle or None
-        Unused (the items are the MassPropertiesComp's own); kept for symmetry.
+        The vehicle whose item names label the rows; None = the reference vehicle.
     prefix : str
         Path of the WeightsGroup with a trailing dot; '' when promoted.
 
     Returns
     -------
     list of dict
-        One per body kind (rows with several bodies, e.g. 9 motors, are summed): ``name``,
-        ``mass`` (kg), ``cg`` (3, m; mass-weighted), ``inertia`` (3x3, kg m^2 about the
-        vehicle cg); the last row is ``name='vehicle'``.
+        One per kind of body: ``name``, ``mass`` (kg), ``cg`` (3, m; mass-weighted),
+        ``inertia`` (3x3, kg m^2 about the vehicle cg); the last row is ``name='vehicle'``.
     """
-    from lpc_mdo.components.weights.mass_properties import MassPropertiesComp
+    from lpc_mdo.components.weights.mass_properties import ITEM_COLUMNS
+    from lpc_mdo.groups.weights import vehicle_mass_items
 
-    group = prob.model._get_subsystem(prefix.rstrip(".")) if prefix else prob.model
-    comp = next(
-        s
-        for s in group.system_iter(recurse=True, typ=MassPropertiesComp)
-        if s.pathname.endswith("mass_properties")
-    )
-    path = comp.pathname
-
-    cg = np.asarray(prob.get_val(f"{prefix}cg", units="m"), float).ravel()
-    rows = []
-    for item in comp.options["items"]:
-        mass = np.asarray(prob.get_val(f"{path}.{item.name}_mass", units="kg"), float).ravel()
-        points = np.asarray(prob.get_val(f"{path}.{item.name}_cg", units="m"), float).reshape(
-            item.count, 3
+    table = np.asarray(source.get_val(f"{prefix}item_mass_properties"), float)
+    items = vehicle_mass_items(vehicle)
+    if table.shape != (len(items), len(ITEM_COLUMNS)):
+        raise ValueError(
+            f"'{prefix}item_mass_properties' has shape {table.shape}; the vehicle has "
+            f"{len(items)} mass items, so ({len(items)}, {len(ITEM_COLUMNS)}) is expected: "
+            "pass the vehicle of the problem."
         )
-        r = points - cg
-        inertia = np.einsum("i,iab->ab", mass, np.einsum("ij,ij->i", r, r)[:, None, None]
-                            * np.eye(3) - r[:, :, None] * r[:, None, :])  # fmt: skip
-        if item.own_inertia:
-            own = prob.get_val(f"{path}.{item.name}_inertia", units="kg*m**2")
-            inertia = inertia + np.asarray(own, float).reshape(item.count, 3, 3).sum(axis=0)
-        total = float(mass.sum())
-        item_cg = mass @ points / total if total > 0.0 else points.mean(axis=0)
-        rows.append({"name": item.name, "mass": total, "cg": item_cg, "inertia": inertia})
+    rows = []
+    for item, row in zip(items, table, strict=True):
+        ixx, iyy, izz, ixy, ixz, iyz = row[4:]
+        inertia = np.array([[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]])
+        rows.append({"name": item.name, "mass": row[0], "cg": row[1:4], "inertia": inertia})
     rows.append(
         {
             "name": "vehicle",
-            "mass": float(np.asarray(prob.get_val(f"{prefix}total_mass", units="kg")).ravel()[0]),
-            "cg": cg,
-            "inertia": np.asarray(prob.get_val(f"{prefix}inertia", units="kg*m**2"), float),
+            "mass": float(np.asarray(source.get_val(f"{prefix}total_mass", units="kg")).ravel()[0]),
+            "cg": np.asarray(source.get_val(f"{prefix}cg", units="m"), float).ravel(),
+            "inertia": np.asarray(source.get_val(f"{prefix}inertia", units="kg*m**2"), float),
         }
     )
     return rows

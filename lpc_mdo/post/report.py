@@ -303,6 +303,7 @@ class ReportSpec:
     distributions: tuple | None = None
     sweeps: tuple = LPC_SWEEPS
     trim_residuals: bool = True
+    mass_properties: bool = True
 
     def __post_init__(self):
         from lpc_mdo.vehicle import reference_vehicle
@@ -333,6 +334,7 @@ class ReportSpec:
             distributions=(),
             sweeps=(),
             trim_residuals=False,
+            mass_properties=False,
         )
         return cls(**{**off, **overrides})
 
@@ -489,6 +491,14 @@ def _run_section(index, label, cr, spec):
     if spec.trim_residuals:
         _try(index, f"trim residuals of {label}", trim)
 
+    def mass_properties():
+        table = mass_properties_table(cr, spec.vehicle)
+        index.add("**Mass properties** (mass, cg and inertia per item), final case:", "")
+        index.table(table, f"mass_properties_{slug}")
+
+    if spec.mass_properties:
+        _try(index, f"mass properties of {label}", mass_properties)
+
     if tables.design_var_metadata(cr):
         _try(index, f"design variables of {label}", design_variables)
 
@@ -503,6 +513,44 @@ def _run_section(index, label, cr, spec):
 
     index.add("**Convergence**:", "")
     _try(index, f"convergence of {label}", convergence)
+
+
+class _RecordedValues:
+    """``get_val`` over a case file's final values (:func:`tables.read_value`)."""
+
+    def __init__(self, cr):
+        self.cr = cr
+
+    def get_val(self, name, units=None):
+        return tables.read_value(self.cr, name, units)
+
+
+def mass_properties_table(cr, vehicle=None):
+    """
+    Return the mass, cg and inertia per mass item of a run's final case as a :class:`Table`.
+
+    The rows of :func:`lpc_mdo.api.weights.mass_properties` (the ``item_mass_properties``
+    output of the WeightsGroup, recorded by ``prob.record('final')``); inertia about the
+    vehicle cg, the rows add up to the vehicle's.
+    """
+    from lpc_mdo.api.weights import mass_properties
+
+    rows = mass_properties(_RecordedValues(cr), vehicle)
+    total = rows[-1]["mass"]
+    table = tables.Table(
+        columns=["item", "mass (kg)", "share (%)", "x (m)", "y (m)", "z (m)",
+                 "Ixx (kg m^2)", "Iyy (kg m^2)", "Izz (kg m^2)", "Ixz (kg m^2)"],
+        title="Mass properties",
+        notes=["Body frame (x forward, z down); inertia of each item about the vehicle cg "
+               "(parallel-axis theorem), the rows add up to the vehicle's."],
+    )  # fmt: skip
+    for row in rows:
+        i = row["inertia"]
+        table.rows.append(
+            [row["name"].replace("_", " "), row["mass"], 100.0 * row["mass"] / total,
+             *(float(v) for v in row["cg"]), i[0, 0], i[1, 1], i[2, 2], i[0, 2]]
+        )  # fmt: skip
+    return table
 
 
 def _recorded(cr, names, any_of=False):
