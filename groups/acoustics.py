@@ -26,7 +26,7 @@ from lpc_mdo.components.acoustics.loads import (
     max_load_harmonics,
 )
 from lpc_mdo.components.acoustics.observer import ObserverGeometryComp, ObserverPositionComp
-from lpc_mdo.components.acoustics.propagation import SphericalPropagationComp
+from lpc_mdo.components.acoustics.propagation import AbsorptionLossComp, SphericalPropagationComp
 from lpc_mdo.components.acoustics.thickness import BarryMagliozziThicknessComp
 from lpc_mdo.components.acoustics.tonal import LowsonLoadingNoiseComp, SearsGustLoadsComp
 from lpc_mdo.components.acoustics.total import TotalNoiseComp
@@ -36,6 +36,13 @@ __all__ = ["RotorNoiseGroup", "HOVER_NOISE_LIMIT_DBA"]
 
 #: Paper hover noise constraint: total A-weighted SPL <= 70 dBA at the observer.
 HOVER_NOISE_LIMIT_DBA = 70.0
+
+#: Inputs with one row per rotor (first axis num_rotors); with several observers each
+#: rotor-observer pair takes its rotor's row.
+PER_ROTOR_INPUTS = (
+    "radius", "rpm", "thrust", "torque", "thrust_per_span", "drag_per_span", "inflow_angle",
+    "chord", "thickness_to_chord", "hub_position", "thrust_direction",
+)  # fmt: skip
 
 
 class RotorNoiseGroup(om.Group):
@@ -49,7 +56,10 @@ class RotorNoiseGroup(om.Group):
     -> [``hover_loads`` (HoverLoadDistributionComp; only if load_input = 'totals')]
     -> ``fourier`` (LoadFourierComp, eqs. 19-20) -> [``sears`` (SearsGustLoadsComp)]
     -> ``loading`` (LowsonLoadingNoiseComp, eq. 21) · ``thickness`` (BarryMagliozziThicknessComp)
-    · ``broadband`` (GillLeeBroadbandComp, eq. 22)
+    -> ``tonal_absorption`` (AtmosphericAbsorptionComp at each harmonic) -> ``tonal_propagation``
+    (AbsorptionLossComp: ISO 9613-1 absorption over the hub-observer path)
+    · ``broadband`` (GillLeeBroadbandComp, eq. 22) -> [``band_absorption``,
+    ``broadband_propagation``: spherical spreading and absorption from the reference distance]
     -> ``tonal_weighting``/``broadband_weighting`` (AWeightingComp, docs theory/acoustics
     'A-weighting') -> ``total_a`` and ``total`` (TotalNoiseComp, docs theory/acoustics 'Total
     noise').
@@ -131,6 +141,13 @@ class RotorNoiseGroup(om.Group):
     """
 
     def initialize(self):
+        self.options.declare(
+            "num_observers",
+            default=1,
+            types=int,
+            lower=1,
+            desc="Number of observers; > 1 evaluates every rotor-observer pair in one pass",
+        )
         self.options.declare(
             "broadband_reference_distance",
             default=100.0,
@@ -243,6 +260,7 @@ class RotorNoiseGroup(om.Group):
     def setup(self):
         opt = self.options
         nr, nrad, naz = opt["num_rotors"], opt["num_radial"], opt["num_azimuth"]
+        no = opt["num_observers"]
         nm, nb = opt["num_harmonics"], opt["num_bands"]
         L = opt["num_load_harmonics"]
         if L is None:
@@ -261,6 +279,12 @@ class RotorNoiseGroup(om.Group):
                 f"needs num_azimuth = 1, got {naz}."
             )
         blades = blade_counts(opt["num_blades"], nr)
+        rotation = opt["rotation_direction"]
+        if rotation is not None and len(rotation) != nr:
+            raise ValueError(
+                f"{self.msginfo}: option 'rotation_direction' must hold num_rotors = {nr} "
+                f"entries of +1 or -1, got {rotation!r}."
+            )
         radial = {
             "num_radial": nrad,
             "radial_stations": opt["radial_stations"],
@@ -272,31 +296,46 @@ class RotorNoiseGroup(om.Group):
         )  # validate once, early
         self.band_frequencies = nominal_third_octave_bands(nb, float(opt["lowest_band_frequency"]))
         path = opt["loading_path"]
-        common = {"num_rotors": nr, "num_blades": tuple(int(b) for b in blades)}
-
         if opt["observer_input"] == "relative":
             self.add_subsystem(
-                "observer_position", ObserverPositionComp(num_rotors=nr), promotes=["*"]
+                "observer_position",
+                ObserverPositionComp(num_rotors=nr, num_observers=no),
+                promotes=["*"] if no == 1 else ["hub_position", "observer_*"],
             )
-        self.add_subsystem(
+        # Several observers: every rotor-observer pair is one "rotor" of the components below,
+        # observer-major (row j nr + k is rotor k heard by observer j), in the subgroup 'pairs'
+        # whose per-rotor inputs take the rotors' values (configure). One pass, vectorized.
+        target = self if no == 1 else self.add_subsystem("pairs", om.Group())
+        nr_pairs = nr * no
+        blades = tuple(int(b) for b in blades) * no
+        common = {"num_rotors": nr_pairs, "num_blades": blades}
+        self._pair_setup = (target, nr, no)
+
+        target.add_subsystem(
             "geometry",
-            ObserverGeometryComp(num_rotors=nr, rotation_direction=opt["rotation_direction"]),
+            ObserverGeometryComp(
+                num_rotors=nr_pairs,
+                rotation_direction=None if rotation is None else tuple(rotation) * no,
+                observer_per_rotor=no > 1,
+            ),
             promotes=["*"],
         )
         if opt["load_input"] == "totals":
-            self.add_subsystem(
+            target.add_subsystem(
                 "hover_loads", HoverLoadDistributionComp(**common, **radial), promotes=["*"]
             )
-        self.add_subsystem(
+        target.add_subsystem(
             "fourier",
-            LoadFourierComp(num_rotors=nr, num_radial=nrad, num_azimuth=naz, num_load_harmonics=L),
+            LoadFourierComp(
+                num_rotors=nr_pairs, num_radial=nrad, num_azimuth=naz, num_load_harmonics=L
+            ),
             promotes=["*"],
         )
         if path != "unsteady":
-            self.add_subsystem(
+            target.add_subsystem(
                 "sears",
                 SearsGustLoadsComp(
-                    num_rotors=nr,
+                    num_rotors=nr_pairs,
                     num_azimuth=naz,
                     num_gust_harmonics=opt["num_gust_harmonics"],
                     gust_factor=opt["gust_factor"],
@@ -304,7 +343,7 @@ class RotorNoiseGroup(om.Group):
                 ),
                 promotes=["*"],
             )
-        self.add_subsystem(
+        target.add_subsystem(
             "loading",
             LowsonLoadingNoiseComp(
                 **common,
@@ -314,14 +353,32 @@ class RotorNoiseGroup(om.Group):
                 loading_path=path,
                 **radial,
             ),
-            promotes=["*"],
+            promotes=[("loading_spl", "loading_spl_free"), "*"],
         )
-        self.add_subsystem(
+        target.add_subsystem(
             "thickness",
             BarryMagliozziThicknessComp(**common, num_harmonics=nm, **radial),
-            promotes=["*"],
+            promotes=[("thickness_spl", "thickness_spl_free"), "*"],
         )
-        self.add_subsystem(
+        # ISO 9613-1 absorption of each harmonic over the hub-observer path (docs
+        # theory/acoustics 'Propagation').
+        target.add_subsystem(
+            "tonal_absorption",
+            AtmosphericAbsorptionComp(shape=(nr_pairs, nm)),
+            promotes=[
+                ("frequency", "harmonic_frequency"),
+                ("absorption_coefficient", "harmonic_absorption_coefficient"),
+                "*",
+            ],
+        )
+        target.add_subsystem(
+            "tonal_propagation",
+            AbsorptionLossComp(
+                num_rotors=nr_pairs, width=nm, names=["loading_spl", "thickness_spl"]
+            ),
+            promotes=[("absorption_coefficient", "harmonic_absorption_coefficient"), "*"],
+        )
+        target.add_subsystem(
             "broadband",
             GillLeeBroadbandComp(
                 **common,
@@ -336,15 +393,15 @@ class RotorNoiseGroup(om.Group):
             else [("broadband_spl", "broadband_source_spl"), "*"],
         )
         if opt["broadband_reference_distance"] is not None:
-            self.add_subsystem(
+            target.add_subsystem(
                 "band_absorption",
                 AtmosphericAbsorptionComp(shape=(nb,), frequencies=self.band_frequencies),
                 promotes=[("absorption_coefficient", "band_absorption_coefficient"), "*"],
             )
-            self.add_subsystem(
+            target.add_subsystem(
                 "broadband_propagation",
                 SphericalPropagationComp(
-                    num_rotors=nr,
+                    num_rotors=nr_pairs,
                     num_bands=nb,
                     reference_distance=opt["broadband_reference_distance"],
                     source_name="broadband_source_spl",
@@ -352,23 +409,42 @@ class RotorNoiseGroup(om.Group):
                 ),
                 promotes=[("absorption_coefficient", "band_absorption_coefficient"), "*"],
             )
-        self.add_subsystem(
+        target.add_subsystem(
             "tonal_weighting",
-            AWeightingComp(shape=(nr, nm), names=["loading_spl", "thickness_spl"]),
+            AWeightingComp(shape=(nr_pairs, nm), names=["loading_spl", "thickness_spl"]),
             promotes=[("frequency", "harmonic_frequency"), "*"],
         )
-        self.add_subsystem(
+        target.add_subsystem(
             "broadband_weighting",
             AWeightingComp(
-                shape=(nr, nb), names=["broadband_spl"], frequencies=self.band_frequencies
+                shape=(nr_pairs, nb), names=["broadband_spl"], frequencies=self.band_frequencies
             ),
             promotes=["*"],
         )
-        total_sizes = {"num_rotors": nr, "num_harmonics": nm, "num_bands": nb}
-        self.add_subsystem("total_a", TotalNoiseComp(**total_sizes, weighting="A"), promotes=["*"])
-        self.add_subsystem("total", TotalNoiseComp(**total_sizes, weighting="none"), promotes=["*"])
+        total_sizes = {
+            "num_rotors": nr_pairs,
+            "num_harmonics": nm,
+            "num_bands": nb,
+            "num_observers": no,
+        }
+        target.add_subsystem(
+            "total_a", TotalNoiseComp(**total_sizes, weighting="A"), promotes=["*"]
+        )
+        target.add_subsystem(
+            "total", TotalNoiseComp(**total_sizes, weighting="none"), promotes=["*"]
+        )
 
-        # Inputs shared by several components: one default value and unit each.
+        if no == 1:
+            self._set_input_defaults()
+
+    def _set_input_defaults(self):
+        """
+        Set one default value and unit of each input shared by several components.
+
+        At the rotors' shapes; returns the names set.
+        """
+        opt = self.options
+        nr, nrad, naz = opt["num_rotors"], opt["num_radial"], opt["num_azimuth"]
         self.set_input_defaults("radius", np.full(nr, 1.524), units="m")
         self.set_input_defaults("rpm", np.full(nr, 1200.0), units="rpm")
         self.set_input_defaults("chord", np.full((nr, nrad), 0.2), units="m")
@@ -376,5 +452,49 @@ class RotorNoiseGroup(om.Group):
         self.set_input_defaults("speed_of_sound", SEA_LEVEL_SPEED_OF_SOUND, units="m/s")
         self.set_input_defaults("thrust", np.full(nr, 5000.0), units="N")
         self.set_input_defaults("hub_position", np.zeros((nr, 3)), units="m")
-        if opt["load_input"] == "sectional" and path != "unsteady":
+        names = {"radius", "rpm", "chord", "density", "speed_of_sound", "thrust", "hub_position"}
+        if opt["load_input"] == "sectional" and opt["loading_path"] != "unsteady":
             self.set_input_defaults("inflow_angle", np.full((nr, nrad, naz), 0.1), units="rad")
+            names.add("inflow_angle")
+        return names
+
+    def configure(self):
+        """Several observers: the pairs' per-rotor inputs take the rotors' values."""
+        target, nr, no = self._pair_setup
+        if no == 1:
+            return
+        meta = target.get_io_metadata(iotypes="input", metadata_keys=["val", "units"])
+        outputs = {m["prom_name"] for m in target.get_io_metadata(iotypes="output").values()}
+        # Inputs the pairs' own outputs feed (e.g. the hover load shape) stay inside.
+        inputs = {m["prom_name"]: m for m in meta.values() if m["prom_name"] not in outputs}
+        rotor_rows = np.tile(np.arange(nr), no)  # pair j nr + k <- rotor k
+        observer_rows = np.repeat(np.arange(no), nr)  # pair j nr + k <- observer j
+        defaults = {}  # the components' own defaults, at the rotors' (observers') shapes
+        for name, m in sorted(inputs.items()):
+            if name == "observer_position":
+                if self.options["observer_input"] == "relative":
+                    self.connect(
+                        "observer_position",
+                        "pairs.observer_position",
+                        src_indices=om.slicer[observer_rows, :],
+                    )
+                    continue
+                rows, src_shape = observer_rows, (no, 3)
+                defaults[name] = (m["val"][::nr], m["units"])
+            elif name in PER_ROTOR_INPUTS:
+                rows, src_shape = rotor_rows, (nr,) + m["val"].shape[1:]
+                defaults[name] = (m["val"][:nr], m["units"])
+            else:
+                self.promotes("pairs", inputs=[name])
+                continue
+            self.promotes(
+                "pairs",
+                inputs=[name],
+                src_indices=om.slicer[(rows,) + (slice(None),) * (len(src_shape) - 1)],
+                src_shape=src_shape,
+            )
+        self.promotes("pairs", outputs=["*"])
+        set_here = self._set_input_defaults()
+        for name, (value, units) in defaults.items():
+            if name not in set_here:
+                self.set_input_defaults(name, value, units=units)

@@ -4,6 +4,7 @@ import numpy as np
 import openmdao.api as om
 import pytest
 from openmdao.utils.assert_utils import (
+    assert_check_partials,
     assert_check_totals,
     assert_near_equal,
     assert_no_approx_partials,
@@ -156,7 +157,9 @@ def test_group_totals(options):
     assert_check_totals(totals, atol=1e-8, rtol=1e-7)
     assert_no_approx_partials(prob.model, method="fd")
     # ISO 9613-1 absorption uses complex step by design (components/acoustics/absorption.py).
-    assert_no_approx_partials(prob.model, method="cs", excludes=["band_absorption"])
+    assert_no_approx_partials(
+        prob.model, method="cs", excludes=["band_absorption", "tonal_absorption"]
+    )
 
 
 def test_rotor_noise_wrapper_matches_group_and_limit():
@@ -211,3 +214,60 @@ def test_bad_inputs_raise_clear_errors():
         om.Problem(RotorNoiseGroup(num_azimuth=4, num_load_harmonics=2), reports=False).setup()
     with pytest.raises(ValueError, match="num_blades"):
         om.Problem(RotorNoiseGroup(num_rotors=2, num_blades=(2, 3, 4)), reports=False).setup()
+
+
+@pytest.mark.parametrize("observer_input", ["relative", "position"])
+def test_several_observers_in_one_pass(observer_input):
+    # num_observers = 3: one evaluation over the rotor-observer pairs gives, for every
+    # observer, the levels of a one-observer group there (1e-12), in forward flight with
+    # azimuthal loads (both loading paths), and its totals check against complex step.
+    nr, naz = 2, 5
+    data = _rotor_data(nr, seed=4)
+    for name in ("thrust_per_span", "drag_per_span", "inflow_angle"):
+        data[name] = data[name] * (1.0 + 0.1 * np.cos(2 * np.pi * np.arange(naz) / naz))
+    data["flight_velocity"] = np.array([20.0, 1.0, -2.0])
+    options = {"num_azimuth": naz, "num_harmonics": 2, "num_bands": 12,
+               "observer_input": observer_input, "rotation_direction": (1, -1)}  # fmt: skip
+    if observer_input == "relative":
+        observers = {
+            "observer_distance": np.array([100.0, 400.0, 40.0]),
+            "observer_elevation": np.array([0.7, 0.2, -0.3]),
+            "observer_azimuth": np.array([3.0, 0.5, -1.5]),
+        }
+    else:
+        observers = {"observer_position": np.array([[-60.0, 10.0, 70.0], [200.0, -50.0, 30.0],
+                                                    [0.0, 80.0, -20.0]])}  # fmt: skip
+    many = _problem(nr, {**data, **observers}, num_observers=3, **options)
+    for j in range(3):
+        one = _problem(nr, {**data, **{k: v[j] for k, v in observers.items()}}, **options)
+        assert_near_equal(many.get_val("total_spl_a")[j], one.get_val("total_spl_a")[0], 1e-12)
+        for name in ("rotor_spl_a", "tonal_spl", "broadband_oaspl", "distance"):
+            assert_near_equal(many.get_val(name)[j * nr : (j + 1) * nr], one.get_val(name), 1e-12)
+    wrt = ["radius", "rpm", "thrust", "chord", "hub_position", "thrust_per_span",
+           "drag_per_span", "inflow_angle", "flight_velocity", *observers]  # fmt: skip
+    totals = many.check_totals(
+        of=["total_spl_a", "rotor_spl"], wrt=wrt, method="cs", out_stream=None
+    )
+    assert_check_totals(totals, atol=1e-8, rtol=1e-7)
+
+
+def test_total_comp_per_observer():
+    # Rows are rotor-observer pairs, observer-major: each observer's total is the energetic sum
+    # of its own rows (closed form), with partials.
+    levels = np.array([[60.0, 50.0], [55.0, 40.0], [70.0, 30.0], [45.0, 65.0]])
+    prob = om.Problem(reports=False)
+    prob.model.add_subsystem(
+        "t",
+        TotalNoiseComp(num_rotors=4, num_harmonics=2, num_bands=2, num_observers=2),
+        promotes=["*"],
+    )
+    prob.setup(force_alloc_complex=True)
+    prob.set_val("loading_spl_a", levels)
+    prob.set_val("thickness_spl_a", levels - 10.0)
+    prob.set_val("broadband_spl_a", levels - 5.0)
+    prob.run_model()
+    rows = [energetic_sum(np.concatenate([v, v - 10.0, v - 5.0])) for v in levels]
+    expected = [energetic_sum(rows[:2]), energetic_sum(rows[2:])]
+    assert_near_equal(prob.get_val("total_spl_a"), expected, 1e-12)
+    data = prob.check_partials(method="cs", compact_print=True, out_stream=None)
+    assert_check_partials(data, atol=1e-10, rtol=1e-10)

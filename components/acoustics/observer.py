@@ -27,13 +27,14 @@ def _cross_matrix(v):
 
 class ObserverPositionComp(om.ExplicitComponent):
     """
-    Observer position in the body frame from distance, elevation and azimuth about the rotors.
+    Observer positions in the body frame from distance, elevation and azimuth about the rotors.
 
-    The observer sits at ``observer_distance`` from the centroid of the rotor hubs, at
-    ``observer_elevation`` below the body x-y plane (the lift-rotor plane in hover) and at
-    ``observer_azimuth`` about the body z axis measured from +x (forward) towards +y (right):
+    Observer j sits at ``observer_distance[j]`` from the centroid of the rotor hubs, at
+    ``observer_elevation[j]`` below the body x-y plane (the lift-rotor plane in hover) and at
+    ``observer_azimuth[j]`` about the body z axis measured from +x (forward) towards +y (right):
 
-        x_o = mean_k(x_h,k) + d (cos e cos az, cos e sin az, sin e)   (body frame, z down)
+        x_o,j = mean_k(x_h,k) + d_j (cos e_j cos az_j, cos e_j sin az_j, sin e_j)
+        (body frame, z down)
 
     Defaults are the paper's hover observer, 100 m away and 45 deg below the rotor plane
     (docs theory/acoustics 'Observer and constraint'), placed aft of the vehicle (azimuth 180 deg)
@@ -43,29 +44,34 @@ class ObserverPositionComp(om.ExplicitComponent):
     ------
     hub_position : float, (num_rotors, 3), m
         Rotor hub positions in the body frame (x forward, y right, z down, origin at the nose).
-    observer_distance : float, (1,), m
-        Distance from the hub centroid to the observer (> 0). Default 100 m.
-    observer_elevation : float, (1,), rad
+    observer_distance : float, (num_observers,), m
+        Distance from the hub centroid to each observer (> 0). Default 100 m.
+    observer_elevation : float, (num_observers,), rad
         Angle below the body x-y plane, in [-pi/2, pi/2]. Default 45 deg.
-    observer_azimuth : float, (1,), rad
+    observer_azimuth : float, (num_observers,), rad
         Azimuth from +x towards +y. Default 180 deg (aft).
 
     Outputs
     -------
-    observer_position : float, (3,), m
-        Observer position in the body frame.
+    observer_position : float, (3,) or (num_observers, 3) if num_observers > 1, m
+        Observer positions in the body frame.
 
     Options
     -------
     num_rotors : int
         Number of rotors (>= 1).
+    num_observers : int
+        Number of observers (>= 1). Default 1.
     """
 
     def initialize(self):
         self.options.declare("num_rotors", default=1, types=int, lower=1, desc="Number of rotors")
+        self.options.declare(
+            "num_observers", default=1, types=int, lower=1, desc="Number of observers"
+        )
 
     def setup(self):
-        nr = self.options["num_rotors"]
+        nr, no = self.options["num_rotors"], self.options["num_observers"]
         self.add_input(
             "hub_position",
             val=np.zeros((nr, 3)),
@@ -74,39 +80,47 @@ class ObserverPositionComp(om.ExplicitComponent):
         )
         self.add_input(
             "observer_distance",
-            val=100.0,
+            val=np.full(no, 100.0),
             units="m",
-            desc="Distance from the rotor-hub centroid to the observer",
+            desc="Distance from the rotor-hub centroid to each observer",
         )
         self.add_input(
             "observer_elevation",
-            val=np.radians(45.0),
+            val=np.full(no, np.radians(45.0)),
             units="rad",
             desc="Observer angle below the body x-y (rotor) plane",
         )
         self.add_input(
             "observer_azimuth",
-            val=np.pi,
+            val=np.full(no, np.pi),
             units="rad",
             desc="Observer azimuth from +x (forward) towards +y (right)",
         )
         self.add_output(
-            "observer_position", val=np.zeros(3), units="m", desc="Observer position, body frame"
+            "observer_position",
+            val=np.zeros(3 if no == 1 else (no, 3)),
+            units="m",
+            desc="Observer positions, body frame",
         )
 
         self.declare_partials(
             "observer_position",
             "hub_position",
-            rows=np.tile(np.arange(3), nr),
-            cols=np.arange(3 * nr),
-            val=np.full(3 * nr, 1.0 / nr),
+            rows=np.tile(np.arange(3 * no), nr),
+            cols=np.tile(np.arange(3 * nr).reshape(nr, 1, 3), (1, no, 1)).ravel(),
+            val=np.full(3 * nr * no, 1.0 / nr),
         )
         for name in ("observer_distance", "observer_elevation", "observer_azimuth"):
-            self.declare_partials("observer_position", name)
+            self.declare_partials(
+                "observer_position", name, rows=np.arange(3 * no), cols=np.repeat(np.arange(no), 3)
+            )
 
     @staticmethod
     def _direction(elev, azim):
-        return np.array([np.cos(elev) * np.cos(azim), np.cos(elev) * np.sin(azim), np.sin(elev)])
+        """Return the unit vectors (num_observers, 3) of the observer directions."""
+        return np.stack(
+            [np.cos(elev) * np.cos(azim), np.cos(elev) * np.sin(azim), np.sin(elev)], axis=-1
+        )
 
     def compute(self, inputs, outputs):
         check_input_range(self, "observer_distance", inputs["observer_distance"], lower=0.0)
@@ -119,28 +133,27 @@ class ObserverPositionComp(om.ExplicitComponent):
             lower_open=False,
             upper_open=False,
         )
-        elev = inputs["observer_elevation"][0]
-        azim = inputs["observer_azimuth"][0]
+        direction = self._direction(inputs["observer_elevation"], inputs["observer_azimuth"])
         centroid = np.mean(inputs["hub_position"], axis=0)
-        outputs["observer_position"] = centroid + inputs["observer_distance"][0] * self._direction(
-            elev, azim
-        )
+        position = centroid + inputs["observer_distance"][:, None] * direction
+        outputs["observer_position"] = position.reshape(outputs["observer_position"].shape)
 
     def compute_partials(self, inputs, partials):
-        dist = inputs["observer_distance"][0]
-        elev = inputs["observer_elevation"][0]
-        azim = inputs["observer_azimuth"][0]
-        partials["observer_position", "observer_distance"] = self._direction(elev, azim)[:, None]
+        dist = inputs["observer_distance"][:, None]
+        elev = inputs["observer_elevation"]
+        azim = inputs["observer_azimuth"]
+        zero = np.zeros_like(elev)
+        partials["observer_position", "observer_distance"] = self._direction(elev, azim).ravel()
         partials["observer_position", "observer_elevation"] = (
             dist
-            * np.array([-np.sin(elev) * np.cos(azim), -np.sin(elev) * np.sin(azim), np.cos(elev)])[
-                :, None
-            ]
-        )
+            * np.stack(
+                [-np.sin(elev) * np.cos(azim), -np.sin(elev) * np.sin(azim), np.cos(elev)], axis=-1
+            )
+        ).ravel()
         partials["observer_position", "observer_azimuth"] = (
             dist
-            * np.array([-np.cos(elev) * np.sin(azim), np.cos(elev) * np.cos(azim), 0.0])[:, None]
-        )
+            * np.stack([-np.cos(elev) * np.sin(azim), np.cos(elev) * np.cos(azim), zero], axis=-1)
+        ).ravel()
 
 
 class ObserverGeometryComp(om.ExplicitComponent):
@@ -171,8 +184,9 @@ class ObserverGeometryComp(om.ExplicitComponent):
         Hub positions in the body frame (x forward, y right, z down, origin at the nose).
     thrust_direction : float, (num_rotors, 3), unitless
         Thrust axis direction in the body frame (normalised here; (0, 0, -1) = up).
-    observer_position : float, (3,), m
-        Observer position in the body frame.
+    observer_position : float, (3,) or (num_rotors, 3) with ``observer_per_rotor``, m
+        Observer position in the body frame (one per rotor: each rotor-observer pair of a
+        multi-observer evaluation is one "rotor" here).
     flight_velocity : float, (3,), m/s
         Vehicle velocity in the body frame (zero in hover).
     speed_of_sound : float, (1,), m/s
@@ -201,6 +215,8 @@ class ObserverGeometryComp(om.ExplicitComponent):
         Number of rotors (>= 1).
     rotation_direction : tuple of int or None
         +1 (right-handed about the thrust axis) or -1 per rotor; None: all +1.
+    observer_per_rotor : bool
+        One observer position per rotor (input shape (num_rotors, 3)). Default False.
 
     Raises
     ------
@@ -218,9 +234,16 @@ class ObserverGeometryComp(om.ExplicitComponent):
             allow_none=True,
             desc="+1 (right-handed about the thrust axis) or -1 per rotor",
         )
+        self.options.declare(
+            "observer_per_rotor",
+            default=False,
+            types=bool,
+            desc="one observer position per rotor, shape (num_rotors, 3)",
+        )
 
     def setup(self):
         nr = self.options["num_rotors"]
+        per_rotor = self.options["observer_per_rotor"]
         rot = self.options["rotation_direction"]
         if rot is None:
             rot = (1,) * nr
@@ -243,9 +266,10 @@ class ObserverGeometryComp(om.ExplicitComponent):
             units=None,
             desc="Thrust axis direction, body frame (normalised internally)",
         )
+        observer = np.array([-70.71067812, 0.0, 70.71067812])
         self.add_input(
             "observer_position",
-            val=np.array([-70.71067812, 0.0, 70.71067812]),
+            val=np.tile(observer, (nr, 1)) if per_rotor else observer,
             units="m",
             desc="Observer position, body frame",
         )
@@ -283,7 +307,9 @@ class ObserverGeometryComp(om.ExplicitComponent):
         )
         for name in geometric:
             self.declare_partials(name, "hub_position", rows=rows3, cols=cols3)
-            self.declare_partials(name, "observer_position", rows=rows3, cols=cols_shared)
+            self.declare_partials(
+                name, "observer_position", rows=rows3, cols=cols3 if per_rotor else cols_shared
+            )
         for name in (
             "axial_distance",
             "inplane_distance",
@@ -306,7 +332,7 @@ class ObserverGeometryComp(om.ExplicitComponent):
         d = inputs["thrust_direction"]
         vel = inputs["flight_velocity"]
         a = inputs["speed_of_sound"][0]
-        g["P"] = P = inputs["observer_position"][np.newaxis, :] - hub
+        g["P"] = P = inputs["observer_position"].reshape(-1, 3) - hub
         g["S"] = np.sqrt(np.sum(P * P, axis=1))
         g["dnorm"] = dnorm = np.sqrt(np.sum(d * d, axis=1))
         g["n"] = n = d / dnorm[:, None]

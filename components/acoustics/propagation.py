@@ -76,3 +76,69 @@ class SphericalPropagationComp(om.ExplicitComponent):
         alpha = inputs["absorption_coefficient"][None, :]
         partials[out, "distance"] = (-20.0 / (S * _LN10) - alpha).ravel()
         partials[out, "absorption_coefficient"] = np.repeat(-inputs["distance"], nb)
+
+
+class AbsorptionLossComp(om.ExplicitComponent):
+    """
+    Atmospheric absorption along the hub-observer path of levels already at the observer.
+
+    L(r, m) = L_free(r, m) - alpha(r, m) S_r for every rotor r and entry m (docs
+    theory/acoustics 'Propagation'): the tonal models (Lowson loading, Barry-Magliozzi
+    thickness) give free-field levels at the observer (spherical spreading is in their 1/S
+    kernels); ISO 9613-1:1993 adds the absorption alpha (dB/m, from AtmosphericAbsorptionComp at
+    each harmonic's frequency) over the hub-observer distance S.
+
+    Inputs
+    ------
+    <name>_free : float, (num_rotors, width), dB (units=None)
+        Free-field (lossless) levels at the observer, for each name of option ``names``.
+    distance : float, (num_rotors,), m
+        Hub-observer distance S.
+    absorption_coefficient : float, (num_rotors, width), dB/m (units=None)
+        Attenuation coefficient of each entry.
+
+    Outputs
+    -------
+    <name> : float, (num_rotors, width), dB (units=None)
+        Levels at the observer with absorption.
+
+    Options
+    -------
+    num_rotors, width : int
+        Array sizes.
+    names : list of str
+        The level arrays (e.g. ['loading_spl', 'thickness_spl']).
+    """
+
+    def initialize(self):
+        self.options.declare("num_rotors", default=1, types=int, lower=1)
+        self.options.declare("width", default=3, types=int, lower=1)
+        self.options.declare("names", types=list, desc="level arrays")
+
+    def setup(self):
+        nr, w = self.options["num_rotors"], self.options["width"]
+        self.add_input("distance", val=np.full(nr, 100.0), units="m", desc="Hub-observer distance")
+        self.add_input(
+            "absorption_coefficient", val=np.zeros((nr, w)), units=None, desc="Absorption, dB/m"
+        )
+        rows = np.arange(nr * w)
+        for name in self.options["names"]:
+            self.add_input(
+                f"{name}_free", val=np.zeros((nr, w)), units=None, desc="Free-field level, dB"
+            )
+            self.add_output(name, val=np.zeros((nr, w)), units=None, desc="Level with absorption")
+            self.declare_partials(name, f"{name}_free", rows=rows, cols=rows, val=1.0)
+            self.declare_partials(name, "distance", rows=rows, cols=rows // w)
+            self.declare_partials(name, "absorption_coefficient", rows=rows, cols=rows)
+
+    def compute(self, inputs, outputs):
+        loss = inputs["absorption_coefficient"] * inputs["distance"][:, None]
+        for name in self.options["names"]:
+            outputs[name] = inputs[f"{name}_free"] - loss
+
+    def compute_partials(self, inputs, partials):
+        w = self.options["width"]
+        alpha = inputs["absorption_coefficient"]
+        for name in self.options["names"]:
+            partials[name, "distance"] = -alpha.ravel()
+            partials[name, "absorption_coefficient"] = -np.repeat(inputs["distance"], w)

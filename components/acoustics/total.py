@@ -24,6 +24,10 @@ class TotalNoiseComp(om.ExplicitComponent):
     - rotor_spl_r = 10 log10(E(tonal_r) + E(broadband_r));
     - total_spl = 10 log10 sum_r E(rotor_spl_r)  (the hover constraint: total_spl_a <= 70 dBA).
 
+    With ``num_observers`` = n_o > 1 the rows are rotor-observer pairs, observer-major (row
+    j n + k is rotor k heard by observer j, n = num_rotors / n_o), and ``total_spl`` holds one
+    level per observer (the sum over that observer's rows).
+
     The total is invariant to the order of the rotors and two identical sources add
     10 log10 2 = 3.0103 dB. The sums carry the -120 dB floor of ``common`` once, so they stay
     finite when every source is silent.
@@ -47,13 +51,15 @@ class TotalNoiseComp(om.ExplicitComponent):
         Broadband overall level of each rotor.
     rotor_spl<sfx> : float, (num_rotors,), dB (units=None)
         Total level of each rotor.
-    total_spl<sfx> : float, (1,), dB (units=None)
-        Total level of all rotors at the observer.
+    total_spl<sfx> : float, (num_observers,), dB (units=None)
+        Total level of all rotors at each observer.
 
     Options
     -------
     num_rotors, num_harmonics, num_bands : int
-        Array sizes.
+        Array sizes (num_rotors: rows, i.e. rotor-observer pairs with several observers).
+    num_observers : int
+        Observers (>= 1, divides num_rotors). Default 1.
     weighting : str
         'A' (A-weighted levels, names end in '_a', dBA) or 'none' (unweighted, dB).
     """
@@ -67,6 +73,9 @@ class TotalNoiseComp(om.ExplicitComponent):
             "num_bands", default=38, types=int, lower=1, desc="Number of one-third-octave bands"
         )
         self.options.declare(
+            "num_observers", default=1, types=int, lower=1, desc="Number of observers"
+        )
+        self.options.declare(
             "weighting",
             default="A",
             values=("A", "none"),
@@ -75,6 +84,13 @@ class TotalNoiseComp(om.ExplicitComponent):
 
     def setup(self):
         nr, nm, nb = (self.options[k] for k in ("num_rotors", "num_harmonics", "num_bands"))
+        no = self.options["num_observers"]
+        if nr % no:
+            raise ValueError(
+                f"{self.msginfo}: num_rotors = {nr} rows must be num_observers = {no} equal "
+                "groups (rotor-observer pairs, observer-major)."
+            )
+        self._observer_of_row = np.repeat(np.arange(no), nr // no)
         weighted = self.options["weighting"] == "A"
         sfx = "_a" if weighted else ""
         unit = "dBA" if weighted else "dB"
@@ -130,9 +146,9 @@ class TotalNoiseComp(om.ExplicitComponent):
         )
         self.add_output(
             n["total_spl"],
-            val=0.0,
+            val=np.zeros(no),
             units=None,
-            desc=f"{wtxt}total level of all rotors, {unit} re 20 uPa",
+            desc=f"{wtxt}total level of all rotors at each observer, {unit} re 20 uPa",
         )
 
         for src, width in (("loading_spl", nm), ("thickness_spl", nm), ("broadband_spl", nb)):
@@ -141,7 +157,9 @@ class TotalNoiseComp(om.ExplicitComponent):
             targets = ["rotor_spl", "tonal_spl" if src != "broadband_spl" else "broadband_oaspl"]
             for out in targets:
                 self.declare_partials(n[out], n[src], rows=rows, cols=cols)
-            self.declare_partials(n["total_spl"], n[src])
+            self.declare_partials(
+                n["total_spl"], n[src], rows=np.repeat(self._observer_of_row, width), cols=cols
+            )
 
     def _energies(self, inputs):
         n = self._names
@@ -160,7 +178,12 @@ class TotalNoiseComp(om.ExplicitComponent):
         outputs[n["tonal_spl"]] = to_spl(tonal)
         outputs[n["broadband_oaspl"]] = to_spl(broad)
         outputs[n["rotor_spl"]] = to_spl(tonal + broad)
-        outputs[n["total_spl"]] = to_spl(np.sum(tonal + broad))
+        outputs[n["total_spl"]] = to_spl(self._per_observer(tonal + broad))
+
+    def _per_observer(self, energy):
+        """Sum of row energies per observer (num_observers,)."""
+        no = self.options["num_observers"]
+        return np.sum(energy.reshape(no, -1), axis=1)
 
     @staticmethod
     def _to_spl(energy):
@@ -172,11 +195,11 @@ class TotalNoiseComp(om.ExplicitComponent):
         tonal = np.sum(e_l + e_t, axis=1)
         broad = np.sum(e_b, axis=1)
         rotor = tonal + broad
-        total = np.sum(rotor)
+        total = self._per_observer(rotor)[self._observer_of_row]
         # d(10 log10(E + floor))/dL_j = E_j/(E + floor) since dE_j/dL_j = E_j ln10/10.
         for src, e in (("loading_spl", e_l), ("thickness_spl", e_t), ("broadband_spl", e_b)):
             group = broad if src == "broadband_spl" else tonal
             out = "broadband_oaspl" if src == "broadband_spl" else "tonal_spl"
             partials[n[out], n[src]] = (e / (group + SPL_FLOOR)[:, None]).ravel()
             partials[n["rotor_spl"], n[src]] = (e / (rotor + SPL_FLOOR)[:, None]).ravel()
-            partials[n["total_spl"], n[src]] = (e / (total + SPL_FLOOR)).reshape(1, -1)
+            partials[n["total_spl"], n[src]] = (e / (total + SPL_FLOOR)[:, None]).ravel()

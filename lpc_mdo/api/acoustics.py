@@ -55,9 +55,10 @@ def rotor_noise(
     """
     Noise of one or more rotors at one or several observers: tonal, broadband and total levels.
 
-    Builds a small Problem around :class:`RotorNoiseGroup`, runs it (once per observer) and
-    returns the levels. Defaults are the paper's hover case: observer 100 m from the rotor-hub
-    centroid, 45 deg below the rotor plane (aft), thrust axes up, vehicle at rest.
+    Builds a small Problem around :class:`RotorNoiseGroup`, runs it once (all observers in one
+    vectorized pass, option ``num_observers``) and returns the levels. Defaults are the paper's
+    hover case: observer 100 m from the rotor-hub centroid, 45 deg below the rotor plane (aft),
+    thrust axes up, vehicle at rest.
 
     Without a torque (and without sectional loads) only the parts that do not need the in-plane
     load can be computed: pass ``parts=('thickness', 'broadband')`` (or one of them). Thickness
@@ -217,8 +218,10 @@ def rotor_noise(
     )
     _check_far_field(observers, observer_position is None, radius, hub)
 
+    n_obs = len(observers)
     group = RotorNoiseGroup(
         num_rotors=nr,
+        num_observers=n_obs,
         num_blades=num_blades,
         num_radial=nrad,
         num_azimuth=naz,
@@ -250,19 +253,13 @@ def rotor_noise(
         prob.set_val("inflow_angle", loads[2], units="rad")
     else:
         prob.set_val("torque", np.broadcast_to(np.asarray(torque, dtype=float), (nr,)), units="N*m")
-    runs = []
-    for observer in observers:
-        for name, value, units in observer:
-            prob.set_val(name, value, units=units)
-        prob.run_model()
-        runs.append(_levels(prob, parts))
+    for name, _, units in observers[0]:
+        values = np.array([observer[name] for observer in _by_name(observers)])  # (n,) or (n, 3)
+        prob.set_val(name, values[0] if n_obs == 1 else values, units=units)
+    prob.run_model()
+    result = _levels(prob, parts, n_obs)
     if num_observers is None:
-        result = runs[0]
-    else:
-        result = {
-            key: np.array([run[key] for run in runs]) if key in _PER_OBSERVER else runs[0][key]
-            for key in runs[0]
-        }
+        result = {key: value[0] if key in _PER_OBSERVER else value for key, value in result.items()}
     result["band_frequency"] = group.band_frequencies.copy()
     return result
 
@@ -370,12 +367,26 @@ def _check_far_field(observers, relative, radius, hub):
             )
 
 
-def _levels(prob, parts):
-    """Return the levels of one run of the noise Problem, for the computed ``parts``."""
+def _by_name(observers):
+    """Return the observers as dicts input name -> value."""
+    return [{name: value for name, value, _ in observer} for observer in observers]
+
+
+def _levels(prob, parts, num_observers):
+    """
+    Return the levels of the noise Problem for the computed ``parts``, per observer.
+
+    Every level gets a leading axis num_observers: the group's rows are rotor-observer pairs,
+    observer-major (row j nr + k is rotor k heard by observer j).
+    """
+
+    def split(value):
+        return value.reshape((num_observers, -1) + value.shape[1:])
+
     result = {}
     names = []
     if len(parts) == len(PARTS):
-        result.update({name: float(prob.get_val(name)[0]) for name in _TOTALS})
+        result.update({name: prob.get_val(name).copy() for name in _TOTALS})
         names.extend(_SUMS)
     for part in parts:
         names.extend(_BY_PART[part])
@@ -383,8 +394,10 @@ def _levels(prob, parts):
         names.append("harmonic_frequency")
     names.append("distance")
     for name in names:
-        result[name] = prob.get_val(name).copy()
-    result["elevation_deg"] = np.degrees(
-        np.arcsin(np.clip(prob.get_val("axial_distance") / prob.get_val("distance"), -1.0, 1.0))
+        result[name] = split(prob.get_val(name).copy())
+    result["elevation_deg"] = split(
+        np.degrees(
+            np.arcsin(np.clip(prob.get_val("axial_distance") / prob.get_val("distance"), -1.0, 1.0))
+        )
     )
     return result
