@@ -70,7 +70,13 @@ class Analysis:
 
 
 def analyze_vehicle(
-    vehicle=None, trim=True, recorder_path=None, static_margin=True, report=None, **options
+    vehicle=None,
+    trim=True,
+    recorder_path=None,
+    static_margin=True,
+    report=None,
+    processes=1,
+    **options,
 ):
     """
     Build, (trim,) run and record the full model of a vehicle at its initial design.
@@ -88,6 +94,9 @@ def analyze_vehicle(
         Declare the cruise static-margin constraint.
     report : callable or None
         Called with one line per trimmed condition (see :func:`lpc_mdo.trim.trim`).
+    processes : int
+        Processes that trim conditions at the same time (``workers`` of
+        :func:`lpc_mdo.trim.trim`; the result does not depend on it).
     **options
         Further options of :func:`~lpc_mdo.problems.build_analysis_problem` (``name``,
         ``work_dir``, model options).
@@ -105,7 +114,7 @@ def analyze_vehicle(
     )
     result, failed = None, {}
     if trim:
-        result = trim_conditions(prob, report=report, label="analyze")
+        result = trim_conditions(prob, report=report, label="analyze", workers=processes)
         failed = {
             name: c.max_residual
             for name, c in result.conditions.items()

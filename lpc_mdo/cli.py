@@ -684,6 +684,7 @@ def _analyze(args):
         trim=not args.no_trim,
         recorder_path=case_file,
         static_margin=not args.no_static_margin,
+        processes=args.processes,
     )
     prob = analysis.prob
     tols = trim_tolerances(prob)
@@ -862,6 +863,12 @@ def build_parser():
         "--no-trim",
         action="store_true",
         help="show the raw initial design, untrimmed (default: trim every condition)",
+    )
+    analyze.add_argument(
+        "--processes",
+        type=positive["--processes"],
+        default=os.cpu_count() or 1,
+        help="processes that trim conditions at the same time (default: the CPU count)",
     )
     analyze.set_defaults(func=_analyze)
 

@@ -189,7 +189,16 @@ def single_condition_problem(prob, condition, name):
     return single
 
 
-def trim(prob, conditions=None, tol=1e-10, max_iter=100, separate=True, report=None, label="trim"):
+def trim(
+    prob,
+    conditions=None,
+    tol=1e-10,
+    max_iter=100,
+    separate=True,
+    report=None,
+    label="trim",
+    workers=1,
+):
     """
     Trim conditions of a set-up LPC problem by their trim variables (module docstring).
 
@@ -217,6 +226,11 @@ def trim(prob, conditions=None, tol=1e-10, max_iter=100, separate=True, report=N
         the largest driver-scaled residual before and after, iterations, seconds); None: quiet.
     label : str
         Start of each reported line (the stage's name).
+    workers : int
+        Processes that trim conditions at the same time (``separate`` only, not under MPI;
+        forked, so each inherits ``prob``). The conditions are independent at a fixed design,
+        so the result does not depend on it; 1 (default) trims in this process. The lines of
+        ``report`` then come when all conditions are done, in order.
 
     Returns
     -------
@@ -232,47 +246,44 @@ def trim(prob, conditions=None, tol=1e-10, max_iter=100, separate=True, report=N
     om.AnalysisError
         When the model fails during the solve.
     """
-    from lpc_mdo.problems import copy_design_variables
-
     vehicle = problem_vehicle(prob)
     conditions = list(prob.model.condition_names if conditions is None else conditions)
     prob.run_model()
+    workers = min(int(workers), len(conditions))
+    if separate and workers > 1 and prob.comm.size == 1:
+        outcomes = _trim_in_processes(prob, vehicle, conditions, tol, max_iter, workers)
+    else:
+        outcomes = (
+            _trim_condition(prob, vehicle, cond, tol, max_iter, separate) for cond in conditions
+        )
     residuals, iterations, messages, worst, per_condition = {}, 0, [], 0.0, {}
-    for cond in conditions:
-        started = time.perf_counter()
-        target = prob
-        if separate:
-            target = single_condition_problem(prob, cond, name=f"trim_{cond}")
-            target.run_model()
-        cons = _trim_constraints(target, [cond])
-        if not cons:
-            raise ValueError(f"trim: no trim constraints declared for conditions ['{cond}'].")
-        variables = _trim_variables(target, vehicle, [cond])
-        sol, scaled, initial, method = _solve_block(
-            target, target.model.get_design_vars(), cons, variables, tol, max_iter
-        )
-        if separate:
-            names = [n for n, _ in condition_layout(vehicle).trim_variables(cond)]
-            copy_design_variables(target, prob, vehicle, names=names)
-        iterations += int(sol.njev or 0)
-        start = 0
-        for name, meta in cons.items():  # scaled residual = (value - target) * scaler
-            part = scaled[start : start + meta["size"]]
-            start += meta["size"]
-            residuals[name] = part / driver_scaling(meta)[0]
-        block_max = float(np.max(np.abs(scaled)))
-        worst = max(worst, block_max)
-        if block_max >= 1e-6:
-            messages.append(f"{cond}: max scaled residual {block_max:.3g} ({sol.message})")
-        before = float(np.max(np.abs(initial))) if initial.size else 0.0
-        seconds = time.perf_counter() - started
-        per_condition[cond] = ConditionTrim(
-            before, block_max, int(sol.njev or 0), seconds, method, str(sol.message)
-        )
+    for cond, outcome in zip(conditions, outcomes, strict=True):
+        for name, (flat, entries) in outcome.values.items():
+            units = _dv_units(vehicle, name)
+            full = np.asarray(prob.get_val(name, units=units)).copy()
+            full.reshape(-1)[flat] = entries
+            prob.set_val(name, full, units=units)
+        result = outcome.result
+        residuals.update(outcome.residuals)
+        iterations += result.iterations
+        worst = max(worst, result.max_residual)
+        if result.max_residual >= 1e-6:
+            messages.append(f"{cond}: max scaled residual {result.max_residual:.3g} "
+                            f"({result.message})")  # fmt: skip
+        per_condition[cond] = result
         if report is not None:
             from lpc_mdo.progress import trim_line
 
-            report(trim_line(label, cond, before, block_max, int(sol.njev or 0), seconds))
+            report(
+                trim_line(
+                    label,
+                    cond,
+                    result.initial_residual,
+                    result.max_residual,
+                    result.iterations,
+                    result.seconds,
+                )
+            )
     if separate:
         prob.run_model()
     return TrimResult(
@@ -283,6 +294,91 @@ def trim(prob, conditions=None, tol=1e-10, max_iter=100, separate=True, report=N
         message="; ".join(messages) or "all conditions trimmed",
         conditions=per_condition,
     )
+
+
+@dataclass
+class _Outcome:
+    """One condition's trim: its trim-variable entries (separate mode), residuals and record."""
+
+    values: dict
+    residuals: dict
+    result: ConditionTrim
+
+
+def _dv_units(vehicle, name):
+    """OpenMDAO units of a vehicle-file design variable (None for unitless)."""
+    units = vehicle.design_variables[name].units
+    return None if units == "unitless" else units
+
+
+def _trim_condition(prob, vehicle, cond, tol, max_iter, separate):
+    """Trim one condition of ``prob`` (in its own single-condition problem if ``separate``)."""
+    started = time.perf_counter()
+    target = prob
+    if separate:
+        target = single_condition_problem(prob, cond, name=f"trim_{cond}")
+        target.run_model()
+    cons = _trim_constraints(target, [cond])
+    if not cons:
+        raise ValueError(f"trim: no trim constraints declared for conditions ['{cond}'].")
+    variables = _trim_variables(target, vehicle, [cond])
+    sol, scaled, initial, method = _solve_block(
+        target, target.model.get_design_vars(), cons, variables, tol, max_iter
+    )
+    values = {}  # name -> (flat entries of this condition, their values): other conditions
+    if separate:  # may share the array (e.g. one row per transition point)
+        for name, flat in condition_layout(vehicle).trim_variables(cond):
+            units = _dv_units(vehicle, name)
+            entries = np.asarray(target.get_val(name, units=units)).ravel()[flat]
+            values[name] = (np.asarray(flat), entries.copy())
+    residuals, start = {}, 0
+    for name, meta in cons.items():  # scaled residual = (value - target) * scaler
+        part = scaled[start : start + meta["size"]]
+        start += meta["size"]
+        residuals[name] = part / driver_scaling(meta)[0]
+    block_max = float(np.max(np.abs(scaled)))
+    before = float(np.max(np.abs(initial))) if initial.size else 0.0
+    result = ConditionTrim(
+        before,
+        block_max,
+        int(sol.njev or 0),
+        time.perf_counter() - started,
+        method,
+        str(sol.message),
+    )
+    return _Outcome(values, residuals, result)
+
+
+# The problem a trim worker process trims in: set by the pool initializer (fork start method,
+# so the problem is inherited, not pickled).
+_WORKER_PROBLEM = {}
+
+
+def _worker_trim(cond, tol, max_iter):
+    prob = _WORKER_PROBLEM["prob"]
+    return _trim_condition(prob, problem_vehicle(prob), cond, tol, max_iter, True)
+
+
+def _trim_in_processes(prob, vehicle, conditions, tol, max_iter, workers):
+    """
+    Trim the conditions in ``workers`` forked processes, each in its own single-condition problem.
+
+    The conditions are independent at a fixed design, so the result is the serial one; the
+    outcomes come back in the order of ``conditions``. Uses the fork start method (the workers
+    inherit ``prob``); where fork is unavailable, trims serially.
+    """
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
+    if "fork" not in multiprocessing.get_all_start_methods():
+        return [_trim_condition(prob, vehicle, c, tol, max_iter, True) for c in conditions]
+    _WORKER_PROBLEM["prob"] = prob
+    try:
+        with ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("fork")) as pool:
+            futures = [pool.submit(_worker_trim, cond, tol, max_iter) for cond in conditions]
+            return [future.result() for future in futures]
+    finally:
+        _WORKER_PROBLEM.clear()
 
 
 def _solve_block(prob, dv_meta, cons, variables, tol, max_iter):
