@@ -61,3 +61,57 @@ def test_maximum_of_the_sweep(cruise):
 def test_a_condition_without_pitch_is_refused(cruise):
     with pytest.raises(ValueError, match="condition 'hover' has no pitch design variable"):
         lift_to_drag(cruise, "hover")
+
+
+@pytest.mark.slow
+def test_trimmed_polar_against_nasa_cfd_like_for_like():
+    # NASA's CFD-based glider model of the LPC (Simmons, Buning and Murphy, AIAA 2021-3170; GUAM
+    # polynomial model): parabolic fit C_D0 0.0417 and maximum L/D 12.6, fully turbulent, booms
+    # and gear removed. Like for like: our trimmed cruise polar (pitch -4..14 deg) less the
+    # booms', gear's and their allowance's C_D0 and with every surface turbulent (the build-up's
+    # difference, added to each point), fitted with the same parabola C_D0 + k C_L^2:
+    # measured 0.0363, within 15 % (docs theory/aerodynamics 'Drag build-up'); its maximum L/D
+    # 15.9 lies 26 % above the CFD's (the lift-dependent factor k differs, documented there).
+    import dataclasses
+
+    from lpc_mdo.analysis import analyze_vehicle
+    from lpc_mdo.components.aero.drag_buildup import (
+        LPC_LEAKAGE_PROTUBERANCE,
+        DragBuildupComp,
+        lpc_drag_components,
+    )
+
+    def build_up(gear, booms, turbulent):
+        import openmdao.api as om
+
+        comps, values = lpc_drag_components(gear=gear, booms=booms)
+        if turbulent:
+            comps = tuple(
+                dataclasses.replace(c, laminar_fraction=0.0)
+                if "laminar_fraction" in {f.name for f in dataclasses.fields(c)}
+                else c
+                for c in comps
+            )
+        prob = om.Problem(reports=False)
+        prob.model.add_subsystem(
+            "drag",
+            DragBuildupComp(components=comps, allowance_fraction=LPC_LEAKAGE_PROTUBERANCE),
+            promotes=["*"],
+        )
+        prob.setup()
+        for name, value in values.items():
+            prob.set_val(name, value)
+        # Cruise at 1000 m (docs theory/aerodynamics 'Drag build-up'), as the model's cruise.
+        for name, value in (("speed", 57.1897), ("density", 1.11177),
+                            ("dynamic_viscosity", 1.70443e-5), ("speed_of_sound", 336.410)):
+            prob.set_val(name, value)  # fmt: skip
+        prob.run_model()
+        return prob.get_val("CD0")[0]
+
+    shift = build_up(False, False, True) - build_up(True, True, False)
+    analysis = analyze_vehicle(processes=2)
+    sweep = lift_to_drag(analysis.prob, pitch_deg=np.arange(-4.0, 14.0 + 1e-9, 1.0))
+    cl, cd = sweep["CL"], sweep["CD"] + shift
+    (cd0, k), *_ = np.linalg.lstsq(np.vstack([np.ones_like(cl), cl**2]).T, cd, rcond=None)
+    assert_near_equal(cd0, 0.0417, 0.15)
+    assert k > 0.0 and np.max(cl / cd) > 12.6
