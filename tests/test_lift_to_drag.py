@@ -102,8 +102,12 @@ def test_trimmed_polar_against_nasa_cfd_like_for_like():
         for name, value in values.items():
             prob.set_val(name, value)
         # Cruise at 1000 m (docs theory/aerodynamics 'Drag build-up'), as the model's cruise.
-        for name, value in (("speed", 57.1897), ("density", 1.11177),
-                            ("dynamic_viscosity", 1.70443e-5), ("speed_of_sound", 336.410)):
+        for name, value in (
+            ("speed", 57.1897),
+            ("density", 1.11177),
+            ("dynamic_viscosity", 1.70443e-5),
+            ("speed_of_sound", 336.410),
+        ):
             prob.set_val(name, value)  # fmt: skip
         prob.run_model()
         return prob.get_val("CD0")[0]
