@@ -86,3 +86,45 @@ def test_bad_inputs_raise_clear_errors():
         _geometry([0.0, 0.0, 0.0], [0.0, 0.0, -1.0], [100.0, 0.0, 0.0], velocity=(400.0, 0.0, 0.0))
     with pytest.raises(ValueError, match="rotation_direction"):
         _geometry([0.0, 0.0, 0.0], [0.0, 0.0, -1.0], [100.0, 0.0, 0.0], rotation=(2,))
+
+
+def test_several_observer_positions_and_per_rotor_observers():
+    # Three observers about the hub centroid (closed form of ObserverPositionComp per observer),
+    # and a geometry whose rotors each have their own observer equals the shared-observer
+    # geometry rotor by rotor (1e-14); partials of both against complex step.
+    from openmdao.utils.assert_utils import assert_check_partials
+
+    hubs = np.array([[1.0, -5.0, -1.0], [6.0, -5.0, -1.5]])
+    dist, elev, azim = (
+        np.array([100.0, 30.0, 500.0]),
+        np.array([0.7, -0.2, 1.2]),
+        np.array([3.0, 0.4, -2.0]),
+    )
+    prob = om.Problem(reports=False)
+    prob.model.add_subsystem("p", ObserverPositionComp(num_rotors=2, num_observers=3))
+    prob.model.add_subsystem(
+        "g", ObserverGeometryComp(num_rotors=2, rotation_direction=(1, -1), observer_per_rotor=True)
+    )
+    prob.setup(force_alloc_complex=True)
+    prob.set_val("p.hub_position", hubs)
+    prob.set_val("p.observer_distance", dist)
+    prob.set_val("p.observer_elevation", elev)
+    prob.set_val("p.observer_azimuth", azim)
+    prob.set_val("g.hub_position", hubs)
+    prob.set_val("g.thrust_direction", [[0.1, 0.0, -1.0], [0.0, 0.2, -1.0]])
+    prob.set_val("g.observer_position", [[-60.0, 10.0, 70.0], [200.0, -50.0, 30.0]])
+    prob.set_val("g.flight_velocity", [20.0, 1.0, -2.0])
+    prob.run_model()
+    direction = np.stack(
+        [np.cos(elev) * np.cos(azim), np.cos(elev) * np.sin(azim), np.sin(elev)], 1
+    )
+    assert_near_equal(
+        prob.get_val("p.observer_position"), hubs.mean(axis=0) + dist[:, None] * direction, 1e-12
+    )
+    for k, observer in enumerate(prob.get_val("g.observer_position")):
+        one = _geometry(hubs[k], prob.get_val("g.thrust_direction")[k], observer,
+                        velocity=[20.0, 1.0, -2.0], rotation=((1, -1)[k],))  # fmt: skip
+        for name in ("distance", "inplane_distance", "observer_azimuth_cos", "inplane_speed"):
+            assert_near_equal(prob.get_val(f"g.{name}")[k], one.get_val(name)[0], 1e-14)
+    data = prob.check_partials(method="cs", compact_print=True, out_stream=None)
+    assert_check_partials(data, atol=1e-9, rtol=1e-9)

@@ -88,5 +88,36 @@ def test_tonal_and_broadband_from_10_m_to_2_km_in_one_call():
         assert np.max(np.abs(levels - expected)[rows]) < tol, name
     thickness, loading = p.get_val("thickness_spl")[0], p.get_val("loading_spl")[0]
     assert np.all(thickness < loading - 10.0)
+    # The total level of every observer within 1 dB of the propagated 100 m spectrum (all
+    # harmonics and bands moved by spreading and absorption, summed energetically).
+    expected_total = []
+    for j, d in enumerate(distances):
+        parts = []
+        for name, f in (("loading_spl", f_tonal), ("thickness_spl", f_tonal),
+                        ("broadband_spl", f_band)):  # fmt: skip
+            alpha = iso9613_absorption(f, 288.15, 101325.0, 70.0)
+            parts.append(p.get_val(name)[1] - spread[j] - alpha * (d - 100.0))
+        expected_total.append(_oaspl(np.concatenate(parts)))
+    assert np.max(np.abs(p.get_val("total_spl") - expected_total)) < 1.0
     # The A-weighted totals fall monotonically with distance, one per observer.
     assert np.all(np.diff(p.get_val("total_spl_a")) < 0.0)
+
+
+def test_absorption_loss_closed_form_and_partials():
+    # L = L_free - alpha S per rotor and harmonic: 60 - 0.002 * 150 = 59.7 dB (hand), partials
+    # by complex step.
+    from lpc_mdo.components.acoustics.propagation import AbsorptionLossComp
+
+    p = om.Problem(reports=False)
+    p.model.add_subsystem(
+        "c", AbsorptionLossComp(num_rotors=2, width=2, names=["loading_spl", "thickness_spl"])
+    )
+    p.setup(force_alloc_complex=True)
+    p.set_val("c.loading_spl_free", [[60.0, 50.0], [40.0, 30.0]])
+    p.set_val("c.thickness_spl_free", [[55.0, 45.0], [35.0, 25.0]])
+    p.set_val("c.distance", [150.0, 2000.0])
+    p.set_val("c.absorption_coefficient", [[0.002, 0.004], [0.001, 0.003]])
+    p.run_model()
+    assert p.get_val("c.loading_spl")[0, 0] == pytest.approx(59.7, abs=1e-12)
+    assert p.get_val("c.thickness_spl")[1, 1] == pytest.approx(25.0 - 6.0, abs=1e-12)
+    assert_check_partials(p.check_partials(method="cs", compact_print=True, out_stream=None))
