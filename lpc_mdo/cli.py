@@ -728,6 +728,7 @@ def _optimize(args):
         progress=not args.quiet,
         # --quiet: no stage summaries either; the exit code and the case file path remain.
         log=_silent if args.quiet else print,
+        trim_processes=args.processes,
     )
     # Each stage prints a progress line per iteration (and IPOPT its own table unless
     # --quiet); Ctrl-C stops cleanly: the case file keeps every recorded iteration and a
@@ -911,6 +912,12 @@ def build_parser():
     )
     optimize.add_argument(
         "--quiet", action="store_true", help="only the progress lines, not IPOPT's iteration table"
+    )
+    optimize.add_argument(
+        "--processes",
+        type=positive["--processes"],
+        default=os.cpu_count() or 1,
+        help="processes that trim the conditions before each stage (default: the CPU count)",
     )
     optimize.set_defaults(func=_optimize)
 

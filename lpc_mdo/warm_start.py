@@ -107,6 +107,7 @@ def run_sequence(
     trim_first=True,
     log=print,
     progress=False,
+    trim_processes=1,
 ):
     """
     Solve the stages in order, each warm-started from the previous stage's final case.
@@ -139,6 +140,8 @@ def run_sequence(
         Progress messages.
     progress : bool
         Progress lines of the trim and the optimizer (see :func:`solve_stage`).
+    trim_processes : int
+        Processes of each stage's trim (see :func:`solve_stage`).
 
     Returns
     -------
@@ -168,6 +171,7 @@ def run_sequence(
             trim_first=trim_first,
             log=log,
             progress=progress,
+            trim_processes=trim_processes,
         )
         results.append(stage)
         previous = stage.case_file
@@ -222,6 +226,7 @@ def solve_baseline(
     log=print,
     progress=False,
     comm=None,
+    trim_processes=1,
 ):
     """
     Solve the baseline design by continuation in the penalty weight alpha.
@@ -241,7 +246,7 @@ def solve_baseline(
     static_margin : bool
     alphas : sequence of float
         Increasing penalty weights; the last is the baseline's (paper: 100).
-    optimizer, driver_settings, trim_first, log, progress, comm
+    optimizer, driver_settings, trim_first, log, progress, comm, trim_processes
         As :func:`solve_stage`.
 
     Returns
@@ -271,6 +276,7 @@ def solve_baseline(
             log=log,
             progress=progress,
             comm=comm,
+            trim_processes=trim_processes,
             baseline_alpha=alpha,
         )
         stage.extra["alpha"] = alpha
@@ -295,6 +301,7 @@ def solve_stage(
     log=print,
     progress=False,
     comm=None,
+    trim_processes=1,
     **model_options,
 ):
     """
@@ -324,6 +331,9 @@ def solve_stage(
         and, through ``log``, one per trimmed condition (:func:`lpc_mdo.progress.trim_line`).
     comm : MPI communicator or None
         The problem's communicator (MPI.COMM_SELF for one problem per rank).
+    trim_processes : int
+        Processes that trim the conditions at the same time (``workers`` of
+        :func:`lpc_mdo.trim.trim`; the trim does not depend on it).
     **model_options
         Further LPCGroup options (e.g. ``baseline_alpha``).
 
@@ -369,7 +379,9 @@ def solve_stage(
     start = time.perf_counter()
     if trim_first:
         try:
-            trimmed = trim(prob, report=log if progress else None, label=name)
+            trimmed = trim(
+                prob, report=log if progress else None, label=name, workers=trim_processes
+            )
         except KeyboardInterrupt:  # nothing recorded yet: no 'final' case of an untrimmed point
             _write_interrupted_stats(prob, case_file, start, "during the trim")
             prob.cleanup()

@@ -2,6 +2,7 @@
 
     python run_scripts/benchmark_sequence.py [--output-dir sequence_out] [--no-static-margin]
                                              [--stages rotor_presizing,subproblem_1,...]
+                                             [--processes N]
 
 Runs lpc_mdo.warm_start.run_sequence (rotor presizing, subproblems 1-4, the full problem; each
 trimmed first and started from the previous stage's final case) in this process, then prints
@@ -41,6 +42,9 @@ def main():
     parser.add_argument("--stages", default=",".join(DEFAULT_SEQUENCE))
     parser.add_argument("--start-case", default=None)
     parser.add_argument("--max-iter", type=int, default=400)
+    parser.add_argument(
+        "--processes", type=int, default=os.cpu_count() or 1, help="trim processes per stage"
+    )
     args = parser.parse_args()
 
     start = time.perf_counter()
@@ -50,6 +54,7 @@ def main():
         static_margin=not args.no_static_margin,
         start_case=args.start_case,
         driver_settings={"max_iter": args.max_iter, "print_level": 0},
+        trim_processes=args.processes,
     )
     total = time.perf_counter() - start
     lines = [

@@ -132,8 +132,18 @@ class _FixedConditions:
             ir, im = self.ir[stale], self.im[stale]
             g = table[ia[stale][:, :, None, None], ir[:, None, :, None], im[:, None, None, :]]
             wr, dwr, wm, dwm = self.wr[stale], self.dwr[stale], self.wm[stale], self.dwm[stale]
-            for j, (u, v) in enumerate(((wr, wm), (dwr, wm), (wr, dwm))):
-                self.contracted[stale, :, :, j] = np.einsum("nabc...,nb,nc->na...", g, u, v)
+            # The three (Re, M) weightings as one batched product: (n, 4, values, b c) @
+            # (n, 1, b c, 3) -> (n, 4, values, 3).
+            n, _, nb, nc, nv = g.shape
+            weights = np.stack(
+                [
+                    wr[:, :, None] * wm[:, None, :],
+                    dwr[:, :, None] * wm[:, None, :],
+                    wr[:, :, None] * dwm[:, None, :],
+                ],
+                axis=-1,
+            ).reshape(n, 1, nb * nc, 3)
+            self.contracted[stale] = g.reshape(n, 4, nb * nc, nv).transpose(0, 1, 3, 2) @ weights
             self.window[stale] = ia[stale, 0]
         return self.contracted
 

@@ -20,6 +20,9 @@ from lpc_mdo.components.motor._numerics import (
 from lpc_mdo.components.motor.parameters import MotorParameters
 from lpc_mdo.numerics import safeguarded_newton
 
+#: Complex step of the Newton slope (the residuals are complex-safe; round-off free).
+_CS_STEP = 1e-30
+
 
 def _declare_common_options(comp, per_node):
     comp.options.declare(
@@ -97,15 +100,15 @@ class PointwiseExplicitComp(om.ExplicitComponent):
 
 class PointwiseImplicitComp(om.ImplicitComponent):
     """
-    Implicit pointwise model with one scalar state per point, solved by vectorized bisection.
+    Implicit pointwise model with one scalar state per point, solved by vectorized Newton.
 
     Subclasses set ``_state_var`` (one variable tuple), ``_input_vars``, ``_deps`` (the inputs the
     residual depends on; the state is added), ``_per_node`` and implement
     ``_residual(values, state)`` and ``_bracket(values) -> (lower, upper)`` (or their own
     ``_solve(real_values) -> state``) and optionally ``_check_values(values)``.
-    ``solve_nonlinear`` solves on the real parts (by default: bisection on the bracket); under
-    complex step one complex Newton step restores the derivative. ``linearize`` is the exact
-    complex-step Jacobian of ``_residual``.
+    ``solve_nonlinear`` solves on the real parts (by default: safeguarded Newton on the
+    bracket, the slope by complex step); under complex step one complex Newton step restores
+    the derivative. ``linearize`` is the exact complex-step Jacobian of ``_residual``.
     """
 
     _state_var = ()
@@ -156,10 +159,21 @@ class PointwiseImplicitComp(om.ImplicitComponent):
         outputs[name] = state
 
     def _solve(self, real):
-        """Real root of the residual for the real inputs ``real`` (default: bisection)."""
+        """
+        Return the real root of the residual for the real inputs ``real`` on the bracket.
+
+        Safeguarded Newton (:func:`~lpc_mdo.numerics.safeguarded_newton`) with the slope of
+        one complex-step evaluation of the (complex-safe) residual per iteration, R and dR/dx
+        at once: 5-8 evaluations where bisection to the same 4 eps took about 50.
+        """
         lower, upper = self._bracket(real)
+
+        def residual_and_slope(x):
+            value = self._residual(real, x + 1j * _CS_STEP)
+            return value.real, value.imag / _CS_STEP
+
         return safeguarded_newton(
-            lambda x: (self._residual(real, x), None),
+            residual_and_slope,
             lower,
             upper,
             maxiter=200,

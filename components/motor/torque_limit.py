@@ -5,6 +5,7 @@ import openmdao.api as om
 
 from lpc_mdo.checks import check_range
 from lpc_mdo.components.motor._pointwise import PointwiseImplicitComp
+from lpc_mdo.numerics import safeguarded_newton
 
 _MAX_DOUBLINGS = 200
 
@@ -161,8 +162,34 @@ class TorqueLimitComp(PointwiseImplicitComp):
         x = torque / scale
         return (((x + b) * x + c) * x + d) * x + e
 
-    def _bracket(self, v):
+    def _solve(self, v):
+        """
+        Return the largest real root of the quartic on its bracket (safeguarded Newton).
+
+        The coefficients are formed once per solve (the residual would form them at every
+        iteration) and the slope is the polynomial's derivative.
+        """
         scale, b, c, d, e = _quartic(v, self.options["parameters"])
+        lower, upper = self._bracket(v, (scale, b, c, d, e))
+
+        def residual_and_slope(torque):
+            x = torque / scale
+            value = (((x + b) * x + c) * x + d) * x + e
+            slope = ((4.0 * x + 3.0 * b) * x + 2.0 * c) * x + d
+            return value, slope / scale
+
+        return safeguarded_newton(
+            residual_and_slope,
+            lower,
+            upper,
+            maxiter=200,
+            variable=self._state_name,
+            units=self._state_units,
+            where=self.msginfo,
+        )
+
+    def _bracket(self, v, quartic=None):
+        scale, b, c, d, e = _quartic(v, self.options["parameters"]) if quartic is None else quartic
         # Largest real root of P'(x)/4 = x**3 + (3b/4) x**2 + (c/2) x + d/4 (companion matrix).
         n = b.size
         companion = np.zeros((n, 3, 3))
