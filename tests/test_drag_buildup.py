@@ -28,6 +28,16 @@ CRUISE = {
 }
 
 
+def fully_turbulent(components):
+    """Return the parts with every laminar fraction 0 (as a fully turbulent CFD)."""
+    return tuple(
+        dataclasses.replace(c, laminar_fraction=0.0)
+        if "laminar_fraction" in {f.name for f in dataclasses.fields(c)}
+        else c
+        for c in components
+    )
+
+
 def make_problem(components=None, values=None, conditions=(CRUISE,), **options):
     if components is None:
         components, values = lpc_drag_components()
@@ -249,14 +259,8 @@ def test_lpc_zero_lift_drag_against_nasa():
     # Fully turbulent as the CFD (every laminar fraction 0), like for like: within 15 % of the
     # CFD fit (measured 0.0357, -14.5 %; the parabolic fit of the trimmed polar, -13 %, is the
     # slow test in test_lift_to_drag.py).
-    turbulent = tuple(
-        dataclasses.replace(c, laminar_fraction=0.0)
-        if "laminar_fraction" in {f.name for f in dataclasses.fields(c)}
-        else c
-        for c in comps
-    )
     cd0_turbulent = make_problem(
-        turbulent, values, allowance_fraction=LPC_LEAKAGE_PROTUBERANCE
+        fully_turbulent(comps), values, allowance_fraction=LPC_LEAKAGE_PROTUBERANCE
     ).get_val("CD0")[0]
     assert cd0 < cd0_turbulent
     assert_near_equal(cd0_turbulent, 0.0417, 0.15)

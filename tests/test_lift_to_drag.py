@@ -72,45 +72,19 @@ def test_trimmed_polar_against_nasa_cfd_like_for_like():
     # difference, added to each point), fitted with the same parabola C_D0 + k C_L^2:
     # measured 0.0363, within 15 % (docs theory/aerodynamics 'Drag build-up'); its maximum L/D
     # 15.9 lies 26 % above the CFD's (the lift-dependent factor k differs, documented there).
-    import dataclasses
+    from test_drag_buildup import fully_turbulent, make_problem
 
     from lpc_mdo.analysis import analyze_vehicle
     from lpc_mdo.components.aero.drag_buildup import (
         LPC_LEAKAGE_PROTUBERANCE,
-        DragBuildupComp,
         lpc_drag_components,
     )
 
     def build_up(gear, booms, turbulent):
-        import openmdao.api as om
-
         comps, values = lpc_drag_components(gear=gear, booms=booms)
-        if turbulent:
-            comps = tuple(
-                dataclasses.replace(c, laminar_fraction=0.0)
-                if "laminar_fraction" in {f.name for f in dataclasses.fields(c)}
-                else c
-                for c in comps
-            )
-        prob = om.Problem(reports=False)
-        prob.model.add_subsystem(
-            "drag",
-            DragBuildupComp(components=comps, allowance_fraction=LPC_LEAKAGE_PROTUBERANCE),
-            promotes=["*"],
-        )
-        prob.setup()
-        for name, value in values.items():
-            prob.set_val(name, value)
-        # Cruise at 1000 m (docs theory/aerodynamics 'Drag build-up'), as the model's cruise.
-        for name, value in (
-            ("speed", 57.1897),
-            ("density", 1.11177),
-            ("dynamic_viscosity", 1.70443e-5),
-            ("speed_of_sound", 336.410),
-        ):
-            prob.set_val(name, value)  # fmt: skip
-        prob.run_model()
-        return prob.get_val("CD0")[0]
+        comps = fully_turbulent(comps) if turbulent else comps
+        problem = make_problem(comps, values, allowance_fraction=LPC_LEAKAGE_PROTUBERANCE)
+        return problem.get_val("CD0")[0]
 
     shift = build_up(False, False, True) - build_up(True, True, False)
     analysis = analyze_vehicle(processes=2)

@@ -172,6 +172,10 @@ class PointwiseImplicitComp(om.ImplicitComponent):
             value = self._residual(real, x + 1j * _CS_STEP)
             return value.real, value.imag / _CS_STEP
 
+        return self._newton(residual_and_slope, lower, upper)
+
+    def _newton(self, residual_and_slope, lower, upper):
+        """Return the roots by safeguarded Newton on the bracket, errors naming the state."""
         return safeguarded_newton(
             residual_and_slope,
             lower,

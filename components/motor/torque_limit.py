@@ -5,7 +5,6 @@ import openmdao.api as om
 
 from lpc_mdo.checks import check_range
 from lpc_mdo.components.motor._pointwise import PointwiseImplicitComp
-from lpc_mdo.numerics import safeguarded_newton
 
 _MAX_DOUBLINGS = 200
 
@@ -178,15 +177,7 @@ class TorqueLimitComp(PointwiseImplicitComp):
             slope = ((4.0 * x + 3.0 * b) * x + 2.0 * c) * x + d
             return value, slope / scale
 
-        return safeguarded_newton(
-            residual_and_slope,
-            lower,
-            upper,
-            maxiter=200,
-            variable=self._state_name,
-            units=self._state_units,
-            where=self.msginfo,
-        )
+        return self._newton(residual_and_slope, lower, upper)
 
     def _bracket(self, v, quartic=None):
         scale, b, c, d, e = _quartic(v, self.options["parameters"]) if quartic is None else quartic
