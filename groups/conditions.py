@@ -38,7 +38,7 @@ from lpc_mdo.components.aero.drag_buildup import (
     lpc_drag_components,
 )
 from lpc_mdo.components.aero.tail_efficiency import TailEfficiencyComp
-from lpc_mdo.components.aero.vlm_lattice import Lattice
+from lpc_mdo.components.aero.vlm_lattice import lattice_of
 from lpc_mdo.components.aero.wing_zero_lift_moment import (
     WingZeroLiftMomentComp,
     wing_zero_lift_moment_options,
@@ -466,7 +466,7 @@ def _add_aerodynamics(
 
 def _tail_efficiency_options(vehicle, surfaces):
     """TailEfficiencyComp options: the tail's panels in the lattice and the file's eta_t."""
-    lattice = Lattice(surfaces)
+    lattice = lattice_of(surfaces)
     start = surfaces[0].num_chord_panels * surfaces[0].num_span_panels  # wing first
     return {
         "num_panels": lattice.num_panels,

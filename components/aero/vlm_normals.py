@@ -4,7 +4,7 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.aero.vlm_biot_savart import cross, dot, outer, skew
-from lpc_mdo.components.aero.vlm_lattice import Lattice, declare_lattice_options
+from lpc_mdo.components.aero.vlm_lattice import declare_lattice_options, lattice_of
 
 
 class VLMNormalsComp(om.ExplicitComponent):
@@ -47,7 +47,7 @@ class VLMNormalsComp(om.ExplicitComponent):
 
     def setup(self):
         nn = self.options["num_nodes"]
-        lat = self._lattice = Lattice(self.options["surfaces"])
+        lat = self._lattice = lattice_of(self.options["surfaces"])
         npn = lat.num_panels
         self.add_input(
             "ring_vertices",

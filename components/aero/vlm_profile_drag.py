@@ -3,7 +3,7 @@
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.components.aero.vlm_lattice import Lattice, declare_lattice_options
+from lpc_mdo.components.aero.vlm_lattice import declare_lattice_options, lattice_of
 from lpc_mdo.constants import SEA_LEVEL_DENSITY
 
 
@@ -43,7 +43,7 @@ class VLMProfileDragComp(om.ExplicitComponent):
 
     def setup(self):
         nn = self.options["num_nodes"]
-        lat = self._lattice = Lattice(self.options["surfaces"])
+        lat = self._lattice = lattice_of(self.options["surfaces"])
         npn = lat.num_panels
         self.add_input("panel_areas", np.zeros(npn), units="m**2", desc="panel areas")
         self.add_input("speed", np.zeros(nn), units="m/s", desc="airspeed")

@@ -4,7 +4,7 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.aero.vlm_biot_savart import cross, dot, outer, skew
-from lpc_mdo.components.aero.vlm_lattice import Lattice, declare_lattice_options
+from lpc_mdo.components.aero.vlm_lattice import declare_lattice_options, lattice_of
 from lpc_mdo.components.aero.vlm_loads import Q_FLOOR
 from lpc_mdo.constants import SEA_LEVEL_DENSITY
 
@@ -47,7 +47,7 @@ class VLMSectionalLiftComp(om.ExplicitComponent):
 
     def setup(self):
         nn = self.options["num_nodes"]
-        lat = self._lattice = Lattice(self.options["surfaces"])
+        lat = self._lattice = lattice_of(self.options["surfaces"])
         npn, nst = lat.num_panels, lat.num_strips
         self.add_input(
             "panel_forces", np.zeros((nn, npn, 3)), units="N", desc="inviscid panel forces"

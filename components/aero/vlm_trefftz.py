@@ -4,7 +4,7 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.aero.vlm_biot_savart import cross, dot
-from lpc_mdo.components.aero.vlm_lattice import Lattice, declare_lattice_options
+from lpc_mdo.components.aero.vlm_lattice import declare_lattice_options, lattice_of
 from lpc_mdo.constants import SEA_LEVEL_DENSITY
 
 #: Squared core radius (m**2) of the 2-D Trefftz-plane vortices (finite if two legs coincide).
@@ -50,7 +50,7 @@ class VLMTrefftzDragComp(om.ExplicitComponent):
 
     def setup(self):
         nn = self.options["num_nodes"]
-        lat = self._lattice = Lattice(self.options["surfaces"])
+        lat = self._lattice = lattice_of(self.options["surfaces"])
         npn = lat.num_panels
         self.add_input(
             "ring_vertices",
