@@ -87,11 +87,11 @@ class RotorNoiseGroup(om.Group):
         Section t/c (default 0.12).
     hub_position, thrust_direction : float, (num_rotors, 3), m and unitless
         Hub positions and thrust axes in the body frame (x forward, y right, z down).
-    observer_distance, observer_elevation, observer_azimuth : float, (1,), m, rad, rad
-        Observer about the hub centroid (observer_input = 'relative'); defaults 100 m, 45 deg
+    observer_distance, observer_elevation, observer_azimuth : float, (num_observers,), m, rad, rad
+        Observers about the hub centroid (observer_input = 'relative'); defaults 100 m, 45 deg
         below the rotor plane, 180 deg (aft).
-    observer_position : float, (3,), m
-        Observer in the body frame (an input when observer_input = 'position').
+    observer_position : float, (3,) or (num_observers, 3), m
+        Observers in the body frame (an input when observer_input = 'position').
     flight_velocity : float, (3,), m/s
         Vehicle velocity in the body frame (zero in hover).
     density, speed_of_sound : float, (1,), kg/m**3 and m/s
@@ -99,18 +99,24 @@ class RotorNoiseGroup(om.Group):
 
     Outputs (main ones; dB re 20 uPa, units=None):
 
+    With ``num_observers`` n > 1 the per-rotor outputs below have n num_rotors rows,
+    observer-major (row j num_rotors + k: rotor k heard by observer j; the components sit in
+    the subgroup ``pairs``), and the totals one level per observer.
+
     Outputs
     -------
-    total_spl_a : (1,) dBA
-        Total A-weighted level of all rotors (the hover constraint).
-    total_spl : (1,) dB
+    total_spl_a : (num_observers,) dBA
+        Total A-weighted level of all rotors at each observer (the hover constraint).
+    total_spl : (num_observers,) dB
         Total unweighted level.
     rotor_spl_a, tonal_spl_a, broadband_oaspl_a : (num_rotors,) dBA
         Per-rotor total, tonal (loading + thickness) and broadband A-weighted levels.
     rotor_spl, tonal_spl, broadband_oaspl : (num_rotors,) dB
         The same, unweighted.
     loading_spl, thickness_spl, loading_spl_a, thickness_spl_a : (num_rotors, num_harmonics)
-        Tonal levels per blade-passing harmonic; harmonic_frequency (Hz) gives m B rpm/60.
+        Tonal levels per blade-passing harmonic, with the ISO 9613-1 absorption over the
+        hub-observer path (``loading_spl_free``, ``thickness_spl_free``: without it);
+        harmonic_frequency (Hz) gives m B rpm/60.
     broadband_spl, broadband_spl_a : (num_rotors, num_bands)
         Broadband band levels at ``band_frequencies`` (attribute, Hz).
 
@@ -118,6 +124,8 @@ class RotorNoiseGroup(om.Group):
     -------
     num_rotors, num_radial, num_azimuth, num_harmonics, num_bands : int
         Array sizes (defaults 1, 25, 1, 3, 38).
+    num_observers : int
+        Observers evaluated in one pass (default 1; docs theory/acoustics 'Several observers').
     num_blades : int or sequence of int
         Blades per rotor (default 2).
     num_load_harmonics : int or None
