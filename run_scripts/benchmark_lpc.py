@@ -7,7 +7,8 @@ transition roll/yaw speed differentials) and 96 constraints (with the 40 linear 
 rotor-speed bounds: 136), then times ``run_model`` and ``compute_totals`` (the objective and all
 constraints x 171, adjoint) and prints the medians, the
 ratios to the paper's CSDL figures (7.06 s forward, 24.84 s derivatives after 3.7 h of
-compilation; paper Table 9) and, with --profile, where the time goes by component class.
+compilation; paper Table 9), the component count, the ratios to issue 19's baseline and targets
+and, with --profile, where the time goes by module (the OpenMDAO framework's share).
 """
 
 import argparse
@@ -30,6 +31,10 @@ from lpc_mdo.problems import declare_problem  # noqa: E402
 
 PAPER_FORWARD_S = 7.06
 PAPER_DERIVATIVE_S = 24.84
+#: Issue 19 (speed): the times it was filed with (2-core machine, idle, median of 5) and its
+#: targets, in seconds.
+ISSUE_19_BASELINE = {"setup": 5.9, "run_model": 0.78, "totals": 1.26}
+ISSUE_19_TARGET = {"setup": 4.0, "run_model": 0.25, "totals": 0.4}
 
 
 def build():
@@ -82,6 +87,21 @@ def main(argv=None):
     print(
         f"  {label:<36}{t_med:>10.3f}{PAPER_DERIVATIVE_S:>11.2f}{PAPER_DERIVATIVE_S / t_med:>8.1f}x"
     )
+
+    explicit = sum(1 for _ in prob.model.system_iter(recurse=True, typ=om.ExplicitComponent))
+    implicit = sum(1 for _ in prob.model.system_iter(recurse=True, typ=om.ImplicitComponent))
+    groups = sum(1 for _ in prob.model.system_iter(recurse=True, typ=om.Group))
+    print(
+        f"\n  {explicit + implicit} components ({explicit} explicit, {implicit} implicit) "
+        f"in {groups} groups"
+    )
+    print(f"\n  {'issue 19':<36}{'baseline':>10}{'speed-up':>10}{'target':>9}  met")
+    for key, value in (("setup", setup), ("run_model", f_med), ("totals", t_med)):
+        base, target = ISSUE_19_BASELINE[key], ISSUE_19_TARGET[key]
+        print(
+            f"  {key:<36}{base:>10.2f}{base / value:>9.2f}x{target:>9.2f}  "
+            f"{'yes' if value <= target else 'no'}"
+        )
 
     if args.profile:
         profiler = cProfile.Profile()
