@@ -644,7 +644,8 @@ def _analyze_lift_to_drag(analysis, args):
     return (
         f"  {cruise} airframe lift-to-drag (wing, tail, profile and parasite drag; no rotors): "
         f"{state} {here}; maximum {sweep['max_L/D']:.2f} at C_L {sweep['CL_at_max']:.3f} "
-        f"(pitch sweep -2..14 deg at the {cruise} speed, elevator and rotor speeds as above)"
+        f"(pitch sweep {sweep['pitch_deg'][0]:g}..{sweep['pitch_deg'][-1]:g} deg at the {cruise} "
+        "speed, elevator and rotor speeds as above)"
     )
 
 

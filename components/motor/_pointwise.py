@@ -12,6 +12,7 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.motor._numerics import (
+    CS_STEP,
     complex_step_partials,
     declare_pointwise_partials,
     polish_complex,
@@ -19,9 +20,6 @@ from lpc_mdo.components.motor._numerics import (
 )
 from lpc_mdo.components.motor.parameters import MotorParameters
 from lpc_mdo.numerics import safeguarded_newton
-
-#: Complex step of the Newton slope (the residuals are complex-safe; round-off free).
-_CS_STEP = 1e-30
 
 
 def _declare_common_options(comp, per_node):
@@ -169,8 +167,8 @@ class PointwiseImplicitComp(om.ImplicitComponent):
         lower, upper = self._bracket(real)
 
         def residual_and_slope(x):
-            value = self._residual(real, x + 1j * _CS_STEP)
-            return value.real, value.imag / _CS_STEP
+            value = self._residual(real, x + 1j * CS_STEP)
+            return value.real, value.imag / CS_STEP
 
         return self._newton(residual_and_slope, lower, upper)
 

@@ -282,13 +282,12 @@ class MassPropertiesComp(om.ExplicitComponent):
         outputs["cg"] = cg
         outputs["inertia"] = inertia
         if self.options["item_table"]:
-            outputs["item_mass_properties"] = self._item_table(inputs, masses, points, cg)
+            outputs["item_mass_properties"] = self._item_table(inputs, masses, points, p)
 
-    def _item_table(self, inputs, masses, points, cg):
-        """Rows of ``item_mass_properties`` (see the class docstring)."""
+    def _item_table(self, inputs, masses, points, p):
+        """Rows of ``item_mass_properties`` (see the class docstring); p = P(r_i) of compute."""
         items = self.options["items"]
         table = np.zeros((len(items), len(ITEM_COLUMNS)), dtype=masses.dtype)
-        p, _ = transport_inertia(points - cg)
         for k, item in enumerate(items):
             sl = self._slices[item.name]
             m, pts = masses[sl], points[sl]
