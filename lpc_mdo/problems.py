@@ -341,7 +341,7 @@ def copy_design_variables(source, target, vehicle, names=None):
     """
     for name in names or vehicle.design_variables:
         dv = vehicle.design_variables[name]
-        units = None if dv.units == "unitless" else dv.units
+        units = openmdao_units(dv.units)
         try:
             value = np.asarray(source.get_val(name, units=units)).reshape(dv.shape)
             target.set_val(name, value, units=units)

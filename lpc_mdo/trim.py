@@ -37,6 +37,7 @@ from openmdao.utils.general_utils import determine_adder_scaler
 from scipy.optimize import least_squares
 
 from lpc_mdo.groups.condition_base import condition_layout
+from lpc_mdo.groups.lpc import openmdao_units
 
 
 def driver_scaling(meta):
@@ -259,7 +260,7 @@ def trim(
     residuals, iterations, messages, worst, per_condition = {}, 0, [], 0.0, {}
     for cond, outcome in zip(conditions, outcomes, strict=True):
         for name, (flat, entries) in outcome.values.items():
-            units = _dv_units(vehicle, name)
+            units = openmdao_units(vehicle.design_variables[name].units)
             full = np.asarray(prob.get_val(name, units=units)).copy()
             full.reshape(-1)[flat] = entries
             prob.set_val(name, full, units=units)
@@ -305,12 +306,6 @@ class _Outcome:
     result: ConditionTrim
 
 
-def _dv_units(vehicle, name):
-    """OpenMDAO units of a vehicle-file design variable (None for unitless)."""
-    units = vehicle.design_variables[name].units
-    return None if units == "unitless" else units
-
-
 def _trim_condition(prob, vehicle, cond, tol, max_iter, separate):
     """Trim one condition of ``prob`` (in its own single-condition problem if ``separate``)."""
     started = time.perf_counter()
@@ -328,7 +323,7 @@ def _trim_condition(prob, vehicle, cond, tol, max_iter, separate):
     values = {}  # name -> (flat entries of this condition, their values): other conditions
     if separate:  # may share the array (e.g. one row per transition point)
         for name, flat in condition_layout(vehicle).trim_variables(cond):
-            units = _dv_units(vehicle, name)
+            units = openmdao_units(vehicle.design_variables[name].units)
             entries = np.asarray(target.get_val(name, units=units)).ravel()[flat]
             values[name] = (np.asarray(flat), entries.copy())
     residuals, start = {}, 0
