@@ -47,6 +47,7 @@ from lpc_mdo.components.atmosphere import AtmosphereComp
 from lpc_mdo.components.dynamics.body_pitching_moment import BodyPitchingMomentComp
 from lpc_mdo.components.dynamics.eom import EquationsOfMotionComp
 from lpc_mdo.components.dynamics.force_sum import ForceSumComp
+from lpc_mdo.components.dynamics.path_acceleration import PathAccelerationComp
 from lpc_mdo.components.dynamics.stability_derivatives import (
     AnglePerturbationComp,
     StabilityDerivativeComp,
@@ -527,7 +528,13 @@ def _add_body_moment(group, body_options, tail_options, alpha, vlm, prefix):
         )
 
 
-def _add_equations_of_motion(group, sources, forces_only=(), load_factor=1.0):
+def _add_equations_of_motion(group, sources, forces_only=(), load_factor=1.0, path_axes=False):
+    """Force sum and 6-DoF equations of motion; ``path_axes``: linear rows in flight-path axes.
+
+    With ``path_axes`` the condition's ``linear_acceleration`` is the body-axis acceleration
+    turned into flight-path axes (:class:`PathAccelerationComp`), so that a prescribed
+    acceleration along the path is a constant target whatever the pitch.
+    """
     group.add_subsystem(
         "loads", ForceSumComp(sources=sources, forces_only=forces_only), promotes=["*"]
     )
@@ -544,9 +551,19 @@ def _add_equations_of_motion(group, sources, forces_only=(), load_factor=1.0):
             "velocity",
             "load_factor",
         ],
-        promotes_outputs=["linear_acceleration", "angular_acceleration"],
+        promotes_outputs=[
+            ("linear_acceleration", "body_acceleration" if path_axes else "linear_acceleration"),
+            "angular_acceleration",
+        ],
     )
     group.set_input_defaults("load_factor", np.array([load_factor]))
+    if path_axes:
+        group.add_subsystem(
+            "path_axes",
+            PathAccelerationComp(num_nodes=1),
+            promotes_inputs=["body_acceleration", "pitch", "flight_path_angle"],
+            promotes_outputs=[("path_acceleration", "linear_acceleration")],
+        )
 
 
 def _add_power(group, motors):
@@ -864,12 +881,20 @@ class SteadyFlightCondition(ConditionGroup):
 
 class TransitionCondition(ConditionGroup):
     """
-    A quasi-steady transition point: prescribed speed and pitch, VLM + drag and rotors.
+    A quasi-steady transition point: prescribed speed and acceleration, VLM + drag and rotors.
 
     The rotors are the Pitt–Peters lift rotors and the BEM pusher, with all nine motors (paper
-    Sec. IV; docs theory/dynamics 'Design conditions'). The full problem constrains u_dot and
-    w_dot to the prescribed acceleration (dV/dt cos theta, dV/dt sin theta) and v_dot, p_dot,
-    q_dot, r_dot to zero.
+    Sec. IV; docs theory/dynamics 'Design conditions'). The full problem constrains the
+    acceleration along the flight path to the prescribed dV/dt and the path-normal, lateral and
+    angular accelerations to zero; ``linear_acceleration`` is in flight-path axes
+    (:class:`~lpc_mdo.components.dynamics.path_acceleration.PathAccelerationComp`).
+
+    The pitch is a trim variable (``pitch``; the vehicle file's ``pitch_deg`` is its initial
+    value). The paper prescribes it from a transition trajectory flown by its 3724 kg vehicle;
+    a vehicle of another weight cannot fly that attitude schedule: the itemised reference
+    (3067 kg) lifts more than its weight on the wing alone at points 2-5 at the prescribed
+    pitch, with the lift rotors at their lowest speed (measured 2026-12-04; docs
+    theory/dynamics 'Design conditions').
 
     The rotors turn at their pair's ``lift_rpm`` (1, 4; the paper's per-pair speed)
     plus the roll and yaw differentials ``roll_yaw_rpm`` (1, 2; not in the paper; left
@@ -907,6 +932,7 @@ class TransitionCondition(ConditionGroup):
                 "minus right rotors), yaw (spin +1 minus spin -1 rotors)",
             ),
             _PUSHER_RPM,
+            _PITCH,
             _ELEVATOR,
         )
 
@@ -922,13 +948,14 @@ class TransitionCondition(ConditionGroup):
     @classmethod
     def trim_rows(cls, vehicle, condition):
         g = linear_trim_ref()
-        a, theta = condition.acceleration, condition.pitch
-        # v_dot: only the rotors' net side force under the yaw differential moves it, with no
-        # trim variable of its own: a degenerate row.
+        # Flight-path axes (the linear rows of a transition, PathAccelerationComp): the
+        # prescribed acceleration is along the path whatever the pitch. v_dot: only the rotors'
+        # net side force under the yaw differential moves it, with no trim variable of its own:
+        # a degenerate row.
         return (
-            TrimRow("u", a * np.cos(theta), ref=g),
+            TrimRow("u", condition.acceleration, ref=g),
             TrimRow("v", ref=g, degenerate=True),
-            TrimRow("w", a * np.sin(theta), ref=g),
+            TrimRow("w", ref=g),
             TrimRow("p"),
             TrimRow("q"),
             TrimRow("r"),
@@ -987,7 +1014,9 @@ class TransitionCondition(ConditionGroup):
         )
         _add_pusher(self, vehicle)
         _add_power(self, {"lift": len(rotors), "pusher": 1})
-        _add_equations_of_motion(self, ["aero", "drag", "lift", "pusher"], forces_only=["drag"])
+        _add_equations_of_motion(
+            self, ["aero", "drag", "lift", "pusher"], forces_only=["drag"], path_axes=True
+        )
 
 
 class StructuralCondition(ConditionGroup):

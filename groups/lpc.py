@@ -36,8 +36,8 @@ class LPCGroup(om.Group):
     System-level model of the lift-plus-cruise vehicle (paper Fig. 11).
 
     ``design_variables`` (an IndepVarComp) holds the design-variable arrays of the vehicle file
-    (the reference: 31 arrays, 171 values: the paper's 161 and the 10 roll/yaw lift-rotor speed
-    differentials of the transition points); ``vehicle`` (VehicleGroup) turns them into
+    (the reference: 32 arrays, 176 values: the paper's 161, the 10 roll/yaw lift-rotor speed
+    differentials and the 5 pitch angles of the transition points); ``vehicle`` (VehicleGroup) turns them into
     geometry and mass properties; each design condition of the vehicle file is a subsystem of
     its name, built by the class of its kind (:mod:`lpc_mdo.groups.condition_kinds`), which
     also declares what it reads from the vehicle, which design-variable entries drive it, its

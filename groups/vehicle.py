@@ -107,8 +107,9 @@ class VehicleGroup(om.Group):
     vehicle : Vehicle or None
         None = the reference vehicle.
     other_mass : float or None
-        W_other in kg; None = calibrated so that the initial design's gross mass equals the
-        vehicle's ``masses.target_gross_mass`` (paper: 3723.99 kg).
+        W_other in kg; None = the vehicle's rule (``masses.other_rule``): ``masses.other``
+        ("fixed"; the reference vehicle: 0), or calibrated so that the initial design's gross
+        mass equals ``masses.design_gross_mass`` ("calibrated", the paper's procedure).
     other_cg : sequence of 3 float or None
         cg of W_other in m; None = the vehicle's ``masses.other_cg``.
     """
@@ -125,7 +126,7 @@ class VehicleGroup(om.Group):
             default=None,
             types=(int, float),
             allow_none=True,
-            desc="W_other (kg); None = calibrated to the target gross mass",
+            desc="W_other (kg); None = the vehicle's masses.other_rule",
         )
         self.options.declare(
             "other_cg",
@@ -198,8 +199,10 @@ class VehicleGroup(om.Group):
         vehicle = self.options["vehicle"] or reference_vehicle()
         other, other_cg = self.options["other_mass"], self.options["other_cg"]
         if other is None:
-            other, calibrated_cg = calibrated_other_mass(vehicle)
-            other_cg = calibrated_cg if other_cg is None else other_cg
+            if vehicle.masses.other_rule == "calibrated":
+                other = calibrated_other_mass(vehicle)[0]
+            else:
+                other = vehicle.masses.other
         wing, tail = vehicle.wing, vehicle.horizontal_tail
 
         sections = wing.planform == "sections"
@@ -355,19 +358,20 @@ class VehicleGroup(om.Group):
 @functools.lru_cache(maxsize=8)
 def calibrated_other_mass(vehicle):
     """
-    Return W_other and its cg such that the vehicle's initial design has its target gross mass.
+    Return W_other and its cg such that the vehicle's initial design has its design gross mass.
 
     This is lpc-mdo's one W_other calibration: :class:`VehicleGroup` (so the full model) uses
-    it, and :func:`lpc_mdo.groups.weights.calibrate_other_mass` (``lpc_mdo.api``) returns its
-    mass. The target is ``masses.target_gross_mass``. W_other is the named unitemised item
-    at ``masses.other_cg`` (a stated position; no rule moves it to balance hover).
+    it when the vehicle's ``masses.other_rule`` is ``"calibrated"``, and
+    :func:`lpc_mdo.groups.weights.calibrate_other_mass` (``lpc_mdo.api``) returns its mass. The
+    target is ``masses.design_gross_mass``. W_other is the named unitemised item at
+    ``masses.other_cg`` (a stated position; no rule moves it to balance hover).
 
     The paper calibrates W_other at the initial design because the NASA reference does not itemise
     every weight (docs theory/weights 'Gross mass'). Gross mass and cg are affine in W_other and its
     position, so one run of the vehicle group with W_other = 0 gives both exactly. Every other item
     is held at its initial-design value as the model computes it: the wing mass from the wing-box
     beam at the initial thicknesses (the vehicle file's gauges, sized at +3g/-1g by
-    ``run_scripts/size_wing_gauges.py``) plus its secondary structure, the rotor, landing-gear
+    ``run_scripts/close_initial_design.py``) plus its secondary structure, the rotor, landing-gear
     and system items, the motor masses from the motor sizing (paper eq. 23), the
     fuselage, boom and empennage masses from the M4 regressions, and the fixed masses of the vehicle
     file.
@@ -387,21 +391,78 @@ def calibrated_other_mass(vehicle):
     ValueError
         When the other items already weigh the target or more (W_other would be <= 0).
     """
-    prob = om.Problem(reports=False, comm=serial_comm())
-    prob.model.add_subsystem(
-        "vehicle",
-        VehicleGroup(vehicle=vehicle, other_mass=0.0, other_cg=(0.0, 0.0, 0.0)),
-        promotes=["*"],
-    )
-    prob.setup()
-    prob.run_model()
     masses = vehicle.masses
-    bare_mass = float(prob.get_val("gross_mass", units="kg")[0])
-    other = masses.target_gross_mass - bare_mass
+    bare_mass = _gross_mass(_initial_design(vehicle, other=0.0))
+    other = masses.design_gross_mass - bare_mass
     if other <= 0.0:
         raise ValueError(
-            f"masses.target_gross_mass = {masses.target_gross_mass} kg; the other "
+            f"masses.design_gross_mass = {masses.design_gross_mass} kg; the other "
             f"items of the initial design weigh {bare_mass:.2f} kg, so W_other "
             f"would be {other:.2f} kg; allowed: a target above {bare_mass:.2f} kg."
         )
     return other, tuple(float(v) for v in masses.other_cg)
+
+
+def _initial_design(vehicle, other):
+    """Return a set-up problem of the vehicle group at its initial design, W_other = other kg."""
+    prob = om.Problem(reports=False, comm=serial_comm())
+    prob.model.add_subsystem(
+        "vehicle",
+        VehicleGroup(vehicle=vehicle, other_mass=float(other), other_cg=(0.0, 0.0, 0.0)),
+        promotes=["*"],
+    )
+    prob.setup()
+    return prob
+
+
+def _gross_mass(prob):
+    prob.run_model()
+    return float(prob.get_val("gross_mass", units="kg")[0])
+
+
+def closed_design_gross_mass(vehicle, tolerance=1e-3, max_iterations=50):
+    """
+    Return the design gross mass W_dg at which the vehicle's initial design weighs W_dg (kg).
+
+    The landing-gear, wing-secondary and systems regressions scale with the design gross mass
+    (docs theory/weights 'Mass items'), which NDARC and FLOPS take as an input and a sizing
+    code closes on the gross mass it computes. This is that closure for the initial design, by
+    fixed-point iteration W_dg <- W0(W_dg) (the slope dW0/dW_dg is about 0.14 for the reference
+    vehicle, so each iteration gains almost one digit), with the vehicle's own W_other rule:
+    the fixed W_other, or none for a calibrated one (which would otherwise absorb the change).
+    ``run_scripts/close_initial_design.py`` writes the result into a vehicle file.
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        The vehicle definition; its ``masses.design_gross_mass`` is the first W_dg.
+    tolerance : float
+        Absolute tolerance on W0 - W_dg, kg.
+    max_iterations : int
+        Iterations before giving up.
+
+    Returns
+    -------
+    float
+        The closed design gross mass, kg.
+
+    Raises
+    ------
+    om.AnalysisError
+        When the iteration does not converge within ``max_iterations``.
+    """
+    masses = vehicle.masses
+    if masses.other_rule == "calibrated":
+        return masses.design_gross_mass
+    prob = _initial_design(vehicle, masses.other)
+    design_gross_mass = masses.design_gross_mass
+    for _ in range(max_iterations):
+        prob.set_val("design_gross_mass", design_gross_mass, units="kg")
+        gross = _gross_mass(prob)
+        if abs(gross - design_gross_mass) <= tolerance:
+            return gross
+        design_gross_mass = gross
+    raise om.AnalysisError(
+        f"closed_design_gross_mass: W_dg did not converge in {max_iterations} iterations "
+        f"(last W_dg {design_gross_mass:.4f} kg)"
+    )

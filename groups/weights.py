@@ -5,9 +5,10 @@
   inertia tensor about the cg with the parallel-axis theorem) from a vehicle definition. The
   wing mass (wing-box beam) and the motor masses (paper eq. 23) are inputs, connected by the
   assembly.
-- :func:`calibrate_other_mass` returns the W_other that the vehicle model uses: the one that
-  makes the initial design's gross mass the vehicle's ``masses.target_gross_mass``
-  (3723.99 kg, paper Table 8), as the paper did.
+- :func:`calibrate_other_mass` returns the W_other of the paper's calibration: the one that
+  makes the initial design's gross mass the vehicle's ``masses.design_gross_mass`` (the paper:
+  3723.99 kg, Table 8). The model uses it for a vehicle with ``masses.other_rule =
+  "calibrated"``; the reference vehicle is itemised (W_other = 0).
 - ``mass_breakdown`` and ``format_mass_breakdown`` (reading and printing the breakdown of a
   problem or a recorded case) are plain post-processing, in :mod:`lpc_mdo.api.weights`.
 """
@@ -455,7 +456,7 @@ class WeightsGroup(om.Group):
                 [r.hub_position for r in vehicle.lift_rotors] + [vehicle.pusher.hub_position],
                 "m",
             ),
-            "design_gross_mass": (masses.target_gross_mass, "kg"),
+            "design_gross_mass": (masses.design_gross_mass, "kg"),
             "wing_span": (vehicle.wing.span, "m"),
             "rotor_radius": (vehicle.design_variables["rotor_radius"].initial_array, "m"),
             "blade_chord_cp": (
@@ -505,7 +506,7 @@ def calibrate_other_mass(vehicle=None):
     Parameters
     ----------
     vehicle : lpc_mdo.vehicle.Vehicle or None
-        None = the reference vehicle. The target is its ``masses.target_gross_mass``
+        None = the reference vehicle. The target is its ``masses.design_gross_mass``
         (3723.99 kg for the reference vehicle, paper Table 8).
 
     Returns

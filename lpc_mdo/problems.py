@@ -110,7 +110,7 @@ class BaselineModel(LPCGroup):
             DesignDeviationComp(
                 references=references,
                 alpha=self.options["baseline_alpha"],
-                objective_ref=vehicle.masses.target_gross_mass,
+                objective_ref=vehicle.masses.design_gross_mass,
             ),
             promotes_inputs=[*BASELINE_SET, ("objective", "gross_mass")],
             promotes_outputs=["baseline_objective", ("deviation", "baseline_deviation")],
@@ -173,7 +173,7 @@ def declare_problem(
     Declare the objective, design variables and constraints of a problem on ``model``.
 
     Call it before ``prob.setup()``. With the defaults it declares paper Table 6: the 161
-    design variables and our 10 transition roll/yaw speed differentials; the 96 constraints,
+    design variables, our 10 transition roll/yaw speed differentials and 5 transition pitches; the 96 constraints,
     and the gross-mass objective. Per condition, from its kind's contract: its design
     variables, its trim rows and its constraints (hover: noise, tip Mach; the cruise condition:
     static margin; structural: skin buckling; transition: each lift rotor's own speed within
@@ -279,7 +279,7 @@ def declare_problem(
             )
         model.add_objective("baseline_objective", ref=1.0)
     else:
-        model.add_objective(name, ref=vehicle.masses.target_gross_mass if ref is None else ref)
+        model.add_objective(name, ref=vehicle.masses.design_gross_mass if ref is None else ref)
 
     # Each condition's trim rows and constraints, from its kind's contract.
     def bounds_of(dv_name):

@@ -5,6 +5,7 @@ import openmdao.api as om
 import pytest
 
 import lpc_mdo.api as lpc
+from lpc_mdo.vehicle import paper_calibrated_vehicle
 
 
 def test_motor_wrapper_reference_point():
@@ -49,14 +50,18 @@ def test_rotor_noise_wrapper_doubles_with_two_identical_rotors():
 
 def test_calibrate_other_mass_is_the_models():
     # One calibration path: the W_other the api returns is the one the vehicle model (and so
-    # the full model, which holds it) builds with, for the reference vehicle.
-    prob = om.Problem(reports=False)
-    prob.model.add_subsystem("vehicle", lpc.VehicleGroup(), promotes=["*"])
-    prob.setup()
-    prob.run_model()
-    model_other = prob.get_val("other_mass", units="kg")[0]
-    assert lpc.calibrate_other_mass() == pytest.approx(model_other, rel=1e-9)
-    assert lpc.calibrate_other_mass(lpc.reference_vehicle()) == pytest.approx(model_other, rel=1e-9)
+    # the full model, which holds it) builds with, for the paper-calibrated vehicle; the
+    # reference vehicle is itemised (W_other = 0 in the model).
+    paper = paper_calibrated_vehicle()
+    models_other = []
+    for vehicle in (paper, lpc.reference_vehicle()):
+        prob = om.Problem(reports=False)
+        prob.model.add_subsystem("vehicle", lpc.VehicleGroup(vehicle=vehicle), promotes=["*"])
+        prob.setup()
+        prob.run_model()
+        models_other.append(prob.get_val("other_mass", units="kg")[0])
+    assert lpc.calibrate_other_mass(paper) == pytest.approx(models_other[0], rel=1e-9)
+    assert models_other[1] == 0.0
 
 
 _ROTOR = dict(radius=1.524, rpm=1200.0, thrust=4863.5, chord=0.2)

@@ -93,8 +93,8 @@ DICT_CASES = [
     ("density 1e30", _set("material", "density", 1e30), "material.density", "in [500, 20000]"),
     (
         "target mass 100",
-        _set("masses", "target_gross_mass", 100.0),
-        "masses.target_gross_mass",
+        _set("masses", "design_gross_mass", 100.0),
+        "masses.design_gross_mass",
         "in [500, 20000] (kg)",
     ),
     (
@@ -320,8 +320,8 @@ DICT_CASES = [
     ),
     (
         "target mass 1e9",
-        _set("masses", "target_gross_mass", 1e9),
-        "masses.target_gross_mass",
+        _set("masses", "design_gross_mass", 1e9),
+        "masses.design_gross_mass",
         "in [500, 20000]",
     ),
     (

@@ -99,7 +99,7 @@ def test_plus_3g_trim_by_pitch_alone():
     assert_near_equal(fz, -3.0 * weight * np.cos(theta), 1e-6)
     assert_near_equal(-prob.get_val("plus_3g.aero_force")[0, 2], 3.0 * weight * np.cos(theta), 0.02)
     ratios = prob.get_val("plus_3g.top_skin_buckling_ratio")
-    # The vehicle file's gauges are sized at +3g (run_scripts/size_wing_gauges.py): every
+    # The vehicle file's gauges are sized at +3g (run_scripts/close_initial_design.py): every
     # constrained bay (all but the tip bay) is at one buckling ratio <= 1 (fully stressed; 0.969
     # measured with the sizing's own pitch), the unconstrained tip bay at minimum gauge is not.
     assert np.all(np.isfinite(ratios))

@@ -81,7 +81,7 @@ def test_baseline_continuation_raises_alpha_stage_by_stage(tmp_path):
     assert [s.extra["alpha"] for s in stages] == [1.0, 100.0]
     assert stages[0].case_file == str(tmp_path / "baseline_alpha1.sql")
     assert stages[1].case_file == str(final) and result is stages[1]
-    f_ref = vehicle.masses.target_gross_mass
+    f_ref = vehicle.masses.design_gross_mass
     for stage in stages:
         case = om.CaseReader(stage.case_file).get_case("final")
         expected = (

@@ -14,7 +14,7 @@ from lpc_mdo.groups.weights import (
     placeholder_calibration_inputs,
     wing_cg_estimate,
 )
-from lpc_mdo.vehicle import reference_vehicle
+from lpc_mdo.vehicle import paper_calibrated_vehicle, reference_vehicle
 
 TARGET = 3723.99  # paper Table 8, initial gross mass (kg)
 
@@ -78,11 +78,12 @@ def test_calibrated_other_mass_reaches_the_target():
     This is the calibration target, so it holds by construction; the tests next to it check
     the build-up independently.
     """
+    paper = paper_calibrated_vehicle()
     vehicle_prob = om.Problem(reports=False)
-    vehicle_prob.model.add_subsystem("vehicle", VehicleGroup(), promotes=["*"])
+    vehicle_prob.model.add_subsystem("vehicle", VehicleGroup(vehicle=paper), promotes=["*"])
     vehicle_prob.setup()
     vehicle_prob.run_model()
-    prob = weights_problem(other_mass=calibrate_other_mass())
+    prob = weights_problem(vehicle=paper, other_mass=calibrate_other_mass(paper))
     prob.set_val("wing_mass", vehicle_prob.get_val("wing_mass"))
     prob.set_val("motor_mass", vehicle_prob.get_val("motor_mass"))
     prob.run_model()

@@ -557,7 +557,7 @@ def lpc_drag_components(vehicle=None, boom_diameter=LPC_BOOM_DIAMETER, gear=True
     values["pusher_spinner_length"] = 2.0 * r_sp
     values["pusher_spinner_wetted_area"] = math.pi * r_sp * math.sqrt(r_sp**2 + (2.0 * r_sp) ** 2)
     if gear:
-        m = v.masses.target_gross_mass
+        m = v.masses.design_gross_mass
         d_main, w_main = raymer_ga_tyre(LPC_MAIN_GEAR_FRACTION * m / 2.0)
         d_nose, w_nose = raymer_ga_tyre((1.0 - LPC_MAIN_GEAR_FRACTION) * m)
         comps.append(BluffDrag("main_wheels", LPC_WHEEL_CD, d_main * w_main, 2))

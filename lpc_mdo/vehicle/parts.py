@@ -60,6 +60,8 @@ _PUSHER_GROUP = 4
 #: wide; 50 m catches positions in mm or in ft x 1000.
 _REACH = 50.0
 _MAX_FIXED_MASS = 10000.0  # kg
+# How W_other (masses.other) is set: as given, or calibrated to the design gross mass (paper IV).
+OTHER_MASS_RULES = ("fixed", "calibrated")
 _IDENTIFIER = "an identifier (letters, digits and '_', not starting with a digit)"
 _AIRFOIL_NAMES = tuple(AIRFOILS)
 
@@ -393,16 +395,20 @@ class FixedMasses:
     Attributes
     ----------
     payload, systems, other, power_electronics : float
-        Masses (kg). ``other`` (W_other) is not read by the vehicle model
-        (:class:`lpc_mdo.groups.vehicle.VehicleGroup`, hence every problem): it calibrates
-        W_other so that the initial gross mass equals ``target_gross_mass``
-        (:func:`lpc_mdo.groups.vehicle.calibrated_other_mass`). ``other`` is used only where
-        no calibration runs: as the default W_other of a stand-alone
-        :class:`lpc_mdo.groups.weights.WeightsGroup` (``other_mass=None``).
+        Masses (kg). ``other`` is W_other, the unitemised mass; with ``other_rule = "fixed"``
+        the vehicle model uses it as given (the reference vehicle: 0, every mass is an item).
     payload_cg, systems_cg, other_cg, power_electronics_cg : tuple of 3 float
         Centres of gravity, body frame (m).
-    target_gross_mass : float
-        Gross mass of the initial design that ``other`` is calibrated to (kg).
+    other_rule : str
+        ``"fixed"``: W_other is ``other``. ``"calibrated"``: the paper's procedure (Sec. IV):
+        W_other is chosen so that the initial design's gross mass equals
+        ``design_gross_mass`` (:func:`lpc_mdo.groups.vehicle.calibrated_other_mass`; ``other``
+        is then not read by the vehicle model).
+    design_gross_mass : float
+        Design gross mass W_dg (kg): the input of the weight regressions that scale with the
+        gross mass (landing gear, wing secondary structure, systems), as NDARC's and FLOPS'
+        design gross weight is an input of their weight estimates; also the objective's
+        reference and, with ``other_rule = "calibrated"``, the calibration target.
     """
 
     # Each fixed mass is 0-10 t, half the largest gross mass of the class (catches g and 1e30).
@@ -412,10 +418,11 @@ class FixedMasses:
     systems_cg: tuple[float, ...] = _param("m", ge=-_REACH, le=_REACH, shape=(3,))
     other: float = _param("kg", ge=0, le=_MAX_FIXED_MASS)
     other_cg: tuple[float, ...] = _param("m", ge=-_REACH, le=_REACH, shape=(3,))
+    other_rule: str = _param(choices=OTHER_MASS_RULES)
     power_electronics: float = _param("kg", ge=0, le=_MAX_FIXED_MASS)
     power_electronics_cg: tuple[float, ...] = _param("m", ge=-_REACH, le=_REACH, shape=(3,))
-    # 500-20000 kg: a one-seat eVTOL to the heaviest of the class (the reference is 3724 kg).
-    target_gross_mass: float = _param("kg", ge=500, le=20000)
+    # 500-20000 kg: a one-seat eVTOL to the heaviest of the class (the reference is 3089 kg).
+    design_gross_mass: float = _param("kg", ge=500, le=20000)
 
 
 @dataclass(frozen=True)

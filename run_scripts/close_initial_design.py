@@ -1,0 +1,123 @@
+"""Close the initial design: wing gauges sized at +3g/-1g and the design gross mass W_dg = W0.
+
+    python run_scripts/close_initial_design.py [--vehicle FILE] [--write]
+
+The initial design of a vehicle file is closed when (1) its wing box is sized for the loads of
+its own gross mass and (2) the design gross mass W_dg of the regressions that scale with it
+(landing gear, wing secondary structure, systems) is that gross mass. The two depend on each
+other (the loads scale with W0, W0 with the box), so this alternates:
+
+- size the box: the warm start's structural subproblem (``build_problem('subproblem_3')``,
+  paper Table 2: minimum gross mass over the 32 skin and spar thicknesses subject to skin
+  buckling and trim at +3g and -1g) on the vehicle's initial design;
+- close W_dg with :func:`lpc_mdo.groups.vehicle.closed_design_gross_mass`;
+
+until W_dg moves by less than 0.1 kg. It prints the thicknesses (root to tip), the box mass and
+W_dg; with ``--write`` it replaces the ``initial = ...`` line of the four
+``[design_variables.*_thickness]`` tables and the ``design_gross_mass`` line of the vehicle file
+(issue 17 item 2). Re-run it whenever the wing planform, the wing-box model, the loads or a mass
+item change.
+"""
+
+import argparse
+import os
+import re
+import time
+
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+os.environ.setdefault("OPENMDAO_REPORTS", "0")
+
+import numpy as np  # noqa: E402
+
+from lpc_mdo.groups.vehicle import closed_design_gross_mass  # noqa: E402
+from lpc_mdo.problems import build_problem  # noqa: E402
+from lpc_mdo.vehicle import read_vehicle_file, vehicle_from_dict  # noqa: E402
+
+THICKNESSES = (
+    "front_spar_thickness",
+    "rear_spar_thickness",
+    "top_skin_thickness",
+    "bottom_skin_thickness",
+)
+REFERENCE_FILE = os.path.join(
+    os.path.dirname(__file__), os.pardir, "lpc_mdo", "data", "lpc_reference.toml"
+)
+
+
+def size_gauges(vehicle=None):
+    """Return the sized thicknesses (m, dict of 8-vectors), the box mass (kg) and the result."""
+    prob = build_problem("subproblem_3", vehicle=vehicle, optimizer="IPOPT")
+    prob.driver.options["print_level"] = 0
+    start = time.perf_counter()
+    result = prob.run_driver()
+    elapsed = time.perf_counter() - start
+    gauges = {name: np.asarray(prob.get_val(name, units="m")).ravel() for name in THICKNESSES}
+    box = float(prob.get_val("wing_mass", units="kg")[0])
+    return gauges, box, result, elapsed
+
+
+def close(data, max_rounds=6, tolerance=0.1):
+    """Alternate gauge sizing and the W_dg closure on a vehicle dict until W_dg settles.
+
+    Returns the gauges (m), the box mass (kg) and W_dg (kg) of the last round; ``data`` is
+    updated in place.
+    """
+    for round_ in range(1, max_rounds + 1):
+        gauges, box, result, elapsed = size_gauges(vehicle_from_dict(data))
+        print(
+            f"round {round_}: gauges sized (success {result.success}, {result.iter_count} "
+            f"iterations, {elapsed:.1f} s), box {box:.2f} kg"
+        )
+        for name, values in gauges.items():
+            data["design_variables"][name]["initial"] = [float(v) for v in values]
+        previous = data["masses"]["design_gross_mass"]
+        w_dg = closed_design_gross_mass(vehicle_from_dict(data))
+        data["masses"]["design_gross_mass"] = w_dg
+        print(f"round {round_}: W_dg {previous:.2f} -> {w_dg:.2f} kg")
+        if abs(w_dg - previous) < tolerance:
+            return gauges, box, w_dg
+    raise RuntimeError(f"W_dg did not settle within {max_rounds} rounds (last {w_dg:.2f} kg)")
+
+
+def write_closure(path, gauges, design_gross_mass):
+    """Replace the thickness ``initial`` lines and the ``design_gross_mass`` line of a TOML file."""
+    with open(path) as f:
+        text = f.read()
+    for name, values in gauges.items():
+        listed = ", ".join(f"{v:.6g}" for v in values)
+        pattern = rf"(\[design_variables\.{name}\]\nunits = \"m\"\n)initial = [^\n]*"
+        line = f"initial = [{listed}]   # sized at +3g/-1g (run_scripts/close_initial_design.py)"
+        text, count = re.subn(pattern, lambda m, line=line: m.group(1) + line, text)
+        if count != 1:
+            raise ValueError(f"{path}: no unique [design_variables.{name}] table with units first")
+    text, count = re.subn(
+        r"^design_gross_mass = [0-9.eE+-]+",
+        f"design_gross_mass = {design_gross_mass:.2f}",
+        text,
+        flags=re.MULTILINE,
+    )
+    if count != 1:
+        raise ValueError(f"{path}: no unique 'design_gross_mass = ...' line")
+    with open(path, "w") as f:
+        f.write(text)
+
+
+def main():
+    """Close the initial design, print it and optionally write it into the vehicle file."""
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--vehicle", default=None, help="vehicle TOML (default: the reference)")
+    parser.add_argument("--write", action="store_true", help="write the result into the file")
+    args = parser.parse_args()
+    data = read_vehicle_file(args.vehicle)
+    gauges, box, w_dg = close(data)
+    print(f"wing-box mass (both halves): {box:.2f} kg; design gross mass {w_dg:.2f} kg")
+    for name, values in gauges.items():
+        print(f"{name:<24}" + " ".join(f"{1e3 * v:7.3f}" for v in values) + "  mm")
+    if args.write:
+        path = args.vehicle or REFERENCE_FILE
+        write_closure(path, gauges, w_dg)
+        print(f"written to {path}")
+
+
+if __name__ == "__main__":
+    main()
