@@ -172,13 +172,13 @@ def declare_problem(
     """
     Declare the objective, design variables and constraints of a problem on ``model``.
 
-    Call it before ``prob.setup()``. With the defaults it declares paper Table 6: the 161
-    design variables, our 10 transition roll/yaw speed differentials and 5 transition pitches; the 96 constraints,
-    and the gross-mass objective. Per condition, from its kind's contract: its design
+    Call it before ``prob.setup()``. With the defaults it declares paper Table 6: the 161 design
+    variables, our 10 transition roll/yaw speed differentials and 5 transition pitches; the 96
+    constraints, and the gross-mass objective. Per condition, from its kind's contract: its design
     variables, its trim rows and its constraints (hover: noise, tip Mach; the cruise condition:
-    static margin; structural: skin buckling; transition: each lift rotor's own speed within
-    its pair's bounds, linear, ours); vehicle-level: final state of charge, radius
-    intersection, the KS torque margins of the lift motors and the pusher motor.
+    static margin; structural: skin buckling; transition: each lift rotor's own speed within its
+    pair's bounds, linear, ours); vehicle-level: final state of charge, radius intersection, the KS
+    torque margins of the lift motors and the pusher motor.
 
     Parameters
     ----------

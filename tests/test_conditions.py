@@ -125,7 +125,7 @@ def test_transition_point_runs_alone_and_obeys_newton():
     gravity = GRAVITY * np.array([-np.sin(theta), 0.0, np.cos(theta)])
     velocity = prob.get_val(f"{c}.velocity")[0]
     # Closed form with zero body rates: a = F/m + g (resolved in body axes).
-    assert_near_equal(prob.get_val(f"{c}.linear_acceleration")[0], force / mass + gravity, 1e-10)
+    assert_near_equal(prob.get_val(f"{c}.body_acceleration")[0], force / mass + gravity, 1e-10)
     assert velocity[0] > 40.0  # prescribed speed of the point (~46.6 m/s)
     assert prob.get_val(f"{c}.electrical_power")[0] > 0.0
     assert np.all(prob.get_val(f"{c}.lift_thrust") > 0.0)

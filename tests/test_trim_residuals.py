@@ -3,8 +3,8 @@
 A synthetic recorded problem with LPC output names: m = 2000 kg, a diagonal-plus-xz inertia,
 hover and one transition point with chosen accelerations; the residuals are checked against
 the closed forms F = m (a - a_target) and M = I alpha computed here by hand, with the
-transition point's prescribed acceleration a_target = dV/dt (cos theta, sin theta) of the
-reference vehicle's transition_1.
+transition point's prescribed acceleration a_target = (dV/dt, 0, 0) of the reference vehicle's
+transition_1 (flight-path axes, the transition's linear rows).
 """
 
 import numpy as np
@@ -21,7 +21,7 @@ INERTIA = np.array([[5000.0, 0.0, -700.0], [0.0, 9000.0, 0.0], [-700.0, 0.0, 130
 HOVER_LINEAR = [0.0, 0.0, 2e-4]
 HOVER_ANGULAR = [3e-3, -1e-5, 0.0]
 _T1 = reference_vehicle().condition("transition_1")
-T1_TARGET = (_T1.acceleration * np.cos(_T1.pitch), _T1.acceleration * np.sin(_T1.pitch))
+T1_TARGET = (_T1.acceleration, 0.0)
 T1_LINEAR = [T1_TARGET[0], 1e-6, T1_TARGET[1] + 2e-4]
 T1_ANGULAR = [1e-6, 2e-6, -4e-6]
 

@@ -41,9 +41,9 @@ def test_placeholder_calibration_inputs():
 def test_gross_mass_is_the_sum_of_the_breakdown_items():
     # Stand-alone WeightsGroup at its defaults, hand sum of the items (kg): wing 283.36053 (M4
     # placeholder) + fuselage 316.51853 + empennage 56.53885 + booms 118.09657 + battery 800
-    # + motors 121.50110 + power electronics 40.82 + payload 540 + systems 0 + other 880
-    # (the vehicle file's uncalibrated guess) = 3156.83558, plus the named items, each tested
-    # against its source in test_weights_items.py.
+    # + motors 121.50110 + power electronics 40.82 + payload 540 + systems 0 + other 0
+    # (the reference is itemised) = 2276.83558, plus the named items, each tested against its
+    # source in test_weights_items.py.
     prob = weights_problem()
     prob.run_model()
     named = sum(
@@ -60,13 +60,13 @@ def test_gross_mass_is_the_sum_of_the_breakdown_items():
             "furnishings",
         )
     )
-    assert_near_equal(prob.get_val("gross_mass"), 3156.83558 + named, 1e-8)
+    assert_near_equal(prob.get_val("gross_mass"), 2276.83558 + named, 1e-8)
     assert_near_equal(prob.get_val("total_mass"), prob.get_val("gross_mass"), 1e-12)
     # The mass breakdown sums to the gross mass and prints.
     breakdown = mass_breakdown(prob)
     items = [v for k, v in breakdown.items() if k not in ("structures", "powertrain", "gross")]
     assert_near_equal(sum(items), breakdown["gross"], 1e-12)
-    assert_near_equal(breakdown["other"], 880.0, 1e-15)
+    assert breakdown["other"] == 0.0
     text = format_mass_breakdown(breakdown)
     assert "other" in text and f"{breakdown['gross']:.2f}" in text
 

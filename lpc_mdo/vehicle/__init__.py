@@ -39,7 +39,8 @@ vehicle; each condition adds those its kind declares (rotor speeds, pitch, eleva
 ``{design_variable_prefix}_{variable}`` and stacked as rows where conditions share a prefix
 (:class:`lpc_mdo.groups.condition_base.ConditionLayout`). The reference vehicle has the 32 below:
 the paper's 161 (Table 6), the 10 roll and yaw speed differentials of the transition lift rotors,
-which the paper does not have, and the 5 transition pitch angles, which the paper prescribes. Without them no trim variable acts on roll in transition, where the
+which the paper does not have, and the 5 transition pitch angles, which the paper prescribes.
+Without the differentials no trim variable acts on roll in transition, where the
 pusher's torque reaction rolls the vehicle (1.1-1.4e3 N m at our optimum, 3-4 % of the weight as a
 moment in N m; the paper's trim residuals of at most 25 N m, Table 7, imply that its model leaves
 that torque out). Rows of the per-group DVs: lift pairs 0..3, then the pusher.
