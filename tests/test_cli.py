@@ -5,7 +5,6 @@ from importlib import resources
 
 import openmdao.api as om
 import pytest
-from openmdao.utils.assert_utils import assert_near_equal
 
 from lpc_mdo.cli import main
 

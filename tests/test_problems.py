@@ -20,9 +20,10 @@ def sizes(prob):
         # Design variables and constraints of each subproblem (paper Table 2 with Table 6 counts).
         # Subproblem 1 adds the 45 blade variables (radius, chord, twist) Table 2 leaves implicit.
         # Subproblem 1 and the full problem add the 10 transition roll/yaw speed differentials
-        # and the 5 transition pitch angles (ours). Constraints without the rows that vanish for every design (hover p_dot; OEI
-        # v_dot: no side force in hover) and the transition v_dot, which no trim variable controls
-        # on its own: the default of build_problem. Subproblem 1
+        # and the 5 transition pitch angles (ours). Constraints without the rows that vanish for
+        # every design (hover p_dot; OEI v_dot: no side force in hover) and the transition
+        # v_dot, which no trim variable controls on its own: the default of build_problem.
+        # Subproblem 1
         # constrains the pusher motor margin only (it sizes the pusher motor; the lift motors are
         # subproblem 2's). With the differentials come the 40 linear bounds on each transition
         # lift rotor's own speed (ours).
