@@ -4,13 +4,14 @@
     openmdao n2 --problem run_analysis -o run_analysis_n2.html run_scripts/run_analysis.py
                                                   # N2 diagram of the same model
 
-``--problem run_analysis`` is needed: building the vehicle runs a small calibration problem
-first (the 'other' mass, groups/vehicle.py), and the trim builds one small problem per
-condition; without it ``openmdao n2`` draws another problem instead of the analysis. ``-o``
+``--problem run_analysis`` is needed: the trim builds one small problem per condition (and a
+vehicle with the paper's calibrated 'other' mass, groups/vehicle.py, one more); without it
+``openmdao n2`` may draw one of those instead of the analysis. ``-o``
 gives the diagram its own name so it does not replace the ``n2.html`` of another step.
 
-The full model: the vehicle group and the 15 design conditions with their 171 design variables
-(the paper's 161 and 10 transition roll/yaw speed differentials) and 96 constraints (paper Table 6).
+The full model: the vehicle group and the 15 design conditions with their 176 design variables
+(the paper's 161, 10 transition roll/yaw speed differentials and 5 transition pitch angles) and
+96 constraints (paper Table 6).
 Every condition is trimmed by its trim variables (rotor speeds, pitch, elevator) through
 :func:`lpc_mdo.analysis.analyze_vehicle`, the code path of ``lpc-mdo analyze``; pass
 ``trim=False`` for the raw initial design. Every variable of the final case is recorded to

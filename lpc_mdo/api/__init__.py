@@ -36,7 +36,12 @@ from lpc_mdo.groups.motor import MotorGroup
 from lpc_mdo.groups.vehicle import VehicleGroup
 from lpc_mdo.groups.weights import WeightsGroup, calibrate_other_mass
 from lpc_mdo.problems import build_analysis_problem
-from lpc_mdo.vehicle import VehicleSpecError, load_vehicle, reference_vehicle
+from lpc_mdo.vehicle import (
+    VehicleSpecError,
+    load_vehicle,
+    paper_calibrated_vehicle,
+    reference_vehicle,
+)
 
 __all__ = [
     "LPCGroup",
@@ -58,6 +63,7 @@ __all__ = [
     "make_driver",
     "mass_breakdown",
     "motor",
+    "paper_calibrated_vehicle",
     "pitt_peters",
     "reference_vehicle",
     "RotorNoiseGroup",
