@@ -5,8 +5,8 @@
 Computes all totals of the objective and the 96 constraints with respect to the 176 design
 variables (the paper's 161, 10 transition roll/yaw speed differentials, 5 transition pitches) by
 the adjoint method, then by forward finite differences in the driver-scaled space for each step
-size, and plots the relative error ||J_fd - J_adj|| / ||J_adj|| against the step: it falls with the step
-(truncation) until round-off takes over, as in the paper's Fig. 12.
+size, and plots the relative error ||J_fd - J_adj|| / ||J_adj|| against the step: it falls
+with the step (truncation) until round-off takes over, as in the paper's Fig. 12.
 Also prints the complex-step comparison, which has no step-size trade-off.
 """
 
