@@ -419,12 +419,12 @@ def _preflight(args):
     if command == "analyze" and args.n2:
         check_output_file("--n2", args.n2)
     if command in ("optimize", "sweep"):
-        from lpc_mdo.warm_start import default_optimizer
+        from lpc_mdo.warm_start import DEFAULT_SEQUENCE, default_optimizer
 
         if args.optimizer is None:  # a given --optimizer was checked by its type
             needed = {default_optimizer(args.problem)}
             if args.problem == "sequence":
-                needed = {"IPOPT", default_optimizer("full")}
+                needed = {default_optimizer(name) for name in DEFAULT_SEQUENCE}
             for name in sorted(needed):
                 missing = optimizer_problem(name)
                 if missing:
@@ -738,7 +738,7 @@ def _optimize(args):
         if args.problem == "sequence":
             results = run_sequence(
                 str(out),
-                optimizer=args.optimizer or "IPOPT",
+                optimizer=args.optimizer,
                 full_optimizer=args.optimizer,
                 start_case=args.start_case,
                 **common,
@@ -889,7 +889,7 @@ def build_parser():
         type=_optimizer("--optimizer"),
         default=None,
         choices=OPTIMIZERS,
-        help="default: IPOPT for the presizing and subproblems, SQP (SNOPT "
+        help="default: SLSQP for the rotor presizing, IPOPT for the subproblems, SQP (SNOPT "
         "if pyoptsparse has it, else SLSQP) for full and baseline",
     )
     optimize.add_argument(

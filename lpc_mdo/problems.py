@@ -485,7 +485,8 @@ PRESIZING = {
         "constraint_kinds": ["trim", "noise", "tip_mach"],
         # The electrical power of the (first) hover condition, W.
         "objective": ("electrical_power", 5.0e5),
-        # A starting point for subproblem 1, not an answer: its L-BFGS iterates circle the
+        # With IPOPT (the sequence's default is SLSQP, lpc_mdo.warm_start.default_optimizer): a
+        # starting point for subproblem 1, not an answer: its L-BFGS iterates circle the
         # optimum at 1e-3 (scaled) for hundreds of iterations, so stop there.
         "driver_settings": {
             "tol": 1e-3,
