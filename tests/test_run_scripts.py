@@ -24,3 +24,23 @@ def test_benchmark_lpc_builds_the_table6_problem():
     assert sum(m["size"] for m in dvs.values()) == 161 + 15
     assert sum(m["size"] for m in cons.values() if not m["linear"]) == 96
     assert sum(m["size"] for m in cons.values() if m["linear"]) == 40
+
+
+def test_close_initial_design_writes_gauges_and_design_gross_mass(tmp_path):
+    # The closure's file edit: the four thickness tables' initial values and design_gross_mass
+    # are replaced, everything else is kept, and the file still loads.
+    import shutil
+
+    from lpc_mdo.vehicle import load_vehicle, reference_vehicle
+
+    script = _load("close_initial_design")
+    path = tmp_path / "lpc.toml"
+    shutil.copy(script.REFERENCE_FILE, path)
+    gauges = {name: [1e-3 * (k + 1)] * 8 for k, name in enumerate(script.THICKNESSES)}
+    script.write_closure(path, gauges, 3111.234)
+    vehicle = load_vehicle(path)
+    assert vehicle.masses.design_gross_mass == 3111.23
+    for name, values in gauges.items():
+        assert list(vehicle.design_variables[name].initial_array) == values
+    reference = reference_vehicle()
+    assert vehicle.wing == reference.wing and vehicle.conditions == reference.conditions
