@@ -121,7 +121,8 @@ class BoxBeamGroup(om.Group):
     - with ``ks_rho`` set: ``stress_ks`` (KSComp, paper eq. 7) aggregating every
       ``stress_ratio`` into ``stress_ratio_ks``, and ``top_buckling_ks``/``bottom_buckling_ks``
       aggregating the buckling ratios of the first ``num_buckling_bays`` bays into
-      ``top_skin_buckling_ratio_ks``/``bottom_skin_buckling_ratio_ks``.
+      ``top_skin_buckling_ratio_ks``/``bottom_skin_buckling_ratio_ks``; with only
+      ``stress_ks_rho`` set, the stress aggregate alone (its own KS parameter).
 
     The constraints of the paper's structural subproblem are ``top_skin_buckling_ratio`` and
     ``bottom_skin_buckling_ratio`` <= 1 without the tip bay, ``stress_ratio`` <= 1 and the
@@ -158,8 +159,9 @@ class BoxBeamGroup(om.Group):
     panel : 'curved' (default) or 'flat'; flat_plate_coefficient : float (default 4);
     num_aero_points : int (default 0); num_point_masses : int (default 0);
     include_weight : bool (default True; with load transfer); span_axis : int (default 1);
-    ks_rho : float or None (default None: no aggregation); num_buckling_bays : int or None
-    (bays from the root in the buckling aggregate; default None = all but the tip bay).
+    ks_rho : float or None (default None: no aggregation); stress_ks_rho : float or None
+    (default None: ``ks_rho``); num_buckling_bays : int or None (bays from the root in the
+    buckling aggregate; default None = all but the tip bay).
     """
 
     def initialize(self):
@@ -219,6 +221,13 @@ class BoxBeamGroup(om.Group):
             desc="KS parameter of the stress and buckling aggregates (None: no aggregation)",
         )
         self.options.declare(
+            "stress_ks_rho",
+            default=None,
+            types=(int, float),
+            allow_none=True,
+            desc="KS parameter of the stress aggregate (None: ks_rho)",
+        )
+        self.options.declare(
             "num_buckling_bays",
             default=None,
             types=int,
@@ -269,10 +278,24 @@ class BoxBeamGroup(om.Group):
             ),
             promotes=["*"],
         )
+        stress_rho = self.options["stress_ks_rho"] or self.options["ks_rho"]
+        if stress_rho is not None:
+            npts = 5 if self.options["web_points"] == "one" else 6
+            self.add_subsystem(
+                "stress_ks",
+                KSComp(width=ne * npts, rho=stress_rho),
+                promotes_outputs=[("KS", "stress_ratio_ks")],
+            )
+            self.connect(
+                "stress_ratio",
+                "stress_ks.g",
+                src_indices=np.arange(ne * npts),
+                flat_src_indices=True,
+            )
         if self.options["ks_rho"] is not None:
-            self._add_aggregates(ne)
+            self._add_buckling_aggregates(ne)
 
-    def _add_aggregates(self, ne):
+    def _add_buckling_aggregates(self, ne):
         rho = self.options["ks_rho"]
         nb = self.options["num_buckling_bays"]
         nb = max(ne - 1, 1) if nb is None else nb
@@ -283,15 +306,6 @@ class BoxBeamGroup(om.Group):
             upper=ne,
             allowed=f"in [1, {ne}] (num_nodes - 1)",
             where=self.msginfo,
-        )
-        npts = 5 if self.options["web_points"] == "one" else 6
-        self.add_subsystem(
-            "stress_ks",
-            KSComp(width=ne * npts, rho=rho),
-            promotes_outputs=[("KS", "stress_ratio_ks")],
-        )
-        self.connect(
-            "stress_ratio", "stress_ks.g", src_indices=np.arange(ne * npts), flat_src_indices=True
         )
         for skin in ("top", "bottom"):
             self.add_subsystem(

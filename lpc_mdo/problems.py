@@ -28,6 +28,7 @@ CONSTRAINT_KINDS = (
     "tip_mach",
     "static_margin",
     "buckling",
+    "stress",
     "soc",
     "radius_intersection",
     "torque_margin",
@@ -451,7 +452,7 @@ SUBPROBLEMS = {
             "top_skin_thickness",
             "bottom_skin_thickness",
         ],
-        "constraint_kinds": ["trim", "buckling"],
+        "constraint_kinds": ["trim", "buckling", "stress"],
     },
     # Table 2 sizes the planform in cruise alone; climb and descent are added (with their trim
     # variables): alone, cruise drives wing and tail to their lower bounds with the pitch at its

@@ -9,7 +9,7 @@ other (the loads scale with W0, W0 with the box), so this alternates:
 
 - size the box: the warm start's structural subproblem (``build_problem('subproblem_3')``,
   paper Table 2: minimum gross mass over the 32 skin and spar thicknesses subject to skin
-  buckling and trim at +3g and -1g) on the vehicle's initial design;
+  buckling, von Mises stress and trim at +3g and -1g) on the vehicle's initial design;
 - close W_dg with :func:`lpc_mdo.groups.vehicle.closed_design_gross_mass`;
 
 until W_dg moves by less than 0.1 kg. It prints the thicknesses (root to tip), the box mass and
@@ -32,6 +32,7 @@ import numpy as np  # noqa: E402
 from lpc_mdo.groups.vehicle import closed_design_gross_mass  # noqa: E402
 from lpc_mdo.problems import build_problem  # noqa: E402
 from lpc_mdo.vehicle import read_vehicle_file, vehicle_from_dict  # noqa: E402
+from lpc_mdo.warm_start import default_optimizer  # noqa: E402
 
 THICKNESSES = (
     "front_spar_thickness",
@@ -46,8 +47,9 @@ REFERENCE_FILE = os.path.join(
 
 def size_gauges(vehicle=None):
     """Return the sized thicknesses (m, dict of 8-vectors), the box mass (kg) and the result."""
-    prob = build_problem("subproblem_3", vehicle=vehicle, optimizer="IPOPT")
-    prob.driver.options["print_level"] = 0
+    prob = build_problem(
+        "subproblem_3", vehicle=vehicle, optimizer=default_optimizer("subproblem_3")
+    )
     start = time.perf_counter()
     result = prob.run_driver()
     elapsed = time.perf_counter() - start

@@ -11,7 +11,7 @@ gives the diagram its own name so it does not replace the ``n2.html`` of another
 
 The full model: the vehicle group and the 15 design conditions with their 176 design variables
 (the paper's 161, 10 transition roll/yaw speed differentials and 5 transition pitch angles) and
-96 constraints (paper Table 6).
+98 constraints (paper Table 6 and the 2 wing-box stress constraints).
 Every condition is trimmed by its trim variables (rotor speeds, pitch, elevator) through
 :func:`lpc_mdo.analysis.analyze_vehicle`, the code path of ``lpc-mdo analyze``; pass
 ``trim=False`` for the raw initial design. Every variable of the final case is recorded to

@@ -2,7 +2,7 @@
 
     python run_scripts/verify_derivatives.py [--steps 1e-2 1e-3 1e-4 1e-5 1e-6 1e-7] [--out fig]
 
-Computes all totals of the objective and the 96 constraints with respect to the 176 design
+Computes all totals of the objective and the 98 constraints with respect to the 176 design
 variables (the paper's 161, 10 transition roll/yaw speed differentials, 5 transition pitches) by
 the adjoint method, then by forward finite differences in the driver-scaled space for each step
 size, and plots the relative error ||J_fd - J_adj|| / ||J_adj|| against the step: it falls
@@ -58,7 +58,7 @@ def main(argv=None):
 
     prob = om.Problem(reports=False)
     prob.model = LPCGroup()
-    declare_problem(prob.model)  # paper Table 6 + ours: 176 design variables, 96 + 40 constraints
+    declare_problem(prob.model)  # paper Table 6 + ours: 176 design variables, 98 + 40 constraints
     prob.setup(mode="rev", force_alloc_complex=True)
     prob.run_model()
     adjoint = jacobian(prob)

@@ -39,7 +39,7 @@ def test_both_variants_converge_to_the_same_wing(both):
     # The KS aggregate is conservative by at most ln(n)/rho, so the aggregated wing is slightly
     # heavier (paper: the variants agree to 0.1 %; here within 3 %).
     assert m_full <= m_ks < 1.03 * m_full
-    # Active set on the cranked NASA wing of the itemised reference (3066.65 kg; measured
+    # Active set on the cranked NASA wing of the itemised reference (3067.61 kg; measured
     # 2026-12-04, SLSQP): the +3g top-skin buckling constraint in every bay (paper Table 5:
     # active), the tip deflection at the vehicle file's limit, the inboard spar webs at the
     # stress limit, and the -1g bottom-skin buckling in the outer four of the seven bays (inner
