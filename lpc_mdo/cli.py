@@ -889,8 +889,9 @@ def build_parser():
         type=_optimizer("--optimizer"),
         default=None,
         choices=OPTIMIZERS,
-        help="default: SLSQP for the rotor presizing, IPOPT for the subproblems, SQP (SNOPT "
-        "if pyoptsparse has it, else SLSQP) for full and baseline",
+        help="default: SLSQP for the rotor presizing and subproblems 1 and 3, IPOPT for "
+        "subproblems 2 and 4, SQP (SNOPT if pyoptsparse has it, else SLSQP) for full and "
+        "baseline",
     )
     optimize.add_argument(
         "--max-iter", type=positive["--max-iter"], default=200, help="iteration limit"

@@ -256,13 +256,17 @@ def default_optimizer(name):
     2.5 % heavier and infeasible after 245 iterations (measured; SLSQP's counts before
     2026-12-02 were model evaluations).
 
-    Two stages are SLSQP instead (measured 2026-12-04 on the itemised reference):
+    Three stages are SLSQP instead (measured 2026-12-04 on the itemised reference):
 
     - the rotor presizing (ours, not in the paper; 36 variables, hover only): IPOPT with its
       L-BFGS Hessian reaches the optimum (lift radii at their upper bound, noise at its limit)
       by iteration ~50 and then circles it without meeting its tolerance until its
       400-iteration limit (45.8 s; power within 0.04 % of the optimum), where SLSQP's
       active-set steps converge in 16 iterations, 1.7 s, to the same design;
+    - subproblem 1 (105 variables; hover, transition, climb, cruise, descent): from the
+      presizing, IPOPT took 381 iterations (477 s) in one run and stopped at its 400-iteration
+      limit (527 s, 2831.46 kg) in the next, circling its optimum; SLSQP converged in 168
+      iterations (276 s) to 2830.70 kg with noise and final state of charge at their limits;
     - subproblem 3 (the wing box) with the stress constraint: from the initial gauges (stress
       ratio 1.46 at +3g) IPOPT thickens the box to 1200 kg and stops at its iteration limit
       (202 iterations, 22.5 s), SLSQP converges in 8 iterations, 1.2 s, to a 193.7 kg box with
@@ -270,7 +274,7 @@ def default_optimizer(name):
     """
     from lpc_mdo.drivers import pyoptsparse_optimizers
 
-    if name in ("rotor_presizing", "subproblem_3"):
+    if name in ("rotor_presizing", "subproblem_1", "subproblem_3"):
         return "SLSQP"
     if name not in FULL_PROBLEMS:
         return "IPOPT"
