@@ -428,8 +428,9 @@ def closed_design_gross_mass(vehicle, tolerance=1e-3, max_iterations=50):
     (docs theory/weights 'Mass items'), which NDARC and FLOPS take as an input and a sizing
     code closes on the gross mass it computes. This is that closure for the initial design, by
     fixed-point iteration W_dg <- W0(W_dg) (the slope dW0/dW_dg is about 0.14 for the reference
-    vehicle, so each iteration gains almost one digit), with the vehicle's own W_other rule:
-    the fixed W_other, or none for a calibrated one (which would otherwise absorb the change).
+    vehicle, so each iteration gains almost one digit), with the vehicle's fixed W_other. A
+    calibrated vehicle (``masses.other_rule = "calibrated"``) is closed by construction (its
+    W_other makes W0 = W_dg), so its W_dg is returned unchanged.
     ``run_scripts/close_initial_design.py`` writes the result into a vehicle file.
 
     Parameters
