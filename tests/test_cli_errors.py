@@ -368,7 +368,8 @@ def test_optimizer_name_is_case_insensitive(paths, commands_must_not_start):
 
 def test_default_ipopt_without_cyipopt(paths, capsys, monkeypatch, no_pyoptsparse):
     monkeypatch.setitem(sys.modules, "cyipopt", None)  # import cyipopt raises ImportError
-    rc = main(["optimize", "--problem", "subproblem_1", "--output-dir", paths["out"]])
+    # Subproblem 2's default optimizer is IPOPT (lpc_mdo.warm_start.default_optimizer).
+    rc = main(["optimize", "--problem", "subproblem_2", "--output-dir", paths["out"]])
     _assert_one_line_error(rc, capsys.readouterr(), "--optimizer")
     # An explicit SLSQP needs nothing beyond SciPy.
     argv = ["optimize", "--problem", "subproblem_1", "--optimizer", "SLSQP"]
