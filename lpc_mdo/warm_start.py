@@ -199,6 +199,19 @@ def _write_interrupted_stats(prob, case_file, start, when):
     write_run_stats(known, run_stats_path(case_file), peak_memory_mb=process_peak_memory_mb())
 
 
+def _write_sensitivities(prob, vehicle, case_file, log):
+    """Write the post-optimal sensitivities of a gross-mass optimum beside its case file."""
+    from lpc_mdo.sensitivities import post_optimal_sensitivities, sensitivities_path
+
+    path = sensitivities_path(case_file)
+    try:
+        post_optimal_sensitivities(prob, vehicle).to_json(path)
+    except om.AnalysisError as err:  # the optimum is recorded all the same
+        log(f"post-optimal sensitivities not written: the model failed at the optimum: {err}")
+        return
+    log(f"post-optimal sensitivities: {path}")
+
+
 def perturbed_start_case(path, fraction, seed, vehicle=None):
     """
     Write a start case with every design variable of the initial design perturbed at random.
@@ -408,7 +421,9 @@ def solve_stage(
     -------
     StageResult
         Also written: ``<case file stem>.run_stats.json`` (driver statistics and the process's
-        peak memory so far, for the report's Table 9).
+        peak memory so far, for the report's Table 9) and, for the full problem,
+        ``<case file stem>.sensitivities.json`` (d(W0*)/d(parameter) at the optimum,
+        :func:`lpc_mdo.sensitivities.post_optimal_sensitivities`; one adjoint pass).
 
     Raises
     ------
@@ -470,6 +485,8 @@ def solve_stage(
     seconds = time.perf_counter() - start
     prob.record("final")
     write_run_stats(result, run_stats_path(case_file), peak_memory_mb=process_peak_memory_mb())
+    if name == "full":
+        _write_sensitivities(prob, vehicle, case_file, log)
     stage = StageResult(
         name=name,
         case_file=case_file,

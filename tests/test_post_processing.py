@@ -13,6 +13,7 @@ Problems (small, solved once per module):
 
 import csv
 import re
+import shutil
 from pathlib import Path
 
 import numpy as np
@@ -718,3 +719,21 @@ def test_constraint_status_words_and_own_tolerance():
     assert tables.status_word(active, violated) == "violated"
     _, active, violated = tables.entry_status([5e-4], equals=0.0, scale=1.0, tol=1e-3)
     assert tables.status_word(active, violated) == "active"
+
+
+def test_report_prints_the_sensitivities_written_beside_a_case_file(runs, tmp_path):
+    from lpc_mdo.sensitivities import Sensitivity, SensitivityResult, sensitivities_path
+
+    case_file = tmp_path / "full.sql"
+    shutil.copy(runs["slsqp"][0], case_file)
+    SensitivityResult(
+        gross_mass=2654.5,
+        rows=[Sensitivity("payload", "payload", "kg", 540.0, 1.5627, 0.3179)],
+        kkt_residual=0.06,
+        active=[],
+    ).to_json(sensitivities_path(case_file))
+    index = report.write_report(case_file, tmp_path / "report", report.ReportSpec.generic())
+    text = index.read_text()
+    assert "**Post-optimal sensitivities**" in text
+    assert "| payload | 540 | kg | 1.5627 | 0.3179 |" in text
+    assert "relative KKT residual 6.0e-02" in text

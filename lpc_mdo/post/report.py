@@ -30,6 +30,7 @@ from lpc_mdo.post import figures, tables
 from lpc_mdo.post.statistics import statistics_table
 from lpc_mdo.post.tables import DEFAULT_TOL, MissingVariableError, Quantity
 from lpc_mdo.post.trim_residuals import trim_residual_table
+from lpc_mdo.sensitivities import read_sensitivities, sensitivities_path, sensitivity_table
 
 __all__ = [
     "LPC_DESIGN_QUANTITIES",
@@ -501,6 +502,15 @@ def _run_section(index, label, cr, spec):
 
     if tables.design_var_metadata(cr):
         _try(index, f"design variables of {label}", design_variables)
+
+    found = read_sensitivities(sensitivities_path(cr._filename))
+    if found is not None:
+        index.add(
+            "**Post-optimal sensitivities** d(W0*)/d(parameter) (KKT multipliers and adjoint; "
+            "docs theory/optimization 'Post-optimal sensitivities'):",
+            "",
+        )
+        index.table(sensitivity_table(found), f"sensitivities_{slug}")
 
     def convergence():
         path = figures.plot_convergence(
