@@ -454,6 +454,12 @@ def _check_sweep_values(args):
     from lpc_mdo.sweeps import SWEEP_PARAMETERS, sweep_vehicle
 
     if not args.values:
+        if args.parameter != "all" and not SWEEP_PARAMETERS[args.parameter][2]:
+            raise CLIError(
+                f"'--parameter' = {args.parameter} has no default values (the paper did not "
+                f"sweep it): must be used with --values, e.g. --values "
+                f"{_sweep_example(args.vehicle_spec, args.parameter)}"
+            )
         return
     if args.parameter == "all":
         raise CLIError(
@@ -768,10 +774,19 @@ def _optimize(args):
     return 0 if stage.success else 1
 
 
-def _sweep(args):
-    from lpc_mdo.sweeps import SWEEP_PARAMETERS, run_sweep
+def _sweep_example(vehicle, parameter):
+    """Two values either side of the vehicle's own, for an error message."""
+    from lpc_mdo.sweeps import reference_value
 
-    parameters = list(SWEEP_PARAMETERS) if args.parameter == "all" else [args.parameter]
+    ref = reference_value(vehicle, parameter)
+    step = 0.05 * abs(ref) if ref else 0.01
+    return f"{ref - step:g} {ref + step:g}"
+
+
+def _sweep(args):
+    from lpc_mdo.sweeps import PAPER_SWEEPS, run_sweep
+
+    parameters = list(PAPER_SWEEPS) if args.parameter == "all" else [args.parameter]
     values = {parameters[0]: args.values} if args.values else None  # checked by _preflight
     margins = {"on": (True,), "off": (False,), "both": (True, False)}[args.static_margin]
     points = run_sweep(
@@ -930,13 +945,20 @@ def build_parser():
         required=True,
         help="case file whose final case starts every chain, e.g. the sequence's full.sql",
     )
-    sweep.add_argument("--parameter", default="all", choices=(*SWEEP_PARAMETERS, "all"))
+    sweep.add_argument(
+        "--parameter",
+        default="all",
+        choices=(*SWEEP_PARAMETERS, "all"),
+        help="all: the paper's two sweeps (energy density, final SoC); the others check the "
+        "post-optimal sensitivities and need --values",
+    )
     sweep.add_argument(
         "--values",
         type=_finite_float("--values"),
         nargs="+",
         default=None,
-        help="values of the one --parameter (default: the paper's five)",
+        help="values of the one --parameter (default: the paper's five); units: Wh/kg, -, "
+        "dBA, kg, -, km",
     )
     sweep.add_argument("--static-margin", default="both", choices=("on", "off", "both"))
     sweep.add_argument(

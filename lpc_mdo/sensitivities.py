@@ -31,6 +31,8 @@ from pathlib import Path
 import numpy as np
 from scipy.optimize import lsq_linear
 
+from lpc_mdo.sweeps import SWEEP_PARAMETERS
+
 SENSITIVITIES_FORMAT = "lpc_mdo.sensitivities/1"
 
 #: A constraint or design variable is a candidate for the active set when its distance to a
@@ -44,49 +46,47 @@ class SensitivityParameter:
     """
     One parameter whose post-optimal sensitivity is reported.
 
+    Its description and units are those of the sweep parameter of the same name
+    (:data:`lpc_mdo.sweeps.SWEEP_PARAMETERS`), which re-optimizes to check it.
+
     Attributes
     ----------
     name : str
-        Key (also a sweep parameter of :mod:`lpc_mdo.sweeps` to check it by re-optimizing).
-    description : str
-    units : str
-        Units the sensitivity is reported in (kg per this unit).
     kind : str
-        ``"input"``: a model input (``variable``, element ``index``), ``"bound"``: the limit of
-        the constraints whose names end with ``variable``.
+        ``"input"``: a model input (``variable``), ``"bound"``: the limit of the constraints
+        whose names end with ``variable``.
     variable : str
     model_per_unit : float
         Model units of ``variable`` per reported unit (J/kg per Wh/kg: 3600).
     """
 
     name: str
-    description: str
-    units: str
     kind: str
     variable: str
     model_per_unit: float = 1.0
+
+    @property
+    def description(self):
+        """Return the description of the sweep parameter of the same name."""
+        return SWEEP_PARAMETERS[self.name][0]
+
+    @property
+    def units(self):
+        """Return the units the sensitivity is reported in (kg per this unit)."""
+        return SWEEP_PARAMETERS[self.name][1]
 
 
 SENSITIVITY_PARAMETERS = {
     p.name: p
     for p in (
-        SensitivityParameter(
-            "energy_density",
-            "battery energy density",
-            "Wh/kg",
-            "input",
-            "battery.specific_energy",
-            3600.0,
-        ),
-        SensitivityParameter(
-            "final_soc", "final state-of-charge limit", "-", "bound", "state_of_charge"
-        ),
-        SensitivityParameter("max_noise", "hover noise limit", "dBA", "bound", ".total_spl_a"),
-        SensitivityParameter("payload", "payload", "kg", "input", "payload_mass"),
-        SensitivityParameter(
-            "min_static_margin", "static-margin limit", "-", "bound", ".static_margin"
-        ),
-        SensitivityParameter("cruise_range", "cruise range", "km", "input", "mission.duration"),
+        SensitivityParameter("energy_density", "input", "battery.specific_energy", 3600.0),
+        SensitivityParameter("final_soc", "bound", "state_of_charge"),
+        SensitivityParameter("max_noise", "bound", ".total_spl_a"),
+        SensitivityParameter("payload", "input", "payload_mass"),
+        SensitivityParameter("min_static_margin", "bound", ".static_margin"),
+        # Range = cruise speed x cruise duration (the cruise condition's element of
+        # mission.duration; :func:`_input_element`).
+        SensitivityParameter("cruise_range", "input", "mission.duration"),
     )
 }
 

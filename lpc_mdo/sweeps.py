@@ -18,39 +18,77 @@ from dataclasses import dataclass
 
 from lpc_mdo.vehicle import load_vehicle
 
-#: name -> (description, units, the paper's values)
+#: name -> (description, units, the paper's values or None). The paper swept the first two
+#: (``--parameter all``); the others are the parameters of the post-optimal sensitivities
+#: (:mod:`lpc_mdo.sensitivities`), swept to check them by re-optimizing (values required).
 SWEEP_PARAMETERS = {
     "energy_density": ("battery energy density", "Wh/kg", (250.0, 300.0, 350.0, 400.0, 450.0)),
-    "final_soc": ("final state of charge limit", "-", (0.1, 0.15, 0.2, 0.25, 0.3)),
+    "final_soc": ("final state-of-charge limit", "-", (0.1, 0.15, 0.2, 0.25, 0.3)),
+    "max_noise": ("hover noise limit", "dBA", None),
+    "payload": ("payload", "kg", None),
+    "min_static_margin": ("static-margin limit", "-", None),
+    "cruise_range": ("cruise range", "km", None),
 }
+#: The sweeps of the paper (Sec. V.C): ``lpc-mdo sweep --parameter all``.
+PAPER_SWEEPS = tuple(k for k, (_, _, values) in SWEEP_PARAMETERS.items() if values)
+
+
+def _cruise(vehicle):
+    name = vehicle.mission.cruise_condition
+    return next(c for c in vehicle.conditions if c.name == name)
 
 
 def sweep_vehicle(vehicle, parameter, value):
     """
     Return the vehicle with one sweep parameter set.
 
-    The energy density is in Wh/kg, the SoC limit in -.
+    Units: energy density Wh/kg, SoC and static-margin limits -, noise limit dBA, payload kg,
+    cruise range km (the cruise condition's duration at its speed).
     """
+    replace = dataclasses.replace
     if parameter == "energy_density":
         if not value > 0.0:
             raise ValueError(f"sweep: energy_density = {value}; allowed: > 0 Wh/kg.")
-        battery = dataclasses.replace(vehicle.battery, energy_density=value * 3600.0)
-        return dataclasses.replace(vehicle, battery=battery)
-    if parameter == "final_soc":
-        if not 0.0 <= value < 1.0:
-            raise ValueError(f"sweep: final_soc = {value}; allowed: [0, 1).")
-        limits = dataclasses.replace(vehicle.constraints, min_final_soc=value)
-        return dataclasses.replace(vehicle, constraints=limits)
+        return replace(vehicle, battery=replace(vehicle.battery, energy_density=value * 3600.0))
+    limits = {
+        "final_soc": ("min_final_soc", 0.0 <= value < 1.0, "[0, 1)"),
+        "max_noise": ("max_noise", 20.0 <= value <= 200.0, "[20, 200] dBA"),
+        "min_static_margin": ("min_static_margin", -1.0 < value < 1.0, "(-1, 1)"),
+    }
+    if parameter in limits:
+        field_name, ok, allowed = limits[parameter]
+        if not ok:
+            raise ValueError(f"sweep: {parameter} = {value}; allowed: {allowed}.")
+        return replace(vehicle, constraints=replace(vehicle.constraints, **{field_name: value}))
+    if parameter == "payload":
+        if not value >= 0.0:
+            raise ValueError(f"sweep: payload = {value}; allowed: >= 0 kg.")
+        return replace(vehicle, masses=replace(vehicle.masses, payload=value))
+    if parameter == "cruise_range":
+        cruise = _cruise(vehicle)
+        if not (value > 0.0 and cruise.speed > 0.0):
+            raise ValueError(
+                f"sweep: cruise_range = {value}; allowed: > 0 km (with a cruise speed > 0)."
+            )
+        changed = replace(cruise, duration=value * 1000.0 / cruise.speed)
+        conditions = tuple(changed if c is cruise else c for c in vehicle.conditions)
+        return replace(vehicle, conditions=conditions)
     raise ValueError(f"sweep: parameter = {parameter!r}; allowed: {list(SWEEP_PARAMETERS)}.")
 
 
 def reference_value(vehicle, parameter):
-    """Return the vehicle's own value of a sweep parameter."""
-    if parameter == "energy_density":
-        return vehicle.battery.energy_density / 3600.0
-    if parameter == "final_soc":
-        return vehicle.constraints.min_final_soc
-    raise ValueError(f"sweep: parameter = {parameter!r}; allowed: {list(SWEEP_PARAMETERS)}.")
+    """Return the vehicle's own value of a sweep parameter (units of :func:`sweep_vehicle`)."""
+    values = {
+        "energy_density": lambda: vehicle.battery.energy_density / 3600.0,
+        "final_soc": lambda: vehicle.constraints.min_final_soc,
+        "max_noise": lambda: vehicle.constraints.max_noise,
+        "min_static_margin": lambda: vehicle.constraints.min_static_margin,
+        "payload": lambda: vehicle.masses.payload,
+        "cruise_range": lambda: _cruise(vehicle).speed * _cruise(vehicle).duration / 1000.0,
+    }
+    if parameter not in values:
+        raise ValueError(f"sweep: parameter = {parameter!r}; allowed: {list(SWEEP_PARAMETERS)}.")
+    return values[parameter]()
 
 
 @dataclass
@@ -167,7 +205,7 @@ def run_chain(task):
 def run_sweep(
     out_dir,
     start_case,
-    parameters=("energy_density", "final_soc"),
+    parameters=PAPER_SWEEPS,
     values=None,
     static_margins=(True, False),
     vehicle=None,
@@ -189,7 +227,8 @@ def run_sweep(
     parameters : sequence of str
         Keys of :data:`SWEEP_PARAMETERS`.
     values : dict or None
-        parameter -> values; None = the paper's five values each.
+        parameter -> values; a parameter without values takes the paper's five (an error for
+        a parameter the paper did not sweep).
     static_margins : sequence of bool
         With and/or without the static-margin constraint.
     vehicle : str or None
@@ -230,6 +269,11 @@ def run_sweep(
     tasks = []
     for parameter in parameters:
         chosen = values.get(parameter) or SWEEP_PARAMETERS[parameter][2]
+        if not chosen:
+            raise ValueError(
+                f"sweep: parameter {parameter!r} has no default values (the paper did not "
+                "sweep it); give its values."
+            )
         for value in chosen:
             sweep_vehicle(base, parameter, value)  # validate before any work
         for sm in static_margins:

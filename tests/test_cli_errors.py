@@ -253,6 +253,16 @@ MISUSES = [
         "--values",
     ),
     ("values_text", [*SWEEP, "--start-case", "{good.sql}", "--values", "high"], "--values"),
+    (
+        "payload_without_values",
+        [*SWEEP, "--start-case", "{good.sql}", "--parameter", "payload"],
+        "--parameter",
+    ),
+    (
+        "values_negative_payload",
+        [*SWEEP, "--start-case", "{good.sql}", "--parameter", "payload", "--values", "-5"],
+        "--values",
+    ),
     # the command line itself
     ("unknown_command", ["fly"], "command"),
     ("unknown_problem", ["optimize", "--problem", "subproblem_9"], "--problem"),

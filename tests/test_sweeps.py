@@ -13,7 +13,13 @@ from pathlib import Path
 
 import pytest
 
-from lpc_mdo.sweeps import SWEEP_PARAMETERS, run_sweep, sweep_chains, sweep_vehicle
+from lpc_mdo.sweeps import (
+    SWEEP_PARAMETERS,
+    reference_value,
+    run_sweep,
+    sweep_chains,
+    sweep_vehicle,
+)
 from lpc_mdo.vehicle import reference_vehicle
 from lpc_mdo.warm_start import solve_stage
 
@@ -34,8 +40,20 @@ def test_sweep_vehicle_changes_one_parameter():
     assert sweep_vehicle(vehicle, "final_soc", 0.3).constraints.min_final_soc == 0.3
     with pytest.raises(ValueError, match=r"final_soc = 1.5; allowed: \[0, 1\)"):
         sweep_vehicle(vehicle, "final_soc", 1.5)
-    with pytest.raises(ValueError, match="allowed: \\['energy_density', 'final_soc'\\]"):
+    with pytest.raises(ValueError, match="allowed: \\['energy_density', 'final_soc', 'max_noise'"):
         sweep_vehicle(vehicle, "wing_area", 1.0)
+    # The parameters of the post-optimal sensitivities, swept to check them by re-optimizing.
+    assert sweep_vehicle(vehicle, "max_noise", 71.0).constraints.max_noise == 71.0
+    assert sweep_vehicle(vehicle, "min_static_margin", 0.1).constraints.min_static_margin == 0.1
+    assert sweep_vehicle(vehicle, "payload", 560.0).masses.payload == 560.0
+    with pytest.raises(ValueError, match=r"payload = -1.0; allowed: >= 0 kg"):
+        sweep_vehicle(vehicle, "payload", -1.0)
+    longer = sweep_vehicle(vehicle, "cruise_range", 80.0)
+    cruise = next(c for c in longer.conditions if c.name == "cruise")
+    assert cruise.duration * cruise.speed == pytest.approx(80_000.0)
+    assert [c.name for c in longer.conditions] == [c.name for c in vehicle.conditions]
+    assert reference_value(longer, "cruise_range") == pytest.approx(80.0)
+    assert reference_value(vehicle, "cruise_range") == pytest.approx(57.1897 * 1210.04 / 1000)
 
 
 def test_swept_parameters_reach_the_model():
