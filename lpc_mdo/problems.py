@@ -340,14 +340,42 @@ def copy_design_variables(source, target, vehicle, names=None):
     ``target`` is a set-up problem, ``source`` a set-up problem or a recorded case; arrays are
     copied by name, in the vehicle file's units; arrays that either side lacks are skipped.
     """
+    declared = target.model.get_design_vars() if hasattr(target, "model") else {}
     for name in names or vehicle.design_variables:
         dv = vehicle.design_variables[name]
         units = openmdao_units(dv.units)
         try:
             value = np.asarray(source.get_val(name, units=units)).reshape(dv.shape)
+        except KeyError:
+            continue
+        meta = declared.get(name)
+        if meta is not None and meta.get("units") == units:
+            value = _onto_bounds(value, meta.get("lower"), meta.get("upper"))
+        try:
             target.set_val(name, value, units=units)
         except KeyError:
             continue
+
+
+def _onto_bounds(value, lower, upper, rel=1e-9):
+    """
+    Return ``value`` with elements within round-off outside a bound put on it.
+
+    A design variable recorded on its bound comes back a few ulps outside after a unit
+    conversion (fuselage length 21 ft = 6.4008 m), and OpenMDAO then warns that the start is
+    out of bounds; anything further out is left for that warning.
+    """
+    value = np.array(value, dtype=float)
+    for bound, outside in ((lower, np.less), (upper, np.greater)):
+        if bound is None:
+            continue
+        bound = np.broadcast_to(np.asarray(bound, dtype=float).reshape(-1), value.size).reshape(
+            value.shape
+        )
+        slack = rel * np.maximum(1.0, np.abs(bound))
+        near = outside(value, bound) & (np.abs(value - bound) <= slack)
+        value[near] = bound[near]
+    return value
 
 
 def build_analysis_problem(

@@ -141,3 +141,16 @@ def test_motor_voltage_limit_reaches_a_reported_margin_and_an_optional_constrain
     assert set(cons) == {"hover.lift_motor_voltage_margin", "cruise.pusher_motor_voltage_margin"}
     assert sum(meta["size"] for meta in cons.values()) == 8 + 1
     np.testing.assert_allclose(m_half, 1.0 - 2.0 * (1.0 - m_base), rtol=1e-10)
+
+
+def test_a_design_variable_recorded_on_its_bound_is_set_on_it():
+    # 21 ft = 6.4008 m comes back a few ulps below the bound after a unit conversion; OpenMDAO
+    # then warned that the start was out of bounds (every sweep point with the fuselage on its
+    # lower bound). Values further out are left for that warning.
+    from lpc_mdo.problems import _onto_bounds
+
+    lower, upper = np.array([6.4008, 1.0]), np.array([11.8872, 2.0])
+    got = _onto_bounds(np.array([6.4008 - 1e-12, 2.0 + 1e-12]), lower, upper)
+    np.testing.assert_array_equal(got, [6.4008, 2.0])
+    np.testing.assert_array_equal(_onto_bounds(np.array([6.0, 2.5]), lower, upper), [6.0, 2.5])
+    np.testing.assert_array_equal(_onto_bounds(np.array([7.0, 1.5]), lower, None), [7.0, 1.5])
