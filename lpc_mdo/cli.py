@@ -815,8 +815,25 @@ def _sweep(args):
 
 
 def _report(args):
-    from lpc_mdo.post.report import ReportSpec, write_report
+    from lpc_mdo.post.report import ReportSpec, find_case_files, write_report
 
+    if args.sensitivities:
+        import openmdao.api as om
+
+        from lpc_mdo.sensitivities import sensitivities_from_case, sensitivities_path
+
+        for label, path in find_case_files(args.cases):
+            sidecar = sensitivities_path(path)
+            if sidecar.is_file():
+                continue
+            reader = om.CaseReader(str(path))
+            if "final" not in reader.list_cases("problem", out_stream=None):
+                continue
+            objectives = list(reader.get_case("final").get_objectives())
+            if [n.split(".")[-1] for n in objectives] != ["gross_mass"]:
+                continue
+            print(f"report: post-optimal sensitivities of {label} ...", flush=True)
+            sensitivities_from_case(path, args.vehicle_spec).to_json(sidecar)
     spec = ReportSpec(vehicle=args.vehicle_spec)
     index = write_report(args.cases, args.output_dir, spec)
     print(f"report: {index}")
@@ -1002,6 +1019,13 @@ def build_parser():
         default=None,
         help="vehicle file the runs were made with (its conditions and trim "
         "rows; default: the reference vehicle)",
+    )
+    report.add_argument(
+        "--sensitivities",
+        action="store_true",
+        help="evaluate the post-optimal sensitivities of gross-mass optima that have none "
+        "beside their case file (a live model, about 10 s each; the optimize and sweep "
+        "commands write them)",
     )
     report.set_defaults(func=_report)
     return parser
