@@ -82,6 +82,20 @@ def _finite_float(flag):
     return parse
 
 
+def _positive_float(flag):
+    """Return an argparse type: a finite number > 0."""
+
+    def parse(text):
+        try:
+            value = float(text)
+        except ValueError:
+            value = text
+        return check_number(flag, value, lower=0.0, lower_open=True, error=CLIError)
+
+    parse.__name__ = "number"
+    return parse
+
+
 def _existing(flag, what, folder_ok=False):
     """Return an argparse type: a path that exists (a file, or also a folder if ``folder_ok``)."""
 
@@ -725,6 +739,8 @@ def _optimize(args):
     out = Path(args.output_dir)
     out.mkdir(parents=True, exist_ok=True)
     settings = {"max_iter": args.max_iter}
+    if args.tol is not None:
+        settings["tol"] = args.tol
     if args.quiet:
         settings["print_level"] = 0
     common = dict(
@@ -927,6 +943,14 @@ def build_parser():
     )
     optimize.add_argument(
         "--max-iter", type=positive["--max-iter"], default=200, help="iteration limit"
+    )
+    optimize.add_argument(
+        "--tol",
+        type=_positive_float("--tol"),
+        default=None,
+        help="optimizer tolerance (default: the problem's; SLSQP 3e-4 on the full problem). "
+        "E.g. 1e-6 with --max-iter 150 from a full.sql polishes an optimum before reading its "
+        "post-optimal sensitivities",
     )
     optimize.add_argument("--vehicle", type=vehicle_type, default=None, help="vehicle TOML file")
     optimize.add_argument(

@@ -231,6 +231,8 @@ MISUSES = [
         "--optimizer",
     ),
     ("optimizer_unknown", [*FULL, "--optimizer", "NLOPT"], "--optimizer"),
+    ("tol_negative", [*FULL, "--tol", "-1e-6"], "--tol"),
+    ("tol_text", [*FULL, "--tol", "tight"], "--tol"),
     # sweep values
     (
         "values_without_parameter",
