@@ -68,29 +68,15 @@ def _integer(flag, lower):
     return parse
 
 
-def _finite_float(flag):
-    """Return an argparse type: a finite number."""
+def _finite_float(flag, **bounds):
+    """Return an argparse type: a finite number (within ``bounds``, as check_number takes)."""
 
     def parse(text):
         try:
             value = float(text)
         except ValueError:
             value = text
-        return check_number(flag, value, error=CLIError)
-
-    parse.__name__ = "number"
-    return parse
-
-
-def _positive_float(flag):
-    """Return an argparse type: a finite number > 0."""
-
-    def parse(text):
-        try:
-            value = float(text)
-        except ValueError:
-            value = text
-        return check_number(flag, value, lower=0.0, lower_open=True, error=CLIError)
+        return check_number(flag, value, error=CLIError, **bounds)
 
     parse.__name__ = "number"
     return parse
@@ -946,7 +932,7 @@ def build_parser():
     )
     optimize.add_argument(
         "--tol",
-        type=_positive_float("--tol"),
+        type=_finite_float("--tol", lower=0.0, lower_open=True),
         default=None,
         help="optimizer tolerance (default: the problem's; SLSQP 3e-4 on the full problem). "
         "E.g. 1e-6 with --max-iter 150 from a full.sql polishes an optimum before reading its "

@@ -4,7 +4,7 @@ At a local optimum x* of min f(x, p) s.t. g(x, p) = b (the active constraints, d
 bounds among them), the Karush-Kuhn-Tucker conditions give grad_x f = J^T nu with J the
 Jacobian of the active constraints. Moving a parameter moves the optimum's objective by (first
 order; Fiacco, *Introduction to Sensitivity and Stability Analysis in Nonlinear Programming*,
-1983, Thm. 3.4.1; Martins & Ning, *Engineering Design Optimization*, 2021, Sec. 5.3.5):
+1983, Ch. 3; Martins & Ning, *Engineering Design Optimization*, 2021, Ch. 5):
 
     dW0*/db_i = nu_i                                     (a constraint's bound b_i)
     dW0*/dp   = df/dp - sum_i nu_i dg_i/dp               (a model input p, x held at x*)
