@@ -367,11 +367,10 @@ def _onto_bounds(value, lower, upper, rel=1e-9):
     """
     value = np.array(value, dtype=float)
     for bound, outside in ((lower, np.less), (upper, np.greater)):
-        if bound is None:
-            continue
-        bound = np.broadcast_to(np.asarray(bound, dtype=float).reshape(-1), value.size).reshape(
-            value.shape
-        )
+        bound = None if bound is None else np.asarray(bound, dtype=float).reshape(-1)
+        if bound is None or bound.size not in (1, value.size):
+            continue  # no bound, or bounds on some indices only (left to OpenMDAO)
+        bound = np.broadcast_to(bound, value.size).reshape(value.shape)
         slack = rel * np.maximum(1.0, np.abs(bound))
         near = outside(value, bound) & (np.abs(value - bound) <= slack)
         value[near] = bound[near]
