@@ -519,10 +519,16 @@ def test_write_report_lpc_defaults_skip_absent_parts(runs, tmp_path):
         assert f"- {part}:" in text, part
     # The test model records hover.electrical_power etc. under the LPC default names.
     assert {"power.png", "figure_of_merit.png"} <= {Path(link).name for link in _links(index)}
+    # The paper's Table 8 is printed beside ours (its W0 of the calibrated 3723.99 kg reference).
+    assert (
+        "| Optimized w/ SM | 10.66 | 15.04 | 15.76 | 2.59 | 3.01 | 1.78 | 1.47 | 1.6 | 3814.8 |"
+        in text
+    )
     generic = report.write_report(
         runs["ipopt"][0], tmp_path / "generic", report.ReportSpec.generic()
     )
     assert "Skipped" not in generic.read_text()
+    assert "Paper Table 8" not in generic.read_text()
 
 
 # ------------------------------------------------------------------------------------------------

@@ -134,6 +134,30 @@ LPC_DESIGN_QUANTITIES = (
     ("W_0", "gross_mass", "kg"),
 )
 
+#: The paper's Table 8 (its two lift-rotor radii; W0 from the 3723.99 kg calibrated reference),
+#: printed beside ours in the report (``ReportSpec.paper_designs``).
+PAPER_TABLE_8 = (
+    [
+        "design",
+        "l_fuselage (m)",
+        "S_ref,wing (m**2)",
+        "AR_wing",
+        "S_ref,tail (m**2)",
+        "AR_tail",
+        "R_pusher (m)",
+        "R_lift,1 (m)",
+        "R_lift,2 (m)",
+        "W_0 (kg)",
+    ],
+    [
+        ["Initial", 9.14, 19.60, 12.12, 3.70, 4.30, 1.37, 1.52, 1.52, 3723.99],
+        ["Baseline w/o SM", 8.81, 19.35, 12.24, 3.70, 4.30, 1.37, 1.54, 1.54, 3846.90],
+        ["Optimized w/o SM", 8.72, 15.04, 15.76, 2.59, 3.01, 1.78, 1.65, 1.42, 3601.95],
+        ["Baseline w/ SM", 10.64, 17.65, 13.30, 3.64, 4.27, 1.38, 1.51, 1.55, 4077.36],
+        ["Optimized w/ SM", 10.66, 15.04, 15.76, 2.59, 3.01, 1.78, 1.47, 1.60, 3814.75],
+    ],
+)
+
 #: Wing-box design variables of VehicleGroup (per bay, root to tip).
 LPC_THICKNESS_DISTRIBUTIONS = (
     DistributionSpec(
@@ -231,6 +255,9 @@ class ReportSpec:
         Table 8 columns: :class:`~lpc_mdo.post.tables.Quantity` or ``(label, name[, units[,
         index]])``; default fuselage length, wing/tail area and aspect ratio, rotor radii,
         gross mass.
+    paper_designs : tuple or None
+        (columns, rows) printed under the design table for comparison; default the paper's
+        Table 8 (:data:`PAPER_TABLE_8`).
     meshes : tuple of str
         Surface meshes (nx, ny, 3) of the planform figure; default ``('wing_mesh',
         'horizontal_tail_mesh')``.
@@ -286,6 +313,7 @@ class ReportSpec:
     tol: float = DEFAULT_TOL
     refs: Mapping = field(default_factory=dict)
     design_quantities: tuple = LPC_DESIGN_QUANTITIES
+    paper_designs: tuple | None = PAPER_TABLE_8
     meshes: tuple = ("wing_mesh", "horizontal_tail_mesh")
     rotors: tuple = (("lift_hub_position", "lift_rotor_radius"),)
     fuselage: str | None = "fuselage_length"
@@ -323,6 +351,7 @@ class ReportSpec:
         """Return a spec with every LPC-specific part off (only the generic tables and figures)."""
         off = dict(
             design_quantities=(),
+            paper_designs=None,
             meshes=(),
             rotors=(),
             fuselage=None,
@@ -608,6 +637,13 @@ def _comparison_parts(index, runs, spec):
 
         index.add("### Design comparison (Table 8)", "")
         _try(index, "design table", design_table)
+        if spec.paper_designs:
+            columns, rows = spec.paper_designs
+            index.add("The paper's Table 8, for comparison:", "")
+            index.table(
+                tables.Table(list(columns), [list(r) for r in rows], title="Paper Table 8"),
+                "designs_paper",
+            )
 
     if spec.meshes:
 
