@@ -134,7 +134,7 @@ class SensitivityResult:
         W0* (kg).
     rows : list of Sensitivity
     kkt_residual : float
-        ||grad f - J^T nu|| / ||grad f|| in the scaled space (0 at an exact KKT point).
+        ``norm(grad f - J^T nu) / norm(grad f)`` in the scaled space (0 at an exact KKT point).
     active : list of str
         Active constraints and design-variable bounds with their multipliers (kg per unit of
         the constraint's own units), largest first.
@@ -224,13 +224,13 @@ class OptimumDerivatives:
     active : dict
         constraint-name suffix -> whether any of those constraints is active.
     kkt_residual : float
-        ||grad f - J^T nu|| / ||grad f|| in the scaled space (0 at an exact KKT point).
+        ``norm(grad f - J^T nu) / norm(grad f)`` in the scaled space (0 at an exact KKT point).
     multipliers : list of (str, int, float)
         (constraint or design variable, element, df*/d(its bound)) of the active set, largest
         first.
     residual_by_variable : dict
-        design variable -> largest |grad f - J^T nu| of its elements over ||grad f|| (where
-        the point is furthest from stationary).
+        design variable -> largest ``abs(grad f - J^T nu)`` of its elements over
+        ``norm(grad f)`` (where the point is furthest from stationary).
     """
 
     objective: float
