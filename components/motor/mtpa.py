@@ -26,6 +26,32 @@ def mtpa_residual(current_pu, torque_pu):
     return current_pu**4 + torque_pu * current_pu - torque_pu**2
 
 
+#: The last real roots of :func:`mtpa_current_pu` by torque array. A complex-step Jacobian
+#: evaluates the motor residuals once per input with the same real parts, so the real root is
+#: the same each time; solving it once per linearize instead of once per input saved the
+#: safeguarded Newton iterations of the MTPA quartic (measured with run_scripts/benchmark_lpc.py).
+_REAL_ROOTS = {}
+_REAL_ROOTS_KEPT = 64
+
+
+def _real_root(t_real, owner):
+    """Return the real root of eq. 26 for the real per-unit torques (cached by value)."""
+    key = (t_real.shape, t_real.tobytes())
+    root = _REAL_ROOTS.get(key)
+    if root is None:
+        root = safeguarded_newton(
+            lambda x: (mtpa_residual(x, t_real), 4.0 * x**3 + t_real),
+            np.zeros_like(t_real),
+            np.minimum(t_real, np.sqrt(t_real)),
+            where=owner,
+            variable="current_q (per unit)",
+        )
+        if len(_REAL_ROOTS) >= _REAL_ROOTS_KEPT:
+            _REAL_ROOTS.clear()
+        _REAL_ROOTS[key] = root
+    return root.copy()
+
+
 def mtpa_current_pu(torque_pu, owner="MTPA"):
     """
     Per-unit MTPA q-axis current I_q*(T*): the root of eq. 26 for T* > 0 (vectorized).
@@ -38,14 +64,7 @@ def mtpa_current_pu(torque_pu, owner="MTPA"):
     """
     torque_pu = np.asarray(torque_pu)
     t_real = torque_pu.real
-    upper = np.minimum(t_real, np.sqrt(t_real))
-    current_pu = safeguarded_newton(
-        lambda x: (mtpa_residual(x, t_real), 4.0 * x**3 + t_real),
-        np.zeros_like(t_real),
-        upper,
-        where=owner,
-        variable="current_q (per unit)",
-    )
+    current_pu = _real_root(t_real, owner)
     if np.iscomplexobj(torque_pu):
         current_pu = current_pu - (
             mtpa_residual(current_pu, torque_pu) / (4.0 * current_pu**3 + t_real)
