@@ -128,3 +128,20 @@ def test_bad_inputs_raise(name, value, pattern):
     prob.set_val(name, value)
     with pytest.raises(om.AnalysisError, match=pattern):
         prob.run_model()
+
+
+def test_cached_real_roots_are_the_roots_of_their_own_torques():
+    # The real roots are cached by torque array (a complex-step Jacobian evaluates the same real
+    # parts once per input); a changed torque must get its own root, and a caller that edits the
+    # returned array must not edit the cache.
+    first, second = np.array([0.2, 1.5, 3.0]), np.array([0.25, 1.5, 2.0])
+    a = mtpa_current_pu(first)
+    b = mtpa_current_pu(second)
+    a[:] = -1.0
+    again = mtpa_current_pu(first)
+    for torque, root in ((first, again), (second, b)):
+        np.testing.assert_allclose(mtpa_residual(root, torque), 0.0, atol=1e-12)
+    derivative = mtpa_current_pu(first + 1e-30j).imag / 1e-30  # the complex step still works
+    np.testing.assert_allclose(
+        derivative, -(again - 2 * first) / (4 * again**3 + first), rtol=1e-12
+    )
