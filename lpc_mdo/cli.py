@@ -835,7 +835,12 @@ def _report(args):
             if [n.split(".")[-1] for n in objectives] != ["gross_mass"]:
                 continue
             print(f"report: post-optimal sensitivities of {label} ...", flush=True)
-            sensitivities_from_case(path, args.vehicle_spec).to_json(sidecar)
+            try:
+                found = sensitivities_from_case(path, args.vehicle_spec)
+            except ValueError as err:  # another vehicle's run (a sweep point): say so, go on
+                print(f"report: {label}: {str(err).removeprefix('sensitivities: ')}")
+                continue
+            found.to_json(sidecar)
     spec = ReportSpec(vehicle=args.vehicle_spec)
     index = write_report(args.cases, args.output_dir, spec)
     print(f"report: {index}")

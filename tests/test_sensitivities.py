@@ -160,3 +160,17 @@ def test_lpc_sensitivity_matches_reoptimized_neighbours():
     assert found.row("payload").dw0_dp == pytest.approx(difference, rel=0.10)
     assert found.row("cruise_range").dw0_dp == 0.0
     assert found.row("final_soc").active is False  # not declared in subproblem 4
+
+
+def test_a_case_run_with_other_parameters_is_refused():
+    # A sweep point read with the reference vehicle: its optimum is not the optimum of the
+    # problem built, and its sensitivities would be those of a non-optimal point.
+    from lpc_mdo.sensitivities import check_same_parameters
+
+    same = {"battery.specific_energy": [1.44e6], "state_of_charge lower": 0.2}
+    check_same_parameters(same, dict(same), "run.sql")
+    check_same_parameters({"x upper": None}, {"x upper": 1e30}, "run.sql")  # both unbounded
+    with pytest.raises(ValueError, match=r"run with battery.specific_energy = \[1620000.0\]"):
+        check_same_parameters({"battery.specific_energy": [1.62e6]}, same, "run.sql")
+    with pytest.raises(ValueError, match="state_of_charge lower = 0.25, the vehicle gives 0.2"):
+        check_same_parameters({"state_of_charge lower": 0.25}, same, "run.sql")
