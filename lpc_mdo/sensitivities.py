@@ -31,7 +31,7 @@ from pathlib import Path
 import numpy as np
 from scipy.optimize import lsq_linear
 
-from lpc_mdo.sweeps import SWEEP_PARAMETERS
+from lpc_mdo.sweeps import SWEEP_PARAMETERS, reference_value
 
 SENSITIVITIES_FORMAT = "lpc_mdo.sensitivities/1"
 
@@ -423,12 +423,7 @@ def _bound_value(cons, parameter, vehicle):
                 bound = meta.get(key)
                 if bound is not None and abs(np.atleast_1d(bound)[0]) < 1e29:
                     return float(np.atleast_1d(bound)[0])
-    limits = vehicle.constraints
-    return {
-        "final_soc": limits.min_final_soc,
-        "max_noise": limits.max_noise,
-        "min_static_margin": limits.min_static_margin,
-    }[parameter.name]
+    return reference_value(vehicle, parameter.name)
 
 
 def _input_element(prob, vehicle, parameter):
@@ -438,8 +433,7 @@ def _input_element(prob, vehicle, parameter):
         # Range = cruise speed x cruise duration: d/d(range in km) = 1000 / V d/d(duration).
         powered = [c.name for c in prob.model._powered]
         index = powered.index(vehicle.mission.cruise_condition)
-        cruise = next(c for c in vehicle.conditions if c.name == vehicle.mission.cruise_condition)
-        per_model = 1000.0 / cruise.speed
+        per_model = 1000.0 / vehicle.condition(vehicle.mission.cruise_condition).speed
         return index, per_model, float(value[index] / per_model)
     return 0, parameter.model_per_unit, float(value[0] / parameter.model_per_unit)
 
@@ -540,7 +534,8 @@ def sensitivities_from_case(case_file, vehicle=None, parameters=None, active_tol
 
     if vehicle is None or isinstance(vehicle, (str, Path)):
         vehicle = load_vehicle(vehicle)
-    case = om.CaseReader(str(case_file)).get_case("final")
+    reader = om.CaseReader(str(case_file))
+    case = reader.get_case("final")
     objectives = list(case.get_objectives())
     if [n.split(".")[-1] for n in objectives] != ["gross_mass"]:
         raise ValueError(
@@ -559,7 +554,7 @@ def sensitivities_from_case(case_file, vehicle=None, parameters=None, active_tol
             except KeyError:
                 continue
             built[p.variable] = prob.get_val(p.variable)
-    bounds = om.CaseReader(str(case_file)).problem_metadata["variables"]
+    bounds = reader.problem_metadata["variables"]
     for name, meta in prob.model.get_constraints().items():
         if name in bounds:
             for key in ("lower", "upper", "equals"):

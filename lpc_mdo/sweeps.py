@@ -34,8 +34,7 @@ PAPER_SWEEPS = tuple(k for k, (_, _, values) in SWEEP_PARAMETERS.items() if valu
 
 
 def _cruise(vehicle):
-    name = vehicle.mission.cruise_condition
-    return next(c for c in vehicle.conditions if c.name == name)
+    return vehicle.condition(vehicle.mission.cruise_condition)
 
 
 def sweep_vehicle(vehicle, parameter, value):
