@@ -72,9 +72,9 @@ from lpc_mdo.groups.condition_base import (
     condition_layout,
     linear_trim_ref,
 )
-from lpc_mdo.groups.motor import MotorGroup
+from lpc_mdo.groups.motor import DESIGN_OUTPUTS, MotorOperationGroup
 from lpc_mdo.groups.pitt_peters_rotor import PittPetersRotorGroup
-from lpc_mdo.groups.vehicle import motor_loadings, motor_parameters
+from lpc_mdo.groups.vehicle import motor_parameters
 from lpc_mdo.groups.vlm import VLMGroup, lpc_vlm_surfaces
 from lpc_mdo.vehicle import VehicleSpecError
 
@@ -118,6 +118,7 @@ def _lift_inputs(vehicle, active):
         ("blade_twist_cp", "lift_twist_cp", om.slicer[rows, :]),
         ("lift_hub_position", "lift_hub_position", om.slicer[active, :]),
         ("motor_length", "lift_motor_length", rows),
+        *_motor_design_inputs("lift", rows),
     )
 
 
@@ -130,7 +131,13 @@ def _pusher_inputs(vehicle):
         ("blade_twist_cp", "pusher_twist_cp", om.slicer[[row], :]),
         ("pusher_hub_position", "pusher_hub_position", om.slicer[np.arange(3)[None, :],]),
         ("motor_length", "pusher_motor_length", [row]),
+        *_motor_design_inputs("pusher", [row]),
     )
+
+
+def _motor_design_inputs(prefix, rows):
+    """Vehicle-level motor designs (``motor_{name}``, one per rotor group): ``rows`` of them."""
+    return tuple((f"motor_{name}", f"{prefix}_motor_{name}", rows) for name in DESIGN_OUTPUTS)
 
 
 #: Vehicle-level inputs of the aerodynamics (VLM meshes, reference quantities, drag build-up).
@@ -184,8 +191,11 @@ def _add_motors(group, vehicle, prefix, num_motors, rpm):
     """Motors of the ``prefix`` rotors (torque floored at idle), promoted as ``{prefix}_motor_*``.
 
     Inputs ``{prefix}_torque`` (rotor shaft torque), ``rpm`` (each rotor's speed),
-    ``{prefix}_motor_length``; outputs ``{prefix}_motor_input_power``, ``_em_torque``,
-    ``_torque_margin``, ``_peak_torque`` and ``_voltage_margin`` (1 - abs(U)/V_lim: below 0
+    ``{prefix}_motor_length`` and the motor designs ``{prefix}_motor_{name}`` for ``name`` in
+    :data:`~lpc_mdo.groups.motor.DESIGN_OUTPUTS` (peak torque, resistance, inductances, ...:
+    the rows of the vehicle group's ``motor_design``, so each design is sized once, not once per
+    condition); outputs ``{prefix}_motor_input_power``, ``_em_torque``,
+    ``_torque_margin`` and ``_voltage_margin`` (1 - abs(U)/V_lim: below 0
     the MTPA operating point needs more than the voltage limit, i.e. flux weakening, which the
     motor model does not have; the problem kind ``voltage_margin`` constrains it).
     """
@@ -196,23 +206,14 @@ def _add_motors(group, vehicle, prefix, num_motors, rpm):
     )
     group.add_subsystem(
         f"{prefix}_motors",
-        MotorGroup(
-            num_motors=num_motors,
-            num_nodes=1,
-            length_to_diameter=vehicle.motor.length_to_diameter,
-            parameters=motor_parameters(vehicle),
-            **motor_loadings(vehicle),
+        MotorOperationGroup(
+            num_motors=num_motors, num_nodes=1, parameters=motor_parameters(vehicle)
         ),
-        promotes_inputs=[("length", f"{prefix}_motor_length"), ("rotor_rpm", rpm)],
+        promotes_inputs=[("length", f"{prefix}_motor_length"), ("rotor_rpm", rpm)]
+        + [(name, f"{prefix}_motor_{name}") for name in DESIGN_OUTPUTS],
         promotes_outputs=[
             (name, f"{prefix}_motor_{name}")
-            for name in (
-                "input_power",
-                "em_torque",
-                "torque_margin",
-                "peak_torque",
-                "voltage_margin",
-            )
+            for name in ("input_power", "em_torque", "torque_margin", "voltage_margin")
         ],
     )
     group.connect(f"{prefix}_shaft.motor_load_torque", f"{prefix}_motors.rotor_torque")

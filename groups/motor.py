@@ -23,6 +23,20 @@ from lpc_mdo.components.motor.torque_limit import TorqueLimitComp
 _check_ratio = RangeCheck(lower=0.0, lower_open=True, where="MotorGroup")
 _check_loading = RangeCheck(lower=0.0, lower_open=True, where="MotorGroup")
 
+#: Outputs of :class:`MotorDesignGroup` that :class:`MotorOperationGroup` reads, per motor
+#: design (besides the stack ``length``, a design variable).
+DESIGN_OUTPUTS = (
+    "peak_torque",
+    "resistance",
+    "inductance_d",
+    "inductance_q",
+    "flux_linkage",
+    "air_gap_flux_density",
+    "iron_volume",
+    "magnet_volume",
+    "rotor_diameter",
+)
+
 
 def _declare_options(group):
     group.options.declare(
@@ -66,6 +80,11 @@ class MotorGroup(om.Group):
     - ``losses`` (MotorLossComp): currents, voltage, losses, efficiency, input power;
     - ``margins`` (MotorMarginComp): torque margin (>= 0.10 in the paper), voltage margin and
       the beyond-voltage-limit flag (no flux weakening, as in the paper).
+
+    The first six components depend on the motor design alone: they are also
+    :class:`MotorDesignGroup`, the rest :class:`MotorOperationGroup`. The LPC model splits them
+    (one design group over the vehicle's motor designs, one operating group per condition);
+    this group keeps both for a motor on its own (:func:`lpc_mdo.api.motor.motor_analysis`).
 
     Per-motor variables have shape (num_motors,), per-operating-point ones
     (num_motors, num_nodes). Everything is promoted. The model is feed-forward (each implicit
@@ -122,73 +141,144 @@ class MotorGroup(om.Group):
 
     def initialize(self):
         _declare_options(self)
-        self.options.declare(
-            "length_to_diameter",
-            default=0.5,
-            types=(int, float),
-            allow_none=True,
-            check_valid=_check_ratio,
-            desc="L/D ratio tying D to L (> 0); None makes diameter an input",
-        )
-        self.options.declare(
-            "include_torque_limit",
-            default=True,
-            types=bool,
-            desc="Compute the voltage-limited torque and its margin",
-        )
-        self.options.declare(
-            "electric_loading",
-            default=30.0e3,
-            types=(int, float),
-            check_valid=_check_loading,
-            desc="Default of the input electric_loading, A/m (> 0)",
-        )
-        self.options.declare(
-            "magnetic_loading",
-            default=0.85,
-            types=(int, float),
-            check_valid=_check_loading,
-            desc="Default of the input magnetic_loading, T (> 0)",
-        )
+        _declare_design_options(self)
+        _declare_operation_options(self)
 
     def setup(self):
+        add_design_components(self)
+        add_operation_components(self)
         nm, nn = self.options["num_motors"], self.options["num_nodes"]
-        par = self.options["parameters"]
-        motors = {"num_motors": nm, "parameters": par}
-        points = {"num_motors": nm, "num_nodes": nn, "parameters": par}
-        with_limit = self.options["include_torque_limit"]
-
-        self.add_subsystem(
-            "sizing",
-            MotorSizingComp(length_to_diameter=self.options["length_to_diameter"], **motors),
-            promotes=["*"],
-        )
-        self.add_subsystem("ecm_parameters", MotorECMParametersComp(**motors), promotes=["*"])
-        self.add_subsystem("magnet_circuit", MagnetCircuitComp(**motors), promotes=["*"])
-        self.add_subsystem("magnet_flux", MagnetFluxComp(**motors), promotes=["*"])
-        self.add_subsystem("q_axis_flux", QAxisFluxComp(**motors), promotes=["*"])
-        self.add_subsystem("inductance", InductanceComp(**motors), promotes=["*"])
-        if with_limit:
-            self.add_subsystem("torque_limit", TorqueLimitComp(**points), promotes=["*"])
-        self.add_subsystem("em_torque", EMTorqueComp(**points), promotes=["*"])
-        self.add_subsystem("mtpa", MTPAComp(**points), promotes=["*"])
-        self.add_subsystem("losses", MotorLossComp(**points), promotes=["*"])
-        self.add_subsystem(
-            "margins", MotorMarginComp(include_torque_limit=with_limit, **points), promotes=["*"]
-        )
-
-        self.set_input_defaults("length", 0.1 * np.ones(nm), units="m")
-        self.set_input_defaults(
-            "electric_loading", np.full(nm, float(self.options["electric_loading"])), units="A/m"
-        )
-        self.set_input_defaults(
-            "magnetic_loading", np.full(nm, float(self.options["magnetic_loading"])), units="T"
-        )
-        if self.options["length_to_diameter"] is None:
-            self.set_input_defaults("diameter", 0.2 * np.ones(nm), units="m")
+        _design_input_defaults(self, nm)
         self.set_input_defaults("rotor_torque", 500.0 * np.ones((nm, nn)), units="N*m")
         self.set_input_defaults("rotor_rpm", 1000.0 * np.ones((nm, nn)), units="rpm")
 
         # Feed-forward, and each implicit component solves its own (diagonal) linear system:
         # one LinearRunOnce pass gives exact totals. No DirectSolver here, since OpenMDAO treats
         # a group with one as atomic for relevance and warns about it on every driver run.
+
+
+class MotorDesignGroup(om.Group):
+    """
+    The design half of :class:`MotorGroup`: what depends on the motor design alone.
+
+    ``sizing``, ``ecm_parameters``, ``magnet_circuit``, ``magnet_flux``, ``q_axis_flux`` and
+    ``inductance`` of :class:`MotorGroup` (same components, names and promotion), evaluated
+    once per motor design. The vehicle group runs one over the vehicle's motor designs (one
+    per lift-rotor pair and the pusher) and the conditions' :class:`MotorOperationGroup`
+    read its outputs :data:`DESIGN_OUTPUTS`, instead of every condition re-sizing its motors
+    (18 motor groups of 2 designs: 108 design components before, 6 now).
+
+    Inputs: ``length``, ``diameter`` (with ``length_to_diameter`` None), ``electric_loading``,
+    ``magnetic_loading`` (num_motors,). Outputs: the design outputs of :class:`MotorGroup`.
+    Options: ``num_motors``, ``parameters``, ``length_to_diameter``, ``electric_loading``,
+    ``magnetic_loading`` as :class:`MotorGroup`.
+    """
+
+    def initialize(self):
+        _declare_options(self)
+        _declare_design_options(self)
+
+    def setup(self):
+        add_design_components(self)
+        _design_input_defaults(self, self.options["num_motors"])
+
+
+class MotorOperationGroup(om.Group):
+    """
+    The operating-point half of :class:`MotorGroup`, for motor designs computed elsewhere.
+
+    ``torque_limit`` (optional), ``em_torque``, ``mtpa``, ``losses`` and ``margins`` of
+    :class:`MotorGroup` (same components, names and promotion). The design quantities
+    :data:`DESIGN_OUTPUTS` and ``length`` are inputs, shape (num_motors,), connected from a
+    :class:`MotorDesignGroup` (a condition connects the rows of its motors from the vehicle
+    group's).
+
+    Options: ``num_motors``, ``num_nodes``, ``parameters``, ``include_torque_limit`` as
+    :class:`MotorGroup`.
+    """
+
+    def initialize(self):
+        _declare_options(self)
+        _declare_operation_options(self)
+
+    def setup(self):
+        nm, nn = self.options["num_motors"], self.options["num_nodes"]
+        add_operation_components(self)
+        self.set_input_defaults("length", 0.1 * np.ones(nm), units="m")
+        self.set_input_defaults("rotor_torque", 500.0 * np.ones((nm, nn)), units="N*m")
+        self.set_input_defaults("rotor_rpm", 1000.0 * np.ones((nm, nn)), units="rpm")
+
+
+def _declare_design_options(group):
+    group.options.declare(
+        "length_to_diameter",
+        default=0.5,
+        types=(int, float),
+        allow_none=True,
+        check_valid=_check_ratio,
+        desc="L/D ratio tying D to L (> 0); None makes diameter an input",
+    )
+    group.options.declare(
+        "electric_loading",
+        default=30.0e3,
+        types=(int, float),
+        check_valid=_check_loading,
+        desc="Default of the input electric_loading, A/m (> 0)",
+    )
+    group.options.declare(
+        "magnetic_loading",
+        default=0.85,
+        types=(int, float),
+        check_valid=_check_loading,
+        desc="Default of the input magnetic_loading, T (> 0)",
+    )
+
+
+def _declare_operation_options(group):
+    group.options.declare(
+        "include_torque_limit",
+        default=True,
+        types=bool,
+        desc="Compute the voltage-limited torque and its margin",
+    )
+
+
+def add_design_components(group):
+    """Add the six design components of :class:`MotorGroup` to ``group``, promoted."""
+    motors = {"num_motors": group.options["num_motors"], "parameters": group.options["parameters"]}
+    group.add_subsystem(
+        "sizing",
+        MotorSizingComp(length_to_diameter=group.options["length_to_diameter"], **motors),
+        promotes=["*"],
+    )
+    group.add_subsystem("ecm_parameters", MotorECMParametersComp(**motors), promotes=["*"])
+    group.add_subsystem("magnet_circuit", MagnetCircuitComp(**motors), promotes=["*"])
+    group.add_subsystem("magnet_flux", MagnetFluxComp(**motors), promotes=["*"])
+    group.add_subsystem("q_axis_flux", QAxisFluxComp(**motors), promotes=["*"])
+    group.add_subsystem("inductance", InductanceComp(**motors), promotes=["*"])
+
+
+def add_operation_components(group):
+    """Add the operating-point components of :class:`MotorGroup` to ``group``, promoted."""
+    points = {
+        "num_motors": group.options["num_motors"],
+        "num_nodes": group.options["num_nodes"],
+        "parameters": group.options["parameters"],
+    }
+    with_limit = group.options["include_torque_limit"]
+    if with_limit:
+        group.add_subsystem("torque_limit", TorqueLimitComp(**points), promotes=["*"])
+    group.add_subsystem("em_torque", EMTorqueComp(**points), promotes=["*"])
+    group.add_subsystem("mtpa", MTPAComp(**points), promotes=["*"])
+    group.add_subsystem("losses", MotorLossComp(**points), promotes=["*"])
+    group.add_subsystem(
+        "margins", MotorMarginComp(include_torque_limit=with_limit, **points), promotes=["*"]
+    )
+
+
+def _design_input_defaults(group, nm):
+    group.set_input_defaults("length", 0.1 * np.ones(nm), units="m")
+    for name, units in (("electric_loading", "A/m"), ("magnetic_loading", "T")):
+        group.set_input_defaults(name, np.full(nm, float(group.options[name])), units=units)
+    if group.options["length_to_diameter"] is None:
+        group.set_input_defaults("diameter", 0.2 * np.ones(nm), units="m")

@@ -16,7 +16,6 @@ from lpc_mdo.components.geometry.section_mesh import SectionMeshComp
 from lpc_mdo.components.geometry.surface_sizing import SurfaceSizingComp
 from lpc_mdo.components.geometry.tail_position import TailPositionComp
 from lpc_mdo.components.motor.parameters import MotorParameters
-from lpc_mdo.components.motor.sizing import MotorSizingComp
 from lpc_mdo.components.structures.beam import BeamMassComp
 from lpc_mdo.components.structures.box_section import BoxSectionComp
 from lpc_mdo.components.structures.section_wing_box_geometry import SectionWingBoxGeometryComp
@@ -25,6 +24,7 @@ from lpc_mdo.components.structures.wing_box_geometry import (
     wing_box_section,
 )
 from lpc_mdo.components.weights.wing_mass import WingMirrorComp
+from lpc_mdo.groups.motor import DESIGN_OUTPUTS, MotorDesignGroup
 from lpc_mdo.groups.weights import WeightsGroup, motor_group_indices
 from lpc_mdo.mpi import serial_comm
 from lpc_mdo.vehicle import reference_vehicle
@@ -45,9 +45,6 @@ VEHICLE_DESIGN_VARIABLES = {
     "top_skin_thickness": "m",
     "bottom_skin_thickness": "m",
 }
-
-# Units of the motor loadings (the inputs of MotorSizingComp).
-MOTOR_LOADING_UNITS = {"electric_loading": "A/m", "magnetic_loading": "T"}
 
 
 def motor_parameters(vehicle):
@@ -95,8 +92,10 @@ class VehicleGroup(om.Group):
       (BeamMassComp), ``wing_mirror`` (WingMirrorComp): the beam of one half wing (the
       vehicle's taper, sweep, dihedral, incidence and root leading edge), its mass and the whole
       wing's mass and cg;
-    - ``motor_sizing`` (MotorSizingComp, one motor per rotor group): motor masses (eq. 23),
-      with the vehicle's electric and magnetic loadings;
+    - ``motor_design`` (MotorDesignGroup, one motor design per rotor group): motor masses
+      (eq. 23) with the vehicle's electric and magnetic loadings, and the equivalent circuit
+      (``motor_resistance``, ``motor_inductance_d``, ...: ``motor_{name}`` for the names in
+      :data:`~lpc_mdo.groups.motor.DESIGN_OUTPUTS`) that every condition's motors read;
     - ``weights`` (WeightsGroup): regressions, gross mass (objective), cg, inertia.
 
     Inputs (promoted): the design variables in ``VEHICLE_DESIGN_VARIABLES`` (the wing-box
@@ -327,14 +326,16 @@ class VehicleGroup(om.Group):
         groups = motor_group_indices(vehicle)
         num_groups = len(vehicle.lift_rotor_pairs) + 1  # motor designs: one per lift pair, pusher
         self.add_subsystem(
-            "motor_sizing",
-            MotorSizingComp(
+            "motor_design",
+            MotorDesignGroup(
                 num_motors=num_groups,
                 length_to_diameter=vehicle.motor.length_to_diameter,
                 parameters=motor_parameters(vehicle),
+                **motor_loadings(vehicle),
             ),
             promotes_inputs=[("length", "motor_length")],
-            promotes_outputs=[("mass", "motor_group_mass"), ("peak_torque", "motor_peak_torque")],
+            promotes_outputs=[("mass", "motor_group_mass")]
+            + [(name, f"motor_{name}") for name in DESIGN_OUTPUTS],
         )
         self.add_subsystem(
             "weights",
@@ -342,10 +343,6 @@ class VehicleGroup(om.Group):
             promotes=["*"],
         )
         self.connect("motor_group_mass", "motor_mass", src_indices=groups)
-        for name, value in motor_loadings(vehicle).items():
-            self.set_input_defaults(
-                f"motor_sizing.{name}", np.full(num_groups, value), units=MOTOR_LOADING_UNITS[name]
-            )
 
         self.set_input_defaults("material_density", vehicle.material.density, units="kg/m**3")
         dvs = vehicle.design_variables

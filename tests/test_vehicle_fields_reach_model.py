@@ -19,7 +19,7 @@ from openmdao.utils.assert_utils import assert_near_equal
 from lpc_mdo.components.motor.sizing import MotorSizingComp
 from lpc_mdo.components.structures.wing_box_geometry import wing_box_section
 from lpc_mdo.groups.motor import MotorGroup
-from lpc_mdo.groups.vehicle import VehicleGroup
+from lpc_mdo.groups.vehicle import VehicleGroup, motor_loadings, motor_parameters
 from lpc_mdo.groups.weights import placeholder_calibration_inputs
 from lpc_mdo.vehicle import reference_vehicle
 
@@ -142,12 +142,12 @@ def test_motor_loadings_reach_the_vehicle_motor_sizing(reference):
     prob = _vehicle_problem(MOTOR)
     motor = MOTOR.motor
     assert_near_equal(
-        prob.get_val("vehicle.motor_sizing.electric_loading", units="A/m"),
+        prob.get_val("vehicle.motor_design.electric_loading", units="A/m"),
         np.full(5, motor.electric_loading),
         1e-15,
     )
     assert_near_equal(
-        prob.get_val("vehicle.motor_sizing.magnetic_loading", units="T"),
+        prob.get_val("vehicle.motor_design.magnetic_loading", units="T"),
         np.full(5, motor.magnetic_loading),
         1e-15,
     )
@@ -198,40 +198,44 @@ def test_motor_group_loading_options():
         MotorGroup(magnetic_loading=0.0)
 
 
-def test_motor_loadings_reach_every_motor_sizing_comp():
+def test_motor_designs_are_sized_once_and_read_by_every_condition():
     from lpc_mdo.groups.lpc import LPCGroup
+    from lpc_mdo.groups.motor import DESIGN_OUTPUTS
 
-    # Hover has the lift motors, cruise the pusher motor; the vehicle group sizes one motor per
-    # rotor group. Every MotorSizingComp in the model must see the vehicle's loadings.
+    # The vehicle group sizes one motor per rotor group with the vehicle's loadings; the
+    # conditions (hover: lift motors, cruise: pusher) only run operating points and read the
+    # rows of their rotor groups.
     prob = om.Problem(LPCGroup(vehicle=MOTOR, conditions=["hover", "cruise"]), reports=False)
     prob.setup()
     prob.run_model()
     sizing = list(prob.model.system_iter(recurse=True, typ=MotorSizingComp))
-    assert {s.pathname for s in sizing} == {
-        "vehicle.motor_sizing",
-        "hover.lift_motors.sizing",
-        "cruise.pusher_motors.sizing",
-    }
-    for comp in sizing:
+    assert [s.pathname for s in sizing] == ["vehicle.motor_design.sizing"]
+    for name, value in (("electric_loading", 40.0e3), ("magnetic_loading", 0.95)):
+        assert_near_equal(prob.get_val(f"vehicle.motor_design.{name}"), np.full(5, value), 1e-15)
+    lift_rows = [r.pair for r in MOTOR.lift_rotors]
+    for name in DESIGN_OUTPUTS:
+        design = prob.get_val(f"motor_{name}")
+        assert_near_equal(prob.get_val(f"hover.lift_motor_{name}"), design[lift_rows], 1e-15)
         assert_near_equal(
-            prob.get_val(f"{comp.pathname}.electric_loading", units="A/m"),
-            np.full(comp.options["num_motors"], 40.0e3),
-            1e-15,
+            prob.get_val(f"cruise.pusher_motor_{name}"), design[[MOTOR.pusher.pair]], 1e-15
         )
-        assert_near_equal(
-            prob.get_val(f"{comp.pathname}.magnetic_loading", units="T"),
-            np.full(comp.options["num_motors"], 0.95),
-            1e-15,
-        )
-    # The condition motors are the vehicle's motors: the same mass per rotor group (eq. 23).
-    group_mass = prob.get_val("motor_group_mass", units="kg")
-    assert_near_equal(
-        prob.get_val("hover.lift_motors.mass", units="kg"),
-        group_mass[[r.pair for r in MOTOR.lift_rotors]],
-        1e-12,
+    # The same numbers as a stand-alone MotorGroup (design and operation in one group) of the
+    # lift motors at hover's operating points.
+    alone = om.Problem(reports=False)
+    alone.model.add_subsystem(
+        "motor",
+        MotorGroup(
+            num_motors=len(lift_rows),
+            length_to_diameter=MOTOR.motor.length_to_diameter,
+            parameters=motor_parameters(MOTOR),
+            **motor_loadings(MOTOR),
+        ),
+        promotes=["*"],
     )
-    assert_near_equal(
-        prob.get_val("cruise.pusher_motors.mass", units="kg"),
-        group_mass[[MOTOR.pusher.pair]],
-        1e-12,
-    )
+    alone.setup()
+    alone.set_val("length", prob.get_val("hover.lift_motor_length", units="m"), units="m")
+    alone.set_val("rotor_torque", prob.get_val("hover.lift_motors.rotor_torque", units="N*m"))
+    alone.set_val("rotor_rpm", prob.get_val("hover.lift_motors.rotor_rpm", units="rpm"))
+    alone.run_model()
+    for name in ("input_power", "torque_margin", "voltage_margin"):
+        assert_near_equal(prob.get_val(f"hover.lift_motor_{name}"), alone.get_val(name), 1e-12)
