@@ -86,7 +86,9 @@ def safeguarded_newton(
     f_lower, f_upper : array_like or None
         R at the bracket ends, if already known (saves two evaluations).
     x0 : array_like or None
-        Start; default the regula-falsi point of the bracket (its midpoint if that fails).
+        Start, e.g. the previous solution (a warm start); entries that are NaN or not inside
+        their bracket start at the default, the regula-falsi point of the bracket (its midpoint
+        if that fails).
     xtol_abs, xtol_rel : float
         An entry has converged when its Newton step or its bracket width is at most
         ``xtol_abs + xtol_rel |x|``.
@@ -191,18 +193,20 @@ def safeguarded_newton(
     exact_hi = (f_hi == 0.0) & ~exact_lo
     x_all[exact_lo], x_all[exact_hi] = lo[exact_lo], hi[exact_hi]
     act = np.flatnonzero(~(exact_lo | exact_hi))
-    if x0 is not None:
-        x = np.broadcast_to(np.asarray(x0, dtype=float), shape).ravel()[act].copy()
-    else:
-        denom = f_hi[act] - f_lo[act]
-        safe = np.where(denom != 0.0, denom, 1.0)
-        x = np.where(
-            denom != 0.0,
-            lo[act] - f_lo[act] * (hi[act] - lo[act]) / safe,
-            0.5 * (lo[act] + hi[act]),
-        )
+    denom = f_hi[act] - f_lo[act]
+    safe = np.where(denom != 0.0, denom, 1.0)
+    x = np.where(
+        denom != 0.0,
+        lo[act] - f_lo[act] * (hi[act] - lo[act]) / safe,
+        0.5 * (lo[act] + hi[act]),
+    )
     lo, hi, f_lo = lo[act], hi[act], f_lo[act]
     x = np.where((x > lo) & (x < hi), x, 0.5 * (lo + hi))
+    if x0 is not None:
+        # A start inside the bracket replaces the regula-falsi point; NaN (or a start outside
+        # the bracket) keeps it.
+        start = np.broadcast_to(np.asarray(x0, dtype=float), shape).ravel()[act]
+        x = np.where((start > lo) & (start < hi), start, x)
     x_all[act] = x
     step_old = hi - lo
     for _ in range(maxiter):

@@ -180,15 +180,29 @@ class AlphaStarComp(om.ImplicitComponent):
             # Complex step: solve with the real parts, then one Newton step in complex
             # arithmetic carries the imaginary parts (the derivative) exactly, since the
             # Jacobian is exact at the converged real solution.
-            self._solve(*(np.real(inputs[n]) for n in ("lift_coefficient", "reynolds", "mach")))
+            self._solve(
+                *(np.real(inputs[n]) for n in ("lift_coefficient", "reynolds", "mach")),
+                guess=np.real(outputs["alpha_star"]),
+            )
             alpha = self._solution.astype(complex)
             g, dg_da, _, _ = self._lift(alpha, inputs["reynolds"], inputs["mach"])
             outputs["alpha_star"] = alpha + (inputs["lift_coefficient"] - g) / dg_da
             return
-        self._solve(inputs["lift_coefficient"], inputs["reynolds"], inputs["mach"])
+        self._solve(
+            inputs["lift_coefficient"],
+            inputs["reynolds"],
+            inputs["mach"],
+            guess=outputs["alpha_star"],
+        )
         outputs["alpha_star"] = self._solution
 
-    def _solve(self, target, re, m):
+    def _solve(self, target, re, m, guess=None):
+        """
+        Solve for alpha* at every section.
+
+        Newton starts from ``guess`` (the previous solution) where it lies inside a section's
+        bracket; the bracket, and so the root, does not depend on it.
+        """
         bad = ~(np.isfinite(target) & np.isfinite(re) & np.isfinite(m))
         if np.any(bad):
             raise om.AnalysisError(
@@ -215,10 +229,11 @@ class AlphaStarComp(om.ImplicitComponent):
                 hi[inside],
                 cl_lo[inside],
                 cl_hi[inside],
+                None if guess is None else np.array(guess, dtype=float)[inside],
             )
         self._solution = alpha
 
-    def _bracketed_newton(self, target, re, m, a_lo, a_hi, f_lo, f_hi):
+    def _bracketed_newton(self, target, re, m, a_lo, a_hi, f_lo, f_hi, guess=None):
         """Solve cl(alpha) = target on [a_lo, a_hi] with cl(a_lo) < target < cl(a_hi)."""
 
         def residual(alpha, idx):
@@ -231,6 +246,7 @@ class AlphaStarComp(om.ImplicitComponent):
             a_hi,
             f_lower=f_lo - target,
             f_upper=f_hi - target,
+            x0=guess,
             ftol=self.options["tolerance"],
             xtol_abs=4.0 * _EPS,
             xtol_rel=4.0 * _EPS,

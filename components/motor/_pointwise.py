@@ -150,6 +150,9 @@ class PointwiseImplicitComp(om.ImplicitComponent):
         values = self._values(inputs)
         self._check_values(values)
         real = {key: np.asarray(val).real for key, val in values.items()}
+        # Warm start: the previous solution (a driver's next point is close to the last one).
+        previous = np.real(outputs[name])
+        self._guess = previous.copy() if np.all(np.isfinite(previous)) else None
         state = self._solve(real)
         if self.under_complex_step:
             slope = state_derivative(lambda x: self._residual(real, x), state)
@@ -173,11 +176,16 @@ class PointwiseImplicitComp(om.ImplicitComponent):
         return self._newton(residual_and_slope, lower, upper)
 
     def _newton(self, residual_and_slope, lower, upper):
-        """Return the roots by safeguarded Newton on the bracket, errors naming the state."""
+        """Return the roots by safeguarded Newton on the bracket, errors naming the state.
+
+        Newton starts from the previous solution where it lies inside the bracket (the root is
+        the bracket's either way; near it, 1-2 steps instead of 5-8).
+        """
         return safeguarded_newton(
             residual_and_slope,
             lower,
             upper,
+            x0=getattr(self, "_guess", None),
             maxiter=200,
             variable=self._state_name,
             units=self._state_units,

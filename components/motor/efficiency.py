@@ -352,7 +352,8 @@ class EMTorqueComp(PointwiseImplicitComp):
 
     solve_nonlinear (vectorized over all motors and nodes): the equivalent form
     h(T) = omega_m (T - T_L) - P_loss(T) = T_L-scaled R (same sign, omega_m the motor shaft
-    speed) is solved by Newton's method (paper Table 1) started at T = T_L, where h < 0. For a
+    speed) is solved by Newton's method (paper Table 1) started at T = T_L, where h < 0 (or at
+    the previous solution when it is above T_L, falling back to T_L if that fails). For a
     loss convex in the torque, h is concave and the iterates increase monotonically to the
     smaller (physical) root; any step that overshoots creates a sign-change bracket and the
     iteration continues safeguarded (bisection fallback). h < 0 with dh/dT <= 0 means the torque
@@ -450,6 +451,17 @@ class EMTorqueComp(PointwiseImplicitComp):
         return self._operating_point(v, torque)["efficiency"] * torque - load
 
     def _solve(self, v):
+        guess = getattr(self, "_guess", None)
+        if guess is not None:
+            # Warm start from the previous solution: on the rising side of the concave h, so
+            # Newton reaches the same (smaller) root from either side; if it fails, start cold.
+            try:
+                return self._solve_from(v, guess)
+            except om.AnalysisError:
+                pass
+        return self._solve_from(v, None)
+
+    def _solve_from(self, v, guess):
         par = self.options["parameters"]
         load = v["rotor_torque"] / par.gear_ratio
         shaft_speed = v["rotor_rpm"] * par.gear_ratio * _RPM_TO_RAD_S  # motor omega_m, rad/s
@@ -460,7 +472,7 @@ class EMTorqueComp(PointwiseImplicitComp):
             value = shaft_speed * (torque - load) - loss.real
             return value, shaft_speed - loss.imag / CS_STEP
 
-        torque = load.copy()
+        torque = load.copy() if guess is None else np.where(guess > load, guess, load)
         lower = load.copy()
         upper = np.full_like(load, np.inf)
         for _ in range(self._maxiter):

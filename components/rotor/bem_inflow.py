@@ -448,9 +448,14 @@ class BEMSections:
         return {name: self.tangent(st, {name: 1.0}, loads=loads) for name in names}
 
     # ------------------------------------------------------------------ solve
-    def solve(self, owner=""):
+    def solve(self, owner="", guess=None):
         """
         Inflow angle of every station by bracketing and safeguarded Newton (real inputs).
+
+        The bracket is the first sign change of the residual on the quadrant grid, always (so
+        the root does not depend on ``guess``); Newton starts from ``guess`` (e.g. the previous
+        solution, flat, rad) where it lies inside that bracket, else from its regula-falsi
+        point. A warm start near the root takes 1-2 Newton steps instead of about 5.
 
         Returns
         -------
@@ -486,9 +491,9 @@ class BEMSections:
             todo = todo[~found]
         if todo.size:
             self._fail(todo, "no sign change of the inflow-angle residual on -pi..pi", owner)
-        return self._refine(lo, hi, f_lo, f_hi, owner)
+        return self._refine(lo, hi, f_lo, f_hi, owner, guess)
 
-    def _refine(self, lo, hi, f_lo, f_hi, owner):
+    def _refine(self, lo, hi, f_lo, f_hi, owner, guess=None):
         """Safeguarded Newton (:func:`lpc_mdo.numerics.safeguarded_newton`) in [lo, hi]."""
 
         def residual(phi, idx):
@@ -504,6 +509,7 @@ class BEMSections:
             hi,
             f_lower=f_lo,
             f_upper=f_hi,
+            x0=guess,
             xtol_abs=_PHI_TOL,
             xtol_rel=0.0,
             maxiter=_MAX_ITER,
@@ -644,6 +650,8 @@ class BEMInflowComp(om.ImplicitComponent):
         )
 
     def solve_nonlinear(self, inputs, outputs):
+        previous = np.real(outputs["inflow_angle"]).ravel()
+        guess = previous.copy() if np.all(np.isfinite(previous)) else None
         if self.under_complex_step:
             real = {name: inputs[name].real for name in SECTION_INPUTS}
             opts = self.options
@@ -655,10 +663,10 @@ class BEMInflowComp(om.ImplicitComponent):
                 opts["hub_loss"],
                 opts["tip_loss_form"],
                 self._shape,
-            ).solve(self.msginfo)
+            ).solve(self.msginfo, guess)
             phi = self._sections(inputs).newton_polish(phi.astype(complex))
         else:
-            phi = self._sections(inputs).solve(self.msginfo)
+            phi = self._sections(inputs).solve(self.msginfo, guess)
         outputs["inflow_angle"] = phi.reshape(self._shape)
 
     def linearize(self, inputs, outputs, partials):
