@@ -55,7 +55,7 @@ class BatteryComp(om.ExplicitComponent):
             units=None,
             desc="state of charge at the start of the mission, in (0, 1]",
         )
-        self.add_output("energy_capacity", 1.152e9, units="J", ref=1e9, desc="usable pack energy")
+        self.add_output("energy_capacity", 1.152e9, units="J", desc="usable pack energy")
         self.add_output("state_of_charge", 1.0, units=None, desc="end-of-mission state of charge")
         self.declare_partials("energy_capacity", ["battery_mass", "specific_energy"])
         self.declare_partials("state_of_charge", ["battery_mass", "specific_energy", "energy_used"])

@@ -73,11 +73,10 @@ class MissionEnergyComp(om.ExplicitComponent):
             "segment_energy",
             np.zeros(n),
             units="J",
-            ref=1e7,
             desc="energy of one pass through each condition",
         )
         self.add_output(
-            "energy_used", 0.0, units="J", ref=1e8, desc="energy drawn over the sizing mission"
+            "energy_used", 0.0, units="J", desc="energy drawn over the sizing mission"
         )
         self.declare_partials("segment_energy", ["electrical_power", "duration"], diagonal=True)
         cols = np.arange(n)

@@ -44,7 +44,6 @@ class TotalPowerComp(om.ExplicitComponent):
             "electrical_power",
             np.zeros(nn),
             units="W",
-            ref=1e5,
             desc="total electrical power drawn from the battery",
         )
         for name, nm in motors.items():

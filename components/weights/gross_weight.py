@@ -132,14 +132,13 @@ class GrossWeightComp(om.ExplicitComponent):
         for name, _, desc in _VECTOR_MASSES:
             self.add_input(name, np.zeros(nm), units="kg", desc=desc)
 
-        self.add_output("structures_mass", 500.0, units="kg", ref=1e2, desc="W_structures (eq. 32)")
-        self.add_output("powertrain_mass", 100.0, units="kg", ref=1e2, desc="W_powertrain (eq. 33)")
-        self.add_output("gross_mass", 3000.0, units="kg", ref=1e3, desc="gross mass W0 (eq. 31)")
+        self.add_output("structures_mass", 500.0, units="kg", desc="W_structures (eq. 32)")
+        self.add_output("powertrain_mass", 100.0, units="kg", desc="W_powertrain (eq. 33)")
+        self.add_output("gross_mass", 3000.0, units="kg", desc="gross mass W0 (eq. 31)")
         self.add_output(
             "mass_breakdown",
             np.zeros(nb),
             units="kg",
-            ref=1e2,
             desc="items: " + ", ".join(BREAKDOWN_LABELS),
         )
 
