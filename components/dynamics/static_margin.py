@@ -58,7 +58,6 @@ class NeutralPointComp(om.ImplicitComponent):
             "neutral_point",
             -4.0,
             units="m",
-            res_ref=1e4,
             desc="body-x station of the neutral point",
         )
         self.declare_partials(

@@ -75,9 +75,7 @@ class MissionEnergyComp(om.ExplicitComponent):
             units="J",
             desc="energy of one pass through each condition",
         )
-        self.add_output(
-            "energy_used", 0.0, units="J", desc="energy drawn over the sizing mission"
-        )
+        self.add_output("energy_used", 0.0, units="J", desc="energy drawn over the sizing mission")
         self.declare_partials("segment_energy", ["electrical_power", "duration"], diagonal=True)
         cols = np.arange(n)
         self.declare_partials(

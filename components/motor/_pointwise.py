@@ -113,7 +113,6 @@ class PointwiseImplicitComp(om.ImplicitComponent):
     _input_vars = ()
     _deps = ()
     _per_node = False
-    _state_ref = 1.0
 
     def initialize(self):
         _declare_common_options(self, self._per_node)
@@ -127,9 +126,7 @@ class PointwiseImplicitComp(om.ImplicitComponent):
         name, units, desc, default, per_node = self._state_var
         shape = _shape(self, per_node)
         self._shapes[name] = shape
-        self.add_output(
-            name, val=default * np.ones(shape), units=units, desc=desc, ref=self._state_ref
-        )
+        self.add_output(name, val=default * np.ones(shape), units=units, desc=desc)
         self._state_name = name
         self._state_units = units or ""
         self._all_deps = {name: tuple(self._deps) + (name,)}

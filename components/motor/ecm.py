@@ -566,7 +566,6 @@ class QAxisFluxComp(PointwiseImplicitComp):
     )
     _state_var = ("q_axis_flux", "Wb", "Q-axis flux phi_aq at rated current", 2.0e-3, False)
     _deps = _Q_AXIS_NAMES
-    _state_ref = 1.0e-3
 
     def _residual(self, v, flux_q):
         par = self.options["parameters"]

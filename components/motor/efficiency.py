@@ -400,7 +400,6 @@ class EMTorqueComp(PointwiseImplicitComp):
     _state_var = ("em_torque", "N*m", "Electromagnetic torque T_em", 130.0, True)
     _deps = ("rotor_torque", "rotor_rpm") + MOTOR_NAMES
     _per_node = True
-    _state_ref = 100.0
     _maxiter = 100
 
     def _check_values(self, values):

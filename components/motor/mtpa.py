@@ -147,7 +147,6 @@ class MTPAComp(om.ImplicitComponent):
             "current_q",
             val=50.0 * np.ones((nm, nn)),
             units="A",
-            ref=100.0,
             desc="MTPA q-axis current I_q",
         )
 

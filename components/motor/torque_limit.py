@@ -128,7 +128,6 @@ class TorqueLimitComp(PointwiseImplicitComp):
     )
     _deps = ("resistance", "inductance_d", "inductance_q", "flux_linkage", "rotor_rpm")
     _per_node = True
-    _state_ref = 100.0
 
     def _check_values(self, values):
         check_range(

@@ -120,7 +120,6 @@ class _M4RegressionComp(om.ExplicitComponent):
             f"{prefix}_mass",
             100.0,
             units="kg",
-            ref=100.0,
             desc=f"mass of the {self._what} (M4 regression)",
         )
         self.add_output(
@@ -130,7 +129,6 @@ class _M4RegressionComp(om.ExplicitComponent):
             f"{prefix}_inertia",
             np.eye(3),
             units="kg*m**2",
-            ref=100.0,
             desc=f"inertia tensor of the {self._what} about its cg, body axes",
         )
 
