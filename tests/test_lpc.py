@@ -259,6 +259,20 @@ def test_check_config_solvers_and_order_are_clean(lpc, tmp_path):
     assert "solvers check complete" in text and "WARNING" not in text, text
 
 
+def test_no_output_scaling_anywhere(lpc):
+    # One output with ref/ref0/res_ref makes OpenMDAO rescale the model's whole vectors around
+    # every right-hand side of compute_totals (CONTRIBUTING.md, Conventions): none of ours has.
+    scaled = [
+        name
+        for name, meta in lpc.model._var_allprocs_abs2meta["output"].items()
+        if np.any(np.asarray(meta["ref"]) != 1.0)
+        or np.any(np.asarray(meta["ref0"]) != 0.0)
+        or (meta["res_ref"] is not None and np.any(np.asarray(meta["res_ref"]) != 1.0))
+    ]
+    assert scaled == []
+    assert not lpc.model._has_output_scaling and not lpc.model._has_resid_scaling
+
+
 @pytest.mark.slow
 def test_all_totals_against_complex_step(lpc):
     """All 96 constraints and the objective with respect to all 161 design variables."""
