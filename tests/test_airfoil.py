@@ -336,3 +336,32 @@ def test_repeated_conditions_reuse_the_cached_re_mach_contraction():
         np.real(complex_values.cl), polar.evaluate(alpha0, re, mach).cl, rtol=1e-12
     )
     assert "_condition_caches" not in pickle.loads(pickle.dumps(polar)).__dict__
+
+
+def test_condition_caches_outlast_a_model_pass(monkeypatch):
+    # One pass over the LPC model queries a polar at about 40 sets of (Re, M); a second pass
+    # (the linearization after a run) must find every set still contracted. 60 sets evaluated
+    # twice: 60 contractions, none in the second pass; beyond the bound the oldest set goes.
+    import lpc_mdo.components.aero.airfoil as airfoil
+
+    polar = TablePolar.from_npz(airfoil_table_path("ls417"))
+    made = [0]
+    original = airfoil._FixedConditions.__init__
+
+    def counted(self, *args):
+        made[0] += 1
+        original(self, *args)
+
+    monkeypatch.setattr(airfoil._FixedConditions, "__init__", counted)
+    alpha = np.linspace(-0.2, 0.3, 25)
+    sets = [(np.full(25, 1e6 * (1 + k)), np.full(25, 0.01 * k)) for k in range(60)]
+    first = [polar.evaluate(alpha, re, mach).cl for re, mach in sets]
+    second = [polar.evaluate(alpha, re, mach).cl for re, mach in sets]
+    assert made[0] == 60
+    for a, b in zip(first, second, strict=True):
+        np.testing.assert_array_equal(a, b)
+    monkeypatch.setattr(airfoil, "_CONDITION_CACHE_SIZE", 50)
+    polar.evaluate(alpha, np.full(25, 7e7), np.zeros(25))  # a new set: 11 oldest evicted
+    assert len(polar._condition_caches) == 50
+    polar.evaluate(alpha, *sets[0])
+    assert made[0] == 62

@@ -39,6 +39,7 @@ Tables shipped in ``lpc_mdo/data/airfoil_<name>.npz`` were made by
 Prandtl–Glauert for Mach); ``lpc_mdo/data/README.md`` says how.
 """
 
+import collections
 import functools
 import os
 import zipfile
@@ -111,19 +112,11 @@ class _FixedConditions:
     """
 
     def __init__(self, polar, reynolds, mach):
-        self.reynolds, self.mach = reynolds.copy(), mach.copy()
         (self.ir, self.wr, self.dwr), (self.im, self.wm, self.dwm) = polar._conditions(
             reynolds, mach
         )
         self.window = np.full(reynolds.size, -1)
         self.contracted = np.zeros((reynolds.size, 4, polar._composite_table.shape[-1], 3))
-
-    def matches(self, reynolds, mach):
-        return (
-            reynolds.shape == self.reynolds.shape
-            and np.array_equal(reynolds, self.reynolds)
-            and np.array_equal(mach, self.mach)
-        )
 
     def contract(self, table, ia):
         """(N, 4, n_values, 3): value, d/dRe, d/dM on each query's alpha window ``ia``."""
@@ -148,8 +141,13 @@ class _FixedConditions:
         return self.contracted
 
 
-#: Fixed-condition caches kept per TablePolar (the most recently used ones).
-_CONDITION_CACHE_SIZE = 16
+#: Fixed-condition caches kept per TablePolar (the most recently used ones). One pass over the
+#: full LPC model queries each of the two rotor/wing polars at about 40 sets of (Re, M) (one per
+#: rotor and VLM component and condition); with 16 the pass evicted every set before its reuse
+#: (the linearization after a run, a Newton iteration's next residual) and recontracted it.
+#: 128 keeps about three passes: benchmark run_model 0.25-0.31 -> 0.17-0.19 s, totals
+#: 0.80-0.94 -> 0.69-0.76 s (benchmark_lpc.py, two runs each), 10 MB.
+_CONDITION_CACHE_SIZE = 128
 
 
 # ------------------------------------------------------------------------------------------------
@@ -412,14 +410,15 @@ class TablePolar(Polar):
 
     def _fixed_conditions(self, reynolds, mach):
         """Return the cached :class:`_FixedConditions` of these query conditions (made if new)."""
-        caches = self.__dict__.setdefault("_condition_caches", [])
-        for k, cache in enumerate(caches):
-            if cache.matches(reynolds, mach):
-                caches.append(caches.pop(k))  # most recently used last
-                return cache
-        cache = _FixedConditions(self, reynolds, mach)
-        caches.append(cache)
-        del caches[:-_CONDITION_CACHE_SIZE]
+        caches = self.__dict__.setdefault("_condition_caches", collections.OrderedDict())
+        key = (reynolds.shape, reynolds.tobytes(), mach.tobytes())
+        cache = caches.get(key)
+        if cache is not None:
+            caches.move_to_end(key)  # most recently used last
+            return cache
+        cache = caches[key] = _FixedConditions(self, reynolds, mach)
+        while len(caches) > _CONDITION_CACHE_SIZE:
+            caches.popitem(last=False)
         return cache
 
     def __getstate__(self):
