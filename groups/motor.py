@@ -165,8 +165,8 @@ class MotorDesignGroup(om.Group):
     ``inductance`` of :class:`MotorGroup` (same components, names and promotion), evaluated
     once per motor design. The vehicle group runs one over the vehicle's motor designs (one
     per lift-rotor pair and the pusher) and the conditions' :class:`MotorOperationGroup`
-    read its outputs :data:`DESIGN_OUTPUTS`, instead of every condition re-sizing its motors
-    (18 motor groups of 2 designs: 108 design components before, 6 now).
+    read its outputs :data:`DESIGN_OUTPUTS`, instead of every condition sizing its own motors
+    again (the reference vehicle's 18 condition motor groups had 108 design components; now 6).
 
     Inputs: ``length``, ``diameter`` (with ``length_to_diameter`` None), ``electric_loading``,
     ``magnetic_loading`` (num_motors,). Outputs: the design outputs of :class:`MotorGroup`.
