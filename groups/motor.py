@@ -147,10 +147,8 @@ class MotorGroup(om.Group):
     def setup(self):
         add_design_components(self)
         add_operation_components(self)
-        nm, nn = self.options["num_motors"], self.options["num_nodes"]
-        _design_input_defaults(self, nm)
-        self.set_input_defaults("rotor_torque", 500.0 * np.ones((nm, nn)), units="N*m")
-        self.set_input_defaults("rotor_rpm", 1000.0 * np.ones((nm, nn)), units="rpm")
+        _design_input_defaults(self)
+        _operating_point_defaults(self)
 
         # Feed-forward, and each implicit component solves its own (diagonal) linear system:
         # one LinearRunOnce pass gives exact totals. No DirectSolver here, since OpenMDAO treats
@@ -180,7 +178,7 @@ class MotorDesignGroup(om.Group):
 
     def setup(self):
         add_design_components(self)
-        _design_input_defaults(self, self.options["num_motors"])
+        _design_input_defaults(self)
 
 
 class MotorOperationGroup(om.Group):
@@ -202,11 +200,9 @@ class MotorOperationGroup(om.Group):
         _declare_operation_options(self)
 
     def setup(self):
-        nm, nn = self.options["num_motors"], self.options["num_nodes"]
         add_operation_components(self)
-        self.set_input_defaults("length", 0.1 * np.ones(nm), units="m")
-        self.set_input_defaults("rotor_torque", 500.0 * np.ones((nm, nn)), units="N*m")
-        self.set_input_defaults("rotor_rpm", 1000.0 * np.ones((nm, nn)), units="rpm")
+        self.set_input_defaults("length", 0.1 * np.ones(self.options["num_motors"]), units="m")
+        _operating_point_defaults(self)
 
 
 def _declare_design_options(group):
@@ -276,7 +272,14 @@ def add_operation_components(group):
     )
 
 
-def _design_input_defaults(group, nm):
+def _operating_point_defaults(group):
+    shape = (group.options["num_motors"], group.options["num_nodes"])
+    group.set_input_defaults("rotor_torque", np.full(shape, 500.0), units="N*m")
+    group.set_input_defaults("rotor_rpm", np.full(shape, 1000.0), units="rpm")
+
+
+def _design_input_defaults(group):
+    nm = group.options["num_motors"]
     group.set_input_defaults("length", 0.1 * np.ones(nm), units="m")
     for name, units in (("electric_loading", "A/m"), ("magnetic_loading", "T")):
         group.set_input_defaults(name, np.full(nm, float(group.options[name])), units=units)
