@@ -19,6 +19,7 @@ from lpc_mdo.components.design_deviation import DesignDeviationComp
 from lpc_mdo.groups.condition_base import condition_layout
 from lpc_mdo.groups.condition_kinds import condition_class
 from lpc_mdo.groups.lpc import LPCGroup, included_conditions, openmdao_units
+from lpc_mdo.recorder import CaseRecorder
 from lpc_mdo.vehicle import load_vehicle, reference_vehicle
 
 #: Constraint kinds a problem may declare.
@@ -326,7 +327,7 @@ def attach_recorder(prob, path):
     The driver records every iteration and the problem ``'final'`` with every variable, so a
     single case file holds the run and what post-processing needs.
     """
-    recorder = om.SqliteRecorder(str(path))
+    recorder = CaseRecorder(path)
     prob.driver.add_recorder(recorder)
     prob.add_recorder(recorder)
     prob.recording_options["includes"] = ["*"]
@@ -423,7 +424,7 @@ def build_analysis_problem(
         declare_problem(model, vehicle, **problem_options)
     prob = om.Problem(model=model, name=name, comm=comm, **kwargs)
     if recorder_path is not None:
-        prob.add_recorder(om.SqliteRecorder(str(recorder_path)))
+        prob.add_recorder(CaseRecorder(recorder_path))
         prob.recording_options["includes"] = ["*"]
         prob.recording_options["record_inputs"] = True
     prob.setup(mode="rev")
