@@ -129,6 +129,7 @@ class PointwiseImplicitComp(om.ImplicitComponent):
         self.add_output(name, val=default * np.ones(shape), units=units, desc=desc)
         self._state_name = name
         self._state_units = units or ""
+        self._guess = None  # the previous solution, set by solve_nonlinear
         self._all_deps = {name: tuple(self._deps) + (name,)}
         declare_pointwise_partials(self, self._all_deps, self._shapes)
 
@@ -147,9 +148,9 @@ class PointwiseImplicitComp(om.ImplicitComponent):
         values = self._values(inputs)
         self._check_values(values)
         real = {key: np.asarray(val).real for key, val in values.items()}
-        # Warm start: the previous solution (a driver's next point is close to the last one).
-        previous = np.real(outputs[name])
-        self._guess = previous.copy() if np.all(np.isfinite(previous)) else None
+        # Warm start: the previous solution (a driver's next point is close to the last one);
+        # safeguarded_newton starts non-finite entries from its default.
+        self._guess = np.real(outputs[name]).copy()
         state = self._solve(real)
         if self.under_complex_step:
             slope = state_derivative(lambda x: self._residual(real, x), state)
@@ -182,7 +183,7 @@ class PointwiseImplicitComp(om.ImplicitComponent):
             residual_and_slope,
             lower,
             upper,
-            x0=getattr(self, "_guess", None),
+            x0=self._guess,
             maxiter=200,
             variable=self._state_name,
             units=self._state_units,

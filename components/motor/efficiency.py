@@ -450,7 +450,7 @@ class EMTorqueComp(PointwiseImplicitComp):
         return self._operating_point(v, torque)["efficiency"] * torque - load
 
     def _solve(self, v):
-        guess = getattr(self, "_guess", None)
+        guess = self._guess
         if guess is not None:
             # Warm start from the previous solution: on the rising side of the concave h, so
             # Newton reaches the same (smaller) root from either side; if it fails, start cold.

@@ -650,8 +650,7 @@ class BEMInflowComp(om.ImplicitComponent):
         )
 
     def solve_nonlinear(self, inputs, outputs):
-        previous = np.real(outputs["inflow_angle"]).ravel()
-        guess = previous.copy() if np.all(np.isfinite(previous)) else None
+        guess = np.real(outputs["inflow_angle"]).ravel()  # non-finite entries start cold
         if self.under_complex_step:
             real = {name: inputs[name].real for name in SECTION_INPUTS}
             opts = self.options
