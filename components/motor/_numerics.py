@@ -7,7 +7,8 @@
   (num_motors,)) or the same motor and node (shape (num_motors, num_nodes)). Their Jacobians are
   therefore diagonal (or a per-motor column broadcast over the nodes), and one complex-step
   evaluation with *all* entries of one input perturbed at once yields every nonzero partial of
-  that input exactly (to round-off): imag(f(x + i h))/h, h = 1e-40.
+  that input exactly (to round-off): imag(f(x + i h))/h, h = 1e-40; the perturbations of all
+  inputs are stacked along the motor axis into a single evaluation.
 - :func:`polish_complex`: after a real bracketed solve under OpenMDAO's complex step, one Newton
   step in complex arithmetic restores the imaginary part of the state, which is the exact
   implicit-function derivative to first order in h.
@@ -70,12 +71,19 @@ def complex_step_partials(func, values, deps, shapes, partials):
     """
     Fill pointwise partials by a vectorized complex step of ``func``.
 
+    All inputs are perturbed in one evaluation: the arguments are stacked ``k`` times along the
+    motor axis (axis 0), block ``j`` with input ``j`` perturbed by i h. The model is pointwise
+    over the motors, so block ``j`` of each result is f(x + i h e_j), and its imaginary part
+    over h is every nonzero partial of input ``j`` (one evaluation of k times the points
+    instead of k evaluations: the models are small, so their cost is per call, not per point).
+
     Parameters
     ----------
     func : callable
-        func(values) -> dict name -> array; must be complex-step safe and pointwise.
+        func(values) -> dict name -> array; must be complex-step safe and pointwise over the
+        leading (motor) axis of every argument and result.
     values : dict
-        Name -> real array of every argument of func.
+        Name -> real array of every argument of func, leading axis the motors.
     deps : dict
         Output (or residual) name -> iterable of the argument names it depends on, as declared
         with :func:`declare_pointwise_partials`.
@@ -88,13 +96,23 @@ def complex_step_partials(func, values, deps, shapes, partials):
     for of, wrts in deps.items():
         for wrt in wrts:
             by_wrt.setdefault(wrt, []).append(of)
-    base = {name: np.asarray(val).real.astype(complex) for name, val in values.items()}
-    for wrt, ofs in by_wrt.items():
-        perturbed = dict(base)
-        perturbed[wrt] = base[wrt] + 1j * CS_STEP
-        result = func(perturbed)
-        for of in ofs:
-            deriv = np.imag(np.asarray(result[of], dtype=complex)) / CS_STEP
+    wrts = list(by_wrt)
+    k = len(wrts)
+    stacked = {}
+    for name, val in values.items():
+        val = np.asarray(val).real
+        block = np.tile(val.astype(complex), (k,) + (1,) * (val.ndim - 1))
+        if name in by_wrt:
+            n = val.shape[0]
+            j = wrts.index(name)
+            block[j * n : (j + 1) * n] += 1j * CS_STEP
+        stacked[name] = block
+    result = func(stacked)
+    for j, wrt in enumerate(wrts):
+        for of in by_wrt[wrt]:
+            res = np.asarray(result[of])
+            n = res.shape[0] // k
+            deriv = res[j * n : (j + 1) * n].imag / CS_STEP
             partials[of, wrt] = np.broadcast_to(deriv, shapes[of]).ravel()
 
 
