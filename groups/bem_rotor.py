@@ -4,7 +4,11 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.aero.polar import LinearQuadraticPolar, Polar
-from lpc_mdo.components.geometry.blade import QUADRATURES, SPLINE_STATIONS, BladeGeometryGroup
+from lpc_mdo.components.geometry.blade import (
+    QUADRATURES,
+    SPLINE_STATIONS,
+    BladeGeometryGroup,
+)
 from lpc_mdo.components.rotor.bem_inflow import TIP_LOSS_FORMS, BEMInflowComp
 from lpc_mdo.components.rotor.bem_loads import BEMLoadsComp, RotorPerformanceComp
 from lpc_mdo.components.rotor.hub_loads import HubLoadsComp, RotorVelocityComp
@@ -132,6 +136,14 @@ class RotorGroupBase(om.Group):
         self.options.declare(
             "body_frame", default=True, types=bool, desc="Include body-frame velocity and hub loads"
         )
+        self.options.declare(
+            "blade_geometry",
+            default="internal",
+            values=("internal", "inputs"),
+            desc="'internal': the group computes its blade geometry from radius, chord_cp and "
+            "twist_cp; 'inputs': the BLADE_OUTPUTS are inputs (computed once elsewhere, e.g. "
+            "by the vehicle group's lift_blades and pusher_blades)",
+        )
         self.declare_model_options()
 
     def declare_model_options(self):
@@ -165,19 +177,22 @@ class RotorGroupBase(om.Group):
         nr, nn = geo["num_rotors"], opts["num_nodes"]
         frame = {"num_rotors": nr, "num_nodes": nn, "thrust_axis": geo["thrust_axis"]}
 
-        self.add_subsystem(
-            "blade",
-            BladeGeometryGroup(
-                num_rotors=nr,
-                num_radial=opts["num_radial"],
-                num_azimuth=opts["num_azimuth"] if self.num_azimuth_option else 1,
-                num_cp=opts["num_cp"],
-                hub_radius_ratio=geo["hub_radius_ratio"],
-                quadrature=opts["quadrature"],
-                spline_stations=opts["spline_stations"],
-            ),
-            promotes=["*"],
-        )
+        naz = opts["num_azimuth"] if self.num_azimuth_option else 1
+        internal = opts["blade_geometry"] == "internal"
+        if internal:
+            self.add_subsystem(
+                "blade",
+                BladeGeometryGroup(
+                    num_rotors=nr,
+                    num_radial=opts["num_radial"],
+                    num_azimuth=naz,
+                    num_cp=opts["num_cp"],
+                    hub_radius_ratio=geo["hub_radius_ratio"],
+                    quadrature=opts["quadrature"],
+                    spline_stations=opts["spline_stations"],
+                ),
+                promotes=["*"],
+            )
         if opts["body_frame"]:
             self.add_subsystem("velocity", RotorVelocityComp(**frame), promotes=["*"])
         inplane = self.add_rotor_model(geo)
@@ -193,15 +208,18 @@ class RotorGroupBase(om.Group):
 
         rotors = opts["rotors"]
         if rotors is not None:
-            if opts["num_cp"] != 4:
-                raise ValueError(
-                    f"{self.msginfo}: option 'num_cp' = {opts['num_cp']}; the "
-                    "vehicle rotors have 4 chord and twist control points, so it "
-                    "must be 4 when option 'rotors' is given."
-                )
+            if internal:
+                if opts["num_cp"] != 4:
+                    raise ValueError(
+                        f"{self.msginfo}: option 'num_cp' = {opts['num_cp']}; the "
+                        "vehicle rotors have 4 chord and twist control points, so it "
+                        "must be 4 when option 'rotors' is given."
+                    )
+                chord_cp = np.array([r.chord_cp for r in rotors])
+                twist_cp = np.array([r.twist_cp for r in rotors])
+                self.set_input_defaults("chord_cp", chord_cp, units="m")
+                self.set_input_defaults("twist_cp", twist_cp, units="rad")
             self.set_input_defaults("radius", np.array([r.radius for r in rotors]), units="m")
-            self.set_input_defaults("chord_cp", np.array([r.chord_cp for r in rotors]), units="m")
-            self.set_input_defaults("twist_cp", np.array([r.twist_cp for r in rotors]), units="rad")
             if opts["body_frame"]:
                 self.set_input_defaults(
                     "hub_position", np.array([r.hub_position for r in rotors]), units="m"

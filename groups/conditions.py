@@ -18,8 +18,10 @@ Kinds and their groups (the reference vehicle's conditions in parentheses):
 - ``structural``: :class:`StructuralCondition` (VLM at the load factor, wing-box beam, stress and
   buckling; plus_3g, minus_1g).
 
-Variable names inside a condition (promoted): ``lift_radius`` (num_lift,), ``lift_chord_cp``,
-``lift_twist_cp`` (num_lift, 4), ``lift_hub_position`` (num_lift, 3), ``lift_motor_length``
+Variable names inside a condition (promoted): ``lift_radius`` (num_lift,), the blade geometry
+``lift_chord``, ``lift_twist``, ``lift_station_radius``, ``lift_station_width`` (num_lift,
+num_radial) and ``lift_hub_radius`` (num_lift,) (rows of the vehicle group's ``blade_*``,
+computed once per rotor group), ``lift_hub_position`` (num_lift, 3), ``lift_motor_length``
 (num_lift,) and the ``pusher_`` equivalents. Each design variable a condition owns reaches it
 as an input of its suffix's name, one name per quantity (``transition_lift_rpm`` row k ->
 ``transition_k.lift_rpm``): ``lift_rpm`` (1, num_speed_groups: per pair, or per working rotor
@@ -54,6 +56,7 @@ from lpc_mdo.components.dynamics.stability_derivatives import (
 )
 from lpc_mdo.components.dynamics.static_margin import NeutralPointComp, StaticMarginComp
 from lpc_mdo.components.energy.power import TotalPowerComp
+from lpc_mdo.components.geometry.blade import BLADE_OUTPUTS
 from lpc_mdo.components.kinematics import KinematicsComp
 from lpc_mdo.components.ks import KSComp
 from lpc_mdo.components.motor.shaft_torque import ShaftTorqueComp
@@ -114,8 +117,7 @@ def _lift_inputs(vehicle, active):
     rows = _rotor_group_rows(vehicle, active)
     return (
         ("lift_rotor_radius", "lift_radius", active),
-        ("blade_chord_cp", "lift_chord_cp", om.slicer[rows, :]),
-        ("blade_twist_cp", "lift_twist_cp", om.slicer[rows, :]),
+        *((f"blade_{name}", f"lift_{name}", _rows(name, rows)) for name in BLADE_OUTPUTS),
         ("lift_hub_position", "lift_hub_position", om.slicer[active, :]),
         ("motor_length", "lift_motor_length", rows),
         *_motor_design_inputs("lift", rows),
@@ -127,12 +129,16 @@ def _pusher_inputs(vehicle):
     row = num_lift_pairs(vehicle.lift_rotors)
     return (
         ("rotor_radius", "pusher_radius", [row]),
-        ("blade_chord_cp", "pusher_chord_cp", om.slicer[[row], :]),
-        ("blade_twist_cp", "pusher_twist_cp", om.slicer[[row], :]),
+        *((f"blade_{name}", f"pusher_{name}", _rows(name, [row])) for name in BLADE_OUTPUTS),
         ("pusher_hub_position", "pusher_hub_position", om.slicer[np.arange(3)[None, :],]),
         ("motor_length", "pusher_motor_length", [row]),
         *_motor_design_inputs("pusher", [row]),
     )
+
+
+def _rows(name, rows):
+    """Source indices of the ``rows`` (rotor groups) of a vehicle ``blade_*`` output."""
+    return rows if name == "hub_radius" else om.slicer[rows, :]
 
 
 def _motor_design_inputs(prefix, rows):
@@ -268,12 +274,12 @@ def _add_lift_rotors(group, vehicle, rotors, speed_groups, num_groups, edgewise,
             num_nodes=1,
             num_radial=opts["num_radial"],
             polar=opts["rotor_polar"],
+            blade_geometry="inputs",
             **kwargs,
         ),
         promotes_inputs=[
             ("radius", "lift_radius"),
-            ("chord_cp", "lift_chord_cp"),
-            ("twist_cp", "lift_twist_cp"),
+            *((name, f"lift_{name}") for name in BLADE_OUTPUTS),
             ("rpm", "lift_rotor_rpm"),
             ("hub_position", "lift_hub_position"),
             "velocity",
@@ -305,11 +311,16 @@ def _add_pusher(group, vehicle):
     polar = opts["rotor_polar"] if opts["pusher_polar"] is None else opts["pusher_polar"]
     group.add_subsystem(
         "pusher",
-        BEMRotorGroup(rotors=[pusher], num_nodes=1, num_radial=opts["num_radial"], polar=polar),
+        BEMRotorGroup(
+            rotors=[pusher],
+            num_nodes=1,
+            num_radial=opts["num_radial"],
+            polar=polar,
+            blade_geometry="inputs",
+        ),
         promotes_inputs=[
             ("radius", "pusher_radius"),
-            ("chord_cp", "pusher_chord_cp"),
-            ("twist_cp", "pusher_twist_cp"),
+            *((name, f"pusher_{name}") for name in BLADE_OUTPUTS),
             ("rpm", "pusher_rpm"),
             ("hub_position", "pusher_hub_position"),
             "velocity",
@@ -757,6 +768,7 @@ class HoverCondition(ConditionGroup):
                     "observer_distance",
                     "observer_elevation",
                     ("thickness_to_chord", "lift_thickness_to_chord"),
+                    ("chord", "lift_chord"),
                 ],
                 promotes_outputs=["total_spl_a", "total_spl", "rotor_spl_a"],
             )
@@ -776,7 +788,6 @@ class HoverCondition(ConditionGroup):
             reshape = om.slicer[rotor[..., None], 0 * rotor[..., None], station[..., None]]
             for name in ("thrust_per_span", "drag_per_span", "inflow_angle"):
                 self.connect(f"lift_rotors.{name}", f"noise.{name}", src_indices=reshape)
-            self.connect("lift_rotors.chord", "noise.chord")
             self.connect(
                 "lift_thrust", "noise.thrust", src_indices=np.arange(na), flat_src_indices=True
             )

@@ -11,6 +11,7 @@ from lpc_mdo.components.dynamics.body_pitching_moment import (
     BodyMomentSlopeComp,
     body_moment_slope_options,
 )
+from lpc_mdo.components.geometry.blade import BLADE_OUTPUTS, BladeGeometryGroup
 from lpc_mdo.components.geometry.cranked_planform import CrankedPlanformComp, SectionLayout
 from lpc_mdo.components.geometry.planform import PlanformMeshComp
 from lpc_mdo.components.geometry.rotor_layout import RotorLayoutComp
@@ -100,6 +101,9 @@ class VehicleGroup(om.Group):
     - ``wing_mesh``, ``htail_mesh`` (PlanformMeshComp): VLM meshes ``wing_mesh`` and
       ``horizontal_tail_mesh`` (cosine span-wise spacing, one chord-wise panel);
     - ``rotor_layout`` (RotorLayoutComp): hub positions, radii, radius intersection;
+    - ``blades`` (BladeGeometryGroup, one row per rotor group): blade stations, chord and twist
+      (``blade_chord``, ``blade_twist``, ``blade_station_radius``, ...) that every condition's
+      rotor models read;
     - ``wing_box`` (WingBoxGeometryComp), ``box_section`` (BoxSectionComp), ``box_mass``
       (BeamMassComp), ``wing_mirror`` (WingMirrorComp): the beam of one half wing (the
       vehicle's taper, sweep, dihedral, incidence and root leading edge), its mass and the whole
@@ -157,6 +161,41 @@ class VehicleGroup(om.Group):
             default=8,
             types=int,
             desc="span-wise VLM panels of the horizontal tail (even; code 8)",
+        )
+        self.options.declare(
+            "num_radial",
+            default=25,
+            types=int,
+            lower=2,
+            desc="radial stations of the blade geometry (the conditions' num_radial)",
+        )
+
+    def _add_blades(self, vehicle):
+        """
+        Blade stations, chord and twist of each rotor group: ``blade_*`` (:data:`BLADE_OUTPUTS`).
+
+        One row per row of the per-group design variables (``rotor_radius``, ``blade_chord_cp``,
+        ``blade_twist_cp``: the lift pairs, then the pusher). They depend on the design alone,
+        so they are computed once here and every condition's rotor models read the rows of their
+        rotors (the rotor groups' ``blade_geometry="inputs"``), with the rotor groups' default
+        quadrature and spline stations (docs theory/rotors 'Blade parameterization').
+        """
+        rotors = {r.pair: r for r in (*vehicle.lift_rotors, vehicle.pusher)}
+        hub_ratio = [rotors[row].hub_radius_ratio for row in range(len(rotors))]
+        self.add_subsystem(
+            "blades",
+            BladeGeometryGroup(
+                num_rotors=len(rotors),
+                num_radial=self.options["num_radial"],
+                num_azimuth=1,
+                hub_radius_ratio=hub_ratio,
+            ),
+            promotes_inputs=[
+                ("radius", "rotor_radius"),
+                ("chord_cp", "blade_chord_cp"),
+                ("twist_cp", "blade_twist_cp"),
+            ],
+            promotes_outputs=[(name, f"blade_{name}") for name in BLADE_OUTPUTS],
         )
 
     def _add_section_wing(self, vehicle):
@@ -270,6 +309,7 @@ class VehicleGroup(om.Group):
             "wing_root_leading_edge", np.array(wing.root_leading_edge), units="m"
         )
         self.add_subsystem("rotor_layout", RotorLayoutComp(vehicle=vehicle), promotes=["*"])
+        self._add_blades(vehicle)
         # Multhopp sums of the fuselage and booms for the aerodynamic conditions' body moment
         # (docs theory/dynamics 'Fuselage, booms, camber and tail efficiency').
         self.add_subsystem(

@@ -224,3 +224,58 @@ def test_vehicle_group_solves_its_adjoint_by_one_lu_and_openmdao_says_nothing_ab
     assert _atomic_notices(with_user_group=False) == []
     notices = _atomic_notices(with_user_group=True)
     assert len(notices) == 1 and notices[0].endswith("\nuser\nvehicle\n"), notices
+
+
+def test_blade_geometry_is_computed_once_and_every_condition_reads_its_rows():
+    """
+    Blade geometry: one group per vehicle, each condition reads the rows of its rotors.
+
+    One BladeGeometryGroup (a row per rotor group); the conditions' rotor models read the rows
+    of their rotors and give what a rotor group with its own blade geometry gives from the same
+    design variables.
+    """
+    from lpc_mdo.components.geometry.blade import BLADE_OUTPUTS, BladeGeometryGroup
+    from lpc_mdo.groups.bem_rotor import BEMRotorGroup
+    from lpc_mdo.groups.lpc import LPCGroup
+
+    prob = om.Problem(LPCGroup(conditions=["hover", "oei_2", "cruise"]), reports=False)
+    prob.setup()
+    chord_cp = prob.get_val("blade_chord_cp") * np.linspace(0.9, 1.1, 5)[:, None]  # rows differ
+    prob.set_val("blade_chord_cp", chord_cp)
+    prob.run_model()
+    blades = list(prob.model.system_iter(recurse=True, typ=BladeGeometryGroup))
+    assert [b.pathname for b in blades] == ["vehicle.blades"]
+    pairs = np.array([r.pair for r in VEHICLE.lift_rotors])
+    active = prob.model.oei_2.active_rotors
+    for condition, prefix, rows in (
+        ("hover", "lift", pairs),
+        ("oei_2", "lift", pairs[active]),
+        ("cruise", "pusher", [VEHICLE.pusher.pair]),
+    ):
+        for name in BLADE_OUTPUTS:
+            got = prob.get_val(f"{condition}.{prefix}_{name}")
+            np.testing.assert_array_equal(got, prob.get_val(f"blade_{name}")[rows], err_msg=name)
+    # Hover's lift rotors against a BEM rotor group that computes its own blade geometry.
+    hover = prob.model.hover.lift_rotors
+    alone = om.Problem(reports=False)
+    alone.model.add_subsystem(
+        "rotors",
+        BEMRotorGroup(rotors=list(VEHICLE.lift_rotors), polar=hover.options["polar"]),
+        promotes=["*"],
+    )
+    alone.setup()
+    alone.set_val("chord_cp", chord_cp[pairs])
+    alone.set_val("twist_cp", prob.get_val("blade_twist_cp")[pairs])
+    for name in (
+        "radius",
+        "rpm",
+        "hub_position",
+        "velocity",
+        "density",
+        "speed_of_sound",
+        "dynamic_viscosity",
+    ):
+        alone.set_val(name, prob.get_val(f"hover.lift_rotors.{name}"))
+    alone.run_model()
+    for name in ("thrust", "torque"):
+        assert_near_equal(alone.get_val(name), prob.get_val(f"hover.lift_{name}"), 1e-12)

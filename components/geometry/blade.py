@@ -18,6 +18,8 @@ from lpc_mdo.components.bspline import BsplineComp
 QUADRATURES = ("midpoint", "bladead")
 #: Where the B-spline values are placed (docs theory/rotors 'Blade parameterization').
 SPLINE_STATIONS = ("as_coded", "element_centres")
+#: Outputs of :class:`BladeGeometryGroup` that the rotor models read (all but the azimuth).
+BLADE_OUTPUTS = ("hub_radius", "station_radius", "station_width", "chord", "twist")
 
 
 def per_rotor(
