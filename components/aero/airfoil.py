@@ -112,32 +112,41 @@ class _FixedConditions:
     """
 
     def __init__(self, polar, reynolds, mach):
-        (self.ir, self.wr, self.dwr), (self.im, self.wm, self.dwm) = polar._conditions(
-            reynolds, mach
-        )
-        self.window = np.full(reynolds.size, -1)
-        self.contracted = np.zeros((reynolds.size, 4, polar._composite_table.shape[-1], 3))
+        (self.ir, wr, dwr), (self.im, wm, dwm) = polar._conditions(reynolds, mach)
+        n, nb, nc = reynolds.size, wr.shape[1], wm.shape[1]
+        # The three (Re, M) weightings of each query, (n, 1, b c, 3): value, d/dRe, d/dM.
+        self.weights = np.stack(
+            [
+                wr[:, :, None] * wm[:, None, :],
+                dwr[:, :, None] * wm[:, None, :],
+                wr[:, :, None] * dwm[:, None, :],
+            ],
+            axis=-1,
+        ).reshape(n, 1, nb * nc, 3)
+        self.window = np.full(n, -1)
+        self.contracted = np.zeros((n, 4, polar._composite_table.shape[-1], 3))
 
     def contract(self, table, ia):
         """(N, 4, n_values, 3): value, d/dRe, d/dM on each query's alpha window ``ia``."""
         stale = np.flatnonzero(ia[:, 0] != self.window)
         if stale.size:
-            ir, im = self.ir[stale], self.im[stale]
-            g = table[ia[stale][:, :, None, None], ir[:, None, :, None], im[:, None, None, :]]
-            wr, dwr, wm, dwm = self.wr[stale], self.dwr[stale], self.wm[stale], self.dwm[stale]
+            # Basic slicing when every query is stale (a new set of conditions): no copies.
+            rows = slice(None) if stale.size == self.window.size else stale
+            n_re, n_mach, nv = table.shape[1:]
+            ir, im = self.ir[rows], self.im[rows]
+            # The (alpha, Re, M) window of each query by its flat index into the table's rows
+            # of n_values: one np.take, several times faster than fancy indexing on 3 axes.
+            flat = ((ia[rows] * n_re)[:, :, None, None] + ir[:, None, :, None]) * n_mach + im[
+                :, None, None, :
+            ]
+            g = np.take(table.reshape(-1, nv), flat, axis=0)
+            n, _, nb, nc, _ = g.shape
             # The three (Re, M) weightings as one batched product: (n, 4, values, b c) @
             # (n, 1, b c, 3) -> (n, 4, values, 3).
-            n, _, nb, nc, nv = g.shape
-            weights = np.stack(
-                [
-                    wr[:, :, None] * wm[:, None, :],
-                    dwr[:, :, None] * wm[:, None, :],
-                    wr[:, :, None] * dwm[:, None, :],
-                ],
-                axis=-1,
-            ).reshape(n, 1, nb * nc, 3)
-            self.contracted[stale] = g.reshape(n, 4, nb * nc, nv).transpose(0, 1, 3, 2) @ weights
-            self.window[stale] = ia[stale, 0]
+            self.contracted[rows] = (
+                g.reshape(n, 4, nb * nc, nv).transpose(0, 1, 3, 2) @ self.weights[rows]
+            )
+            self.window[rows] = ia[rows, 0]
         return self.contracted
 
 
