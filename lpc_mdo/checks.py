@@ -172,21 +172,24 @@ def check_range(
         names the first offending entry, its index, its value and the allowed range.
     """
     arr = _as_real_array(name, value, error, where)
-    finite = np.isfinite(arr)
-    bad = ~finite
-    bounds = [None if b is None else np.real(np.broadcast_to(b, arr.shape)) for b in (lower, upper)]
-    with np.errstate(invalid="ignore"):
-        if lower is not None:
-            bad |= (arr <= bounds[0]) if lower_open else (arr < bounds[0])
-        if upper is not None:
-            bad |= (arr >= bounds[1]) if upper_open else (arr > bounds[1])
-    if np.any(bad):
+    # The check runs in every component evaluation, so the passing case is kept to a few
+    # vectorized comparisons (a comparison with NaN is False without a warning).
+    bad = ~np.isfinite(arr)
+    if lower is not None:
+        bad |= (arr <= np.real(lower)) if lower_open else (arr < np.real(lower))
+    if upper is not None:
+        bad |= (arr >= np.real(upper)) if upper_open else (arr > np.real(upper))
+    if bad.any():
         index = _first_bad(bad)
         entry = _plain(arr[index])
         label = _entry_name(name, index)
-        if not finite[index]:
+        if not np.isfinite(arr[index]):
             need = "a finite number"
         else:
+            bounds = [
+                None if b is None else np.real(np.broadcast_to(b, arr.shape))
+                for b in (lower, upper)
+            ]
             low, high = (None if b is None else _plain(b[index]) for b in bounds)
             text = allowed or range_text(low, high, lower_open=lower_open, upper_open=upper_open)
             need = f"{text}{units_suffix(units)}"
