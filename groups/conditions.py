@@ -48,7 +48,7 @@ from lpc_mdo.components.aero.wing_zero_lift_moment import (
 from lpc_mdo.components.atmosphere import AtmosphereComp
 from lpc_mdo.components.dynamics.body_pitching_moment import BodyPitchingMomentComp
 from lpc_mdo.components.dynamics.eom import EquationsOfMotionComp
-from lpc_mdo.components.dynamics.force_sum import ForceSumComp
+from lpc_mdo.components.dynamics.force_sum import ForceSumComp, VectorSumComp
 from lpc_mdo.components.dynamics.path_acceleration import PathAccelerationComp
 from lpc_mdo.components.dynamics.stability_derivatives import (
     AnglePerturbationComp,
@@ -534,14 +534,7 @@ def _add_body_moment(group, body_options, tail_options, alpha, vlm, prefix):
             names.append("wing_camber_moment")
         group.add_subsystem(
             f"{prefix}aero_{name}_sum",
-            om.AddSubtractComp(
-                output_name=f"{prefix}aero_{name}",
-                input_names=names,
-                vec_size=1,
-                length=3,
-                units=units,
-                desc=f"aerodynamic {name} of the lattice with the stability corrections",
-            ),
+            VectorSumComp(output_name=f"{prefix}aero_{name}", input_names=names, units=units),
             promotes=["*"],
         )
 

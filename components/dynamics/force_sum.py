@@ -79,3 +79,55 @@ class ForceSumComp(om.ExplicitComponent):
             outputs["force"] += inputs[f"{name}_force"]
             if name not in self.options["forces_only"]:
                 outputs["moment"] += inputs[f"{name}_moment"]
+
+
+class VectorSumComp(om.ExplicitComponent):
+    """
+    Sum of several 3-vectors of the same units: ``output_name`` = sum of ``input_names``.
+
+    The aerodynamic force and moment of a condition (lattice loads plus the stability
+    corrections). OpenMDAO's AddSubtractComp computes the same, but declares its partials as
+    scipy sparse identity matrices, whose products cost about four times those of the diagonal
+    (rows, cols) partials declared here; the sum lies on every trim row's adjoint path.
+
+    Inputs
+    ------
+    {input_names[k]} : (num_nodes, 3), ``units``
+
+    Outputs
+    -------
+    {output_name} : (num_nodes, 3), ``units``
+
+    Options
+    -------
+    output_name : str
+    input_names : list of str
+    units : str or None
+    num_nodes : int
+    """
+
+    def initialize(self):
+        self.options.declare("output_name", types=str, desc="name of the sum")
+        self.options.declare("input_names", types=(list, tuple), desc="names of the terms")
+        self.options.declare("units", default=None, types=str, allow_none=True, desc="units")
+        self.options.declare("num_nodes", default=1, types=int, lower=1, desc="vectors per term")
+
+    def setup(self):
+        opts = self.options
+        shape = (opts["num_nodes"], 3)
+        names = list(opts["input_names"])
+        if not names or len(set(names)) != len(names) or opts["output_name"] in names:
+            raise ValueError(
+                f"{self.msginfo}: input_names = {names}; give distinct names, none equal to "
+                f"output_name = {opts['output_name']!r}."
+            )
+        self.add_output(opts["output_name"], np.zeros(shape), units=opts["units"], desc="sum")
+        ar = np.arange(3 * opts["num_nodes"])
+        for name in names:
+            self.add_input(name, np.zeros(shape), units=opts["units"], desc="term of the sum")
+            self.declare_partials(opts["output_name"], name, rows=ar, cols=ar, val=1.0)
+
+    def compute(self, inputs, outputs):
+        outputs[self.options["output_name"]] = sum(
+            inputs[name] for name in self.options["input_names"]
+        )
