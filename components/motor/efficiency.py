@@ -9,6 +9,7 @@ from lpc_mdo.components.motor._numerics import (
     CS_STEP,
     check_saliency,
     declare_pointwise_partials,
+    pointwise_values,
 )
 from lpc_mdo.components.motor._pointwise import PointwiseImplicitComp, _declare_common_options
 from lpc_mdo.components.motor.mtpa import mtpa_base, mtpa_current_pu
@@ -335,7 +336,7 @@ class MotorLossComp(om.ExplicitComponent):
         _, grads = loss_model(self._values(inputs), self.options["parameters"], with_partials=True)
         for of, wrts in self._deps.items():
             for wrt in wrts:
-                partials[of, wrt] = np.broadcast_to(grads[of][wrt], self._shapes[of]).ravel()
+                partials[of, wrt] = pointwise_values(grads[of][wrt], self._shapes[of])
 
 
 class EMTorqueComp(PointwiseImplicitComp):
