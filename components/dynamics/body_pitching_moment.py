@@ -57,7 +57,21 @@ def lifting_line_upwash_gradient(x, y, span, wing_area, lift_slope, x_bound, num
     lift_slope : float, 1/rad, the wing's C_La referred to the wing area
     x_bound : float, m
     """
-    x = np.asarray(x)
+    # Gamma_k/V = (2 S C_L/(pi b)) gk, so w/V per radian of alpha:
+    prefactor = lift_slope * 2.0 * wing_area / (np.pi * span)
+    return prefactor * elliptic_wake_kernel(np.asarray(x) - x_bound, y, span, num_vortices)
+
+
+def elliptic_wake_kernel(xi, y, span, num_vortices=400):
+    """
+    Geometric part of :func:`lifting_line_upwash_gradient`: sum_k g_k w_k at (xi, y).
+
+    w_k is the upwash of horseshoe k of unit strength (positive up), g_k its share of the
+    elliptic circulation, xi the distance ahead of the bound vortex; the upwash gradient is
+    C_La 2 S/(pi b) times this. Pointwise in the field points (complex-safe in ``xi`` and
+    ``span``), so one complex step of all ``xi`` gives every point's derivative.
+    """
+    xi = np.asarray(xi)
     y = np.asarray(y)
     b = span
     # Horseshoe edges at cosine-spaced stations; strength = jump of Gamma/V per unit C_L.
@@ -69,7 +83,7 @@ def lifting_line_upwash_gradient(x, y, span, wing_area, lift_slope, x_bound, num
     # Core radius of each leg: the local vortex spacing (fine near the tips, cosine spacing).
     spacing = np.gradient(edges)
     delta_a, delta_b = spacing[:-1], spacing[1:]
-    xi = (x - x_bound)[..., None]  # distance ahead of the bound vortex
+    xi = xi[..., None]  # distance ahead of the bound vortex
     ya = edges[:-1] - y[..., None]  # lateral offsets of the legs (left, right)
     yb = edges[1:] - y[..., None]
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -83,8 +97,7 @@ def lifting_line_upwash_gradient(x, y, span, wing_area, lift_slope, x_bound, num
         left = (1.0 - xi / ra) * ya / (ya**2 + delta_a**2)
         right = -(1.0 - xi / rb) * yb / (yb**2 + delta_b**2)
     w_per_gamma = (bound + left + right) / (4.0 * np.pi)
-    # Gamma_k/V = (2 S C_L/(pi b)) gk, so w/V per radian of alpha:
-    return lift_slope * 2.0 * wing_area / (np.pi * b) * np.sum(gk * w_per_gamma, axis=-1)
+    return np.sum(gk * w_per_gamma, axis=-1)
 
 
 def multhopp_flow_gradient(x_stations, y, span, wing_area, lift_slope, x_leading_edge, root_chord):
@@ -224,9 +237,9 @@ class BodyMomentSlopeComp(om.ExplicitComponent):
       ``wing_span``, ``wing_root_chord``; lift slope of :func:`wing_lift_slope` at the current
       aspect ratio b^2/S and the file's sweep), zero under the wing.
 
-    Partials by complex step inside :meth:`compute_partials` (each input one complex
-    evaluation; exact to round-off), since the lifting-line sums make analytic work out of
-    proportion.
+    Partials: the chain rule through the lifting line's geometric kernel
+    (:func:`elliptic_wake_kernel`), whose derivatives with respect to the points' distance from
+    the bound vortex and the span come from two vectorized complex steps (exact to round-off).
 
     Inputs
     ------
@@ -297,14 +310,63 @@ class BodyMomentSlopeComp(om.ExplicitComponent):
         outputs["body_moment_zero_lift"] = zero_lift
 
     def compute_partials(self, inputs, partials):
-        x = np.array([inputs[n][0] for n in self._INPUTS], dtype=complex)
+        # The sums are k sum_i s_i g_i with g_i = 1 + P(S, b) W(xi_i, y_i, b) (fuselage: zero
+        # under the root chord; booms: times the flow mask), P = C_La(b^2/S) 2 S/(pi b) and W
+        # the lifting line's geometric kernel at the distance xi_i = x_i - (x_le - c/4) ahead of
+        # the bound vortex, x_i = -L f_i on the fuselage. W is pointwise in the points, so two
+        # complex evaluations of W (all xi at once, then b) give every derivative; the scalar
+        # factors P and k_f(L) by their own complex steps (exact to round-off).
+        o = self.options
+        length, area, span, root_chord = (inputs[n][0] for n in self._INPUTS)
         h = 1e-30
-        for j, name in enumerate(self._INPUTS):
-            xj = x.copy()
-            xj[j] += 1j * h
-            slope, zero_lift = self._sums(*xj)
-            partials["body_moment_slope", name] = np.imag(slope) / h
-            partials["body_moment_zero_lift", name] = np.imag(zero_lift) / h
+        n = o["num_strips"]
+        le, width = o["wing_root_leading_edge_x"], o["fuselage_max_width"]
+        xc, _, strip = fuselage_strips(length, width, n)
+        fraction = (np.arange(n) + 0.5) / n
+        x_bound = le - 0.25 * root_chord
+        xi = np.concatenate([xc, o["boom_x"]]) - x_bound
+        y = np.concatenate([np.zeros(n), o["boom_y"]])
+        w_xi = elliptic_wake_kernel(xi + 1j * h, y, span)
+        w = w_xi.real
+        dw_dxi = w_xi.imag / h
+        dw_db = elliptic_wake_kernel(xi, y, span + 1j * h).imag / h
+
+        def prefactor(s, b):
+            return wing_lift_slope(b**2 / s, o["wing_sweep"]) * 2.0 * s / (np.pi * b)
+
+        p = prefactor(area, span)
+        dp_ds = prefactor(area + 1j * h, span).imag / h
+        dp_db = prefactor(area, span + 1j * h).imag / h
+
+        def munk(length):
+            return 0.5 * np.pi * munk_apparent_mass_factor(length / width)
+
+        k_f, dk_dl = munk(length), munk(length + 1j * h).imag / h
+        # Flow gradients and their derivatives (rows: fuselage strips, then boom strips).
+        keep = np.concatenate(
+            [~((xc <= le) & (xc >= le - root_chord)), o["boom_flow_mask"].astype(bool)]
+        )
+        g = np.where(keep, 1.0 + p * w, 0.0)
+        dg = {
+            "wing_area": dp_ds * w,
+            "wing_span": dp_db * w + p * dw_db,
+            "wing_root_chord": 0.25 * p * dw_dxi,
+            "fuselage_length": np.concatenate([-fraction, np.zeros(xi.size - n)]) * p * dw_dxi,
+        }
+        k_b = 0.5 * np.pi * o["boom_apparent_mass_factor"]
+        weight = np.concatenate([k_f * strip, k_b * o["boom_strip_factor"]])
+        body = [slice(0, n), slice(n, None)]
+        # The fuselage's strip lengths (s_i = w_i^2 L/n) and k_f also grow with L.
+        extra = dk_dl * strip + k_f * strip / length
+        own = {
+            "body_moment_slope": np.array([np.sum(extra * g[:n]), 0.0]),
+            "body_moment_zero_lift": np.array([np.sum(extra * (g[:n] - 1.0)), 0.0]),
+        }
+        for name, d in dg.items():
+            d = np.where(keep, d, 0.0) * weight
+            total = np.array([np.sum(d[part]) for part in body])
+            for out in own:
+                partials[out, name] = total + own[out] if name == "fuselage_length" else total
 
 
 def fuselage_strips(length, max_width, num_strips=40):
