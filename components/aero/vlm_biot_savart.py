@@ -25,33 +25,36 @@ CORE = 1.0e-6
 
 
 def dot(a, b):
-    """Row-wise dot product over the last axis (complex-safe, no conjugation)."""
-    return np.einsum("...i,...i->...", a, b)
+    """Row-wise dot product over the last axis of length 3 (complex-safe, no conjugation)."""
+    return a[..., 0] * b[..., 0] + a[..., 1] * b[..., 1] + a[..., 2] * b[..., 2]
 
 
 def cross(a, b):
     """Cross product over the last axis (complex-safe)."""
-    return np.stack(
-        [
-            a[..., 1] * b[..., 2] - a[..., 2] * b[..., 1],
-            a[..., 2] * b[..., 0] - a[..., 0] * b[..., 2],
-            a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0],
-        ],
-        axis=-1,
-    )
+    a, b = np.broadcast_arrays(a, b)
+    out = np.empty(a.shape, dtype=np.result_type(a, b))
+    out[..., 0] = a[..., 1] * b[..., 2] - a[..., 2] * b[..., 1]
+    out[..., 1] = a[..., 2] * b[..., 0] - a[..., 0] * b[..., 2]
+    out[..., 2] = a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
+    return out
 
 
 def skew(a):
     """Matrices S(a), shape (..., 3, 3), with S(a) b = a x b."""
-    z = np.zeros_like(a[..., 0])
-    return np.stack(
-        [
-            np.stack([z, -a[..., 2], a[..., 1]], axis=-1),
-            np.stack([a[..., 2], z, -a[..., 0]], axis=-1),
-            np.stack([-a[..., 1], a[..., 0], z], axis=-1),
-        ],
-        axis=-2,
-    )
+    out = np.zeros(a.shape + (3,), dtype=a.dtype)
+    _add_skew(out, a, 1.0)
+    return out
+
+
+def _add_skew(out, a, scale):
+    """Add scale S(a) to ``out`` in place (``scale`` broadcasts against a[..., 0])."""
+    x, y, z = (scale * a[..., k] for k in range(3))
+    out[..., 0, 1] -= z
+    out[..., 0, 2] += y
+    out[..., 1, 0] += z
+    out[..., 1, 2] -= x
+    out[..., 2, 0] -= y
+    out[..., 2, 1] += x
 
 
 def outer(a, b):
@@ -84,18 +87,23 @@ def segment_velocity(r1, r2, derivatives=False):
     m = n1 * n2
     den = m * (m + d) + CORE**2 * r0s**2
     s = n1 + n2
-    v = (INV_4PI * s / den)[..., None] * c
+    inv = INV_4PI / den
+    v = (inv * s)[..., None] * c
     if not derivatives:
         return v
-    k = (INV_4PI / den)[..., None, None]
+    # dv/dr = k (c (x) (dn/dr - q dden/dr)) -/+ k s S(r_other), k = 1/(4 pi den), q = s/den:
+    # the two outer products of c share c, so they are one.
     q = (s / den)[..., None]
     a = (2.0 * m + d)[..., None]
     core_term = (4.0 * CORE**2 * r0s)[..., None] * r0
-    dden_dr1 = a * (n2 / n1)[..., None] * r1 + m[..., None] * r2 + core_term
-    dden_dr2 = a * (n1 / n2)[..., None] * r2 + m[..., None] * r1 - core_term
-    s_ = s[..., None, None]
-    dv_dr1 = k * (outer(c, r1 / n1[..., None]) - s_ * skew(r2) - outer(q * c, dden_dr1))
-    dv_dr2 = k * (outer(c, r2 / n2[..., None]) + s_ * skew(r1) - outer(q * c, dden_dr2))
+    kc = inv[..., None] * c
+    g1 = r1 / n1[..., None] - q * (a * (n2 / n1)[..., None] * r1 + m[..., None] * r2 + core_term)
+    g2 = r2 / n2[..., None] - q * (a * (n1 / n2)[..., None] * r2 + m[..., None] * r1 - core_term)
+    ks = inv * s
+    dv_dr1 = outer(kc, g1)
+    _add_skew(dv_dr1, r2, -ks)
+    dv_dr2 = outer(kc, g2)
+    _add_skew(dv_dr2, r1, ks)
     return v, dv_dr1, dv_dr2
 
 
@@ -121,15 +129,17 @@ def semi_infinite_velocity(r, u, derivatives=False):
     t = dot(u, r)
     w = cross(u, r)
     den = (1.0 + CORE**2) * n**2 - n * t
-    v = (INV_4PI / den)[..., None] * w
+    inv = INV_4PI / den
+    v = inv[..., None] * w
     if not derivatives:
         return v
-    k = (INV_4PI / den)[..., None, None]
-    wq = w / den[..., None]
+    # dv/dr = k (S(u) - wq (x) dden/dr), dv/du = k (-S(r) - wq (x) dden/du), wq = w/den.
+    kwq = (inv / den)[..., None] * w
     dden_dr = 2.0 * (1.0 + CORE**2) * r - (t / n)[..., None] * r - n[..., None] * u
-    dden_du = -n[..., None] * r
-    dv_dr = k * (skew(u) - outer(wq, dden_dr))
-    dv_du = k * (-skew(r) - outer(wq, dden_du))
+    dv_dr = outer(kwq, -dden_dr)
+    _add_skew(dv_dr, u, inv)
+    dv_du = outer(kwq, n[..., None] * r)
+    _add_skew(dv_du, r, -inv)
     return v, dv_dr, dv_du
 
 
@@ -183,16 +193,14 @@ def lattice_velocities(
     out["wake"] = res3[0] - res4[0]
 
     _, dv1, dv2 = res
-    wd1 = w[..., None, None] * dv1
-    wd2 = w[..., None, None] * dv2
-    out["ring_d_point"] = np.sum(wd1 + wd2, axis=2)
-    d_vert = np.zeros(
-        points.shape[:1] + ring_vertices.shape[:1] + (3, 4, 3), dtype=np.result_type(dv1, w)
-    )
-    for seg in range(4):
-        d_vert[:, :, :, seg, :] -= wd1[:, :, seg]
-        d_vert[:, :, :, (seg + 1) % 4, :] -= wd2[:, :, seg]
-    out["ring_d_vertices"] = d_vert
+    dv1 *= w[..., None, None]
+    dv2 *= w[..., None, None]
+    # Segment s runs from vertex s to vertex s + 1: vertex k gets -dv_dr1 of segment k and
+    # -dv_dr2 of segment k - 1; (npt, np, vertex, c, d) -> (npt, np, c, vertex, d).
+    d_vert = dv1 + np.roll(dv2, 1, axis=2)
+    out["ring_d_point"] = np.sum(d_vert, axis=2)
+    np.negative(d_vert, out=d_vert)
+    out["ring_d_vertices"] = d_vert.transpose(0, 1, 3, 2, 4)
     out["wake_d_point"] = res3[1] - res4[1]
     out["wake_d_p3"] = -res3[1]
     out["wake_d_p4"] = res4[1]
