@@ -444,8 +444,22 @@ class BEMSections:
         return dres, dq * cx + q * dcx, dq * cth + q * dcth
 
     def local_partials(self, st, names, loads=False):
-        """Local derivatives wrt each name (unit seeds): dict name -> array or tuple."""
-        return {name: self.tangent(st, {name: 1.0}, loads=loads) for name in names}
+        """
+        Local derivatives wrt each name (unit seeds): dict name -> array or tuple.
+
+        All seeds in one :meth:`tangent` pass: seed j is the unit vector e_j along a new
+        leading axis, which every quantity of the pass broadcasts along (the stations are
+        few, so one pass over K times the points costs about what one pass costs).
+        """
+        names = list(names)
+        shape = (len(names),) + np.shape(st["phi"])
+        eye = np.eye(len(names)).reshape((len(names), len(names)) + (1,) * np.ndim(st["phi"]))
+        out = self.tangent(st, dict(zip(names, eye, strict=True)), loads=loads)
+        if loads:
+            out = [np.broadcast_to(o, shape) for o in out]
+            return {name: tuple(o[j] for o in out) for j, name in enumerate(names)}
+        out = np.broadcast_to(out, shape)
+        return {name: out[j] for j, name in enumerate(names)}
 
     # ------------------------------------------------------------------ solve
     def solve(self, owner="", guess=None):
