@@ -336,14 +336,15 @@ class PittPetersInflowComp(om.ImplicitComponent):
         """Residual partials wrt ``keys`` (inputs and/or 'inflow_states'), pattern order."""
         fld = self._field
         st = fld.evaluate(x, states, partials=True)
-        ints, dints = {}, {}
+        ints = {}
         chained_t = fld.chain(st, st.dt, keys)
         chained_f = fld.chain(st, st.dF, keys) if self._momentum else None
         for name in self._loads:
             ints[name] = fld.integrate(st, name)
-            dints[name] = fld.integrate_partials(
-                st, name, chained_f if name == "loss_area" else chained_t
-            )
+        blade = [name for name in self._loads if name != "loss_area"]
+        dints = fld.integrate_partials(st, blade, chained_t)
+        if "loss_area" in self._loads:
+            dints.update(fld.integrate_partials(st, ["loss_area"], chained_f))
         p = self._params(x, states, ints)
 
         # Complex step of the 3x3 algebra over its per-rotor scalars: d[name] = dR/dp, (nr, nn, 3).

@@ -661,33 +661,57 @@ class PittPetersBladeElements:
         m, _ = self._weight(st, name)
         return self._factor(name)[..., 0] * np.sum(st.width * m * field, axis=(2, 3))
 
-    def integrate_partials(self, st, name, chained):
+    def integrate_partials(self, st, names, chained):
         """
-        Return the partials of the integral ``name`` with respect to its inputs.
+        Return the partials of the integrals ``names`` (one field) with respect to their inputs.
 
         The inputs are those in ``chained`` (the field's :meth:`chain` output) plus
-        station_radius and station_width (through the quadrature).
+        station_radius and station_width (through the quadrature). All integrals and inputs in
+        one batched product: the chained partials stacked along a last axis (k values), the
+        integrals' weights w_i = dr r^p trig along another, and per (rotor, node, station)
+        W^T V sums over the azimuth; the inputs that are not per station also over the radius.
 
-        Returns name -> array (nr, nn) for per-op, per-rotor and per-node inputs, (nr, nn, k) for
-        inflow_states and inplane_velocity, (nr, nn, num_radial) for per-station inputs.
+        Returns name -> (input -> array): (nr, nn) for per-op, per-rotor and per-node inputs,
+        (nr, nn, k) for inflow_states and inplane_velocity, (nr, nn, num_radial) for per-station
+        inputs.
         """
-        field = getattr(st, self.INTEGRALS[name][0])
-        m, dm_dr = self._weight(st, name)
-        fac = self._factor(name)
-        wm = st.width * m
+        names = list(names)
+        field = getattr(st, self.INTEGRALS[names[0]][0])
+        shape = self.shape
+        keys = list(chained)
+        sizes = [_OP_VECTOR.get(key, 1) if key in _OP_VECTOR else 1 for key in keys]
+        stack = np.empty(shape + (sum(sizes),), dtype=np.result_type(*chained.values()))
+        col = 0
+        for key, size in zip(keys, sizes, strict=True):
+            stack[..., col : col + size] = chained[key].reshape(shape + (size,))
+            col += size
+        weights = [self._weight(st, name) for name in names]
+        wm = np.empty(shape + (len(names),), dtype=np.result_type(st.width, field))
+        for i, (m, _) in enumerate(weights):
+            wm[..., i] = st.width * m
+        # (nr, nn, nrad, I, naz) @ (nr, nn, nrad, naz, K) -> per-station azimuth sums.
+        radial = np.swapaxes(wm, -1, -2) @ stack
+        total = np.sum(radial, axis=2)
         out = {}
-        for key, val in chained.items():
-            kind = PITT_PETERS_INPUTS[key][0] if key in PITT_PETERS_INPUTS else "op"
-            if key in _OP_VECTOR:
-                out[key] = fac * np.sum(wm[..., None] * val, axis=(2, 3))
-            elif kind == "radial":
-                out[key] = fac * np.sum(wm * val, axis=3)
-            else:
-                out[key] = fac[..., 0] * np.sum(wm * val, axis=(2, 3))
-        out["station_width"] = fac * np.sum(np.broadcast_to(m * field, self.shape), axis=3)
-        if dm_dr is not None:
-            extra = fac * np.sum(np.broadcast_to(st.width * dm_dr * field, self.shape), axis=3)
-            out["station_radius"] = out.get("station_radius", 0.0) + extra
+        for i, name in enumerate(names):
+            fac = self._factor(name)
+            res = {}
+            col = 0
+            for key, size in zip(keys, sizes, strict=True):
+                kind = PITT_PETERS_INPUTS[key][0] if key in PITT_PETERS_INPUTS else "op"
+                if key in _OP_VECTOR:
+                    res[key] = fac * total[:, :, i, col : col + size]
+                elif kind == "radial":
+                    res[key] = fac * radial[:, :, :, i, col]
+                else:
+                    res[key] = fac[..., 0] * total[:, :, i, col]
+                col += size
+            m, dm_dr = weights[i]
+            res["station_width"] = fac * np.sum(np.broadcast_to(m * field, shape), axis=3)
+            if dm_dr is not None:
+                extra = fac * np.sum(np.broadcast_to(st.width * dm_dr * field, shape), axis=3)
+                res["station_radius"] = res.get("station_radius", 0.0) + extra
+            out[name] = res
         return out
 
 
@@ -964,16 +988,8 @@ class PittPetersLoadsComp(om.ExplicitComponent):
                 partials["inflow_angle", name] = dphi[name].ravel()
 
         spin = fld.spin[:, None]
-        ints = {}
-        for name, chained in (
-            ("thrust", dt),
-            ("moment_cos", dt),
-            ("moment_sin", dt),
-            ("torque", dd),
-            ("drag_sin", dd),
-            ("drag_cos", dd),
-        ):
-            ints[name] = fld.integrate_partials(st, name, chained)
+        ints = fld.integrate_partials(st, ("thrust", "moment_cos", "moment_sin"), dt)
+        ints.update(fld.integrate_partials(st, ("torque", "drag_sin", "drag_cos"), dd))
         comps = {
             "thrust": [(ints["thrust"], 1.0)],
             "torque": [(ints["torque"], 1.0)],
