@@ -176,3 +176,35 @@ def test_bad_options_raise_clear_errors(option, value, pattern):
 def test_too_few_azimuth_stations_rejected():
     with pytest.raises(ValueError, match="num_azimuth"):
         PittPetersLoadsComp(num_azimuth=2)
+
+
+def test_loads_partials_reuse_the_inflow_linearization_and_equal_their_own():
+    # The inflow component's linearization leaves its station field (with partials) in a cache
+    # that the loads component, at the same inputs and states, reads instead of recomputing;
+    # the partials are those the loads component computes on its own.
+    from lpc_mdo.components.aero.polar import LinearQuadraticPolar
+    from lpc_mdo.components.rotor import pitt_peters_loads as ppl
+
+    # One polar object for both, as in a rotor group (the cache knows polars by identity).
+    prob = build(nr=2, spin=[1, -1], polar=LinearQuadraticPolar())
+    prob.set_val("inplane_velocity", [[[30.0, 2.0]], [[30.0, 2.0]]])
+    prob.set_val("axial_velocity", [[-1.0], [-1.0]])
+    prob.run_model()
+    inflow, loads = prob.model.inflow, prob.model.loads
+    ppl._SHARED_FIELDS.clear()
+    inflow.run_linearize()
+    assert len(ppl._SHARED_FIELDS) == 1
+    (entry,) = ppl._SHARED_FIELDS.values()
+    loads.run_linearize()
+    shared = {k: np.array(v["val"]) for k, v in loads._subjacs_info.items()}
+    (after,) = ppl._SHARED_FIELDS.values()  # a hit: no new entry
+    assert after is entry
+    ppl._SHARED_FIELDS.clear()
+    loads.run_linearize()  # on its own
+    for key, meta in loads._subjacs_info.items():
+        np.testing.assert_allclose(shared[key], meta["val"], rtol=1e-12, atol=1e-14, err_msg=key)
+    # Other inputs, another entry.
+    prob.set_val("rpm", np.full((2, 1), 1150.0))
+    prob.run_model()
+    inflow.run_linearize()
+    assert len(ppl._SHARED_FIELDS) == 2

@@ -332,10 +332,15 @@ class PittPetersInflowComp(om.ImplicitComponent):
         ints = {name: fld.integrate(st, name) for name in self._loads}
         return self._op_residual(self._params(x, states, ints))
 
-    def _residual_partials(self, x, states, keys):
-        """Residual partials wrt ``keys`` (inputs and/or 'inflow_states'), pattern order."""
+    def _residual_partials(self, x, states, keys, shared=False):
+        """
+        Residual partials wrt ``keys`` (inputs and/or 'inflow_states'), pattern order.
+
+        ``shared``: the station field goes to the cache the loads component reads
+        (PittPetersBladeElements.evaluate), in the linearization only.
+        """
         fld = self._field
-        st = fld.evaluate(x, states, partials=True)
+        st = fld.evaluate(x, states, partials=True, shared=shared)
         ints = {}
         chained_t = fld.chain(st, st.dt, keys)
         chained_f = fld.chain(st, st.dF, keys) if self._momentum else None
@@ -460,7 +465,9 @@ class PittPetersInflowComp(om.ImplicitComponent):
         )
 
     def linearize(self, inputs, outputs, partials):
-        jac = self._residual_partials(self._values(inputs), outputs["inflow_states"], self._wrt)
+        jac = self._residual_partials(
+            self._values(inputs), outputs["inflow_states"], self._wrt, shared=True
+        )
         for name in self._wrt:
             partials["inflow_states", name] = jac[name].ravel()
         self._inverse = np.linalg.inv(jac["inflow_states"])

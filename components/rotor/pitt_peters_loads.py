@@ -57,6 +57,7 @@ station_width):
 - Prandtl area factor F_A = (2/(N_psi R^2)) sum dr r F (the loss-weighted disk area over pi R^2).
 """
 
+from collections import OrderedDict
 from types import SimpleNamespace
 
 import numpy as np
@@ -296,6 +297,18 @@ class PittPetersBladeElements:
         self.momentum_loss = loss_placement == "momentum" and (tip_loss or hub_loss)
         self.swirl = tangential_induction
         self._vt_guess = 0.0
+        # What the station field depends on besides the inputs (the polar by identity; the
+        # cache entry holds the polar, so its id is not reused while the entry lives).
+        self._signature = (
+            tuple(shape),
+            np.asarray(blades).tobytes(),
+            np.asarray(spin).tobytes(),
+            id(polar),
+            tip_loss,
+            hub_loss,
+            loss_placement,
+            tangential_induction,
+        )
         self.owner = owner
         psi = azimuth_angles(naz)
         self.cos = np.cos(psi)[None, None, None, :]
@@ -308,9 +321,13 @@ class PittPetersBladeElements:
         self.one_fac = np.full((nr, 1, 1), 1.0 / naz)
 
     # ---------------------------------------------------------------- station values
-    def evaluate(self, x, states, partials=False):
+    def evaluate(self, x, states, partials=False, shared=False):
         """
         Station field for inputs ``x`` (name -> array) and inflow states (nr, nn, 3).
+
+        With ``shared``, the field is kept (and looked up) in a small cache shared by every
+        field of the same configuration: the inflow and loads components of a rotor group
+        linearize at the same inputs and states, so the second reuses the first's field.
 
         Returns a namespace with the fields t, d, phi, F, the tangential induction v_t (station
         shape) and, with ``partials``, their partials with respect to the station primitives
@@ -318,6 +335,23 @@ class PittPetersBladeElements:
         'chord', 'r', 'radius', 'hub_radius', 'density', 'dynamic_viscosity',
         'speed_of_sound'; 'vip2' is norm(inplane_velocity)^2, through the swirl's mass flow).
         """
+        if not shared:
+            return self._evaluate(x, states, partials)
+        key = (
+            self._signature,
+            partials,
+            np.asarray(states).dtype.str,
+            np.asarray(states).tobytes(),
+            *(np.asarray(x[name]).tobytes() for name in sorted(x)),
+        )
+        hit = _SHARED_FIELDS.get(key)
+        if hit is None:
+            hit = _SHARED_FIELDS[key] = (self.polar, self._evaluate(x, states, partials))
+            while len(_SHARED_FIELDS) > _SHARED_FIELDS_SIZE:
+                _SHARED_FIELDS.popitem(last=False)
+        return hit[1]
+
+    def _evaluate(self, x, states, partials):
         st = SimpleNamespace()
         big_r = x["radius"][:, None, None, None]
         rh = x["hub_radius"][:, None, None, None]
@@ -715,6 +749,12 @@ class PittPetersBladeElements:
         return out
 
 
+#: Station fields with partials shared between components (PittPetersBladeElements.evaluate
+#: with ``shared=True``): the last few, keyed by configuration, inputs and states (exact bytes).
+_SHARED_FIELDS = OrderedDict()
+_SHARED_FIELDS_SIZE = 2
+
+
 class SparsityPatterns:
     """
     Row and column indices of the partials of the Pitt–Peters components.
@@ -976,7 +1016,7 @@ class PittPetersLoadsComp(om.ExplicitComponent):
 
     def compute_partials(self, inputs, partials):
         fld = self._field
-        st = fld.evaluate(self._values(inputs), inputs["inflow_states"], partials=True)
+        st = fld.evaluate(self._values(inputs), inputs["inflow_states"], partials=True, shared=True)
         keys = self._wrt
         dt = fld.chain(st, st.dt, keys)
         dd = fld.chain(st, st.dd, keys)
