@@ -165,11 +165,8 @@ class AtmosphereComp(om.ExplicitComponent):
             desc="Kinematic viscosity of air (dynamic viscosity / density)",
         )
 
-        ar = np.arange(nn)
         # dT/dh = -L is constant: set once here.
-        self.declare_partials(
-            "temperature", "altitude", rows=ar, cols=ar, val=-c["L"] * np.ones(nn)
-        )
+        self.declare_partials("temperature", "altitude", diagonal=True, val=-c["L"] * np.ones(nn))
         for name in (
             "pressure",
             "density",
@@ -177,7 +174,7 @@ class AtmosphereComp(om.ExplicitComponent):
             "dynamic_viscosity",
             "kinematic_viscosity",
         ):
-            self.declare_partials(name, "altitude", rows=ar, cols=ar)
+            self.declare_partials(name, "altitude", diagonal=True)
 
     def _check_altitude(self, h):
         # Range check only (real part); the troposphere model's valid range.

@@ -111,7 +111,6 @@ class AWeightingComp(om.ExplicitComponent):
         shape = self.options["shape"]
         size = int(np.prod(shape))
         fixed = self.options["frequencies"]
-        ar = np.arange(size)
         if fixed is None:
             self.add_input(
                 "frequency", val=np.full(shape, 1000.0), units="Hz", desc="Frequency of each level"
@@ -133,9 +132,9 @@ class AWeightingComp(om.ExplicitComponent):
             self.add_output(
                 f"{name}_a", val=np.zeros(shape), units=None, desc="A-weighted level, dBA re 20 uPa"
             )
-            self.declare_partials(f"{name}_a", name, rows=ar, cols=ar, val=np.ones(size))
+            self.declare_partials(f"{name}_a", name, diagonal=True, val=np.ones(size))
             if fixed is None:
-                self.declare_partials(f"{name}_a", "frequency", rows=ar, cols=ar)
+                self.declare_partials(f"{name}_a", "frequency", diagonal=True)
 
     def compute(self, inputs, outputs):
         if self.options["frequencies"] is None:

@@ -137,11 +137,8 @@ class AlphaStarComp(om.ImplicitComponent):
             units="rad",
             desc="Section angle of attack with cl_airfoil = cl_VLM",
         )
-        diag = np.arange(n)
-        self.declare_partials("alpha_star", "lift_coefficient", rows=diag, cols=diag, val=1.0)
-        self.declare_partials(
-            "alpha_star", ["alpha_star", "reynolds", "mach"], rows=diag, cols=diag
-        )
+        self.declare_partials("alpha_star", "lift_coefficient", diagonal=True, val=1.0)
+        self.declare_partials("alpha_star", ["alpha_star", "reynolds", "mach"], diagonal=True)
 
     # ---------------------------------------------------------------------------- lift function
 

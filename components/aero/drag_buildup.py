@@ -241,7 +241,7 @@ class DragBuildupComp(om.ExplicitComponent):
             "drag_breakdown", "reference_area", rows=np.arange(nn * nb), cols=np.zeros(nn * nb, int)
         )
         for out in ("CD0", "parasite_drag"):
-            self.declare_partials(out, nodewise, rows=ar, cols=ar)
+            self.declare_partials(out, nodewise, diagonal=True)
             self.declare_partials(out, "lumped_drag_area", rows=ar, cols=np.zeros(nn, int))
         self.declare_partials("CD0", "reference_area", rows=ar, cols=np.zeros(nn, int))
         rows3, node3 = np.arange(3 * nn), np.repeat(ar, 3)

@@ -142,10 +142,7 @@ class LiftDependentProfileDragComp(om.ExplicitComponent):
         self.add_output(
             "sectional_cd", np.zeros((nn, ns)), desc="lift-dependent profile-drag coefficient"
         )
-        diag = np.arange(n)
-        self.declare_partials(
-            "sectional_cd", ["alpha_star", "reynolds", "mach"], rows=diag, cols=diag
-        )
+        self.declare_partials("sectional_cd", ["alpha_star", "reynolds", "mach"], diagonal=True)
 
     def _minimum(self, reynolds, mach):
         """

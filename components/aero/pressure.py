@@ -158,7 +158,7 @@ class SectionPressureComp(om.ExplicitComponent):
             rows=diag,
             cols=diag,
         )
-        self.declare_partials("moment_coefficient", flow + ["axis_location"], rows=diag, cols=diag)
+        self.declare_partials("moment_coefficient", flow + ["axis_location"], diagonal=True)
         self.declare_partials(
             ["normal_force", "axial_force"],
             flow + ["dynamic_pressure", "chord"],

@@ -166,7 +166,7 @@ class VLMLoadsComp(om.ExplicitComponent):
         ):
             self.declare_partials(name, axis, rows=rows3, cols=cols3)
         ar = np.arange(nn)
-        self.declare_partials(["CL", "CDi", "CD"], ["speed", "density"], rows=ar, cols=ar)
+        self.declare_partials(["CL", "CDi", "CD"], ["speed", "density"], diagonal=True)
         self.declare_partials(
             ["CL", "CDi", "CD"], "reference_area", rows=ar, cols=np.zeros(nn, int)
         )

@@ -57,12 +57,11 @@ class ForceSumComp(om.ExplicitComponent):
         self.add_output(
             "moment", np.zeros((nn, 3)), units="N*m", desc="resultant moment about the body origin"
         )
-        ar = np.arange(3 * nn)
         for name in sources:
             self.add_input(
                 f"{name}_force", np.zeros((nn, 3)), units="N", desc=f"force of {name}, body axes"
             )
-            self.declare_partials("force", f"{name}_force", rows=ar, cols=ar, val=1.0)
+            self.declare_partials("force", f"{name}_force", diagonal=True, val=1.0)
             if name not in self.options["forces_only"]:
                 self.add_input(
                     f"{name}_moment",
@@ -70,7 +69,7 @@ class ForceSumComp(om.ExplicitComponent):
                     units="N*m",
                     desc=f"moment of {name} about the body origin",
                 )
-                self.declare_partials("moment", f"{name}_moment", rows=ar, cols=ar, val=1.0)
+                self.declare_partials("moment", f"{name}_moment", diagonal=True, val=1.0)
 
     def compute(self, inputs, outputs):
         outputs["force"] = 0.0
@@ -122,10 +121,9 @@ class VectorSumComp(om.ExplicitComponent):
                 f"output_name = {opts['output_name']!r}."
             )
         self.add_output(opts["output_name"], np.zeros(shape), units=opts["units"], desc="sum")
-        ar = np.arange(3 * opts["num_nodes"])
         for name in names:
             self.add_input(name, np.zeros(shape), units=opts["units"], desc="term of the sum")
-            self.declare_partials(opts["output_name"], name, rows=ar, cols=ar, val=1.0)
+            self.declare_partials(opts["output_name"], name, diagonal=True, val=1.0)
 
     def compute(self, inputs, outputs):
         outputs[self.options["output_name"]] = sum(

@@ -217,7 +217,7 @@ class BladeStationsComp(om.ExplicitComponent):
         )
 
         ar = np.arange(nr)
-        self.declare_partials("hub_radius", "radius", rows=ar, cols=ar, val=h)
+        self.declare_partials("hub_radius", "radius", diagonal=True, val=h)
         rows = np.arange(nr * nrad)
         cols = np.repeat(ar, nrad)
         self.declare_partials(

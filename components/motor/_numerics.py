@@ -78,6 +78,10 @@ def declare_pointwise_partials(comp, deps, shapes, val=None):
     """
     for of, wrts in deps.items():
         for wrt in wrts:
+            if tuple(shapes[of]) == tuple(shapes[wrt]):
+                # Declared diagonal: OpenMDAO's product for it is a plain multiply.
+                comp.declare_partials(of, wrt, diagonal=True, val=val)
+                continue
             rows, cols = pointwise_pattern(shapes[of], shapes[wrt])
             comp.declare_partials(of, wrt, rows=rows, cols=cols, val=val)
 

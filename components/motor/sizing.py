@@ -148,19 +148,16 @@ class MotorSizingComp(om.ExplicitComponent):
         for name, units, desc in GEOMETRY_OUTPUTS:
             self.add_output(name, val=0.01 * np.ones(nm), units=units, desc=desc)
 
-        ar = np.arange(nm)
         dep = "length" if ratio is not None else "diameter"
         if ratio is not None:
-            self.declare_partials(
-                "diameter", "length", rows=ar, cols=ar, val=np.full(nm, 1.0 / ratio)
-            )
+            self.declare_partials("diameter", "length", diagonal=True, val=np.full(nm, 1.0 / ratio))
         for name in ("mass", "peak_torque"):
             for wrt in {"length", dep, "electric_loading", "magnetic_loading"}:
-                self.declare_partials(name, wrt, rows=ar, cols=ar)
+                self.declare_partials(name, wrt, diagonal=True)
         for name, _, _ in GEOMETRY_OUTPUTS:
-            self.declare_partials(name, dep, rows=ar, cols=ar)
+            self.declare_partials(name, dep, diagonal=True)
             if name in ("air_gap", "rotor_diameter", "shaft_diameter", "turns_per_phase"):
-                self.declare_partials(name, "electric_loading", rows=ar, cols=ar)
+                self.declare_partials(name, "electric_loading", diagonal=True)
 
     def _diameter(self, inputs):
         ratio = self.options["length_to_diameter"]

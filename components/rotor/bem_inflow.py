@@ -630,7 +630,7 @@ class BEMInflowComp(om.ImplicitComponent):
         )
 
         ar = np.arange(nr * nn * nrad)
-        self.declare_partials("inflow_angle", "inflow_angle", rows=ar, cols=ar)
+        self.declare_partials("inflow_angle", "inflow_angle", diagonal=True)
         self._wrt = [name for name in SECTION_INPUTS if self._depends_on(name)]
         for name in self._wrt:
             cols = station_columns(SECTION_INPUTS[name][0], nr, nn, nrad)

@@ -129,7 +129,7 @@ class BEMLoadsComp(om.ExplicitComponent):
             )
         ]
         sectional = ("thrust_per_span", "drag_per_span")
-        self.declare_partials(sectional, "inflow_angle", rows=ar, cols=ar)
+        self.declare_partials(sectional, "inflow_angle", diagonal=True)
         self.declare_partials(("thrust", "torque"), "inflow_angle", rows=total_rows, cols=ar)
         for name in self._wrt:
             kind = SECTION_INPUTS[name][0]
@@ -151,7 +151,7 @@ class BEMLoadsComp(om.ExplicitComponent):
             rows=total_rows,
             cols=station_columns("rotor_station", nr, nn, nrad),
         )
-        self.declare_partials("angle_of_attack", "inflow_angle", rows=ar, cols=ar, val=-1.0)
+        self.declare_partials("angle_of_attack", "inflow_angle", diagonal=True, val=-1.0)
         self.declare_partials(
             "angle_of_attack",
             "twist",

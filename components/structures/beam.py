@@ -896,9 +896,8 @@ class BeamForcesComp(_FrameMixin, om.ExplicitComponent):
         self._node_blocks = self._node_sum.split(out_layout, [("nodes", 3 * n)])
         for blocks in (self._u_blocks, self._prop_blocks, self._mat_blocks, self._node_blocks):
             _declare_blocks(self, blocks, _ZERO_FORCES)
-        ar = np.arange(3 * n)
-        self.declare_partials("reaction_forces", "node_forces", rows=ar, cols=ar, val=-1.0)
-        self.declare_partials("reaction_moments", "node_moments", rows=ar, cols=ar, val=-1.0)
+        self.declare_partials("reaction_forces", "node_forces", diagonal=True, val=-1.0)
+        self.declare_partials("reaction_moments", "node_moments", diagonal=True, val=-1.0)
 
     @staticmethod
     def _outputs_from(k_loc, lam, u_e):
@@ -1031,7 +1030,7 @@ class BeamMassComp(_FrameMixin, om.ExplicitComponent):
         )
 
         ar = np.arange(ne)
-        self.declare_partials("element_mass", "area", rows=ar, cols=ar)
+        self.declare_partials("element_mass", "area", diagonal=True)
         self.declare_partials("element_mass", "density")
         self.declare_partials(
             "element_mass", "nodes", rows=np.repeat(ar, 6), cols=self._ecoords.ravel()

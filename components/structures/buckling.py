@@ -100,7 +100,6 @@ class PanelBucklingComp(om.ExplicitComponent):
         )
         self.add_input("youngs_modulus", val=69.0e9, units="Pa", desc="Young's modulus E")
         self.add_input("poisson_ratio", val=0.33, units=None, desc="Poisson's ratio")
-        ar = np.arange(ne)
         for skin in self._skins:
             crit, ratio = f"{skin}_skin_critical_stress", f"{skin}_skin_buckling_ratio"
             self.add_output(
@@ -118,9 +117,9 @@ class PanelBucklingComp(om.ExplicitComponent):
             geo = [f"{skin}_skin_thickness", "box_width"]
             if curved:
                 geo.append(f"{skin}_skin_radius")
-            self.declare_partials([crit, ratio], geo, rows=ar, cols=ar)
+            self.declare_partials([crit, ratio], geo, diagonal=True)
             self.declare_partials([crit, ratio], ["youngs_modulus", "poisson_ratio"])
-            self.declare_partials(ratio, f"{skin}_skin_stress", rows=ar, cols=ar)
+            self.declare_partials(ratio, f"{skin}_skin_stress", diagonal=True)
 
     def _critical(self, t, b, r, modulus, nu):
         """σ' and its partials wrt (t, b, r, E, ν)."""

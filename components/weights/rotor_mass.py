@@ -118,7 +118,7 @@ class RotorMassComp(om.ExplicitComponent):
         cp_rows = np.repeat(diag, ncp)
         cp_cols = np.arange(n * ncp)
         for out in ("blade_mass", "hub_mass", "rotor_group_mass"):
-            self.declare_partials(out, ["rotor_radius", "rotor_design_speed"], rows=diag, cols=diag)
+            self.declare_partials(out, ["rotor_radius", "rotor_design_speed"], diagonal=True)
             self.declare_partials(out, "blade_chord_cp", rows=cp_rows, cols=cp_cols)
 
         blades = np.asarray(self.options["num_blades"], dtype=float)
