@@ -99,6 +99,11 @@ def _lengths(start, end):
     return np.sqrt(np.sum(d * d, axis=-1))
 
 
+#: Names of the four section properties as arguments of the element functions (the order of
+#: _SECTION_INPUTS: A, I_y, I_z, J).
+_PROP_ARGS = ("area", "inertia_v", "inertia_i", "torsion")
+
+
 def element_frames(start, end):
     """
     Return element lengths and rotation matrices (docs theory/structures 'Frame element').
@@ -380,27 +385,30 @@ class _FrameMixin:
         return global_stiffness(lam, k_loc), lam
 
     @staticmethod
-    def _coordinate_blocks(start, end, func):
+    def _coordinate_blocks(start, end, func, **per_element):
         """
-        Differentiate func(start, end) by the 6 end-node coordinates, by complex step.
+        Differentiate func(start, end, **per_element) by the 6 end-node coordinates (complex step).
 
         The result has the shape (num_elements, m, 6).
 
-        func(start, end) -> (num_elements, m) must be complex-safe. The node coordinates enter
-        only through the element length and direction cosines of each element, so 6 vectorized
-        evaluations give the exact derivative of every element at once.
+        func(start, end, **per_element) -> (num_elements, m) must be complex-safe and element-wise
+        (row e of the result depends on row e of every argument). The node coordinates enter
+        only through the element length and direction cosines of each element, so the 6
+        perturbations, stacked along the element axis (the ``per_element`` arrays repeated with
+        them), give the exact derivative of every element in one evaluation.
         """
-        start = start.real.astype(complex)
-        end = end.real.astype(complex)
-        cols = []
+        ne = start.shape[0]
+        s = np.tile(start.real.astype(complex), (6, 1))
+        e = np.tile(end.real.astype(complex), (6, 1))
         for k in range(6):
-            s, e = start.copy(), end.copy()
+            rows = slice(k * ne, (k + 1) * ne)
             if k < 3:
-                s[:, k] += 1j * _CS_STEP
+                s[rows, k] += 1j * _CS_STEP
             else:
-                e[:, k - 3] += 1j * _CS_STEP
-            cols.append(func(s, e).imag / _CS_STEP)
-        return np.stack(cols, axis=-1)
+                e[rows, k - 3] += 1j * _CS_STEP
+        tiled = {name: np.concatenate([value] * 6) for name, value in per_element.items()}
+        values = func(s, e, **tiled).imag / _CS_STEP
+        return np.stack(np.split(values, 6), axis=-1)
 
 
 class BeamDisplacementComp(_FrameMixin, om.ImplicitComponent):
@@ -723,11 +731,14 @@ class BeamDisplacementComp(_FrameMixin, om.ImplicitComponent):
         )
         _set_blocks(partials, self._mat_blocks, self._mat_sum.sum(mat))
 
-        def element_residual(s, e):
+        def element_residual(s, e, area, inertia_v, inertia_i, torsion, u_e):
+            props = (area, inertia_v, inertia_i, torsion)
             k, _ = self._element_stiffness(s, e, props, modulus, shear)
             return np.einsum("eij,ej->ei", k, u_e)
 
-        node_blocks = self._coordinate_blocks(start, end, element_residual)
+        node_blocks = self._coordinate_blocks(
+            start, end, element_residual, **dict(zip(_PROP_ARGS, props, strict=True)), u_e=u_e
+        )
         _set_blocks(partials, self._node_blocks, self._node_sum.sum(node_blocks))
 
     def solve_linear(self, d_outputs, d_residuals, mode):
@@ -969,11 +980,14 @@ class BeamForcesComp(_FrameMixin, om.ExplicitComponent):
         )
         _set_blocks(partials, self._mat_blocks, self._mat_sum.sum(mat))
 
-        def element_outputs(s, e):
+        def element_outputs(s, e, area, inertia_v, inertia_i, torsion, u_e):
+            props = (area, inertia_v, inertia_i, torsion)
             k, lm = self._element_stiffness(s, e, props, modulus, shear, frame="local")
             return self._outputs_from(k, lm, u_e)
 
-        node_blocks = self._coordinate_blocks(start, end, element_outputs)
+        node_blocks = self._coordinate_blocks(
+            start, end, element_outputs, **dict(zip(_PROP_ARGS, props, strict=True)), u_e=u_e
+        )
         _set_blocks(partials, self._node_blocks, self._node_sum.sum(node_blocks))
 
 
