@@ -136,10 +136,13 @@ class BEMLoadsComp(om.ExplicitComponent):
             self.declare_partials(
                 sectional, name, rows=ar, cols=station_columns(kind, nr, nn, nrad)
             )
+            if kind == "rotor_node" or (kind == "rotor" and nn == 1):
+                # one entry per (rotor, node) and input entry: diagonal (a plain multiply in
+                # OpenMDAO's products)
+                self.declare_partials(("thrust", "torque"), name, diagonal=True)
+                continue
             if kind == "rotor_station":
                 rows, cols = total_rows, station_columns(kind, nr, nn, nrad)
-            elif kind == "rotor_node":
-                rows, cols = ar_tot, ar_tot
             elif kind == "rotor":
                 rows, cols = ar_tot, ar_tot // nn
             else:
