@@ -4,11 +4,7 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.aero.polar import LinearQuadraticPolar, Polar
-from lpc_mdo.components.geometry.blade import (
-    QUADRATURES,
-    SPLINE_STATIONS,
-    BladeGeometryGroup,
-)
+from lpc_mdo.components.geometry.blade import QUADRATURES, SPLINE_STATIONS, BladeGeometryGroup
 from lpc_mdo.components.rotor.bem_inflow import TIP_LOSS_FORMS, BEMInflowComp
 from lpc_mdo.components.rotor.bem_loads import BEMLoadsComp, RotorPerformanceComp
 from lpc_mdo.components.rotor.hub_loads import HubLoadsComp, RotorVelocityComp
@@ -142,7 +138,7 @@ class RotorGroupBase(om.Group):
             values=("internal", "inputs"),
             desc="'internal': the group computes its blade geometry from radius, chord_cp and "
             "twist_cp; 'inputs': the BLADE_OUTPUTS are inputs (computed once elsewhere, e.g. "
-            "by the vehicle group's lift_blades and pusher_blades)",
+            "by the vehicle group's blades)",
         )
         self.declare_model_options()
 
