@@ -123,3 +123,25 @@ def test_options():
     prob.model.add_subsystem("rotor", BEMRotorGroup(rotors=ROTORS, num_blades=2))
     with pytest.raises(ValueError, match=r"options \['num_blades'\] must be left at None"):
         prob.setup()
+
+
+def test_loads_partials_reuse_the_inflow_linearization_and_equal_their_own():
+    # BEMInflowComp's linearization leaves the sections' local partials (with the loads) in a
+    # cache that BEMLoadsComp, at the same inputs and inflow angle, reads; the partials are
+    # those it computes on its own.
+    from lpc_mdo.components.rotor import bem_inflow
+
+    prob = _group_problem()
+    prob.run_model()
+    group = prob.model.rotor
+    bem_inflow._SHARED_LINEARIZATIONS.clear()
+    group.inflow.run_linearize()
+    (entry,) = bem_inflow._SHARED_LINEARIZATIONS.values()
+    group.loads.run_linearize()
+    (after,) = bem_inflow._SHARED_LINEARIZATIONS.values()  # a hit: no new entry
+    assert after is entry
+    shared = {k: np.array(v["val"]) for k, v in group.loads._subjacs_info.items()}
+    bem_inflow._SHARED_LINEARIZATIONS.clear()
+    group.loads.run_linearize()  # on its own
+    for key, meta in group.loads._subjacs_info.items():
+        np.testing.assert_array_equal(shared[key], meta["val"], err_msg=str(key))

@@ -52,6 +52,8 @@ continuous with hover. The reference model (docs theory/rotors 'BEM inflow resid
 0 altogether.
 """
 
+from collections import OrderedDict
+
 import numpy as np
 import openmdao.api as om
 
@@ -164,6 +166,46 @@ def station_columns(kind, num_rotors, num_nodes, num_radial):
     shape = station_shapes(num_rotors, num_nodes, num_radial)[kind]
     idx = np.arange(int(np.prod(shape))).reshape(shape)
     return np.broadcast_to(idx, (num_rotors, num_nodes, num_radial)).ravel()
+
+
+#: Linearized section states shared between components (:func:`linearized_sections`): the last
+#: few, keyed by configuration, inputs and inflow angle (exact bytes).
+_SHARED_LINEARIZATIONS = OrderedDict()
+_SHARED_LINEARIZATIONS_SIZE = 2
+
+
+def linearized_sections(comp, inputs, inflow_angle, names):
+    """
+    Sections, their state and local partials with the loads (``local_partials(loads=True)``).
+
+    BEMInflowComp and BEMLoadsComp linearize at the same inputs and inflow angle, so the second
+    takes the first's result from a small cache keyed by the component's configuration (the
+    polar by identity, kept alive by the entry) and the exact bytes of every section input and
+    of the inflow angle.
+    """
+    opts = comp.options
+    phi = np.asarray(inflow_angle)
+    key = (
+        comp._shape,
+        np.asarray(comp._blades).tobytes(),
+        id(opts["polar"]),
+        opts["tip_loss"],
+        opts["hub_loss"],
+        opts["tip_loss_form"],
+        tuple(names),
+        phi.dtype.str,
+        phi.tobytes(),
+        *(np.asarray(inputs[name]).tobytes() for name in SECTION_INPUTS),
+    )
+    hit = _SHARED_LINEARIZATIONS.get(key)
+    if hit is None:
+        sections = comp._sections(inputs)
+        st = sections.evaluate(phi.ravel())
+        local = sections.local_partials(st, names, loads=True)
+        hit = _SHARED_LINEARIZATIONS[key] = (opts["polar"], sections, st, local)
+        while len(_SHARED_LINEARIZATIONS) > _SHARED_LINEARIZATIONS_SIZE:
+            _SHARED_LINEARIZATIONS.popitem(last=False)
+    return hit[1:]
 
 
 def add_section_inputs(comp, num_rotors, num_nodes, num_radial):
@@ -683,9 +725,12 @@ class BEMInflowComp(om.ImplicitComponent):
         outputs["inflow_angle"] = phi.reshape(self._shape)
 
     def linearize(self, inputs, outputs, partials):
-        sections = self._sections(inputs)
-        st = sections.evaluate(outputs["inflow_angle"].ravel())
-        local = sections.local_partials(st, ["inflow_angle"] + self._wrt)
+        # With the loads' derivatives too: BEMLoadsComp, at the same inputs and inflow angle,
+        # reads them from the shared cache instead of evaluating the sections again.
+        sections, st, local = linearized_sections(
+            self, inputs, outputs["inflow_angle"], ["inflow_angle"] + self._wrt
+        )
+        local = {name: value[0] for name, value in local.items()}
         diag = np.real(local["inflow_angle"])
         bad = ~np.isfinite(diag) | (diag == 0.0)
         if np.any(bad):

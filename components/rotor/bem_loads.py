@@ -17,6 +17,7 @@ from lpc_mdo.components.rotor.bem_inflow import (
     add_section_inputs,
     check_section_inputs,
     declare_bem_options,
+    linearized_sections,
     station_columns,
 )
 from lpc_mdo.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
@@ -206,8 +207,10 @@ class BEMLoadsComp(om.ExplicitComponent):
         )
 
     def compute_partials(self, inputs, partials):
-        sections = self._sections(inputs)
-        st = sections.evaluate(inputs["inflow_angle"].ravel())
+        # The inflow component's linearization at the same point, if it is the last one.
+        sections, st, local = linearized_sections(
+            self, inputs, inputs["inflow_angle"], ["inflow_angle"] + self._wrt
+        )
         _, thrust_ps, drag_ps = sections.loads(st)
         shape = self._shape
         nr, nn, nrad = shape
@@ -216,7 +219,6 @@ class BEMLoadsComp(om.ExplicitComponent):
         ).ravel()
         r = self._flat_station(inputs["station_radius"])
         bwr = bw * r
-        local = sections.local_partials(st, ["inflow_angle"] + self._wrt, loads=True)
         for name, (_, d_thrust, d_drag) in local.items():
             partials["thrust_per_span", name] = d_thrust
             partials["drag_per_span", name] = d_drag
