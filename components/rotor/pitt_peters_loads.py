@@ -713,7 +713,7 @@ class PittPetersBladeElements:
         field = getattr(st, self.INTEGRALS[names[0]][0])
         shape = self.shape
         keys = list(chained)
-        sizes = [_OP_VECTOR.get(key, 1) if key in _OP_VECTOR else 1 for key in keys]
+        sizes = [_OP_VECTOR.get(key, 1) for key in keys]
         stack = np.empty(shape + (sum(sizes),), dtype=np.result_type(*chained.values()))
         col = 0
         for key, size in zip(keys, sizes, strict=True):
