@@ -147,6 +147,21 @@ def test_biot_savart_kernels_against_katz_plotkin():
     assert_near_equal(v, [0.0, 0.0, 0.5 / (2.0 * np.pi * 2.0)], 1e-10)
 
 
+def test_biot_savart_kernel_derivatives_against_complex_step():
+    rng = np.random.default_rng(2)
+    r1, r2 = rng.normal(size=(5, 3)), rng.normal(size=(5, 3))
+    u = rng.normal(size=(5, 3))
+    u /= np.linalg.norm(u, axis=1)[:, None]
+    h = 1e-30
+    for kernel, args in ((segment_velocity, (r1, r2)), (semi_infinite_velocity, (r1, u))):
+        _, *jacs = kernel(*args, derivatives=True)
+        for k, jac in enumerate(jacs):
+            for d in range(3):
+                step = [np.asarray(x, dtype=complex) for x in args]
+                step[k][:, d] += 1j * h
+                assert_near_equal(jac[:, :, d], kernel(*step).imag / h, 1e-12)
+
+
 def test_lattice_bookkeeping():
     lat = Lattice(SURFACES)
     assert lat.num_panels == 2 * 4 + 2 and lat.num_strips == 6

@@ -147,24 +147,23 @@ class VLMAICComp(om.ExplicitComponent):
         total[:, :, te] += vel["wake"]
         partials["aic", "boundary_normals"] = total.ravel()
 
-        nrm = normals[:, :, None, :]  # (nn, npt, 1, c): against (..., npt, np, c, d)
-        d_point = _normal_part(nrm, vel["ring_d_point"][None])
-        d_point[:, :, te] += _normal_part(nrm, vel["wake_d_point"])
+        # Jacobians of lattice_velocities: (.., npt, c, ...), ring ones without the node axis.
+        d_point = _normal_part(normals, vel["ring_d_point"][None])
+        d_point[:, :, te] += _normal_part(normals, vel["wake_d_point"])
         partials["aic", "collocation_points"] = d_point.ravel()
 
-        # ring_d_vertices (npt, np, c, vertex, d): vertex moved ahead of c for the contraction.
-        d_vert = _normal_part(nrm[:, :, :, None], vel["ring_d_vertices"].transpose(0, 1, 3, 2, 4))
-        d_vert[:, :, te, 2] += _normal_part(nrm, vel["wake_d_p3"])
-        d_vert[:, :, te, 3] += _normal_part(nrm, vel["wake_d_p4"])
+        d_vert = _normal_part(normals, vel["ring_d_vertices"][None])
+        d_vert[:, :, te, 2:4] += _normal_part(normals, vel["wake_d_corners"])
         partials["aic", "ring_vertices"] = d_vert.ravel()
 
-        partials["aic", "freestream_direction"] = _normal_part(nrm, vel["wake_d_u"]).ravel()
+        partials["aic", "freestream_direction"] = _normal_part(normals, vel["wake_d_u"]).ravel()
 
 
 def _normal_part(normals, d):
-    """sum_c normals[..., c] d[..., c, :]: a normal's row of velocity derivatives (..., 3).
+    """sum_c normals[n, i, c] d[n, i, c, ...]: the normal's row of velocity derivatives.
 
-    Explicit over the three components (twice as fast as einsum on these small axes);
-    ``normals`` broadcasts against ``d[..., 0, :]`` without its last axis.
+    Explicit over the three components (faster than einsum on these small axes); ``d`` has the
+    velocity component on axis 2 and may have a node axis of 1.
     """
-    return sum(normals[..., c, None] * d[..., c, :] for c in range(3))
+    extra = (None,) * (d.ndim - 3)
+    return sum(normals[(slice(None), slice(None), c) + extra] * d[:, :, c] for c in range(3))

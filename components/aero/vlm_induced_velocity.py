@@ -122,15 +122,15 @@ class VLMInducedVelocityComp(om.ExplicitComponent):
         total[:, :, te] += vel["wake"]
         partials["induced_velocities", "circulation"] = total.transpose(0, 1, 3, 2).ravel()
 
-        d_vert = np.einsum("ijcvd,nj->nicjvd", vel["ring_d_vertices"], gamma)
-        d_vert[:, :, :, te, 2] += np.einsum("nitcd,nt->nictd", vel["wake_d_p3"], g_te)
-        d_vert[:, :, :, te, 3] += np.einsum("nitcd,nt->nictd", vel["wake_d_p4"], g_te)
+        # Jacobians of lattice_velocities: (.., npt, c, ...), ring ones without the node axis.
+        d_vert = vel["ring_d_vertices"][None] * gamma[:, None, None, :, None, None]
+        d_vert[:, :, :, te, 2:4] += vel["wake_d_corners"] * g_te[:, None, None, :, None, None]
         partials["induced_velocities", "ring_vertices"] = d_vert.reshape(nn * npn * 3, npn * 12)
 
         partials["induced_velocities", "force_points"] = (
-            np.einsum("ijcd,nj->nicd", vel["ring_d_point"], gamma)
-            + np.einsum("nitcd,nt->nicd", vel["wake_d_point"], g_te)
+            np.einsum("icjd,nj->nicd", vel["ring_d_point"], gamma)
+            + np.einsum("nictd,nt->nicd", vel["wake_d_point"], g_te)
         ).ravel()
         partials["induced_velocities", "freestream_direction"] = np.einsum(
-            "nitcd,nt->nicd", vel["wake_d_u"], g_te
+            "nictd,nt->nicd", vel["wake_d_u"], g_te
         ).ravel()
