@@ -208,3 +208,29 @@ def test_loads_partials_reuse_the_inflow_linearization_and_equal_their_own():
     prob.run_model()
     inflow.run_linearize()
     assert len(ppl._SHARED_FIELDS) == 2
+
+
+def test_linearization_reusing_the_solve_equals_a_fresh_one():
+    # The nonlinear solve leaves its last swirl solution and its checked inputs (keyed by the
+    # exact inputs and states) on the component; the linearization at the solved point reuses
+    # them. Its partials are those of a fresh evaluation, and changed inputs are checked again.
+    from lpc_mdo.components.rotor import pitt_peters_loads as ppl
+
+    prob = build(nr=2, spin=[1, -1])
+    prob.set_val("inplane_velocity", [[[25.0, -3.0]], [[25.0, -3.0]]])
+    prob.run_model()
+    comps = (prob.model.inflow, prob.model.loads)
+    ppl._SHARED_FIELDS.clear()
+    for comp in comps:
+        comp.run_linearize()
+    reused = [{k: np.array(v["val"]) for k, v in c._subjacs_info.items()} for c in comps]
+    ppl._SHARED_FIELDS.clear()
+    for comp, ref in zip(comps, reused, strict=True):
+        comp._field._last_swirl = (None, None)
+        comp._checked_inputs = None
+        comp.run_linearize()
+        for key, meta in comp._subjacs_info.items():
+            np.testing.assert_allclose(meta["val"], ref[key], rtol=1e-12, atol=1e-14, err_msg=key)
+    prob.set_val("chord", np.full((2, NRAD), -0.1))
+    with pytest.raises(om.AnalysisError, match="chord"):
+        prob.run_model()

@@ -59,15 +59,14 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.rotor.pitt_peters_loads import (
-    PITT_PETERS_INPUTS,
     RPM_TO_RAD_S,
     PittPetersBladeElements,
     SparsityPatterns,
     add_pitt_peters_inputs,
-    check_pitt_peters_inputs,
     declare_pitt_peters_options,
     input_kind,
     input_size,
+    pitt_peters_values,
     rotor_blade_options,
 )
 
@@ -282,8 +281,7 @@ class PittPetersInflowComp(om.ImplicitComponent):
 
     # ---------------------------------------------------------------- residual pieces
     def _values(self, inputs):
-        check_pitt_peters_inputs(self, inputs, self.options["hub_loss"])
-        return {name: inputs[name] for name in PITT_PETERS_INPUTS}
+        return pitt_peters_values(self, inputs)
 
     def _params(self, x, states, ints):
         nr, nn = self.options["num_rotors"], self.options["num_nodes"]
@@ -341,15 +339,8 @@ class PittPetersInflowComp(om.ImplicitComponent):
         """
         fld = self._field
         st = fld.evaluate(x, states, partials=True, shared=shared)
-        ints = {}
-        chained_t = fld.chain(st, st.dt, keys)
-        chained_f = fld.chain(st, st.dF, keys) if self._momentum else None
-        for name in self._loads:
-            ints[name] = fld.integrate(st, name)
-        blade = [name for name in self._loads if name != "loss_area"]
-        dints = fld.integrate_partials(st, blade, chained_t)
-        if "loss_area" in self._loads:
-            dints.update(fld.integrate_partials(st, ["loss_area"], chained_f))
+        values, dints = fld.integrate_partials(st, [(name, 1.0) for name in self._loads], keys)
+        ints = {name: values[..., i] for i, name in enumerate(self._loads)}
         p = self._params(x, states, ints)
 
         # Complex step of the 3x3 algebra over its per-rotor scalars: d[name] = dR/dp, (nr, nn, 3).
@@ -368,19 +359,14 @@ class PittPetersInflowComp(om.ImplicitComponent):
             "inplane_velocity": np.stack([d["v_x"], spin * d["v_y"]], axis=-1),
             "inflow_states": np.stack([d["lam0"], d["lamc"], d["lams"]], axis=-1),
         }
+        # dR/d(integral) (nr, nn, 3, I) times d(integral)/d(input) (nr, nn, I, n).
+        dload = np.stack([d[name] for name in self._loads], axis=-1)
         out = {}
-        for key in keys + ["station_width"]:
-            if key not in dints["thrust"]:
-                continue
-            total = direct.get(key, 0.0)
-            for name in self._loads:
-                dl = d[name]
-                di = dints[name][key]
-                if di.ndim == 2:  # per-op, per-rotor or per-node input
-                    total = total + dl * di[..., None]
-                else:  # vector per op (states, inplane) or per radial station
-                    total = total + dl[..., :, None] * di[..., None, :]
-            out[key] = np.asarray(total)
+        for key in keys:
+            total = dload @ dints[key]
+            if key in direct:
+                total += direct[key].reshape(total.shape)
+            out[key] = total
         return out
 
     # ---------------------------------------------------------------- OpenMDAO API

@@ -108,6 +108,29 @@ PITT_PETERS_INPUTS = {
 #: Per-operating-point vector inputs (and the states) and their sizes.
 _OP_VECTOR = {"inflow_states": 3, "inplane_velocity": 2}
 
+#: Inputs (and the states) the station field depends on, in the row order of the chained
+#: partials (PittPetersBladeElements.chain); station_width enters only the integrals.
+CHAIN_INPUTS = (
+    "inflow_states",
+    "rpm",
+    "axial_velocity",
+    "inplane_velocity",
+    "radius",
+    "hub_radius",
+    "station_radius",
+    "chord",
+    "twist",
+    "density",
+    "dynamic_viscosity",
+    "speed_of_sound",
+)
+
+#: Partial dict of PittPetersBladeElements.evaluate -> the station field it differentiates.
+_FIELD_OF_PARTIALS = {"dt": "t", "dd": "d", "dphi": "phi", "dF": "F"}
+
+#: Azimuth factor of an integral -> column of PittPetersBladeElements.trig.
+_TRIG_INDEX = {None: 0, "cos": 1, "sin": 2}
+
 
 def declare_pitt_peters_options(options):
     """Declare the options shared by the Pitt–Peters components (and the rotor group)."""
@@ -215,6 +238,32 @@ def check_pitt_peters_inputs(comp, inputs, hub_loss):
     )
 
 
+def _exact_key(x, states=()):
+    """Hashable key of inputs ``x`` (name -> array) and states: dtypes and exact bytes."""
+    return (
+        np.asarray(states).dtype.str,
+        np.asarray(states).tobytes(),
+        *(np.asarray(x[name]).dtype.str for name in sorted(x)),
+        *(np.asarray(x[name]).tobytes() for name in sorted(x)),
+    )
+
+
+def pitt_peters_values(comp, inputs):
+    """
+    Return the inputs of :data:`PITT_PETERS_INPUTS` of a component (name -> array), checked.
+
+    :func:`check_pitt_peters_inputs` runs only when the inputs differ (exact bytes) from those
+    the component last checked: its linearization and the repeated evaluations of its nonlinear
+    solve come at inputs already checked.
+    """
+    x = {name: inputs[name] for name in PITT_PETERS_INPUTS}
+    key = _exact_key(x)
+    if key != getattr(comp, "_checked_inputs", None):
+        check_pitt_peters_inputs(comp, x, comp.options["hub_loss"])
+        comp._checked_inputs = key
+    return x
+
+
 def atan2_cs(y, x):
     """arctan2(y, x), complex-step safe (the imaginary part carries the first derivative)."""
     if np.iscomplexobj(y) or np.iscomplexobj(x):
@@ -297,6 +346,10 @@ class PittPetersBladeElements:
         self.momentum_loss = loss_placement == "momentum" and (tip_loss or hub_loss)
         self.swirl = tangential_induction
         self._vt_guess = 0.0
+        # The last swirl solution (v_t and its section), keyed by the exact inputs and states:
+        # the Newton Jacobian and the linearization evaluate where the residual last did.
+        self._last_swirl = (None, None)
+        self._layouts = {}  # _layout() by the keys asked for
         # What the station field depends on besides the inputs (the polar by identity; the
         # cache entry holds the polar, so its id is not reused while the entry lives).
         self._signature = (
@@ -316,6 +369,10 @@ class PittPetersBladeElements:
         self.half_b = 0.5 * blades[:, None, None, None]
         self.spin = spin
         self.spin4 = spin[:, None, None, None]
+        # Azimuth weights (1, cos psi, sin psi), (N_psi, 3), and dU_T/d(inplane_velocity),
+        # (2, nr, 1, 1, N_psi).
+        self.trig = np.stack([np.ones(naz), np.cos(psi), np.sin(psi)], axis=1)
+        self.dut_dvip = np.stack(np.broadcast_arrays(self.sin, self.spin4 * self.cos))
         # Integral prefactor B/N_psi (or 1/N_psi without B), shape (nr, 1, 1).
         self.b_fac = (blades / naz)[:, None, None]
         self.one_fac = np.full((nr, 1, 1), 1.0 / naz)
@@ -331,19 +388,20 @@ class PittPetersBladeElements:
 
         Returns a namespace with the fields t, d, phi, F, the tangential induction v_t (station
         shape) and, with ``partials``, their partials with respect to the station primitives
-        (dicts ``dt``, ``dd``, ``dphi``, ``dF``; keys 'up', 'ut', 'vx', 'vip2', 'theta',
-        'chord', 'r', 'radius', 'hub_radius', 'density', 'dynamic_viscosity',
-        'speed_of_sound'; 'vip2' is norm(inplane_velocity)^2, through the swirl's mass flow).
+        at fixed U_T - v_t (dicts ``dt``, ``dd``, ``dphi``, ``dF``; keys 'up', 'ut', 'vx',
+        'theta', 'chord', 'r', 'radius', 'hub_radius', 'density', 'dynamic_viscosity',
+        'speed_of_sound', as far as the field depends on them, and 'ute', the partial with
+        respect to U_T - v_t) and ``dute``, the partials of U_T - v_t with respect to the
+        primitives (the same keys and 'vip2' = norm(inplane_velocity)^2, through the swirl's
+        mass flow); :meth:`chain` adds the two paths up.
+
+        The swirl solution of the last evaluation is kept (per field object, keyed by the
+        exact inputs and states): where the nonlinear solve last evaluated, its Newton Jacobian
+        and the linearization reuse it instead of solving again.
         """
         if not shared:
             return self._evaluate(x, states, partials)
-        key = (
-            self._signature,
-            partials,
-            np.asarray(states).dtype.str,
-            np.asarray(states).tobytes(),
-            *(np.asarray(x[name]).tobytes() for name in sorted(x)),
-        )
+        key = (self._signature, partials, *_exact_key(x, states))
         hit = _SHARED_FIELDS.get(key)
         if hit is None:
             hit = _SHARED_FIELDS[key] = (self.polar, self._evaluate(x, states, partials))
@@ -388,7 +446,12 @@ class PittPetersBladeElements:
             vip2 = np.sum(v_ip * v_ip, axis=-1)[:, :, None, None]
             um = np.sqrt(up * up + vip2)
             kappa = self.half_b / (2.0 * np.pi * rho * r)  # B/(4 pi rho r)
-            vt, sec = self._solve_swirl(geo, ut, um, kappa)
+            key = _exact_key(x, states)
+            if self._last_swirl[0] == key:  # e.g. the linearization at the solved point
+                vt, sec = self._last_swirl[1]
+            else:
+                vt, sec = self._solve_swirl(geo, ut, um, kappa)
+                self._last_swirl = (key, (vt, sec))
         else:
             vt = np.zeros_like(ut)
             sec = self._section(geo, ut, derivatives=partials)
@@ -455,14 +518,12 @@ class PittPetersBladeElements:
                     p[key] = q * coeff * df[key]
             raw[name] = p
         if self.swirl:
-            dute = self._swirl_partials(raw, sec, vt, um, kappa, rho, r, up)
+            st.dute = self._swirl_partials(raw, sec, vt, um, kappa, rho, r, up)
         else:
-            dute = {"ut": 1.0}
+            st.dute = {"ut": 1.0}
         for name, p in raw.items():
-            f_ute = p.pop("ute")
-            for key, val in dute.items():
-                p[key] = p.get(key, 0.0) + f_ute * val
             setattr(st, name, p)
+        st.chained, st.moments = {}, {}  # memos of chain() and of the azimuth moments
         return st
 
     def _section(self, geo, ute, derivatives=True):
@@ -640,45 +701,107 @@ class PittPetersBladeElements:
         return big_f, d
 
     # ---------------------------------------------------------------- chain rule to the inputs
-    def chain(self, st, p, keys):
+    def _layout(self, keys):
+        """
+        Canonical order of the chained inputs ``keys`` and their row slices.
+
+        Returns (keys, rows, n): the keys in :data:`CHAIN_INPUTS` order (station_width and other
+        names the station field does not depend on are left out), key -> slice of the rows of
+        the chained array, and the number of rows.
+        """
+        layout = self._layouts.get(tuple(keys))
+        if layout is None:
+            canonical = tuple(key for key in CHAIN_INPUTS if key in keys)
+            rows, n = {}, 0
+            for key in canonical:
+                rows[key] = slice(n, n + input_size(key))
+                n += input_size(key)
+            layout = self._layouts[tuple(keys)] = (canonical, rows, n)
+        return layout
+
+    def _input_factors(self, st):
+        """
+        Return the partials of the station primitives with respect to each input.
+
+        Returns input -> list of (primitive, d primitive/d input); the factors broadcast to
+        (m,) + station shape (m = input size). Computed once per station field.
+        """
+        if getattr(st, "input_factors", None) is None:
+            omega_r = st.omega * st.r
+            st.input_factors = {
+                "inflow_states": [
+                    (
+                        "up",
+                        np.stack(
+                            np.broadcast_arrays(
+                                st.omega * st.big_r, omega_r * self.cos, omega_r * self.sin
+                            )
+                        ),
+                    )
+                ],
+                "rpm": [
+                    ("up", RPM_TO_RAD_S * (st.big_r * st.lam0 + st.r * st.g)),
+                    ("ut", RPM_TO_RAD_S * st.r),
+                ],
+                "axial_velocity": [("up", 1.0), ("vx", 1.0)],
+                "inplane_velocity": [
+                    ("ut", self.dut_dvip),
+                    ("vip2", 2.0 * np.moveaxis(st.v_ip, -1, 0)),
+                ],
+                "radius": [("up", st.omega * st.lam0), ("radius", 1.0)],
+                "hub_radius": [("hub_radius", 1.0)],
+                "station_radius": [("up", st.omega * st.g), ("ut", st.omega), ("r", 1.0)],
+                "chord": [("chord", 1.0)],
+                "twist": [("theta", 1.0)],
+                "density": [("density", 1.0)],
+                "dynamic_viscosity": [("dynamic_viscosity", 1.0)],
+                "speed_of_sound": [("speed_of_sound", 1.0)],
+            }
+        return st.input_factors
+
+    def _chain_primitives(self, st, p, rows, out):
+        """out[rows[key]] = sum over the primitives of p[primitive] d primitive/d key."""
+        factors = self._input_factors(st)
+        for key, sl in rows.items():
+            dst = out[sl]
+            terms = [(p[prim], fac) for prim, fac in factors[key] if prim in p]
+            if not terms:
+                dst[...] = 0.0
+                continue
+            np.multiply(*terms[0], out=dst)
+            for val, fac in terms[1:]:
+                dst += val * fac
+
+    def chain(self, st, name, keys):
         """
         Chain a station field's partials to the component inputs (and inflow states).
 
-        ``p`` holds the primitive partials (from :meth:`evaluate`); returns name -> array of the
-        station shape, with a trailing axis of 3 ('inflow_states') or 2 ('inplane_velocity').
+        ``name`` is one of the partial dicts of :meth:`evaluate` ('dt', 'dd', 'dphi', 'dF').
+        The partials at fixed U_T - v_t and those through U_T - v_t (``st.dute``, chained once
+        per field and shared) add up. Returns (rows, array): the array has shape
+        (n + 1,) + station shape, row ``rows[key]`` (a slice of input_size(key) rows) the partial
+        with respect to input ``key`` (component by component for the states and
+        inplane_velocity), and its last row the field itself (for the quadrature partials).
+        Memoized on ``st``.
         """
-        shape = self.shape
-        zero = np.zeros(shape)
-        f_up, f_ut = p["up"], p["ut"]
-        out = {}
-        for key in keys:
-            if key == "inflow_states":
-                out[key] = np.stack(
-                    [
-                        f_up * st.omega * st.big_r,
-                        f_up * st.omega * st.r * self.cos,
-                        f_up * st.omega * st.r * self.sin,
-                    ],
-                    axis=-1,
-                )
-            elif key == "rpm":
-                out[key] = RPM_TO_RAD_S * (f_up * (st.big_r * st.lam0 + st.r * st.g) + f_ut * st.r)
-            elif key == "axial_velocity":
-                out[key] = f_up + p.get("vx", zero)
-            elif key == "inplane_velocity":
-                out[key] = np.stack([f_ut * self.sin, f_ut * self.spin4 * self.cos], axis=-1)
-                if "vip2" in p:
-                    out[key] = out[key] + 2.0 * p["vip2"][..., None] * st.v_ip
-            elif key == "radius":
-                out[key] = f_up * st.omega * st.lam0 + p.get("radius", zero)
-            elif key == "station_radius":
-                out[key] = f_up * st.omega * st.g + f_ut * st.omega + p.get("r", zero)
-            elif key == "twist":
-                out[key] = p.get("theta", zero)
-            else:  # hub_radius, chord, density, dynamic_viscosity, speed_of_sound
-                out[key] = p.get(key, zero)
-            out[key] = np.broadcast_to(out[key], shape + out[key].shape[4:])
-        return out
+        keys, rows, n = self._layout(keys)
+        memo = st.chained.get((name, keys))
+        if memo is not None:
+            return memo
+        p = getattr(st, name)
+        direct = {key: val for key, val in p.items() if key != "ute"}
+        ute = st.chained.get(("dute", keys))
+        if ute is None:
+            ute = np.empty((n,) + self.shape, dtype=np.result_type(st.t, *st.dute.values()))
+            self._chain_primitives(st, st.dute, rows, ute)
+            st.chained["dute", keys] = ute
+        field = getattr(st, _FIELD_OF_PARTIALS[name])
+        out = np.empty((n + 1,) + self.shape, dtype=np.result_type(field, ute, *direct.values()))
+        self._chain_primitives(st, direct, rows, out[:n])
+        out[:n] += p["ute"] * ute
+        out[n] = field
+        st.chained[name, keys] = (rows, out)
+        return rows, out
 
     # ---------------------------------------------------------------- integrals
     def _weight(self, st, name):
@@ -695,58 +818,65 @@ class PittPetersBladeElements:
         m, _ = self._weight(st, name)
         return self._factor(name)[..., 0] * np.sum(st.width * m * field, axis=(2, 3))
 
-    def integrate_partials(self, st, names, chained):
+    def _moments(self, st, name, keys):
         """
-        Return the partials of the integrals ``names`` (one field) with respect to their inputs.
+        Azimuth moments (1, cos psi, sin psi) of a field's chained partials and of the field.
 
-        The inputs are those in ``chained`` (the field's :meth:`chain` output) plus
-        station_radius and station_width (through the quadrature). All integrals and inputs in
-        one batched product: the chained partials stacked along a last axis (k values), the
-        integrals' weights w_i = dr r^p trig along another, and per (rotor, node, station)
-        W^T V sums over the azimuth; the inputs that are not per station also over the radius.
-
-        Returns name -> (input -> array): (nr, nn) for per-op, per-rotor and per-node inputs,
-        (nr, nn, k) for inflow_states and inplane_velocity, (nr, nn, num_radial) for per-station
-        inputs.
+        Returns (rows, moments), moments of shape (n + 1, nr, nn, num_radial, 3): the rows of
+        :meth:`chain` summed over the azimuth with the weights 1, cos psi and sin psi, all in
+        one matrix product. Memoized on ``st``.
         """
-        names = list(names)
-        field = getattr(st, self.INTEGRALS[names[0]][0])
-        shape = self.shape
-        keys = list(chained)
-        sizes = [_OP_VECTOR.get(key, 1) for key in keys]
-        stack = np.empty(shape + (sum(sizes),), dtype=np.result_type(*chained.values()))
-        col = 0
-        for key, size in zip(keys, sizes, strict=True):
-            stack[..., col : col + size] = chained[key].reshape(shape + (size,))
-            col += size
-        weights = [self._weight(st, name) for name in names]
-        wm = np.empty(shape + (len(names),), dtype=np.result_type(st.width, field))
-        for i, (m, _) in enumerate(weights):
-            wm[..., i] = st.width * m
-        # (nr, nn, nrad, I, naz) @ (nr, nn, nrad, naz, K) -> per-station azimuth sums.
-        radial = np.swapaxes(wm, -1, -2) @ stack
-        total = np.sum(radial, axis=2)
+        rows, chained = self.chain(st, name, keys)
+        key = (name, tuple(rows))
+        if key not in st.moments:
+            naz = self.shape[-1]
+            mom = chained.reshape(-1, naz) @ self.trig
+            st.moments[key] = mom.reshape(chained.shape[:-1] + (3,))
+        return rows, st.moments[key]
+
+    def integrate_partials(self, st, terms, keys):
+        """
+        Return integrals and their partials with respect to their inputs.
+
+        ``terms``: sequence of (name, coefficient), the integral ``name`` of
+        :attr:`INTEGRALS` times a coefficient (scalar or per rotor, (num_rotors,)); the
+        integrals of a call are stacked along an axis of length I. The inputs are ``keys``
+        (those the station field depends on) plus station_radius and station_width (through
+        the quadrature weights w = dr r^p trig(psi)). The chained partials are summed over the
+        azimuth once per field (:meth:`_moments`); per (rotor, node, station) the moment times
+        coefficient x dr r^p is the contribution of a station, summed over the radius for the
+        inputs that are not per station.
+
+        Returns (values, partials): values (nr, nn, I); partials input -> (nr, nn, I, n), n =
+        input_size for the states and per-op, per-rotor and per-node inputs, num_radial for the
+        per-station inputs and station_width.
+        """
+        nr = self.shape[0]
+        moments, weights, dweights = [], [], []
+        for name, coef in terms:
+            field, power, trig, times_b = self.INTEGRALS[name]
+            rows, mom = self._moments(st, "d" + field, keys)
+            moments.append(mom[..., _TRIG_INDEX[trig]])
+            fac = np.broadcast_to(coef * (self.b_fac if times_b else self.one_fac)[:, 0, 0], nr)
+            weights.append(fac[:, None, None] * st.r[..., 0] ** power)  # (nr, 1, nrad)
+            dweights.append(fac[:, None, None] * power * st.r[..., 0] ** (power - 1))
+        n = sum(sl.stop - sl.start for sl in rows.values())
+        mom = np.stack(moments, axis=-1)  # (n + 1, nr, nn, nrad, I)
+        weight = np.stack(weights, axis=-1)  # coefficient B/N_psi r^p, (nr, 1, nrad, I)
+        width = st.width  # (nr, 1, nrad, 1)
+        d_width = mom[n] * weight  # (nr, nn, nrad, I)
+        station = mom[:n] * (weight * width)  # per-station contributions (n, nr, nn, nrad, I)
+        total = np.sum(station, axis=3).transpose(1, 2, 3, 0)  # (nr, nn, I, n)
+        station = station.transpose(1, 2, 4, 3, 0)  # (nr, nn, I, nrad, n)
         out = {}
-        for i, name in enumerate(names):
-            fac = self._factor(name)
-            res = {}
-            col = 0
-            for key, size in zip(keys, sizes, strict=True):
-                kind = PITT_PETERS_INPUTS[key][0] if key in PITT_PETERS_INPUTS else "op"
-                if key in _OP_VECTOR:
-                    res[key] = fac * total[:, :, i, col : col + size]
-                elif kind == "radial":
-                    res[key] = fac * radial[:, :, :, i, col]
-                else:
-                    res[key] = fac[..., 0] * total[:, :, i, col]
-                col += size
-            m, dm_dr = weights[i]
-            res["station_width"] = fac * np.sum(np.broadcast_to(m * field, shape), axis=3)
-            if dm_dr is not None:
-                extra = fac * np.sum(np.broadcast_to(st.width * dm_dr * field, shape), axis=3)
-                res["station_radius"] = res.get("station_radius", 0.0) + extra
-            out[name] = res
-        return out
+        for key, sl in rows.items():
+            out[key] = station[..., sl.start] if input_kind(key) == "radial" else total[..., sl]
+        # d w/d r through r^p (p = 1: dr trig)
+        d_radius = np.swapaxes(mom[n] * (np.stack(dweights, axis=-1) * width), -1, -2)
+        out["station_radius"] = out.get("station_radius", 0.0) + d_radius
+        out["station_width"] = np.swapaxes(d_width, -1, -2)
+        values = np.sum(d_width * width, axis=2)
+        return values, out
 
 
 #: Station fields with partials shared between components (PittPetersBladeElements.evaluate
@@ -995,8 +1125,7 @@ class PittPetersLoadsComp(om.ExplicitComponent):
             self.declare_partials(out, "station_width", rows=rows, cols=cols)
 
     def _values(self, inputs):
-        check_pitt_peters_inputs(self, inputs, self.options["hub_loss"])
-        return {name: inputs[name] for name in PITT_PETERS_INPUTS}
+        return pitt_peters_values(self, inputs)
 
     def compute(self, inputs, outputs):
         fld = self._field
@@ -1017,32 +1146,33 @@ class PittPetersLoadsComp(om.ExplicitComponent):
     def compute_partials(self, inputs, partials):
         fld = self._field
         st = fld.evaluate(self._values(inputs), inputs["inflow_states"], partials=True, shared=True)
-        keys = self._wrt
-        dt = fld.chain(st, st.dt, keys)
-        dd = fld.chain(st, st.dd, keys)
-        dphi = fld.chain(st, st.dphi, self._phi_wrt)
-        for name in keys:
-            partials["thrust_per_span", name] = dt[name].ravel()
-            partials["drag_per_span", name] = dd[name].ravel()
-            if name in self._phi_wrt:
-                partials["inflow_angle", name] = dphi[name].ravel()
+        for out, name, keys in (
+            ("thrust_per_span", "dt", self._wrt),
+            ("drag_per_span", "dd", self._wrt),
+            ("inflow_angle", "dphi", self._phi_wrt),
+        ):
+            rows, chained = fld.chain(st, name, keys)
+            for key, sl in rows.items():
+                val = (
+                    chained[sl.start]
+                    if sl.stop == sl.start + 1
+                    else np.moveaxis(chained[sl], 0, -1)
+                )
+                partials[out, key] = val.ravel()
 
-        spin = fld.spin[:, None]
-        ints = fld.integrate_partials(st, ("thrust", "moment_cos", "moment_sin"), dt)
-        ints.update(fld.integrate_partials(st, ("torque", "drag_sin", "drag_cos"), dd))
-        comps = {
-            "thrust": [(ints["thrust"], 1.0)],
-            "torque": [(ints["torque"], 1.0)],
-            "inplane_force": [(ints["drag_sin"], -1.0), (ints["drag_cos"], -spin)],
-            "hub_moment": [(ints["moment_sin"], -spin), (ints["moment_cos"], -1.0)],
-        }
-        for out, parts in comps.items():
-            for name in keys + ["station_width"]:
-                if name not in parts[0][0]:
-                    continue
-                vals = []
-                for d, sign in parts:
-                    v = d[name]
-                    sgn = np.reshape(sign, np.shape(sign) + (1,) * (v.ndim - np.ndim(sign)))
-                    vals.append(sgn * v)
-                partials[out, name] = np.stack(vals, axis=2).ravel()
+        # The hub loads' components as signed integrals (as in compute), all in one call.
+        spin = fld.spin
+        hub_loads = (
+            ("thrust", (("thrust", 1.0),)),
+            ("hub_moment", (("moment_sin", -spin), ("moment_cos", -1.0))),
+            ("torque", (("torque", 1.0),)),
+            ("inplane_force", (("drag_sin", -1.0), ("drag_cos", -spin))),
+        )
+        terms = [term for _, parts in hub_loads for term in parts]
+        _, ints = fld.integrate_partials(st, terms, self._wrt)
+        start = 0
+        for out, parts in hub_loads:
+            sl = slice(start, start + len(parts))
+            start = sl.stop
+            for key in self._wrt + ["station_width"]:
+                partials[out, key] = ints[key][:, :, sl].ravel()
