@@ -286,87 +286,152 @@ class BodyMomentSlopeComp(om.ExplicitComponent):
         for out in ("body_moment_slope", "body_moment_zero_lift"):
             self.declare_partials(out, self._INPUTS)
 
-    def _sums(self, length, area, span, root_chord):
+    def _points(self, length, root_chord):
+        """Fuselage parts outside the root chord (:func:`fuselage_wing_split`), then the booms."""
         o = self.options
         le = o["wing_root_leading_edge_x"]
-        cla = wing_lift_slope(span**2 / area, o["wing_sweep"])
-        xc, _, strip = fuselage_strips(length, o["fuselage_max_width"], o["num_strips"])
-        g_f = multhopp_flow_gradient(xc, 0.0, span, area, cla, le, root_chord)
-        k_f = 0.5 * np.pi * munk_apparent_mass_factor(length / o["fuselage_max_width"])
-        # Booms: the same lifting line at each strip's own span station.
-        g_b = 1.0 + lifting_line_upwash_gradient(
-            o["boom_x"], o["boom_y"], span, area, cla, le - 0.25 * root_chord
+        split = fuselage_wing_split(
+            length, o["fuselage_max_width"], le, root_chord, o["num_strips"]
         )
-        g_b = g_b * o["boom_flow_mask"]
-        k_b = 0.5 * np.pi * o["boom_apparent_mass_factor"]
-        sb = o["boom_strip_factor"]
-        slope = [k_f * np.sum(strip * g_f), k_b * np.sum(sb * g_b)]
-        zero_lift = [k_f * np.sum(strip * (g_f - 1.0)), k_b * np.sum(sb * (g_b - 1.0))]
-        return slope, zero_lift
+        x = np.concatenate([split["front_x"], split["rear_x"], o["boom_x"]])
+        y = np.concatenate([np.zeros(2 * o["num_strips"]), o["boom_y"]])
+        return split, x - (le - 0.25 * root_chord), y
+
+    def _prefactor(self, area, span):
+        """C_La 2 S/(pi b): the lifting line's upwash per unit kernel value."""
+        cla = wing_lift_slope(span**2 / area, self.options["wing_sweep"])
+        return cla * 2.0 * area / (np.pi * span)
+
+    def _munk(self, length):
+        return 0.5 * np.pi * munk_apparent_mass_factor(length / self.options["fuselage_max_width"])
 
     def compute(self, inputs, outputs):
-        slope, zero_lift = self._sums(*(inputs[n][0] for n in self._INPUTS))
-        outputs["body_moment_slope"] = slope
-        outputs["body_moment_zero_lift"] = zero_lift
+        length, area, span, root_chord = (inputs[n][0] for n in self._INPUTS)
+        o = self.options
+        n = o["num_strips"]
+        split, xi, y = self._points(length, root_chord)
+        g = 1.0 + self._prefactor(area, span) * elliptic_wake_kernel(xi, y, span)
+        # Fuselage: the parts outside the root chord at g of their centroids; the part under
+        # it has g = 0 (no slope; beta = alpha_0w there, so -1 in the zero-lift sum).
+        w2 = split["width_squared"]
+        slope_f = np.sum(w2 * (split["front_length"] * g[:n] + split["rear_length"] * g[n : 2 * n]))
+        k_f = self._munk(length)
+        # Booms: strip centres, the file's mask (see boom_strips).
+        k_b = 0.5 * np.pi * o["boom_apparent_mass_factor"]
+        sb = o["boom_strip_factor"]
+        g_b = g[2 * n :] * o["boom_flow_mask"]
+        outputs["body_moment_slope"] = [k_f * slope_f, k_b * np.sum(sb * g_b)]
+        outputs["body_moment_zero_lift"] = [
+            k_f * (slope_f - np.sum(w2) * length / n),
+            k_b * np.sum(sb * (g_b - 1.0)),
+        ]
 
     def compute_partials(self, inputs, partials):
-        # The sums are k sum_i s_i g_i with g_i = 1 + P(S, b) W(xi_i, y_i, b) (fuselage: zero
-        # under the root chord; booms: times the flow mask), P = C_La(b^2/S) 2 S/(pi b) and W
-        # the lifting line's geometric kernel at the distance xi_i = x_i - (x_le - c/4) ahead of
-        # the bound vortex, x_i = -L f_i on the fuselage. W is pointwise in the points, so two
-        # complex evaluations of W (all xi at once, then b) give every derivative; the scalar
-        # factors P and k_f(L) by their own complex steps (exact to round-off).
+        # Fuselage: A = sum_i w_i^2 (l_f g(x_f) + l_r g(x_r)) over the parts outside the root
+        # chord (lengths l, centroids x), S_f = k_f(L) A and Z_f = k_f (A - sum w^2 L/n)
+        # (the parts' own lengths cancel against the part under the chord); g = 1 + P(S, b)
+        # W(xi, y, b) with P = C_La(b^2/S) 2 S/(pi b) and W the lifting line's geometric kernel
+        # at xi = x - (x_le - c/4). W is pointwise in the points, so two complex evaluations (all
+        # xi at once, then b) give every derivative; P and k_f by their own complex steps.
         o = self.options
         length, area, span, root_chord = (inputs[n][0] for n in self._INPUTS)
         h = 1e-30
         n = o["num_strips"]
-        le, width = o["wing_root_leading_edge_x"], o["fuselage_max_width"]
-        xc, _, strip = fuselage_strips(length, width, n)
-        fraction = (np.arange(n) + 0.5) / n
-        x_bound = le - 0.25 * root_chord
-        xi = np.concatenate([xc, o["boom_x"]]) - x_bound
-        y = np.concatenate([np.zeros(n), o["boom_y"]])
+        split, xi, y = self._points(length, root_chord)
         w_xi = elliptic_wake_kernel(xi + 1j * h, y, span)
         w = w_xi.real
         dw_dxi = w_xi.imag / h
         dw_db = elliptic_wake_kernel(xi, y, span + 1j * h).imag / h
-
-        def prefactor(s, b):
-            return wing_lift_slope(b**2 / s, o["wing_sweep"]) * 2.0 * s / (np.pi * b)
-
-        p = prefactor(area, span)
-        dp_ds = prefactor(area + 1j * h, span).imag / h
-        dp_db = prefactor(area, span + 1j * h).imag / h
-
-        def munk(length):
-            return 0.5 * np.pi * munk_apparent_mass_factor(length / width)
-
-        k_f, dk_dl = munk(length), munk(length + 1j * h).imag / h
-        # Flow gradients and their derivatives (rows: fuselage strips, then boom strips).
-        keep = np.concatenate(
-            [~((xc <= le) & (xc >= le - root_chord)), o["boom_flow_mask"].astype(bool)]
-        )
-        g = np.where(keep, 1.0 + p * w, 0.0)
+        p = self._prefactor(area, span)
+        dp_ds = self._prefactor(area + 1j * h, span).imag / h
+        dp_db = self._prefactor(area, span + 1j * h).imag / h
+        k_f, dk_dl = self._munk(length), self._munk(length + 1j * h).imag / h
+        g = 1.0 + p * w
+        fus = slice(0, 2 * n)
+        w2 = np.tile(split["width_squared"], 2)
+        lengths = np.concatenate([split["front_length"], split["rear_length"]])
+        nb = xi.size - 2 * n
+        # d(xi)/d(L) and d(xi)/d(c) of every point; d(part length)/d(L), d(c).
+        dxi_dl = np.concatenate([split["front_dx_dlength"], split["rear_dx_dlength"], np.zeros(nb)])
+        dxi_dc = 0.25 + np.concatenate([np.zeros(n), split["rear_dx_dchord"], np.zeros(nb)])
+        dlen = {
+            "fuselage_length": np.concatenate(
+                [split["front_dlength_dlength"], split["rear_dlength_dlength"]]
+            ),
+            "wing_root_chord": np.concatenate([np.zeros(n), split["rear_dlength_dchord"]]),
+        }
         dg = {
             "wing_area": dp_ds * w,
             "wing_span": dp_db * w + p * dw_db,
-            "wing_root_chord": 0.25 * p * dw_dxi,
-            "fuselage_length": np.concatenate([-fraction, np.zeros(xi.size - n)]) * p * dw_dxi,
+            "wing_root_chord": p * dw_dxi * dxi_dc,
+            "fuselage_length": p * dw_dxi * dxi_dl,
         }
         k_b = 0.5 * np.pi * o["boom_apparent_mass_factor"]
-        weight = np.concatenate([k_f * strip, k_b * o["boom_strip_factor"]])
-        body = [slice(0, n), slice(n, None)]
-        # The fuselage's strip lengths (s_i = w_i^2 L/n) and k_f also grow with L.
-        extra = dk_dl * strip + k_f * strip / length
-        own = {
-            "body_moment_slope": np.array([np.sum(extra * g[:n]), 0.0]),
-            "body_moment_zero_lift": np.array([np.sum(extra * (g[:n] - 1.0)), 0.0]),
-        }
+        boom_weight = k_b * o["boom_strip_factor"] * o["boom_flow_mask"]
+        slope_f = np.sum(w2 * lengths * g[fus])
         for name, d in dg.items():
-            d = np.where(keep, d, 0.0) * weight
-            total = np.array([np.sum(d[part]) for part in body])
-            for out in own:
-                partials[out, name] = total + own[out] if name == "fuselage_length" else total
+            d_fus = np.sum(w2 * (lengths * d[fus] + dlen.get(name, 0.0) * g[fus]))
+            d_boom = np.sum(boom_weight * d[2 * n :])
+            d_slope = np.array([k_f * d_fus, d_boom])
+            d_zero = d_slope.copy()
+            if name == "fuselage_length":
+                # k_f(L), and the whole strips' sum w^2 L/n of the zero-lift part.
+                d_slope[0] += dk_dl * slope_f
+                total = np.sum(split["width_squared"]) / n
+                d_zero[0] += dk_dl * (slope_f - total * length) - k_f * total
+            partials["body_moment_slope", name] = d_slope
+            partials["body_moment_zero_lift", name] = d_zero
+
+
+def fuselage_wing_split(length, max_width, wing_leading_edge_x, root_chord, num_strips=40):
+    """
+    Split the strips of :func:`fuselage_strips` where the wing's root chord covers them.
+
+    Strip i spans x in [-(i+1) L/n, -i L/n]; the root chord covers [x_le - c, x_le], where the
+    wing carries the load (DATCOM 4.2.2.1). Each strip's part ahead of the chord ("front") and
+    behind it ("rear") enters the strip sums with its exact length at its own centroid (the
+    midpoint rule on the part), so the sums are continuous in L and c where a chord edge
+    crosses a strip; an empty part has length 0 and its centroid on the chord's edge.
+
+    Returns
+    -------
+    dict
+        ``width_squared`` (n,), m**2; for ``front`` and ``rear``: ``_length`` and ``_x``
+        (centroid) in m, their derivatives ``_dlength_dlength``, ``_dx_dlength`` (d/dL) and, for
+        the rear part, ``_dlength_dchord`` and ``_dx_dchord`` (d/dc; the front part does not
+        depend on c).
+    """
+    n = num_strips
+    i = np.arange(n)
+    _, width, _ = fuselage_strips(length, max_width, n)
+    top, bottom = -length * i / n, -length * (i + 1) / n
+    dtop, dbottom = -i / n, -(i + 1) / n
+    le, lo = wing_leading_edge_x, wing_leading_edge_x - root_chord
+    # Ahead of the chord: [max(bottom, le), top].
+    start = np.maximum(bottom, le)
+    dstart = np.where(bottom > le, dbottom, 0.0)
+    front = top > start
+    front_len = np.where(front, top - start, 0.0)
+    front_x = np.where(front, 0.5 * (start + top), le)
+    # Behind it: [bottom, min(top, le - c)].
+    end = np.minimum(top, lo)
+    end_dl, end_dc = np.where(top < lo, dtop, 0.0), np.where(top < lo, 0.0, -1.0)
+    rear = end > bottom
+    rear_len = np.where(rear, end - bottom, 0.0)
+    rear_x = np.where(rear, 0.5 * (bottom + end), lo)
+    return {
+        "width_squared": width**2,
+        "front_length": front_len,
+        "front_x": front_x,
+        "front_dlength_dlength": np.where(front, dtop - dstart, 0.0),
+        "front_dx_dlength": np.where(front, 0.5 * (dstart + dtop), 0.0),
+        "rear_length": rear_len,
+        "rear_x": rear_x,
+        "rear_dlength_dlength": np.where(rear, end_dl - dbottom, 0.0),
+        "rear_dx_dlength": np.where(rear, 0.5 * (dbottom + end_dl), 0.0),
+        "rear_dlength_dchord": np.where(rear, end_dc, 0.0),
+        "rear_dx_dchord": np.where(rear, 0.5 * end_dc, -1.0),
+    }
 
 
 def fuselage_strips(length, max_width, num_strips=40):
