@@ -513,5 +513,6 @@ def solve_stage(
     log(
         f"{name}: success={stage.success} iterations={stage.iterations} "
         f"{stage.seconds:.1f} s gross mass {stage.gross_mass:.2f} kg"
+        + ("" if stage.exit_status == "SUCCESS" else f" ({stage.exit_status})")
     )
     return stage

@@ -118,3 +118,110 @@ def test_make_driver_gives_slsqp_driver_and_penalty_option():
     assert driver.options["failure_penalty"] == 10.0
     with pytest.raises(ValueError, match="failure_penalty"):
         driver.options["failure_penalty"] = -1.0
+
+
+class Banana(om.ExplicitComponent):
+    """f = 1 + 100 (y - x^2)^2 + (1 - x)^2 (Rosenbrock plus 1: minimum 1 at (1, 1)); c = x + y."""
+
+    def setup(self):
+        self.add_input("x", 0.0)
+        self.add_input("y", 0.0)
+        self.add_output("f", 0.0)
+        self.add_output("c", 0.0)
+        self.declare_partials("f", ["x", "y"])
+        self.declare_partials("c", ["x", "y"], val=1.0)
+
+    def compute(self, inputs, outputs):
+        x, y = inputs["x"][0], inputs["y"][0]
+        outputs["f"] = 1.0 + 100.0 * (y - x * x) ** 2 + (1.0 - x) ** 2
+        outputs["c"] = x + y
+
+    def compute_partials(self, inputs, partials):
+        x, y = inputs["x"][0], inputs["y"][0]
+        partials["f", "x"] = -400.0 * x * (y - x * x) - 2.0 * (1.0 - x)
+        partials["f", "y"] = 200.0 * (y - x * x)
+
+
+def banana_run(**options):
+    prob = om.Problem(reports=False)
+    prob.model.add_subsystem("banana", Banana(), promotes=["*"])
+    prob.model.add_design_var("x", lower=-5.0, upper=5.0)
+    prob.model.add_design_var("y", lower=-5.0, upper=5.0)
+    prob.model.add_objective("f")
+    prob.model.add_constraint("c", upper=5.0)  # inactive along the path
+    prob.driver = SlsqpDriver(tol=1e-12, disp=False, **options)
+    prob.setup()
+    prob.set_val("x", -1.2)
+    prob.set_val("y", 1.0)
+    iterates = []
+    original = prob.driver._iteration_done
+
+    def spy(intermediate_result):
+        iterates.append(float(intermediate_result.fun))
+        original(intermediate_result)
+
+    prob.driver._iteration_done = spy
+    prob.run_driver()
+    return prob, iterates
+
+
+def test_acceptable_point_stop_ends_a_stalled_run_as_success():
+    # Reference: the same run without the stop converges to the closed-form minimum f = 1 at
+    # (1, 1); with it, the run ends at the first iterate whose objective is within 2 % of the
+    # best of the 3 iterations before (every iterate is feasible: c = x + y stays below 5).
+    full, full_iterates = banana_run()
+    assert full.driver.result.success and full.driver.acceptable_stop is None
+    assert_near_equal(full.get_val("f"), 1.0, 1e-9)
+
+    prob, iterates = banana_run(acceptable_iter=3, acceptable_obj_change=0.02)
+    stop = len(iterates)
+    assert 3 < stop < len(full_iterates)
+    assert prob.driver.result.success
+    assert prob.driver.result.iter_count == stop
+    assert prob.driver.result.exit_status.startswith("SUCCESS (acceptable point")
+    best = np.minimum.accumulate(iterates)
+    assert abs(best[-4] - iterates[-1]) <= 0.02 * iterates[-1]
+    # No earlier iterate met the test.
+    for k in range(3, stop - 1):
+        assert abs(best[k - 3] - iterates[k]) > 0.02 * iterates[k]
+    # The model holds the last iterate.
+    assert_near_equal(prob.get_val("f")[0], iterates[-1], 1e-12)
+
+
+def test_acceptable_point_needs_a_feasible_iterate():
+    # The same run with a constraint that every iterate violates (c >= 10; x, y <= 5 allows
+    # it only at the corner): no iterate is acceptable, so the stop never fires.
+    prob = om.Problem(reports=False)
+    prob.model.add_subsystem("banana", Banana(), promotes=["*"])
+    prob.model.add_design_var("x", lower=-5.0, upper=4.0)
+    prob.model.add_design_var("y", lower=-5.0, upper=4.0)
+    prob.model.add_objective("f")
+    prob.model.add_constraint("c", lower=10.0)
+    prob.driver = SlsqpDriver(
+        tol=1e-12, disp=False, maxiter=20, acceptable_iter=1, acceptable_obj_change=1.0
+    )
+    prob.setup()
+    prob.run_driver()
+    assert prob.driver.acceptable_stop is None
+    assert not prob.driver.result.success
+    assert prob.driver.max_constraint_violation() >= 2.0 - 1e-9  # c <= 8 at the corner
+
+
+def test_max_constraint_violation_is_in_the_driver_scaled_space():
+    # Hand computation: x = 3, y = 1 -> c = 4, f = 1 + 100 * 64 + 4 = 6405.
+    prob = om.Problem(reports=False)
+    prob.model.add_subsystem("banana", Banana(), promotes=["*"])
+    prob.model.add_subsystem("copy", om.ExecComp("g = f"), promotes=["*"])
+    prob.model.add_design_var("x")
+    prob.model.add_objective("f")
+    prob.model.add_constraint("c", equals=1.0, ref=2.0)  # |4 - 1| / 2 = 1.5
+    prob.model.add_constraint("g", upper=6000.0, ref=100.0)  # (6405 - 6000) / 100 = 4.05
+    prob.driver = SlsqpDriver(disp=False)
+    prob.setup()
+    prob.set_val("x", 3.0)
+    prob.set_val("y", 1.0)
+    prob.run_model()
+    assert_near_equal(prob.driver.max_constraint_violation(), 4.05, 1e-12)
+    prob.model.set_val("y", 9.0 + 1e-3)  # f = 1 + 0.1 + 4 = 5.1 (within), c = 12.001: 5.5005
+    prob.run_model()
+    assert_near_equal(prob.driver.max_constraint_violation(), 5.5005, 1e-12)

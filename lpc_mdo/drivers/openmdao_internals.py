@@ -215,17 +215,21 @@ class ScipyHooks(FailedCaseFlags, om.ScipyOptimizeDriver):
 
 
 @contextlib.contextmanager
-def scipy_iteration_callback(callback):
+def scipy_iteration_callback(callback, finish=None):
     """
     Make ``ScipyOptimizeDriver.run`` pass ``callback`` to ``scipy.optimize.minimize``.
 
     SciPy calls it after every major iteration with the iterate (``intermediate_result``);
-    OpenMDAO's driver passes no callback of its own.
+    OpenMDAO's driver passes no callback of its own. A callback that raises ``StopIteration``
+    ends the run (SciPy then reports ``success = False``, status 99).
 
     Parameters
     ----------
     callback : callable
-        ``callback(intermediate_result)``; returns nothing.
+        ``callback(intermediate_result)``; returns nothing or raises ``StopIteration``.
+    finish : callable or None
+        ``finish(result)`` is applied to SciPy's ``OptimizeResult`` before
+        ``ScipyOptimizeDriver.run`` reads its ``success`` and ``message``.
     """
     from openmdao.drivers import scipy_optimizer
 
@@ -233,7 +237,10 @@ def scipy_iteration_callback(callback):
 
     def minimize(*args, **kwargs):
         kwargs["callback"] = callback
-        return original(*args, **kwargs)
+        result = original(*args, **kwargs)
+        if finish is not None:
+            finish(result)
+        return result
 
     scipy_optimizer.minimize = minimize
     try:

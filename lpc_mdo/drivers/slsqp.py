@@ -1,5 +1,6 @@
-"""SLSQP driver: OpenMDAO's ``ScipyOptimizeDriver`` that backs off from failed evaluations."""
+"""SLSQP driver: ``ScipyOptimizeDriver`` that backs off from failures and stops when stalled."""
 
+import numpy as np
 import openmdao.api as om
 from openmdao.utils.om_warnings import DriverWarning, issue_warning
 
@@ -22,10 +23,28 @@ class SlsqpDriver(omi.ScipyHooks):
     first evaluation, or any other exception, is re-raised as before. The messages are kept in
     ``analysis_errors``, as :class:`lpc_mdo.drivers.IpoptDriver` does.
 
+    SciPy's SLSQP stops when an iteration changes the scaled objective by less than ``tol`` and
+    the *sum* of the scaled constraint violations is below ``tol`` (Kraft 1988, the ``acc``
+    test of ``slsqp``). In a problem with a hundred constraint rows that are each met to a
+    fraction of ``tol``, the sum can stay above it for hundreds of iterations while the
+    objective creeps. With ``acceptable_iter`` > 0 the driver also stops, as a success, at an
+    *acceptable* point, in the spirit of IPOPT's ``acceptable_iter`` (Wachter and Biegler 2006,
+    Sec. 3.9): the current iterate's largest scaled violation is at most
+    ``acceptable_constr_viol`` and the best objective among the iterates of the last
+    ``acceptable_iter`` iterations that met that violation differs from the current objective by
+    at most ``acceptable_obj_change`` times its size. ``acceptable_stop`` then says why it
+    stopped (None otherwise).
+
     Options
     -------
     failure_penalty : float
         Added to the last successful objective at a failed point (driver-scaled; >= 0).
+    acceptable_iter : int
+        Window of the acceptable-point stop in major iterations (0: off, SciPy's test only).
+    acceptable_obj_change : float
+        Relative objective change over the window below which the run has stalled.
+    acceptable_constr_viol : float
+        Largest scaled constraint violation of an acceptable iterate.
     """
 
     def __init__(self, **kwargs):
@@ -35,6 +54,8 @@ class SlsqpDriver(omi.ScipyHooks):
         self._last_good = None  # (scaled objective, constraint values) of the last good point
         self._last_failed = False  # whether the model holds a failed trial point
         self._iterations = 0  # SLSQP major iterations of the current run
+        self._best_feasible = []  # per iteration: best objective among acceptable iterates
+        self.acceptable_stop = None  # why the run stopped at an acceptable point, or None
 
     def declare_options(self):
         """Declare ``failure_penalty`` on top of ``ScipyOptimizeDriver``'s options."""
@@ -44,6 +65,26 @@ class SlsqpDriver(omi.ScipyHooks):
             lower=0.0,
             desc="added to the last successful scaled objective at a point "
             "where the model raised om.AnalysisError",
+        )
+        self.options.declare(
+            "acceptable_iter",
+            default=0,
+            types=int,
+            lower=0,
+            desc="window (major iterations) of the acceptable-point stop; 0 turns it off",
+        )
+        self.options.declare(
+            "acceptable_obj_change",
+            default=5.0e-4,
+            lower=0.0,
+            desc="relative objective change over acceptable_iter iterations below which "
+            "the run has stalled",
+        )
+        self.options.declare(
+            "acceptable_constr_viol",
+            default=3.0e-4,
+            lower=0.0,
+            desc="largest scaled constraint violation of an acceptable iterate",
         )
 
     def run(self):
@@ -59,7 +100,9 @@ class SlsqpDriver(omi.ScipyHooks):
         self._last_good = None
         self._last_failed = False
         self._iterations = 0
-        with omi.scipy_iteration_callback(self._iteration_done):
+        self._best_feasible = []
+        self.acceptable_stop = None
+        with omi.scipy_iteration_callback(self._iteration_done, self._finish):
             fail = super().run()
         if self._last_failed:  # the model holds a failed trial point: evaluate the result
             omi.scipy_objective(self, omi.scipy_result_x(self))
@@ -72,13 +115,64 @@ class SlsqpDriver(omi.ScipyHooks):
         return self._iterations
 
     def _iteration_done(self, intermediate_result):
+        """Count the iteration; raise ``StopIteration`` at an acceptable point (see class)."""
         self._iterations += 1
+        window = self.options["acceptable_iter"]
+        if window == 0:
+            return
+        f = float(intermediate_result.fun)
+        viol = self.max_constraint_violation()
+        best = self._best_feasible[-1] if self._best_feasible else np.inf
+        if viol <= self.options["acceptable_constr_viol"]:
+            best = min(best, f)
+        self._best_feasible.append(best)
+        if len(self._best_feasible) <= window or viol > self.options["acceptable_constr_viol"]:
+            return
+        before = self._best_feasible[-1 - window]
+        change = abs(before - f) / max(abs(f), 1e-30)
+        if np.isfinite(before) and change <= self.options["acceptable_obj_change"]:
+            self.acceptable_stop = (
+                f"acceptable point: the objective changed by {change:.2e} (relative) over "
+                f"the last {window} iterations, the largest scaled constraint violation is "
+                f"{viol:.2e}"
+            )
+            raise StopIteration
+
+    def _finish(self, result):
+        """Report a run stopped at an acceptable point as a success (SciPy says status 99)."""
+        if self.acceptable_stop is not None:
+            result.success, result.status, result.message = True, 0, self.acceptable_stop
+
+    def max_constraint_violation(self):
+        """
+        Largest violation of the constraints at the model's current point, driver-scaled.
+
+        Returns
+        -------
+        float
+            ``max(|g - equals|, lower - g, g - upper, 0)`` over all constraint rows.
+        """
+        values = self.get_constraint_values(driver_scaling=True)
+        bounds = omi.scaled_bounds(self, "constraint")
+        worst = 0.0
+        for name, value in values.items():
+            b, g = bounds[name], np.asarray(value, dtype=float)
+            if b.equals is not None:
+                excess = np.abs(g - b.equals)
+            else:
+                lo = -np.inf if b.lower is None else np.asarray(b.lower, dtype=float)
+                up = np.inf if b.upper is None else np.asarray(b.upper, dtype=float)
+                excess = np.maximum(np.minimum(lo, up) - g, g - np.maximum(lo, up))
+            if excess.size:
+                worst = max(worst, float(np.max(excess)))
+        return worst
 
     def update_result(self, result):
         """
         Record SLSQP's major iterations as ``iter_count`` (OpenMDAO's: model evaluations).
 
-        ``model_evals`` keeps the model evaluations.
+        ``model_evals`` keeps the model evaluations. A stop at an acceptable point says so in
+        ``exit_status``.
 
         Parameters
         ----------
@@ -86,6 +180,8 @@ class SlsqpDriver(omi.ScipyHooks):
             The result object of the driver.
         """
         result.iter_count = self.optimizer_iterations
+        if self.acceptable_stop is not None:
+            result.exit_status = f"SUCCESS ({self.acceptable_stop})"
 
     def objective_callback(self, x_new):
         """
