@@ -120,16 +120,8 @@ def test_make_driver_gives_slsqp_driver_and_penalty_option():
         driver.options["failure_penalty"] = -1.0
 
 
-class Banana(om.ExplicitComponent):
+class Banana(Bowl):
     """f = 1 + 100 (y - x^2)^2 + (1 - x)^2 (Rosenbrock plus 1: minimum 1 at (1, 1)); c = x + y."""
-
-    def setup(self):
-        self.add_input("x", 0.0)
-        self.add_input("y", 0.0)
-        self.add_output("f", 0.0)
-        self.add_output("c", 0.0)
-        self.declare_partials("f", ["x", "y"])
-        self.declare_partials("c", ["x", "y"], val=1.0)
 
     def compute(self, inputs, outputs):
         x, y = inputs["x"][0], inputs["y"][0]
