@@ -5,6 +5,7 @@ import openmdao.api as om
 from openmdao.utils.om_warnings import DriverWarning, issue_warning
 
 from lpc_mdo.drivers import openmdao_internals as omi
+from lpc_mdo.progress import max_violation
 
 __all__ = ["SlsqpDriver"]
 
@@ -29,7 +30,8 @@ class SlsqpDriver(omi.ScipyHooks):
     fraction of ``tol``, the sum can stay above it for hundreds of iterations while the
     objective creeps. With ``acceptable_iter`` > 0 the driver also stops, as a success, at an
     *acceptable* point, in the spirit of IPOPT's ``acceptable_iter`` (Wachter and Biegler 2006,
-    Sec. 3.9): the current iterate's largest scaled violation is at most
+    Sec. 3.9): the current iterate's largest scaled violation
+    (:func:`lpc_mdo.progress.max_violation`, as the progress line prints it) is at most
     ``acceptable_constr_viol`` and the best objective among the iterates of the last
     ``acceptable_iter`` iterations that met that violation differs from the current objective by
     at most ``acceptable_obj_change`` times its size. ``acceptable_stop`` then says why it
@@ -121,7 +123,7 @@ class SlsqpDriver(omi.ScipyHooks):
         if window == 0:
             return
         f = float(intermediate_result.fun)
-        viol = self.max_constraint_violation()
+        viol = max_violation(self)
         best = self._best_feasible[-1] if self._best_feasible else np.inf
         if viol <= self.options["acceptable_constr_viol"]:
             best = min(best, f)
@@ -142,30 +144,6 @@ class SlsqpDriver(omi.ScipyHooks):
         """Report a run stopped at an acceptable point as a success (SciPy says status 99)."""
         if self.acceptable_stop is not None:
             result.success, result.status, result.message = True, 0, self.acceptable_stop
-
-    def max_constraint_violation(self):
-        """
-        Largest violation of the constraints at the model's current point, driver-scaled.
-
-        Returns
-        -------
-        float
-            ``max(|g - equals|, lower - g, g - upper, 0)`` over all constraint rows.
-        """
-        values = self.get_constraint_values(driver_scaling=True)
-        bounds = omi.scaled_bounds(self, "constraint")
-        worst = 0.0
-        for name, value in values.items():
-            b, g = bounds[name], np.asarray(value, dtype=float)
-            if b.equals is not None:
-                excess = np.abs(g - b.equals)
-            else:
-                lo = -np.inf if b.lower is None else np.asarray(b.lower, dtype=float)
-                up = np.inf if b.upper is None else np.asarray(b.upper, dtype=float)
-                excess = np.maximum(np.minimum(lo, up) - g, g - np.maximum(lo, up))
-            if excess.size:
-                worst = max(worst, float(np.max(excess)))
-        return worst
 
     def update_result(self, result):
         """
