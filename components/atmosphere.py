@@ -3,7 +3,7 @@
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_range
+from lpc_mdo.core.checks import check_range
 
 # Constant sets. Each entry: sea-level temperature T0 (K), sea-level pressure p0 (Pa), lapse rate
 # L (K/m), gravity g0 (m/s**2), specific gas constant R (J/(kg K)), ratio of specific heats gamma,

@@ -4,7 +4,7 @@ import numpy as np
 import openmdao.api as om
 from scipy.interpolate import BSpline
 
-from lpc_mdo.checks import check_integer, check_range, check_shape
+from lpc_mdo.core.checks import check_integer, check_range, check_shape
 
 
 def clamped_knots(num_cp, order):

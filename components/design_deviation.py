@@ -11,7 +11,7 @@ connected), each with its initial value x0.
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_range
+from lpc_mdo.core.checks import check_range
 
 
 class DesignDeviationComp(om.ExplicitComponent):

@@ -3,7 +3,7 @@
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import RangeCheck
+from lpc_mdo.core.checks import RangeCheck
 
 _check_positive = RangeCheck(lower=0.0, lower_open=True, where="KSComp")
 

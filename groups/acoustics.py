@@ -10,7 +10,6 @@ theory/acoustics). The plain functions for use outside an OpenMDAO model are
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_integer
 from lpc_mdo.components.acoustics.a_weighting import AWeightingComp
 from lpc_mdo.components.acoustics.absorption import AtmosphericAbsorptionComp
 from lpc_mdo.components.acoustics.broadband import GillLeeBroadbandComp
@@ -30,7 +29,8 @@ from lpc_mdo.components.acoustics.propagation import AbsorptionLossComp, Spheric
 from lpc_mdo.components.acoustics.thickness import BarryMagliozziThicknessComp
 from lpc_mdo.components.acoustics.tonal import LowsonLoadingNoiseComp, SearsGustLoadsComp
 from lpc_mdo.components.acoustics.total import TotalNoiseComp
-from lpc_mdo.constants import SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
+from lpc_mdo.core.checks import check_integer
+from lpc_mdo.core.constants import SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
 
 __all__ = ["RotorNoiseGroup", "HOVER_NOISE_LIMIT_DBA"]
 

@@ -6,7 +6,6 @@ The plain-function wrappers ``beam`` and ``box_beam`` are in :mod:`lpc_mdo.api.s
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_integer
 from lpc_mdo.components.ks import KSComp
 from lpc_mdo.components.structures.beam import (
     BeamDisplacementComp,
@@ -17,6 +16,7 @@ from lpc_mdo.components.structures.box_section import TORSION_FORMULAS, BoxSecti
 from lpc_mdo.components.structures.buckling import PANEL_MODELS, PanelBucklingComp
 from lpc_mdo.components.structures.load_transfer import LoadTransferComp
 from lpc_mdo.components.structures.stress import BoxStressComp
+from lpc_mdo.core.checks import check_integer
 
 
 def _declare_frame_options(group):

@@ -32,7 +32,7 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.aero.polar import LinearQuadraticPolar, Polar
-from lpc_mdo.constants import GRAVITY
+from lpc_mdo.core.constants import GRAVITY
 from lpc_mdo.vehicle import VehicleSpecError
 
 #: Body-axis components of the trim rows: linear (u, v, w) and angular (p, q, r) accelerations.

@@ -6,7 +6,6 @@ The plain-function wrapper ``motor_analysis`` is in :mod:`lpc_mdo.api.motor`.
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import RangeCheck
 from lpc_mdo.components.motor.ecm import (
     InductanceComp,
     MagnetCircuitComp,
@@ -19,6 +18,7 @@ from lpc_mdo.components.motor.mtpa import MTPAComp
 from lpc_mdo.components.motor.parameters import MotorParameters
 from lpc_mdo.components.motor.sizing import MotorSizingComp
 from lpc_mdo.components.motor.torque_limit import TorqueLimitComp
+from lpc_mdo.core.checks import RangeCheck
 
 _check_ratio = RangeCheck(lower=0.0, lower_open=True, where="MotorGroup")
 _check_loading = RangeCheck(lower=0.0, lower_open=True, where="MotorGroup")

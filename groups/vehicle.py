@@ -27,9 +27,9 @@ from lpc_mdo.components.structures.wing_box_geometry import (
     wing_box_section,
 )
 from lpc_mdo.components.weights.wing_mass import WingMirrorComp
+from lpc_mdo.core.mpi import serial_comm
 from lpc_mdo.groups.motor import DESIGN_OUTPUTS, MotorDesignGroup
 from lpc_mdo.groups.weights import WeightsGroup, motor_group_indices
-from lpc_mdo.mpi import serial_comm
 from lpc_mdo.vehicle import reference_vehicle
 
 # OpenMDAO notes, when a driver splits the model into systems before, in and after the

@@ -20,7 +20,7 @@ from lpc_mdo.components.aero.vlm_normals import VLMNormalsComp
 from lpc_mdo.components.aero.vlm_profile_drag import VLMProfileDragComp
 from lpc_mdo.components.aero.vlm_sectional import VLMSectionalLiftComp
 from lpc_mdo.components.aero.vlm_trefftz import VLMTrefftzDragComp
-from lpc_mdo.constants import SEA_LEVEL_DENSITY
+from lpc_mdo.core.constants import SEA_LEVEL_DENSITY
 
 __all__ = ["VLMGroup", "VLMSurface", "lpc_vlm_surfaces"]
 

@@ -18,7 +18,6 @@ import math
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import RangeCheck, check_choice
 from lpc_mdo.components.weights.drive_system import DriveSystemMassComp
 from lpc_mdo.components.weights.gross_weight import GrossWeightComp
 from lpc_mdo.components.weights.item_placement import FuselageStationComp
@@ -34,6 +33,7 @@ from lpc_mdo.components.weights.regressions import (
 from lpc_mdo.components.weights.rotor_mass import RotorMassComp
 from lpc_mdo.components.weights.systems import SYSTEM_ITEMS, SystemsMassComp
 from lpc_mdo.components.weights.wing_secondary import WingSecondaryMassComp
+from lpc_mdo.core.checks import RangeCheck, check_choice
 
 _FT = 0.3048
 #: NDARC fuselage length of the NASA LPC (GUAM build_Lift_plus_Cruise.m, f_ld = 29.93/6.13), m.

@@ -3,7 +3,7 @@
 A user error (an argument, a vehicle file, a case file or an output path that cannot work) ends
 the command with one line on stderr, ``lpc-mdo: error: <message>``, and exit code 2, before any
 model is built: the message names the argument, its value and what is allowed (the form of
-:mod:`lpc_mdo.checks`). ``--debug`` adds the traceback. An unexpected exception, a bug, still
+:mod:`lpc_mdo.core.checks`). ``--debug`` adds the traceback. An unexpected exception, a bug, still
 prints its traceback, followed by one line asking for a report, and exits with code 1.
 
 ``lpc-mdo analyze`` trims every design condition by its trim variables (``--no-trim``: the raw
@@ -23,7 +23,7 @@ from pathlib import Path
 
 import numpy as np
 
-from lpc_mdo.checks import check_choice, check_integer, check_number
+from lpc_mdo.core.checks import check_choice, check_integer, check_number
 
 #: Exit code of a user error (as argparse's own), of a bug, and of Ctrl-C.
 EXIT_USER_ERROR, EXIT_BUG, EXIT_INTERRUPTED = 2, 1, 130

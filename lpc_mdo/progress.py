@@ -18,7 +18,7 @@ import time
 import numpy as np
 from openmdao.recorders.case_recorder import CaseRecorder
 
-from lpc_mdo.checks import check_integer
+from lpc_mdo.core.checks import check_integer
 
 
 class ProgressLine(CaseRecorder):

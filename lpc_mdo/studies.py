@@ -3,11 +3,11 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.core.mpi import serial_comm
 from lpc_mdo.drivers import make_driver
 from lpc_mdo.groups.condition_base import condition_layout
 from lpc_mdo.groups.conditions import StructuralCondition
 from lpc_mdo.groups.lpc import LPCGroup, openmdao_units
-from lpc_mdo.mpi import serial_comm
 from lpc_mdo.problems import attach_recorder, conditions_of_kinds, trim_constraints
 from lpc_mdo.vehicle import reference_vehicle
 

@@ -1,4 +1,4 @@
-"""lpc_mdo.checks: one message form for every range, type, choice and shape check."""
+"""lpc_mdo.core.checks: one message form for every range, type, choice and shape check."""
 
 import pickle
 
@@ -6,7 +6,7 @@ import numpy as np
 import openmdao.api as om
 import pytest
 
-from lpc_mdo.checks import (
+from lpc_mdo.core.checks import (
     RangeCheck,
     check_choice,
     check_finite,

@@ -22,8 +22,8 @@ import openmdao.api as om
 import pytest
 
 from lpc_mdo import cli
-from lpc_mdo.checks import check_range
 from lpc_mdo.cli import main
+from lpc_mdo.core.checks import check_range
 from lpc_mdo.vehicle import load_vehicle
 
 REFERENCE_TOML = resources.files("lpc_mdo") / "data" / "lpc_reference.toml"

@@ -6,7 +6,7 @@ import pytest
 from openmdao.utils.assert_utils import assert_check_partials, assert_near_equal
 
 from lpc_mdo.components.dynamics.eom import EquationsOfMotionComp
-from lpc_mdo.constants import GRAVITY
+from lpc_mdo.core.constants import GRAVITY
 
 # Reference docs theory/dynamics 'Equations of motion' check case (CADDEE code form,
 # reference point = origin, inertia as given about the reference point, no gravity):

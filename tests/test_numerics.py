@@ -1,11 +1,11 @@
-"""lpc_mdo.numerics.safeguarded_newton against closed-form roots."""
+"""lpc_mdo.core.numerics.safeguarded_newton against closed-form roots."""
 
 import numpy as np
 import openmdao.api as om
 import pytest
 from numpy.testing import assert_allclose
 
-from lpc_mdo.numerics import newton_step, safeguarded_newton
+from lpc_mdo.core.numerics import newton_step, safeguarded_newton
 
 
 def test_cube_roots_vectorized():

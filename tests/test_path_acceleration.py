@@ -5,7 +5,7 @@ import openmdao.api as om
 from openmdao.utils.assert_utils import assert_check_partials, assert_near_equal
 
 from lpc_mdo.components.dynamics.path_acceleration import PathAccelerationComp
-from lpc_mdo.constants import GRAVITY
+from lpc_mdo.core.constants import GRAVITY
 
 
 def problem(nn):

@@ -17,8 +17,8 @@ from test_bem import _bem_problem
 from lpc_mdo.components.aero.alpha_star import AlphaStarComp
 from lpc_mdo.components.motor.efficiency import EMTorqueComp
 from lpc_mdo.components.rotor.bem_inflow import BEMSections
+from lpc_mdo.core.numerics import safeguarded_newton
 from lpc_mdo.groups.motor import MotorGroup
-from lpc_mdo.numerics import safeguarded_newton
 
 
 def _counter(monkeypatch, owner, name):

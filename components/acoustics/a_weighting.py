@@ -3,8 +3,8 @@
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_range
 from lpc_mdo.components.acoustics.common import DB_PER_NEPER
+from lpc_mdo.core.checks import check_range
 
 # Pole frequencies of the IEC 61672-1 (Annex E) A-weighting, Hz.
 _F1, _F2, _F3, _F4 = 20.598997, 107.65265, 737.86223, 12194.217

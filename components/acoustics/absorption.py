@@ -3,7 +3,7 @@
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_range
+from lpc_mdo.core.checks import check_range
 
 #: ISO 9613-1:1993 reference temperature T0 (K), triple-point temperature T01 (K) and reference
 #: pressure p_r (Pa), clause 6.2 and Annex B.

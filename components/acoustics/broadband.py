@@ -10,7 +10,7 @@ from lpc_mdo.components.acoustics.common import (
     nominal_third_octave_bands,
     radial_quadrature,
 )
-from lpc_mdo.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
+from lpc_mdo.core.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
 
 # Squared-length floor under sqrt(z**2) for a smooth |sin(theta_0)| (m**2).
 _EPS_Z2 = 1.0e-12

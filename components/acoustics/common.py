@@ -13,7 +13,7 @@ import numpy as np
 import openmdao.api as om
 from scipy.special import jv, yv
 
-from lpc_mdo.checks import check_integer, check_number, check_range, check_shape
+from lpc_mdo.core.checks import check_integer, check_number, check_range, check_shape
 
 #: Reference pressure, Pa (20 uPa).
 P_REF = 2.0e-5
@@ -139,7 +139,7 @@ def check_input_range(comp, name, value, lower=None, upper=None, lower_open=True
     """
     Raise om.AnalysisError if any entry of input ``name`` is not finite or lies outside the range.
 
-    :func:`lpc_mdo.checks.check_range` with open bounds by default and the component's
+    :func:`lpc_mdo.core.checks.check_range` with open bounds by default and the component's
     ``msginfo`` in front; only the real part is checked, so the check is complex-step safe.
     """
     check_range(

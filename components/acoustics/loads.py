@@ -3,14 +3,14 @@
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_integer
 from lpc_mdo.components.acoustics.common import (
     blade_counts,
     check_input_range,
     declare_radial_options,
     radial_quadrature,
 )
-from lpc_mdo.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY
+from lpc_mdo.core.checks import check_integer
+from lpc_mdo.core.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY
 
 
 def max_load_harmonics(num_azimuth):

@@ -4,7 +4,7 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.acoustics.common import check_input_range
-from lpc_mdo.constants import SEA_LEVEL_SPEED_OF_SOUND
+from lpc_mdo.core.constants import SEA_LEVEL_SPEED_OF_SOUND
 
 # Small squared lengths/speeds under square roots (smooth, complex-step safe magnitudes):
 # in-plane distance (m**2, as lsdo_acoustics) and in-plane speed ((m/s)**2).

@@ -12,7 +12,7 @@ from lpc_mdo.components.acoustics.common import (
     radial_quadrature,
     spl_from_mean_square,
 )
-from lpc_mdo.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
+from lpc_mdo.core.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
 
 #: Airfoil cross-section area / (chord * thickness) (lsdo_acoustics; NACA 00xx: 0.685).
 SECTION_AREA_FACTOR = 0.6853

@@ -13,7 +13,7 @@ from lpc_mdo.components.acoustics.common import (
     radial_quadrature,
     spl_from_mean_square,
 )
-from lpc_mdo.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
+from lpc_mdo.core.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
 
 #: Smooth switch between the Sears (hover) and unsteady (edgewise) loading-noise paths
 #: (docs theory/acoustics 'Tonal loading noise'): weight of the unsteady path 0.5 tanh(SHARPNESS (v

@@ -9,7 +9,7 @@ safeguarded-Newton iteration between the stall angles of the airfoil at (Re, M)
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.numerics import safeguarded_newton
+from lpc_mdo.core.numerics import safeguarded_newton
 
 from .airfoil import get_polar
 from .polar import LinearQuadraticPolar

@@ -13,7 +13,7 @@ from lpc_mdo.components.aero.drag_parts import (
     FixedFormFactorDrag,
     LiftingSurfaceDrag,
 )
-from lpc_mdo.constants import SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
+from lpc_mdo.core.constants import SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
 
 __all__ = [
     "DEFAULT_INTERFERENCE",

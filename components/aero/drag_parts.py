@@ -12,7 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_integer, check_number, check_range
+from lpc_mdo.core.checks import check_integer, check_number, check_range
 
 #: Default interference factor Q (CADDEE default, reference/models_aero_rotor_acoustics.md §5);
 #: the LPC parts use Raymer's values (Aircraft Design, 6th ed., sec. 12.5.5).

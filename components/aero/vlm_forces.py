@@ -5,7 +5,7 @@ import openmdao.api as om
 
 from lpc_mdo.components.aero.vlm_biot_savart import cross, skew
 from lpc_mdo.components.aero.vlm_lattice import declare_lattice_options, lattice_of
-from lpc_mdo.constants import SEA_LEVEL_DENSITY
+from lpc_mdo.core.constants import SEA_LEVEL_DENSITY
 
 
 class VLMPanelForcesComp(om.ExplicitComponent):

@@ -3,8 +3,8 @@
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_range
 from lpc_mdo.components.aero.vlm_biot_savart import cross, skew
+from lpc_mdo.core.checks import check_range
 
 
 class VLMFreestreamComp(om.ExplicitComponent):

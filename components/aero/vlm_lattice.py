@@ -24,7 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 
-from lpc_mdo.checks import check_integer
+from lpc_mdo.core.checks import check_integer
 
 
 @dataclass(frozen=True)

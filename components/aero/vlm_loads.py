@@ -3,9 +3,9 @@
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_range
 from lpc_mdo.components.aero.vlm_biot_savart import skew
-from lpc_mdo.constants import SEA_LEVEL_DENSITY
+from lpc_mdo.core.checks import check_range
+from lpc_mdo.core.constants import SEA_LEVEL_DENSITY
 
 #: Dynamic-pressure floor (Pa) of the coefficients, so that hover (V = 0) gives 0, not NaN.
 Q_FLOOR = 1.0e-10

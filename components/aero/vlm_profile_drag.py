@@ -4,7 +4,7 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.aero.vlm_lattice import declare_lattice_options, lattice_of
-from lpc_mdo.constants import SEA_LEVEL_DENSITY
+from lpc_mdo.core.constants import SEA_LEVEL_DENSITY
 
 
 class VLMProfileDragComp(om.ExplicitComponent):

@@ -6,7 +6,7 @@ import openmdao.api as om
 from lpc_mdo.components.aero.vlm_biot_savart import cross, dot, outer, skew
 from lpc_mdo.components.aero.vlm_lattice import declare_lattice_options, lattice_of
 from lpc_mdo.components.aero.vlm_loads import Q_FLOOR
-from lpc_mdo.constants import SEA_LEVEL_DENSITY
+from lpc_mdo.core.constants import SEA_LEVEL_DENSITY
 
 
 class VLMSectionalLiftComp(om.ExplicitComponent):

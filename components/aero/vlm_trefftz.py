@@ -5,7 +5,7 @@ import openmdao.api as om
 
 from lpc_mdo.components.aero.vlm_biot_savart import cross, dot
 from lpc_mdo.components.aero.vlm_lattice import declare_lattice_options, lattice_of
-from lpc_mdo.constants import SEA_LEVEL_DENSITY
+from lpc_mdo.core.constants import SEA_LEVEL_DENSITY
 
 #: Squared core radius (m**2) of the 2-D Trefftz-plane vortices (finite if two legs coincide).
 TREFFTZ_CORE_SQ = 1.0e-12

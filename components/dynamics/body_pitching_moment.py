@@ -3,8 +3,8 @@
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_range
 from lpc_mdo.components.aero.drag_buildup import LPC_BOOM_DIAMETER
+from lpc_mdo.core.checks import check_range
 
 
 def munk_apparent_mass_factor(fineness_ratio):

@@ -3,10 +3,10 @@
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_range
+from lpc_mdo.core.checks import check_range
 
-# GRAVITY is defined once in lpc_mdo.constants; importing it from this module keeps working.
-from lpc_mdo.constants import GRAVITY
+# GRAVITY is defined once in lpc_mdo.core.constants; importing it from this module keeps working.
+from lpc_mdo.core.constants import GRAVITY
 
 
 def _skew(v):

@@ -4,7 +4,7 @@ import numpy as np
 import openmdao.api as om
 from scipy.optimize import brentq
 
-from lpc_mdo.checks import check_range
+from lpc_mdo.core.checks import check_range
 
 
 class NeutralPointComp(om.ImplicitComponent):

@@ -2,7 +2,7 @@
 
 import openmdao.api as om
 
-from lpc_mdo.checks import check_range
+from lpc_mdo.core.checks import check_range
 
 
 class BatteryComp(om.ExplicitComponent):

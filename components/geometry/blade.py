@@ -10,8 +10,8 @@ the rotor acoustics; keep them stable.
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_choice, check_integer, check_range
 from lpc_mdo.components.bspline import BsplineComp
+from lpc_mdo.core.checks import check_choice, check_integer, check_range
 
 #: Radial-quadrature choices of :class:`BladeStationsComp` (docs theory/rotors 'Stations and disk
 #: frame', 'Loads and coefficients', 'Public-code compatibility').

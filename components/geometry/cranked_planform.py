@@ -11,7 +11,7 @@ import dataclasses
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_range
+from lpc_mdo.core.checks import check_range
 
 
 @dataclasses.dataclass(frozen=True, eq=False)

@@ -1,6 +1,6 @@
 """Vectorized numerics shared by the motor components (private).
 
-- root finding: :func:`lpc_mdo.numerics.safeguarded_newton` (bisection when no derivative is
+- root finding: :func:`lpc_mdo.core.numerics.safeguarded_newton` (bisection when no derivative is
   given), shared with the rotor and aero solves.
 - :func:`declare_pointwise_partials` / :func:`complex_step_partials`: the motor models are
   pointwise, i.e. every output entry depends only on the inputs of the same motor (shape

@@ -19,7 +19,7 @@ from lpc_mdo.components.motor._numerics import (
     state_derivative,
 )
 from lpc_mdo.components.motor.parameters import MotorParameters
-from lpc_mdo.numerics import safeguarded_newton
+from lpc_mdo.core.numerics import safeguarded_newton
 
 
 def _declare_common_options(comp, per_node):
@@ -161,7 +161,7 @@ class PointwiseImplicitComp(om.ImplicitComponent):
         """
         Return the real root of the residual for the real inputs ``real`` on the bracket.
 
-        Safeguarded Newton (:func:`~lpc_mdo.numerics.safeguarded_newton`) with the slope of
+        Safeguarded Newton (:func:`~lpc_mdo.core.numerics.safeguarded_newton`) with the slope of
         one complex-step evaluation of the (complex-safe) residual per iteration, R and dR/dx
         at once: 5-8 evaluations where bisection to the same 4 eps took about 50.
         """

@@ -20,9 +20,9 @@ air-gap flux instead, Psi_F would be 9.7 % lower (0.2706 Wb) than the reference 
 import numpy as np
 from openmdao.api import AnalysisError
 
-from lpc_mdo.checks import check_range
 from lpc_mdo.components.motor import parameters as mp
 from lpc_mdo.components.motor._pointwise import PointwiseExplicitComp, PointwiseImplicitComp
+from lpc_mdo.core.checks import check_range
 
 
 def _complex_safe_abs(x):

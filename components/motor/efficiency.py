@@ -3,7 +3,6 @@
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_range
 from lpc_mdo.components.motor import parameters as mp
 from lpc_mdo.components.motor._numerics import (
     CS_STEP,
@@ -13,8 +12,9 @@ from lpc_mdo.components.motor._numerics import (
 )
 from lpc_mdo.components.motor._pointwise import PointwiseImplicitComp, _declare_common_options
 from lpc_mdo.components.motor.mtpa import mtpa_base, mtpa_current_pu
-from lpc_mdo.constants import RPM_TO_RAD_S
-from lpc_mdo.numerics import safeguarded_newton
+from lpc_mdo.core.checks import check_range
+from lpc_mdo.core.constants import RPM_TO_RAD_S
+from lpc_mdo.core.numerics import safeguarded_newton
 
 _WINDAGE_COEFFICIENT = (
     mp.ROTOR_ROUGHNESS * np.pi * mp.ROTOR_FRICTION * mp.WINDAGE_AIR_DENSITY * (2.0 * np.pi) ** 2

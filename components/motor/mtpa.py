@@ -3,10 +3,10 @@
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_range
 from lpc_mdo.components.motor._numerics import check_saliency
 from lpc_mdo.components.motor._pointwise import _declare_common_options
-from lpc_mdo.numerics import safeguarded_newton
+from lpc_mdo.core.checks import check_range
+from lpc_mdo.core.numerics import safeguarded_newton
 
 
 def mtpa_base(flux_linkage, inductance_d, inductance_q, pole_pairs):

@@ -11,8 +11,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from lpc_mdo.checks import check_integer, check_number
-from lpc_mdo.constants import SEA_LEVEL_DENSITY
+from lpc_mdo.core.checks import check_integer, check_number
+from lpc_mdo.core.constants import SEA_LEVEL_DENSITY
 
 MU_0 = 4.0e-7 * np.pi  # vacuum permeability, H/m
 

@@ -3,9 +3,9 @@
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import RangeCheck, check_range
 from lpc_mdo.components.motor import parameters as mp
 from lpc_mdo.components.motor.parameters import MotorParameters
+from lpc_mdo.core.checks import RangeCheck, check_range
 
 # (name, units, description) of the geometry outputs, in output order.
 GEOMETRY_OUTPUTS = (

@@ -3,8 +3,8 @@
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_range
 from lpc_mdo.components.motor._pointwise import PointwiseImplicitComp
+from lpc_mdo.core.checks import check_range
 
 _MAX_DOUBLINGS = 200
 

@@ -57,11 +57,11 @@ from collections import OrderedDict
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_range
 from lpc_mdo.components.aero.polar import LinearQuadraticPolar, Polar
 from lpc_mdo.components.geometry.blade import per_rotor
-from lpc_mdo.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
-from lpc_mdo.numerics import safeguarded_newton
+from lpc_mdo.core.checks import check_range
+from lpc_mdo.core.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
+from lpc_mdo.core.numerics import safeguarded_newton
 
 #: Tip-loss forms (docs theory/rotors 'BEM inflow residual'; 'bladead' divides by R instead of r,
 #: docs theory/rotors 'Public-code compatibility').
@@ -232,7 +232,7 @@ def check_section_inputs(
     Every input of ``names`` (a table like :data:`SECTION_INPUTS`, the default) must be finite,
     those of ``positive`` > 0, ``0 < hub_radius < radius`` (``0 <=`` without hub loss) and
     ``hub_radius < station_radius < radius``; otherwise om.AnalysisError names the input, the
-    first offending entry and the allowed range (:func:`lpc_mdo.checks.check_range`; the
+    first offending entry and the allowed range (:func:`lpc_mdo.core.checks.check_range`; the
     values may come from an optimizer).
     """
 
@@ -550,7 +550,7 @@ class BEMSections:
         return self._refine(lo, hi, f_lo, f_hi, owner, guess)
 
     def _refine(self, lo, hi, f_lo, f_hi, owner, guess=None):
-        """Safeguarded Newton (:func:`lpc_mdo.numerics.safeguarded_newton`) in [lo, hi]."""
+        """Safeguarded Newton (:func:`lpc_mdo.core.numerics.safeguarded_newton`) in [lo, hi]."""
 
         def residual(phi, idx):
             st = self.evaluate(phi, idx)

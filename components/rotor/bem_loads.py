@@ -9,7 +9,6 @@ into power, coefficients, efficiency, figure of merit and tip Mach number.
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_range
 from lpc_mdo.components.geometry.blade import per_rotor
 from lpc_mdo.components.rotor.bem_inflow import (
     SECTION_INPUTS,
@@ -20,7 +19,8 @@ from lpc_mdo.components.rotor.bem_inflow import (
     linearized_sections,
     station_columns,
 )
-from lpc_mdo.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
+from lpc_mdo.core.checks import check_range
+from lpc_mdo.core.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
 
 _RPM_TO_RAD_S = RPM_TO_RAD_S
 

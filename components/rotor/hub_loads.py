@@ -20,8 +20,8 @@ reference point, summed over the rotors for trim.
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_choice
 from lpc_mdo.components.geometry.blade import per_rotor
+from lpc_mdo.core.checks import check_choice
 
 
 def rotor_frames(thrust_axis, owner=""):

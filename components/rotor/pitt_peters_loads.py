@@ -63,11 +63,11 @@ from types import SimpleNamespace
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_choice
 from lpc_mdo.components.aero.polar import LinearQuadraticPolar, Polar
 from lpc_mdo.components.geometry.blade import azimuth_angles, per_rotor
 from lpc_mdo.components.rotor.bem_inflow import check_section_inputs
-from lpc_mdo.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
+from lpc_mdo.core.checks import check_choice
+from lpc_mdo.core.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
 
 #: Where Prandtl's loss factor acts: on the momentum (inflow) side or on the blade loads.
 LOSS_PLACEMENTS = ("momentum", "blade_element")

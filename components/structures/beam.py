@@ -33,7 +33,7 @@ import openmdao.api as om
 import scipy.sparse as sp
 from scipy.sparse.linalg import splu
 
-from lpc_mdo.checks import check_range
+from lpc_mdo.core.checks import check_range
 
 # Complex step used inside linearize/compute_partials for the node-coordinate partials of the
 # element matrices (exact to machine precision; see BeamDisplacementComp).

@@ -4,7 +4,7 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.structures.beam import default_nodes
-from lpc_mdo.constants import GRAVITY
+from lpc_mdo.core.constants import GRAVITY
 
 _AXES = ("x", "y", "z")
 
@@ -150,7 +150,7 @@ class LoadTransferComp(om.ExplicitComponent):
     span_axis : int
         Coordinate used for the weights: 0, 1 (default, y) or 2.
     gravity : float
-        g in m/s**2 (> 0). Default :data:`lpc_mdo.constants.GRAVITY` (9.81).
+        g in m/s**2 (> 0). Default :data:`lpc_mdo.core.constants.GRAVITY` (9.81).
     """
 
     def initialize(self):

@@ -3,7 +3,7 @@
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_integer
+from lpc_mdo.core.checks import check_integer
 
 
 class MeshDeformationComp(om.ExplicitComponent):

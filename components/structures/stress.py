@@ -3,8 +3,8 @@
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_range
 from lpc_mdo.components.structures.box_section import TORSION_FORMULAS
+from lpc_mdo.core.checks import check_range
 
 # Stress points (sign of local y, sign of local z): corners top-front, top-rear, bottom-rear,
 # bottom-front, then the web at local y = +w/2 (and, with web_points='both', at -w/2). For a right

@@ -6,7 +6,7 @@ import math
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_number, check_range
+from lpc_mdo.core.checks import check_number, check_range
 from lpc_mdo.vehicle import LiftingSurface, reference_vehicle
 
 

@@ -27,7 +27,7 @@ the gear ratio but no gearbox mass. docs theory/weights 'Drive system'.
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import RangeCheck, check_range
+from lpc_mdo.core.checks import RangeCheck, check_range
 
 _LB = 0.45359237  # kg per lb
 _HP = 745.69987158227022  # W per mechanical horsepower

@@ -3,7 +3,7 @@
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_range
+from lpc_mdo.core.checks import check_range
 
 #: Order of the entries of the ``mass_breakdown`` output of :class:`GrossWeightComp`.
 BREAKDOWN_LABELS = (

@@ -12,7 +12,7 @@ vehicles/Lift+Cruise/AeroProp/SFunction/build_Lift_plus_Cruise.m): landing gear 
 
 import openmdao.api as om
 
-from lpc_mdo.checks import RangeCheck, check_range
+from lpc_mdo.core.checks import RangeCheck, check_range
 
 _SLUG = 14.593903  # kg per slug
 #: Landing-gear mass and total mass of the NASA LPC NDARC weight statement (GUAM), kg.

@@ -5,7 +5,7 @@ from dataclasses import dataclass
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_integer, check_range
+from lpc_mdo.core.checks import check_integer, check_range
 
 _EYE = np.eye(3)
 #: Columns of the ``item_mass_properties`` output: mass, cg and the item's inertia about the

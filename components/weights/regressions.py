@@ -14,8 +14,8 @@ from importlib import resources
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import RangeCheck, check_range, check_shape
 from lpc_mdo.components.weights.mass_properties import transport_inertia
+from lpc_mdo.core.checks import RangeCheck, check_range, check_shape
 
 # Body-frame sign of each inertia-tensor entry after the M4 -> body rotation diag(-1, 1, -1)
 # (x aft -> forward, z up -> down): I_xy and I_yz change sign, I_xz does not.

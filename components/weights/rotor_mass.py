@@ -16,7 +16,7 @@ docs theory/weights 'Rotor blades and hubs' gives the derivation of the SI form 
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import RangeCheck, check_range
+from lpc_mdo.core.checks import RangeCheck, check_range
 
 _FT = 0.3048  # m per ft
 _LB = 0.45359237  # kg per lb

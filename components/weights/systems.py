@@ -18,7 +18,7 @@ docs theory/weights 'Systems' gives the SI form and the inputs of the reference 
 
 import openmdao.api as om
 
-from lpc_mdo.checks import RangeCheck, check_range
+from lpc_mdo.core.checks import RangeCheck, check_range
 
 _FT = 0.3048
 _LB = 0.45359237

@@ -18,7 +18,7 @@ docs theory/weights 'Wing secondary structure' gives the SI form and the overlap
 
 import openmdao.api as om
 
-from lpc_mdo.checks import RangeCheck, check_range
+from lpc_mdo.core.checks import RangeCheck, check_range
 
 _FT2 = 0.3048**2  # m^2 per ft^2
 _LB = 0.45359237  # kg per lb

@@ -7,10 +7,10 @@
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_choice, check_range, check_shape
-from lpc_mdo.constants import SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
+from lpc_mdo.core.checks import check_choice, check_range, check_shape
+from lpc_mdo.core.constants import SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
+from lpc_mdo.core.mpi import serial_comm
 from lpc_mdo.groups.acoustics import RotorNoiseGroup
-from lpc_mdo.mpi import serial_comm
 
 __all__ = ["PARTS", "rotor_noise"]
 

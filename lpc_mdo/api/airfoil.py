@@ -7,8 +7,8 @@ reverse-flow extrapolation, or a user table) without the caller converting to ra
 
 import numpy as np
 
-from lpc_mdo.checks import check_number, check_range
 from lpc_mdo.components.aero.airfoil import get_polar
+from lpc_mdo.core.checks import check_number, check_range
 
 __all__ = ["airfoil_polar"]
 

@@ -9,10 +9,10 @@ import dataclasses
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_range
 from lpc_mdo.components.motor.parameters import MotorParameters
+from lpc_mdo.core.checks import check_range
+from lpc_mdo.core.mpi import serial_comm
 from lpc_mdo.groups.motor import MotorGroup
-from lpc_mdo.mpi import serial_comm
 
 __all__ = ["motor_analysis"]
 

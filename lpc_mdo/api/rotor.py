@@ -10,15 +10,15 @@ the airfoil is a packaged name, a user polar or a :class:`~lpc_mdo.components.ae
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_integer, check_number, check_range, check_shape
 from lpc_mdo.components.aero.airfoil import get_polar
 from lpc_mdo.components.geometry.blade import azimuth_angles, station_fractions
 from lpc_mdo.components.rotor.bem_inflow import BEMInflowComp
 from lpc_mdo.components.rotor.bem_loads import BEMLoadsComp, RotorPerformanceComp
 from lpc_mdo.components.rotor.pitt_peters_inflow import PittPetersInflowComp
 from lpc_mdo.components.rotor.pitt_peters_loads import PittPetersLoadsComp
-from lpc_mdo.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY
-from lpc_mdo.mpi import serial_comm
+from lpc_mdo.core.checks import check_integer, check_number, check_range, check_shape
+from lpc_mdo.core.constants import RPM_TO_RAD_S, SEA_LEVEL_DENSITY
+from lpc_mdo.core.mpi import serial_comm
 
 
 def _positive(name, value):

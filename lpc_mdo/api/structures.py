@@ -8,10 +8,10 @@ it and returns plain numbers.
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_number, check_range, check_shape
 from lpc_mdo.components.structures.box_section import TORSION_FORMULAS
+from lpc_mdo.core.checks import check_number, check_range, check_shape
+from lpc_mdo.core.mpi import serial_comm
 from lpc_mdo.groups.beam import BeamGroup, BoxBeamGroup
-from lpc_mdo.mpi import serial_comm
 
 __all__ = ["beam", "box_beam"]
 

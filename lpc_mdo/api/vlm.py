@@ -11,11 +11,11 @@ import numbers
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_choice, check_integer, check_number, check_range, check_shape
 from lpc_mdo.components.atmosphere import ATMOSPHERE_CONSTANTS
 from lpc_mdo.components.geometry.planform import SPACINGS, span_stations
+from lpc_mdo.core.checks import check_choice, check_integer, check_number, check_range, check_shape
+from lpc_mdo.core.mpi import serial_comm
 from lpc_mdo.groups.vlm import VLMGroup, VLMSurface
-from lpc_mdo.mpi import serial_comm
 
 __all__ = ["SURFACE_KEYS", "MAX_PANELS", "surface_mesh", "vlm"]
 

@@ -4,7 +4,7 @@ import importlib
 
 import openmdao.api as om
 
-from lpc_mdo.checks import check_choice
+from lpc_mdo.core.checks import check_choice
 from lpc_mdo.drivers.ipopt import IpoptDriver
 from lpc_mdo.drivers.slsqp import SlsqpDriver
 

@@ -22,7 +22,7 @@ from pathlib import Path
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.checks import check_choice
+from lpc_mdo.core.checks import check_choice
 
 __all__ = [
     "MissingVariableError",

@@ -27,7 +27,7 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Circle, Patch, Polygon
 from matplotlib.ticker import MaxNLocator
 
-from lpc_mdo.checks import check_choice
+from lpc_mdo.core.checks import check_choice
 from lpc_mdo.post.case_data import (
     MissingVariableError,
     driver_cases,

@@ -20,7 +20,7 @@ r), OEI (v, w, p, q, r), structural (w): 64 of the 96 constraints for its 15 con
 
 import numpy as np
 
-from lpc_mdo.constants import GRAVITY
+from lpc_mdo.core.constants import GRAVITY
 from lpc_mdo.groups.condition_base import ANGULAR_COMPONENTS, LINEAR_COMPONENTS
 from lpc_mdo.groups.condition_kinds import condition_class
 from lpc_mdo.post.tables import (

@@ -18,7 +18,7 @@ import typing
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
-from lpc_mdo.checks import _fmt, _show, check_integer, check_number, check_range, range_text
+from lpc_mdo.core.checks import _fmt, _show, check_integer, check_number, check_range, range_text
 
 
 class VehicleSpecError(ValueError):
@@ -81,7 +81,7 @@ def _is_number(value) -> bool:
 
 
 def _bounds(spec: _Spec) -> dict:
-    """Return the range of a spec as :func:`lpc_mdo.checks.check_range` keywords."""
+    """Return the range of a spec as :func:`lpc_mdo.core.checks.check_range` keywords."""
     return dict(
         lower=spec.gt if spec.gt is not None else spec.ge,
         lower_open=spec.gt is not None,
