@@ -1,23 +1,24 @@
-"""The registry of design-condition kinds: a kind name of the vehicle file -> its group class.
+"""The registry of design-condition groups: a kind name of the vehicle file -> its group class.
 
-A vehicle file's ``[[conditions]]`` entry names its ``kind``; the class registered for it builds
-the condition and declares its contract (:class:`~lpc_mdo.groups.condition_base.ConditionGroup`).
-A condition of an existing kind is a vehicle-file edit only; a new kind is one subclass of
-``ConditionGroup`` registered here, or from user code with :func:`register_condition_kind`.
+A vehicle file's ``[[conditions]]`` entry names its ``kind``; the kind's declaration
+(:data:`lpc_mdo.vehicle.condition_contract.CONDITION_KINDS`) states its contract, and the group
+class registered here for the same name builds it. A condition of an existing kind is a
+vehicle-file edit only; a new kind is a declaration (a subclass of
+:class:`~lpc_mdo.vehicle.condition_contract.ConditionKind`) and a group class that names it,
+registered together with :func:`register_condition_kind` (e.g. from a user's run script).
 """
 
 from lpc_mdo.groups.condition_base import ConditionGroup
-from lpc_mdo.groups.conditions import (
-    HoverCondition,
-    SteadyFlightCondition,
-    StructuralCondition,
-    TransitionCondition,
-)
+from lpc_mdo.groups.hover_condition import HoverCondition
+from lpc_mdo.groups.steady_flight_condition import SteadyFlightCondition
+from lpc_mdo.groups.structural_condition import StructuralCondition
+from lpc_mdo.groups.transition_condition import TransitionCondition
+from lpc_mdo.vehicle.condition_contract import register_kind
 
-__all__ = ["CONDITION_KINDS", "condition_class", "register_condition_kind"]
+__all__ = ["CONDITION_GROUPS", "condition_group", "register_condition_kind"]
 
 #: Kind name -> condition group class. Hover and one-engine-inoperative hover share a class.
-CONDITION_KINDS = {
+CONDITION_GROUPS = {
     "hover": HoverCondition,
     "oei": HoverCondition,
     "transition": TransitionCondition,
@@ -26,33 +27,33 @@ CONDITION_KINDS = {
 }
 
 
-def register_condition_kind(kind, cls):
+def register_condition_kind(kind, group_class):
     """
-    Register the group class of a condition kind (e.g. from a user's run script).
+    Register a condition kind: its declaration (the group's) and the group class that builds it.
 
     Parameters
     ----------
     kind : str
         The name a vehicle file's ``conditions[i].kind`` uses.
-    cls : type
-        A subclass of :class:`~lpc_mdo.groups.condition_base.ConditionGroup`.
+    group_class : type
+        A subclass of :class:`~lpc_mdo.groups.condition_base.ConditionGroup` whose
+        ``declaration`` is the kind's :class:`~lpc_mdo.vehicle.condition_contract.ConditionKind`.
     """
-    if not (isinstance(kind, str) and kind.isidentifier()):
-        raise ValueError(f"'kind' = {kind!r} is not allowed: must be a Python identifier")
-    if not (isinstance(cls, type) and issubclass(cls, ConditionGroup)):
+    if not (isinstance(group_class, type) and issubclass(group_class, ConditionGroup)):
         raise ValueError(
-            f"'cls' = {cls!r} is not allowed: must be a subclass of "
+            f"'group_class' = {group_class!r} is not allowed: must be a subclass of "
             f"lpc_mdo.groups.condition_base.ConditionGroup"
         )
-    CONDITION_KINDS[kind] = cls
+    register_kind(kind, group_class.declaration)
+    CONDITION_GROUPS[kind] = group_class
 
 
-def condition_class(kind):
+def condition_group(kind):
     """Return the group class registered for condition kind ``kind`` (KeyError naming the kinds)."""
     try:
-        return CONDITION_KINDS[kind]
+        return CONDITION_GROUPS[kind]
     except KeyError:
         raise KeyError(
-            f"condition kind {kind!r} is not registered; registered kinds: "
-            f"{sorted(CONDITION_KINDS)}"
+            f"condition kind {kind!r} has no registered group; registered kinds: "
+            f"{sorted(CONDITION_GROUPS)}"
         ) from None

@@ -2,7 +2,7 @@
 
 The physics only: the optimization problem (design variables, constraints, objective) is
 declared outside, by :mod:`lpc_mdo.problems`, from the same condition contracts
-(:mod:`lpc_mdo.groups.condition_base`) that wire this model.
+(:mod:`lpc_mdo.vehicle.condition_contract`) that wire this model.
 """
 
 import functools
@@ -16,10 +16,11 @@ from lpc_mdo.components.energy.battery import BatteryComp
 from lpc_mdo.components.energy.mission_energy import MissionEnergyComp
 from lpc_mdo.components.gather_across_conditions import GatherComp
 from lpc_mdo.components.ks import KSComp
-from lpc_mdo.groups.condition_base import condition_layout
-from lpc_mdo.groups.condition_kinds import condition_class
+from lpc_mdo.groups.condition_kinds import condition_group
 from lpc_mdo.groups.vehicle import VehicleGroup
 from lpc_mdo.vehicle import VehicleSpecError, reference_vehicle
+from lpc_mdo.vehicle.condition_contract import condition_kind
+from lpc_mdo.vehicle.condition_layout import condition_layout
 
 # Torque margin reported for a motor that no included condition loads (a model built with a
 # single OEI case); large, so it never binds.
@@ -134,7 +135,7 @@ class LPCGroup(om.Group):
         self.add_subsystem("vehicle", VehicleGroup(vehicle=vehicle), promotes=["*"])
 
         for condition in self.conditions:
-            cls = condition_class(condition.kind)
+            cls = condition_group(condition.kind)
             kwargs = {
                 "vehicle": vehicle,
                 "condition": condition.name,
@@ -156,7 +157,7 @@ class LPCGroup(om.Group):
         layout = condition_layout(vehicle)
         for condition in self.conditions:
             name = condition.name
-            cls = condition_class(condition.kind)
+            cls = condition_kind(condition.kind)
             for source, target, src_indices in cls.vehicle_inputs(vehicle, condition):
                 self.connect(source, f"{name}.{target}", src_indices=src_indices)
             for entry in layout.entries[name].values():
@@ -169,7 +170,7 @@ class LPCGroup(om.Group):
                     flat_src_indices=True,
                 )
         for i, condition in enumerate(self._powered):
-            power = condition_class(condition.kind).power_output
+            power = condition_kind(condition.kind).power_output
             self.connect(f"{condition.name}.{power}", f"power_mux.electrical_power_{i}")
         for prefix, members in self._motor_sets.items():
             for condition, _ in members:
@@ -182,7 +183,7 @@ class LPCGroup(om.Group):
     # ------------------------------------------------------------------ mission and margins
 
     def _add_mission(self, vehicle):
-        powered = [c for c in self.conditions if condition_class(c.kind).power_output]
+        powered = [c for c in self.conditions if condition_kind(c.kind).power_output]
         self._powered = powered
         if powered:
             mux = self.add_subsystem("power_mux", om.MuxComp(vec_size=len(powered)))
@@ -216,7 +217,7 @@ class LPCGroup(om.Group):
         # Motor sets: prefix -> [(condition, motor indices)], in condition order.
         self._motor_sets = {}
         for c in self.conditions:
-            for prefix, motors in condition_class(c.kind).motor_sets(vehicle, c).items():
+            for prefix, motors in condition_kind(c.kind).motor_sets(vehicle, c).items():
                 self._motor_sets.setdefault(prefix, []).append((c, list(motors)))
         sizes = {"lift": len(vehicle.lift_rotors), "pusher": 1}
         for prefix, members in self._motor_sets.items():

@@ -23,20 +23,6 @@ from lpc_mdo.core.checks import RangeCheck
 _check_ratio = RangeCheck(lower=0.0, lower_open=True, where="MotorGroup")
 _check_loading = RangeCheck(lower=0.0, lower_open=True, where="MotorGroup")
 
-#: Outputs of :class:`MotorDesignGroup` that :class:`MotorOperationGroup` reads, per motor
-#: design (besides the stack ``length``, a design variable).
-DESIGN_OUTPUTS = (
-    "peak_torque",
-    "resistance",
-    "inductance_d",
-    "inductance_q",
-    "flux_linkage",
-    "air_gap_flux_density",
-    "iron_volume",
-    "magnet_volume",
-    "rotor_diameter",
-)
-
 
 def _declare_options(group):
     group.options.declare(

@@ -5,10 +5,10 @@
   inertia tensor about the cg with the parallel-axis theorem) from a vehicle definition. The
   wing mass (wing-box beam) and the motor masses (paper eq. 23) are inputs, connected by the
   assembly.
-- :func:`calibrate_other_mass` returns the W_other of the paper's calibration: the one that
-  makes the initial design's gross mass the vehicle's ``masses.design_gross_mass`` (the paper:
-  3723.99 kg, Table 8). The model uses it for a vehicle with ``masses.other_rule =
-  "calibrated"``; the reference vehicle is itemised (W_other = 0).
+- :func:`~lpc_mdo.groups.vehicle.calibrate_other_mass` returns the W_other of the paper's
+  calibration: the one that makes the initial design's gross mass the vehicle's
+  ``masses.design_gross_mass`` (the paper: 3723.99 kg, Table 8). The model uses it for a vehicle
+  with ``masses.other_rule = "calibrated"``; the reference vehicle is itemised (W_other = 0).
 - ``mass_breakdown`` and ``format_mass_breakdown`` (reading and printing the breakdown of a
   problem or a recorded case) are plain post-processing, in :mod:`lpc_mdo.api.weights`.
 """
@@ -34,6 +34,7 @@ from lpc_mdo.components.weights.rotor_mass import RotorMassComp
 from lpc_mdo.components.weights.systems import SYSTEM_ITEMS, SystemsMassComp
 from lpc_mdo.components.weights.wing_secondary import WingSecondaryMassComp
 from lpc_mdo.core.checks import RangeCheck, check_choice
+from lpc_mdo.vehicle import reference_vehicle
 
 _FT = 0.3048
 #: NDARC fuselage length of the NASA LPC (GUAM build_Lift_plus_Cruise.m, f_ld = 29.93/6.13), m.
@@ -124,8 +125,6 @@ def rotor_design_speeds(vehicle=None):
 
 
 def _vehicle(vehicle):
-    from lpc_mdo.vehicle import reference_vehicle
-
     return reference_vehicle() if vehicle is None else vehicle
 
 
@@ -180,7 +179,8 @@ def placeholder_calibration_inputs(vehicle=None):
     Return the default wing and motor masses of a stand-alone :class:`WeightsGroup`.
 
     The vehicle model connects the wing-box beam and the motor sizing instead; W_other is
-    calibrated with those (:func:`calibrate_other_mass`), not with these defaults.
+    calibrated with those (:func:`~lpc_mdo.groups.vehicle.calibrate_other_mass`), not with these
+    defaults.
 
     - ``wing_mass`` (kg): the M4 wing regression (docs theory/weights 'M4 regressions', public-code
       alternative to the beam) at the vehicle's initial planform, battery mass and cruise speed;
@@ -315,8 +315,9 @@ class WeightsGroup(om.Group):
     fuselage_cg_x_factor : float
         k_x (> 0) of the fuselage cg (:class:`FuselageRegressionComp`). Default 0.88, as coded.
     other_mass : float or None
-        Default of the ``other_mass`` input (>= 0), e.g. from :func:`calibrate_other_mass`;
-        None = ``vehicle.masses.other`` (the uncalibrated initial guess).
+        Default of the ``other_mass`` input (>= 0), e.g. from
+        :func:`~lpc_mdo.groups.vehicle.calibrate_other_mass`; None = ``vehicle.masses.other`` (the
+        uncalibrated initial guess).
     other_cg : sequence of 3 float or None
         Default of the ``other_cg`` input (m); None = ``vehicle.masses.other_cg``.
     """
@@ -490,36 +491,3 @@ class WeightsGroup(om.Group):
 
 # ------------------------------------------------------------------------------------------------
 # Calibration of W_other and the mass breakdown
-
-
-def calibrate_other_mass(vehicle=None):
-    """
-    Return W_other (kg) such that the vehicle's initial design has its target gross mass.
-
-    This is the W_other the model uses: :class:`~lpc_mdo.groups.vehicle.VehicleGroup` (and so
-    the full model) calibrates with the same function,
-    :func:`lpc_mdo.groups.vehicle.calibrated_other_mass`, which evaluates the vehicle at its
-    initial design with the wing mass from the wing-box beam and the motor masses from the motor
-    sizing (paper eq. 23). The paper chose W_other "so that the initial gross weight computed by
-    our computational model matches closely with the NASA reference" (Sec. IV).
-
-    Parameters
-    ----------
-    vehicle : lpc_mdo.vehicle.Vehicle or None
-        None = the reference vehicle. The target is its ``masses.design_gross_mass``
-        (3723.99 kg for the reference vehicle, paper Table 8).
-
-    Returns
-    -------
-    float
-        Calibrated W_other, kg.
-
-    Raises
-    ------
-    ValueError
-        When the vehicle's other items already weigh more than the target (W_other <= 0).
-    """
-    # Imported here: lpc_mdo.groups.vehicle builds its mass model from this module.
-    from lpc_mdo.groups.vehicle import calibrated_other_mass
-
-    return calibrated_other_mass(_vehicle(vehicle))[0]

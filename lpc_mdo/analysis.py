@@ -20,7 +20,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from lpc_mdo.groups.condition_base import condition_layout
+from lpc_mdo.vehicle.condition_layout import condition_layout
 
 __all__ = [
     "TRIM_TOLERANCE",
@@ -264,11 +264,11 @@ def format_static_margin_budget(prob, condition="cruise"):
 def format_drag_breakdown(prob, vehicle=None):
     """Return a text table: C_D0 and D/q of each drag part in every wing-borne condition.
 
-    The parts are those of :func:`lpc_mdo.components.aero.drag_buildup.lpc_drag_components`
+    The parts are those of :func:`lpc_mdo.groups.vehicle_drag.lpc_drag_components`
     (then the lumped drag area and the leakage/protuberance allowance); conditions without a
     ``drag_breakdown`` output (hover) are skipped.
     """
-    from lpc_mdo.components.aero.drag_buildup import lpc_drag_components
+    from lpc_mdo.groups.vehicle_drag import lpc_drag_components
 
     vehicle = vehicle or prob.vehicle
     comps, _ = lpc_drag_components(vehicle)
@@ -351,8 +351,8 @@ def lift_to_drag(prob, condition=None, pitch_deg=None):
         ``CL_at_max`` (the sweep's largest ratio, refined by a parabola through its
         neighbours).
     """
-    from lpc_mdo.groups.condition_base import condition_layout
     from lpc_mdo.trim import problem_vehicle, single_condition_problem
+    from lpc_mdo.vehicle.condition_layout import condition_layout
 
     vehicle = problem_vehicle(prob)
     condition = condition or vehicle.mission.cruise_condition

@@ -546,7 +546,7 @@ def _analyze_masses(analysis, args):
 
 
 def _analyze_conditions(analysis, args):
-    from lpc_mdo.groups.condition_kinds import condition_class
+    from lpc_mdo.vehicle.condition_contract import condition_kind
 
     prob, vehicle = analysis.prob, analysis.vehicle
     trim = analysis.trim.conditions if analysis.trim else {}
@@ -561,7 +561,7 @@ def _analyze_conditions(analysis, args):
         name = condition.name
         lin = prob.get_val(f"{name}.linear_acceleration")[0]
         ang = prob.get_val(f"{name}.angular_acceleration")[0]
-        kind = condition_class(condition.kind)
+        kind = condition_kind(condition.kind)
         if kind.power_output:
             power = f"{prob.get_val(f'{name}.{kind.power_output}', units='kW')[0]:>12.1f}"
         else:
@@ -598,12 +598,12 @@ def _analyze_constraints(analysis, args):
 
 
 def _analyze_summary(analysis, args):
-    from lpc_mdo.groups.condition_kinds import condition_class
+    from lpc_mdo.vehicle.condition_contract import condition_kind
 
     prob, vehicle = analysis.prob, analysis.vehicle
     summary = [f"final state of charge {prob.get_val('state_of_charge')[0]:.3f}"]
     for condition in prob.model.conditions:
-        for con in condition_class(condition.kind).constraints(vehicle, condition, None):
+        for con in condition_kind(condition.kind).constraints(vehicle, condition, None):
             if con.kind == "noise":
                 value = prob.get_val(f"{condition.name}.{con.output}")[0]
                 summary.append(f"{condition.name} noise {value:.1f} dBA")

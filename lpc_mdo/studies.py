@@ -5,11 +5,11 @@ import openmdao.api as om
 
 from lpc_mdo.core.mpi import serial_comm
 from lpc_mdo.drivers import make_driver
-from lpc_mdo.groups.condition_base import condition_layout
-from lpc_mdo.groups.conditions import StructuralCondition
 from lpc_mdo.groups.lpc import LPCGroup, openmdao_units
 from lpc_mdo.problems import attach_recorder, conditions_of_kinds, trim_constraints
 from lpc_mdo.vehicle import reference_vehicle
+from lpc_mdo.vehicle.condition_kinds import StructuralKind
+from lpc_mdo.vehicle.condition_layout import condition_layout
 
 THICKNESSES = (
     "front_spar_thickness",
@@ -105,7 +105,7 @@ def structural_sizing_problem(
             model.add_constraint(
                 f"{name}.{output}", indices=indices, flat_indices=True, equals=targets, ref=ref
             )
-        skin = StructuralCondition.compressed_skin(condition)
+        skin = StructuralKind.compressed_skin(condition)
         if aggregated:
             model.add_constraint(
                 f"{name}.{skin}_skin_buckling_ratio_ks", upper=limits.max_buckling_ratio

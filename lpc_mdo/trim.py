@@ -2,7 +2,7 @@
 
 Each condition has its trim constraints (paper Table 6: force and moment balance, the
 prescribed transition acceleration) and its trim variables (rotor speeds, pitch, elevator;
-:meth:`lpc_mdo.groups.condition_base.ConditionLayout.trim_variables`, from each kind's
+:meth:`lpc_mdo.vehicle.condition_layout.ConditionLayout.trim_variables`, from each kind's
 contract). With everything else fixed these form a
 small nonlinear system per condition, square or under-determined, with bounds. :func:`trim`
 solves them one condition at a time by bounded Gauss-Newton least squares (scipy's dogbox
@@ -36,8 +36,8 @@ import openmdao.api as om
 from openmdao.utils.general_utils import determine_adder_scaler
 from scipy.optimize import least_squares
 
-from lpc_mdo.groups.condition_base import condition_layout
 from lpc_mdo.groups.lpc import openmdao_units
+from lpc_mdo.vehicle.condition_layout import condition_layout
 
 
 def driver_scaling(meta):

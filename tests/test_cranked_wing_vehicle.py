@@ -254,7 +254,9 @@ def test_section_wing_box_of_one_section_is_the_trapezoid_box():
     prob.set_val("wing_incidence", incidence)
     prob.run_model()
     ref = om.Problem(reports=False)
-    ref.model.add_subsystem("box", WingBoxGeometryComp(num_nodes=9), promotes=["*"])
+    ref.model.add_subsystem(
+        "box", WingBoxGeometryComp(num_nodes=9, wing=reference_vehicle().wing), promotes=["*"]
+    )
     ref.setup()
     for name, value in (
         ("wing_area", area),

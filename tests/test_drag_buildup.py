@@ -13,9 +13,9 @@ from lpc_mdo.components.aero.drag_buildup import (
     DragBuildupComp,
     FixedFormFactorDrag,
     LiftingSurfaceDrag,
-    lpc_drag_components,
     raymer_ga_tyre,
 )
+from lpc_mdo.groups.vehicle_drag import lpc_drag_components
 
 # Cruise (reference vehicle file): M 0.17 at 999.74 m, CADDEE atmosphere (docs theory/atmosphere):
 # rho = 1.11177 kg/m^3, mu = 1.70443e-5 Pa s, a = 336.410 m/s, V = 57.1897 m/s.

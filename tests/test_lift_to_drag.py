@@ -75,10 +75,8 @@ def test_trimmed_polar_against_nasa_cfd_like_for_like():
     from test_drag_buildup import fully_turbulent, make_problem
 
     from lpc_mdo.analysis import analyze_vehicle
-    from lpc_mdo.components.aero.drag_buildup import (
-        LPC_LEAKAGE_PROTUBERANCE,
-        lpc_drag_components,
-    )
+    from lpc_mdo.components.aero.drag_buildup import LPC_LEAKAGE_PROTUBERANCE
+    from lpc_mdo.groups.vehicle_drag import lpc_drag_components
 
     def build_up(gear, booms, turbulent):
         comps, values = lpc_drag_components(gear=gear, booms=booms)

@@ -12,11 +12,11 @@ import numpy as np
 import pytest
 
 from lpc_mdo.cli import main
-from lpc_mdo.groups.condition_kinds import condition_class
 from lpc_mdo.post.report import ReportSpec, write_report
 from lpc_mdo.problems import build_analysis_problem, build_problem
 from lpc_mdo.trim import trim
 from lpc_mdo.vehicle import load_vehicle, reference_vehicle
+from lpc_mdo.vehicle.condition_contract import condition_kind
 
 LOITER_DURATION = 600.0  # s
 LOITER_WEIGHT = 1.5  # the loiter counts 1.5 times in the mission energy
@@ -100,7 +100,7 @@ def test_loiter_trims_and_counts_power_times_duration_times_weight(loiter_file):
     vehicle = prob.vehicle
     by_hand = 0.0
     for c in vehicle.conditions:
-        output = condition_class(c.kind).power_output
+        output = condition_kind(c.kind).power_output
         if output is not None:
             power = prob.get_val(f"{c.name}.{output}", units="W")[0]
             by_hand += power * c.duration * c.energy_weight

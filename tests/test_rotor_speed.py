@@ -4,7 +4,7 @@ import pytest
 from openmdao.utils.assert_utils import assert_check_partials, assert_near_equal
 
 from lpc_mdo.components.rotor.rotor_speed import RotorSpeedComp
-from lpc_mdo.groups.conditions import roll_yaw_mixing
+from lpc_mdo.groups.condition_builders import roll_yaw_mixing
 from lpc_mdo.vehicle import reference_vehicle
 
 

@@ -9,6 +9,7 @@ from lpc_mdo.api.structures import beam, box_beam
 from lpc_mdo.components.structures.beam import BeamDisplacementComp
 from lpc_mdo.components.structures.wing_box_geometry import WingBoxGeometryComp
 from lpc_mdo.groups.beam import BeamGroup, BoxBeamGroup
+from lpc_mdo.vehicle import reference_vehicle
 
 THICKNESSES = (
     "top_skin_thickness",
@@ -25,7 +26,9 @@ def _wing_problem(mode="auto"):
     The loads are lift strips, 2 booms and the wing's own weight at +3 g.
     """
     prob = om.Problem(reports=False)
-    prob.model.add_subsystem("geometry", WingBoxGeometryComp(), promotes=["*"])
+    prob.model.add_subsystem(
+        "geometry", WingBoxGeometryComp(wing=reference_vehicle().wing), promotes=["*"]
+    )
     prob.model.add_subsystem(
         "wing_box",
         BoxBeamGroup(num_nodes=9, num_aero_points=12, num_point_masses=2, ks_rho=50.0),

@@ -199,8 +199,8 @@ def test_motor_group_loading_options():
 
 
 def test_motor_designs_are_sized_once_and_read_by_every_condition():
+    from lpc_mdo.components.motor.parameters import DESIGN_OUTPUTS
     from lpc_mdo.groups.lpc import LPCGroup
-    from lpc_mdo.groups.motor import DESIGN_OUTPUTS
 
     # The vehicle group sizes one motor per rotor group with the vehicle's loadings; the
     # conditions (hover: lift motors, cruise: pusher) only run operating points and read the

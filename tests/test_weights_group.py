@@ -6,10 +6,9 @@ import pytest
 from openmdao.utils.assert_utils import assert_check_totals, assert_near_equal
 
 from lpc_mdo.api.weights import format_mass_breakdown, mass_breakdown
-from lpc_mdo.groups.vehicle import VehicleGroup
+from lpc_mdo.groups.vehicle import VehicleGroup, calibrate_other_mass
 from lpc_mdo.groups.weights import (
     WeightsGroup,
-    calibrate_other_mass,
     motor_group_indices,
     placeholder_calibration_inputs,
     wing_cg_estimate,

@@ -16,8 +16,22 @@ from lpc_mdo.core.constants import SEA_LEVEL_DENSITY
 
 MU_0 = 4.0e-7 * np.pi  # vacuum permeability, H/m
 
+#: The motor-design quantities that the operating-point models read, per motor design (outputs
+#: of ``MotorDesignGroup`` that ``MotorOperationGroup`` reads; the stack length, a design
+#: variable, besides).
+DESIGN_OUTPUTS = (
+    "peak_torque",
+    "resistance",
+    "inductance_d",
+    "inductance_q",
+    "flux_linkage",
+    "air_gap_flux_density",
+    "iron_volume",
+    "magnet_volume",
+    "rotor_diameter",
+)
+
 # --- Sizing (docs theory/motor 'Sizing')
-# -------------------------------------------------------------------------
 STATOR_DIAMETER_RATIO = 1.25  # lambda_i = D / D_i
 AIR_GAP_FLUX_DENSITY_MAX = 0.85  # B_delta,max, T (design value; independent of B_bar as coded)
 DESIGN_EFFICIENCY = 0.96  # eta_0, assumed efficiency in the winding design

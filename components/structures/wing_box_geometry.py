@@ -7,7 +7,6 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.core.checks import check_number, check_range
-from lpc_mdo.vehicle import LiftingSurface, reference_vehicle
 
 
 @dataclasses.dataclass(frozen=True)
@@ -242,9 +241,11 @@ class WingBoxGeometryComp(om.ExplicitComponent):
         Beam nodes per half wing (>= 2); default 9 (8 bays).
     section : WingBoxSection
         Airfoil numbers and chord fractions; default ``WING_BOX_SECTIONS['ls413']``.
-    wing : lpc_mdo.vehicle.LiftingSurface or None
-        The wing whose planform gives the input defaults (VehicleGroup passes the vehicle's
-        wing); None = the reference vehicle's wing, for stand-alone use.
+    wing : object
+        The wing whose planform gives the input defaults: anything with ``area``,
+        ``aspect_ratio``, ``taper_ratio``, ``sweep``, ``dihedral``, ``incidence`` and
+        ``root_leading_edge`` (SI), such as a vehicle's ``wing``
+        (:class:`lpc_mdo.vehicle.LiftingSurface`), which VehicleGroup passes.
     """
 
     def initialize(self):
@@ -263,19 +264,14 @@ class WingBoxGeometryComp(om.ExplicitComponent):
         )
         self.options.declare(
             "wing",
-            default=None,
-            types=LiftingSurface,
-            allow_none=True,
-            desc="lpc_mdo.vehicle.LiftingSurface giving the input defaults; "
-            "None = the reference vehicle's wing",
+            desc="the wing whose planform gives the input defaults (area, aspect_ratio, "
+            "taper_ratio, sweep, dihedral, incidence, root_leading_edge; e.g. a vehicle's wing)",
         )
 
     def setup(self):
         n = self.options["num_nodes"]
         ne = n - 1
         wing = self.options["wing"]
-        if wing is None:
-            wing = reference_vehicle().wing
         self.add_input("wing_area", val=wing.area, units="m**2", desc="wing reference area")
         self.add_input(
             "wing_aspect_ratio", val=wing.aspect_ratio, units=None, desc="wing aspect ratio"

@@ -33,8 +33,8 @@ from lpc_mdo.drivers import IpoptDriver, IpoptMultipliers, SlsqpDriver, make_dri
 from lpc_mdo.groups.acoustics import RotorNoiseGroup
 from lpc_mdo.groups.lpc import LPCGroup
 from lpc_mdo.groups.motor import MotorGroup
-from lpc_mdo.groups.vehicle import VehicleGroup
-from lpc_mdo.groups.weights import WeightsGroup, calibrate_other_mass
+from lpc_mdo.groups.vehicle import VehicleGroup, calibrate_other_mass
+from lpc_mdo.groups.weights import WeightsGroup
 from lpc_mdo.problems import build_analysis_problem
 from lpc_mdo.vehicle import (
     VehicleSpecError,

@@ -13,7 +13,7 @@ transition v_dot, which no trim variable controls on its own):
 with m = ``gross_mass``, I = ``inertia`` (3 x 3, about the cg) and the accelerations
 ``{condition}.linear_acceleration``, ``{condition}.angular_acceleration``. The rows and their
 targets (zero except the prescribed transition accelerations) are those the optimization
-problems declare: each condition kind's :meth:`~lpc_mdo.groups.condition_base.ConditionGroup.
+problems declare: each condition kind's :meth:`~lpc_mdo.vehicle.condition_contract.ConditionKind.
 trim_rows`. The reference vehicle: hover (w, p, q), steady (u, w, q), transition (u, v, w, p, q,
 r), OEI (v, w, p, q, r), structural (w): 64 of the 96 constraints for its 15 conditions.
 """
@@ -21,8 +21,6 @@ r), OEI (v, w, p, q, r), structural (w): 64 of the 96 constraints for its 15 con
 import numpy as np
 
 from lpc_mdo.core.constants import GRAVITY
-from lpc_mdo.groups.condition_base import ANGULAR_COMPONENTS, LINEAR_COMPONENTS
-from lpc_mdo.groups.condition_kinds import condition_class
 from lpc_mdo.post.tables import (
     MissingVariableError,
     Table,
@@ -33,6 +31,7 @@ from lpc_mdo.post.tables import (
     read_value,
 )
 from lpc_mdo.vehicle import reference_vehicle
+from lpc_mdo.vehicle.condition_contract import ANGULAR_COMPONENTS, LINEAR_COMPONENTS, condition_kind
 
 __all__ = ["trim_residuals", "trim_residual_table"]
 
@@ -106,7 +105,7 @@ def trim_residuals(source, case=None, vehicle=None):
         except MissingVariableError:
             continue
         moment = inertia @ values["angular_acceleration"]
-        for row in condition_class(condition.kind).trim_rows(vehicle, condition):
+        for row in condition_kind(condition.kind).trim_rows(vehicle, condition):
             value = values[row.output][row.index]
             declared = row.index in _declared_indices(metadata, f"{name}.{row.output}")
             if row.output == "linear_acceleration":

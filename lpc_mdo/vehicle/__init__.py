@@ -12,7 +12,7 @@ Conventions
 - Body frame: x forward, y right, z down, origin at the fuselage nose. Vectors are tuples of floats
   (use ``np.asarray``).
 - Conditions are data: each ``[[conditions]]`` entry has a ``name`` (any identifier), a ``kind``
-  (a key of :data:`lpc_mdo.groups.condition_kinds.CONDITION_KINDS`: ``hover``, ``oei``,
+  (a key of :data:`lpc_mdo.vehicle.condition_contract.CONDITION_KINDS`: ``hover``, ``oei``,
   ``transition``, ``steady``, ``structural``), its flight state, its ``energy_weight`` in the
   mission energy and the ``design_variable_prefix`` of the design variables it owns. The
   reference vehicle has 15.
@@ -37,7 +37,7 @@ Design variables
 of the vehicle file's ``[design_variables]`` tables. The vehicle-level ones are fixed by the
 vehicle; each condition adds those its kind declares (rotor speeds, pitch, elevator), named
 ``{design_variable_prefix}_{variable}`` and stacked as rows where conditions share a prefix
-(:class:`lpc_mdo.groups.condition_base.ConditionLayout`). The reference vehicle has the 32 below:
+(:class:`lpc_mdo.vehicle.condition_layout.ConditionLayout`). The reference vehicle has the 32 below:
 the paper's 161 (Table 6), the 10 roll and yaw speed differentials of the transition lift rotors,
 which the paper does not have, and the 5 transition pitch angles, which the paper prescribes.
 Without the differentials no trim variable acts on roll in transition, where the
@@ -99,6 +99,8 @@ import tomllib
 from collections.abc import Mapping
 from importlib import resources
 
+# condition_kinds registers the package's condition kinds, which the file checks need.
+from lpc_mdo.vehicle import condition_kinds as _condition_kinds  # noqa: F401
 from lpc_mdo.vehicle.consistency import (
     _check_conditions,
     _check_geometry,

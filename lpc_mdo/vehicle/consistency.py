@@ -1,8 +1,8 @@
 """Checks of a vehicle file across fields: symmetric lift-rotor pairs, the pusher, conditions.
 
-Each condition kind's own rules are its class's :meth:`~lpc_mdo.groups.condition_base.
-ConditionGroup.check`; this module checks what spans fields (names unique, kinds registered,
-the cruise condition a steady one).
+Each condition kind's own rules are its declaration's
+:meth:`~lpc_mdo.vehicle.condition_contract.ConditionKind.check`; this module checks what spans
+fields (names unique, kinds registered, the cruise condition a steady one).
 """
 
 from __future__ import annotations
@@ -11,6 +11,7 @@ import dataclasses
 
 import numpy as np
 
+from lpc_mdo.vehicle.condition_contract import CONDITION_KINDS
 from lpc_mdo.vehicle.parts import (
     _IDENTIFIER,
     _NUM_PAIRS,
@@ -83,9 +84,7 @@ def _check_pusher(pusher: Rotor) -> None:
 
 
 def _check_conditions(parts: dict) -> None:
-    """Names unique identifiers, kinds registered, each kind's own rules (its class's check)."""
-    from lpc_mdo.groups.condition_kinds import CONDITION_KINDS
-
+    """Names unique identifiers, kinds registered, each kind's own rules (its declaration)."""
     vehicle = _PartialVehicle(parts)
     seen: dict[str, int] = {}
     for i, c in enumerate(parts["conditions"]):
@@ -102,7 +101,7 @@ def _check_conditions(parts: dict) -> None:
                 f"'conditions[{seen[c.name]}].name'; names must be unique"
             )
         seen[c.name] = i
-        if c.kind not in CONDITION_KINDS:
+        if c.kind not in CONDITION_KINDS:  # lpc_mdo.vehicle imports condition_kinds
             allowed = ", ".join(repr(k) for k in CONDITION_KINDS)
             raise VehicleSpecError(
                 f"'{path}.kind' = {c.kind!r} is not allowed: must be one of "

@@ -558,7 +558,7 @@ class DesignCondition:
         Condition name, an identifier unique in the vehicle; the subsystem's name in the model.
     kind : str
         Which group class builds it and declares its design variables, trim rows, constraints
-        and motors: a key of :data:`lpc_mdo.groups.condition_kinds.CONDITION_KINDS`
+        and motors: a key of :data:`lpc_mdo.vehicle.condition_contract.CONDITION_KINDS`
         (``hover``, ``oei``, ``transition``, ``steady``, ``structural``).
     altitude : float
         Altitude for the atmosphere (m); the mean altitude in climb and descent.

@@ -1,0 +1,145 @@
+"""Hover and one-engine-inoperative hover: BEM lift rotors, motors, trim and rotor noise."""
+
+import numpy as np
+import openmdao.api as om
+
+from lpc_mdo.groups.acoustics import RotorNoiseGroup
+from lpc_mdo.groups.condition_base import ConditionGroup
+from lpc_mdo.groups.condition_builders import (
+    add_atmosphere,
+    add_equations_of_motion,
+    add_lift_rotors,
+    add_power,
+)
+from lpc_mdo.vehicle.condition_kinds import HoverKind, num_lift_pairs
+
+DEFAULT_ROTOR_THICKNESS_TO_CHORD = 0.12
+
+
+class HoverCondition(ConditionGroup):
+    """
+    Hover (and one-engine-inoperative hover): BEM lift rotors, their motors, trim and noise.
+
+    The noise, in hover, is that at the paper's observer (paper Sec. IV; docs: theory/dynamics
+    and theory/acoustics).
+
+    Kinds ``hover`` and ``oei``. The failed rotor of an OEI case (``failed_rotor`` in the vehicle
+    file) is left out; the working rotors have their own speeds (one speed group each), while in
+    hover the mirror-symmetric pairs share theirs. Trim: all six accelerations are outputs; the
+    Table 6 rows are w_dot, p_dot, q_dot in hover and v_dot, w_dot, p_dot, q_dot, r_dot in OEI
+    (hover p_dot and OEI v_dot vanish for every design: degenerate rows). The body is level
+    (``pitch`` = 0): the lift-rotor thrust axes are body-fixed and u_dot is not a hover trim row,
+    so a pitched hover is a VehicleSpecError.
+
+    The noise model (without a failed rotor) takes from the vehicle the observer
+    (``noise_observer.distance``, ``noise_observer.elevation`` -> ``observer_distance``,
+    ``observer_elevation``; the azimuth stays aft, 180 deg) and each lift rotor's section t/c
+    (``lift_rotors[i].airfoil`` -> ``lift_thickness_to_chord``, of the thickness noise).
+
+    Outputs: ``linear_acceleration``, ``angular_acceleration`` (1, 3); ``electrical_power``
+    (1,); ``lift_tip_mach``, ``lift_figure_of_merit``, ``lift_motor_torque_margin``,
+    ``lift_motor_em_torque`` (num_lift, 1); with acoustics ``total_spl_a`` (dBA).
+    """
+
+    declaration = HoverKind
+
+    def initialize(self):
+        super().initialize()
+        self.options.declare(
+            "acoustics",
+            default=None,
+            types=bool,
+            allow_none=True,
+            desc="add the noise model (None: without a failed rotor)",
+        )
+
+    def setup(self):
+        vehicle = self.options["vehicle"]
+        condition = vehicle.condition(self.options["condition"])
+        # A Vehicle built in code (dataclasses.replace) skips the file validation: check again.
+        HoverKind.check(vehicle.conditions.index(condition), condition, vehicle)
+        failed = condition.failed_rotor
+        self.active_rotors = HoverKind.active_lift_rotors(vehicle, condition)
+        rotors = [vehicle.lift_rotors[i] for i in self.active_rotors]
+        if failed >= 0:
+            groups, num_groups = list(range(len(rotors))), len(rotors)
+        else:
+            groups, num_groups = [r.pair for r in rotors], num_lift_pairs(rotors)
+        self.speed_groups = num_groups
+
+        add_atmosphere(self, condition)
+        add_lift_rotors(self, vehicle, rotors, groups, num_groups, edgewise=False)
+        self.set_input_defaults("velocity", np.zeros((1, 3)), units="m/s")
+        add_power(self, {"lift": len(rotors)})
+        add_equations_of_motion(self, ["lift"])
+        self.set_input_defaults("pitch", np.array([condition.pitch]), units="rad")  # 0, checked
+
+        acoustics = self.options["acoustics"]
+        if acoustics is None:
+            acoustics = failed < 0
+        if acoustics:
+            nrad = self.options["num_radial"]
+            na = len(rotors)
+            self.add_subsystem(
+                "noise",
+                RotorNoiseGroup(
+                    num_rotors=na,
+                    num_radial=nrad,
+                    num_azimuth=1,
+                    num_blades=[r.num_blades for r in rotors],
+                    hub_radius_ratio=rotors[0].hub_radius_ratio,
+                    load_input="sectional",
+                    rotation_direction=tuple(float(r.spin_direction) for r in rotors),
+                ),
+                promotes_inputs=[
+                    ("radius", "lift_radius"),
+                    ("hub_position", "lift_hub_position"),
+                    "density",
+                    "speed_of_sound",
+                    "observer_distance",
+                    "observer_elevation",
+                    ("thickness_to_chord", "lift_thickness_to_chord"),
+                    ("chord", "lift_chord"),
+                ],
+                promotes_outputs=["total_spl_a", "total_spl", "rotor_spl_a"],
+            )
+            observer = vehicle.noise_observer
+            self.set_input_defaults("observer_distance", np.array([observer.distance]), units="m")
+            self.set_input_defaults(
+                "observer_elevation", np.array([observer.elevation]), units="rad"
+            )
+            # Each rotor's section t/c at every acoustic station (rotor, station).
+            thickness = [_rotor_thickness_to_chord(vehicle, i) for i in self.active_rotors]
+            self.set_input_defaults(
+                "lift_thickness_to_chord", np.repeat(np.array(thickness)[:, None], nrad, axis=1)
+            )
+            # (rotor, node = 0, station) of the BEM -> (rotor, station, azimuth = 0) of the
+            # acoustics: a fancy index of the source shaped like the target.
+            rotor, station = np.meshgrid(np.arange(na), np.arange(nrad), indexing="ij")
+            reshape = om.slicer[rotor[..., None], 0 * rotor[..., None], station[..., None]]
+            for name in ("thrust_per_span", "drag_per_span", "inflow_angle"):
+                self.connect(f"lift_rotors.{name}", f"noise.{name}", src_indices=reshape)
+            self.connect(
+                "lift_thrust", "noise.thrust", src_indices=np.arange(na), flat_src_indices=True
+            )
+            self.connect(
+                "lift_rotor_rpm", "noise.rpm", src_indices=np.arange(na), flat_src_indices=True
+            )
+
+
+def _rotor_thickness_to_chord(vehicle, index):
+    """Section t/c of ``vehicle.lift_rotors[index]`` for the thickness noise.
+
+    A named airfoil gives its t/c (``lpc_mdo.vehicle.AIRFOILS``); a user polar file has none, so
+    the noise model then uses that of NACA 0012 (the reference rotor section), with a warning
+    naming the field.
+    """
+    rotor = vehicle.lift_rotors[index]
+    if rotor.thickness_to_chord is not None:
+        return rotor.thickness_to_chord
+    om.issue_warning(
+        f"'lift_rotors[{index}].airfoil' = {rotor.airfoil!r} is a polar file, "
+        f"which gives no thickness: the thickness noise uses t/c = "
+        f"{DEFAULT_ROTOR_THICKNESS_TO_CHORD} (NACA 0012)"
+    )
+    return DEFAULT_ROTOR_THICKNESS_TO_CHORD
