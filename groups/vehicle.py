@@ -18,7 +18,7 @@ from lpc_mdo.components.geometry.rotor_layout import RotorLayoutComp
 from lpc_mdo.components.geometry.section_mesh import SectionMeshComp
 from lpc_mdo.components.geometry.surface_sizing import SurfaceSizingComp
 from lpc_mdo.components.geometry.tail_position import TailPositionComp
-from lpc_mdo.components.motor.parameters import MotorParameters
+from lpc_mdo.components.motor.parameters import DESIGN_OUTPUTS, MotorParameters
 from lpc_mdo.components.structures.beam import BeamMassComp
 from lpc_mdo.components.structures.box_section import BoxSectionComp
 from lpc_mdo.components.structures.section_wing_box_geometry import SectionWingBoxGeometryComp
@@ -28,9 +28,10 @@ from lpc_mdo.components.structures.wing_box_geometry import (
 )
 from lpc_mdo.components.weights.wing_mass import WingMirrorComp
 from lpc_mdo.core.mpi import serial_comm
-from lpc_mdo.groups.motor import DESIGN_OUTPUTS, MotorDesignGroup
+from lpc_mdo.groups.motor import MotorDesignGroup
 from lpc_mdo.groups.weights import WeightsGroup, motor_group_indices
 from lpc_mdo.vehicle import reference_vehicle
+from lpc_mdo.vehicle.design_variable_registry import VEHICLE_DESIGN_VARIABLES
 
 # OpenMDAO notes, when a driver splits the model into systems before, in and after the
 # optimization iteration, that a group with a DirectSolver is "treated as atomic" there. Every
@@ -41,23 +42,6 @@ _ATOMIC_VEHICLE_NOTICE = (
     r"The following groups have a nonlinear solver that computes gradients .*: "
     r"\n([\w.]+\.)?vehicle\n\Z"
 )
-
-# Design variables that the vehicle group consumes, with their units.
-VEHICLE_DESIGN_VARIABLES = {
-    "wing_area": "m**2",
-    "wing_aspect_ratio": None,
-    "htail_area": "m**2",
-    "htail_aspect_ratio": None,
-    "fuselage_length": "m",
-    "rotor_radius": "m",
-    "blade_chord_cp": "m",
-    "battery_mass": "kg",
-    "motor_length": "m",
-    "front_spar_thickness": "m",
-    "rear_spar_thickness": "m",
-    "top_skin_thickness": "m",
-    "bottom_skin_thickness": "m",
-}
 
 
 def motor_parameters(vehicle):
@@ -111,10 +95,12 @@ class VehicleGroup(om.Group):
     - ``motor_design`` (MotorDesignGroup, one motor design per rotor group): motor masses
       (eq. 23) with the vehicle's electric and magnetic loadings, and the equivalent circuit
       (``motor_resistance``, ``motor_inductance_d``, ...: ``motor_{name}`` for the names in
-      :data:`~lpc_mdo.groups.motor.DESIGN_OUTPUTS`) that every condition's motors read;
+      :data:`~lpc_mdo.components.motor.parameters.DESIGN_OUTPUTS`) that every condition's motors
+      read;
     - ``weights`` (WeightsGroup): regressions, gross mass (objective), cg, inertia.
 
-    Inputs (promoted): the design variables in ``VEHICLE_DESIGN_VARIABLES`` (the wing-box
+    Inputs (promoted): the vehicle-level design variables
+    (:data:`~lpc_mdo.vehicle.design_variable_registry.VEHICLE_DESIGN_VARIABLES`) (the wing-box
     thicknesses per bay, root to tip).
 
     Options
@@ -398,9 +384,11 @@ class VehicleGroup(om.Group):
 
         self.set_input_defaults("material_density", vehicle.material.density, units="kg/m**3")
         dvs = vehicle.design_variables
-        for name, units in VEHICLE_DESIGN_VARIABLES.items():
+        for dv in VEHICLE_DESIGN_VARIABLES:
             self.set_input_defaults(
-                name, np.asarray(dvs[name].initial_array).reshape(dvs[name].shape), units=units
+                dv.name,
+                np.asarray(dvs[dv.name].initial_array).reshape(dvs[dv.name].shape),
+                units=None if dv.units == "unitless" else dv.units,
             )
 
         # Total derivatives: nearly every right-hand side of the adjoint (each trim row, margin
@@ -420,7 +408,7 @@ def calibrated_other_mass(vehicle):
 
     This is lpc-mdo's one W_other calibration: :class:`VehicleGroup` (so the full model) uses
     it when the vehicle's ``masses.other_rule`` is ``"calibrated"``, and
-    :func:`lpc_mdo.groups.weights.calibrate_other_mass` (``lpc_mdo.api``) returns its mass. The
+    :func:`calibrate_other_mass` (``lpc_mdo.api``) returns its mass. The
     target is ``masses.design_gross_mass``. W_other is the named unitemised item at
     ``masses.other_cg`` (a stated position; no rule moves it to balance hover).
 
@@ -459,6 +447,36 @@ def calibrated_other_mass(vehicle):
             f"would be {other:.2f} kg; allowed: a target above {bare_mass:.2f} kg."
         )
     return other, tuple(float(v) for v in masses.other_cg)
+
+
+def calibrate_other_mass(vehicle=None):
+    """
+    Return W_other (kg) such that the vehicle's initial design has its target gross mass.
+
+    This is the W_other the model uses: :class:`VehicleGroup` (and so
+    the full model) calibrates with the same function,
+    :func:`calibrated_other_mass`, which evaluates the vehicle at its
+    initial design with the wing mass from the wing-box beam and the motor masses from the motor
+    sizing (paper eq. 23). The paper chose W_other "so that the initial gross weight computed by
+    our computational model matches closely with the NASA reference" (Sec. IV).
+
+    Parameters
+    ----------
+    vehicle : lpc_mdo.vehicle.Vehicle or None
+        None = the reference vehicle. The target is its ``masses.design_gross_mass``
+        (3723.99 kg for the reference vehicle, paper Table 8).
+
+    Returns
+    -------
+    float
+        Calibrated W_other, kg.
+
+    Raises
+    ------
+    ValueError
+        When the vehicle's other items already weigh more than the target (W_other <= 0).
+    """
+    return calibrated_other_mass(reference_vehicle() if vehicle is None else vehicle)[0]
 
 
 def _initial_design(vehicle, other):

@@ -2,7 +2,7 @@
 
 :func:`declare_problem` declares the objective, design variables and constraints of a problem on
 an :class:`~lpc_mdo.groups.lpc.LPCGroup` from the condition contracts
-(:mod:`lpc_mdo.groups.condition_base`): each condition's design variables, its trim rows (paper
+(:mod:`lpc_mdo.vehicle.condition_contract`): each condition's design variables, its trim rows (paper
 Table 6) and its other constraints come from the class of its kind, the vehicle-level ones
 (state of charge, radius intersection, torque margins) from here. The subproblems of the
 warm start (Table 2) select conditions by kind, never by name, so a vehicle file with other or
@@ -16,11 +16,12 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.design_deviation import DesignDeviationComp
-from lpc_mdo.groups.condition_base import condition_layout
-from lpc_mdo.groups.condition_kinds import condition_class
 from lpc_mdo.groups.lpc import LPCGroup, included_conditions, openmdao_units
 from lpc_mdo.recorder import CaseRecorder
 from lpc_mdo.vehicle import load_vehicle, reference_vehicle
+from lpc_mdo.vehicle.condition_contract import condition_kind
+from lpc_mdo.vehicle.condition_layout import condition_layout
+from lpc_mdo.vehicle.design_variable_registry import BASELINE_SET
 
 #: Constraint kinds a problem may declare.
 CONSTRAINT_KINDS = (
@@ -43,25 +44,8 @@ TORQUE_MARGIN_KINDS = ("lift_torque_margin", "pusher_torque_margin")
 #: weakening, so a negative margin means the torque is computed at a voltage the drive does not
 #: have (the reference vehicle's pusher at its initial speeds: about -4.9 in transition).
 OPTIONAL_CONSTRAINT_KINDS = ("voltage_margin",)
-# Paper eq. 8-9: the set S of design variables the initial specification gives (beta = 1) -
-# every sizing variable; the operating variables (rotor speeds, pitch, elevator) are free - and
-# the penalty weight alpha.
-BASELINE_SET = (
-    "wing_area",
-    "wing_aspect_ratio",
-    "htail_area",
-    "htail_aspect_ratio",
-    "fuselage_length",
-    "rotor_radius",
-    "blade_chord_cp",
-    "blade_twist_cp",
-    "battery_mass",
-    "motor_length",
-    "front_spar_thickness",
-    "rear_spar_thickness",
-    "top_skin_thickness",
-    "bottom_skin_thickness",
-)
+# Paper eq. 8-9: the penalty weight alpha of the baseline problem (its set S is the registry's
+# BASELINE_SET, every sizing variable; the operating variables are free).
 BASELINE_ALPHA = 100.0
 #: Keyword arguments of :func:`declare_problem` (the rest of a builder's options are the
 #: model's).
@@ -137,7 +121,7 @@ def trim_constraints(vehicle, condition, lateral_trim=True):
     vehicle : Vehicle
     condition : DesignCondition
     lateral_trim : bool
-        Also the degenerate rows (:class:`~lpc_mdo.groups.condition_base.TrimRow`).
+        Also the degenerate rows (:class:`~lpc_mdo.vehicle.condition_contract.TrimRow`).
 
     Returns
     -------
@@ -146,7 +130,7 @@ def trim_constraints(vehicle, condition, lateral_trim=True):
     """
     rows = [
         r
-        for r in condition_class(condition.kind).trim_rows(vehicle, condition)
+        for r in condition_kind(condition.kind).trim_rows(vehicle, condition)
         if lateral_trim or not r.degenerate
     ]
     out = []
@@ -297,7 +281,7 @@ def declare_problem(
                     equals=targets,
                     ref=scale,
                 )
-        for con in condition_class(c.kind).constraints(vehicle, c, bounds_of):
+        for con in condition_kind(c.kind).constraints(vehicle, c, bounds_of):
             if con.kind in wanted:
                 model.add_constraint(f"{c.name}.{con.output}", **con.options)
 
@@ -308,10 +292,10 @@ def declare_problem(
         model.add_constraint("radius_intersection", equals=limits.radius_intersection, ref=0.1)
     motor_sets = set()
     for c in conditions:
-        motor_sets.update(condition_class(c.kind).motor_sets(vehicle, c))
+        motor_sets.update(condition_kind(c.kind).motor_sets(vehicle, c))
     if "voltage_margin" in wanted:
         for c in conditions:
-            for prefix in condition_class(c.kind).motor_sets(vehicle, c):
+            for prefix in condition_kind(c.kind).motor_sets(vehicle, c):
                 model.add_constraint(f"{c.name}.{prefix}_motor_voltage_margin", lower=0.0)
     for prefix in sorted(motor_sets):
         if "torque_margin" in wanted or f"{prefix}_torque_margin" in wanted:

@@ -121,7 +121,7 @@ class SweepSpec:
     group_label: str | None = None
 
 
-#: Table 8 columns: VehicleGroup design variables (``VEHICLE_DESIGN_VARIABLES``; ``rotor_radius``
+#: Table 8 columns: vehicle-level design variables (the registry's; ``rotor_radius``
 #: holds the 4 lift-rotor pairs then the pusher) and the WeightsGroup gross mass.
 LPC_DESIGN_QUANTITIES = (
     ("l_fuselage", "fuselage_length", "m"),
@@ -204,20 +204,20 @@ def lpc_distributions(vehicle):
 
 
 def _powered_conditions(vehicle):
-    from lpc_mdo.groups.condition_kinds import condition_class
+    from lpc_mdo.vehicle.condition_contract import condition_kind
 
-    return tuple(c.name for c in vehicle.conditions if condition_class(c.kind).power_output)
+    return tuple(c.name for c in vehicle.conditions if condition_kind(c.kind).power_output)
 
 
 def _all_lift_rotor_conditions(vehicle):
     """Conditions that run every lift rotor (hover and transition in the reference)."""
-    from lpc_mdo.groups.condition_kinds import condition_class
+    from lpc_mdo.vehicle.condition_contract import condition_kind
 
     n = len(vehicle.lift_rotors)
     return tuple(
         c.name
         for c in vehicle.conditions
-        if len(condition_class(c.kind).motor_sets(vehicle, c).get("lift", ())) == n
+        if len(condition_kind(c.kind).motor_sets(vehicle, c).get("lift", ())) == n
     )
 
 

@@ -1,7 +1,7 @@
 """The design-variable tables of a vehicle file (paper Table 6): shapes, units, bounds, refs.
 
 The vehicle-level design variables are fixed by the vehicle's parts; the conditions' come from
-their kinds' contracts (:class:`~lpc_mdo.groups.condition_base.ConditionLayout`). Each table of
+their kinds' contracts (:class:`~lpc_mdo.vehicle.condition_layout.ConditionLayout`). Each table of
 ``[design_variables]`` is checked against its spec: units, shape, bounds around the initial
 value, the minimum gauge.
 """
@@ -15,7 +15,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from lpc_mdo.vehicle.condition_layout import ConditionLayout
 from lpc_mdo.vehicle.consistency import _PartialVehicle
+from lpc_mdo.vehicle.design_variable_registry import VEHICLE_DESIGN_VARIABLES
 from lpc_mdo.vehicle.parts import DesignCondition, DesignVariable, _pairs, _ReadOnlyDict
 from lpc_mdo.vehicle.schema import (
     VehicleSpecError,
@@ -50,67 +52,23 @@ def _design_variable_specs(parts: dict) -> dict[str, _DVSpec]:
     """
     Return the design variables (paper Table 6), sized from the built vehicle parts.
 
-    The vehicle-level ones (planform, rotors, battery, motors, wing box), then those the
-    conditions own (:class:`lpc_mdo.groups.condition_base.ConditionLayout`).
+    The vehicle-level ones (the registry,
+    :data:`~lpc_mdo.vehicle.design_variable_registry.VEHICLE_DESIGN_VARIABLES`), then those the
+    conditions own (:class:`~lpc_mdo.vehicle.condition_layout.ConditionLayout`).
     """
-    from lpc_mdo.groups.condition_base import ConditionLayout
-
-    wing, htail = parts["wing"], parts["horizontal_tail"]
-    groups = [parts["lift_rotors"][i] for i, _ in _pairs(parts["lift_rotors"])]
-    groups.append(parts["pusher"])
-    ng = len(groups)
-    n_bays = parts["wing_box"].num_bays
-    rotor_rows = "rows: lift pairs 0-3, pusher"
-    rotor_from = "lift_rotors[i].{0} (one rotor per pair) and pusher.{0}"
+    rotor_groups = [parts["lift_rotors"][i] for i, _ in _pairs(parts["lift_rotors"])]
+    rotor_groups.append(parts["pusher"])
     gauge = (parts["material"].min_gauge, "material.min_gauge")
-
-    def scalar(description, units, key, value):
-        return _DVSpec(description, units, (1,), key, (value,))
-
-    def thickness(what):
-        return _DVSpec(
-            f"{what} thickness per wing-box bay, root to tip", "m", (n_bays,), lower_min=gauge
-        )
-
     specs = {
-        "wing_aspect_ratio": scalar(
-            "wing aspect ratio", "unitless", "wing.aspect_ratio", wing.aspect_ratio
-        ),
-        "wing_area": scalar("wing reference area", "m**2", "wing.area", wing.area),
-        "htail_aspect_ratio": scalar(
-            "h-tail aspect ratio", "unitless", "horizontal_tail.aspect_ratio", htail.aspect_ratio
-        ),
-        "htail_area": scalar("h-tail reference area", "m**2", "horizontal_tail.area", htail.area),
-        "fuselage_length": scalar(
-            "fuselage length", "m", "fuselage.length", parts["fuselage"].length
-        ),
-        "rotor_radius": _DVSpec(
-            f"rotor radius; {rotor_rows}",
-            "m",
-            (ng,),
-            rotor_from.format("radius"),
-            tuple(r.radius for r in groups),
-        ),
-        "blade_chord_cp": _DVSpec(
-            f"blade chord control points, root to tip; {rotor_rows}",
-            "m",
-            (ng, 4),
-            rotor_from.format("chord_cp"),
-            tuple(x for r in groups for x in r.chord_cp),
-        ),
-        "blade_twist_cp": _DVSpec(
-            f"blade twist control points, root to tip; {rotor_rows}",
-            "rad",
-            (ng, 4),
-            rotor_from.format("twist_cp_deg"),
-            tuple(x for r in groups for x in r.twist_cp),
-        ),
-        "battery_mass": scalar("battery mass", "kg", "battery.mass", parts["battery"].mass),
-        "motor_length": _DVSpec(f"motor stack length; {rotor_rows}", "m", (ng,)),
-        "front_spar_thickness": thickness("front-spar"),
-        "rear_spar_thickness": thickness("rear-spar"),
-        "top_skin_thickness": thickness("top-skin"),
-        "bottom_skin_thickness": thickness("bottom-skin"),
+        dv.name: _DVSpec(
+            dv.description,
+            dv.units,
+            dv.shape_of(len(rotor_groups), parts["wing_box"].num_bays),
+            dv.initial_key,
+            dv.initial_of(parts, rotor_groups),
+            lower_min=gauge if dv.min_gauge else None,
+        )
+        for dv in VEHICLE_DESIGN_VARIABLES
     }
     conditions = parts["conditions"]
     index = {c.name: i for i, c in enumerate(conditions)}

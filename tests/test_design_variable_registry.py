@@ -1,0 +1,104 @@
+"""The vehicle-level design variables come from one registry: schema, model and baseline.
+
+Each place that lists them (the vehicle file's tables, the vehicle group's inputs, the baseline
+problem's set S of paper eqs. 8-9) is checked against
+``lpc_mdo.vehicle.design_variable_registry.VEHICLE_DESIGN_VARIABLES``.
+"""
+
+import dataclasses
+
+import numpy as np
+import openmdao.api as om
+import pytest
+
+from lpc_mdo.groups.vehicle import VehicleGroup
+from lpc_mdo.problems import BaselineModel
+from lpc_mdo.vehicle import reference_vehicle
+from lpc_mdo.vehicle.condition_layout import condition_layout
+from lpc_mdo.vehicle.design_variable_registry import (
+    BASELINE_SET,
+    VEHICLE_DESIGN_VARIABLES,
+    VehicleDesignVariable,
+)
+from lpc_mdo.vehicle.design_variables import _design_variable_specs
+
+VEHICLE = reference_vehicle()
+NAMES = [dv.name for dv in VEHICLE_DESIGN_VARIABLES]
+
+
+def test_vehicle_file_tables_follow_the_registry():
+    dvs = VEHICLE.design_variables
+    # Every design variable of the file is the registry's or a condition's (the layout's).
+    conditions = condition_layout(VEHICLE).design_variables
+    assert sorted(set(dvs) - set(conditions)) == sorted(NAMES)
+    groups = len(VEHICLE.lift_rotor_pairs) + 1
+    bays = VEHICLE.wing_box.num_bays
+    for dv in VEHICLE_DESIGN_VARIABLES:
+        entry = dvs[dv.name]
+        assert entry.units == dv.units
+        assert entry.shape == dv.shape_of(groups, bays)
+        assert entry.description == dv.description
+    # Initial values mirror the vehicle fields the registry names.
+    assert dvs["wing_area"].initial == (VEHICLE.wing.area,)
+    pairs = [VEHICLE.lift_rotors[i] for i, _ in VEHICLE.lift_rotor_pairs]
+    twist = np.array([r.twist_cp for r in (*pairs, VEHICLE.pusher)])
+    np.testing.assert_array_equal(dvs["blade_twist_cp"].initial_array.reshape(groups, 4), twist)
+    assert dvs["blade_twist_cp"].initial_from == (
+        "lift_rotors[i].twist_cp_deg (one rotor per pair) and pusher.twist_cp_deg"
+    )
+
+
+def test_the_registry_drives_the_schema():
+    # A registry entry changed in code changes what the vehicle file is checked against.
+    parts = {
+        name: getattr(VEHICLE, name)
+        for name in (
+            "wing",
+            "horizontal_tail",
+            "fuselage",
+            "battery",
+            "material",
+            "wing_box",
+            "lift_rotors",
+            "pusher",
+            "conditions",
+            "mission",
+        )
+    }
+    specs = _design_variable_specs(parts)
+    gauge = [dv.name for dv in VEHICLE_DESIGN_VARIABLES if dv.min_gauge]
+    assert gauge == [
+        f"{p}_thickness" for p in ("front_spar", "rear_spar", "top_skin", "bottom_skin")
+    ]
+    for name, spec in specs.items():
+        expect = (VEHICLE.material.min_gauge, "material.min_gauge") if name in gauge else None
+        assert spec.lower_min == expect, name
+
+
+def test_vehicle_group_inputs_are_the_registry():
+    prob = om.Problem(reports=False)
+    prob.model.add_subsystem("vehicle", VehicleGroup(vehicle=VEHICLE), promotes=["*"])
+    prob.setup()
+    prob.final_setup()
+    inputs = prob.model.get_io_metadata(iotypes="input", metadata_keys=["units"], get_remote=True)
+    promoted = {meta["prom_name"]: meta["units"] for meta in inputs.values()}
+    for dv in VEHICLE_DESIGN_VARIABLES:
+        assert dv.name in promoted, dv.name
+        assert promoted[dv.name] == (None if dv.units == "unitless" else dv.units), dv.name
+        np.testing.assert_allclose(
+            prob.get_val(dv.name).ravel(), VEHICLE.design_variables[dv.name].initial_array.ravel()
+        )
+
+
+def test_baseline_set_is_the_registrys_sizing_variables():
+    assert BASELINE_SET == tuple(dv.name for dv in VEHICLE_DESIGN_VARIABLES if dv.baseline)
+    assert set(BASELINE_SET) == set(NAMES)  # every vehicle-level variable is a sizing variable
+    prob = om.Problem(BaselineModel(vehicle=VEHICLE), reports=False)
+    prob.setup()
+    assert list(prob.model.baseline.options["references"]) == list(BASELINE_SET)
+
+
+def test_a_bad_shape_rule_is_refused():
+    with pytest.raises(ValueError, match="'shape' = 'blades' is not allowed"):
+        VehicleDesignVariable("x", "m", "blades", "x")
+    assert dataclasses.is_dataclass(VEHICLE_DESIGN_VARIABLES[0])
