@@ -170,7 +170,11 @@ MISUSES = [
     ("start_case_wrong_shape", [*FULL, "--start-case", "{wrong_shape.sql}"], "--start-case"),
     ("start_case_missing", [*FULL, "--start-case", "{missing}"], "--start-case"),
     ("start_case_folder", [*FULL, "--start-case", "{empty_folder}"], "--start-case"),
-    ("sequence_start_case_zero", ["optimize", "--start-case", "{zero_cases.sql}"], "--start-case"),
+    (
+        "sequence_start_case_zero",
+        ["optimize", "--optimizer", "SLSQP", "--start-case", "{zero_cases.sql}"],
+        "--start-case",
+    ),
     ("sweep_start_case_zero", [*SWEEP, "--start-case", "{zero_cases.sql}"], "--start-case"),
     ("sweep_start_case_toml", [*SWEEP, "--start-case", "{vehicle.toml}"], "--start-case"),
     ("sweep_without_start_case", SWEEP, "--start-case"),

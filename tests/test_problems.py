@@ -50,6 +50,7 @@ def test_full_problem_with_lateral_trim_is_table6():
     assert sizes(full) == (161 + 15, 96 + 2 + 40)
 
 
+@pytest.mark.requires_ipopt
 def test_subproblem_4_converges():
     prob = build_problem("subproblem_4", driver_settings={"max_iter": 100, "print_level": 0})
     result = prob.run_driver()
@@ -62,6 +63,7 @@ def test_subproblem_4_converges():
     assert values["cruise.static_margin"][0] >= 0.08 - 1e-5
 
 
+@pytest.mark.requires_ipopt
 def test_subproblem_2_trims_every_oei_case():
     # One lift rotor out, the other seven trim all five accelerations with a 10 % torque
     # margin (the lift-motor lengths are free up to 0.25 m; 0.12 m made this infeasible).

@@ -30,22 +30,35 @@ def vehicle_problem(vehicle=None):
     return prob
 
 
-def test_initial_design_is_closed_and_the_paper_calibration_reaches_its_target():
+def test_calibration_reaches_a_target_it_was_not_written_for():
+    # The calibration extrapolates W_other from one evaluation at W_other = 0, assuming the gross
+    # mass and cg are affine in W_other; a separate evaluation of the model with the calibrated
+    # W_other checks that assumption. The paper's target (3723.99 kg) and two others: the
+    # regressions read the target as W_dg, so each target is a different mass model.
+    for target in (PAPER.masses.design_gross_mass, 3400.0, 4100.0):
+        masses = dataclasses.replace(PAPER.masses, design_gross_mass=target)
+        vehicle = dataclasses.replace(PAPER, masses=masses)
+        prob = vehicle_problem(vehicle)
+        assert_near_equal(prob.get_val("gross_mass", units="kg")[0], target, 1e-10)
+        other = prob.get_val("other_mass", units="kg")[0]
+        assert_near_equal(other, calibrated_other_mass(vehicle)[0], 1e-12)
+        assert other > 0.0
+
+
+def test_initial_design_is_closed():
     """
     Check the initial gross masses and the motor and wing masses.
 
     The reference vehicle is itemised (W_other = 0) and closed: its initial design weighs its
     design gross mass (the W_dg of the regressions, written by
     ``run_scripts/close_initial_design.py``), to the 0.01 kg the file keeps; re-closing moves
-    it by less than that. The paper-calibrated vehicle weighs the paper's 3723.99 kg
-    (Table 8), the calibration target, so that holds by construction.
+    it by less than that.
     """
     prob = vehicle_problem()
     w0 = prob.get_val("gross_mass", units="kg")[0]
     assert prob.get_val("other_mass", units="kg")[0] == 0.0
     assert abs(w0 - VEHICLE.masses.design_gross_mass) < 0.01
     assert abs(closed_design_gross_mass(VEHICLE) - VEHICLE.masses.design_gross_mass) < 0.01
-    assert_near_equal(vehicle_problem(PAPER).get_val("gross_mass", units="kg"), 3723.99, 1e-10)
     # Motor masses follow eq. 23 per rotor group: pair 0 feeds rotors 0 and 6, the pusher is 8.
     masses = prob.get_val("motor_mass")
     group = prob.get_val("motor_group_mass")

@@ -5,7 +5,7 @@ import openmdao.api as om
 import pytest
 from openmdao.utils.assert_utils import assert_check_partials, assert_near_equal
 
-from lpc_mdo.api.weights import format_mass_properties, mass_properties
+from lpc_mdo.api.weights import format_mass_properties, mass_breakdown, mass_properties
 from lpc_mdo.components.weights.item_placement import FuselageStationComp
 from lpc_mdo.components.weights.landing_gear import (
     NASA_LANDING_GEAR_FRACTION,
@@ -161,18 +161,21 @@ def test_report_reads_the_mass_properties_of_a_recorded_case(tmp_path):
     assert_near_equal(table.rows[-1][2], 100.0, 1e-12)
 
 
-def test_unitemised_mass_is_at_most_ten_percent():
-    # Issue 17: at most 10 % of the gross mass unitemised. The reference vehicle itemises
-    # everything (W_other = 0 in the model); the paper's calibration to 3723.99 kg (paper
-    # Sec. IV) would leave 565.1 kg, 15.2 % (measured 2026-12-04, docs theory/weights 'Gross
-    # mass'), above the limit, which is why the reference does not calibrate.
+def test_every_kilogram_of_the_reference_is_an_item():
+    # At most 10 % of the gross mass may be unitemised (W_other). The reference vehicle itemises
+    # everything: its rule keeps W_other at the file's 0 kg, and the breakdown's items add up to
+    # the gross mass. The paper's calibration to 3723.99 kg (paper Sec. IV) would leave 15.2 %
+    # unitemised (docs theory/weights 'Gross mass'), which is why the reference does not use it.
     vehicle = reference_vehicle()
+    assert (vehicle.masses.other_rule, vehicle.masses.other) == ("fixed", 0.0)
     prob = om.Problem(reports=False)
     prob.model.add_subsystem("vehicle", VehicleGroup(vehicle=vehicle), promotes=["*"])
     prob.setup()
     prob.run_model()
-    gross = prob.get_val("gross_mass", units="kg")[0]
-    assert prob.get_val("other_mass", units="kg")[0] <= 0.10 * gross
+    breakdown = mass_breakdown(prob)
+    assert breakdown["other"] == 0.0
+    items = sum(v for k, v in breakdown.items() if k not in ("structures", "powertrain", "gross"))
+    assert_near_equal(items, breakdown["gross"], 1e-12)
     paper = paper_calibrated_vehicle()
     other, _ = calibrated_other_mass(paper)
     assert_near_equal(other / paper.masses.design_gross_mass, 0.1517, 2e-3)
