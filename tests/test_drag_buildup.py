@@ -16,6 +16,7 @@ from lpc_mdo.components.aero.drag_buildup import (
     raymer_ga_tyre,
 )
 from lpc_mdo.groups.vehicle_drag import lpc_drag_components
+from lpc_mdo.vehicle import reference_vehicle
 
 # Cruise (reference vehicle file): M 0.17 at 999.74 m, CADDEE atmosphere (docs theory/atmosphere):
 # rho = 1.11177 kg/m^3, mu = 1.70443e-5 Pa s, a = 336.410 m/s, V = 57.1897 m/s.
@@ -132,9 +133,10 @@ def test_lpc_buildup_against_hand_calculation():
     assert_near_equal(prob.get_val("drag_areas")[0][friction], areas, 1e-4)  # MAC rounding
     # Bluff parts: 8 hubs 0.63 x 0.3048 x 0.1524; 8 pylons 0.05 x 0.1524 x mean |dz| of the CAD
     # hubs above the boom attach points; 2 + 1 wheels 0.25 D w (Raymer Table 11.1 tyres);
-    # 3 struts 0.30 x 0.5 x 0.0762. Tyres at the design gross mass, 3067.61 kg.
+    # 3 struts 0.30 x 0.5 x 0.0762. Tyres at the design gross mass.
     dz = np.mean(np.abs([0.07773, 0.61722, 0.07346, 0.61539] * 2))
-    (dm, wm), (dn, wn) = raymer_ga_tyre(0.45 * 3067.61), raymer_ga_tyre(0.1 * 3067.61)
+    w_dg = reference_vehicle().masses.design_gross_mass
+    (dm, wm), (dn, wn) = raymer_ga_tyre(0.45 * w_dg), raymer_ga_tyre(0.1 * w_dg)
     bluff = [
         8 * 0.63 * 0.3048 * 0.1524,
         8 * 0.05 * 0.1524 * dz,
