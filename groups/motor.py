@@ -88,6 +88,9 @@ class MotorGroup(om.Group):
         Electric loading A_bar. Default: the option ``electric_loading``.
     magnetic_loading : float, (num_motors,), T
         Magnetic loading B_bar. Default: the option ``magnetic_loading``.
+    rated_current : float, (num_motors,), A
+        Rated phase current I_w of the winding (turns per phase W = pi D_i A_bar/(2 m I_w)):
+        the winding chosen for the supply voltage. Default ``parameters.rated_current``.
     rotor_torque : float, (num_motors, num_nodes), N*m
         Required rotor torque at each operating point.
     rotor_rpm : float, (num_motors, num_nodes), rpm
@@ -153,7 +156,8 @@ class MotorDesignGroup(om.Group):
     again (the reference vehicle's 18 condition motor groups had 108 design components; now 6).
 
     Inputs: ``length``, ``diameter`` (with ``length_to_diameter`` None), ``electric_loading``,
-    ``magnetic_loading`` (num_motors,). Outputs: the design outputs of :class:`MotorGroup`.
+    ``magnetic_loading``, ``rated_current`` (num_motors,). Outputs: the design outputs of
+    :class:`MotorGroup`.
     Options: ``num_motors``, ``parameters``, ``length_to_diameter``, ``electric_loading``,
     ``magnetic_loading`` as :class:`MotorGroup`.
     """
@@ -267,6 +271,9 @@ def _operating_point_defaults(group):
 def _design_input_defaults(group):
     nm = group.options["num_motors"]
     group.set_input_defaults("length", 0.1 * np.ones(nm), units="m")
+    group.set_input_defaults(
+        "rated_current", np.full(nm, group.options["parameters"].rated_current), units="A"
+    )
     for name, units in (("electric_loading", "A/m"), ("magnetic_loading", "T")):
         group.set_input_defaults(name, np.full(nm, float(group.options[name])), units=units)
     if group.options["length_to_diameter"] is None:

@@ -340,3 +340,36 @@ def test_wrapper_returns_floats_for_scalars():
     ):
         assert isinstance(result[name], float) and np.isfinite(result[name])
     assert isinstance(result["beyond_voltage_limit"], bool)
+
+
+def test_winding_for_the_bus_scales_voltage_and_current_only():
+    # Rewinding a motor for its bus (docs theory/motor 'Winding for the bus'): W = pi D_i A_bar/
+    # (2 m I_w), so at 2.5 times the rated current the motor has 1/2.5 of the turns. An ideal
+    # rewinding with the same slot fill (Hendershot & Miller, ch. 5: the turns scale the EMF
+    # constant and the phase current inversely, the ampere-turns and copper loss stay) leaves
+    # torque, losses and efficiency unchanged and scales the voltage by 1/2.5 and the current by
+    # 2.5; R, L_d, L_q by 1/2.5**2 and Psi_F by 1/2.5. Case A, hand-computed turns: 41.1549 at
+    # 120 A (the reference's W) and 16.4619 at 300 A. Tolerance 1e-9 (the inner solves).
+    (length, ratio, torque, rpm), _ = REFERENCE_CASES["A"]
+    base = motor_analysis(length, torque, rpm, length_to_diameter=ratio)
+    rewound = motor_analysis(length, torque, rpm, length_to_diameter=ratio, rated_current=300.0)
+    k = 120.0 / 300.0
+    d_i = base["diameter"] / 1.25
+    turns = np.pi * d_i * 30.0e3 / (2 * 3 * np.array([120.0, 300.0]))
+    assert_near_equal(turns, [41.15486376, 16.46194550], 1e-8)
+    for name in ("em_torque", "efficiency", "power_loss", "copper_loss", "mass", "peak_torque"):
+        assert_near_equal(rewound[name], base[name], 1e-9)
+    for name, power in (
+        ("voltage", 1),
+        ("flux_linkage", 1),
+        ("current", -1),
+        ("resistance", 2),
+        ("inductance_d", 2),
+        ("inductance_q", 2),
+    ):
+        assert_near_equal(rewound[name], base[name] * k**power, 1e-9)
+    # The back-EMF amplitude omega_e Psi_F with the hand-computed winding: Psi_F = W phi.
+    omega_e = rpm * 4.0 * 2.0 * np.pi / 60.0 * 6
+    assert_near_equal(
+        omega_e * rewound["flux_linkage"], omega_e * turns[1] * 0.29958174 / turns[0], 1e-7
+    )

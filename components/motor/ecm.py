@@ -50,9 +50,13 @@ class MotorECMParametersComp(PointwiseExplicitComp):
       K_f = 4 sin(alpha_i pi/2)/pi; K_phi = 8.5 sin(alpha_i pi/2)/(pi**2 alpha_i);
     - Carter factor K_theta = t_1 (4.4 delta + 0.75 b_sb)/(t_1 (4.4 delta + 0.75 b_sb) - b_sb**2);
     - bridge area A_f2 = h_m l;
-    - R_dc = 2 rho_cu W (l + 0.02 + 2 tau_p)/(A_cu N_p);
+    - R_dc = 2 rho_cu W (l + 0.02 + 2 tau_p)/(A_cu N_p), with the strand area of the winding
+      A_cu = I_w/(J N_p) at its rated current I_w (an input: the winding chosen for the bus);
     - loss volumes (docs theory/motor 'Losses and efficiency'): iron V_s + V_s1 = pi l (D -
-      D_i)**2/4 - Z l A_cu + pi l (D_2 - D_sh)**2/4, magnet V_t = 2 p l b_m h_m.
+      D_i)**2/4 - Z l A_cu,0 + pi l (D_2 - D_sh)**2/4, magnet V_t = 2 p l b_m h_m. The slot
+      copper deducted, Z l A_cu,0 as coded, is that of the parameters' reference winding
+      (``parameters.rated_current``): a rewinding for another bus keeps the slot fill (W A_cu
+      is independent of I_w), so it does not change the iron.
 
     The effective length is l_ef = L (lsdo_motor dev_csdl_alpha). Partials: exact vectorized
     complex step, diagonal over the motors.
@@ -64,6 +68,8 @@ class MotorECMParametersComp(PointwiseExplicitComp):
         Sizing geometry (MotorSizingComp).
     turns_per_phase : float, (num_motors,), dimensionless
         Series turns per phase W.
+    rated_current : float, (num_motors,), A
+        Rated phase current I_w of the winding (sets the strand area A_cu).
 
     Outputs
     -------
@@ -109,6 +115,7 @@ class MotorECMParametersComp(PointwiseExplicitComp):
         ("slot_bottom_width", "m", "Slot width at the bore b_sb", 2.0e-3, False),
         ("slot_height", "m", "Slot height h_slot", 0.01, False),
         ("stator_yoke_height", "m", "Stator yoke height h_ys", 0.01, False),
+        ("rated_current", "A", "Rated phase current I_w of the winding", 120.0, False),
     )
     _output_vars = (
         ("yoke_pitch", "m", "Yoke pitch tau_y = pi (D_i + h_slot)/(2p)", 0.04, False),
@@ -156,7 +163,7 @@ class MotorECMParametersComp(PointwiseExplicitComp):
         "air_gap_flux_coefficient": ("rotor_diameter", "pole_pitch", "air_gap"),
         "carter_coefficient": ("tooth_pitch", "air_gap", "slot_bottom_width"),
         "bridge_area": ("length",),
-        "resistance": ("turns_per_phase", "length", "pole_pitch"),
+        "resistance": ("turns_per_phase", "length", "pole_pitch", "rated_current"),
         "iron_volume": (
             "length",
             "diameter",
@@ -168,6 +175,15 @@ class MotorECMParametersComp(PointwiseExplicitComp):
     }
 
     def _check_values(self, values):
+        check_range(
+            "rated_current",
+            values["rated_current"],
+            lower=0.0,
+            lower_open=True,
+            units="A",
+            error=AnalysisError,
+            where=self.msginfo,
+        )
         check_range(
             "rotor_diameter",
             values["rotor_diameter"],
@@ -192,7 +208,7 @@ class MotorECMParametersComp(PointwiseExplicitComp):
         alpha_p1 = b_m / tau
         alpha_i = alpha_p1 + 4.0 / (tau / delta + 6.0 / (1.0 - alpha_p1))
         carter = t_1 * (4.4 * delta + 0.75 * b_sb)
-        a_cu = par.copper_area
+        a_cu = v["rated_current"] / (mp.CURRENT_DENSITY * mp.PARALLEL_STRANDS)
         coil = length + mp.COIL_STRAIGHT_EXTENSION + 2.0 * tau
         return {
             "yoke_pitch": np.pi * (d_i + v["slot_height"]) / (2 * p),
@@ -215,7 +231,7 @@ class MotorECMParametersComp(PointwiseExplicitComp):
             ),
             "iron_volume": (
                 np.pi * length * (diameter - d_i) ** 2 / 4.0
-                - z * length * a_cu
+                - z * length * par.copper_area
                 + np.pi * length * (d_2 - v["shaft_diameter"]) ** 2 / 4.0
             ),
             "magnet_volume": 2 * p * length * b_m * mp.MAGNET_THICKNESS,
@@ -491,6 +507,7 @@ _Q_AXIS_INPUTS = (
         1.2,
         False,
     ),
+    ("rated_current", "A", "Rated phase current I_w of the winding", 120.0, False),
 )
 _Q_AXIS_NAMES = tuple(name for name, *_ in _Q_AXIS_INPUTS)
 
@@ -525,9 +542,11 @@ class QAxisFluxComp(PointwiseImplicitComp):
     With the rated d-axis current I_d,r = I_w sin(0.6283) and the q-axis current I_q,tmp(phi_aq)
     of :func:`q_axis_current`, the rated current circle closes:
 
-        R = (I_d,r**2 + I_q,tmp**2)/I_w**2 - 1 = 0
+        R = (I_d,r**2 + I_q,tmp**2)/I_w**2 - 1 = sin(0.6283)**2 + (I_q,tmp/I_w)**2 - 1 = 0
 
-    (the reference residual I_d,r**2 + I_q,tmp**2 - I_w**2 divided by the constant I_w**2).
+    (the reference residual I_d,r**2 + I_q,tmp**2 - I_w**2 divided by I_w**2). I_w is the
+    winding's rated current, an input; I_q,tmp is proportional to 1/W, i.e. to I_w, so
+    phi_aq does not depend on the winding.
     solve_nonlinear: vectorized bisection on the reference bracket phi_aq in [1e-5, phi] Wb, phi
     the pole flux. linearize: exact complex-step Jacobian (diagonal over the motors); the pole
     flux sets the bracket only and is not a residual input.
@@ -540,6 +559,8 @@ class QAxisFluxComp(PointwiseImplicitComp):
     pole_pitch, length, air_gap, tooth_pitch, tooth_width, slot_height, stator_yoke_height,
     yoke_path_length : float, (num_motors,), m
         Geometry.
+    rated_current : float, (num_motors,), A
+        Rated phase current I_w of the winding.
     pole_flux : float, (num_motors,), Wb
         Upper end of the bracket.
 
@@ -570,7 +591,8 @@ class QAxisFluxComp(PointwiseImplicitComp):
     def _residual(self, v, flux_q):
         par = self.options["parameters"]
         current = q_axis_current(flux_q, v, par)
-        return (par.d_axis_rated_current**2 + current**2) / par.rated_current**2 - 1.0
+        rated = v["rated_current"]
+        return np.sin(mp.D_AXIS_CURRENT_ANGLE) ** 2 + (current / rated) ** 2 - 1.0
 
     def _bracket(self, v):
         return np.full(v["pole_flux"].shape, mp.Q_AXIS_FLUX_LOWER), v["pole_flux"]
@@ -592,8 +614,10 @@ class InductanceComp(PointwiseExplicitComp):
     - flux linkage Psi_F = W phi.
 
     B_r and H_c are the magnet values at the magnet temperature (1.1208 T and 847138 A/m at
-    75 deg C, the constants lsdo_motor hard-codes here; quirk S3 corrected). Partials: exact
-    vectorized complex step, diagonal over the motors.
+    75 deg C, the constants lsdo_motor hard-codes here; quirk S3 corrected). I_d,r = I_w
+    sin(0.6283) with the winding's rated current I_w (an input, in the inputs of
+    QAxisFluxComp): with W proportional to 1/I_w, L_d and L_q scale as W**2 and Psi_F as W.
+    Partials: exact vectorized complex step, diagonal over the motors.
 
     Inputs
     ------
@@ -658,6 +682,7 @@ class InductanceComp(PointwiseExplicitComp):
         "yoke_pitch",
     )
     _d_inputs = (
+        "rated_current",
         "pole_flux",
         "leakage_coefficient",
         "magnet_permeance_pu",
@@ -668,10 +693,13 @@ class InductanceComp(PointwiseExplicitComp):
     )
     _deps = {
         "inductance_d": _leakage_inputs + _d_inputs,
+        # I_q,tmp and hence L_q do not depend on I_w (only the q-axis flux solve does).
         "inductance_q": tuple(
-            dict.fromkeys(
+            name
+            for name in dict.fromkeys(
                 _leakage_inputs + _Q_AXIS_NAMES + ("q_axis_flux", "air_gap_flux_coefficient")
             )
+            if name != "rated_current"
         ),
         "flux_linkage": ("turns_per_phase", "pole_flux"),
     }
@@ -680,7 +708,7 @@ class InductanceComp(PointwiseExplicitComp):
         par = self.options["parameters"]
         p, m, z, k_w = par.pole_pairs, par.phases, par.num_slots, par.winding_factor
         f_i = par.rated_frequency
-        i_dr = par.d_axis_rated_current
+        i_dr = v["rated_current"] * np.sin(mp.D_AXIS_CURRENT_ANGLE)
         length, turns, flux = v["length"], v["turns_per_phase"], v["pole_flux"]
 
         # Leakage reactance X_1.

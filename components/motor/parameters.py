@@ -128,7 +128,10 @@ class MotorParameters:
     num_slots : int
         Stator slots Z (>= 1). Default 36 (q = Z/(2 m p) = 1).
     rated_current : float
-        Rated phase current I_w, A (> 0). Default 120.
+        Rated phase current I_w of the reference winding, A (> 0). Default 120 (lsdo_motor). The
+        motor models take the winding's rated current as an input (one per motor, the winding
+        chosen for the bus; docs theory/motor 'Winding for the bus') and use this value as its
+        default and for the slot copper that the iron volume deducts.
     voltage_limit : float
         Terminal voltage limit V_lim, V (> 0). Default 400 (600 in the older m3l model).
     gear_ratio : float

@@ -15,7 +15,11 @@ GEOMETRY_OUTPUTS = (
     ("air_gap", "m", "Air-gap length delta = 0.4 A_bar tau_p/(0.9e6 B_delta,max)"),
     ("rotor_diameter", "m", "Rotor outer diameter D_2 = D_i - 2 delta"),
     ("shaft_diameter", "m", "Shaft diameter D_sh = 0.3 D_2"),
-    ("turns_per_phase", None, "Series turns per phase W = N_c/2 (continuous, not rounded)"),
+    (
+        "turns_per_phase",
+        None,
+        "Series turns per phase W = pi D_i A_bar/(2 m I_w PF) (continuous, not rounded)",
+    ),
     ("tooth_width", "m", "Stator tooth width b_t = t_1 B_delta,max/(k_fe B_t)"),
     (
         "stator_yoke_height",
@@ -44,8 +48,13 @@ class MotorSizingComp(om.ExplicitComponent):
       internal geometry, as coded: the magnetic loading enters the mass only. The slot count Z
       replaces the hard-coded 36 of lsdo_motor in b_s1 (identical for the default Z = 36).
 
-    Every geometry output is linear in D, or bilinear in D and A_bar (delta, D_2, D_sh, W), so
-    the partials are analytic and diagonal over the motors.
+    The winding: turns per phase W = N_c/2 with N_c = pi D_i A_bar/(m I_w PF), the conductors
+    per phase that carry the electric loading A_bar at the rated current I_w (docs theory/motor
+    'Winding for the bus'). I_w is an input, one per motor: the winding is chosen for the
+    supply voltage (design variable ``motor_rated_current`` of the vehicle), not fixed.
+
+    Every geometry output is linear in D, or bilinear in D and A_bar (delta, D_2, D_sh), W is
+    A_bar D/I_w times a constant, so the partials are analytic and diagonal over the motors.
 
     Inputs
     ------
@@ -57,6 +66,8 @@ class MotorSizingComp(om.ExplicitComponent):
         Electric loading A_bar (line current density); > 0. Default 30e3.
     magnetic_loading : float, (num_motors,), T
         Magnetic loading B_bar; > 0. Default 0.85.
+    rated_current : float, (num_motors,), A
+        Rated phase current I_w of the winding; > 0. Default ``parameters.rated_current``.
 
     Outputs
     -------
@@ -125,6 +136,12 @@ class MotorSizingComp(om.ExplicitComponent):
         self.add_input(
             "magnetic_loading", val=0.85 * np.ones(nm), units="T", desc="Magnetic loading B_bar"
         )
+        self.add_input(
+            "rated_current",
+            val=self.options["parameters"].rated_current * np.ones(nm),
+            units="A",
+            desc="Rated phase current I_w of the winding",
+        )
 
         if ratio is not None:
             self.add_output(
@@ -158,6 +175,7 @@ class MotorSizingComp(om.ExplicitComponent):
             self.declare_partials(name, dep, diagonal=True)
             if name in ("air_gap", "rotor_diameter", "shaft_diameter", "turns_per_phase"):
                 self.declare_partials(name, "electric_loading", diagonal=True)
+        self.declare_partials("turns_per_phase", "rated_current", diagonal=True)
 
     def _diameter(self, inputs):
         ratio = self.options["length_to_diameter"]
@@ -203,8 +221,17 @@ class MotorSizingComp(om.ExplicitComponent):
             error=om.AnalysisError,
             where=self.msginfo,
         )
+        check_range(
+            "rated_current",
+            inputs["rated_current"],
+            lower=0.0,
+            lower_open=True,
+            units="A",
+            error=om.AnalysisError,
+            where=self.msginfo,
+        )
 
-    def _geometry(self, diameter, electric_loading):
+    def _geometry(self, diameter, electric_loading, rated_current):
         """Return {name: (value, d/dD, d/dA_bar)} of the geometry outputs."""
         par = self.options["parameters"]
         p, z, m = par.pole_pairs, par.num_slots, par.phases
@@ -214,7 +241,7 @@ class MotorSizingComp(om.ExplicitComponent):
         k_tau = np.pi * k_di / (2 * p)
         k_t1 = np.pi * k_di / z
         k_gap = 0.4 * k_tau / (0.9e6 * mp.AIR_GAP_FLUX_DENSITY_MAX)  # delta = k_gap A D
-        k_turns = np.pi * k_di / (2.0 * m * par.rated_current * mp.POWER_FACTOR)  # W = k A D
+        k_turns = np.pi * k_di / (2.0 * m * rated_current * mp.POWER_FACTOR)  # W = k A D
         k_tooth = (
             k_t1 * mp.AIR_GAP_FLUX_DENSITY_MAX / (mp.LAMINATION_FACTOR * mp.TOOTH_FLUX_DENSITY)
         )
@@ -264,7 +291,8 @@ class MotorSizingComp(om.ExplicitComponent):
         outputs["peak_torque"] = np.polyval(
             self.options["parameters"].peak_torque_coefficients, mass
         )
-        for name, (value, _, _) in self._geometry(d, inputs["electric_loading"]).items():
+        geometry = self._geometry(d, inputs["electric_loading"], inputs["rated_current"])
+        for name, (value, _, _) in geometry.items():
             outputs[name] = value
 
     def compute_partials(self, inputs, partials):
@@ -293,10 +321,15 @@ class MotorSizingComp(om.ExplicitComponent):
             partials["mass", wrt] = value
             partials["peak_torque", wrt] = dpeak_dmass * value
 
-        for name, (_, d_dd, d_da) in self._geometry(d, a_bar).items():
+        geometry = self._geometry(d, a_bar, inputs["rated_current"])
+        for name, (_, d_dd, d_da) in geometry.items():
             partials[name, dep] = d_dd * dd_dep
             if name in ("air_gap", "rotor_diameter", "shaft_diameter", "turns_per_phase"):
                 partials[name, "electric_loading"] = d_da
+        # W = k A_bar D/I_w: dW/dI_w = -W/I_w.
+        partials["turns_per_phase", "rated_current"] = (
+            -geometry["turns_per_phase"][0] / inputs["rated_current"]
+        )
 
 
 _check_ratio = RangeCheck(lower=0.0, lower_open=True, where="MotorSizingComp")

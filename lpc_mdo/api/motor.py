@@ -53,7 +53,13 @@ def _positive_array(name, value, units):
 
 
 def motor_analysis(
-    length, rotor_torque, rotor_rpm, length_to_diameter=0.5, gear_ratio=4.0, parameters=None
+    length,
+    rotor_torque,
+    rotor_rpm,
+    length_to_diameter=0.5,
+    gear_ratio=4.0,
+    parameters=None,
+    rated_current=None,
 ):
     """
     Size a PMSM from its length and analyse it at given rotor torques and speeds.
@@ -75,6 +81,9 @@ def motor_analysis(
         Motor speed / rotor speed (> 0). Default 4.
     parameters : MotorParameters or None
         Other fixed parameters; its gear_ratio is replaced by ``gear_ratio``.
+    rated_current : float or array_like (num_motors,) or None
+        Rated phase current of the winding, A (> 0): the turns per phase follow from it
+        (docs theory/motor 'Winding for the bus'). None: ``parameters.rated_current``.
 
     Returns
     -------
@@ -142,6 +151,9 @@ def motor_analysis(
     )
     prob.setup()
     prob.set_val("length", length_arr, units="m")
+    if rated_current is not None:
+        current = _positive_array("rated_current", rated_current, "A")
+        prob.set_val("rated_current", np.broadcast_to(current, (nm,)), units="A")
     prob.set_val("rotor_torque", torque_arr, units="N*m")
     prob.set_val("rotor_rpm", rpm_arr, units="rpm")
     prob.run_model()
