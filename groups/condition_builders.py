@@ -61,9 +61,10 @@ def add_motors(group, vehicle, prefix, num_motors, rpm):
     :data:`~lpc_mdo.groups.motor.DESIGN_OUTPUTS` (peak torque, resistance, inductances, ...:
     the rows of the vehicle group's ``motor_design``, so each design is sized once, not once per
     condition); outputs ``{prefix}_motor_input_power``, ``_em_torque``,
-    ``_torque_margin`` and ``_voltage_margin`` (1 - abs(U)/V_lim: below 0
+    ``_torque_margin`` (against the smooth minimum of the peak and the voltage-limited torque),
+    ``_current_margin`` (1 - abs(I)/I_pk) and ``_voltage_margin`` (1 - abs(U)/V_lim: below 0
     the MTPA operating point needs more than the voltage limit, i.e. flux weakening, which the
-    motor model does not have; the problem kind ``voltage_margin`` constrains it).
+    motor model does not have; the constraint kind ``voltage_margin`` keeps it >= 0).
     """
     group.add_subsystem(
         f"{prefix}_shaft",
@@ -79,7 +80,13 @@ def add_motors(group, vehicle, prefix, num_motors, rpm):
         + [(name, f"{prefix}_motor_{name}") for name in DESIGN_OUTPUTS],
         promotes_outputs=[
             (name, f"{prefix}_motor_{name}")
-            for name in ("input_power", "em_torque", "torque_margin", "voltage_margin")
+            for name in (
+                "input_power",
+                "em_torque",
+                "torque_margin",
+                "voltage_margin",
+                "current_margin",
+            )
         ],
     )
     group.connect(f"{prefix}_shaft.motor_load_torque", f"{prefix}_motors.rotor_torque")

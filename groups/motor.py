@@ -14,7 +14,7 @@ from lpc_mdo.components.motor.ecm import (
     QAxisFluxComp,
 )
 from lpc_mdo.components.motor.efficiency import EMTorqueComp, MotorLossComp, MotorMarginComp
-from lpc_mdo.components.motor.mtpa import MTPAComp
+from lpc_mdo.components.motor.mtpa import MTPAComp, PeakCurrentComp
 from lpc_mdo.components.motor.parameters import MotorParameters
 from lpc_mdo.components.motor.sizing import MotorSizingComp
 from lpc_mdo.components.motor.torque_limit import TorqueLimitComp
@@ -59,15 +59,18 @@ class MotorGroup(om.Group):
       (MagnetFluxComp): magnet MEC, B_delta and the pole flux;
     - ``q_axis_flux`` (QAxisFluxComp, implicit, bracketed) and ``inductance``
       (InductanceComp): L_d, L_q, Psi_F;
+    - ``peak_current`` (PeakCurrentComp): the MTPA phase current at the peak torque, which the
+      inverter and cables are rated for;
     - ``torque_limit`` (TorqueLimitComp, implicit, bracketed; optional): voltage-limited torque;
     - ``em_torque`` (EMTorqueComp, implicit, Newton with bracket safeguard): T_em from the
       efficiency residual eq. 24, with the loss model at the MTPA current inside;
     - ``mtpa`` (MTPAComp, implicit, bracketed): MTPA q-axis current, eq. 26;
     - ``losses`` (MotorLossComp): currents, voltage, losses, efficiency, input power;
-    - ``margins`` (MotorMarginComp): torque margin (>= 0.10 in the paper), voltage margin and
-      the beyond-voltage-limit flag (no flux weakening, as in the paper).
+    - ``margins`` (MotorMarginComp): torque margin against the smooth minimum of the peak and
+      the voltage-limited torque (>= 0.10 in the paper), current margin, voltage margin and the
+      beyond-voltage-limit flag (no flux weakening, as in the paper).
 
-    The first six components depend on the motor design alone: they are also
+    The first seven components depend on the motor design alone: they are also
     :class:`MotorDesignGroup`, the rest :class:`MotorOperationGroup`. The LPC model splits them
     (one design group over the vehicle's motor designs, one operating group per condition);
     this group keeps both for a motor on its own (:func:`lpc_mdo.api.motor.motor_analysis`).
@@ -148,12 +151,13 @@ class MotorDesignGroup(om.Group):
     """
     The design half of :class:`MotorGroup`: what depends on the motor design alone.
 
-    ``sizing``, ``ecm_parameters``, ``magnet_circuit``, ``magnet_flux``, ``q_axis_flux`` and
-    ``inductance`` of :class:`MotorGroup` (same components, names and promotion), evaluated
-    once per motor design. The vehicle group runs one over the vehicle's motor designs (one
-    per lift-rotor pair and the pusher) and the conditions' :class:`MotorOperationGroup`
-    read its outputs :data:`DESIGN_OUTPUTS`, instead of every condition sizing its own motors
-    again (the reference vehicle's 18 condition motor groups had 108 design components; now 6).
+    ``sizing``, ``ecm_parameters``, ``magnet_circuit``, ``magnet_flux``, ``q_axis_flux``,
+    ``inductance`` and ``peak_current`` of :class:`MotorGroup` (same components, names and
+    promotion), evaluated once per motor design. The vehicle group runs one over the vehicle's
+    motor designs (one per lift-rotor pair and the pusher) and the conditions'
+    :class:`MotorOperationGroup` read its outputs :data:`DESIGN_OUTPUTS`, instead of every
+    condition sizing its own motors again (the reference vehicle's 18 condition motor groups
+    had 126 design components; now 7).
 
     Inputs: ``length``, ``diameter`` (with ``length_to_diameter`` None), ``electric_loading``,
     ``magnetic_loading``, ``rated_current`` (num_motors,). Outputs: the design outputs of
@@ -230,7 +234,7 @@ def _declare_operation_options(group):
 
 
 def add_design_components(group):
-    """Add the six design components of :class:`MotorGroup` to ``group``, promoted."""
+    """Add the seven design components of :class:`MotorGroup` to ``group``, promoted."""
     motors = {"num_motors": group.options["num_motors"], "parameters": group.options["parameters"]}
     group.add_subsystem(
         "sizing",
@@ -242,6 +246,7 @@ def add_design_components(group):
     group.add_subsystem("magnet_flux", MagnetFluxComp(**motors), promotes=["*"])
     group.add_subsystem("q_axis_flux", QAxisFluxComp(**motors), promotes=["*"])
     group.add_subsystem("inductance", InductanceComp(**motors), promotes=["*"])
+    group.add_subsystem("peak_current", PeakCurrentComp(**motors), promotes=["*"])
 
 
 def add_operation_components(group):

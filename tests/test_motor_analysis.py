@@ -15,7 +15,12 @@ from openmdao.utils.assert_utils import (
 )
 
 from lpc_mdo.api.motor import motor_analysis
-from lpc_mdo.components.motor.efficiency import EMTorqueComp, MotorLossComp, MotorMarginComp
+from lpc_mdo.components.motor.efficiency import (
+    EMTorqueComp,
+    MotorLossComp,
+    MotorMarginComp,
+    smooth_min_ratio,
+)
 from lpc_mdo.components.motor.torque_limit import TorqueLimitComp
 from lpc_mdo.groups.motor import MotorGroup
 
@@ -321,8 +326,8 @@ def test_too_short_motor_raises():
     # quartic (and reluctance torque) does not exist: a clear AnalysisError.
     with pytest.raises(
         om.AnalysisError,
-        match=r"inductance_q - inductance_d = .* \(length "
-        r"\[0.05\] m\) is outside the allowed range",
+        match=r"inductance_q - inductance_d = .* is outside the allowed range .* minimum stack "
+        r"length",
     ):
         motor_analysis(0.05, 100.0, 1500.0)
 
@@ -373,3 +378,42 @@ def test_winding_for_the_bus_scales_voltage_and_current_only():
     assert_near_equal(
         omega_e * rewound["flux_linkage"], omega_e * turns[1] * 0.29958174 / turns[0], 1e-7
     )
+
+
+def test_smooth_min_of_peak_and_voltage_limited_torque():
+    # s(x) = -ln(exp(-k) + exp(-k x))/k against the exact minimum: at x = 1 the gap is ln(2)/k
+    # (k = 100: 0.00693), 7/k away it is below 1e-4 (1e-3 relative to ln 2/k: exp(-7)), and s
+    # never exceeds min(1, x). Complex step of s equals its stated slope (1e-12).
+    k = 100.0
+    x = np.array([0.5, 0.93, 0.999, 1.0, 1.001, 1.07, 2.0])
+    value, slope = smooth_min_ratio(x, k)
+    exact = -np.log(np.exp(-k) + np.exp(-k * x)) / k
+    assert_near_equal(value, exact, tolerance=1e-13)
+    assert_near_equal(value[3], 1.0 - np.log(2.0) / k, tolerance=1e-14)
+    gap = np.minimum(1.0, x) - value
+    assert np.all(gap >= 0.0) and np.all(gap <= np.log(2.0) / k + 1e-15)
+    assert np.all(gap[[0, 1, 5, 6]] < 1e-4)
+    cs, _ = smooth_min_ratio(x + 1e-30j, k)
+    assert_near_equal(cs.imag / 1e-30, slope, tolerance=1e-12)
+
+
+def test_torque_margin_takes_the_voltage_limited_torque():
+    # At a point where T_lim < T_pk the available torque is the voltage-limited one: margin
+    # T_lim/T_em - 1 to the smooth-min error (T_lim/T_pk far from 1: below 1e-6 absolute);
+    # where T_lim >> T_pk it is the paper's T_pk/T_em - 1. Partials near T_lim = T_pk, where the
+    # smooth minimum bends, against complex step: 1e-10.
+    prob = om.Problem(reports=False)
+    prob.model.add_subsystem("margins", MotorMarginComp(num_motors=1, num_nodes=4), promotes=["*"])
+    prob.setup(force_alloc_complex=True)
+    prob.set_val("em_torque", [[100.0, 100.0, 100.0, 100.0]])
+    prob.set_val("peak_torque", [200.0])
+    prob.set_val("torque_limit", [[150.0, 199.0, 201.5, 900.0]])
+    prob.set_val("peak_current", [400.0])
+    prob.set_val("current", [[150.0, 150.0, 150.0, 150.0]])
+    prob.run_model()
+    margin = prob.get_val("torque_margin")[0]
+    assert_near_equal(margin[[0, 3]], [0.5, 1.0], tolerance=1e-6)
+    assert margin[1] < 0.99 and margin[2] < 1.0
+    assert_near_equal(prob.get_val("current_margin")[0], np.full(4, 1.0 - 150.0 / 400.0), 1e-14)
+    data = prob.check_partials(method="cs", compact_print=True, out_stream=None)
+    assert_check_partials(data, atol=1e-10, rtol=1e-10)

@@ -4,9 +4,15 @@ import numpy as np
 import openmdao.api as om
 import pytest
 from openmdao.utils.assert_utils import assert_check_partials, assert_near_equal
-from scipy.optimize import minimize_scalar
+from scipy.optimize import brentq, minimize_scalar
 
-from lpc_mdo.components.motor.mtpa import MTPAComp, mtpa_base, mtpa_current_pu, mtpa_residual
+from lpc_mdo.components.motor.mtpa import (
+    MTPAComp,
+    PeakCurrentComp,
+    mtpa_base,
+    mtpa_current_pu,
+    mtpa_residual,
+)
 
 # Case A motor of docs theory/motor 'Validation' (L = 0.131 m, L/D = 1/3),
 # equivalent-circuit values as computed by MotorGroup (they match the reference to its printed
@@ -145,3 +151,62 @@ def test_cached_real_roots_are_the_roots_of_their_own_torques():
     np.testing.assert_allclose(
         derivative, -(again - 2 * first) / (4 * again**3 + first), rtol=1e-12
     )
+
+
+def _peak_current(peak_torque, flux, l_d, l_q):
+    prob = om.Problem(reports=False)
+    n = len(peak_torque)
+    prob.model.add_subsystem("peak", PeakCurrentComp(num_motors=n), promotes=["*"])
+    prob.setup(force_alloc_complex=True)
+    prob.set_val("peak_torque", peak_torque)
+    prob.set_val("flux_linkage", flux)
+    prob.set_val("inductance_d", l_d)
+    prob.set_val("inductance_q", l_q)
+    prob.run_model()
+    return prob
+
+
+def test_peak_current_is_the_least_current_for_the_peak_torque():
+    # Independent of eq. 26: the smallest current amplitude I at which some current angle beta
+    # (I_d = -I sin(beta), I_q = I cos(beta)) gives the peak torque, T(I, beta) = 1.5 p (Psi_F
+    # I_q + (L_d - L_q) I_d I_q), found by brentq on I of max_beta T(I, beta) - T_pk with the
+    # inner maximum by scipy's bounded Brent. Case A motor at T_pk = 1652.87128 N*m (its fit)
+    # and a second, smaller motor: 1e-7 relative (the inner maximisation's tolerance).
+    peak = np.array([1652.87128, 120.0])
+    flux = np.array([FLUX_LINKAGE, 0.0345])
+    l_d = np.array([INDUCTANCE_D, 9.3863e-5])
+    l_q = np.array([INDUCTANCE_Q, 1.1168e-4])
+    result = _peak_current(peak, flux, l_d, l_q).get_val("peak_current")
+
+    def best_torque(current, k):
+        def negative(beta):
+            i_d, i_q = -current * np.sin(beta), current * np.cos(beta)
+            return -1.5 * POLE_PAIRS * (flux[k] * i_q + (l_d[k] - l_q[k]) * i_d * i_q)
+
+        res = minimize_scalar(
+            negative, bounds=(0.0, 0.5 * np.pi), method="bounded", options={"xatol": 1e-12}
+        )
+        return -res.fun
+
+    for k in range(2):
+        expected = brentq(lambda i, k=k: best_torque(i, k) - peak[k], 1.0, 1.0e5, xtol=1e-10)
+        assert_near_equal(result[k], expected, tolerance=1e-7)
+
+
+def test_peak_current_partials():
+    # Complex-step partials (exact to round-off) against central FD: 1e-6 relative.
+    prob = _peak_current(
+        np.array([1652.87128, 120.0]),
+        np.array([FLUX_LINKAGE, 0.0345]),
+        np.array([INDUCTANCE_D, 9.3863e-5]),
+        np.array([INDUCTANCE_Q, 1.1168e-4]),
+    )
+    data = prob.check_partials(
+        method="fd",
+        form="central",
+        step=1e-7,
+        step_calc="rel_avg",
+        compact_print=True,
+        out_stream=None,
+    )
+    assert_check_partials(data, atol=1e-6, rtol=1e-6)

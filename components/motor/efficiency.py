@@ -519,20 +519,46 @@ class EMTorqueComp(PointwiseImplicitComp):
         )
 
 
+def smooth_min_ratio(ratio, sharpness):
+    """
+    Return the smooth minimum s(x) of 1 and x and its derivative ds/dx (complex-safe).
+
+    s(x) = -ln(exp(-k) + exp(-k x))/k, the log-sum-exp (KS) minimum of 1 and x with sharpness
+    k: min(1, x) - ln(2)/k <= s(x) <= min(1, x), the gap ln(2)/k at x = 1 and vanishing away
+    from it (below 1e-4 for abs(x - 1) > 7/k). Evaluated in the overflow-free form
+    min(1, x) - ln(1 + exp(-k abs(x - 1)))/k, with abs taken on the real part (smooth: the two
+    branches are one analytic function). ds/dx = 1/(1 + exp(k (x - 1))).
+    """
+    gap = ratio - 1.0
+    sign = np.where(np.real(gap) >= 0.0, 1.0, -1.0)
+    low = np.where(np.real(gap) >= 0.0, 1.0 + 0.0 * ratio, ratio)
+    value = low - np.log1p(np.exp(-sharpness * sign * gap)) / sharpness
+    slope = 0.5 * (1.0 - np.tanh(0.5 * sharpness * gap))
+    return value, slope
+
+
 class MotorMarginComp(om.ExplicitComponent):
     """
-    Torque margin and voltage-limit report of each operating point.
+    Torque, current and voltage margins of each operating point.
 
-    See docs theory/motor 'Torque margin'.
+    See docs theory/motor 'Torque margin' and 'Winding for the bus'.
 
-    - torque_margin = T_pk/T_em - 1 (paper: available/required - 1, constrained >= 0.10; the
-      full problem aggregates T_em over a motor's conditions with KS before this ratio);
-    - voltage_margin = 1 - abs(U)/V_lim (>= 0 when the MTPA point respects the voltage limit);
-    - voltage_torque_margin = T_lim/T_em - 1 (only with ``include_torque_limit``): margin to the
-      voltage-limited torque of docs theory/motor 'Voltage-limited torque', which needs flux
-      weakening to be reached when voltage_margin < 0;
-    - beyond_voltage_limit = 1.0 where abs(U) > V_lim, else 0.0: flux weakening (out of scope, as in
-      the paper) would be needed there. A report, not differentiable (no partials); constrain
+    - available torque T_max = smooth min(T_pk, T_lim) = T_pk s(T_lim/T_pk) with s of
+      :func:`smooth_min_ratio` (sharpness option ``smooth_min_sharpness`` k = 100: T_max is at
+      most 0.7 % of T_pk below the exact minimum, never above it): the motor's torque is limited
+      by its current (the peak torque T_pk of the sizing fit) and, at the operating speed, by
+      the voltage (T_lim, docs theory/motor 'Voltage-limited torque'). Without
+      ``include_torque_limit`` T_max = T_pk (the paper);
+    - torque_margin = T_max/T_em - 1 (paper: available/required - 1, constrained >= 0.10; the
+      full problem aggregates the margin over a motor's conditions with KS);
+    - current_margin = 1 - abs(I)/I_pk: the phase current against the current at the peak
+      torque, which the inverter and cables are rated for (a report: the torque margin keeps it
+      positive, since the MTPA current grows with the torque);
+    - voltage_margin = 1 - abs(U)/V_lim (>= 0 when the MTPA point respects the voltage limit:
+      the range where the MTPA model without flux weakening holds);
+    - voltage_torque_margin = T_lim/T_em - 1 (only with ``include_torque_limit``);
+    - beyond_voltage_limit = 1.0 where abs(U) > V_lim, else 0.0: flux weakening (out of scope, as
+      in the paper) would be needed there. A report, not differentiable (no partials); constrain
       voltage_margin instead.
 
     Partials: analytic, pointwise.
@@ -543,14 +569,21 @@ class MotorMarginComp(om.ExplicitComponent):
         T_em.
     voltage : float, (num_motors, num_nodes), V
         MTPA terminal voltage amplitude.
+    current : float, (num_motors, num_nodes), A
+        Phase-current amplitude abs(I).
     peak_torque : float, (num_motors,), N*m
         Peak (current-limited) motor torque T_pk.
+    peak_current : float, (num_motors,), A
+        Phase-current amplitude at the peak torque I_pk (PeakCurrentComp).
     torque_limit : float, (num_motors, num_nodes), N*m
         Voltage-limited torque T_lim (only with ``include_torque_limit``).
 
     Outputs
     -------
-    torque_margin, voltage_margin : float, (num_motors, num_nodes), dimensionless
+    available_torque : float, (num_motors, num_nodes), N*m
+        T_max.
+    torque_margin, current_margin, voltage_margin : float, (num_motors, num_nodes),
+    dimensionless
         See above.
     voltage_torque_margin : float, (num_motors, num_nodes), dimensionless
         See above (only with ``include_torque_limit``).
@@ -566,7 +599,10 @@ class MotorMarginComp(om.ExplicitComponent):
     parameters : MotorParameters
         Voltage limit.
     include_torque_limit : bool
-        Add the torque_limit input and the voltage_torque_margin output. Default True.
+        Add the torque_limit input, the voltage-limited torque in T_max and the
+        voltage_torque_margin output. Default True.
+    smooth_min_sharpness : float
+        k of the smooth minimum (> 0). Default 100.
     """
 
     def initialize(self):
@@ -575,7 +611,14 @@ class MotorMarginComp(om.ExplicitComponent):
             "include_torque_limit",
             default=True,
             types=bool,
-            desc="Add torque_limit and voltage_torque_margin",
+            desc="Add torque_limit, the voltage limit in T_max and voltage_torque_margin",
+        )
+        self.options.declare(
+            "smooth_min_sharpness",
+            default=100.0,
+            types=(int, float),
+            lower=1e-9,
+            desc="Sharpness k of the smooth min(T_pk, T_lim) (> 0)",
         )
 
     def setup(self):
@@ -594,10 +637,19 @@ class MotorMarginComp(om.ExplicitComponent):
             desc="MTPA terminal voltage amplitude |U|",
         )
         self.add_input(
+            "current", val=50.0 * np.ones((nm, nn)), units="A", desc="Phase-current amplitude |I|"
+        )
+        self.add_input(
             "peak_torque",
             val=200.0 * np.ones(nm),
             units="N*m",
             desc="Peak (current-limited) motor torque T_pk",
+        )
+        self.add_input(
+            "peak_current",
+            val=300.0 * np.ones(nm),
+            units="A",
+            desc="Phase-current amplitude at the peak torque I_pk",
         )
         if with_limit:
             self.add_input(
@@ -607,10 +659,22 @@ class MotorMarginComp(om.ExplicitComponent):
                 desc="Voltage-limited EM torque T_lim",
             )
         self.add_output(
+            "available_torque",
+            val=np.ones((nm, nn)),
+            units="N*m",
+            desc="Available torque T_max = smooth min(T_pk, T_lim)",
+        )
+        self.add_output(
             "torque_margin",
             val=np.zeros((nm, nn)),
             units=None,
-            desc="Torque margin T_pk/T_em - 1 (constrained >= 0.10 in the paper)",
+            desc="Torque margin T_max/T_em - 1 (constrained >= 0.10 in the paper)",
+        )
+        self.add_output(
+            "current_margin",
+            val=np.zeros((nm, nn)),
+            units=None,
+            desc="Current margin 1 - |I|/I_pk",
         )
         self.add_output(
             "voltage_margin",
@@ -634,32 +698,50 @@ class MotorMarginComp(om.ExplicitComponent):
         )
 
         rows = np.arange(nm * nn)
+        per_motor = np.repeat(np.arange(nm), nn)
         v_lim = self.options["parameters"].voltage_limit
+        self.declare_partials("available_torque", "peak_torque", rows=rows, cols=per_motor)
         self.declare_partials("torque_margin", "em_torque", rows=rows, cols=rows)
-        self.declare_partials(
-            "torque_margin", "peak_torque", rows=rows, cols=np.repeat(np.arange(nm), nn)
-        )
+        self.declare_partials("torque_margin", "peak_torque", rows=rows, cols=per_motor)
+        self.declare_partials("current_margin", "current", rows=rows, cols=rows)
+        self.declare_partials("current_margin", "peak_current", rows=rows, cols=per_motor)
         self.declare_partials(
             "voltage_margin", "voltage", rows=rows, cols=rows, val=np.full(nm * nn, -1.0 / v_lim)
         )
         if with_limit:
+            for of in ("available_torque", "torque_margin"):
+                self.declare_partials(of, "torque_limit", rows=rows, cols=rows)
             self.declare_partials(
                 "voltage_torque_margin", ["em_torque", "torque_limit"], rows=rows, cols=rows
             )
 
+    def _available(self, inputs):
+        """Return T_max and its derivatives by T_pk and T_lim (None without the limit)."""
+        peak = inputs["peak_torque"][:, np.newaxis] + 0.0 * inputs["em_torque"]
+        if not self.options["include_torque_limit"]:
+            return peak, np.ones_like(peak), None
+        ratio = inputs["torque_limit"] / peak
+        value, slope = smooth_min_ratio(ratio, self.options["smooth_min_sharpness"])
+        # T_max = T_pk s(T_lim/T_pk).
+        return peak * value, value - ratio * slope, slope
+
     def compute(self, inputs, outputs):
-        check_range(
-            "em_torque",
-            inputs["em_torque"],
-            lower=0.0,
-            lower_open=True,
-            units="N*m",
-            error=om.AnalysisError,
-            where=self.msginfo,
-        )
+        for name, units in (("em_torque", "N*m"), ("peak_current", "A"), ("peak_torque", "N*m")):
+            check_range(
+                name,
+                inputs[name],
+                lower=0.0,
+                lower_open=True,
+                units=units,
+                error=om.AnalysisError,
+                where=self.msginfo,
+            )
         v_lim = self.options["parameters"].voltage_limit
         torque = inputs["em_torque"]
-        outputs["torque_margin"] = inputs["peak_torque"][:, np.newaxis] / torque - 1.0
+        available, _, _ = self._available(inputs)
+        outputs["available_torque"] = available
+        outputs["torque_margin"] = available / torque - 1.0
+        outputs["current_margin"] = 1.0 - inputs["current"] / inputs["peak_current"][:, np.newaxis]
         outputs["voltage_margin"] = 1.0 - inputs["voltage"] / v_lim
         if self.options["include_torque_limit"]:
             outputs["voltage_torque_margin"] = inputs["torque_limit"] / torque - 1.0
@@ -667,12 +749,18 @@ class MotorMarginComp(om.ExplicitComponent):
 
     def compute_partials(self, inputs, partials):
         torque = inputs["em_torque"]
-        peak = inputs["peak_torque"][:, np.newaxis]
-        partials["torque_margin", "em_torque"] = (-peak / torque**2).ravel()
-        partials["torque_margin", "peak_torque"] = np.broadcast_to(
-            1.0 / torque, torque.shape
+        available, d_peak, d_limit = self._available(inputs)
+        partials["available_torque", "peak_torque"] = d_peak.ravel()
+        partials["torque_margin", "em_torque"] = (-available / torque**2).ravel()
+        partials["torque_margin", "peak_torque"] = (d_peak / torque).ravel()
+        peak_current = inputs["peak_current"][:, np.newaxis]
+        partials["current_margin", "current"] = np.broadcast_to(
+            -1.0 / peak_current, torque.shape
         ).ravel()
+        partials["current_margin", "peak_current"] = (inputs["current"] / peak_current**2).ravel()
         if self.options["include_torque_limit"]:
+            partials["available_torque", "torque_limit"] = d_limit.ravel()
+            partials["torque_margin", "torque_limit"] = (d_limit / torque).ravel()
             partials["voltage_torque_margin", "em_torque"] = (
                 -inputs["torque_limit"] / torque**2
             ).ravel()

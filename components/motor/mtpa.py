@@ -4,7 +4,7 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.motor._numerics import check_saliency
-from lpc_mdo.components.motor._pointwise import _declare_common_options
+from lpc_mdo.components.motor._pointwise import PointwiseExplicitComp, _declare_common_options
 from lpc_mdo.core.checks import check_range
 from lpc_mdo.core.numerics import safeguarded_newton
 
@@ -263,3 +263,96 @@ class MTPAComp(om.ImplicitComponent):
             partials["current_q", name] = (
                 dr_dx * dx_dib * dib[name] + dr_dt * dt_dtb * dtb[name]
             ).ravel()
+
+
+class PeakCurrentComp(PointwiseExplicitComp):
+    """
+    Phase-current amplitude of the MTPA point at the peak torque: the motor's current limit.
+
+    See docs theory/motor 'Winding for the bus' and 'Torque margin'. With the MTPA base values
+    of :func:`mtpa_base` and the per-unit root of paper eq. 26 at T* = T_pk/T_base:
+
+        I_q = I_q*(T*) I_base,  I_d = (T_pk/(1.5 p I_q) - Psi_F)/(L_d - L_q),
+        I_pk = sqrt(I_q**2 + I_d**2).
+
+    The motor delivers its peak (current-limited) torque T_pk at this current, so its inverter
+    and cables are rated for it. Under MTPA the current grows with the torque, so an operating
+    point within the torque margin (T_em <= T_pk/1.1) draws less than I_pk. Partials: exact
+    vectorized complex step (the MTPA root is complex-step safe), diagonal over the motors.
+
+    Inputs
+    ------
+    peak_torque : float, (num_motors,), N*m
+        Peak (current-limited) torque T_pk; must be > 0.
+    flux_linkage : float, (num_motors,), Wb
+        Psi_F; must be > 0.
+    inductance_d, inductance_q : float, (num_motors,), H
+        L_d, L_q (L_q > L_d).
+
+    Outputs
+    -------
+    peak_current : float, (num_motors,), A
+        Phase-current amplitude I_pk at the peak torque.
+
+    Options
+    -------
+    num_motors : int
+        Number of motors (>= 1). Default 1.
+    parameters : MotorParameters
+        Pole pairs.
+
+    Raises
+    ------
+    om.AnalysisError
+        If peak_torque or flux_linkage is not > 0 or L_q <= L_d.
+    """
+
+    _input_vars = (
+        ("peak_torque", "N*m", "Peak (current-limited) torque T_pk", 200.0, False),
+        ("flux_linkage", "Wb", "Permanent-magnet flux linkage Psi_F", 0.3, False),
+        ("inductance_d", "H", "D-axis inductance L_d", 7.5e-4, False),
+        ("inductance_q", "H", "Q-axis inductance L_q", 1.0e-3, False),
+    )
+    _output_vars = (
+        (
+            "peak_current",
+            "A",
+            "Phase-current amplitude of the MTPA point at the peak torque",
+            300.0,
+            False,
+        ),
+    )
+    _deps = {"peak_current": ("peak_torque", "flux_linkage", "inductance_d", "inductance_q")}
+
+    def _check_values(self, values):
+        for name, units in (("peak_torque", "N*m"), ("flux_linkage", "Wb")):
+            check_range(
+                name,
+                values[name],
+                lower=0.0,
+                lower_open=True,
+                units=units,
+                error=om.AnalysisError,
+                where=self.msginfo,
+            )
+        check_saliency(
+            self.msginfo,
+            values["inductance_d"],
+            values["inductance_q"],
+            " is outside the allowed range (0, inf): the MTPA current needs L_q > L_d, which the "
+            "equivalent circuit gives only above a minimum stack length (about 0.056 m at L/D = "
+            "0.5 with the default parameters).",
+        )
+
+    def _evaluate(self, v):
+        p = self.options["parameters"].pole_pairs
+        psi, l_d, l_q, torque = (
+            v["flux_linkage"],
+            v["inductance_d"],
+            v["inductance_q"],
+            v["peak_torque"],
+        )
+        i_base, t_base = mtpa_base(psi, l_d, l_q, p)
+        current_q = mtpa_current_pu(torque / t_base, owner=self.msginfo) * i_base
+        current_d = (torque / (1.5 * p * current_q) - psi) / (l_d - l_q)
+        return {"peak_current": np.sqrt(current_q**2 + current_d**2)}

@@ -21,6 +21,7 @@ MU_0 = 4.0e-7 * np.pi  # vacuum permeability, H/m
 #: variable, besides).
 DESIGN_OUTPUTS = (
     "peak_torque",
+    "peak_current",
     "resistance",
     "inductance_d",
     "inductance_q",

@@ -42,6 +42,9 @@ _RESULT_NAMES = (
     "torque_limit",
     "torque_margin",
     "voltage_torque_margin",
+    "peak_current",
+    "available_torque",
+    "current_margin",
 )
 
 
@@ -92,8 +95,9 @@ def motor_analysis(
         'flux_linkage', 'air_gap_flux_density' (per motor) and 'em_torque', 'efficiency',
         'input_power', 'output_power', 'power_loss', 'copper_loss', 'iron_loss',
         'windage_loss', 'current_q', 'current_d', 'current', 'voltage', 'voltage_margin',
-        'torque_limit', 'torque_margin', 'voltage_torque_margin' (per operating point) in SI
-        units, plus 'beyond_voltage_limit' (bool). Floats when every argument is a scalar,
+        'torque_limit', 'torque_margin', 'voltage_torque_margin', 'available_torque',
+        'current_margin' (per operating point) and 'peak_current' (per motor) in SI units,
+        plus 'beyond_voltage_limit' (bool). Floats when every argument is a scalar,
         otherwise arrays of shape (num_motors,) and (num_motors, num_nodes).
 
     Raises
