@@ -25,6 +25,11 @@ from lpc_mdo.vehicle.condition_layout import condition_layout
 # Torque margin reported for a motor that no included condition loads (a model built with a
 # single OEI case); large, so it never binds.
 UNUSED_MOTOR_MARGIN = 10.0
+#: The motor margins aggregated over the conditions by KS, one per motor (output
+#: ``{prefix}_motor_{quantity}``), and the name of their aggregate (``{prefix}_{name}``): the
+#: torque margin (paper Table 6) and the voltage margin of the MTPA point (docs theory/motor
+#: 'Winding for the bus').
+MOTOR_MARGIN_AGGREGATES = {"torque_margin": "margin", "voltage_margin": "voltage_margin"}
 
 
 def openmdao_units(units):
@@ -44,7 +49,8 @@ class LPCGroup(om.Group):
     declares what it reads from the vehicle, which design-variable entries drive it, its motors and
     its power; ``mission`` and ``battery`` give the final state of charge (each condition's energy
     weighted by its ``energy_weight``); ``lift_margin``/``pusher_margin`` aggregate the motor torque
-    margins over the conditions by KS (paper eq. 7).
+    margins over the conditions by KS (paper eq. 7), ``lift_voltage_margin``/
+    ``pusher_voltage_margin`` the motor voltage margins likewise.
 
     The optimization problem is not part of the model: :func:`lpc_mdo.problems.declare_problem`
     declares it (paper Table 6).
@@ -63,7 +69,7 @@ class LPCGroup(om.Group):
     wing_zero_lift_angle : float or None
         Sectional zero-lift angle of the wing airfoil, rad (None: from its table).
     ks_rho : float
-        KS aggregation parameter of the torque margins.
+        KS aggregation parameter of the torque and voltage margins.
     structural_coupling : str
         Aerostructural coupling of the structural conditions: 'one_way' or 'two_way'.
     structural_ks_rho : float or None
@@ -98,7 +104,10 @@ class LPCGroup(om.Group):
             desc="wing sectional zero-lift angle, rad",
         )
         self.options.declare(
-            "ks_rho", default=50.0, types=float, desc="KS parameter of the torque-margin aggregates"
+            "ks_rho",
+            default=50.0,
+            types=float,
+            desc="KS parameter of the torque- and voltage-margin aggregates",
         )
         self.options.declare(
             "structural_coupling",
@@ -174,10 +183,11 @@ class LPCGroup(om.Group):
             self.connect(f"{condition.name}.{power}", f"power_mux.electrical_power_{i}")
         for prefix, members in self._motor_sets.items():
             for condition, _ in members:
-                self.connect(
-                    f"{condition.name}.{prefix}_motor_torque_margin",
-                    f"{prefix}_margin_gather.{condition.name}",
-                )
+                for quantity, gather in MOTOR_MARGIN_AGGREGATES.items():
+                    self.connect(
+                        f"{condition.name}.{prefix}_motor_{quantity}",
+                        f"{prefix}_{gather}_gather.{condition.name}",
+                    )
         super().configure()
 
     # ------------------------------------------------------------------ mission and margins
@@ -221,14 +231,15 @@ class LPCGroup(om.Group):
                 self._motor_sets.setdefault(prefix, []).append((c, list(motors)))
         sizes = {"lift": len(vehicle.lift_rotors), "pusher": 1}
         for prefix, members in self._motor_sets.items():
-            self._add_margin_aggregate(prefix, members, sizes[prefix])
+            for quantity, name in MOTOR_MARGIN_AGGREGATES.items():
+                self._add_margin_aggregate(prefix, members, sizes[prefix], quantity, name)
 
-    def _add_margin_aggregate(self, prefix, members, num_motors):
-        """Add the KS over the conditions of each motor's torque margin (paper eq. 7)."""
+    def _add_margin_aggregate(self, prefix, members, num_motors, quantity, name):
+        """Add the KS over the conditions of each motor's ``quantity`` margin (paper eq. 7)."""
         self.add_subsystem(
-            f"{prefix}_margin_gather",
+            f"{prefix}_{name}_gather",
             GatherComp(
-                name="torque_margin",
+                name=quantity,
                 sources=[c.name for c, _ in members],
                 items=[motors for _, motors in members],
                 num_items=num_motors,
@@ -236,13 +247,13 @@ class LPCGroup(om.Group):
             ),
         )
         self.add_subsystem(
-            f"{prefix}_margin",
+            f"{prefix}_{name}",
             KSComp(
                 vec_size=num_motors, width=len(members), rho=self.options["ks_rho"], lower_flag=True
             ),
-            promotes_outputs=[("KS", f"{prefix}_motor_torque_margin")],
+            promotes_outputs=[("KS", f"{prefix}_motor_{quantity}")],
         )
-        self.connect(f"{prefix}_margin_gather.torque_margin", f"{prefix}_margin.g")
+        self.connect(f"{prefix}_{name}_gather.{quantity}", f"{prefix}_{name}.g")
 
 
 @functools.cache

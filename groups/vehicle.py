@@ -371,7 +371,7 @@ class VehicleGroup(om.Group):
                 parameters=motor_parameters(vehicle),
                 **motor_loadings(vehicle),
             ),
-            promotes_inputs=[("length", "motor_length")],
+            promotes_inputs=[("length", "motor_length"), ("rated_current", "motor_rated_current")],
             promotes_outputs=[("mass", "motor_group_mass")]
             + [(name, f"motor_{name}") for name in DESIGN_OUTPUTS],
         )
@@ -381,6 +381,7 @@ class VehicleGroup(om.Group):
             promotes=["*"],
         )
         self.connect("motor_group_mass", "motor_mass", src_indices=groups)
+        self.connect("motor_peak_current", "motor_current_rating", src_indices=groups)
 
         self.set_input_defaults("material_density", vehicle.material.density, units="kg/m**3")
         dvs = vehicle.design_variables

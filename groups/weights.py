@@ -23,6 +23,7 @@ from lpc_mdo.components.weights.gross_weight import GrossWeightComp
 from lpc_mdo.components.weights.item_placement import FuselageStationComp
 from lpc_mdo.components.weights.landing_gear import LandingGearMassComp
 from lpc_mdo.components.weights.mass_properties import MassItem, MassPropertiesComp
+from lpc_mdo.components.weights.power_electronics import PowerElectronicsMassComp
 from lpc_mdo.components.weights.regressions import (
     BoomRegressionComp,
     EmpennageRegressionComp,
@@ -86,6 +87,7 @@ def vehicle_mass_items(vehicle=None):
         MassItem("rotor", count=num_motors(vehicle)),
         MassItem("drive_system", count=num_motors(vehicle)),
         MassItem("power_electronics"),
+        MassItem("power_cable", count=num_motors(vehicle)),
         MassItem("payload"),
         *(MassItem(name) for name in SYSTEM_ITEMS),
         MassItem("systems"),
@@ -192,6 +194,8 @@ def placeholder_calibration_inputs(vehicle=None):
       36.050 kg for the pusher motor (L = 0.15 m) for the reference vehicle.
     - ``motor_peak_torque`` (N m, one per rotor group): the peak torque of those motors (the
       motor model's polynomial in the mass, docs theory/motor 'Sizing').
+    - ``motor_current_rating`` (A, 9 values): :data:`PLACEHOLDER_CURRENT_RATING` for every motor
+      (the vehicle model connects each motor design's MTPA current at its peak torque).
 
     """
     vehicle = _vehicle(vehicle)
@@ -224,7 +228,13 @@ def placeholder_calibration_inputs(vehicle=None):
         "wing_mass": wing_mass,
         "motor_mass": group_mass[motor_group_indices(vehicle)],
         "motor_peak_torque": peak,
+        "motor_current_rating": np.full(num_motors(vehicle), PLACEHOLDER_CURRENT_RATING),
     }
+
+
+#: Current rating of a stand-alone WeightsGroup's motors, A: a round value of the order of the
+#: reference motors' peak currents; the vehicle model connects the motor designs' own.
+PLACEHOLDER_CURRENT_RATING = 300.0
 
 
 def _check_wing_model(name, value):
@@ -242,7 +252,9 @@ class WeightsGroup(om.Group):
 
     Subsystems (all variables promoted): ``fuselage``, ``booms``, ``empennage``
     (M4 regressions, docs theory/weights 'M4 regressions'), ``wing`` (only with
-    ``wing_model='regression'``), ``gross_weight`` (:class:`GrossWeightComp`) and
+    ``wing_model='regression'``), ``power_electronics`` (:class:`PowerElectronicsMassComp`:
+    inverters and motor cables from the motors' current ratings, docs theory/weights 'Power
+    electronics and cables'), ``gross_weight`` (:class:`GrossWeightComp`) and
     ``mass_properties`` (:class:`MassPropertiesComp`, docs theory/weights 'Mass properties') over
     the bodies of :func:`vehicle_mass_items`. Input defaults come from the vehicle.
 
@@ -273,10 +285,14 @@ class WeightsGroup(om.Group):
         Motor cg; default the rotor hubs (assumption: the motor sits at its rotor's hub).
     battery_cg : float, (3,), m
         Default ``vehicle.battery.cg``.
-    power_electronics_mass, payload_mass, systems_mass, other_mass : float, (1,), kg
+    motor_current_rating : float, (9,), A
+        Phase-current amplitude each motor draws at its peak torque (``motor_peak_current`` of
+        its design), which rates its inverter and cable (default: the placeholder).
+    payload_mass, systems_mass, other_mass : float, (1,), kg
         Fixed masses, default ``vehicle.masses`` (``other_mass``: the option if given).
     power_electronics_cg, payload_cg, systems_cg, other_cg : float, (3,), m
-        Their cg, default ``vehicle.masses``.
+        Their cg (``power_electronics_cg``: the inverters' station, where the motor cables
+        start), default ``vehicle.masses``.
 
     The outputs are promoted.
 
@@ -288,6 +304,9 @@ class WeightsGroup(om.Group):
         Their cg, body frame.
     fuselage_inertia, boom_inertia, empennage_inertia : float, (3, 3), kg*m**2
         Their inertia about their own cg.
+    power_electronics_mass : float, (1,), kg
+        The inverters (PowerElectronicsMassComp; with ``inverter_mass``, ``power_cable_mass``,
+        ``power_cable_length`` and ``power_cable_cg`` per motor).
     structures_mass, powertrain_mass : float, (1,), kg
         Eqs. 32 and 33.
     gross_mass : float, (1,), kg
@@ -416,6 +435,23 @@ class WeightsGroup(om.Group):
             ),
             promotes=["*"],
         )
+        motor = vehicle.motor
+        self.add_subsystem(
+            "power_electronics",
+            PowerElectronicsMassComp(
+                num_motors=num_motors(vehicle),
+                phases=motor.num_phases,
+                voltage_limit=motor.voltage_limit,
+                inverter_specific_power=motor.inverter_specific_power,
+                cable_mass_per_ampere_metre=motor.cable_mass_per_ampere_metre,
+            ),
+            promotes_inputs=[
+                ("peak_current", "motor_current_rating"),
+                "motor_cg",
+                ("inverter_station", "power_electronics_cg"),
+            ],
+            promotes_outputs=["*"],
+        )
         self.add_subsystem(
             "gross_weight", GrossWeightComp(num_motors=num_motors(vehicle)), promotes=["*"]
         )
@@ -467,7 +503,7 @@ class WeightsGroup(om.Group):
                 "m",
             ),
             "rotor_design_speed": (rotor_design_speeds(vehicle), "rpm"),
-            "power_electronics_mass": (masses.power_electronics, "kg"),
+            "motor_current_rating": (placeholder["motor_current_rating"], "A"),
             "power_electronics_cg": (masses.power_electronics_cg, "m"),
             "payload_mass": (masses.payload, "kg"),
             "payload_cg": (masses.payload_cg, "m"),

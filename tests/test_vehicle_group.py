@@ -71,7 +71,7 @@ def test_initial_design_is_closed():
 def test_gross_mass_is_the_sum_of_the_breakdown_items():
     # Eqs. 31-33 from the breakdown: W0 is the sum of the items, W_structures that of wing box,
     # wing secondary structure, fuselage, empennage, booms and landing gear, W_powertrain that
-    # of the motors, rotors, their drive systems and power electronics.
+    # of the motors, rotors, their drive systems, cables and power electronics.
     prob = vehicle_problem()
     items = dict(zip(BREAKDOWN_LABELS, prob.get_val("mass_breakdown", units="kg"), strict=True))
     assert_near_equal(sum(items.values()), prob.get_val("gross_mass", units="kg")[0], 1e-14)
@@ -86,7 +86,11 @@ def test_gross_mass_is_the_sum_of_the_breakdown_items():
         1e-14,
     )
     assert_near_equal(
-        items["motors"] + items["rotors"] + items["drive_system"] + items["power_electronics"],
+        items["motors"]
+        + items["rotors"]
+        + items["drive_system"]
+        + items["power_cables"]
+        + items["power_electronics"],
         prob.get_val("powertrain_mass", units="kg")[0],
         1e-14,
     )
@@ -111,10 +115,17 @@ def test_calibrated_other_mass_moves_by_the_wing_and_motor_mass_differences():
         PAPER,
         motor=dataclasses.replace(PAPER.motor, torque_density=1.25 * PAPER.motor.torque_density),
     )
-    # The motors' peak torque follows their mass, and the gearboxes (NDARC AFDD00) their torque:
-    # W_other also takes up the drive-system difference.
-    drive = base.get_val("drive_system_mass").sum()
-    light_drive = vehicle_problem(light_motors).get_val("drive_system_mass").sum()
+
+    # The motors' peak torque follows their mass, and the gearboxes (NDARC AFDD00) their torque
+    # and the inverters and cables their peak current: W_other also takes up those differences.
+    def drive_and_power(prob):
+        return sum(
+            prob.get_val(name).sum()
+            for name in ("drive_system_mass", "power_electronics_mass", "power_cable_mass")
+        )
+
+    drive = drive_and_power(base)
+    light_drive = drive_and_power(vehicle_problem(light_motors))
     assert light_drive < drive
     assert_near_equal(
         calibrated_other_mass(light_motors)[0] - other, 0.2 * motors + drive - light_drive, 1e-9

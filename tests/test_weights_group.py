@@ -40,9 +40,9 @@ def test_placeholder_calibration_inputs():
 def test_gross_mass_is_the_sum_of_the_breakdown_items():
     # Stand-alone WeightsGroup at its defaults, hand sum of the items (kg): wing 283.36053 (M4
     # placeholder) + fuselage 316.51853 + empennage 56.53885 + booms 118.09657 + battery 800
-    # + motors 121.50110 + power electronics 40.82 + payload 540 + systems 0 + other 0
-    # (the reference is itemised) = 2276.83558, plus the named items, each tested against its
-    # source in test_weights_items.py.
+    # + motors 121.50110 + payload 540 + systems 0 + other 0 (the reference is itemised)
+    # = 2236.01558, plus the named items, each tested against its source in
+    # test_weights_items.py and (inverters and cables) test_weights_power_electronics.py.
     prob = weights_problem()
     prob.run_model()
     named = sum(
@@ -57,9 +57,11 @@ def test_gross_mass_is_the_sum_of_the_breakdown_items():
             "electrical",
             "environmental_control",
             "furnishings",
+            "power_electronics",
+            "power_cable",
         )
     )
-    assert_near_equal(prob.get_val("gross_mass"), 2276.83558 + named, 1e-8)
+    assert_near_equal(prob.get_val("gross_mass"), 2236.01558 + named, 1e-8)
     assert_near_equal(prob.get_val("total_mass"), prob.get_val("gross_mass"), 1e-12)
     # The mass breakdown sums to the gross mass and prints.
     breakdown = mass_breakdown(prob)
@@ -85,6 +87,7 @@ def test_calibrated_other_mass_reaches_the_target():
     prob = weights_problem(vehicle=paper, other_mass=calibrate_other_mass(paper))
     prob.set_val("wing_mass", vehicle_prob.get_val("wing_mass"))
     prob.set_val("motor_mass", vehicle_prob.get_val("motor_mass"))
+    prob.set_val("motor_current_rating", vehicle_prob.get_val("motor_current_rating"))
     prob.run_model()
     assert_near_equal(prob.get_val("gross_mass"), TARGET, 1e-12)
 
@@ -113,6 +116,7 @@ def test_vehicle_mass_properties():
     moment = sum(prob.get_val(f"{n}_mass") * prob.get_val(f"{n}_cg") for n in names)
     moment = moment + prob.get_val("motor_mass") @ prob.get_val("motor_cg")
     moment = moment + prob.get_val("rotor_mass") @ prob.get_val("rotor_cg")
+    moment = moment + prob.get_val("power_cable_mass") @ prob.get_val("power_cable_cg")
     # Gearboxes sit with their motors.
     moment = moment + prob.get_val("drive_system_mass") @ prob.get_val("motor_cg")
     # Wing secondary structure at the wing cg, furnishings at the seats (payload cg).

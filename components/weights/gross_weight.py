@@ -18,6 +18,7 @@ BREAKDOWN_LABELS = (
     "rotors",
     "drive_system",
     "power_electronics",
+    "power_cables",
     "payload",
     "flight_controls",
     "avionics",
@@ -37,7 +38,7 @@ _SCALAR_MASSES = (
     ("boom_mass", "booms", "total mass of the 8 booms (M4 regression)"),
     ("landing_gear_mass", "landing_gear", "landing-gear mass (NDARC fraction)"),
     ("battery_mass", "battery", "battery mass (design variable)"),
-    ("power_electronics_mass", "power_electronics", "power electronics mass (about 90 lb)"),
+    ("power_electronics_mass", "power_electronics", "inverters of the motors (their ratings)"),
     ("payload_mass", "payload", "payload mass (fixed)"),
     ("flight_controls_mass", "flight_controls", "flight controls (Raymer 15.54)"),
     ("avionics_mass", "avionics", "avionics (Raymer 15.57)"),
@@ -51,6 +52,7 @@ _VECTOR_MASSES = (
     ("motor_mass", "motors", "mass of each motor (paper eq. 23)"),
     ("rotor_mass", "rotors", "blade and hub mass of each rotor (NDARC AFDD00)"),
     ("drive_system_mass", "drive_system", "gearbox and rotor shaft of each rotor (NDARC AFDD00)"),
+    ("power_cable_mass", "power_cables", "phase cables from the inverters to each motor"),
 )
 _STRUCTURES = (
     "wing_mass",
@@ -60,7 +62,13 @@ _STRUCTURES = (
     "boom_mass",
     "landing_gear_mass",
 )
-_POWERTRAIN = ("motor_mass", "rotor_mass", "drive_system_mass", "power_electronics_mass")
+_POWERTRAIN = (
+    "motor_mass",
+    "rotor_mass",
+    "drive_system_mass",
+    "power_cable_mass",
+    "power_electronics_mass",
+)
 _INDEX = {label: i for i, label in enumerate(BREAKDOWN_LABELS)}
 
 
@@ -73,8 +81,8 @@ class GrossWeightComp(om.ExplicitComponent):
 
     - W_structures = W_wing + W_wing,secondary + W_fuselage + W_empennage + W_booms
       + W_landing_gear                                                       (eq. 32, extended)
-    - W_powertrain = sum_j (W_motor,j + W_rotor,j + W_drive,j) + W_power_electronics
-                                                                           (eq. 33, extended)
+    - W_powertrain = sum_j (W_motor,j + W_rotor,j + W_drive,j + W_cable,j)
+      + W_power_electronics                                                (eq. 33, extended)
     - W0 = W_structures + W_battery + W_powertrain + W_payload + W_systems + W_other  (eq. 31)
 
     with W_systems the sum of the named system items (flight controls, avionics, electrical,
@@ -88,9 +96,9 @@ class GrossWeightComp(om.ExplicitComponent):
         Structural masses.
     battery_mass : float, (1,), kg
         Battery mass (design variable).
-    motor_mass, rotor_mass, drive_system_mass : float, (num_motors,), kg
-        Mass of each motor (paper eq. 23), of each rotor's blades and hub and of its gearbox and
-        rotor shaft.
+    motor_mass, rotor_mass, drive_system_mass, power_cable_mass : float, (num_motors,), kg
+        Mass of each motor (paper eq. 23), of each rotor's blades and hub, of its gearbox and
+        rotor shaft and of its phase cable.
     power_electronics_mass, payload_mass, flight_controls_mass, avionics_mass, electrical_mass,
     environmental_control_mass, furnishings_mass, systems_mass, other_mass : float, (1,), kg
         The other items (``other``: the unitemised remainder).
@@ -103,9 +111,9 @@ class GrossWeightComp(om.ExplicitComponent):
         W_powertrain.
     gross_mass : float, (1,), kg
         W0, the objective.
-    mass_breakdown : float, (19,), kg
-        The items in the order of :data:`BREAKDOWN_LABELS` (motors, rotors and drive systems
-        summed). An output
+    mass_breakdown : float, (20,), kg
+        The items in the order of :data:`BREAKDOWN_LABELS` (motors, rotors, drive systems and
+        cables summed). An output
         so that a recorded case holds the whole breakdown.
 
     Options

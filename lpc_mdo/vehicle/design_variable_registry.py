@@ -143,6 +143,14 @@ VEHICLE_DESIGN_VARIABLES = (
     VehicleDesignVariable(
         "motor_length", "m", "rotor_groups", f"motor stack length; {_ROTOR_ROWS}"
     ),
+    # Not in the paper (it fixes the winding at 120 A), so not in the baseline set S.
+    VehicleDesignVariable(
+        "motor_rated_current",
+        "A",
+        "rotor_groups",
+        f"rated phase current of the motor winding, which sets its turns per phase; {_ROTOR_ROWS}",
+        baseline=False,
+    ),
     *(
         VehicleDesignVariable(
             f"{part}_thickness",

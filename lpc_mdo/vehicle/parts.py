@@ -394,11 +394,15 @@ class FixedMasses:
 
     Attributes
     ----------
-    payload, systems, other, power_electronics : float
+    payload, systems, other : float
         Masses (kg). ``other`` is W_other, the unitemised mass; with ``other_rule = "fixed"``
         the vehicle model uses it as given (the reference vehicle: 0, every mass is an item).
-    payload_cg, systems_cg, other_cg, power_electronics_cg : tuple of 3 float
+    payload_cg, systems_cg, other_cg : tuple of 3 float
         Centres of gravity, body frame (m).
+    power_electronics_cg : tuple of 3 float
+        Station of the motors' inverters, body frame (m), where their cables start; the
+        inverter and cable masses follow from the motors' current ratings (docs theory/weights
+        'Power electronics and cables').
     other_rule : str
         ``"fixed"``: W_other is ``other``. ``"calibrated"``: the paper's procedure (Sec. IV):
         W_other is chosen so that the initial design's gross mass equals
@@ -419,7 +423,6 @@ class FixedMasses:
     other: float = _param("kg", ge=0, le=_MAX_FIXED_MASS)
     other_cg: tuple[float, ...] = _param("m", ge=-_REACH, le=_REACH, shape=(3,))
     other_rule: str = _param(choices=OTHER_MASS_RULES)
-    power_electronics: float = _param("kg", ge=0, le=_MAX_FIXED_MASS)
     power_electronics_cg: tuple[float, ...] = _param("m", ge=-_REACH, le=_REACH, shape=(3,))
     # 500-20000 kg: a one-seat eVTOL to the heaviest of the class (the reference is 3089 kg).
     design_gross_mass: float = _param("kg", ge=500, le=20000)
@@ -511,6 +514,12 @@ class Motor:
         Specific magnetic loading B̄ (T).
     torque_density : float
         Torque per mass Q_sp used in the sizing mass (N*m/kg).
+    inverter_specific_power : float
+        Inverter rating per mass (W/kg); file key ``inverter_specific_power_kw_per_kg`` in
+        kW/kg (docs theory/weights 'Power electronics and cables').
+    cable_mass_per_ampere_metre : float
+        Conductor mass of the motor cables per ampere of continuous current and metre of run
+        (kg/(A*m)).
     """
 
     # Ranges of built radial-flux PMSMs: L/D 0.05-5, gears 0.1-50 (1 = direct drive), up to 50
@@ -528,6 +537,14 @@ class Motor:
     electric_loading: float = _param("A/m", ge=1e3, le=3e5)
     magnetic_loading: float = _param("T", ge=0.1, le=2.5)
     torque_density: float = _param("N*m/kg", ge=1, le=100)
+    # 1-100 kW/kg: from industrial drives to beyond the projected aircraft inverters; catches
+    # W/kg (x 1000).
+    inverter_specific_power: float = _param(
+        "kW/kg", ge=1, le=100, suffix="_kw_per_kg", scale=1000.0
+    )
+    # 1e-4 to 1e-2 kg/(A m): a copper conductor at 0.0112-1.12 mm**2/A (current densities of
+    # 0.9-90 A/mm**2); catches g/(A m).
+    cable_mass_per_ampere_metre: float = _param("kg/(A*m)", ge=1e-4, le=1e-2)
 
 
 @dataclass(frozen=True)
@@ -617,6 +634,9 @@ class ConstraintLimits:
         Static margin in cruise, fraction of the MAC (-).
     min_torque_margin : float
         Motor torque safety margin (-).
+    min_voltage_margin : float
+        Lower limit of each motor's voltage margin 1 - abs(U)/V_lim of its MTPA point, KS over
+        its conditions (-).
     max_tip_mach : float
         Hover lift-rotor tip Mach number (-).
     radius_intersection : float
@@ -638,6 +658,8 @@ class ConstraintLimits:
     min_static_margin: float = _param(gt=-1, lt=1)
     # A torque margin is a fraction of the rated torque: 0-1.
     min_torque_margin: float = _param(ge=0, le=1)
+    # A voltage margin is a fraction of the voltage limit: 0-1.
+    min_voltage_margin: float = _param(ge=0, le=1)
     max_tip_mach: float = _param(gt=0, le=1)
     # A span fraction (<= 1) or a clearance in m (at most 10 m, a rotor radius of the class).
     radius_intersection: float = _param(ge=0, le=10)
