@@ -41,16 +41,17 @@ class LPCGroup(om.Group):
     """
     System-level model of the lift-plus-cruise vehicle (paper Fig. 11).
 
-    ``design_variables`` (an IndepVarComp) holds the design-variable arrays of the vehicle file (the
-    reference: 32 arrays, 176 values: the paper's 161, the 10 roll/yaw lift-rotor speed
-    differentials and the 5 pitch angles of the transition points); ``vehicle`` (VehicleGroup) turns
-    them into geometry and mass properties; each design condition of the vehicle file is a subsystem
-    of its name, built by the class of its kind (:mod:`lpc_mdo.groups.condition_kinds`), which also
-    declares what it reads from the vehicle, which design-variable entries drive it, its motors and
-    its power; ``mission`` and ``battery`` give the final state of charge (each condition's energy
-    weighted by its ``energy_weight``); ``lift_margin``/``pusher_margin`` aggregate the motor torque
-    margins over the conditions by KS (paper eq. 7), ``lift_voltage_margin``/
-    ``pusher_voltage_margin`` the motor voltage margins likewise.
+    ``design_variables`` (an IndepVarComp) holds the design-variable arrays of the vehicle file
+    (the reference: 33 arrays, 181 values: the paper's 161, the 5 motor windings, the 10
+    roll/yaw lift-rotor speed differentials and the 5 pitch angles of the transition points);
+    ``vehicle`` (VehicleGroup) turns them into geometry and mass properties; each design
+    condition of the vehicle file is a subsystem of its name, built by the class of its kind
+    (:mod:`lpc_mdo.groups.condition_kinds`), which also declares what it reads from the vehicle,
+    which design-variable entries drive it, its motors and its power; ``mission`` and
+    ``battery`` give the final state of charge (each condition's energy weighted by its
+    ``energy_weight``); ``lift_margin``/``pusher_margin`` aggregate the motor torque margins
+    over the conditions by KS (paper eq. 7), ``lift_voltage_margin``/ ``pusher_voltage_margin``
+    the motor voltage margins likewise.
 
     The optimization problem is not part of the model: :func:`lpc_mdo.problems.declare_problem`
     declares it (paper Table 6).

@@ -307,10 +307,22 @@ DICT_CASES = [
     ("1000 bays", _set("wing_box", "num_bays", 1000), "wing_box.num_bays", "in [1, 50]"),
     ("systems 1e30", _set("masses", "systems", 1e30), "masses.systems", "in [0, 10000] (kg)"),
     (
-        "power electronics in g",
-        _set("masses", "power_electronics", 40820.0),
-        "masses.power_electronics",
-        "in [0, 10000]",
+        "inverter specific power in W/kg",
+        _set("motor", "inverter_specific_power_kw_per_kg", 19000.0),
+        "motor.inverter_specific_power_kw_per_kg",
+        "in [1, 100]",
+    ),
+    (
+        "cable mass in g/(A m)",
+        _set("motor", "cable_mass_per_ampere_metre", 2.405),
+        "motor.cable_mass_per_ampere_metre",
+        "in [0.0001, 0.01]",
+    ),
+    (
+        "voltage margin in percent",
+        _set("constraints", "min_voltage_margin", 5.0),
+        "constraints.min_voltage_margin",
+        "in [0, 1]",
     ),
     (
         "payload cg 1e30",
@@ -651,7 +663,7 @@ def test_utf8_bom_is_accepted(tmp_path):
 def test_reference_vehicle_loads_unchanged():
     vehicle = load_vehicle()
     assert vehicle == reference_vehicle()
-    assert vehicle.design_variable_count() == 176
+    assert vehicle.design_variable_count() == 181
 
 
 def test_loiter_vehicle_of_the_loiter_test_loads(tmp_path):
@@ -664,7 +676,7 @@ def test_loiter_vehicle_of_the_loiter_test_loads(tmp_path):
     path.write_text(REFERENCE_TEXT + module.LOITER, encoding="utf-8")
     vehicle = load_vehicle(path)
     assert [c.name for c in vehicle.conditions][-1] == "loiter"
-    assert vehicle.design_variable_count() == 176 + 3
+    assert vehicle.design_variable_count() == 181 + 3
 
 
 def test_a_good_polar_file_loads(tmp_path):

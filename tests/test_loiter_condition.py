@@ -68,7 +68,7 @@ def loiter_file(tmp_path_factory):
 def test_loiter_is_a_sixteenth_condition_with_its_own_design_variables(loiter_file):
     vehicle = load_vehicle(loiter_file)
     assert len(vehicle.conditions) == 16 and vehicle.conditions[-1].name == "loiter"
-    assert vehicle.design_variable_count() == 176 + 3
+    assert vehicle.design_variable_count() == 181 + 3
     assert vehicle.design_variables["loiter_pitch"].initial == pytest.approx((np.radians(4.0),))
     assert vehicle.design_variables["loiter_pitch"].initial_from == "conditions[15].pitch_deg"
     assert "loiter" in [c.name for c in vehicle.mission_segments]
@@ -83,8 +83,8 @@ def test_full_problem_declares_the_loiter_trim_and_variables(loiter_file):
     # Steady flight: u_dot, w_dot, q_dot, as climb, cruise and descent (Table 6).
     assert cons["loiter.linear_acceleration"]["size"] == 2
     assert cons["loiter.angular_acceleration"]["size"] == 1
-    assert sum(m["size"] for m in dvs.values()) == 176 + 3
-    assert sum(m["size"] for m in cons.values()) == 86 + 2 + 40 + 3
+    assert sum(m["size"] for m in dvs.values()) == 181 + 3
+    assert sum(m["size"] for m in cons.values()) == 86 + 11 + 40 + 3
     # Subproblems select by kind: the loiter is a steady condition of subproblem 4.
     sub4 = build_problem("subproblem_4", vehicle=loiter_file, optimizer="SLSQP")
     assert "loiter" in sub4.model.condition_names

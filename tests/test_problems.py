@@ -30,15 +30,15 @@ def sizes(prob):
         ("rotor_presizing", (4 + 4 + 16 + 16, 1 + 2 + 4)),
         (
             "subproblem_1",
-            (4 + 20 + 10 + 5 + 5 + 3 + 3 + 8 + 1 + 1 + 45, 1 + 2 + 9 + 25 + 1 + 1 + 40),
+            (4 + 20 + 10 + 5 + 5 + 3 + 3 + 8 + 1 + 1 + 1 + 45, 1 + 2 + 9 + 25 + 1 + 1 + 1 + 40),
         ),
-        ("subproblem_2", (28 + 4, 16 + 8)),
+        ("subproblem_2", (28 + 4 + 4, 16 + 8 + 8)),
         ("subproblem_3", (32 + 2, 2 + 14 + 2)),
         # Subproblem 4: planform in climb, cruise and descent (Table 2: cruise only;
         # see problems.py).
         ("subproblem_4", (5 + 3 * 3, 3 * 3 + 1)),
-        ("full", (161 + 15, 96 + 2 - 10 + 40)),
-        ("baseline", (161 + 15, 96 + 2 - 10 + 40)),
+        ("full", (161 + 20, 96 + 11 - 10 + 40)),
+        ("baseline", (161 + 20, 96 + 11 - 10 + 40)),
     ],
 )
 def test_problem_sizes(name, expected):
@@ -47,7 +47,7 @@ def test_problem_sizes(name, expected):
 
 def test_full_problem_with_lateral_trim_is_table6():
     full = build_problem("full", optimizer="SLSQP", lateral_trim=True)
-    assert sizes(full) == (161 + 15, 96 + 2 + 40)
+    assert sizes(full) == (161 + 20, 96 + 11 + 40)
 
 
 @pytest.mark.requires_ipopt
@@ -112,11 +112,12 @@ def test_subproblem_1_keeps_the_battery_in_its_trust_region():
         build_problem("subproblem_4", vehicle=vehicle, design_variable_bounds={"wing": (0, 1)})
 
 
-def test_motor_voltage_limit_reaches_a_reported_margin_and_an_optional_constraint():
+def test_motor_voltage_limit_reaches_a_reported_margin_and_a_constraint():
     """The vehicle's motor voltage limit sets each motor's voltage margin 1 - abs(U)/V_lim.
 
     Halving the limit turns a margin m into 1 - 2 (1 - m) (closed form, same operating point);
-    the optional constraint kind ``voltage_margin`` declares one row per motor and condition.
+    the constraint kind ``voltage_margin`` declares one row per motor, the KS over its
+    conditions, limited below by ``constraints.min_voltage_margin``.
     """
     import dataclasses
 
@@ -140,8 +141,9 @@ def test_motor_voltage_limit_reaches_a_reported_margin_and_an_optional_constrain
     )
     m_base, cons = margins(base)
     m_half, _ = margins(half)
-    assert set(cons) == {"hover.lift_motor_voltage_margin", "cruise.pusher_motor_voltage_margin"}
+    assert set(cons) == {"lift_motor_voltage_margin", "pusher_motor_voltage_margin"}
     assert sum(meta["size"] for meta in cons.values()) == 8 + 1
+    assert cons["lift_motor_voltage_margin"]["lower"] == base.constraints.min_voltage_margin
     np.testing.assert_allclose(m_half, 1.0 - 2.0 * (1.0 - m_base), rtol=1e-10)
 
 

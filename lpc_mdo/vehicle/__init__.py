@@ -58,6 +58,7 @@ blade_chord_cp           5 x 4    blade chord control points, m (initial: the ro
 blade_twist_cp           5 x 4    blade twist control points, rad (initial: the rotors)
 battery_mass             1        battery mass, kg (initial: ``battery.mass``)
 motor_length             5        motor stack length per group, m
+motor_rated_current      5        rated phase current of the winding per group, A (not in the paper)
 hover_lift_rpm           4        lift-rotor speed per pair in hover, rpm
 transition_lift_rpm      5 x 4    lift-rotor speed per transition point and pair, rpm (the mean
                                   of the pair's two rotors)
@@ -290,7 +291,7 @@ def vehicle_from_dict(data: Mapping) -> Vehicle:
 
 
 def design_variable_count(vehicle: Vehicle | None = None) -> int:
-    """Total number of scalar design variables (176: the paper's 161, 10 differentials, 5 pitch).
+    """Total number of scalar design variables (181: paper 161, 5 windings, 10 + 5 of ours).
 
     Parameters
     ----------
