@@ -143,13 +143,13 @@ VEHICLE_DESIGN_VARIABLES = (
     VehicleDesignVariable(
         "motor_length", "m", "rotor_groups", f"motor stack length; {_ROTOR_ROWS}"
     ),
-    # Not in the paper (it fixes the winding at 120 A), so not in the baseline set S.
+    # Not in the paper (it fixes the winding at 120 A); a sizing variable with an initial value
+    # of the vehicle file, so in the baseline set S like the others.
     VehicleDesignVariable(
         "motor_rated_current",
         "A",
         "rotor_groups",
         f"rated phase current of the motor winding, which sets its turns per phase; {_ROTOR_ROWS}",
-        baseline=False,
     ),
     *(
         VehicleDesignVariable(
