@@ -21,8 +21,8 @@ def test_benchmark_lpc_builds_the_table6_problem():
     prob = _load("benchmark_lpc").build()
     dvs = prob.model.get_design_vars()
     cons = prob.model.get_constraints()
-    assert sum(m["size"] for m in dvs.values()) == 161 + 15
-    assert sum(m["size"] for m in cons.values() if not m["linear"]) == 96 + 2
+    assert sum(m["size"] for m in dvs.values()) == 161 + 20
+    assert sum(m["size"] for m in cons.values() if not m["linear"]) == 96 + 11
     assert sum(m["size"] for m in cons.values() if m["linear"]) == 40
 
 

@@ -234,8 +234,11 @@ def test_motor_designs_are_sized_once_and_read_by_every_condition():
     )
     alone.setup()
     alone.set_val("length", prob.get_val("hover.lift_motor_length", units="m"), units="m")
+    alone.set_val(
+        "rated_current", prob.get_val("motor_rated_current", units="A")[lift_rows], units="A"
+    )
     alone.set_val("rotor_torque", prob.get_val("hover.lift_motors.rotor_torque", units="N*m"))
     alone.set_val("rotor_rpm", prob.get_val("hover.lift_motors.rotor_rpm", units="rpm"))
     alone.run_model()
-    for name in ("input_power", "torque_margin", "voltage_margin"):
+    for name in ("input_power", "torque_margin", "voltage_margin", "current_margin"):
         assert_near_equal(prob.get_val(f"hover.lift_motor_{name}"), alone.get_val(name), 1e-12)
