@@ -16,6 +16,7 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.design_deviation import DesignDeviationComp
+from lpc_mdo.drivers import make_driver
 from lpc_mdo.groups.condition_base import condition_layout
 from lpc_mdo.groups.condition_kinds import condition_class
 from lpc_mdo.groups.lpc import LPCGroup, included_conditions, openmdao_units
@@ -641,8 +642,6 @@ def build_problem(
     om.Problem
         Set up, not run.
     """
-    from lpc_mdo.drivers import make_driver
-
     if name not in PROBLEM_NAMES:
         raise ValueError(f"problem name = {name!r}; allowed: {PROBLEM_NAMES}")
     if vehicle is None or isinstance(vehicle, (str, os.PathLike)):

@@ -29,9 +29,14 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 
 import numpy as np
+import openmdao.api as om
 from scipy.optimize import lsq_linear
 
+from lpc_mdo.drivers.scaling import driver_scaling
+from lpc_mdo.post.tables import Table
+from lpc_mdo.problems import build_problem, copy_design_variables
 from lpc_mdo.sweeps import SWEEP_PARAMETERS, reference_value
+from lpc_mdo.vehicle import load_vehicle
 
 SENSITIVITIES_FORMAT = "lpc_mdo.sensitivities/1"
 
@@ -266,8 +271,6 @@ def optimum_derivatives(prob, inputs=(), bounds=(), active_tol=ACTIVE_TOL):
     -------
     OptimumDerivatives
     """
-    from lpc_mdo.trim import driver_scaling  # the groups, only when a problem is at hand
-
     model = prob.model
     ((obj_name, obj_meta),) = model.get_objectives().items()
     dvs = model.get_design_vars()
@@ -444,8 +447,6 @@ def sensitivity_table(result):
 
     Columns: parameter, value, units, dW0*/dp (kg per unit), % W0* per % of the parameter.
     """
-    from lpc_mdo.post.tables import Table
-
     rows = []
     for r in result.rows:
         note = "" if r.active is None else (" (active)" if r.active else " (inactive)")
@@ -527,11 +528,6 @@ def sensitivities_from_case(case_file, vehicle=None, parameters=None, active_tol
         When the case's objective is not the gross mass, or it was run with other parameter
         values or limits than the vehicle's (:func:`check_same_parameters`).
     """
-    import openmdao.api as om
-
-    from lpc_mdo.problems import build_problem, copy_design_variables
-    from lpc_mdo.vehicle import load_vehicle
-
     if vehicle is None or isinstance(vehicle, (str, Path)):
         vehicle = load_vehicle(vehicle)
     reader = om.CaseReader(str(case_file))

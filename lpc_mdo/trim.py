@@ -26,31 +26,22 @@ stage of the warm-start sequence therefore trims its conditions before its optim
 
 import atexit
 import functools
+import multiprocessing
 import shutil
 import tempfile
 import time
+from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 
 import numpy as np
 import openmdao.api as om
-from openmdao.utils.general_utils import determine_adder_scaler
 from scipy.optimize import least_squares
 
+from lpc_mdo.drivers.scaling import driver_scaling
 from lpc_mdo.groups.condition_base import condition_layout
 from lpc_mdo.groups.lpc import openmdao_units
-
-
-def driver_scaling(meta):
-    """
-    Return (scaler, adder) of a design variable or response from its metadata.
-
-    Scaled = (x + adder) * scaler. The metadata of ``get_design_vars``/``get_constraints`` keep
-    ref/ref0 as declared and leave scaler/adder None when they were declared through refs.
-    """
-    adder, scaler = determine_adder_scaler(
-        meta.get("ref0"), meta.get("ref"), meta.get("adder"), meta.get("scaler")
-    )
-    return (1.0 if scaler is None else scaler), (0.0 if adder is None else adder)
+from lpc_mdo.problems import build_analysis_problem, copy_design_variables
+from lpc_mdo.progress import trim_line
 
 
 @dataclass
@@ -172,8 +163,6 @@ def single_condition_problem(prob, condition, name):
     constraints only, no static margin; every design variable copied from ``prob`` (not run).
     Its OpenMDAO output folder is in the per-process scratch folder.
     """
-    from lpc_mdo.problems import build_analysis_problem, copy_design_variables
-
     vehicle = problem_vehicle(prob)
     single = build_analysis_problem(
         vehicle,
@@ -273,8 +262,6 @@ def trim(
                             f"({result.message})")  # fmt: skip
         per_condition[cond] = result
         if report is not None:
-            from lpc_mdo.progress import trim_line
-
             report(
                 trim_line(
                     label,
@@ -362,9 +349,6 @@ def _trim_in_processes(prob, vehicle, conditions, tol, max_iter, workers):
     outcomes come back in the order of ``conditions``. Uses the fork start method (the workers
     inherit ``prob``); where fork is unavailable, trims serially.
     """
-    import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor
-
     if "fork" not in multiprocessing.get_all_start_methods():
         return [_trim_condition(prob, vehicle, c, tol, max_iter, True) for c in conditions]
     _WORKER_PROBLEM["prob"] = prob

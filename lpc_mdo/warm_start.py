@@ -16,8 +16,17 @@ from dataclasses import dataclass, field
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo import drivers
+from lpc_mdo.groups.lpc import openmdao_units
 from lpc_mdo.post.statistics import process_peak_memory_mb, run_stats_path, write_run_stats
-from lpc_mdo.problems import PRESIZING, SUBPROBLEMS, build_problem, copy_design_variables
+from lpc_mdo.problems import (
+    PRESIZING,
+    SUBPROBLEMS,
+    build_analysis_problem,
+    build_problem,
+    copy_design_variables,
+)
+from lpc_mdo.progress import ProgressLine, optimizer_iterations
 from lpc_mdo.trim import trim
 from lpc_mdo.vehicle import load_vehicle
 
@@ -192,8 +201,6 @@ def run_sequence(
 
 def _write_interrupted_stats(prob, case_file, start, when):
     """Write the run statistics known at a Ctrl-C: the driver's counts so far, success False."""
-    from lpc_mdo.progress import optimizer_iterations
-
     driver = prob.driver
     known = {
         key: getattr(driver.result, key, None)
@@ -250,9 +257,6 @@ def perturbed_start_case(path, fraction, seed, vehicle=None):
         raise ValueError(f"'fraction' = {fraction!r} is out of range: must be in [0, 1)")
     if vehicle is None or isinstance(vehicle, (str, os.PathLike)):
         vehicle = load_vehicle(vehicle)
-    from lpc_mdo.groups.lpc import openmdao_units
-    from lpc_mdo.problems import build_analysis_problem
-
     prob = build_analysis_problem(vehicle, recorder_path=path, name="perturbed_start")
     rng = np.random.default_rng(seed)
     for name, dv in vehicle.design_variables.items():
@@ -295,13 +299,11 @@ def default_optimizer(name):
       (202 iterations, 22.5 s), SLSQP converges in 8 iterations, 1.2 s, to a 193.7 kg box with
       the stress constraint active (0.8 kg of spar web more than without it).
     """
-    from lpc_mdo.drivers import pyoptsparse_optimizers
-
     if name in ("rotor_presizing", "subproblem_1", "subproblem_3"):
         return "SLSQP"
     if name not in FULL_PROBLEMS:
         return "IPOPT"
-    return "SNOPT" if "SNOPT" in pyoptsparse_optimizers() else "SLSQP"
+    return "SNOPT" if "SNOPT" in drivers.pyoptsparse_optimizers() else "SLSQP"
 
 
 def solve_baseline(
@@ -462,8 +464,6 @@ def solve_stage(
         **model_options,
     )
     if progress:
-        from lpc_mdo.progress import ProgressLine
-
         prob.driver.add_recorder(ProgressLine(name))  # recorders start at final_setup
     if case is not None:
         load_design_variables(prob, case, vehicle)
