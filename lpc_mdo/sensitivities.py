@@ -18,9 +18,9 @@ of their bounds, in the optimizer's scaled space. This does not depend on which 
 nor on the multipliers it reports; the relative KKT residual of the fit says how well x* is a
 stationary point (a large residual means the sensitivities are not to be trusted).
 
-The parameters (:data:`SENSITIVITY_PARAMETERS`) are the ones issue 20 asks for: battery energy
-density, the final-SoC limit, the hover noise limit, payload, the static-margin limit and the
-cruise range. The regressions' design gross mass ``masses.design_gross_mass`` is held at the
+The parameters (:data:`SENSITIVITY_PARAMETERS`) are those a designer asks about first: battery
+energy density, the final-SoC limit, the hover noise limit, payload, the static-margin limit and
+the cruise range. The regressions' design gross mass ``masses.design_gross_mass`` is held at the
 vehicle file's value (as in the sweeps).
 """
 
@@ -35,7 +35,7 @@ from scipy.optimize import lsq_linear
 from lpc_mdo.drivers.scaling import driver_scaling
 from lpc_mdo.post.tables import Table
 from lpc_mdo.problems import build_problem, copy_design_variables
-from lpc_mdo.sweeps import SWEEP_PARAMETERS, reference_value
+from lpc_mdo.sweep_parameters import SWEEP_PARAMETERS, reference_value
 from lpc_mdo.vehicle import load_vehicle
 
 SENSITIVITIES_FORMAT = "lpc_mdo.sensitivities/1"
@@ -57,7 +57,7 @@ class SensitivityParameter:
     One parameter whose post-optimal sensitivity is reported.
 
     Its description and units are those of the sweep parameter of the same name
-    (:data:`lpc_mdo.sweeps.SWEEP_PARAMETERS`), which re-optimizes to check it.
+    (:data:`lpc_mdo.sweep_parameters.SWEEP_PARAMETERS`), which re-optimizes to check it.
 
     Attributes
     ----------

@@ -27,6 +27,7 @@ from lpc_mdo.problems import (
     copy_design_variables,
 )
 from lpc_mdo.progress import ProgressLine, optimizer_iterations
+from lpc_mdo.sensitivities import post_optimal_sensitivities, sensitivities_path
 from lpc_mdo.trim import trim
 from lpc_mdo.vehicle import load_vehicle
 
@@ -218,8 +219,6 @@ def _write_interrupted_stats(prob, case_file, start, when):
 
 def _write_sensitivities(prob, vehicle, case_file, log):
     """Write the post-optimal sensitivities of a gross-mass optimum beside its case file."""
-    from lpc_mdo.sensitivities import post_optimal_sensitivities, sensitivities_path
-
     path = sensitivities_path(case_file)
     try:
         post_optimal_sensitivities(prob, vehicle).to_json(path)
