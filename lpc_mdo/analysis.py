@@ -10,7 +10,7 @@ Trim tolerance
 A condition counts as trimmed when its largest driver-scaled trim residual is below
 :data:`TRIM_TOLERANCE` = 1e-3. The force rows are scaled by g abs(n) and the moment rows by
 1 rad/s**2, so this is 0.1 % of the weight (times the load factor) as a force: the criterion the
-project's issues use for the Table 6 trim rows ("trim rows < 0.1 % of W0") and the default limit
+project uses for the Table 6 trim rows ("trim rows < 0.1 % of W0") and the default limit
 of :func:`lpc_mdo.post.trim_residuals.trim_residual_table`. The same tolerance is the status
 band of the trim rows in the constraint status (:func:`trim_tolerances`); the other constraints
 use :data:`lpc_mdo.post.tables.DEFAULT_TOL`.
@@ -20,7 +20,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from lpc_mdo.api.weights import format_mass_properties, mass_properties
+from lpc_mdo.components.aero.drag_buildup import lpc_drag_components
 from lpc_mdo.groups.condition_base import condition_layout
+from lpc_mdo.problems import build_analysis_problem
+from lpc_mdo.trim import problem_vehicle, single_condition_problem
+from lpc_mdo.trim import trim as trim_conditions
 
 __all__ = [
     "TRIM_TOLERANCE",
@@ -106,9 +111,6 @@ def analyze_vehicle(
     Analysis
         The problem, left at the (trimmed) design and run, and the trim's outcome.
     """
-    from lpc_mdo.problems import build_analysis_problem
-    from lpc_mdo.trim import trim as trim_conditions
-
     prob = build_analysis_problem(
         vehicle, recorder_path=recorder_path, static_margin=static_margin, **options
     )
@@ -129,13 +131,11 @@ def analyze_vehicle(
 
 def format_mass_table(analysis):
     """
-    Return the mass, cg and inertia table per mass item of an analysis (issue 17 item 4).
+    Return the mass, cg and inertia table per mass item of an analysis.
 
     See :func:`lpc_mdo.api.weights.mass_properties`; NASA's cg of the LPC for comparison is in
     docs theory/weights 'Mass items'.
     """
-    from lpc_mdo.api.weights import format_mass_properties, mass_properties
-
     return format_mass_properties(mass_properties(analysis.prob, analysis.vehicle))
 
 
@@ -268,8 +268,6 @@ def format_drag_breakdown(prob, vehicle=None):
     (then the lumped drag area and the leakage/protuberance allowance); conditions without a
     ``drag_breakdown`` output (hover) are skipped.
     """
-    from lpc_mdo.components.aero.drag_buildup import lpc_drag_components
-
     vehicle = vehicle or prob.vehicle
     comps, _ = lpc_drag_components(vehicle)
     names = [c.name for c in comps] + ["lumped", "allowance"]
@@ -351,9 +349,6 @@ def lift_to_drag(prob, condition=None, pitch_deg=None):
         ``CL_at_max`` (the sweep's largest ratio, refined by a parabola through its
         neighbours).
     """
-    from lpc_mdo.groups.condition_base import condition_layout
-    from lpc_mdo.trim import problem_vehicle, single_condition_problem
-
     vehicle = problem_vehicle(prob)
     condition = condition or vehicle.mission.cruise_condition
     pitch_deg = np.arange(-2.0, 14.0 + 1e-9, 1.0) if pitch_deg is None else np.asarray(pitch_deg)

@@ -16,6 +16,7 @@ import os
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass
 
+from lpc_mdo.post.figures import plot_sweep
 from lpc_mdo.sweep_parameters import PAPER_SWEEPS, SWEEP_PARAMETERS, reference_value, sweep_vehicle
 from lpc_mdo.vehicle import load_vehicle
 from lpc_mdo.warm_start import solve_stage
@@ -78,7 +79,7 @@ def run_chain(task):
     ) = task
     comm = None
     if use_mpi:  # one problem per rank, not one problem spread over the ranks
-        from mpi4py import MPI
+        from mpi4py import MPI  # optional dependency (lpc-mdo[mpi]), needed only here
 
         comm = MPI.COMM_SELF
     base = load_vehicle(vehicle_file)
@@ -190,7 +191,7 @@ def run_sweep(
 
     comm = None
     if mpi:
-        from mpi4py import MPI
+        from mpi4py import MPI  # optional dependency (lpc-mdo[mpi]), needed only here
 
         comm = MPI.COMM_WORLD
     workers = comm.size if comm is not None else max(1, int(processes))
@@ -243,8 +244,6 @@ def run_sweep(
 
 def plot_sweeps(points, out_dir):
     """Gross mass against each swept parameter (paper Figs. 17-18), converged points only."""
-    from lpc_mdo.post.figures import plot_sweep
-
     paths = []
     for parameter, (description, units, _) in SWEEP_PARAMETERS.items():
         runs = [
