@@ -24,7 +24,7 @@ from pathlib import Path
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo import drivers, warm_start
+from lpc_mdo import drivers, study_plan, warm_start
 from lpc_mdo.analysis import (
     TRIM_TOLERANCE,
     airframe_lift_drag,
@@ -46,7 +46,6 @@ from lpc_mdo.post.tables import (
     constraint_table,
     format_constraint_status,
 )
-from lpc_mdo.problems import PROBLEM_NAMES
 from lpc_mdo.progress import interrupt_message
 from lpc_mdo.sensitivities import sensitivities_from_case, sensitivities_path
 from lpc_mdo.sweep_parameters import PAPER_SWEEPS, SWEEP_PARAMETERS, reference_value, sweep_vehicle
@@ -441,8 +440,8 @@ def _preflight(args):
         check_output_file("--n2", args.n2)
     if command in ("optimize", "sweep"):
         if args.optimizer is None:  # a given --optimizer was checked by its type
-            names = warm_start.DEFAULT_SEQUENCE if args.problem == "sequence" else [args.problem]
-            needed = {warm_start.default_optimizer(name) for name in names}
+            names = study_plan.SEQUENCE if args.problem == "sequence" else [args.problem]
+            needed = {study_plan.default_optimizer(name) for name in names}
             for name in sorted(needed):
                 missing = optimizer_problem(name)
                 if missing:
@@ -714,7 +713,9 @@ def _silent(message):
 def _optimize(args):
     out = Path(args.output_dir)
     out.mkdir(parents=True, exist_ok=True)
-    settings = {"max_iter": args.max_iter}
+    settings = {}
+    if args.max_iter is not None:
+        settings["max_iter"] = args.max_iter
     if args.tol is not None:
         settings["tol"] = args.tol
     if args.quiet:
@@ -753,7 +754,7 @@ def _optimize(args):
                 str(case_file),
                 start_case=args.start_case,
                 optimizer=args.optimizer,
-                rescale=(args.problem in warm_start.FULL_PROBLEMS and args.start_case is not None),
+                rescale=study_plan.stage(args.problem).rescales and args.start_case is not None,
                 **common,
             )
     except KeyboardInterrupt:
@@ -834,6 +835,47 @@ def _add_debug(parser, default):
     )
 
 
+def _problem_help():
+    """Help of ``optimize --problem``: every stage of the stage table and the sequence."""
+    stages = "; ".join(f"{s.name}: {s.summary}" for s in study_plan.STAGES)
+    return (
+        f"the stage to solve (lpc_mdo.study_plan): {stages}; or sequence (default): "
+        f"{', '.join(study_plan.SEQUENCE)} in turn, each from the previous one's final case"
+    )
+
+
+def _optimizer_help():
+    """Help of ``--optimizer``: the default optimizer of each stage, from the stage table."""
+    stages = {}
+    for s in study_plan.STAGES:
+        stages.setdefault(s.optimizer, []).append(s.name)
+    words = {study_plan.SQP: "SQP (SNOPT if pyoptsparse has it, else SLSQP)"}
+    parts = [f"{words.get(name, name)} for {', '.join(names)}" for name, names in stages.items()]
+    return "default: the stage's, " + "; ".join(parts)
+
+
+def _max_iter_help():
+    """Help of ``optimize --max-iter``: the stages' iteration limits, from the stage table."""
+    limits = {
+        options.max_iter
+        for s in study_plan.STAGES
+        for table in (s.options, s.sequence_options or {})
+        for options in table.values()
+        if options.max_iter is not None
+    }
+    return f"iteration limit (default: the stage's, {', '.join(map(str, sorted(limits)))})"
+
+
+def _tol_help():
+    """Help of ``optimize --tol``: the full problem's SLSQP tolerance, from the stage table."""
+    tol = f"{study_plan.stage('full').optimizer_options('SLSQP').tol:.0e}".replace("e-0", "e-")
+    return (
+        f"optimizer tolerance (default: the stage's; SLSQP {tol} on the full problem). "
+        "E.g. 1e-6 with --max-iter 150 from a full.sql polishes an optimum before reading its "
+        "post-optimal sensitivities"
+    )
+
+
 def build_parser():
     """
     Return the argument parser of the ``lpc-mdo`` command.
@@ -895,28 +937,24 @@ def build_parser():
     optimize.add_argument(
         "--problem",
         default="sequence",
-        choices=(*PROBLEM_NAMES, "sequence"),
-        help="which problem (default: the whole warm-start sequence)",
+        choices=(*study_plan.STAGE_NAMES, "sequence"),
+        help=_problem_help(),
     )
     optimize.add_argument(
         "--optimizer",
         type=_optimizer("--optimizer"),
         default=None,
         choices=drivers.KNOWN_OPTIMIZERS,
-        help="default: SLSQP for the rotor presizing and subproblems 1 and 3, IPOPT for "
-        "subproblems 2 and 4, SQP (SNOPT if pyoptsparse has it, else SLSQP) for full and "
-        "baseline",
+        help=_optimizer_help(),
     )
     optimize.add_argument(
-        "--max-iter", type=positive["--max-iter"], default=200, help="iteration limit"
+        "--max-iter", type=positive["--max-iter"], default=None, help=_max_iter_help()
     )
     optimize.add_argument(
         "--tol",
         type=_finite_float("--tol", lower=0.0, lower_open=True),
         default=None,
-        help="optimizer tolerance (default: the problem's; SLSQP 3e-4 on the full problem). "
-        "E.g. 1e-6 with --max-iter 150 from a full.sql polishes an optimum before reading its "
-        "post-optimal sensitivities",
+        help=_tol_help(),
     )
     optimize.add_argument("--vehicle", type=vehicle_type, default=None, help="vehicle TOML file")
     optimize.add_argument(
@@ -979,7 +1017,7 @@ def build_parser():
     sweep.add_argument(
         "--problem",
         default="full",
-        choices=PROBLEM_NAMES,
+        choices=study_plan.STAGE_NAMES,
         help="problem each point solves (default: full)",
     )
     sweep.add_argument(

@@ -43,7 +43,7 @@ SENSITIVITIES_FORMAT = "lpc_mdo.sensitivities/1"
 #: A constraint or design variable is a candidate for the active set when its distance to a
 #: bound is at most this, in the optimizer's scaled units (the sign bounds of the fit give a
 #: candidate that is not active a multiplier of about zero). The full problem's SLSQP accepts
-#: constraints within 3e-4 (lpc_mdo.problems.SLSQP_SETTINGS); at an optimum stopped by its
+#: constraints within 3e-4 (its settings in lpc_mdo.study_plan); at an optimum stopped by its
 #: iteration limit the final-SoC constraint was 2e-4 off its bound, and with 1e-4 the fit left it
 #: out (KKT residual 0.48 against 0.020 with 1e-3; measured 2026-12-04).
 ACTIVE_TOL = 1e-3

@@ -170,7 +170,7 @@ def run_sweep(
     driver_settings : dict or None
         make_driver settings (default: 200 iterations).
     optimizer : str or None
-        None: :func:`lpc_mdo.warm_start.default_optimizer` of the problem (as ``lpc-mdo
+        None: :func:`lpc_mdo.study_plan.default_optimizer` of the problem (as ``lpc-mdo
         optimize``: SNOPT if pyoptsparse has it, else SLSQP, for the full problem).
     problem : str
         The problem each point solves (default: the full problem, as in the paper).

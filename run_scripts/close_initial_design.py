@@ -32,7 +32,6 @@ import numpy as np  # noqa: E402
 from lpc_mdo.groups.vehicle import closed_design_gross_mass  # noqa: E402
 from lpc_mdo.problems import build_problem  # noqa: E402
 from lpc_mdo.vehicle import read_vehicle_file, vehicle_from_dict  # noqa: E402
-from lpc_mdo.warm_start import default_optimizer  # noqa: E402
 
 THICKNESSES = (
     "front_spar_thickness",
@@ -47,9 +46,7 @@ REFERENCE_FILE = os.path.join(
 
 def size_gauges(vehicle=None):
     """Return the sized thicknesses (m, dict of 8-vectors), the box mass (kg) and the result."""
-    prob = build_problem(
-        "subproblem_3", vehicle=vehicle, optimizer=default_optimizer("subproblem_3")
-    )
+    prob = build_problem("subproblem_3", vehicle=vehicle)  # with the stage's own optimizer
     start = time.perf_counter()
     result = prob.run_driver()
     elapsed = time.perf_counter() - start
