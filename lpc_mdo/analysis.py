@@ -194,7 +194,7 @@ def format_trim_variables(prob, conditions=None):
     return "\n".join(lines)
 
 
-def static_margin_budget(prob, condition="cruise", wing_panels=None):
+def static_margin_budget(prob, condition=None, wing_panels=None):
     """
     Contributions to the static margin of a condition solved with the stability option.
 
@@ -210,10 +210,23 @@ def static_margin_budget(prob, condition="cruise", wing_panels=None):
     ``booms`` (the Munk-Multhopp couples,
     :mod:`lpc_mdo.components.dynamics.body_pitching_moment`); the airfoils' cm0, a couple
     independent of alpha, moves the trim but not the neutral point.
-    Returns a dict part ->
-    dSM and ``total`` (equal to the model's ``static_margin``).
+
+    Parameters
+    ----------
+    prob : om.Problem
+        A run LPC problem that holds the condition.
+    condition : str or None
+        The condition; None: the mission's design cruise condition
+        (``mission.cruise_condition`` of the problem's vehicle).
+    wing_panels : int or None
+        Spanwise panels of the wing in the lattice (None: from ``wing_sectional_cl``).
+
+    Returns
+    -------
+    dict
+        Part -> dSM, and ``total`` (equal to the model's ``static_margin``).
     """
-    c = condition
+    c = condition or problem_vehicle(prob).mission.cruise_condition
     delta = prob.model._get_subsystem(f"{c}.stability_derivatives").options["delta"]
     x_cg = prob.get_val(f"{c}.static_margin.cg_x", units="m")[0]
     mac = prob.get_val(f"{c}.static_margin.mean_aerodynamic_chord", units="m")[0]
@@ -252,8 +265,22 @@ def static_margin_budget(prob, condition="cruise", wing_panels=None):
     return budget
 
 
-def format_static_margin_budget(prob, condition="cruise"):
-    """One line per part of :func:`static_margin_budget`, for ``lpc-mdo analyze``."""
+def format_static_margin_budget(prob, condition=None):
+    """
+    Return one line per part of :func:`static_margin_budget`, for ``lpc-mdo analyze``.
+
+    Parameters
+    ----------
+    prob : om.Problem
+        A run LPC problem that holds the condition.
+    condition : str or None
+        The condition; None: the mission's design cruise condition.
+
+    Returns
+    -------
+    str
+    """
+    condition = condition or problem_vehicle(prob).mission.cruise_condition
     budget = static_margin_budget(prob, condition)
     model = prob.get_val(f"{condition}.static_margin")[0]
     lines = [f"    {name:<16s} {value:+.4f}" for name, value in budget.items()]

@@ -141,8 +141,8 @@ _INHERITED_OPTIONS = ("rotor_polar", "wing_zero_lift_angle", "ks_rho", "structur
 
 
 def problem_vehicle(prob):
-    """Return the Vehicle of a set-up LPC problem (``prob.vehicle``, else the model option)."""
-    return prob.vehicle if hasattr(prob, "vehicle") else prob.model.options["vehicle"]
+    """Return the Vehicle of a set-up LPC problem (``prob.vehicle``, else the model's)."""
+    return prob.vehicle if hasattr(prob, "vehicle") else prob.model.vehicle_spec
 
 
 def single_condition_problem(prob, condition, name):
