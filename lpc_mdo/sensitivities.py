@@ -18,9 +18,9 @@ of their bounds, in the optimizer's scaled space. This does not depend on which 
 nor on the multipliers it reports; the relative KKT residual of the fit says how well x* is a
 stationary point (a large residual means the sensitivities are not to be trusted).
 
-The parameters (:data:`SENSITIVITY_PARAMETERS`) are the ones issue 20 asks for: battery energy
-density, the final-SoC limit, the hover noise limit, payload, the static-margin limit and the
-cruise range. The regressions' design gross mass ``masses.design_gross_mass`` is held at the
+The parameters (:data:`SENSITIVITY_PARAMETERS`) are those a designer asks about first: battery
+energy density, the final-SoC limit, the hover noise limit, payload, the static-margin limit and
+the cruise range. The regressions' design gross mass ``masses.design_gross_mass`` is held at the
 vehicle file's value (as in the sweeps).
 """
 
@@ -29,16 +29,21 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 
 import numpy as np
+import openmdao.api as om
 from scipy.optimize import lsq_linear
 
-from lpc_mdo.sweeps import SWEEP_PARAMETERS, reference_value
+from lpc_mdo.drivers.scaling import driver_scaling
+from lpc_mdo.post.tables import Table
+from lpc_mdo.problems import build_problem, copy_design_variables
+from lpc_mdo.sweep_parameters import SWEEP_PARAMETERS, reference_value
+from lpc_mdo.vehicle import load_vehicle
 
 SENSITIVITIES_FORMAT = "lpc_mdo.sensitivities/1"
 
 #: A constraint or design variable is a candidate for the active set when its distance to a
 #: bound is at most this, in the optimizer's scaled units (the sign bounds of the fit give a
 #: candidate that is not active a multiplier of about zero). The full problem's SLSQP accepts
-#: constraints within 3e-4 (lpc_mdo.problems.SLSQP_SETTINGS); at an optimum stopped by its
+#: constraints within 3e-4 (its settings in lpc_mdo.study_plan); at an optimum stopped by its
 #: iteration limit the final-SoC constraint was 2e-4 off its bound, and with 1e-4 the fit left it
 #: out (KKT residual 0.48 against 0.020 with 1e-3; measured 2026-12-04).
 ACTIVE_TOL = 1e-3
@@ -52,7 +57,7 @@ class SensitivityParameter:
     One parameter whose post-optimal sensitivity is reported.
 
     Its description and units are those of the sweep parameter of the same name
-    (:data:`lpc_mdo.sweeps.SWEEP_PARAMETERS`), which re-optimizes to check it.
+    (:data:`lpc_mdo.sweep_parameters.SWEEP_PARAMETERS`), which re-optimizes to check it.
 
     Attributes
     ----------
@@ -266,8 +271,6 @@ def optimum_derivatives(prob, inputs=(), bounds=(), active_tol=ACTIVE_TOL):
     -------
     OptimumDerivatives
     """
-    from lpc_mdo.trim import driver_scaling  # the groups, only when a problem is at hand
-
     model = prob.model
     ((obj_name, obj_meta),) = model.get_objectives().items()
     dvs = model.get_design_vars()
@@ -444,8 +447,6 @@ def sensitivity_table(result):
 
     Columns: parameter, value, units, dW0*/dp (kg per unit), % W0* per % of the parameter.
     """
-    from lpc_mdo.post.tables import Table
-
     rows = []
     for r in result.rows:
         note = "" if r.active is None else (" (active)" if r.active else " (inactive)")
@@ -527,11 +528,6 @@ def sensitivities_from_case(case_file, vehicle=None, parameters=None, active_tol
         When the case's objective is not the gross mass, or it was run with other parameter
         values or limits than the vehicle's (:func:`check_same_parameters`).
     """
-    import openmdao.api as om
-
-    from lpc_mdo.problems import build_problem, copy_design_variables
-    from lpc_mdo.vehicle import load_vehicle
-
     if vehicle is None or isinstance(vehicle, (str, Path)):
         vehicle = load_vehicle(vehicle)
     reader = om.CaseReader(str(case_file))

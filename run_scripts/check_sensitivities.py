@@ -34,7 +34,7 @@ os.environ.setdefault("OMP_NUM_THREADS", "1")
 os.environ.setdefault("OPENMDAO_REPORTS", "0")
 
 from lpc_mdo.sensitivities import SENSITIVITY_PARAMETERS, sensitivities_from_case  # noqa: E402
-from lpc_mdo.sweeps import reference_value, sweep_vehicle  # noqa: E402
+from lpc_mdo.sweep_parameters import reference_value, sweep_vehicle  # noqa: E402
 from lpc_mdo.vehicle import load_vehicle  # noqa: E402
 
 #: Default steps h (units of the parameter): large enough that W0* moves by tens of kg, so the

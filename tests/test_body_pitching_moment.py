@@ -232,6 +232,28 @@ def test_cruise_budget_sums_to_the_static_margin_and_fuselage_destabilizes():
     assert budget["fuselage"] < budget["booms"] < 0.0
 
 
+def test_budget_defaults_to_the_vehicles_cruise_condition():
+    # A vehicle file whose design cruise condition has another name (mission.cruise_condition):
+    # the analysis functions find it without being told.
+    from lpc_mdo.analysis import format_static_margin_budget, static_margin_budget
+    from lpc_mdo.problems import build_analysis_problem
+    from lpc_mdo.vehicle import read_vehicle_file, vehicle_from_dict
+
+    data = read_vehicle_file()
+    data["mission"]["cruise_condition"] = "design_cruise"
+    for condition in data["conditions"]:
+        if condition["name"] == "cruise":
+            condition["name"] = "design_cruise"
+    vehicle = vehicle_from_dict(data)
+    prob = build_analysis_problem(vehicle, conditions=["design_cruise"], design_problem=False)
+    prob.run_model()
+    budget = static_margin_budget(prob)
+    assert budget == static_margin_budget(prob, "design_cruise")
+    assert_near_equal(budget["total"], prob.get_val("design_cruise.static_margin")[0], 1e-9)
+    assert format_static_margin_budget(prob) == format_static_margin_budget(prob, "design_cruise")
+    prob.cleanup()
+
+
 def test_tail_efficiency_scales_the_tail_loads():
     from lpc_mdo.components.aero.tail_efficiency import TailEfficiencyComp
 

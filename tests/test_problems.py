@@ -3,7 +3,8 @@
 import numpy as np
 import pytest
 
-from lpc_mdo.problems import PROBLEM_NAMES, build_problem
+from lpc_mdo.problems import build_problem
+from lpc_mdo.study_plan import STAGE_NAMES
 
 
 def sizes(prob):
@@ -80,7 +81,7 @@ def test_subproblem_2_trims_every_oei_case():
 def test_unknown_problem_name():
     with pytest.raises(ValueError, match="allowed: "):
         build_problem("subproblem_9")
-    assert PROBLEM_NAMES[-2:] == ("full", "baseline")
+    assert STAGE_NAMES[-2:] == ("full", "baseline")
 
 
 def test_baseline_objective_is_one_at_the_initial_design():

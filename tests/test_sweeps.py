@@ -13,13 +13,8 @@ from pathlib import Path
 
 import pytest
 
-from lpc_mdo.sweeps import (
-    SWEEP_PARAMETERS,
-    reference_value,
-    run_sweep,
-    sweep_chains,
-    sweep_vehicle,
-)
+from lpc_mdo.sweep_parameters import SWEEP_PARAMETERS, reference_value, sweep_vehicle
+from lpc_mdo.sweeps import run_sweep, sweep_chains
 from lpc_mdo.vehicle import reference_vehicle
 from lpc_mdo.warm_start import solve_stage
 
