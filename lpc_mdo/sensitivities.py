@@ -47,7 +47,7 @@ SENSITIVITIES_FORMAT = "lpc_mdo.sensitivities/1"
 #: iteration limit the final-SoC constraint was 2e-4 off its bound, and with 1e-4 the fit left it
 #: out (KKT residual 0.48 against 0.020 with 1e-3; measured 2026-12-04).
 ACTIVE_TOL = 1e-3
-#: Above this relative KKT residual the report says the optimum should be polished first.
+#: Above this relative KKT residual the report shows no sensitivities, only how to polish first.
 LOOSE_KKT_RESIDUAL = 0.025
 
 
@@ -441,12 +441,34 @@ def _input_element(prob, vehicle, parameter):
     return 0, parameter.model_per_unit, float(value[0] / parameter.model_per_unit)
 
 
-def sensitivity_table(result):
+def polish_command(case_file):
+    """Return the command that polishes the optimum recorded in ``case_file`` (a str)."""
+    return f"lpc-mdo optimize --problem full --start-case {case_file} --tol 1e-6 --max-iter 150"
+
+
+def sensitivity_table(result, case_file="<its case file>"):
     """
     Return the sensitivities as a :class:`lpc_mdo.post.tables.Table`.
 
     Columns: parameter, value, units, dW0*/dp (kg per unit), % W0* per % of the parameter.
+    Above a relative KKT residual of :data:`LOOSE_KKT_RESIDUAL` the table has no rows: the
+    numbers would not hold (docs theory/optimization 'Post-optimal sensitivities'), and its note
+    gives the command that polishes the optimum of ``case_file`` first.
     """
+    header = ["parameter", "value", "units", "dW0*/dp (kg per unit)", "% W0* per %"]
+    if result.kkt_residual > LOOSE_KKT_RESIDUAL:
+        return Table(
+            header,
+            [],
+            title="Post-optimal sensitivities",
+            notes=[
+                f"Not shown: the optimum is loosely converged (relative KKT residual "
+                f"{result.kkt_residual:.1e}, above {LOOSE_KKT_RESIDUAL}), where post-optimal "
+                "sensitivities are unreliable (at 3.6e-02 they were 25 % off re-optimized "
+                "neighbours, at 2.0e-02 within 5 %). Polish the optimum, then report its "
+                f"case file: {polish_command(case_file)}"
+            ],
+        )
     rows = []
     for r in result.rows:
         note = "" if r.active is None else (" (active)" if r.active else " (inactive)")
@@ -456,19 +478,7 @@ def sensitivity_table(result):
         f"(relative KKT residual {result.kkt_residual:.1e}); first order, design gross "
         "mass of the regressions held."
     ]
-    if result.kkt_residual > LOOSE_KKT_RESIDUAL:
-        notes.append(
-            "The optimum is loosely converged: at a KKT residual of 3.6e-02 the sensitivities "
-            "were 25 % off the re-optimized differences, at 2.0e-02 within 5 % (measured). "
-            "Polish it first: lpc-mdo optimize --problem full --start-case <this case> "
-            "--tol 1e-6 --max-iter 150."
-        )
-    return Table(
-        ["parameter", "value", "units", "dW0*/dp (kg per unit)", "% W0* per %"],
-        rows,
-        title="Post-optimal sensitivities",
-        notes=notes,
-    )
+    return Table(header, rows, title="Post-optimal sensitivities", notes=notes)
 
 
 def check_same_parameters(recorded, built, case_file):

@@ -536,7 +536,7 @@ def _run_section(index, label, cr, spec):
             "docs theory/optimization 'Post-optimal sensitivities'):",
             "",
         )
-        index.table(sensitivity_table(found), f"sensitivities_{slug}")
+        index.table(sensitivity_table(found, cr._filename), f"sensitivities_{slug}")
 
     def convergence():
         path = figures.plot_convergence(
