@@ -156,6 +156,7 @@ def add_lift_rotors(group, vehicle, rotors, speed_groups, num_groups, edgewise, 
             ("figure_of_merit", "lift_figure_of_merit"),
             ("total_force", "lift_force"),
             ("total_moment", "lift_moment"),
+            *([("edgewise_advance_ratio", "lift_advance_ratio")] if edgewise else []),
         ],
     )
     add_motors(group, vehicle, "lift", na, "lift_rotor_rpm")

@@ -38,6 +38,7 @@ CONSTRAINT_KINDS = (
     "radius_intersection",
     "torque_margin",
     "rotor_speed",
+    "advance_ratio",
 )
 #: Finer kinds a subproblem may name instead of 'torque_margin' (which means both).
 TORQUE_MARGIN_KINDS = ("lift_torque_margin", "pusher_torque_margin")

@@ -402,7 +402,14 @@ STAGES = (
             "blade_chord_cp",
             "blade_twist_cp",
         ),
-        constraint_kinds=("trim", "noise", "soc", "pusher_torque_margin", "rotor_speed"),
+        constraint_kinds=(
+            "trim",
+            "noise",
+            "soc",
+            "pusher_torque_margin",
+            "rotor_speed",
+            "advance_ratio",
+        ),
         trust_region={"battery_mass": 0.2},  # the reference code's bounds
         optimizer="SLSQP",
         options=OWN_OPTIONS,

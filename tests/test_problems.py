@@ -27,19 +27,19 @@ def sizes(prob):
         # Subproblem 1
         # constrains the pusher motor margin only (it sizes the pusher motor; the lift motors are
         # subproblem 2's). With the differentials come the 40 linear bounds on each transition
-        # lift rotor's own speed (ours).
+        # lift rotor's own speed and the 40 limits on their edgewise advance ratios (ours).
         ("rotor_presizing", (4 + 4 + 16 + 16, 1 + 2 + 4)),
         (
             "subproblem_1",
-            (4 + 20 + 10 + 5 + 5 + 3 + 3 + 8 + 1 + 1 + 45, 1 + 2 + 9 + 25 + 1 + 1 + 40),
+            (4 + 20 + 10 + 5 + 5 + 3 + 3 + 8 + 1 + 1 + 45, 1 + 2 + 9 + 25 + 1 + 1 + 40 + 40),
         ),
         ("subproblem_2", (28 + 4, 16 + 8)),
         ("subproblem_3", (32 + 2, 2 + 14 + 2)),
         # Subproblem 4: planform in climb, cruise and descent (Table 2: cruise only;
         # see problems.py).
         ("subproblem_4", (5 + 3 * 3, 3 * 3 + 1)),
-        ("full", (161 + 15, 96 + 2 - 10 + 40)),
-        ("baseline", (161 + 15, 96 + 2 - 10 + 40)),
+        ("full", (161 + 15, 96 + 2 - 10 + 40 + 40)),
+        ("baseline", (161 + 15, 96 + 2 - 10 + 40 + 40)),
     ],
 )
 def test_problem_sizes(name, expected):
@@ -48,7 +48,7 @@ def test_problem_sizes(name, expected):
 
 def test_full_problem_with_lateral_trim_is_table6():
     full = build_problem("full", optimizer="SLSQP", lateral_trim=True)
-    assert sizes(full) == (161 + 15, 96 + 2 + 40)
+    assert sizes(full) == (161 + 15, 96 + 2 + 40 + 40)
 
 
 @pytest.mark.requires_ipopt

@@ -359,7 +359,11 @@ class TransitionKind(ConditionKind):
     @classmethod
     def constraints(cls, vehicle, condition, bounds):
         """
-        Each lift rotor's own speed within the bounds of its pair's mean speed (linear).
+        Each lift rotor's speed within its pair's bounds (linear) and its advance ratio limited.
+
+        The advance ratio mu = V_inplane / (Omega R) of every lift rotor stays within
+        ``constraints.max_lift_rotor_advance_ratio``, the range of the inflow model: no rotor
+        outside it trims the vehicle (docs theory/rotors 'Advance-ratio limit').
 
         With the roll/yaw differentials a rotor turns at its pair's mean speed +- half of each
         differential, so the design-variable bounds alone let it reach 0 rpm (100 rpm mean -
@@ -383,6 +387,11 @@ class TransitionKind(ConditionKind):
                 "rotor_speed",
                 "lift_rotor_rpm",
                 {"lower": lower, "upper": upper, "ref": ref, "units": "rpm", "linear": True},
+            ),
+            ConditionConstraint(
+                "advance_ratio",
+                "lift_advance_ratio",
+                {"upper": vehicle.constraints.max_lift_rotor_advance_ratio, "ref": 0.1},
             ),
         )
 

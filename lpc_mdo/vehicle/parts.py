@@ -619,6 +619,9 @@ class ConstraintLimits:
         Motor torque safety margin (-).
     max_tip_mach : float
         Hover lift-rotor tip Mach number (-).
+    max_lift_rotor_advance_ratio : float
+        Edgewise advance ratio mu = V_inplane / (Omega R) of every lift rotor in transition
+        (-): the range of the inflow model (docs theory/rotors 'Advance-ratio limit').
     radius_intersection : float
         Target of the 2 radius-intersection equalities: a span fraction (-) or a clearance (m).
     radius_intersection_definition : str
@@ -639,6 +642,8 @@ class ConstraintLimits:
     # A torque margin is a fraction of the rated torque: 0-1.
     min_torque_margin: float = _param(ge=0, le=1)
     max_tip_mach: float = _param(gt=0, le=1)
+    # Edgewise rotor data and inflow models reach mu ~ 1 at most (slowed-rotor tests).
+    max_lift_rotor_advance_ratio: float = _param(gt=0, le=1)
     # A span fraction (<= 1) or a clearance in m (at most 10 m, a rotor radius of the class).
     radius_intersection: float = _param(ge=0, le=10)
     radius_intersection_definition: str = _param(choices=("span_fraction", "clearance"))
