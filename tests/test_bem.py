@@ -4,6 +4,7 @@ import numpy as np
 import openmdao.api as om
 import pytest
 from openmdao.utils.assert_utils import assert_check_partials, assert_check_totals
+from rotor_cases import BLADES, HUB, NRAD, RADIUS, bem_problem, stations
 from scipy.optimize import brentq
 
 from lpc_mdo.components.aero.polar import LinearQuadraticPolar, Polar, PolarValues
@@ -48,50 +49,6 @@ class NaNPolar(LinearQuadraticPolar):
         return PolarValues(np.full(np.shape(v.cl), np.nan), *list(v.__dict__.values())[1:])
 
 
-# Two rotors of different geometry, blade count and rpm; node 0 near hover, node 1 in climb.
-RADIUS = np.array([1.524, 1.2])
-HUB = np.array([0.2, 0.15])
-BLADES = [2, 3]
-NRAD = 6
-
-
-def _stations(num_radial=NRAD):
-    eta = (np.arange(num_radial) + 0.5) / num_radial
-    rh = HUB * RADIUS
-    r = rh[:, None] + (RADIUS - rh)[:, None] * eta
-    width = np.repeat(((RADIUS - rh) / num_radial)[:, None], num_radial, axis=1)
-    return r, width
-
-
-def _bem_problem(polar=None, num_radial=NRAD, performance=True, mode="auto", **options):
-    opts = dict(num_rotors=2, num_nodes=2, num_radial=num_radial, num_blades=BLADES, **options)
-    if polar is not None:
-        opts["polar"] = polar
-    prob = om.Problem()
-    prob.model.add_subsystem("inflow", BEMInflowComp(**opts), promotes=["*"])
-    prob.model.add_subsystem("loads", BEMLoadsComp(**opts), promotes=["*"])
-    if performance:
-        prob.model.add_subsystem(
-            "performance", RotorPerformanceComp(num_rotors=2, num_nodes=2), promotes=["*"]
-        )
-    prob.setup(mode=mode, force_alloc_complex=True)
-    r, width = _stations(num_radial)
-    eta = np.linspace(0.0, 1.0, num_radial)
-    prob.set_val("radius", RADIUS)
-    prob.set_val("hub_radius", HUB * RADIUS)
-    prob.set_val("station_radius", r)
-    prob.set_val("station_width", width)
-    prob.set_val("chord", np.stack([0.3 - 0.2 * eta, 0.2 - 0.12 * eta]))
-    prob.set_val("twist", np.radians(np.stack([30.0 - 20.0 * eta, 45.0 - 25.0 * eta])))
-    prob.set_val("rpm", [[1200.0, 1300.0], [1500.0, 1800.0]])
-    prob.set_val("axial_velocity", [[0.0, 10.0], [2.0, 40.0]])
-    prob.set_val("density", [1.2, 1.1])
-    prob.set_val("speed_of_sound", [340.0, 336.0])
-    prob.set_val("dynamic_viscosity", [1.8e-5, 1.7e-5])
-    prob.run_model()
-    return prob
-
-
 @pytest.mark.parametrize(
     "options",
     [
@@ -101,7 +58,7 @@ def _bem_problem(polar=None, num_radial=NRAD, performance=True, mode="auto", **o
     ],
 )
 def test_partials(options):
-    prob = _bem_problem(polar=ReMachPolar(), **options)
+    prob = bem_problem(polar=ReMachPolar(), **options)
     data = prob.check_partials(method="cs", compact_print=True, out_stream=None)
     assert_check_partials(data, atol=1e-8, rtol=1e-8)
 
@@ -109,7 +66,7 @@ def test_partials(options):
 def test_totals_through_solve_linear():
     # The inflow angle is inverted by BEMInflowComp.solve_linear (no DirectSolver).
     for mode in ("fwd", "rev"):
-        prob = _bem_problem(performance=False, mode=mode)
+        prob = bem_problem(performance=False, mode=mode)
         data = prob.check_totals(
             of=["thrust", "torque", "thrust_per_span"],
             wrt=["rpm", "axial_velocity", "chord", "twist", "radius", "station_radius"],
@@ -134,9 +91,9 @@ def test_against_independent_ning_solution():
     # then the momentum-form loads of docs theory/rotors 'Loads and coefficients'
     # (dT = 4 pi r rho u_x (u_x - V_x) F, dQ = 2 pi r^2 rho u_x u_theta F). Tolerances:
     # 1e-10 rad on phi, 1e-9 relative on loads.
-    prob = _bem_problem()
+    prob = bem_problem()
     polar = LinearQuadraticPolar()
-    r, _ = _stations()
+    r, _ = stations()
     chord, twist = prob.get_val("chord"), prob.get_val("twist")
     rpm, vx = prob.get_val("rpm"), prob.get_val("axial_velocity")
     rho = prob.get_val("density")
@@ -256,7 +213,7 @@ def test_reverse_and_windmilling_stations_converge():
 
 
 def test_bad_inputs_raise():
-    prob = _bem_problem(performance=False)
+    prob = bem_problem(performance=False)
     prob.set_val("rpm", [[0.0, 1300.0], [1500.0, 1800.0]])
     with pytest.raises(
         om.AnalysisError,
@@ -264,8 +221,8 @@ def test_bad_inputs_raise():
         r"must be > 0 \(rpm\)",
     ):
         prob.run_model()
-    prob = _bem_problem(performance=False)
-    r, _ = _stations()
+    prob = bem_problem(performance=False)
+    r, _ = stations()
     r[1, -1] = 1.3
     prob.set_val("station_radius", r)
     with pytest.raises(
@@ -275,7 +232,7 @@ def test_bad_inputs_raise():
     ):
         prob.run_model()
     with pytest.raises(om.AnalysisError, match="BEM inflow-angle solve failed .*no sign change"):
-        _bem_problem(polar=NaNPolar(), performance=False)
+        bem_problem(polar=NaNPolar(), performance=False)
     prob = om.Problem()
     prob.model.add_subsystem("i", BEMInflowComp(num_rotors=2, num_blades=[2, 0]))
     with pytest.raises(ValueError, match=r"'num_blades\[1\]' = 0 is out of range: must be >= 1"):

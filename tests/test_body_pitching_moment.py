@@ -193,6 +193,7 @@ def test_reference_booms():
     assert_near_equal(booms["boom_strip_factor"].sum(), 4 * 0.3048**2 * 4.30682, 1e-5)
 
 
+@pytest.mark.integration
 def test_cruise_budget_sums_to_the_static_margin_and_fuselage_destabilizes():
     from lpc_mdo.analysis import static_margin_budget
     from lpc_mdo.components.aero.polar import LinearQuadraticPolar
@@ -232,6 +233,7 @@ def test_cruise_budget_sums_to_the_static_margin_and_fuselage_destabilizes():
     assert budget["fuselage"] < budget["booms"] < 0.0
 
 
+@pytest.mark.integration
 def test_budget_defaults_to_the_vehicles_cruise_condition():
     # A vehicle file whose design cruise condition has another name (mission.cruise_condition):
     # the analysis functions find it without being told.
@@ -333,6 +335,7 @@ def _quarter_mac_x(surface):
     )
 
 
+@pytest.mark.integration
 def test_reference_neutral_point_against_the_classic_formula():
     # Wing-body-tail neutral point by the classic build-up (Raymer, Aircraft Design, eq. 16.9;
     # Etkin & Reid, Dynamics of Flight, eq. 2.3,23): x_np = (x_w CLa_w + eta S_t/S CLa_t

@@ -9,6 +9,9 @@ import pytest
 from lpc_mdo.cli import main
 from lpc_mdo.vehicle import reference_vehicle
 
+#: Builds or runs the full model: the integration tier (README, 'Run the tests').
+pytestmark = pytest.mark.integration
+
 
 def test_analyze_reference_vehicle_is_trimmed(tmp_path, capsys):
     assert (

@@ -26,6 +26,9 @@ from lpc_mdo.cli import main
 from lpc_mdo.core.checks import check_range
 from lpc_mdo.vehicle import load_vehicle
 
+#: Builds or runs the full model: the integration tier (README, 'Run the tests').
+pytestmark = pytest.mark.integration
+
 REFERENCE_TOML = resources.files("lpc_mdo") / "data" / "lpc_reference.toml"
 
 

@@ -18,6 +18,9 @@ from lpc_mdo.trim import trim
 from lpc_mdo.vehicle import load_vehicle, reference_vehicle
 from lpc_mdo.vehicle.condition_contract import condition_kind
 
+#: Builds or runs the full model: the integration tier (README, 'Run the tests').
+pytestmark = pytest.mark.integration
+
 LOITER_DURATION = 600.0  # s
 LOITER_WEIGHT = 1.5  # the loiter counts 1.5 times in the mission energy
 LOITER = f"""

@@ -16,6 +16,9 @@ from lpc_mdo.groups.lpc import LPCGroup
 from lpc_mdo.problems import declare_problem
 from lpc_mdo.vehicle import reference_vehicle
 
+#: Builds or runs the full model: the integration tier (README, 'Run the tests').
+pytestmark = pytest.mark.integration
+
 # Paper Table 6, by group.
 TABLE6_DESIGN_VARIABLES = {
     "planform (wing and tail S and AR, fuselage length)": 5,

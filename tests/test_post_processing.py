@@ -25,7 +25,11 @@ from openmdao.test_suite.components.sellar import SellarImplicitDis1, SellarImpl
 from lpc_mdo.drivers import IpoptDriver
 from lpc_mdo.post import figures, report, statistics, tables
 
-pytestmark = pytest.mark.filterwarnings("ignore:The following groups have a nonlinear solver")
+# Builds or runs the full model: the integration tier (README, 'Run the tests').
+pytestmark = [
+    pytest.mark.integration,
+    pytest.mark.filterwarnings("ignore:The following groups have a nonlinear solver"),
+]
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 

@@ -6,6 +6,9 @@ import pytest
 from lpc_mdo.problems import build_problem
 from lpc_mdo.study_plan import STAGE_NAMES
 
+#: Builds or runs the full model: the integration tier (README, 'Run the tests').
+pytestmark = pytest.mark.integration
+
 
 def sizes(prob):
     """(design variables, constraints) of a set-up problem."""

@@ -15,6 +15,9 @@ from pathlib import Path
 
 import pytest
 
+#: Builds or runs the full model: the integration tier (README, 'Run the tests').
+pytestmark = pytest.mark.integration
+
 README = Path(__file__).resolve().parents[1] / "README.md"
 MARKER = "<!-- test"
 

@@ -7,6 +7,11 @@ of the model's or the problem's API would otherwise go unnoticed until someone r
 import importlib.util
 from pathlib import Path
 
+import pytest
+
+#: Builds or runs the full model: the integration tier (README, 'Run the tests').
+pytestmark = pytest.mark.integration
+
 RUN_SCRIPTS = Path(__file__).resolve().parents[1] / "run_scripts"
 
 

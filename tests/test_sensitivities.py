@@ -16,6 +16,9 @@ from lpc_mdo.sensitivities import (
 )
 from lpc_mdo.vehicle import reference_vehicle
 
+#: Builds or runs the full model: the integration tier (README, 'Run the tests').
+pytestmark = pytest.mark.integration
+
 
 def _solved_problem():
     """

@@ -18,6 +18,9 @@ from lpc_mdo.study_plan import (
 )
 from lpc_mdo.vehicle import reference_vehicle
 
+#: Builds or runs the full model: the integration tier (README, 'Run the tests').
+pytestmark = pytest.mark.integration
+
 
 @pytest.fixture(scope="module")
 def vehicle():

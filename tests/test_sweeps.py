@@ -18,6 +18,9 @@ from lpc_mdo.sweeps import run_sweep, sweep_chains
 from lpc_mdo.vehicle import reference_vehicle
 from lpc_mdo.warm_start import solve_stage
 
+#: Builds or runs the full model: the integration tier (README, 'Run the tests').
+pytestmark = pytest.mark.integration
+
 
 def test_chains_start_at_the_reference_and_walk_outwards():
     values = SWEEP_PARAMETERS["energy_density"][2]

@@ -8,6 +8,9 @@ from openmdao.utils.assert_utils import assert_near_equal
 from lpc_mdo.vehicle import reference_vehicle
 from lpc_mdo.warm_start import magnitude_refs, run_sequence
 
+#: Builds or runs the full model: the integration tier (README, 'Run the tests').
+pytestmark = pytest.mark.integration
+
 
 @pytest.mark.requires_ipopt
 def test_planform_found_by_subproblem_4_carries_into_subproblem_3(tmp_path):
