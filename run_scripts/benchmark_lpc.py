@@ -4,13 +4,13 @@
 
 Builds the 15-condition model with its 176 design variables (the paper's 161, 10 transition
 roll/yaw speed differentials and 5 transition pitch angles) and its constraints (paper Table 6,
-ours and the 40 linear transition rotor-speed bounds), then times ``run_model`` and ``compute_totals`` (the
-objective and all constraints x 176, adjoint) at one point, and ``run_model`` at points moved
-by 0.1 % (an optimizer's next point: the inner solves iterate from the last solution), and
-prints the medians, the ratios to the paper's CSDL figures (7.06 s forward, 24.84 s derivatives
-after 3.7 h of compilation; paper Table 9), the component count, the ratios to a recorded
-reference run and, with --profile, where the time goes by module (the OpenMDAO
-framework's share).
+ours and the 40 linear transition rotor-speed bounds), then times ``run_model`` and
+``compute_totals`` (the objective and all constraints x 176, adjoint) at one point, and
+``run_model`` at points moved by 0.1 % (an optimizer's next point: the inner solves iterate
+from the last solution). It prints the medians, the ratios to the paper's CSDL figures (7.06 s
+forward, 24.84 s derivatives after 3.7 h of compilation; paper Table 9), the component count,
+the ratios to a recorded reference run and, with --profile, where the time goes by module (the
+OpenMDAO framework's share).
 """
 
 import argparse
