@@ -173,7 +173,7 @@ def test_boom_cg_at_a_fixed_fuselage_length():
     assert abs(fixed.get_val("boom_cg")[0] - long.get_val("boom_cg")[0]) > 0.3
     data = fixed.check_partials(method="cs", compact_print=True, out_stream=None)
     assert_check_partials(data, atol=1e-8, rtol=1e-10)
-    assert np.all(data["comp"][("boom_cg", "fuselage_length")]["J_fwd"] == 0.0)
+    assert np.all(data["comp"][("boom_cg", "fuselage_length")]["J_fd"] == 0.0)
 
 
 def test_partials_off_design():

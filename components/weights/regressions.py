@@ -171,7 +171,8 @@ class _M4RegressionComp(om.ExplicitComponent):
 
         for j, (name, *_) in enumerate(self._regressors):
             self.declare_partials(f"{prefix}_mass", name, val=self._mass_map[j])
-            self.declare_partials(f"{prefix}_cg", name, val=self._cg_total[:, j : j + 1])
+            if np.any(self._cg_total[:, j]):  # a cg at a fixed fuselage length has none
+                self.declare_partials(f"{prefix}_cg", name, val=self._cg_total[:, j : j + 1])
             self.declare_partials(f"{prefix}_inertia", name)
 
     def _evaluate(self, inputs):
