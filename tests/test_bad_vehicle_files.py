@@ -264,6 +264,76 @@ DICT_CASES = [
         "fuselage.max_width",
         "in [0.5, 10]",
     ),
+    # The cabin (nose bay, seats) and the fuselage_length bounds that follow from it.
+    (
+        "nose length in mm",
+        _set("fuselage", "nose_length", 1112.16),
+        "fuselage.nose_length",
+        "in [0, 10] (m)",
+    ),
+    ("no seats", _set("fuselage", "seats", 0), "fuselage.seats", "in [1, 100]"),
+    ("2.5 seats", _set("fuselage", "seats", 2.5), "fuselage.seats", "integer"),
+    (
+        "20 seats abreast",
+        _set("fuselage", "seats_abreast", 20),
+        "fuselage.seats_abreast",
+        "in [1, 10]",
+    ),
+    (
+        "seat pitch in inches",
+        _set("fuselage", "seat_pitch", 36.0),
+        "fuselage.seat_pitch",
+        "in [0.5, 1.5] (m)",
+    ),
+    (
+        "cabin floor in mm",
+        _set("fuselage", "cabin_floor_z", 531.88),
+        "fuselage.cabin_floor_z",
+        "in [-10, 10] (m)",
+    ),
+    (
+        "18 seats in a 9 m fuselage",
+        _set("fuselage", "seats", 18),
+        "fuselage.length",
+        "must be >= 11.6584 (m)",
+    ),
+    (
+        "seats ahead of the cabin",
+        _set("masses", "payload_cg", [-0.5, 0.0, 0.05844]),
+        "masses.payload_cg",
+        "the seats must be in the cabin",
+    ),
+    (
+        "battery in the cabin",
+        _set("battery", "cg", [-2.09897, 0.0, 0.0]),
+        "battery.cg",
+        "allowed: the nose bay, under the cabin floor",
+    ),
+    (
+        "cabin over the systems bay",
+        _set("fuselage", "seat_pitch", 1.1),
+        "fuselage.seat_pitch",
+        "covers NASA's station of the systems",
+    ),
+    (
+        "fuselage shorter than its cabin",
+        _set("design_variables", "fuselage_length", "lower", 6.0),
+        "design_variables.fuselage_length.lower",
+        "must be >= the lower end of the M4 regressions' data range = 6.4008 (m)",
+    ),
+    (
+        # A fin of 5 m^2 has a 3.2504 m root chord: 3.85536 + 3.2504 = 7.1057 m.
+        "fuselage bound cuts into the cabin",
+        _set("vertical_tail", "area", 5.0),
+        "design_variables.fuselage_length.lower",
+        "must be >= fuselage.nose_length + cabin + shortest tail cone = 7.1057",
+    ),
+    (
+        "fuselage beyond the regression data",
+        _set("design_variables", "fuselage_length", "upper", 13.0),
+        "design_variables.fuselage_length.upper",
+        "must be <= the upper end of the M4 regressions' data range = 11.8872 (m)",
+    ),
     (
         "rotor radius in mm",
         _set("lift_rotors", 3, "radius", 1524.0),

@@ -242,27 +242,76 @@ class Wing(LiftingSurface):
 
 @dataclass(frozen=True)
 class Fuselage:
-    """Fuselage dimensions; the nose is the origin of the body frame.
+    """Fuselage dimensions and cabin; the nose is the origin of the body frame.
+
+    The fuselage is a nose bay, a cabin and a tail cone, in this order from the nose (docs
+    theory/geometry 'Fuselage zones'). The cabin's length follows from its seats: rows of
+    ``seats_abreast`` seats at ``seat_pitch``. The length is a design variable: a stretch or a
+    shrink goes into the tail cone, so the nose bay and the cabin keep their stations.
 
     Attributes
     ----------
     length : float
-        Length (m).
+        Length (m); the initial value of the ``fuselage_length`` design variable.
     max_height : float
         Maximum height (m).
     max_width : float
         Maximum width (m).
+    nose_length : float
+        Length of the nose bay (m): the cabin starts this far aft of the nose.
+    seats : int
+        Seats in the cabin, crew included.
+    seats_abreast : int
+        Seats side by side in a row.
+    seat_pitch : float
+        Length of one seat row (m).
+    cabin_floor_z : float
+        Body-frame z of the cabin floor (m, z down): an item whose cg is lower (larger z) is
+        under the floor, not in the cabin.
     """
 
     # 1-30 m long, 0.5-10 m high and wide: a one-seat to an airliner-sized cabin (catches mm).
     length: float = _param("m", ge=1, le=30)
     max_height: float = _param("m", ge=0.5, le=10)
     max_width: float = _param("m", ge=0.5, le=10)
+    # A nose bay of 0-10 m; 1-100 seats, 1-10 abreast; a seat row of 0.5-1.5 m (an airliner's
+    # tightest economy pitch is 0.71 m, 28 in; Kundu, Aircraft Design, 2010, Table 4.5; catches
+    # inches and mm); the floor within 10 m of the nose's height.
+    nose_length: float = _param("m", ge=0, le=10)
+    seats: int = _param(ge=1, le=100)
+    seats_abreast: int = _param(ge=1, le=10)
+    seat_pitch: float = _param("m", ge=0.5, le=1.5)
+    cabin_floor_z: float = _param("m", ge=-10, le=10)
 
     @property
     def fineness_ratio(self) -> float:
         """Length over the larger of height and width (-)."""
         return self.length / max(self.max_height, self.max_width)
+
+    @property
+    def seat_rows(self) -> int:
+        """Rows of seats: ceil(seats / seats_abreast)."""
+        return -(-self.seats // self.seats_abreast)
+
+    @property
+    def cabin_length(self) -> float:
+        """Cabin length (m): seat rows x seat pitch."""
+        return self.seat_rows * self.seat_pitch
+
+    @property
+    def cabin_start(self) -> float:
+        """Distance of the cabin's front from the nose (m): the nose bay's length."""
+        return self.nose_length
+
+    @property
+    def cabin_end(self) -> float:
+        """Distance of the cabin's aft bulkhead from the nose (m); the tail cone starts here."""
+        return self.nose_length + self.cabin_length
+
+    def in_cabin(self, position) -> bool:
+        """Whether a body-frame point lies in the cabin: between its stations, above the floor."""
+        x, _, z = position
+        return bool(self.cabin_start < -x < self.cabin_end and z < self.cabin_floor_z)
 
 
 @dataclass(frozen=True)
