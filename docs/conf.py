@@ -29,7 +29,10 @@ extensions = [
     "sphinx.ext.mathjax",
     "sphinx.ext.viewcode",
     "study_table",
+    "myst_parser",
 ]
+# Markdown pages (examples, optimizing, results) next to the reStructuredText ones.
+source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 
 templates_path = ["_templates"]
 exclude_patterns = ["_build"]
