@@ -19,6 +19,7 @@ from lpc_mdo.components.design_deviation import DesignDeviationComp
 from lpc_mdo.groups.lpc import LPCGroup, included_conditions, openmdao_units
 from lpc_mdo.recorder import CaseRecorder
 from lpc_mdo.vehicle import load_vehicle, reference_vehicle
+from lpc_mdo.vehicle.clearances import clearance_constraints
 from lpc_mdo.vehicle.condition_contract import condition_kind
 from lpc_mdo.vehicle.condition_layout import condition_layout
 from lpc_mdo.vehicle.design_variable_registry import BASELINE_SET
@@ -35,6 +36,8 @@ CONSTRAINT_KINDS = (
     "radius_intersection",
     "torque_margin",
     "rotor_speed",
+    "clearance",
+    "control_reserve",
 )
 #: Finer kinds a subproblem may name instead of 'torque_margin' (which means both).
 TORQUE_MARGIN_KINDS = ("lift_torque_margin", "pusher_torque_margin")
@@ -290,6 +293,9 @@ def declare_problem(
         model.add_constraint("state_of_charge", lower=limits.min_final_soc, ref=0.1)
     if "radius_intersection" in wanted:
         model.add_constraint("radius_intersection", equals=limits.radius_intersection, ref=0.1)
+    for con in clearance_constraints(vehicle):  # lpc_mdo.vehicle.clearances
+        if con.kind in wanted:
+            model.add_constraint(con.output, **con.options)
     motor_sets = set()
     for c in conditions:
         motor_sets.update(condition_kind(c.kind).motor_sets(vehicle, c))
@@ -443,7 +449,14 @@ SUBPROBLEMS = {
         ],
         # Subproblem 1 sizes the pusher motor; the lift motors are subproblem 2's (Table 2), so
         # their margins, which the rotor speeds alone cannot restore, are left to it.
-        "constraint_kinds": ["trim", "noise", "soc", "pusher_torque_margin", "rotor_speed"],
+        "constraint_kinds": [
+            "trim",
+            "noise",
+            "soc",
+            "pusher_torque_margin",
+            "rotor_speed",
+            "clearance",
+        ],
         # The battery within +-20 % of its initial mass (the reference code's bounds). With the
         # vehicle file's wider bounds (400-1400 kg, for the energy-density sweep) IPOPT's first
         # steps cut the battery to 505 kg at 95 dBA and it then wandered (noise 70-77 dBA) to
@@ -454,7 +467,7 @@ SUBPROBLEMS = {
     "subproblem_2": {
         "kinds": ["oei"],
         "design_variables": [("motor_length", [0, 1, 2, 3])],
-        "constraint_kinds": ["trim", "lift_torque_margin"],
+        "constraint_kinds": ["trim", "lift_torque_margin", "control_reserve"],
     },
     "subproblem_3": {
         "kinds": ["structural"],
@@ -479,7 +492,7 @@ SUBPROBLEMS = {
             "htail_aspect_ratio",
             "fuselage_length",
         ],
-        "constraint_kinds": ["trim", "static_margin"],
+        "constraint_kinds": ["trim", "static_margin", "clearance"],
     },
 }
 # A stage before the paper's subproblems (not in the paper): the lift rotors sized for the hover
@@ -495,7 +508,7 @@ PRESIZING = {
             ("blade_chord_cp", list(range(16))),
             ("blade_twist_cp", list(range(16))),
         ],
-        "constraint_kinds": ["trim", "noise", "tip_mach"],
+        "constraint_kinds": ["trim", "noise", "tip_mach", "clearance"],
         # The electrical power of the (first) hover condition, W.
         "objective": ("electrical_power", 5.0e5),
         # With IPOPT (the sequence's default is SLSQP, lpc_mdo.warm_start.default_optimizer): a

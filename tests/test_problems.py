@@ -5,6 +5,10 @@ import pytest
 
 from lpc_mdo.problems import PROBLEM_NAMES, build_problem
 
+# Plan-view clearances of the left lift rotors: 6 same-side disk pairs, 4 each to the fuselage,
+# the h-tail and the pusher (lpc_mdo.vehicle.clearances).
+CLEARANCES = 6 + 4 + 4 + 4
+
 
 def sizes(prob):
     """(design variables, constraints) of a set-up problem."""
@@ -27,18 +31,24 @@ def sizes(prob):
         # constrains the pusher motor margin only (it sizes the pusher motor; the lift motors are
         # subproblem 2's). With the differentials come the 40 linear bounds on each transition
         # lift rotor's own speed (ours).
-        ("rotor_presizing", (4 + 4 + 16 + 16, 1 + 2 + 4)),
+        # The stages that move radii, fuselage or tail add the 18 plan-view rotor clearances
+        # (CLEARANCES); subproblem 2 (the lift motors) and the full problem the roll and pitch
+        # control reserve of the OEI cases (and hover).
+        ("rotor_presizing", (4 + 4 + 16 + 16, 1 + 2 + 4 + CLEARANCES)),
         (
             "subproblem_1",
-            (4 + 20 + 10 + 5 + 5 + 3 + 3 + 8 + 1 + 1 + 45, 1 + 2 + 9 + 25 + 1 + 1 + 40),
+            (
+                4 + 20 + 10 + 5 + 5 + 3 + 3 + 8 + 1 + 1 + 45,
+                1 + 2 + 9 + 25 + 1 + 1 + 40 + CLEARANCES,
+            ),
         ),
-        ("subproblem_2", (28 + 4, 16 + 8)),
+        ("subproblem_2", (28 + 4, 16 + 8 + 4 * 2)),
         ("subproblem_3", (32 + 2, 2 + 14 + 2)),
         # Subproblem 4: planform in climb, cruise and descent (Table 2: cruise only;
         # see problems.py).
-        ("subproblem_4", (5 + 3 * 3, 3 * 3 + 1)),
-        ("full", (161 + 15, 96 + 2 - 10 + 40)),
-        ("baseline", (161 + 15, 96 + 2 - 10 + 40)),
+        ("subproblem_4", (5 + 3 * 3, 3 * 3 + 1 + CLEARANCES)),
+        ("full", (161 + 15, 96 + 2 - 10 + 40 + CLEARANCES + 5 * 2)),
+        ("baseline", (161 + 15, 96 + 2 - 10 + 40 + CLEARANCES + 5 * 2)),
     ],
 )
 def test_problem_sizes(name, expected):
@@ -47,7 +57,7 @@ def test_problem_sizes(name, expected):
 
 def test_full_problem_with_lateral_trim_is_table6():
     full = build_problem("full", optimizer="SLSQP", lateral_trim=True)
-    assert sizes(full) == (161 + 15, 96 + 2 + 40)
+    assert sizes(full) == (161 + 15, 96 + 2 + 40 + CLEARANCES + 5 * 2)
 
 
 @pytest.mark.requires_ipopt

@@ -1,4 +1,4 @@
-"""Plan-view clearances of the lift-rotor disks: each other, the fuselage, the h-tail, the pusher."""
+"""Plan-view clearances of the lift-rotor disks to each other, fuselage, h-tail and pusher."""
 
 import numpy as np
 import openmdao.api as om
@@ -164,7 +164,9 @@ class RotorClearanceComp(om.ExplicitComponent):
         if pairs is None:
             pairs = [(i, j) for i in range(n) for j in range(i + 1, n)]
         pairs = np.array(pairs, dtype=int).reshape(-1, 2)
-        if pairs.size and (pairs.min() < 0 or pairs.max() >= n or np.any(pairs[:, 0] == pairs[:, 1])):
+        if pairs.size and (
+            pairs.min() < 0 or pairs.max() >= n or np.any(pairs[:, 0] == pairs[:, 1])
+        ):
             raise ValueError(
                 f"{self.msginfo}: option 'rotor_pairs' = {pairs.tolist()}; allowed: pairs of two "
                 f"different lift-rotor indices in [0, {n - 1}]"
