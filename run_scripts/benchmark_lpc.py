@@ -3,8 +3,9 @@
     python run_scripts/benchmark_lpc.py [--repeats 5] [--profile]
 
 Builds the 15-condition model with its 176 design variables (the paper's 161, 10 transition
-roll/yaw speed differentials and 5 transition pitch angles) and 98 constraints (with the 40
-linear transition rotor-speed bounds: 138), then times ``run_model`` and ``compute_totals`` (the
+roll/yaw speed differentials and 5 transition pitch angles) and 126 constraints (paper Table 6,
+2 stress aggregates, 18 rotor clearances, 10 hover/OEI control reserves; with the 40 linear
+transition rotor-speed bounds: 166), then times ``run_model`` and ``compute_totals`` (the
 objective and all constraints x 176, adjoint) at one point, and ``run_model`` at points moved
 by 0.1 % (an optimizer's next point: the inner solves iterate from the last solution), and
 prints the medians, the ratios to the paper's CSDL figures (7.06 s forward, 24.84 s derivatives

@@ -22,7 +22,8 @@ def test_benchmark_lpc_builds_the_table6_problem():
     dvs = prob.model.get_design_vars()
     cons = prob.model.get_constraints()
     assert sum(m["size"] for m in dvs.values()) == 161 + 15
-    assert sum(m["size"] for m in cons.values() if not m["linear"]) == 96 + 2
+    # Table 6, the 2 stress aggregates, 18 rotor clearances and 10 hover/OEI control reserves.
+    assert sum(m["size"] for m in cons.values() if not m["linear"]) == 96 + 2 + 18 + 10
     assert sum(m["size"] for m in cons.values() if m["linear"]) == 40
 
 
