@@ -496,6 +496,42 @@ DICT_CASES = [
         "constraints.max_buckling_ratio",
         "in (0, 10]",
     ),
+    (
+        "rotor clearance in mm",
+        _set("constraints", "min_lift_rotor_clearance", 50.8),
+        "constraints.min_lift_rotor_clearance",
+        "in [0, 10] (m)",
+    ),
+    (
+        "negative fuselage clearance",
+        _set("constraints", "min_rotor_fuselage_clearance", -0.1),
+        "constraints.min_rotor_fuselage_clearance",
+        "in [0, 10] (m)",
+    ),
+    (
+        "tail clearance missing",
+        lambda d: d["constraints"].pop("min_rotor_tail_clearance"),
+        "constraints.min_rotor_tail_clearance",
+        "missing",
+    ),
+    (
+        "pusher clearance as text",
+        _set("constraints", "min_rotor_pusher_clearance", "2 in"),
+        "constraints.min_rotor_pusher_clearance",
+        "number",
+    ),
+    (
+        "control acceleration in deg/s^2",
+        _set("constraints", "min_control_acceleration", [8.0, 6.0, 25.0]),
+        "constraints.min_control_acceleration[2]",
+        "in [0, 20] (rad/s^2)",
+    ),
+    (
+        "control acceleration of two axes",
+        _set("constraints", "min_control_acceleration", [0.14, 0.1]),
+        "constraints.min_control_acceleration",
+        "3",
+    ),
     ("observer 1e30 m", _set("noise_observer", "distance", 1e30), "noise_observer.distance", "(m)"),
     ("NaN wing area", _set("wing", "area", float("nan")), "wing.area", "nan"),
     (

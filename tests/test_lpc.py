@@ -1,7 +1,8 @@
 """The full lift-plus-cruise model.
 
 Paper Table 6: 161 design variables, 96 constraints; and our 10 transition roll/yaw lift-rotor
-speed differentials, with 40 linear bounds on each rotor's speed.
+speed differentials, with 40 linear bounds on each rotor's speed and 40 limits on the rotors'
+edgewise advance ratio.
 """
 
 from collections import Counter

@@ -163,3 +163,30 @@ def test_a_design_variable_recorded_on_its_bound_is_set_on_it():
     # A design variable declared on some indices (rotor presizing: 4 of 5 radii) is left alone.
     five = np.array([1.2 - 1e-12, 1.3, 1.3, 1.3, 1.0])
     np.testing.assert_array_equal(_onto_bounds(five, np.full(4, 1.2), np.full(4, 1.8)), five)
+
+
+def test_clearances_and_control_reserve_are_declared_when_named():
+    # Optional kinds: the 18 plan-view clearances of the left lift rotors (6 same-side disk
+    # pairs, 4 each to the fuselage, the h-tail and the pusher) and the roll and pitch control
+    # reserve of hover and the 4 OEI cases.
+    import openmdao.api as om
+
+    from lpc_mdo.groups.lpc import LPCGroup
+    from lpc_mdo.problems import CONSTRAINT_KINDS, declare_problem
+
+    prob = om.Problem(reports=False)
+    prob.model = LPCGroup()
+    declare_problem(prob.model, constraint_kinds=CONSTRAINT_KINDS + ("clearance",))
+    prob.setup()
+    prob.final_setup()
+    cons = prob.model.get_constraints()
+    clearances = sum(m["size"] for n, m in cons.items() if n.endswith("_clearance"))
+    assert clearances == 6 + 4 + 4 + 4
+    assert not any(n.endswith("control_acceleration") for n in cons)
+    prob = om.Problem(reports=False)
+    prob.model = LPCGroup()
+    declare_problem(prob.model, constraint_kinds=CONSTRAINT_KINDS + ("control_reserve",))
+    prob.setup()
+    prob.final_setup()
+    cons = prob.model.get_constraints()
+    assert sum(m["size"] for n, m in cons.items() if n.endswith("control_acceleration")) == 10

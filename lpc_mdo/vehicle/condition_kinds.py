@@ -139,7 +139,7 @@ class HoverKind(ConditionKind):
     OEI (hover p_dot and OEI v_dot vanish for every design: degenerate rows). The body is level
     (``pitch`` = 0): the lift-rotor thrust axes are body-fixed and u_dot is not a hover trim row,
     so a pitched hover is a VehicleSpecError. Hover without a failed rotor declares the noise and
-    tip-Mach constraints.
+    tip-Mach constraints; hover and OEI declare the control reserve (:meth:`control_reserve`).
     """
 
     field_rules = {
@@ -221,14 +221,41 @@ class HoverKind(ConditionKind):
         )
 
     @classmethod
+    def control_reserve(cls, vehicle):
+        """
+        Return the control-reserve constraint of a hover or OEI condition, or None.
+
+        The axes (roll, pitch, yaw) with a required acceleration > 0 in the vehicle file's
+        ``constraints.min_control_acceleration``: ``control_acceleration`` >= it (docs
+        theory/dynamics 'Hover control reserve').
+        """
+        required = np.array(vehicle.constraints.min_control_acceleration)
+        axes = [int(a) for a in np.flatnonzero(required > 0.0)]
+        if not axes:
+            return None
+        return ConditionConstraint(
+            "control_reserve",
+            "control_acceleration",
+            {
+                "indices": axes,
+                "flat_indices": True,
+                "lower": required[axes],
+                "ref": 0.1,
+                "units": "rad/s**2",
+            },
+        )
+
+    @classmethod
     def constraints(cls, vehicle, condition, bounds):
+        reserve = cls.control_reserve(vehicle)
+        reserve = () if reserve is None else (reserve,)
         if condition.failed_rotor >= 0:
-            return ()
+            return reserve
         limits = vehicle.constraints
         active = cls.active_lift_rotors(vehicle, condition)
         pairs = [vehicle.lift_rotors[i].pair for i in active]
         one_per_pair = [pairs.index(p) for p in sorted(set(pairs))]
-        return (
+        return reserve + (
             ConditionConstraint("noise", "total_spl_a", {"upper": limits.max_noise, "ref": 10.0}),
             ConditionConstraint(
                 "tip_mach",

@@ -683,6 +683,19 @@ class ConstraintLimits:
         State of charge at the end of the mission (-).
     max_displacement : float
         Wing-tip displacement in the structural subproblem (m).
+    min_lift_rotor_clearance : float
+        Plan-view gap between two lift-rotor disks (m), docs theory/geometry 'Rotor clearances'.
+    min_rotor_fuselage_clearance : float
+        Plan-view gap between a lift-rotor disk and the fuselage side (m).
+    min_rotor_tail_clearance : float
+        Plan-view gap between a lift-rotor disk and the horizontal-tail planform (m); 0 keeps
+        every disk off the tail.
+    min_rotor_pusher_clearance : float
+        Plan-view gap between a lift-rotor disk and the pusher disk (m).
+    min_control_acceleration : tuple of 3 float
+        Roll, pitch and yaw acceleration (rad/s^2) the lift rotors must be able to add at the
+        trimmed hover and one-engine-inoperative points, within their motors' peak torque
+        (docs theory/dynamics 'Hover control reserve'); 0 for an axis that is not required.
     """
 
     # 20-200 dBA: a quiet room to beyond the pain threshold.
@@ -701,6 +714,13 @@ class ConstraintLimits:
     min_final_soc: float = _param(ge=0, lt=1)
     # Wing-tip deflection up to 10 m, more than half the largest span of the class.
     max_displacement: float = _param("m", gt=0, le=10)
+    # Clearances 0-10 m (at most a rotor diameter of the class; catches mm).
+    min_lift_rotor_clearance: float = _param("m", ge=0, le=10)
+    min_rotor_fuselage_clearance: float = _param("m", ge=0, le=10)
+    min_rotor_tail_clearance: float = _param("m", ge=0, le=10)
+    min_rotor_pusher_clearance: float = _param("m", ge=0, le=10)
+    # Angular accelerations 0-20 rad/s^2: beyond what any piloted VTOL demands (catches deg).
+    min_control_acceleration: tuple[float, ...] = _param("rad/s^2", ge=0, le=20, shape=(3,))
 
 
 @dataclass(frozen=True)
