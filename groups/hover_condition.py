@@ -37,7 +37,8 @@ class HoverCondition(ConditionGroup):
     (``lift_rotors[i].airfoil`` -> ``lift_thickness_to_chord``, of the thickness noise).
 
     Outputs: ``linear_acceleration``, ``angular_acceleration`` (1, 3); ``electrical_power``
-    (1,); ``lift_tip_mach``, ``lift_figure_of_merit``, ``lift_motor_torque_margin``,
+    (1,); ``lift_tip_mach``, ``lift_helical_tip_mach``, ``lift_figure_of_merit``,
+    ``lift_motor_torque_margin``,
     ``lift_motor_em_torque`` (num_lift, 1); with acoustics ``total_spl_a`` (dBA).
     """
 

@@ -35,6 +35,7 @@ CONSTRAINT_KINDS = (
     "radius_intersection",
     "torque_margin",
     "rotor_speed",
+    "min_chord",
 )
 #: Finer kinds a subproblem may name instead of 'torque_margin' (which means both).
 TORQUE_MARGIN_KINDS = ("lift_torque_margin", "pusher_torque_margin")
@@ -290,6 +291,8 @@ def declare_problem(
         model.add_constraint("state_of_charge", lower=limits.min_final_soc, ref=0.1)
     if "radius_intersection" in wanted:
         model.add_constraint("radius_intersection", equals=limits.radius_intersection, ref=0.1)
+    if "min_chord" in wanted:  # every chord control point >= f R (linear; docs theory/rotors)
+        model.add_constraint("blade_chord_margin", lower=0.0, ref=0.01, linear=True)
     motor_sets = set()
     for c in conditions:
         motor_sets.update(condition_kind(c.kind).motor_sets(vehicle, c))
@@ -443,7 +446,16 @@ SUBPROBLEMS = {
         ],
         # Subproblem 1 sizes the pusher motor; the lift motors are subproblem 2's (Table 2), so
         # their margins, which the rotor speeds alone cannot restore, are left to it.
-        "constraint_kinds": ["trim", "noise", "soc", "pusher_torque_margin", "rotor_speed"],
+        # The rotors' tip Mach numbers and minimum chords with the blades that set them.
+        "constraint_kinds": [
+            "trim",
+            "noise",
+            "soc",
+            "pusher_torque_margin",
+            "rotor_speed",
+            "tip_mach",
+            "min_chord",
+        ],
         # The battery within +-20 % of its initial mass (the reference code's bounds). With the
         # vehicle file's wider bounds (400-1400 kg, for the energy-density sweep) IPOPT's first
         # steps cut the battery to 505 kg at 95 dBA and it then wandered (noise 70-77 dBA) to
