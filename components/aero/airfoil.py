@@ -32,10 +32,16 @@ How a :class:`TablePolar` is built from a table cl, cd(alpha, Re, M):
    Each factor is C1, so cl and cd are C1 in (alpha, Re, M) jointly, periodic and C1 across
    +-180 deg, and the analytic derivatives are those of the interpolant (complex-step safe:
    intervals are chosen from real parts).
-4. **Stated range**: the table holds for Reynolds and Mach numbers within its grid. A query
-   outside it (below the lowest or above the highest tabulated Reynolds number, above the highest
-   tabulated Mach number) raises ``om.AnalysisError`` naming the polar, the value and the range,
-   so that a rotor or wing model never runs on values held at a table's edge; an axis with a
+4. **Stated range**: the table holds for Mach numbers up to its highest tabulated one and for
+   Reynolds numbers up to its highest; a query above either (or a negative or non-finite one)
+   raises ``om.AnalysisError`` naming the polar, the value and the range, so that a rotor or
+   wing model never runs on values held at those edges. Below the lowest tabulated Reynolds
+   number (2e4 for the rotor section) the lowest slice is used, a stated rule, not a range
+   error: such sections are those at almost no relative velocity (an edgewise rotor's
+   reverse-flow boundary, where U -> 0 at every speed; a blade root at low rotor speed), whose
+   dynamic pressure is below 0.05 % of a tip's (U < 3 m/s on a 0.1 m chord), so their loads do
+   not depend on the polar; raising there would stop every transition trim (measured: Re down
+   to 2e3 at Pitt-Peters stations during the trim of the reference vehicle). An axis with a
    single value (a user table at one Reynolds and Mach number) holds for every value.
 
 Tables shipped in ``lpc_mdo/data/airfoil_<name>.npz`` were made by
@@ -452,9 +458,10 @@ class TablePolar(Polar):
         """
         Raise ``om.AnalysisError`` if a query lies outside the table's Reynolds or Mach range.
 
-        The table's stated range is its grid (module docstring, 'Stated range'); an axis with a
-        single value holds for every value. The message names the polar, the extreme value
-        queried and the range.
+        The table's stated range (module docstring, 'Stated range'): Mach numbers in
+        [0, highest tabulated], Reynolds numbers in [0, highest tabulated] (below the lowest
+        tabulated one the lowest slice is used); an axis with a single value holds for every
+        value. The message names the polar, the extreme value queried and the range.
         """
         for label, values, grid in (
             ("Reynolds number", reynolds, self.table_reynolds),
@@ -466,10 +473,11 @@ class TablePolar(Polar):
             if real.size == 0:
                 continue
             low, high = float(np.min(real)), float(np.max(real))
-            if low < grid[0] or high > grid[-1] or not (np.isfinite(low) and np.isfinite(high)):
+            floor = 0.0 if label == "Reynolds number" else grid[0]
+            if low < floor or high > grid[-1] or not (np.isfinite(low) and np.isfinite(high)):
                 raise om.AnalysisError(
                     f"airfoil polar '{self.name}': {label} {low:.4g}..{high:.4g} queried; the "
-                    f"table holds for {grid[0]:.4g}..{grid[-1]:.4g} (docs theory/aerodynamics "
+                    f"table holds for {floor:.4g}..{grid[-1]:.4g} (docs theory/aerodynamics "
                     f"'Airfoil polars'). A section outside it is outside the model's stated "
                     f"range: keep the design inside (tip-Mach and chord constraints) or supply "
                     f"a table that covers it."
