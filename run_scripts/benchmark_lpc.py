@@ -3,8 +3,9 @@
     python run_scripts/benchmark_lpc.py [--repeats 5] [--profile]
 
 Builds the 15-condition model with its 176 design variables (the paper's 161, 10 transition
-roll/yaw speed differentials and 5 transition pitch angles) and 98 constraints (with the 40
-linear transition rotor-speed bounds: 138), then times ``run_model`` and ``compute_totals`` (the
+roll/yaw speed differentials and 5 transition pitch angles) and 174 constraints (98 of paper
+Table 6 and ours, 76 tip Mach numbers; with the 40 linear transition rotor-speed bounds and the
+20 linear minimum chords: 234), then times ``run_model`` and ``compute_totals`` (the
 objective and all constraints x 176, adjoint) at one point, and ``run_model`` at points moved
 by 0.1 % (an optimizer's next point: the inner solves iterate from the last solution), and
 prints the medians, the ratios to the paper's CSDL figures (7.06 s forward, 24.84 s derivatives
@@ -46,7 +47,7 @@ def build():
     """Return the set-up full LPC model with a driver, so that totals use the driver scaling."""
     prob = om.Problem(reports=False)
     prob.model = LPCGroup()
-    declare_problem(prob.model)  # paper Table 6 + ours: 176 design variables, 98 + 40 constraints
+    declare_problem(prob.model)  # paper Table 6 + ours: 176 design variables, 174 + 60 constraints
     prob.driver = om.ScipyOptimizeDriver()  # only so compute_totals uses the driver's scaling
     prob.setup(mode="rev")
     prob.final_setup()

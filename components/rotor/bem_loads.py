@@ -251,12 +251,12 @@ class RotorPerformanceComp(om.ExplicitComponent):
     - FoM = T^(3/2)/(sqrt(2 rho pi R^2) P), i.e. C_T,H^(3/2)/(sqrt(2) C_Q,H) (hover; computed as
       T sqrt|T| so that a negative thrust gives a negative value, not NaN)
     - M_tip = Omega R / a   (paper's hover constraint <= 0.6)
-    - M_helical = sqrt(V_x^2 + (Omega R + |V_ip|)^2) / a, the largest resultant Mach number at
+    - M_helical = sqrt(V_x^2 + (Omega R + abs(V_ip))^2) / a, the largest resultant Mach number at
       the blade tip over a revolution: the helical tip Mach number of a propeller
       (Raymer, Aircraft Design, sec. 10.4) and, with ``edgewise``, at the advancing blade
       (V_ip the in-plane velocity of the disk, Johnson, Rotorcraft Aeromechanics, ch. 1:
       M_at = M_tip (1 + mu) in level flight). It bounds the Mach number of every blade section
-      the BEM (axial: |V_ip| not in its sections, so not here) or the Pitt-Peters model
+      the BEM (axial: abs(V_ip) not in its sections, so not here) or the Pitt-Peters model
       (edgewise) evaluates, so its limit keeps the polar inside its table (docs theory/rotors
       'Tip Mach number limits').
 
@@ -312,7 +312,7 @@ class RotorPerformanceComp(om.ExplicitComponent):
         (
             "helical_tip_mach",
             None,
-            "Largest resultant tip Mach number sqrt(V_x^2 + (Omega R + |V_ip|)^2)/a",
+            "Largest resultant tip Mach number sqrt(V_x^2 + (Omega R + abs(V_ip))^2)/a",
         ),
     )
 
@@ -389,7 +389,7 @@ class RotorPerformanceComp(om.ExplicitComponent):
             )
 
     def _helical(self, v, inputs):
-        """Helical tip Mach number and its pieces: (M, w = Omega R + |V_ip|, U, |V_ip|)."""
+        """Helical tip Mach number and its pieces: (M, w = Omega R + abs(V_ip), U, abs(V_ip))."""
         if self.options["edgewise"]:
             vip = inputs["inplane_velocity"]
             speed_ip = np.sqrt(np.sum(vip * vip, axis=-1))
@@ -507,7 +507,7 @@ class RotorPerformanceComp(om.ExplicitComponent):
         put("helical_tip_mach", "axial_velocity", vx / (u * a))
         put("helical_tip_mach", "speed_of_sound", -mach / a)
         if self.options["edgewise"]:
-            # d|V_ip|/dV_ip = V_ip/|V_ip|; at |V_ip| = 0 (hover) the subgradient 0.
+            # dabs(V_ip)/dV_ip = V_ip/abs(V_ip); at abs(V_ip) = 0 (hover) the subgradient 0.
             safe = np.where(np.real(speed_ip) > 0.0, speed_ip, 1.0)
             unit = np.where(
                 (np.real(speed_ip) > 0.0)[..., None],
