@@ -219,7 +219,7 @@ def test_static_margin_switch():
     declare_problem(prob.model, static_margin=False)
     prob.setup()
     prob.final_setup()
-    assert sum(m["size"] for m in prob.model.get_constraints().values()) == 95 + 2 + 40
+    assert sum(m["size"] for m in prob.model.get_constraints().values()) == 95 + OUR_COUNT
 
 
 def test_the_model_has_physics_options_only():
