@@ -41,11 +41,11 @@ class HoverCondition(ConditionGroup):
     (``lift_rotors[i].airfoil`` -> ``lift_thickness_to_chord``, of the thickness noise).
 
     Outputs: ``linear_acceleration``, ``angular_acceleration`` (1, 3); ``electrical_power``
-    (1,); ``lift_tip_mach``, ``lift_figure_of_merit``, ``lift_motor_torque_margin``,
-    ``lift_motor_em_torque`` (num_lift, 1); ``control_acceleration`` (3,): the roll, pitch and
-    yaw acceleration the running rotors can add within their motors' peak torque
-    (:class:`~lpc_mdo.components.dynamics.control_reserve.ControlReserveComp`); with acoustics
-    ``total_spl_a`` (dBA).
+    (1,); ``lift_tip_mach``, ``lift_helical_tip_mach``, ``lift_figure_of_merit``,
+    ``lift_motor_torque_margin``, ``lift_motor_em_torque`` (num_lift, 1); ``control_acceleration``
+    (3,): the roll, pitch and yaw acceleration the running rotors can add within their motors'
+    peak torque (:class:`~lpc_mdo.components.dynamics.control_reserve.ControlReserveComp`); with
+    acoustics ``total_spl_a`` (dBA).
     """
 
     declaration = HoverKind

@@ -67,8 +67,8 @@ class PittPetersRotorGroup(RotorGroupBase):
     inplane_force, hub_moment : (num_rotors, num_nodes, 2), N, N*m
         In-plane hub force and hub moment along / about the disk e_x and e_y.
     power, thrust_coefficient, power_coefficient, advance_ratio, efficiency, figure_of_merit,
-    tip_mach : (num_rotors, num_nodes)
-        RotorPerformanceComp.
+    tip_mach, helical_tip_mach : (num_rotors, num_nodes)
+        RotorPerformanceComp (helical_tip_mach at the advancing blade).
     edgewise_advance_ratio : (num_rotors, num_nodes)
         mu = abs(inplane_velocity) / (Omega R) (EdgewiseAdvanceRatioComp).
     force, moment : (num_rotors, num_nodes, 3); total_force, total_moment : (num_nodes, 3)

@@ -13,6 +13,7 @@ from lpc_mdo.components.dynamics.body_pitching_moment import (
 )
 from lpc_mdo.components.geometry.blade import BLADE_OUTPUTS, BladeGeometryGroup
 from lpc_mdo.components.geometry.cranked_planform import CrankedPlanformComp, SectionLayout
+from lpc_mdo.components.geometry.minimum_chord import BladeChordMarginComp
 from lpc_mdo.components.geometry.planform import PlanformMeshComp
 from lpc_mdo.components.geometry.rotor_clearance import RotorClearanceComp
 from lpc_mdo.components.geometry.rotor_layout import RotorLayoutComp
@@ -187,6 +188,16 @@ class VehicleGroup(om.Group):
                 ("twist_cp", "blade_twist_cp"),
             ],
             promotes_outputs=[(name, f"blade_{name}") for name in BLADE_OUTPUTS],
+        )
+        # The minimum-chord constraint's output (docs theory/rotors 'Minimum chord').
+        self.add_subsystem(
+            "blade_chord_margin",
+            BladeChordMarginComp(
+                num_rotors=len(rotors),
+                num_cp=len(vehicle.pusher.chord_cp),
+                min_chord_radius_ratio=vehicle.constraints.min_chord_radius_ratio,
+            ),
+            promotes=["*"],
         )
 
     def _add_section_wing(self, vehicle):

@@ -540,7 +540,7 @@ def _analyze_header(analysis, args):
             f"  {len(prob.model.condition_names)} design conditions, "
             f"{sum(m['size'] for m in dvs.values())} design variables, "
             f"{sum(m['size'] for m in cons.values() if not m['linear'])} constraints, "
-            f"{sum(m['size'] for m in cons.values() if m['linear'])} linear rotor-speed bounds",
+            f"{sum(m['size'] for m in cons.values() if m['linear'])} linear bounds",
             f"  wing: S = {prob.get_val('wing_area')[0]:.2f} m^2, "
             f"AR = {prob.get_val('wing_aspect_ratio')[0]:.2f}, "
             f"span = {prob.get_val('wing_span')[0]:.2f} m; fuselage "

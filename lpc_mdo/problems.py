@@ -40,6 +40,7 @@ CONSTRAINT_KINDS = (
     "torque_margin",
     "rotor_speed",
     "advance_ratio",
+    "min_chord",
 )
 #: Finer kinds a subproblem may name instead of 'torque_margin' (which means both).
 TORQUE_MARGIN_KINDS = ("lift_torque_margin", "pusher_torque_margin")
@@ -304,6 +305,8 @@ def declare_problem(
     for con in clearance_constraints(vehicle):  # lpc_mdo.vehicle.clearances
         if con.kind in wanted:
             model.add_constraint(con.output, **con.options)
+    if "min_chord" in wanted:  # every chord control point >= f R (linear; docs theory/rotors)
+        model.add_constraint("blade_chord_margin", lower=0.0, ref=0.01, linear=True)
     motor_sets = set()
     for c in conditions:
         motor_sets.update(condition_kind(c.kind).motor_sets(vehicle, c))

@@ -409,6 +409,8 @@ STAGES = (
             "pusher_torque_margin",
             "rotor_speed",
             "advance_ratio",
+            "tip_mach",
+            "min_chord",
         ),
         trust_region={"battery_mass": 0.2},  # the reference code's bounds
         optimizer="SLSQP",

@@ -491,6 +491,24 @@ DICT_CASES = [
         "(m)",
     ),
     (
+        "supersonic pusher tip",
+        _set("constraints", "max_pusher_tip_mach", 1.2),
+        "constraints.max_pusher_tip_mach",
+        "in (0, 0.9]",
+    ),
+    (
+        "lift-rotor tip Mach limit 0",
+        _set("constraints", "max_lift_rotor_tip_mach", 0.0),
+        "constraints.max_lift_rotor_tip_mach",
+        "in (0, 0.9]",
+    ),
+    (
+        "minimum chord in percent",
+        _set("constraints", "min_chord_radius_ratio", 3.0),
+        "constraints.min_chord_radius_ratio",
+        "in [0, 0.5]",
+    ),
+    (
         "buckling ratio 1e30",
         _set("constraints", "max_buckling_ratio", 1e30),
         "constraints.max_buckling_ratio",

@@ -180,6 +180,51 @@ def test_performance_values_and_partials():
     assert_check_partials(data, atol=1e-10, rtol=1e-10)
 
 
+@pytest.mark.parametrize("edgewise", [False, True])
+def test_helical_tip_mach_values_and_partials(edgewise):
+    # Independent numbers by hand: a pusher of R 1.781 m at 1600 rpm in climb at V_x 60 m/s,
+    # a = 340 m/s: Omega R = 298.40 m/s, helical sqrt(298.40^2 + 60^2)/340 = 0.89524 (Raymer's
+    # helical tip speed, sec. 10.4); with an in-plane velocity of (3, 4) m/s at its advancing
+    # blade sqrt((298.40 + 5)^2 + 60^2)/340 = 0.90966. A lift rotor of R 1.5 m at 900 rpm in
+    # edgewise flight with V_ip = (30, 40) m/s and V_x 5 m/s: advancing tip
+    # sqrt(5^2 + (141.37 + 50)^2)/340 = 0.56305 (Johnson, Rotorcraft Aeromechanics: M_at =
+    # M_tip (1 + mu)), 0.41606 without V_ip (the axial model leaves it out).
+    prob = om.Problem(reports=False)
+    perf = RotorPerformanceComp(num_rotors=2, num_nodes=2, edgewise=edgewise)
+    prob.model.add_subsystem("p", perf, promotes=["*"])
+    prob.setup(force_alloc_complex=True)
+    prob.set_val("thrust", [[4000.0, 3000.0], [2000.0, 1500.0]])
+    prob.set_val("torque", [[700.0, 650.0], [300.0, 200.0]])
+    prob.set_val("rpm", [[1600.0, 1100.0], [900.0, 800.0]])
+    prob.set_val("axial_velocity", [[60.0, 5.0], [5.0, -3.0]])
+    prob.set_val("radius", [1.781, 1.5])
+    prob.set_val("speed_of_sound", [340.0, 330.0])
+    if edgewise:
+        prob.set_val("inplane_velocity", [[[3.0, 4.0], [10.0, -2.0]], [[30.0, 40.0], [-1.0, 2.0]]])
+    prob.run_model()
+    mach = prob.get_val("helical_tip_mach")
+    assert mach[0, 0] == pytest.approx(0.90966 if edgewise else 0.89524, abs=5e-5)
+    assert mach[1, 0] == pytest.approx(0.56305 if edgewise else 0.41606, abs=5e-5)
+    if not edgewise:  # a rotor without axial velocity: the rotational tip Mach number
+        ratio = np.hypot(1.0, 3.0 / (800.0 * np.pi / 30.0 * 1.5))
+        np.testing.assert_allclose(mach[1, 1], prob.get_val("tip_mach")[1, 1] * ratio, rtol=1e-12)
+    data = prob.check_partials(method="cs", compact_print=True, out_stream=None)
+    assert_check_partials(data, atol=1e-10, rtol=1e-10)
+
+
+def test_helical_tip_mach_in_hover_has_the_zero_subgradient():
+    # |V_ip| is not differentiable at V_ip = 0 (hover); the component gives the subgradient 0
+    # there, and the value is the rotational tip Mach number.
+    prob = om.Problem(reports=False)
+    prob.model.add_subsystem("p", RotorPerformanceComp(edgewise=True), promotes=["*"])
+    prob.setup()
+    prob.set_val("torque", 500.0)
+    prob.run_model()
+    assert prob.get_val("helical_tip_mach") == pytest.approx(prob.get_val("tip_mach"), rel=1e-14)
+    jac = prob.compute_totals("helical_tip_mach", "inplane_velocity")
+    np.testing.assert_array_equal(jac["helical_tip_mach", "inplane_velocity"], 0.0)
+
+
 def test_reverse_and_windmilling_stations_converge():
     # Descent, hover, climb and windmilling (V_x up to 2.5 Omega R, negative thrust and torque)
     # on one rotor; a second rotor pitched to -20 deg (no root on [0, pi/2]: found at phi < 0).

@@ -1,8 +1,8 @@
 """The full lift-plus-cruise model.
 
 Paper Table 6: 161 design variables, 96 constraints; and our 10 transition roll/yaw lift-rotor
-speed differentials, with 40 linear bounds on each rotor's speed and 40 limits on the rotors'
-edgewise advance ratio.
+speed differentials, with 40 linear bounds on each rotor's speed, 40 limits on the rotors'
+edgewise advance ratio, and the blades' tip-Mach and minimum-chord constraints.
 """
 
 from collections import Counter
@@ -44,13 +44,22 @@ OUR_DESIGN_VARIABLES = {
     "pitch, transition": 5,
 }
 # Not in the paper: each transition lift rotor's own speed within its pair's bounds (linear) and
-# its edgewise advance ratio within the inflow model's range; the KS-aggregated wing-box stress
-# at +3g and -1g.
+# its edgewise advance ratio within the inflow model's range;
+# the KS-aggregated wing-box stress at +3g and -1g.
+# The design-review envelope of the blades: every running rotor's helical tip Mach number
+# (one-rotor-out and transition lift rotors <= 0.7, the pusher <= 0.85 in transition, climb,
+# cruise and descent) and every chord control point >= 3 % of its radius (linear).
 OUR_CONSTRAINTS = {
     "transition lift rotor speed bounds": 40,
     "transition lift rotor advance ratio": 40,
     "wing-box stress (KS)": 2,
+    "OEI lift-rotor tip Mach": 4 * 7,
+    "transition lift-rotor tip Mach": 5 * 8,
+    "pusher helical tip Mach": 5 + 3,
+    "minimum blade chord": 5 * 4,
 }
+#: Rows of OUR_CONSTRAINTS beyond the paper: 2 + 40 + 76 nonlinear and 40 + 20 linear.
+OUR_COUNT = 2 + 40 + 76 + 40 + 20
 TABLE6_CONSTRAINTS = {
     "hover noise": 1,
     "hover trim": 3,
@@ -111,6 +120,17 @@ def _constraint_group(name, meta):
         return "transition lift rotor advance ratio"
     if name == "hover.lift_tip_mach":
         return "hover tip Mach"
+    if name.endswith("lift_helical_tip_mach"):
+        return (
+            "OEI lift-rotor tip Mach"
+            if cond.startswith("oei")
+            else "transition lift-rotor tip Mach"
+        )
+    if name.endswith("pusher_helical_tip_mach"):
+        return "pusher helical tip Mach"
+    if name == "blade_chord_margin":
+        assert meta["linear"]
+        return "minimum blade chord"
     if cond == "hover":
         return "hover trim"
     if cond in ("climb", "cruise", "descent") and "acceleration" in name:
@@ -163,7 +183,7 @@ def test_table6_design_variables_and_constraints(lpc):
         else:
             cons[group] += meta["size"]
     assert dict(cons) == TABLE6_CONSTRAINTS | OUR_CONSTRAINTS
-    assert sum(cons.values()) == 96 + 2 + 40 + 40
+    assert sum(cons.values()) == 96 + OUR_COUNT
 
 
 def test_transition_rotor_speed_bounds_are_the_pair_bounds(lpc):
@@ -206,7 +226,7 @@ def test_static_margin_switch():
     declare_problem(prob.model, static_margin=False)
     prob.setup()
     prob.final_setup()
-    assert sum(m["size"] for m in prob.model.get_constraints().values()) == 95 + 2 + 40 + 40
+    assert sum(m["size"] for m in prob.model.get_constraints().values()) == 95 + OUR_COUNT
 
 
 def test_the_model_has_physics_options_only():

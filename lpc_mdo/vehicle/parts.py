@@ -671,6 +671,14 @@ class ConstraintLimits:
     max_lift_rotor_advance_ratio : float
         Edgewise advance ratio mu = V_inplane / (Omega R) of every lift rotor in transition
         (-): the range of the inflow model (docs theory/rotors 'Advance-ratio limit').
+    max_lift_rotor_tip_mach : float
+        Helical tip Mach number of every working lift rotor in one-rotor-out hover and in
+        transition (at the advancing blade) (-).
+    max_pusher_tip_mach : float
+        Helical tip Mach number of the pusher in every condition that runs it (-).
+    min_chord_radius_ratio : float
+        Smallest blade chord of every rotor, as a fraction of its radius (-): each chord control
+        point >= this times the radius (the B-spline chord lies in their convex hull).
     radius_intersection : float
         Target of the 2 radius-intersection equalities: a span fraction (-) or a clearance (m).
     radius_intersection_definition : str
@@ -706,6 +714,11 @@ class ConstraintLimits:
     max_tip_mach: float = _param(gt=0, le=1)
     # Edgewise rotor data and inflow models reach mu ~ 1 at most (slowed-rotor tests).
     max_lift_rotor_advance_ratio: float = _param(gt=0, le=1)
+    # Subsonic tips only: the rotor polar's stated range ends at M 0.9.
+    max_lift_rotor_tip_mach: float = _param(gt=0, le=0.9)
+    max_pusher_tip_mach: float = _param(gt=0, le=0.9)
+    # At most half the radius: a chord that size already exceeds every blade of the class.
+    min_chord_radius_ratio: float = _param(ge=0, le=0.5)
     # A span fraction (<= 1) or a clearance in m (at most 10 m, a rotor radius of the class).
     radius_intersection: float = _param(ge=0, le=10)
     radius_intersection_definition: str = _param(choices=("span_fraction", "clearance"))
