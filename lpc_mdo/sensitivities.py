@@ -45,7 +45,7 @@ SENSITIVITIES_FORMAT = "lpc_mdo.sensitivities/1"
 #: candidate that is not active a multiplier of about zero). The full problem's SLSQP accepts
 #: constraints within 3e-4 (its settings in lpc_mdo.study_plan); at an optimum stopped by its
 #: iteration limit the final-SoC constraint was 2e-4 off its bound, and with 1e-4 the fit left it
-#: out (KKT residual 0.48 against 0.020 with 1e-3; measured 2026-12-04).
+#: out (KKT residual 0.48 against 0.020 with 1e-3, measured).
 ACTIVE_TOL = 1e-3
 #: Above this relative KKT residual the report shows no sensitivities, only how to polish first.
 LOOSE_KKT_RESIDUAL = 0.025
