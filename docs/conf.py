@@ -8,7 +8,13 @@ The build needs no network: no intersphinx, and the theme (furo) and MathJax com
 installed packages (MathJax is loaded by the reader's browser, not at build time).
 """
 
+import os
+import sys
+
 import lpc_mdo
+
+# Local extensions: the study-table directive renders lpc_mdo.study_plan (docs/_ext).
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "_ext"))
 
 project = "lpc-mdo"
 author = "lpc-mdo developers"
@@ -22,7 +28,11 @@ extensions = [
     "sphinx.ext.napoleon",
     "sphinx.ext.mathjax",
     "sphinx.ext.viewcode",
+    "study_table",
+    "myst_parser",
 ]
+# Markdown pages (examples, optimizing, results) next to the reStructuredText ones.
+source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 
 templates_path = ["_templates"]
 exclude_patterns = ["_build"]

@@ -193,7 +193,9 @@ class RotorGroupBase(om.Group):
             self.add_subsystem("velocity", RotorVelocityComp(**frame), promotes=["*"])
         inplane = self.add_rotor_model(geo)
         self.add_subsystem(
-            "performance", RotorPerformanceComp(num_rotors=nr, num_nodes=nn), promotes=["*"]
+            "performance",
+            RotorPerformanceComp(num_rotors=nr, num_nodes=nn, edgewise=inplane),
+            promotes=["*"],
         )
         if opts["body_frame"]:
             self.add_subsystem(
@@ -276,7 +278,7 @@ class BEMRotorGroup(RotorGroupBase):
     thrust_per_span, drag_per_span, angle_of_attack : (num_rotors, num_nodes, num_radial)
     thrust, torque : (num_rotors, num_nodes), N, N*m
     power, thrust_coefficient, power_coefficient, advance_ratio, efficiency, figure_of_merit,
-    tip_mach : (num_rotors, num_nodes)
+    tip_mach, helical_tip_mach : (num_rotors, num_nodes)
     force, moment : (num_rotors, num_nodes, 3); total_force, total_moment : (num_nodes, 3)
         If ``body_frame`` (HubLoadsComp).
 

@@ -3,6 +3,7 @@
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.components.dynamics.control_reserve import ControlReserveComp
 from lpc_mdo.groups.acoustics import RotorNoiseGroup
 from lpc_mdo.groups.condition_base import ConditionGroup
 from lpc_mdo.groups.condition_builders import (
@@ -14,6 +15,9 @@ from lpc_mdo.groups.condition_builders import (
 from lpc_mdo.vehicle.condition_kinds import HoverKind, num_lift_pairs
 
 DEFAULT_ROTOR_THICKNESS_TO_CHORD = 0.12
+#: KS scale (rad/s**2) of a control axis without a required acceleration: the available
+#: acceleration is reported to within ln(2 num_rotors)/rho times it (6e-4 rad/s**2 for 8 rotors).
+UNREQUIRED_SCALE = 0.01
 
 
 class HoverCondition(ConditionGroup):
@@ -37,8 +41,11 @@ class HoverCondition(ConditionGroup):
     (``lift_rotors[i].airfoil`` -> ``lift_thickness_to_chord``, of the thickness noise).
 
     Outputs: ``linear_acceleration``, ``angular_acceleration`` (1, 3); ``electrical_power``
-    (1,); ``lift_tip_mach``, ``lift_figure_of_merit``, ``lift_motor_torque_margin``,
-    ``lift_motor_em_torque`` (num_lift, 1); with acoustics ``total_spl_a`` (dBA).
+    (1,); ``lift_tip_mach``, ``lift_helical_tip_mach``, ``lift_figure_of_merit``,
+    ``lift_motor_torque_margin``, ``lift_motor_em_torque`` (num_lift, 1); ``control_acceleration``
+    (3,): the roll, pitch and yaw acceleration the running rotors can add within their motors'
+    peak torque (:class:`~lpc_mdo.components.dynamics.control_reserve.ControlReserveComp`); with
+    acoustics ``total_spl_a`` (dBA).
     """
 
     declaration = HoverKind
@@ -73,6 +80,26 @@ class HoverCondition(ConditionGroup):
         add_power(self, {"lift": len(rotors)})
         add_equations_of_motion(self, ["lift"])
         self.set_input_defaults("pitch", np.array([condition.pitch]), units="rad")  # 0, checked
+        required = np.array(vehicle.constraints.min_control_acceleration)
+        self.add_subsystem(
+            "control_reserve",
+            ControlReserveComp(
+                spin_direction=[r.spin_direction for r in rotors],
+                thrust_axis=[r.thrust_axis for r in rotors],
+                # KS relative to the required accelerations; where none is required, to
+                # UNREQUIRED_SCALE (the reported value then within ln(2 n)/rho of it)
+                acceleration_scale=tuple(np.where(required > 0.0, required, UNREQUIRED_SCALE)),
+            ),
+            promotes_inputs=[
+                ("thrust", "lift_thrust"),
+                ("torque", "lift_torque"),
+                ("torque_margin", "lift_motor_torque_margin"),
+                ("hub_position", "lift_hub_position"),
+                "cg",
+                "inertia",
+            ],
+            promotes_outputs=["control_acceleration"],
+        )
 
         acoustics = self.options["acoustics"]
         if acoustics is None:

@@ -1,5 +1,6 @@
 """Pitt–Peters rotor assembly: blade geometry, inflow states, loads, performance and hub loads."""
 
+from lpc_mdo.components.rotor.advance_ratio import EdgewiseAdvanceRatioComp
 from lpc_mdo.components.rotor.pitt_peters_inflow import PittPetersInflowComp
 from lpc_mdo.components.rotor.pitt_peters_loads import LOSS_PLACEMENTS, PittPetersLoadsComp
 from lpc_mdo.groups.bem_rotor import RotorGroupBase
@@ -66,8 +67,10 @@ class PittPetersRotorGroup(RotorGroupBase):
     inplane_force, hub_moment : (num_rotors, num_nodes, 2), N, N*m
         In-plane hub force and hub moment along / about the disk e_x and e_y.
     power, thrust_coefficient, power_coefficient, advance_ratio, efficiency, figure_of_merit,
-    tip_mach : (num_rotors, num_nodes)
-        RotorPerformanceComp.
+    tip_mach, helical_tip_mach : (num_rotors, num_nodes)
+        RotorPerformanceComp (helical_tip_mach at the advancing blade).
+    edgewise_advance_ratio : (num_rotors, num_nodes)
+        mu = abs(inplane_velocity) / (Omega R) (EdgewiseAdvanceRatioComp).
     force, moment : (num_rotors, num_nodes, 3); total_force, total_moment : (num_nodes, 3)
         If ``body_frame`` (HubLoadsComp).
 
@@ -137,4 +140,9 @@ class PittPetersRotorGroup(RotorGroupBase):
         }
         self.add_subsystem("inflow", PittPetersInflowComp(**pp), promotes=["*"])
         self.add_subsystem("loads", PittPetersLoadsComp(**pp), promotes=["*"])
+        self.add_subsystem(
+            "advance_ratio",
+            EdgewiseAdvanceRatioComp(num_rotors=geo["num_rotors"], num_nodes=opts["num_nodes"]),
+            promotes=["*"],
+        )
         return True  # edgewise model: in-plane forces and hub moments

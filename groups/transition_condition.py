@@ -27,7 +27,7 @@ class TransitionCondition(ConditionGroup):
     value). The paper prescribes it from a transition trajectory flown by its 3724 kg vehicle;
     a vehicle of another weight cannot fly that attitude schedule: the itemised reference
     (3067 kg) lifts more than its weight on the wing alone at points 2-5 at the prescribed
-    pitch, with the lift rotors at their lowest speed (measured 2026-12-04; docs
+    pitch, with the lift rotors at their lowest speed (measured; docs
     theory/dynamics 'Design conditions').
 
     The rotors turn at their pair's ``lift_rpm`` (1, 4; the paper's per-pair speed)

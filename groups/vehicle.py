@@ -13,7 +13,9 @@ from lpc_mdo.components.dynamics.body_pitching_moment import (
 )
 from lpc_mdo.components.geometry.blade import BLADE_OUTPUTS, BladeGeometryGroup
 from lpc_mdo.components.geometry.cranked_planform import CrankedPlanformComp, SectionLayout
+from lpc_mdo.components.geometry.minimum_chord import BladeChordMarginComp
 from lpc_mdo.components.geometry.planform import PlanformMeshComp
+from lpc_mdo.components.geometry.rotor_clearance import RotorClearanceComp
 from lpc_mdo.components.geometry.rotor_layout import RotorLayoutComp
 from lpc_mdo.components.geometry.section_mesh import SectionMeshComp
 from lpc_mdo.components.geometry.surface_sizing import SurfaceSizingComp
@@ -31,6 +33,7 @@ from lpc_mdo.core.mpi import serial_comm
 from lpc_mdo.groups.motor import MotorDesignGroup
 from lpc_mdo.groups.weights import WeightsGroup, motor_group_indices
 from lpc_mdo.vehicle import reference_vehicle
+from lpc_mdo.vehicle.clearances import rotor_pairs, rotor_sides
 from lpc_mdo.vehicle.design_variable_registry import VEHICLE_DESIGN_VARIABLES
 
 # OpenMDAO notes, when a driver splits the model into systems before, in and after the
@@ -85,6 +88,9 @@ class VehicleGroup(om.Group):
     - ``wing_mesh``, ``htail_mesh`` (PlanformMeshComp): VLM meshes ``wing_mesh`` and
       ``horizontal_tail_mesh`` (cosine span-wise spacing, one chord-wise panel);
     - ``rotor_layout`` (RotorLayoutComp): hub positions, radii, radius intersection;
+    - ``rotor_clearance`` (RotorClearanceComp): plan-view clearances of the lift disks to each
+      other, the fuselage, the h-tail and the pusher (the rotors and pairs of
+      :mod:`lpc_mdo.vehicle.clearances`);
     - ``blades`` (BladeGeometryGroup, one row per rotor group): blade stations, chord and twist
       (``blade_chord``, ``blade_twist``, ``blade_station_radius``, ...) that every condition's
       rotor models read;
@@ -182,6 +188,16 @@ class VehicleGroup(om.Group):
                 ("twist_cp", "blade_twist_cp"),
             ],
             promotes_outputs=[(name, f"blade_{name}") for name in BLADE_OUTPUTS],
+        )
+        # The minimum-chord constraint's output (docs theory/rotors 'Minimum chord').
+        self.add_subsystem(
+            "blade_chord_margin",
+            BladeChordMarginComp(
+                num_rotors=len(rotors),
+                num_cp=len(vehicle.pusher.chord_cp),
+                min_chord_radius_ratio=vehicle.constraints.min_chord_radius_ratio,
+            ),
+            promotes=["*"],
         )
 
     def _add_section_wing(self, vehicle):
@@ -295,6 +311,18 @@ class VehicleGroup(om.Group):
             "wing_root_leading_edge", np.array(wing.root_leading_edge), units="m"
         )
         self.add_subsystem("rotor_layout", RotorLayoutComp(vehicle=vehicle), promotes=["*"])
+        self.add_subsystem(
+            "rotor_clearance",
+            RotorClearanceComp(
+                side=rotor_sides(vehicle),
+                rotor_pairs=rotor_pairs(vehicle),
+                fuselage_max_width=float(vehicle.fuselage.max_width),
+                num_groups=len(vehicle.lift_rotor_pairs) + 1,
+                pusher_row=len(vehicle.lift_rotor_pairs),
+                pusher_axis=tuple(vehicle.pusher.thrust_axis),
+            ),
+            promotes=["*"],
+        )
         self._add_blades(vehicle)
         # Multhopp sums of the fuselage and booms for the aerodynamic conditions' body moment
         # (docs theory/dynamics 'Fuselage, booms, camber and tail efficiency').

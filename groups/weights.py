@@ -20,7 +20,11 @@ import openmdao.api as om
 
 from lpc_mdo.components.weights.drive_system import DriveSystemMassComp
 from lpc_mdo.components.weights.gross_weight import GrossWeightComp
-from lpc_mdo.components.weights.item_placement import FuselageStationComp
+from lpc_mdo.components.weights.item_placement import (
+    NASA_LANDING_GEAR_STATION,
+    NASA_SYSTEMS_STATION,
+    TailConeShiftComp,
+)
 from lpc_mdo.components.weights.landing_gear import LandingGearMassComp
 from lpc_mdo.components.weights.mass_properties import MassItem, MassPropertiesComp
 from lpc_mdo.components.weights.power_electronics import PowerElectronicsMassComp
@@ -37,21 +41,11 @@ from lpc_mdo.components.weights.wing_secondary import WingSecondaryMassComp
 from lpc_mdo.core.checks import RangeCheck, check_choice
 from lpc_mdo.vehicle import reference_vehicle
 
-_FT = 0.3048
-#: NDARC fuselage length of the NASA LPC (GUAM build_Lift_plus_Cruise.m, f_ld = 29.93/6.13), m.
-NASA_FUSELAGE_LENGTH = 29.93 * _FT
-#: Fuselage stations (f_x = -x / L_fuselage, y, z; body frame, m) of the items that the NASA
-#: LPC NDARC weight statement places (GUAM build_Lift_plus_Cruise.m; GUAM frame in ft, x aft
-#: negative from the CAD origin: x_body = (x_guam + 2.464) 0.3048, z_body = (z_guam + 5.113)
-#: 0.3048): landing gear at (-13.325, 0, -1.391) ft, systems at (-16, 0, -6) ft. The Raymer
-#: system items without an NDARC position of their own sit at the NDARC systems cg.
-NASA_STATIONS = {
-    "landing_gear": (-(-13.32464336 + 2.464) * _FT / NASA_FUSELAGE_LENGTH, 0.0,
-                     (-1.391179415 + 5.113) * _FT),
-    "systems": (-(-16.0 + 2.464) * _FT / NASA_FUSELAGE_LENGTH, 0.0, (-6.0 + 5.113) * _FT),
-}  # fmt: skip
-#: Items placed at the NDARC systems station.
+#: Raymer system items (:data:`SYSTEM_ITEMS` without the furnishings, which sit with the seats)
+#: placed at NASA's systems station, in the equipment bay behind the cabin (docs theory/weights
+#: 'Positions').
 SYSTEMS_AT_NASA_STATION = ("flight_controls", "avionics", "electrical", "environmental_control")
+SYSTEM_CG_INPUTS = tuple(f"{name}_cg" for name in SYSTEMS_AT_NASA_STATION)
 
 
 def num_motors(vehicle=None):
@@ -251,10 +245,13 @@ class WeightsGroup(om.Group):
     Component masses, gross mass (paper eqs. 31-33) and mass properties of the whole vehicle.
 
     Subsystems (all variables promoted): ``fuselage``, ``booms``, ``empennage``
-    (M4 regressions, docs theory/weights 'M4 regressions'), ``wing`` (only with
-    ``wing_model='regression'``), ``power_electronics`` (:class:`PowerElectronicsMassComp`:
-    inverters and motor cables from the motors' current ratings, docs theory/weights 'Power
-    electronics and cables'), ``gross_weight`` (:class:`GrossWeightComp`) and
+    (M4 regressions, docs theory/weights 'M4 regressions'), ``tail_cone_items``
+    (:class:`~lpc_mdo.components.weights.item_placement.TailConeShiftComp`: the empennage and
+    the pusher's rotor, motor and gearbox ride on the tail end, docs theory/geometry 'Fuselage
+    zones'), ``wing`` (only with ``wing_model='regression'``), ``power_electronics``
+    (:class:`PowerElectronicsMassComp`: inverters and motor cables from the motors' current
+    ratings, docs theory/weights 'Power electronics and cables'), ``gross_weight``
+    (:class:`GrossWeightComp`) and
     ``mass_properties`` (:class:`MassPropertiesComp`, docs theory/weights 'Mass properties') over
     the bodies of :func:`vehicle_mass_items`. Input defaults come from the vehicle.
 
@@ -281,10 +278,19 @@ class WeightsGroup(om.Group):
     motor_mass : float, (9,), kg
         Mass of each motor (paper eq. 23), lift rotors in ``vehicle.lift_rotors`` order, then
         the pusher (see :func:`motor_group_indices`; default: the eq. 23 placeholder).
-    motor_cg : float, (9, 3), m
-        Motor cg; default the rotor hubs (assumption: the motor sits at its rotor's hub).
+    motor_reference_cg, rotor_reference_cg : float, (9, 3), m
+        Motor and rotor cg at the vehicle's fuselage length; default the rotor hubs (assumption:
+        the motor and its gearbox sit at the rotor's hub). The pusher's row moves with the tail
+        end (``tail_cone_items``, below); the outputs ``motor_cg`` and ``rotor_cg`` are what
+        the mass properties take.
     battery_cg : float, (3,), m
-        Default ``vehicle.battery.cg``.
+        Default ``vehicle.battery.cg`` (under the cabin floor in the reference vehicle).
+    landing_gear_cg : float, (3,), m
+        Default NASA's gear station, under the cabin floor
+        (:data:`~lpc_mdo.components.weights.item_placement.NASA_LANDING_GEAR_STATION`).
+    flight_controls_cg, avionics_cg, electrical_cg, environmental_control_cg : float, (3,), m
+        Default NASA's systems station, behind the cabin
+        (:data:`~lpc_mdo.components.weights.item_placement.NASA_SYSTEMS_STATION`).
     motor_current_rating : float, (9,), A
         Phase-current amplitude each motor draws at its peak torque (``motor_peak_current`` of
         its design), which rates its inverter and cable (default: the placeholder).
@@ -301,7 +307,11 @@ class WeightsGroup(om.Group):
     fuselage_mass, boom_mass, empennage_mass : float, (1,), kg
         Regression masses (and ``wing_mass`` with ``wing_model='regression'``).
     fuselage_cg, boom_cg, empennage_cg : float, (3,), m
-        Their cg, body frame.
+        Their cg, body frame: the fuselage's from its regression, the booms' at the vehicle's
+        fuselage length (they hang on the wing, which keeps its station), the empennage's
+        regression cg moved with the tail end (:class:`TailConeShiftComp`).
+    motor_cg, rotor_cg : float, (9, 3), m
+        Motor and rotor positions; the pusher's moves with the tail end.
     fuselage_inertia, boom_inertia, empennage_inertia : float, (3, 3), kg*m**2
         Their inertia about their own cg.
     power_electronics_mass : float, (1,), kg
@@ -397,8 +407,22 @@ class WeightsGroup(om.Group):
             ),
             promotes=["*"],
         )
-        self.add_subsystem("booms", BoomRegressionComp(mass_factor=factor), promotes=["*"])
-        self.add_subsystem("empennage", EmpennageRegressionComp(mass_factor=factor), promotes=["*"])
+        # The wing keeps its station when the fuselage is stretched, so do the booms it carries.
+        self.add_subsystem(
+            "booms",
+            BoomRegressionComp(mass_factor=factor, cg_fuselage_length=vehicle.fuselage.length),
+            promotes=["*"],
+        )
+        self.add_subsystem(
+            "empennage",
+            EmpennageRegressionComp(mass_factor=factor),
+            promotes_inputs=["*"],
+            promotes_outputs=[
+                "empennage_mass",
+                "empennage_inertia",
+                ("empennage_cg", "empennage_reference_cg"),
+            ],
+        )
         if wing_model == "regression":
             self.add_subsystem("wing", WingRegressionComp(), promotes=["*"])
         # Named items (docs theory/weights 'Mass items'): wing secondary structure (FLOPS),
@@ -415,9 +439,18 @@ class WeightsGroup(om.Group):
             ),
             promotes=["*"],
         )
-        stations = {"landing_gear": NASA_STATIONS["landing_gear"]}
-        stations.update({name: NASA_STATIONS["systems"] for name in SYSTEMS_AT_NASA_STATION})
-        self.add_subsystem("item_stations", FuselageStationComp(stations=stations), promotes=["*"])
+        # A fuselage stretch is a tail-cone plug (docs theory/geometry 'Fuselage zones'): what
+        # the tail end carries moves with it (the empennage; the pusher's rotor, motor and
+        # gearbox, the last row of the motors), everything ahead of the plug keeps its station.
+        pusher_row = [0] * len(vehicle.lift_rotors) + [1]
+        self.add_subsystem(
+            "tail_cone_items",
+            TailConeShiftComp(
+                items={"empennage": 1, "motor": pusher_row, "rotor": pusher_row},
+                reference_length=vehicle.fuselage.length,
+            ),
+            promotes=["*"],
+        )
         self.add_subsystem(
             "rotor_mass_model",
             RotorMassComp(num_blades=rotor_group_blades(vehicle)),
@@ -485,14 +518,16 @@ class WeightsGroup(om.Group):
             "battery_cg": (vehicle.battery.cg, "m"),
             "motor_mass": (placeholder["motor_mass"], "kg"),
             "motor_peak_torque": (placeholder["motor_peak_torque"], "N*m"),
-            "motor_cg": (
+            "motor_reference_cg": (
                 [r.hub_position for r in vehicle.lift_rotors] + [vehicle.pusher.hub_position],
                 "m",
             ),
-            "rotor_cg": (
+            "rotor_reference_cg": (
                 [r.hub_position for r in vehicle.lift_rotors] + [vehicle.pusher.hub_position],
                 "m",
             ),
+            "landing_gear_cg": (NASA_LANDING_GEAR_STATION, "m"),
+            **{name: (NASA_SYSTEMS_STATION, "m") for name in SYSTEM_CG_INPUTS},
             "design_gross_mass": (masses.design_gross_mass, "kg"),
             "wing_span": (vehicle.wing.span, "m"),
             "rotor_radius": (vehicle.design_variables["rotor_radius"].initial_array, "m"),

@@ -10,7 +10,7 @@ Trim tolerance
 A condition counts as trimmed when its largest driver-scaled trim residual is below
 :data:`TRIM_TOLERANCE` = 1e-3. The force rows are scaled by g abs(n) and the moment rows by
 1 rad/s**2, so this is 0.1 % of the weight (times the load factor) as a force: the criterion the
-project's issues use for the Table 6 trim rows ("trim rows < 0.1 % of W0") and the default limit
+project uses for the Table 6 trim rows ("trim rows < 0.1 % of W0") and the default limit
 of :func:`lpc_mdo.post.trim_residuals.trim_residual_table`. The same tolerance is the status
 band of the trim rows in the constraint status (:func:`trim_tolerances`); the other constraints
 use :data:`lpc_mdo.post.tables.DEFAULT_TOL`.
@@ -20,6 +20,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from lpc_mdo.api.weights import format_mass_properties, mass_properties
+from lpc_mdo.groups.vehicle_drag import lpc_drag_components
+from lpc_mdo.problems import build_analysis_problem
+from lpc_mdo.trim import problem_vehicle, single_condition_problem
+from lpc_mdo.trim import trim as trim_conditions
 from lpc_mdo.vehicle.condition_layout import condition_layout
 
 __all__ = [
@@ -106,9 +111,6 @@ def analyze_vehicle(
     Analysis
         The problem, left at the (trimmed) design and run, and the trim's outcome.
     """
-    from lpc_mdo.problems import build_analysis_problem
-    from lpc_mdo.trim import trim as trim_conditions
-
     prob = build_analysis_problem(
         vehicle, recorder_path=recorder_path, static_margin=static_margin, **options
     )
@@ -129,13 +131,11 @@ def analyze_vehicle(
 
 def format_mass_table(analysis):
     """
-    Return the mass, cg and inertia table per mass item of an analysis (issue 17 item 4).
+    Return the mass, cg and inertia table per mass item of an analysis.
 
     See :func:`lpc_mdo.api.weights.mass_properties`; NASA's cg of the LPC for comparison is in
     docs theory/weights 'Mass items'.
     """
-    from lpc_mdo.api.weights import format_mass_properties, mass_properties
-
     return format_mass_properties(mass_properties(analysis.prob, analysis.vehicle))
 
 
@@ -194,7 +194,7 @@ def format_trim_variables(prob, conditions=None):
     return "\n".join(lines)
 
 
-def static_margin_budget(prob, condition="cruise", wing_panels=None):
+def static_margin_budget(prob, condition=None, wing_panels=None):
     """
     Contributions to the static margin of a condition solved with the stability option.
 
@@ -210,10 +210,23 @@ def static_margin_budget(prob, condition="cruise", wing_panels=None):
     ``booms`` (the Munk-Multhopp couples,
     :mod:`lpc_mdo.components.dynamics.body_pitching_moment`); the airfoils' cm0, a couple
     independent of alpha, moves the trim but not the neutral point.
-    Returns a dict part ->
-    dSM and ``total`` (equal to the model's ``static_margin``).
+
+    Parameters
+    ----------
+    prob : om.Problem
+        A run LPC problem that holds the condition.
+    condition : str or None
+        The condition; None: the mission's design cruise condition
+        (``mission.cruise_condition`` of the problem's vehicle).
+    wing_panels : int or None
+        Spanwise panels of the wing in the lattice (None: from ``wing_sectional_cl``).
+
+    Returns
+    -------
+    dict
+        Part -> dSM, and ``total`` (equal to the model's ``static_margin``).
     """
-    c = condition
+    c = condition or problem_vehicle(prob).mission.cruise_condition
     delta = prob.model._get_subsystem(f"{c}.stability_derivatives").options["delta"]
     x_cg = prob.get_val(f"{c}.static_margin.cg_x", units="m")[0]
     mac = prob.get_val(f"{c}.static_margin.mean_aerodynamic_chord", units="m")[0]
@@ -252,8 +265,22 @@ def static_margin_budget(prob, condition="cruise", wing_panels=None):
     return budget
 
 
-def format_static_margin_budget(prob, condition="cruise"):
-    """One line per part of :func:`static_margin_budget`, for ``lpc-mdo analyze``."""
+def format_static_margin_budget(prob, condition=None):
+    """
+    Return one line per part of :func:`static_margin_budget`, for ``lpc-mdo analyze``.
+
+    Parameters
+    ----------
+    prob : om.Problem
+        A run LPC problem that holds the condition.
+    condition : str or None
+        The condition; None: the mission's design cruise condition.
+
+    Returns
+    -------
+    str
+    """
+    condition = condition or problem_vehicle(prob).mission.cruise_condition
     budget = static_margin_budget(prob, condition)
     model = prob.get_val(f"{condition}.static_margin")[0]
     lines = [f"    {name:<16s} {value:+.4f}" for name, value in budget.items()]
@@ -268,8 +295,6 @@ def format_drag_breakdown(prob, vehicle=None):
     (then the lumped drag area and the leakage/protuberance allowance); conditions without a
     ``drag_breakdown`` output (hover) are skipped.
     """
-    from lpc_mdo.groups.vehicle_drag import lpc_drag_components
-
     vehicle = vehicle or prob.vehicle
     comps, _ = lpc_drag_components(vehicle)
     names = [c.name for c in comps] + ["lumped", "allowance"]
@@ -351,9 +376,6 @@ def lift_to_drag(prob, condition=None, pitch_deg=None):
         ``CL_at_max`` (the sweep's largest ratio, refined by a parabola through its
         neighbours).
     """
-    from lpc_mdo.trim import problem_vehicle, single_condition_problem
-    from lpc_mdo.vehicle.condition_layout import condition_layout
-
     vehicle = problem_vehicle(prob)
     condition = condition or vehicle.mission.cruise_condition
     pitch_deg = np.arange(-2.0, 14.0 + 1e-9, 1.0) if pitch_deg is None else np.asarray(pitch_deg)

@@ -22,8 +22,35 @@ import traceback
 from pathlib import Path
 
 import numpy as np
+import openmdao.api as om
 
+from lpc_mdo import drivers, study_plan, warm_start
+from lpc_mdo.analysis import (
+    TRIM_TOLERANCE,
+    airframe_lift_drag,
+    analyze_vehicle,
+    format_drag_breakdown,
+    format_mass_table,
+    format_static_margin_budget,
+    format_trim_variables,
+    lift_to_drag,
+    trim_tolerances,
+)
+from lpc_mdo.api.weights import format_mass_breakdown, mass_breakdown
 from lpc_mdo.core.checks import check_choice, check_integer, check_number
+from lpc_mdo.post.report import _CASE_SUFFIXES, ReportSpec, find_case_files, write_report
+from lpc_mdo.post.tables import (
+    DEFAULT_TOL,
+    constraint_rows,
+    constraint_table,
+    format_constraint_status,
+)
+from lpc_mdo.progress import interrupt_message
+from lpc_mdo.sensitivities import sensitivities_from_case, sensitivities_path
+from lpc_mdo.sweep_parameters import PAPER_SWEEPS, SWEEP_PARAMETERS, reference_value, sweep_vehicle
+from lpc_mdo.sweeps import run_sweep
+from lpc_mdo.vehicle import VehicleSpecError, load_vehicle
+from lpc_mdo.vehicle.condition_contract import condition_kind
 
 #: Exit code of a user error (as argparse's own), of a bug, and of Ctrl-C.
 EXIT_USER_ERROR, EXIT_BUG, EXIT_INTERRUPTED = 2, 1, 130
@@ -35,7 +62,6 @@ CASE_FILE_TEXT = (
     "an OpenMDAO case file (SQLite) written by lpc-mdo optimize or analyze, "
     "e.g. optimize_out/full.sql"
 )
-OPTIMIZERS = ("IPOPT", "SNOPT", "SLSQP")
 
 
 class CLIError(Exception):
@@ -119,9 +145,7 @@ def optimizer_problem(name):
     str or None
         What is missing and what to install.
     """
-    from lpc_mdo.drivers import pyoptsparse_optimizers
-
-    if name == "SLSQP" or name in pyoptsparse_optimizers():
+    if name == "SLSQP" or name in drivers.pyoptsparse_optimizers():
         return None
     if name == "SNOPT":
         return (
@@ -129,7 +153,7 @@ def optimizer_problem(name):
             "here (SNOPT is licensed: build pyoptsparse with your SNOPT source, e.g. OpenMDAO's "
             "build_pyoptsparse), or use IPOPT (pip install 'lpc-mdo[ipopt]') or SLSQP"
         )
-    try:
+    try:  # optional dependency, imported only to see whether it is there
         import cyipopt  # noqa: F401
     except ImportError:
         return (
@@ -143,7 +167,7 @@ def _optimizer(flag):
     """Return an argparse type: an optimizer name (any case) that can run here."""
 
     def parse(text):
-        name = check_choice(flag, text.upper(), OPTIMIZERS, error=CLIError)
+        name = check_choice(flag, text.upper(), drivers.KNOWN_OPTIMIZERS, error=CLIError)
         missing = optimizer_problem(name)
         if missing:
             raise CLIError(f"'{flag}' = {text!r} is not available: {missing}")
@@ -302,8 +326,6 @@ def open_case_file(flag, path, need_final=False, vehicle=None, given=None):
     CLIError
         Naming the argument, the file and what is wrong.
     """
-    import openmdao.api as om
-
     text = os.fspath(path)
     what = CASE_FILE_TEXT
 
@@ -389,8 +411,6 @@ def load_vehicle_argument(flag, path):
     CLIError
         For a file that is not text (e.g. a case file given as a vehicle file).
     """
-    from lpc_mdo.vehicle import VehicleSpecError, load_vehicle
-
     allowed = "a vehicle TOML file (UTF-8 text), e.g. a copy of lpc_mdo/data/lpc_reference.toml"
     if path is not None:
         with open(path, "rb") as fh:
@@ -419,12 +439,9 @@ def _preflight(args):
     if command == "analyze" and args.n2:
         check_output_file("--n2", args.n2)
     if command in ("optimize", "sweep"):
-        from lpc_mdo.warm_start import DEFAULT_SEQUENCE, default_optimizer
-
         if args.optimizer is None:  # a given --optimizer was checked by its type
-            needed = {default_optimizer(args.problem)}
-            if args.problem == "sequence":
-                needed = {default_optimizer(name) for name in DEFAULT_SEQUENCE}
+            names = study_plan.SEQUENCE if args.problem == "sequence" else [args.problem]
+            needed = {study_plan.default_optimizer(name) for name in names}
             for name in sorted(needed):
                 missing = optimizer_problem(name)
                 if missing:
@@ -435,7 +452,7 @@ def _preflight(args):
         if command == "sweep":
             _check_sweep_values(args)
             if args.mpi:
-                try:
+                try:  # optional dependency, imported only to see whether it is there
                     import mpi4py  # noqa: F401
                 except ImportError as err:
                     raise CLIError(
@@ -451,8 +468,6 @@ def _preflight(args):
 
 
 def _check_sweep_values(args):
-    from lpc_mdo.sweeps import SWEEP_PARAMETERS, sweep_vehicle
-
     if not args.values:
         if args.parameter != "all" and not SWEEP_PARAMETERS[args.parameter][2]:
             raise CLIError(
@@ -488,7 +503,6 @@ def _check_sweep_values(args):
 
 
 def _check_report_cases(cases):
-    from lpc_mdo.post.report import _CASE_SUFFIXES, find_case_files
 
     given = None
     if Path(cases).is_dir():
@@ -526,7 +540,7 @@ def _analyze_header(analysis, args):
             f"  {len(prob.model.condition_names)} design conditions, "
             f"{sum(m['size'] for m in dvs.values())} design variables, "
             f"{sum(m['size'] for m in cons.values() if not m['linear'])} constraints, "
-            f"{sum(m['size'] for m in cons.values() if m['linear'])} linear rotor-speed bounds",
+            f"{sum(m['size'] for m in cons.values() if m['linear'])} linear bounds",
             f"  wing: S = {prob.get_val('wing_area')[0]:.2f} m^2, "
             f"AR = {prob.get_val('wing_aspect_ratio')[0]:.2f}, "
             f"span = {prob.get_val('wing_span')[0]:.2f} m; fuselage "
@@ -537,17 +551,12 @@ def _analyze_header(analysis, args):
 
 
 def _analyze_masses(analysis, args):
-    from lpc_mdo.analysis import format_mass_table
-    from lpc_mdo.api.weights import format_mass_breakdown, mass_breakdown
-
     return "\n\n".join(
         [format_mass_breakdown(mass_breakdown(analysis.prob)), format_mass_table(analysis)]
     )
 
 
 def _analyze_conditions(analysis, args):
-    from lpc_mdo.vehicle.condition_contract import condition_kind
-
     prob, vehicle = analysis.prob, analysis.vehicle
     trim = analysis.trim.conditions if analysis.trim else {}
     lines = [
@@ -580,16 +589,11 @@ def _analyze_conditions(analysis, args):
 
 
 def _analyze_trim_variables(analysis, args):
-    from lpc_mdo.analysis import format_trim_variables
-
     title = "trim variables" if analysis.trimmed else "trim variables (initial values, not trimmed)"
     return f"  {title}:\n" + format_trim_variables(analysis.prob)
 
 
 def _analyze_constraints(analysis, args):
-    from lpc_mdo.analysis import TRIM_TOLERANCE, trim_tolerances
-    from lpc_mdo.post.tables import DEFAULT_TOL, constraint_rows, format_constraint_status
-
     rows = constraint_rows(str(args.case_file), case="final", tols=trim_tolerances(analysis.prob))
     return (
         f"  constraints (status band: {DEFAULT_TOL:g} of the limit or scaling reference; trim "
@@ -598,8 +602,6 @@ def _analyze_constraints(analysis, args):
 
 
 def _analyze_summary(analysis, args):
-    from lpc_mdo.vehicle.condition_contract import condition_kind
-
     prob, vehicle = analysis.prob, analysis.vehicle
     summary = [f"final state of charge {prob.get_val('state_of_charge')[0]:.3f}"]
     for condition in prob.model.conditions:
@@ -622,24 +624,18 @@ def _analyze_summary(analysis, args):
 
 
 def _analyze_static_margin_budget(analysis, args):
-    from lpc_mdo.analysis import format_static_margin_budget
-
     prob, cruise = analysis.prob, analysis.vehicle.mission.cruise_condition
     if cruise not in prob.model.condition_names or args.no_static_margin:
         return f"  static-margin budget: {cruise} has no stability solve"
-    title = f"static-margin budget of {cruise} (dSM per part, issue 16 item 4)"
+    title = f"static-margin budget of {cruise} (dSM per part)"
     return f"  {title}:\n" + format_static_margin_budget(prob, cruise)
 
 
 def _analyze_drag(analysis, args):
-    from lpc_mdo.analysis import format_drag_breakdown
-
     return format_drag_breakdown(analysis.prob)
 
 
 def _analyze_lift_to_drag(analysis, args):
-    from lpc_mdo.analysis import airframe_lift_drag, lift_to_drag
-
     prob, cruise = analysis.prob, analysis.vehicle.mission.cruise_condition
     if cruise not in prob.model.condition_names:
         return f"  lift-to-drag: {cruise} is not in the model"
@@ -671,11 +667,6 @@ ANALYZE_SECTIONS = (
 
 
 def _analyze(args):
-    import openmdao.api as om
-
-    from lpc_mdo.analysis import analyze_vehicle, trim_tolerances
-    from lpc_mdo.post.tables import constraint_table
-
     out = Path(args.output_dir)
     out.mkdir(parents=True, exist_ok=True)
     case_file = args.case_file = out / "cases.sql"
@@ -720,11 +711,11 @@ def _silent(message):
 
 
 def _optimize(args):
-    from lpc_mdo.warm_start import FULL_PROBLEMS, run_sequence, solve_baseline, solve_stage
-
     out = Path(args.output_dir)
     out.mkdir(parents=True, exist_ok=True)
-    settings = {"max_iter": args.max_iter}
+    settings = {}
+    if args.max_iter is not None:
+        settings["max_iter"] = args.max_iter
     if args.tol is not None:
         settings["tol"] = args.tol
     if args.quiet:
@@ -744,7 +735,7 @@ def _optimize(args):
     # 'final' case of the interrupted point.
     try:
         if args.problem == "sequence":
-            results = run_sequence(
+            results = warm_start.run_sequence(
                 str(out),
                 optimizer=args.optimizer,
                 full_optimizer=args.optimizer,
@@ -754,21 +745,19 @@ def _optimize(args):
             return 0 if all(r.success for r in results) else 1
         case_file = out / f"{args.problem}.sql"
         if args.problem == "baseline":  # continuation in alpha (paper eq. 8)
-            stage = solve_baseline(
+            stage = warm_start.solve_baseline(
                 str(case_file), start_case=args.start_case, optimizer=args.optimizer, **common
             )
         else:
-            stage = solve_stage(
+            stage = warm_start.solve_stage(
                 args.problem,
                 str(case_file),
                 start_case=args.start_case,
                 optimizer=args.optimizer,
-                rescale=(args.problem in FULL_PROBLEMS and args.start_case is not None),
+                rescale=study_plan.stage(args.problem).rescales and args.start_case is not None,
                 **common,
             )
     except KeyboardInterrupt:
-        from lpc_mdo.progress import interrupt_message
-
         # What each case file of the output folder holds (driver cases, a 'final' case or not).
         print(f"lpc-mdo: {interrupt_message(out)}", file=sys.stderr)
         return 130
@@ -778,16 +767,12 @@ def _optimize(args):
 
 def _sweep_example(vehicle, parameter):
     """Two values either side of the vehicle's own, for an error message."""
-    from lpc_mdo.sweeps import reference_value
-
     ref = reference_value(vehicle, parameter)
     step = 0.05 * abs(ref) if ref else 0.01
     return f"{ref - step:g} {ref + step:g}"
 
 
 def _sweep(args):
-    from lpc_mdo.sweeps import PAPER_SWEEPS, run_sweep
-
     parameters = list(PAPER_SWEEPS) if args.parameter == "all" else [args.parameter]
     values = {parameters[0]: args.values} if args.values else None  # checked by _preflight
     margins = {"on": (True,), "off": (False,), "both": (True, False)}[args.static_margin]
@@ -817,13 +802,7 @@ def _sweep(args):
 
 
 def _report(args):
-    from lpc_mdo.post.report import ReportSpec, find_case_files, write_report
-
     if args.sensitivities:
-        import openmdao.api as om
-
-        from lpc_mdo.sensitivities import sensitivities_from_case, sensitivities_path
-
         for label, path in find_case_files(args.cases):
             sidecar = sensitivities_path(path)
             if sidecar.is_file():
@@ -856,6 +835,47 @@ def _add_debug(parser, default):
     )
 
 
+def _problem_help():
+    """Help of ``optimize --problem``: every stage of the stage table and the sequence."""
+    stages = "; ".join(f"{s.name}: {s.summary}" for s in study_plan.STAGES)
+    return (
+        f"the stage to solve (lpc_mdo.study_plan): {stages}; or sequence (default): "
+        f"{', '.join(study_plan.SEQUENCE)} in turn, each from the previous one's final case"
+    )
+
+
+def _optimizer_help():
+    """Help of ``--optimizer``: the default optimizer of each stage, from the stage table."""
+    stages = {}
+    for s in study_plan.STAGES:
+        stages.setdefault(s.optimizer, []).append(s.name)
+    words = {study_plan.SQP: "SQP (SNOPT if pyoptsparse has it, else SLSQP)"}
+    parts = [f"{words.get(name, name)} for {', '.join(names)}" for name, names in stages.items()]
+    return "default: the stage's, " + "; ".join(parts)
+
+
+def _max_iter_help():
+    """Help of ``optimize --max-iter``: the stages' iteration limits, from the stage table."""
+    limits = {
+        options.max_iter
+        for s in study_plan.STAGES
+        for table in (s.options, s.sequence_options or {})
+        for options in table.values()
+        if options.max_iter is not None
+    }
+    return f"iteration limit (default: the stage's, {', '.join(map(str, sorted(limits)))})"
+
+
+def _tol_help():
+    """Help of ``optimize --tol``: the full problem's SLSQP tolerance, from the stage table."""
+    tol = f"{study_plan.stage('full').optimizer_options('SLSQP').tol:.0e}".replace("e-0", "e-")
+    return (
+        f"optimizer tolerance (default: the stage's; SLSQP {tol} on the full problem). "
+        "E.g. 1e-6 with --max-iter 150 from a full.sql polishes an optimum before reading its "
+        "post-optimal sensitivities"
+    )
+
+
 def build_parser():
     """
     Return the argument parser of the ``lpc-mdo`` command.
@@ -865,9 +885,6 @@ def build_parser():
     argparse.ArgumentParser
         Its errors raise :class:`CLIError`.
     """
-    from lpc_mdo.problems import PROBLEM_NAMES
-    from lpc_mdo.sweeps import SWEEP_PARAMETERS
-
     parser = _Parser(
         prog="lpc-mdo",
         description="Analyze, optimize, sweep and report the NASA lift-plus-cruise eVTOL.",
@@ -920,28 +937,24 @@ def build_parser():
     optimize.add_argument(
         "--problem",
         default="sequence",
-        choices=(*PROBLEM_NAMES, "sequence"),
-        help="which problem (default: the whole warm-start sequence)",
+        choices=(*study_plan.STAGE_NAMES, "sequence"),
+        help=_problem_help(),
     )
     optimize.add_argument(
         "--optimizer",
         type=_optimizer("--optimizer"),
         default=None,
-        choices=OPTIMIZERS,
-        help="default: SLSQP for the rotor presizing and subproblems 1 and 3, IPOPT for "
-        "subproblems 2 and 4, SQP (SNOPT if pyoptsparse has it, else SLSQP) for full and "
-        "baseline",
+        choices=drivers.KNOWN_OPTIMIZERS,
+        help=_optimizer_help(),
     )
     optimize.add_argument(
-        "--max-iter", type=positive["--max-iter"], default=200, help="iteration limit"
+        "--max-iter", type=positive["--max-iter"], default=None, help=_max_iter_help()
     )
     optimize.add_argument(
         "--tol",
         type=_finite_float("--tol", lower=0.0, lower_open=True),
         default=None,
-        help="optimizer tolerance (default: the problem's; SLSQP 3e-4 on the full problem). "
-        "E.g. 1e-6 with --max-iter 150 from a full.sql polishes an optimum before reading its "
-        "post-optimal sensitivities",
+        help=_tol_help(),
     )
     optimize.add_argument("--vehicle", type=vehicle_type, default=None, help="vehicle TOML file")
     optimize.add_argument(
@@ -1004,7 +1017,7 @@ def build_parser():
     sweep.add_argument(
         "--problem",
         default="full",
-        choices=PROBLEM_NAMES,
+        choices=study_plan.STAGE_NAMES,
         help="problem each point solves (default: full)",
     )
     sweep.add_argument(
@@ -1014,7 +1027,7 @@ def build_parser():
         "--optimizer",
         type=_optimizer("--optimizer"),
         default=None,
-        choices=OPTIMIZERS,
+        choices=drivers.KNOWN_OPTIMIZERS,
         help="default: as optimize (SNOPT if pyoptsparse has it, else SLSQP)",
     )
     sweep.add_argument("--vehicle", type=vehicle_type, default=None, help="vehicle TOML file")
@@ -1048,8 +1061,6 @@ def build_parser():
 
 def _user_error(err):
     """Whether an exception is a user error: CLIError, VehicleSpecError, lpc_mdo's ValueError."""
-    from lpc_mdo.vehicle import VehicleSpecError
-
     if isinstance(err, (CLIError, VehicleSpecError)):
         return True
     if not isinstance(err, ValueError) or err.__traceback__ is None:

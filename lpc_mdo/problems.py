@@ -4,9 +4,10 @@
 an :class:`~lpc_mdo.groups.lpc.LPCGroup` from the condition contracts
 (:mod:`lpc_mdo.vehicle.condition_contract`): each condition's design variables, its trim rows (paper
 Table 6) and its other constraints come from the class of its kind, the vehicle-level ones
-(state of charge, radius intersection, torque margins) from here. The subproblems of the
-warm start (Table 2) select conditions by kind, never by name, so a vehicle file with other or
-more conditions gets the same problems. :func:`build_problem` and
+(state of charge, radius intersection, torque margins) from here. The stages of the warm
+start (:mod:`lpc_mdo.study_plan`; the subproblems of Table 2) select conditions by kind, never
+by name, so a vehicle file with other or more conditions gets the same problems.
+:func:`build_problem` (a stage's problem and driver, as the stage table declares them) and
 :func:`build_analysis_problem` put model, problem and driver together.
 """
 
@@ -16,9 +17,12 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.design_deviation import DesignDeviationComp
+from lpc_mdo.drivers import make_driver
 from lpc_mdo.groups.lpc import LPCGroup, included_conditions, openmdao_units
 from lpc_mdo.recorder import CaseRecorder
+from lpc_mdo.study_plan import default_optimizer, stage
 from lpc_mdo.vehicle import load_vehicle, reference_vehicle
+from lpc_mdo.vehicle.clearances import clearance_constraints
 from lpc_mdo.vehicle.condition_contract import condition_kind
 from lpc_mdo.vehicle.condition_layout import condition_layout
 from lpc_mdo.vehicle.design_variable_registry import BASELINE_SET
@@ -35,6 +39,8 @@ CONSTRAINT_KINDS = (
     "radius_intersection",
     "torque_margin",
     "rotor_speed",
+    "advance_ratio",
+    "min_chord",
     "voltage_margin",
 )
 #: Finer kinds a subproblem may name instead of 'torque_margin' or 'voltage_margin' (which mean
@@ -49,8 +55,14 @@ TORQUE_MARGIN_KINDS = (
     "lift_voltage_margin",
     "pusher_voltage_margin",
 )
-#: Kinds beyond paper Table 6 declared only when a problem names them (none at present).
-OPTIONAL_CONSTRAINT_KINDS = ()
+#: Kinds beyond paper Table 6 declared only when a problem names them: ``clearance``, the
+#: plan-view clearances of the lift disks (lpc_mdo.vehicle.clearances), and ``control_reserve``,
+#: the hover and OEI roll and pitch control reserve. With them the warm-started sequence does not
+#: converge yet (measured: infeasible after 220 full-problem iterations): the
+#: radius-intersection equality and the 2 in rotor-to-rotor clearance together need a wing span
+#: of at least 18.1 m, and at the initial motors the OEI reserve is negative. Name them in
+#: ``constraint_kinds`` to constrain them.
+OPTIONAL_CONSTRAINT_KINDS = ("clearance", "control_reserve")
 # Paper eq. 8-9: the penalty weight alpha of the baseline problem (its set S is the registry's
 # BASELINE_SET, every sizing variable; the operating variables are free).
 BASELINE_ALPHA = 100.0
@@ -298,6 +310,11 @@ def declare_problem(
         model.add_constraint("state_of_charge", lower=limits.min_final_soc, ref=0.1)
     if "radius_intersection" in wanted:
         model.add_constraint("radius_intersection", equals=limits.radius_intersection, ref=0.1)
+    for con in clearance_constraints(vehicle):  # lpc_mdo.vehicle.clearances
+        if con.kind in wanted:
+            model.add_constraint(con.output, **con.options)
+    if "min_chord" in wanted:  # every chord control point >= f R (linear; docs theory/rotors)
+        model.add_constraint("blade_chord_margin", lower=0.0, ref=0.01, linear=True)
     motor_sets = set()
     for c in conditions:
         motor_sets.update(condition_kind(c.kind).motor_sets(vehicle, c))
@@ -424,111 +441,6 @@ def build_analysis_problem(
     return prob
 
 
-# IPOPT's "acceptable" termination for every problem built here: stop once the scaled NLP
-# error has stayed below 1e-4 (constraints within 1e-4, i.e. 1e-3 m/s^2 or 1e-4 of the weight
-# on the trim rows, scaled by g) for 10 iterations. Without it, degenerate stages crawl on:
-# subproblem 4 reaches its optimum by iteration ~30 and then runs to the iteration limit with
-# the h-tail aspect ratio drifting along a flat valley; subproblem 1 reaches 1e-6 .. 3e-5
-# infeasibility by iteration ~70 and then circles there (L-BFGS steps of 1e-3) until it
-# diverges to 0.5 (measured).
-IPOPT_SETTINGS = {"acceptable_tol": 1e-4, "acceptable_iter": 10, "acceptable_constr_viol_tol": 1e-4}
-
-# Paper Table 2: each subproblem's conditions (by kind), vehicle-level design variables and
-# constraint kinds. The design variables of the included conditions (rotor speeds, pitch,
-# elevator) always come with them.
-SUBPROBLEMS = {
-    "subproblem_1": {
-        "kinds": ["hover", "transition", "steady"],
-        "design_variables": [
-            "battery_mass",
-            ("motor_length", [4]),
-            ("motor_rated_current", [4]),
-            # Table 2 names the rotors as the sized subsystem without listing
-            # their blade variables; without them the hover noise limit
-            # (89 dBA at the initial design) has no lever but rpm.
-            ("rotor_radius", [0, 1, 2, 3, 4]),
-            "blade_chord_cp",
-            "blade_twist_cp",
-        ],
-        # Subproblem 1 sizes the pusher motor; the lift motors are subproblem 2's (Table 2), so
-        # their margins, which the rotor speeds alone cannot restore, are left to it.
-        "constraint_kinds": [
-            "trim",
-            "noise",
-            "soc",
-            "pusher_torque_margin",
-            "pusher_voltage_margin",
-            "rotor_speed",
-        ],
-        # The battery within +-20 % of its initial mass (the reference code's bounds). With the
-        # vehicle file's wider bounds (400-1400 kg, for the energy-density sweep) IPOPT's first
-        # steps cut the battery to 505 kg at 95 dBA and it then wandered (noise 70-77 dBA) to
-        # its 400-iteration limit; with this trust region it converged in 71 iterations (96 s,
-        # measured 2026-11-22). The full problem then has the whole range.
-        "trust_region": {"battery_mass": 0.2},
-    },
-    "subproblem_2": {
-        "kinds": ["oei"],
-        "design_variables": [
-            ("motor_length", [0, 1, 2, 3]),
-            ("motor_rated_current", [0, 1, 2, 3]),
-        ],
-        "constraint_kinds": ["trim", "lift_torque_margin", "lift_voltage_margin"],
-    },
-    "subproblem_3": {
-        "kinds": ["structural"],
-        "design_variables": [
-            "front_spar_thickness",
-            "rear_spar_thickness",
-            "top_skin_thickness",
-            "bottom_skin_thickness",
-        ],
-        "constraint_kinds": ["trim", "buckling", "stress"],
-    },
-    # Table 2 sizes the planform in cruise alone; climb and descent are added (with their trim
-    # variables): alone, cruise drives wing and tail to their lower bounds with the pitch at its
-    # 10 deg limit, and the full problem then starts with climb and descent untrimmable
-    # (scaled trim residuals 0.5; measured 2026-11-22).
-    "subproblem_4": {
-        "kinds": ["steady"],
-        "design_variables": [
-            "wing_area",
-            "wing_aspect_ratio",
-            "htail_area",
-            "htail_aspect_ratio",
-            "fuselage_length",
-        ],
-        "constraint_kinds": ["trim", "static_margin"],
-    },
-}
-# A stage before the paper's subproblems (not in the paper): the lift rotors sized for the hover
-# noise limit at minimum hover power. Subproblem 1 started from the reference rotors (96 dBA
-# when trimmed, limit 70) makes IPOPT crawl (inf_du 1e2-1e9, no progress in 300 iterations);
-# this hover-only stage converges in ~270 iterations and ~25 s, and leaves subproblem 1 a
-# noise-feasible start (measured 2026-11-22, see the optimization issue note).
-PRESIZING = {
-    "rotor_presizing": {
-        "kinds": ["hover"],
-        "design_variables": [
-            ("rotor_radius", [0, 1, 2, 3]),
-            ("blade_chord_cp", list(range(16))),
-            ("blade_twist_cp", list(range(16))),
-        ],
-        "constraint_kinds": ["trim", "noise", "tip_mach"],
-        # The electrical power of the (first) hover condition, W.
-        "objective": ("electrical_power", 5.0e5),
-        # With IPOPT (the sequence's default is SLSQP, lpc_mdo.warm_start.default_optimizer): a
-        # starting point for subproblem 1, not an answer: its L-BFGS iterates circle the
-        # optimum at 1e-3 (scaled) for hundreds of iterations, so stop there.
-        "driver_settings": {
-            "tol": 1e-3,
-            "acceptable_tol": 1e-3,
-            "acceptable_constr_viol_tol": 1e-3,
-        },
-    },
-}
-
-
 def conditions_of_kinds(vehicle, kinds):
     """Names of the vehicle's conditions of the given kinds, in vehicle-file order."""
     names = [c.name for c in vehicle.conditions if c.kind in kinds]
@@ -538,33 +450,6 @@ def conditions_of_kinds(vehicle, kinds):
             f"{[(c.name, c.kind) for c in vehicle.conditions]}"
         )
     return names
-
-
-# Paper Sec. II.F: the baseline design is the full problem with the objective of eq. 8.
-PROBLEM_NAMES = (*PRESIZING, *SUBPROBLEMS, "full", "baseline")
-
-# SLSQP on the full problem: SciPy stops when an iteration changes the scaled objective (gross
-# mass over the initial 3724 kg) by less than tol *and* every scaled constraint is within tol.
-# With 1e-6 (SciPy's default) or 1e-4 it never stopped: after ~150 evaluations (5 min) the
-# design is feasible to 1e-4 .. 2.5e-4 (noise +0.002 dB, OEI trim 2e-4 rad/s^2) and SLSQP's line
-# searches keep it there while gaining the last 0.05 % of gross mass for 250+ more iterations.
-# 3e-4 accepts that: trim rows within 3e-3 m/s^2 (0.03 % of the weight), noise within
-# 0.003 dB (measured 2026-11-22).
-# SciPy's feasibility test is on the *sum* of the scaled violations of ~150 constraint rows, so
-# a run can also creep for 150 more iterations with every row met to ~1e-4 .. 1e-3 (OEI and
-# transition pitch rows in rad/s^2): from one start perturbed by 2 %, 275 iterations, the last
-# 140 gaining 0.5 % (2657.7 -> 2644.4 kg) where four other starts stopped at 118-150 iterations
-# between 2652 and 2669 kg (measured 2026-12-05). The acceptable-point stop of
-# lpc_mdo.drivers.SlsqpDriver ends such a run when the iterate's largest scaled violation is
-# within tol (trim rows within 0.03 % of the weight, 3e-4 rad/s^2) and the best such iterate of
-# the last 12 iterations is within 0.05 % of gross mass (1.3 kg, about what SciPy's own test
-# accepts per iteration) of the current one.
-SLSQP_SETTINGS = {
-    "tol": 3e-4,
-    "acceptable_iter": 12,
-    "acceptable_obj_change": 5e-4,
-    "acceptable_constr_viol": 3e-4,
-}
 
 
 def trust_region_bounds(vehicle, fractions):
@@ -596,35 +481,39 @@ def build_problem(
     name,
     vehicle=None,
     static_margin=True,
-    optimizer="IPOPT",
+    optimizer=None,
     recorder_path=None,
     design_variable_refs=None,
     driver_settings=None,
     lateral_trim=False,
     comm=None,
+    in_sequence=False,
     **model_options,
 ):
     """
-    One of the paper's warm-start subproblems (Table 2) or the full problem (Table 6).
+    Return the problem of a stage of the study (:mod:`lpc_mdo.study_plan`) with its driver.
 
     Parameters
     ----------
     name : str
-        'rotor_presizing', 'subproblem_1' .. 'subproblem_4', 'full', or 'baseline' (the full
-        problem with the objective of eq. 8: the feasible design closest to the initial one).
+        A stage of :data:`lpc_mdo.study_plan.STAGE_NAMES`: 'rotor_presizing', the paper's
+        warm-start subproblems 'subproblem_1' .. 'subproblem_4' (Table 2), the full problem
+        'full' (Table 6), or 'baseline' (the full problem with the objective of eq. 8: the
+        feasible design closest to the initial one).
     vehicle : Vehicle, path or None
     static_margin : bool
         Include the cruise static-margin constraint (subproblem 4 and the full problem).
-    optimizer : str
-        For :func:`lpc_mdo.drivers.make_driver`.
+    optimizer : str or None
+        For :func:`lpc_mdo.drivers.make_driver` (None: the stage's,
+        :func:`lpc_mdo.study_plan.default_optimizer`).
     recorder_path : str or None
         One case file for the driver iterations and the final problem case (record it with
         ``prob.record('final')``).
     design_variable_refs : dict or None
         Design-variable scaling overrides (the warm start sets them from optimized magnitudes).
     driver_settings : dict or None
-        Passed to make_driver, over the defaults (IPOPT: :data:`IPOPT_SETTINGS` and the
-        stage's own).
+        Passed to make_driver, over the stage's settings of the optimizer
+        (:meth:`lpc_mdo.study_plan.Stage.driver_settings`).
     lateral_trim : bool
         Also constrain hover p_dot, the OEI v_dot and the transition v_dot. Paper Table 6
         counts them (96 constraints), but the first two vanish for every design (symmetry; no
@@ -635,6 +524,10 @@ def build_problem(
         (86 constraints) and the report evaluates all 96 at the final design.
     comm : MPI communicator or None
         The problem's communicator (MPI.COMM_SELF for one problem per rank, as in sweeps).
+    in_sequence : bool
+        The stage's optimizer settings as a step of the warm-start sequence
+        (``sequence_options`` of its :class:`~lpc_mdo.study_plan.Stage`) instead of those of
+        the problem solved on its own.
     **model_options
         Further :func:`declare_problem` options (:data:`PROBLEM_OPTIONS`) and model options
         (:class:`~lpc_mdo.groups.lpc.LPCGroup`; ``baseline_alpha`` of :class:`BaselineModel`).
@@ -644,49 +537,37 @@ def build_problem(
     om.Problem
         Set up, not run.
     """
-    from lpc_mdo.drivers import make_driver
-
-    if name not in PROBLEM_NAMES:
-        raise ValueError(f"problem name = {name!r}; allowed: {PROBLEM_NAMES}")
+    spec = stage(name)
+    optimizer = optimizer or default_optimizer(name)
     if vehicle is None or isinstance(vehicle, (str, os.PathLike)):
         vehicle = load_vehicle(vehicle)
-    spec = SUBPROBLEMS.get(name) or PRESIZING.get(name) or {}
     problem_options = {k: model_options.pop(k) for k in PROBLEM_OPTIONS if k in model_options}
-    conditions = conditions_of_kinds(vehicle, spec["kinds"]) if "kinds" in spec else None
-    objective = ("gross_mass", None)
-    if name == "baseline":
-        objective = ("baseline", None)
-    elif "objective" in spec:
-        output, ref = spec["objective"]
-        objective = (f"{conditions[0]}.{output}", ref)
-    problem_options.setdefault("objective", objective)
-    if "trust_region" in spec:
+    conditions = None if spec.every_condition else conditions_of_kinds(vehicle, spec.kinds)
+    output, ref = spec.objective
+    if output not in ("gross_mass", "baseline"):
+        output = f"{conditions[0]}.{output}"
+    problem_options.setdefault("objective", (output, ref))
+    if spec.trust_region:
         problem_options.setdefault(
-            "design_variable_bounds", trust_region_bounds(vehicle, spec["trust_region"])
+            "design_variable_bounds", trust_region_bounds(vehicle, spec.trust_region)
         )
-    model_cls = BaselineModel if name == "baseline" else LPCGroup
-    if name != "baseline":
+    baseline = output == "baseline"
+    if not baseline:
         model_options.pop("baseline_alpha", None)
+    model_cls = BaselineModel if baseline else LPCGroup
     model = model_cls(vehicle=vehicle, conditions=conditions, **model_options)
     declare_problem(
         model,
         vehicle,
         static_margin=static_margin,
-        design_variables=spec.get("design_variables"),
-        constraint_kinds=spec.get("constraint_kinds", CONSTRAINT_KINDS),
+        design_variables=spec.design_variables,
+        constraint_kinds=spec.constraint_kinds or CONSTRAINT_KINDS,
         design_variable_refs=design_variable_refs,
         lateral_trim=lateral_trim,
         **problem_options,
     )
     prob = om.Problem(model=model, name=name, reports=False, comm=comm)
-    settings = (
-        {**IPOPT_SETTINGS, **spec.get("driver_settings", {})}
-        if optimizer.upper() == "IPOPT"
-        else dict(SLSQP_SETTINGS)
-        if optimizer.upper() == "SLSQP"
-        else {}
-    )
-    settings.update(driver_settings or {})
+    settings = {**spec.driver_settings(optimizer, in_sequence), **(driver_settings or {})}
     prob.driver = make_driver(optimizer, **settings)
     if recorder_path is not None:
         attach_recorder(prob, recorder_path)

@@ -4,21 +4,26 @@
 (``prob.driver.add_recorder(ProgressLine('full'))`` before ``final_setup``), it prints the
 optimizer's iteration count (:func:`optimizer_iterations`: IPOPT's from its intermediate
 callback, SLSQP's from its gradient evaluations), the number of model evaluations (the driver
-cases recorded), the objective, the largest constraint violation (in the driver's scaled space,
-like IPOPT's ``inf_pr``) and the elapsed time each time the driver records a model evaluation,
+cases recorded), the objective, the largest constraint violation
+(:func:`lpc_mdo.drivers.scaling.max_violation`: in the driver's scaled space, like IPOPT's
+``inf_pr``) and the elapsed time each time the driver records a model evaluation,
 whatever the optimizer.
 
 :func:`trim_line` is the line of one trimmed condition and :func:`interrupt_message` the
 message after Ctrl-C that says what the case files hold.
 """
 
+import os
 import sys
 import time
+from pathlib import Path
 
 import numpy as np
+import openmdao.api as om
 from openmdao.recorders.case_recorder import CaseRecorder
 
 from lpc_mdo.core.checks import check_integer
+from lpc_mdo.drivers.scaling import max_violation
 
 
 class ProgressLine(CaseRecorder):
@@ -178,9 +183,6 @@ def interrupt_message(case_files):
     str
         One line: ``interrupted; <file>: <n> driver cases, a 'final' case ...`` for each file.
     """
-    import os
-    from pathlib import Path
-
     if isinstance(case_files, (str, os.PathLike)):
         case_files = [case_files]
     paths = []
@@ -192,8 +194,6 @@ def interrupt_message(case_files):
 
 
 def _case_file_summary(path):
-    import openmdao.api as om
-
     if not path.is_file():
         return f"{path.name} was not written"
     try:
@@ -206,27 +206,3 @@ def _case_file_summary(path):
     final = "a 'final' case" if "final" in names else "no 'final' case"
     plural = "" if driver_cases == 1 else "s"
     return f"{path.name} holds {driver_cases} driver case{plural} and {final}"
-
-
-def max_violation(driver):
-    """Largest constraint violation of a driver's current point, in its scaled space."""
-    from lpc_mdo.drivers.openmdao_internals import owning_problem
-    from lpc_mdo.trim import driver_scaling
-
-    values = driver.get_constraint_values(driver_scaling=False)
-    meta = owning_problem(driver).model.get_constraints()  # bounds as declared (unscaled)
-    worst = 0.0
-    for name, value in values.items():
-        m = meta.get(name)
-        if m is None:
-            continue
-        value = np.ravel(value)
-        if m["equals"] is not None:
-            viol = np.abs(value - np.ravel(m["equals"]))
-        else:
-            lower = -np.inf if m["lower"] is None else np.ravel(m["lower"])
-            upper = np.inf if m["upper"] is None else np.ravel(m["upper"])
-            viol = np.maximum(np.maximum(lower - value, value - upper), 0.0)
-        if viol.size:
-            worst = max(worst, float(np.max(np.abs(viol * driver_scaling(m)[0]))))
-    return worst

@@ -13,7 +13,7 @@ class CaseRecorder(om.SqliteRecorder):
     ``run_model`` and ``run_driver`` of a problem with a recorder. A stage of the warm-start
     sequence runs the model three or four times (the trim's runs, the driver, the final case),
     and for the full LPC model (712 systems, whose options hold the vehicle) each recording
-    took 1.9 s and added 712 rows to the case file (measured 2026-12-04: 2442 rows in a
+    took 1.9 s and added 712 rows to the case file (measured: 2442 rows in a
     full-problem case file). Here only the first run's metadata is recorded (OpenMDAO's run
     number None); the cases themselves are recorded as before, and ``CaseReader`` reads the
     system options of that first run. Nothing in lpc-mdo reads metadata per run.

@@ -18,9 +18,9 @@ of their bounds, in the optimizer's scaled space. This does not depend on which 
 nor on the multipliers it reports; the relative KKT residual of the fit says how well x* is a
 stationary point (a large residual means the sensitivities are not to be trusted).
 
-The parameters (:data:`SENSITIVITY_PARAMETERS`) are the ones issue 20 asks for: battery energy
-density, the final-SoC limit, the hover noise limit, payload, the static-margin limit and the
-cruise range. The regressions' design gross mass ``masses.design_gross_mass`` is held at the
+The parameters (:data:`SENSITIVITY_PARAMETERS`) are those a designer asks about first: battery
+energy density, the final-SoC limit, the hover noise limit, payload, the static-margin limit and
+the cruise range. The regressions' design gross mass ``masses.design_gross_mass`` is held at the
 vehicle file's value (as in the sweeps).
 """
 
@@ -29,20 +29,25 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 
 import numpy as np
+import openmdao.api as om
 from scipy.optimize import lsq_linear
 
-from lpc_mdo.sweeps import SWEEP_PARAMETERS, reference_value
+from lpc_mdo.drivers.scaling import driver_scaling
+from lpc_mdo.post.tables import Table
+from lpc_mdo.problems import build_problem, copy_design_variables
+from lpc_mdo.sweep_parameters import SWEEP_PARAMETERS, reference_value
+from lpc_mdo.vehicle import load_vehicle
 
 SENSITIVITIES_FORMAT = "lpc_mdo.sensitivities/1"
 
 #: A constraint or design variable is a candidate for the active set when its distance to a
 #: bound is at most this, in the optimizer's scaled units (the sign bounds of the fit give a
 #: candidate that is not active a multiplier of about zero). The full problem's SLSQP accepts
-#: constraints within 3e-4 (lpc_mdo.problems.SLSQP_SETTINGS); at an optimum stopped by its
+#: constraints within 3e-4 (its settings in lpc_mdo.study_plan); at an optimum stopped by its
 #: iteration limit the final-SoC constraint was 2e-4 off its bound, and with 1e-4 the fit left it
-#: out (KKT residual 0.48 against 0.020 with 1e-3; measured 2026-12-04).
+#: out (KKT residual 0.48 against 0.020 with 1e-3, measured).
 ACTIVE_TOL = 1e-3
-#: Above this relative KKT residual the report says the optimum should be polished first.
+#: Above this relative KKT residual the report shows no sensitivities, only how to polish first.
 LOOSE_KKT_RESIDUAL = 0.025
 
 
@@ -52,7 +57,7 @@ class SensitivityParameter:
     One parameter whose post-optimal sensitivity is reported.
 
     Its description and units are those of the sweep parameter of the same name
-    (:data:`lpc_mdo.sweeps.SWEEP_PARAMETERS`), which re-optimizes to check it.
+    (:data:`lpc_mdo.sweep_parameters.SWEEP_PARAMETERS`), which re-optimizes to check it.
 
     Attributes
     ----------
@@ -266,8 +271,6 @@ def optimum_derivatives(prob, inputs=(), bounds=(), active_tol=ACTIVE_TOL):
     -------
     OptimumDerivatives
     """
-    from lpc_mdo.trim import driver_scaling  # the groups, only when a problem is at hand
-
     model = prob.model
     ((obj_name, obj_meta),) = model.get_objectives().items()
     dvs = model.get_design_vars()
@@ -438,14 +441,34 @@ def _input_element(prob, vehicle, parameter):
     return 0, parameter.model_per_unit, float(value[0] / parameter.model_per_unit)
 
 
-def sensitivity_table(result):
+def polish_command(case_file):
+    """Return the command that polishes the optimum recorded in ``case_file`` (a str)."""
+    return f"lpc-mdo optimize --problem full --start-case {case_file} --tol 1e-6 --max-iter 150"
+
+
+def sensitivity_table(result, case_file="<its case file>"):
     """
     Return the sensitivities as a :class:`lpc_mdo.post.tables.Table`.
 
     Columns: parameter, value, units, dW0*/dp (kg per unit), % W0* per % of the parameter.
+    Above a relative KKT residual of :data:`LOOSE_KKT_RESIDUAL` the table has no rows: the
+    numbers would not hold (docs theory/optimization 'Post-optimal sensitivities'), and its note
+    gives the command that polishes the optimum of ``case_file`` first.
     """
-    from lpc_mdo.post.tables import Table
-
+    header = ["parameter", "value", "units", "dW0*/dp (kg per unit)", "% W0* per %"]
+    if result.kkt_residual > LOOSE_KKT_RESIDUAL:
+        return Table(
+            header,
+            [],
+            title="Post-optimal sensitivities",
+            notes=[
+                f"Not shown: the optimum is loosely converged (relative KKT residual "
+                f"{result.kkt_residual:.1e}, above {LOOSE_KKT_RESIDUAL}), where post-optimal "
+                "sensitivities are unreliable (at 3.6e-02 they were 25 % off re-optimized "
+                "neighbours, at 2.0e-02 within 5 %). Polish the optimum, then report its "
+                f"case file: {polish_command(case_file)}"
+            ],
+        )
     rows = []
     for r in result.rows:
         note = "" if r.active is None else (" (active)" if r.active else " (inactive)")
@@ -455,19 +478,7 @@ def sensitivity_table(result):
         f"(relative KKT residual {result.kkt_residual:.1e}); first order, design gross "
         "mass of the regressions held."
     ]
-    if result.kkt_residual > LOOSE_KKT_RESIDUAL:
-        notes.append(
-            "The optimum is loosely converged: at a KKT residual of 3.6e-02 the sensitivities "
-            "were 25 % off the re-optimized differences, at 2.0e-02 within 5 % (measured). "
-            "Polish it first: lpc-mdo optimize --problem full --start-case <this case> "
-            "--tol 1e-6 --max-iter 150."
-        )
-    return Table(
-        ["parameter", "value", "units", "dW0*/dp (kg per unit)", "% W0* per %"],
-        rows,
-        title="Post-optimal sensitivities",
-        notes=notes,
-    )
+    return Table(header, rows, title="Post-optimal sensitivities", notes=notes)
 
 
 def check_same_parameters(recorded, built, case_file):
@@ -527,11 +538,6 @@ def sensitivities_from_case(case_file, vehicle=None, parameters=None, active_tol
         When the case's objective is not the gross mass, or it was run with other parameter
         values or limits than the vehicle's (:func:`check_same_parameters`).
     """
-    import openmdao.api as om
-
-    from lpc_mdo.problems import build_problem, copy_design_variables
-    from lpc_mdo.vehicle import load_vehicle
-
     if vehicle is None or isinstance(vehicle, (str, Path)):
         vehicle = load_vehicle(vehicle)
     reader = om.CaseReader(str(case_file))

@@ -3,54 +3,38 @@
 Each condition has its trim constraints (paper Table 6: force and moment balance, the
 prescribed transition acceleration) and its trim variables (rotor speeds, pitch, elevator;
 :meth:`lpc_mdo.vehicle.condition_layout.ConditionLayout.trim_variables`, from each kind's
-contract). With everything else fixed these form a
-small nonlinear system per condition, square or under-determined, with bounds. :func:`trim`
-solves them one condition at a time by bounded Gauss-Newton least squares (scipy's dogbox
-trust-region method) on the exact total derivatives, in the optimizer's scaled space. One
-condition at a time, because a shared trust region lets the hardest condition throttle the
-others; dogbox, because scipy's default (trust-region reflective) stalled on the transition and
-OEI blocks within 30 evaluations where dogbox converged in 5-7 (measured). Dogbox gets
-:data:`DOGBOX_EVALUATIONS` evaluations; where it does not reach the tolerance, the block is
-solved again from its start with trust-region reflective (``max_iter`` evaluations) and the
-better of the two kept: at the reference vehicle's initial design, transition_2 and
-transition_3 trim with lift-pair speeds near their 100 rpm bound, where dogbox crawls (not
-below 1e-6 in 100 evaluations) and trust-region reflective converges in 52-85 (measured
-2026-12-04).
+contract). With everything else fixed these form a small nonlinear system per condition,
+square or under-determined, with bounds. :func:`trim` solves them one condition at a time (a
+shared trust region would let the hardest condition throttle the others) by bounded
+Gauss-Newton least squares on the exact total derivatives, in the optimizer's scaled space:
+first scipy's dogbox trust-region method for :data:`DOGBOX_EVALUATIONS` evaluations; where that
+does not reach the tolerance, trust-region reflective again from the same start (``max_iter``
+evaluations), keeping the better of the two.
 
-Why this exists: the initial design is far from trim (transition w_dot of -7 m/s^2), and an
-optimizer with a quasi-Newton Hessian started there wanders into windmilling rotors and stalls
-at a locally infeasible point, whereas Gauss-Newton on the exact Jacobian trims every condition
-in a few iterations (measured on the reference vehicle: see the optimization issue note). Every
-stage of the warm-start sequence therefore trims its conditions before its optimizer runs.
+The stages of the warm-start sequence trim their conditions before their optimizer runs
+(:attr:`lpc_mdo.study_plan.Stage.trim_first`): an optimizer with a quasi-Newton Hessian started
+far from trim stalls at a locally infeasible point. The measurements behind these choices are
+in the theory manual (page "The optimization problem", section "Trim before each stage").
 """
 
 import atexit
 import functools
+import multiprocessing
 import shutil
 import tempfile
 import time
+from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 
 import numpy as np
 import openmdao.api as om
-from openmdao.utils.general_utils import determine_adder_scaler
 from scipy.optimize import least_squares
 
+from lpc_mdo.drivers.scaling import driver_scaling
 from lpc_mdo.groups.lpc import openmdao_units
+from lpc_mdo.problems import build_analysis_problem, copy_design_variables
+from lpc_mdo.progress import trim_line
 from lpc_mdo.vehicle.condition_layout import condition_layout
-
-
-def driver_scaling(meta):
-    """
-    Return (scaler, adder) of a design variable or response from its metadata.
-
-    Scaled = (x + adder) * scaler. The metadata of ``get_design_vars``/``get_constraints`` keep
-    ref/ref0 as declared and leave scaler/adder None when they were declared through refs.
-    """
-    adder, scaler = determine_adder_scaler(
-        meta.get("ref0"), meta.get("ref"), meta.get("adder"), meta.get("scaler")
-    )
-    return (1.0 if scaler is None else scaler), (0.0 if adder is None else adder)
 
 
 @dataclass
@@ -135,11 +119,8 @@ def _trim_variables(prob, vehicle, conditions):
     return merged
 
 
-#: Residual evaluations of the first (dogbox) attempt per condition. Every condition of the
-#: reference vehicle that dogbox trims takes 4-7 Jacobians; where it crawls (transition_2 and
-#: transition_3: 100 evaluations without reaching 1e-6), trust-region reflective from the start
-#: converges in 52-85, so a longer dogbox attempt is wasted (measured 2026-12-04: the whole
-#: trim 74 s with 100, 43 s with 20).
+#: Residual evaluations of the first (dogbox) attempt per condition (docs/theory/optimization.rst,
+#: "Trim before each stage": every condition dogbox trims takes 4-7 Jacobians).
 DOGBOX_EVALUATIONS = 20
 
 
@@ -160,8 +141,8 @@ _INHERITED_OPTIONS = ("rotor_polar", "wing_zero_lift_angle", "ks_rho", "structur
 
 
 def problem_vehicle(prob):
-    """Return the Vehicle of a set-up LPC problem (``prob.vehicle``, else the model option)."""
-    return prob.vehicle if hasattr(prob, "vehicle") else prob.model.options["vehicle"]
+    """Return the Vehicle of a set-up LPC problem (``prob.vehicle``, else the model's)."""
+    return prob.vehicle if hasattr(prob, "vehicle") else prob.model.vehicle_spec
 
 
 def single_condition_problem(prob, condition, name):
@@ -172,8 +153,6 @@ def single_condition_problem(prob, condition, name):
     constraints only, no static margin; every design variable copied from ``prob`` (not run).
     Its OpenMDAO output folder is in the per-process scratch folder.
     """
-    from lpc_mdo.problems import build_analysis_problem, copy_design_variables
-
     vehicle = problem_vehicle(prob)
     single = build_analysis_problem(
         vehicle,
@@ -273,8 +252,6 @@ def trim(
                             f"({result.message})")  # fmt: skip
         per_condition[cond] = result
         if report is not None:
-            from lpc_mdo.progress import trim_line
-
             report(
                 trim_line(
                     label,
@@ -362,9 +339,6 @@ def _trim_in_processes(prob, vehicle, conditions, tol, max_iter, workers):
     outcomes come back in the order of ``conditions``. Uses the fork start method (the workers
     inherit ``prob``); where fork is unavailable, trims serially.
     """
-    import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor
-
     if "fork" not in multiprocessing.get_all_start_methods():
         return [_trim_condition(prob, vehicle, c, tol, max_iter, True) for c in conditions]
     _WORKER_PROBLEM["prob"] = prob

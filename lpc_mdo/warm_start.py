@@ -16,40 +16,14 @@ from dataclasses import dataclass, field
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo import study_plan
+from lpc_mdo.groups.lpc import openmdao_units
 from lpc_mdo.post.statistics import process_peak_memory_mb, run_stats_path, write_run_stats
-from lpc_mdo.problems import PRESIZING, SUBPROBLEMS, build_problem, copy_design_variables
+from lpc_mdo.problems import build_analysis_problem, build_problem, copy_design_variables
+from lpc_mdo.progress import ProgressLine, optimizer_iterations
+from lpc_mdo.sensitivities import post_optimal_sensitivities, sensitivities_path
 from lpc_mdo.trim import trim
 from lpc_mdo.vehicle import load_vehicle
-
-DEFAULT_SEQUENCE = (*PRESIZING, *SUBPROBLEMS, "full")
-# Problems over every condition: the full problem's optimizer, rescaled design variables.
-FULL_PROBLEMS = ("full", "baseline")
-
-# IPOPT tolerances of the stages before the full problem: they provide a starting point and a
-# scaling (paper Sec. II.E), which the full problem then refines, so 1e-3 (scaled) is enough.
-# Subproblem 1 otherwise spends half its time (~100 of ~200 iterations) circling within 1e-3
-# of its optimum (measured 2026-11-22).
-WARM_START_STAGE_SETTINGS = {
-    "tol": 1e-4,
-    "acceptable_tol": 1e-3,
-    "acceptable_iter": 5,
-    "acceptable_constr_viol_tol": 1e-3,
-}
-
-# SLSQP's tolerance in the stages before the full problem, for the same reason as
-# WARM_START_STAGE_SETTINGS (the full problem refines their designs): subproblem 1 spent its
-# last ~40 % of iterations gaining 0.14 % of gross mass at 3e-4 (lpc_mdo.problems.SLSQP_SETTINGS).
-# With 1e-3: 120 iterations, 120 s instead of 168, 193 s, subproblem 1 at 2832.92 instead of
-# 2830.70 kg, the full problem's optimum 2653.71 instead of 2652.80 kg (measured 2026-12-04).
-WARM_START_SLSQP_SETTINGS = {"tol": 1e-3}
-
-# Penalty weights of the baseline continuation (paper eq. 8, alpha = 100 in the end). Solved
-# directly at alpha = 100, SLSQP lost feasibility (started from subproblem 4: 93 dBA; from the
-# optimum: 76 dBA and torque margins -0.2 within 75 evaluations): the penalty pulls the rotor
-# blades back to the initial ones, which our noise model cannot accept. Raising alpha from the
-# optimum (the alpha -> 0 baseline) by decades kept every step feasible: 1 -> 10 -> 100 took
-# 103, 198 and 7 SLSQP model evaluations (167, 329, 10 s; measured 2026-11-22).
-BASELINE_CONTINUATION = (1.0, 10.0, 100.0)
 
 
 @dataclass
@@ -103,7 +77,7 @@ def load_design_variables(prob, case, vehicle):
 
 def run_sequence(
     out_dir,
-    names=DEFAULT_SEQUENCE,
+    names=study_plan.SEQUENCE,
     vehicle=None,
     static_margin=True,
     optimizer=None,
@@ -124,27 +98,30 @@ def run_sequence(
     out_dir : str
         Folder for one case file per stage (``{name}.sql``).
     names : sequence of str
-        Stages, from :data:`lpc_mdo.problems.PROBLEM_NAMES`.
+        Stages, from :data:`lpc_mdo.study_plan.STAGE_NAMES` (default: the warm-start sequence,
+        :data:`lpc_mdo.study_plan.SEQUENCE`).
     vehicle : Vehicle, path or None
     static_margin : bool
     optimizer : str or None
-        Optimizer of the presizing and the subproblems (None: each stage's
-        :func:`default_optimizer`).
+        Optimizer of the stages before the full problem (None: each stage's,
+        :func:`lpc_mdo.study_plan.default_optimizer`).
     full_optimizer : str or None
-        Optimizer of the full problem (None: :func:`default_optimizer`, an SQP method).
+        Optimizer of the stages over every condition, the full problem (None: the stage's, an
+        SQP method).
     driver_settings : dict or None
-        make_driver settings for every stage (the stages before the full problem also get
-        :data:`WARM_START_STAGE_SETTINGS` with IPOPT, :data:`WARM_START_SLSQP_SETTINGS` with
-        SLSQP, unless these override them).
+        make_driver settings for every stage, over the stage's settings as a step of the
+        sequence (:meth:`lpc_mdo.study_plan.Stage.driver_settings` with ``in_sequence``).
     start_case : str or None
         Case file whose final case initializes the first stage.
     rescale_full : bool
-        Rescale the full problem's design variables by their optimized magnitudes.
+        Rescale the design variables by their optimized magnitudes in the stages whose
+        hand-over says so (the full problem; :attr:`lpc_mdo.study_plan.Stage.handover`).
     trim_first : bool
         Before each stage's optimizer, trim the stage's conditions by their trim variables
-        (:func:`lpc_mdo.trim.trim`; recorded as the problem case ``'trimmed'``). The previous
-        stage changed the vehicle under them (the initial design is far from trim), and IPOPT
-        with a quasi-Newton Hessian started far from trim stalls at locally infeasible points.
+        where the stage table says so (:func:`lpc_mdo.trim.trim`; recorded as the problem case
+        ``'trimmed'``). The previous stage changed the vehicle under them (the initial design
+        is far from trim), and IPOPT with a quasi-Newton Hessian started far from trim stalls
+        at locally infeasible points.
     log : callable
         Progress messages.
     progress : bool
@@ -159,41 +136,33 @@ def run_sequence(
     os.makedirs(out_dir, exist_ok=True)
     if vehicle is None or isinstance(vehicle, (str, os.PathLike)):
         vehicle = load_vehicle(vehicle)
-    if full_optimizer is None:
-        full_optimizer = default_optimizer("full")
     previous = start_case
     results = []
     for name in names:
-        stage_optimizer = full_optimizer if name in FULL_PROBLEMS else optimizer
-        stage_optimizer = stage_optimizer or default_optimizer(name)
-        settings = dict(driver_settings or {})
-        if name not in FULL_PROBLEMS and stage_optimizer.upper() == "IPOPT":
-            settings = {**WARM_START_STAGE_SETTINGS, **settings}
-        elif name not in FULL_PROBLEMS and stage_optimizer.upper() == "SLSQP":
-            settings = {**WARM_START_SLSQP_SETTINGS, **settings}
-        stage = solve_stage(
+        spec = study_plan.stage(name)
+        chosen = full_optimizer if spec.every_condition else optimizer
+        result = solve_stage(
             name,
             os.path.join(out_dir, f"{name}.sql"),
             vehicle=vehicle,
             start_case=previous,
             static_margin=static_margin,
-            optimizer=stage_optimizer,
-            driver_settings=settings,
-            rescale=rescale_full and name in FULL_PROBLEMS,
+            optimizer=chosen or study_plan.default_optimizer(name),
+            driver_settings=driver_settings,
+            in_sequence=True,
+            rescale=rescale_full and spec.rescales,
             trim_first=trim_first,
             log=log,
             progress=progress,
             trim_processes=trim_processes,
         )
-        results.append(stage)
-        previous = stage.case_file
+        results.append(result)
+        previous = result.case_file
     return results
 
 
 def _write_interrupted_stats(prob, case_file, start, when):
     """Write the run statistics known at a Ctrl-C: the driver's counts so far, success False."""
-    from lpc_mdo.progress import optimizer_iterations
-
     driver = prob.driver
     known = {
         key: getattr(driver.result, key, None)
@@ -211,8 +180,6 @@ def _write_interrupted_stats(prob, case_file, start, when):
 
 def _write_sensitivities(prob, vehicle, case_file, log):
     """Write the post-optimal sensitivities of a gross-mass optimum beside its case file."""
-    from lpc_mdo.sensitivities import post_optimal_sensitivities, sensitivities_path
-
     path = sensitivities_path(case_file)
     try:
         post_optimal_sensitivities(prob, vehicle).to_json(path)
@@ -229,7 +196,8 @@ def perturbed_start_case(path, fraction, seed, vehicle=None):
     Each scalar x of the vehicle's initial design becomes x (1 + u), u uniform in
     [-fraction, fraction] (seeded), clipped to its bounds; the case is the problem case
     ``'final'`` of ``path``, which :func:`run_sequence` and :func:`solve_stage` take as
-    ``start_case``. Issue 19 asks that every stage converge from starts perturbed by 2 %.
+    ``start_case`` (``run_scripts/benchmark_sequence.py --perturb 0.02`` runs the sequence from
+    such a start).
 
     Parameters
     ----------
@@ -250,9 +218,6 @@ def perturbed_start_case(path, fraction, seed, vehicle=None):
         raise ValueError(f"'fraction' = {fraction!r} is out of range: must be in [0, 1)")
     if vehicle is None or isinstance(vehicle, (str, os.PathLike)):
         vehicle = load_vehicle(vehicle)
-    from lpc_mdo.groups.lpc import openmdao_units
-    from lpc_mdo.problems import build_analysis_problem
-
     prob = build_analysis_problem(vehicle, recorder_path=path, name="perturbed_start")
     rng = np.random.default_rng(seed)
     for name, dv in vehicle.design_variables.items():
@@ -268,48 +233,12 @@ def perturbed_start_case(path, fraction, seed, vehicle=None):
     return path
 
 
-def default_optimizer(name):
-    """
-    Return the default optimizer of a problem.
-
-    The paper's choice: IPOPT for the subproblems, SQP for the full problem and the baseline
-    (paper Sec. II.E: SNOPT; SciPy's SLSQP when pyoptsparse has no SNOPT). From the
-    warm-started subproblem 4 design, SLSQP reached a feasible full-problem design (every
-    constraint within 1e-4 scaled) in ~150 model evaluations where IPOPT (L-BFGS) was still
-    2.5 % heavier and infeasible after 245 iterations (measured; SLSQP's counts before
-    2026-12-02 were model evaluations).
-
-    Three stages are SLSQP instead (measured 2026-12-04 on the itemised reference):
-
-    - the rotor presizing (ours, not in the paper; 36 variables, hover only): IPOPT with its
-      L-BFGS Hessian reaches the optimum (lift radii at their upper bound, noise at its limit)
-      by iteration ~50 and then circles it without meeting its tolerance until its
-      400-iteration limit (45.8 s; power within 0.04 % of the optimum), where SLSQP's
-      active-set steps converge in 16 iterations, 1.7 s, to the same design;
-    - subproblem 1 (105 variables; hover, transition, climb, cruise, descent): from the
-      presizing, IPOPT took 381 iterations (477 s) in one run and stopped at its 400-iteration
-      limit (527 s, 2831.46 kg) in the next, circling its optimum; SLSQP converged in 168
-      iterations (276 s) to 2830.70 kg with noise and final state of charge at their limits;
-    - subproblem 3 (the wing box) with the stress constraint: from the initial gauges (stress
-      ratio 1.46 at +3g) IPOPT thickens the box to 1200 kg and stops at its iteration limit
-      (202 iterations, 22.5 s), SLSQP converges in 8 iterations, 1.2 s, to a 193.7 kg box with
-      the stress constraint active (0.8 kg of spar web more than without it).
-    """
-    from lpc_mdo.drivers import pyoptsparse_optimizers
-
-    if name in ("rotor_presizing", "subproblem_1", "subproblem_3"):
-        return "SLSQP"
-    if name not in FULL_PROBLEMS:
-        return "IPOPT"
-    return "SNOPT" if "SNOPT" in pyoptsparse_optimizers() else "SLSQP"
-
-
 def solve_baseline(
     case_file,
     vehicle=None,
     start_case=None,
     static_margin=True,
-    alphas=BASELINE_CONTINUATION,
+    alphas=None,
     optimizer=None,
     driver_settings=None,
     trim_first=True,
@@ -334,8 +263,9 @@ def solve_baseline(
     start_case : str or None
         Case file whose final case starts the first alpha (None: the vehicle's initial design).
     static_margin : bool
-    alphas : sequence of float
-        Increasing penalty weights; the last is the baseline's (paper: 100).
+    alphas : sequence of float or None
+        Increasing penalty weights; the last is the baseline's (paper: 100). None: the
+        baseline stage's ``continuation`` (:mod:`lpc_mdo.study_plan`).
     optimizer, driver_settings, trim_first, log, progress, comm, trim_processes
         As :func:`solve_stage`.
 
@@ -345,7 +275,8 @@ def solve_baseline(
         Of the last alpha; ``extra['continuation']`` lists every alpha's StageResult, and
         ``success`` requires all of them to succeed.
     """
-    alphas = [float(a) for a in alphas]
+    spec = study_plan.stage("baseline")
+    alphas = [float(a) for a in (spec.continuation if alphas is None else alphas)]
     if not alphas or any(a < 0.0 for a in alphas) or any(np.diff(alphas) <= 0.0):
         raise ValueError(f"alphas = {alphas}; allowed: increasing values >= 0")
     stem, ext = os.path.splitext(os.path.abspath(case_file))
@@ -361,7 +292,7 @@ def solve_baseline(
             static_margin=static_margin,
             optimizer=optimizer,
             driver_settings=driver_settings,
-            rescale=previous is not None,
+            rescale=spec.rescales and previous is not None,
             trim_first=trim_first,
             log=log,
             progress=progress,
@@ -392,6 +323,7 @@ def solve_stage(
     progress=False,
     comm=None,
     trim_processes=1,
+    in_sequence=False,
     **model_options,
 ):
     """
@@ -400,7 +332,7 @@ def solve_stage(
     Parameters
     ----------
     name : str
-        A name of :data:`lpc_mdo.problems.PROBLEM_NAMES`.
+        A stage of :data:`lpc_mdo.study_plan.STAGE_NAMES`.
     case_file : str
         Its case file (driver iterations, the problem cases 'trimmed' and 'final').
     vehicle : Vehicle, path or None
@@ -408,13 +340,14 @@ def solve_stage(
         Case file whose final case gives the starting design (None: the vehicle's initial one).
     static_margin : bool
     optimizer : str or None
-        None: :func:`default_optimizer`.
+        None: the stage's, :func:`lpc_mdo.study_plan.default_optimizer`.
     driver_settings : dict or None
-        make_driver settings, over the problem's defaults (:func:`build_problem`).
+        make_driver settings, over the stage's (:func:`lpc_mdo.problems.build_problem`).
     rescale : bool
         Scale the design variables by their magnitudes in the start case (paper Sec. II.E).
     trim_first : bool
-        Trim the problem's conditions before optimizing (see :func:`run_sequence`).
+        Trim the problem's conditions before optimizing where the stage table says so (see
+        :func:`run_sequence`).
     log : callable
     progress : bool
         Print a progress line per model evaluation (:class:`lpc_mdo.progress.ProgressLine`)
@@ -424,6 +357,9 @@ def solve_stage(
     trim_processes : int
         Processes that trim the conditions at the same time (``workers`` of
         :func:`lpc_mdo.trim.trim`; the trim does not depend on it).
+    in_sequence : bool
+        Run the stage with its settings as a step of the warm-start sequence (see
+        :func:`lpc_mdo.problems.build_problem`).
     **model_options
         Further LPCGroup options (e.g. ``baseline_alpha``).
 
@@ -445,7 +381,8 @@ def solve_stage(
     """
     if vehicle is None or isinstance(vehicle, (str, os.PathLike)):
         vehicle = load_vehicle(vehicle)
-    optimizer = optimizer or default_optimizer(name)
+    spec = study_plan.stage(name)
+    optimizer = optimizer or study_plan.default_optimizer(name)
     # Absolute: OpenMDAO puts a bare file name under the problem's {name}_out folder.
     case_file = os.path.abspath(case_file)
     case = om.CaseReader(start_case).get_case("final") if start_case is not None else None
@@ -459,17 +396,16 @@ def solve_stage(
         design_variable_refs=refs,
         driver_settings=driver_settings,
         comm=comm,
+        in_sequence=in_sequence,
         **model_options,
     )
     if progress:
-        from lpc_mdo.progress import ProgressLine
-
         prob.driver.add_recorder(ProgressLine(name))  # recorders start at final_setup
     if case is not None:
         load_design_variables(prob, case, vehicle)
     trim_seconds, trim_message = 0.0, ""
     start = time.perf_counter()
-    if trim_first:
+    if trim_first and spec.trim_first:
         try:
             trimmed = trim(
                 prob, report=log if progress else None, label=name, workers=trim_processes

@@ -3,14 +3,14 @@
     python run_scripts/benchmark_lpc.py [--repeats 5] [--profile]
 
 Builds the 15-condition model with its 176 design variables (the paper's 161, 10 transition
-roll/yaw speed differentials and 5 transition pitch angles) and 98 constraints (with the 40
-linear transition rotor-speed bounds: 138), then times ``run_model`` and ``compute_totals`` (the
-objective and all constraints x 176, adjoint) at one point, and ``run_model`` at points moved
-by 0.1 % (an optimizer's next point: the inner solves iterate from the last solution), and
-prints the medians, the ratios to the paper's CSDL figures (7.06 s forward, 24.84 s derivatives
-after 3.7 h of compilation; paper Table 9), the component count, the ratios to issue 19's
-baseline and targets and, with --profile, where the time goes by module (the OpenMDAO
-framework's share).
+roll/yaw speed differentials and 5 transition pitch angles) and its constraints (paper Table 6,
+ours and the 40 linear transition rotor-speed bounds), then times ``run_model`` and
+``compute_totals`` (the objective and all constraints x 176, adjoint) at one point, and
+``run_model`` at points moved by 0.1 % (an optimizer's next point: the inner solves iterate
+from the last solution). It prints the medians, the ratios to the paper's CSDL figures (7.06 s
+forward, 24.84 s derivatives after 3.7 h of compilation; paper Table 9), the component count,
+the ratios to a recorded reference run and, with --profile, where the time goes by module (the
+OpenMDAO framework's share).
 """
 
 import argparse
@@ -34,10 +34,9 @@ from lpc_mdo.problems import declare_problem  # noqa: E402
 
 PAPER_FORWARD_S = 7.06
 PAPER_DERIVATIVE_S = 24.84
-#: Issue 19 (speed): the times it was filed with (2-core machine, idle, median of 5) and its
-#: targets, in seconds.
-ISSUE_19_BASELINE = {"setup": 5.9, "run_model": 0.78, "totals": 1.26}
-ISSUE_19_TARGET = {"setup": 4.0, "run_model": 0.25, "totals": 0.4}
+#: Reference times, s (2-core machine, idle, median of 5; 2026-12-05, the model before the
+#: constraints that keep the optimum buildable): a change of the model is judged by its ratio.
+REFERENCE_TIMES = {"setup": 2.96, "run_model": 0.121, "totals": 0.366}
 #: Relative move of every design variable for the evaluation at a new point (an optimizer step).
 MOVED_BY = 1.0e-3
 
@@ -46,7 +45,7 @@ def build():
     """Return the set-up full LPC model with a driver, so that totals use the driver scaling."""
     prob = om.Problem(reports=False)
     prob.model = LPCGroup()
-    declare_problem(prob.model)  # paper Table 6 + ours: 176 design variables, 98 + 40 constraints
+    declare_problem(prob.model)  # paper Table 6 + ours: 176 design variables, every constraint
     prob.driver = om.ScipyOptimizeDriver()  # only so compute_totals uses the driver's scaling
     prob.setup(mode="rev")
     prob.final_setup()
@@ -118,13 +117,10 @@ def main(argv=None):
         f"\n  {explicit + implicit} components ({explicit} explicit, {implicit} implicit) "
         f"in {groups} groups"
     )
-    print(f"\n  {'issue 19':<36}{'baseline':>10}{'speed-up':>10}{'target':>9}  met")
+    print(f"\n  {'against the reference run':<36}{'reference':>10}{'ratio':>10}")
     for key, value in (("setup", setup), ("run_model", f_med), ("totals", t_med)):
-        base, target = ISSUE_19_BASELINE[key], ISSUE_19_TARGET[key]
-        print(
-            f"  {key:<36}{base:>10.2f}{base / value:>9.2f}x{target:>9.2f}  "
-            f"{'yes' if value <= target else 'no'}"
-        )
+        base = REFERENCE_TIMES[key]
+        print(f"  {key:<36}{base:>10.3f}{value / base:>9.2f}x")
 
     if args.profile:
         profiler = cProfile.Profile()

@@ -24,11 +24,8 @@ os.environ.setdefault("OPENMDAO_REPORTS", "0")
 
 from lpc_mdo.post.statistics import process_peak_memory_mb  # noqa: E402
 from lpc_mdo.post.trim_residuals import trim_residual_table  # noqa: E402
-from lpc_mdo.warm_start import (  # noqa: E402
-    DEFAULT_SEQUENCE,
-    perturbed_start_case,
-    run_sequence,
-)
+from lpc_mdo.study_plan import SEQUENCE  # noqa: E402
+from lpc_mdo.warm_start import perturbed_start_case, run_sequence  # noqa: E402
 
 PAPER_MINUTES = {
     "subproblem_1": 30.0,
@@ -44,7 +41,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--output-dir", default="sequence_out")
     parser.add_argument("--no-static-margin", action="store_true")
-    parser.add_argument("--stages", default=",".join(DEFAULT_SEQUENCE))
+    parser.add_argument("--stages", default=",".join(SEQUENCE))
     parser.add_argument("--start-case", default=None)
     parser.add_argument(
         "--perturb",

@@ -15,7 +15,7 @@ other (the loads scale with W0, W0 with the box), so this alternates:
 until W_dg moves by less than 0.1 kg. It prints the thicknesses (root to tip), the box mass and
 W_dg; with ``--write`` it replaces the ``initial = ...`` line of the four
 ``[design_variables.*_thickness]`` tables and the ``design_gross_mass`` line of the vehicle file
-(issue 17 item 2). Re-run it whenever the wing planform, the wing-box model, the loads or a mass
+Re-run it whenever the wing planform, the wing-box model, the loads or a mass
 item change.
 """
 

@@ -6,8 +6,10 @@ What each file holds (all angles in degrees in the files; the runtime converts t
 
 - ``alpha_deg`` (n_a), ``reynolds`` (n_r), ``mach`` (n_m) and ``cl``, ``cd``, ``cm``
   (n_a, n_r, n_m): the polar from NeuralFoil 0.3.3 (an XFOIL-trained network; incompressible)
-  with the Prandtl-Glauert rule for Mach (cl and cm divided by sqrt(1 - M^2), cd unchanged);
-  ``confidence`` is NeuralFoil's analysis confidence (0..1).
+  with the Prandtl-Glauert rule for Mach (cl and cm divided by sqrt(1 - M^2)); cd unchanged,
+  except for the rotor-blade section (``naca0012``: Re 2e4..1e7, M 0..0.9), whose cd adds the
+  Korn-Lock transonic wave drag (:func:`wave_drag`); ``confidence`` is NeuralFoil's analysis
+  confidence (0..1).
 - wing airfoils only (``ls413``, ``ls417``), when XFOIL runs: ``cl``, ``cd``, ``cm`` are the
   XFOIL/NeuralFoil merge (:func:`merge_polars`): XFOIL 6.99 in each (Re, M) slice's converged
   attached range at M <= XFOIL_MACH_MAX, NeuralFoil elsewhere, a C1 smoothstep blend over
@@ -57,14 +59,37 @@ REPO = Path(__file__).resolve().parents[1]
 DEFAULT_COORDINATES = REPO.parent / "shared" / "data" / "airfoils"
 DEFAULT_OUT = REPO / "lpc_mdo" / "data"
 
+# Transonic drag rise of the rotor-blade section (the only table the rotors read; the wing and
+# tail fly at M < 0.3). Korn's equation (Mason, "Configuration Aerodynamics", Virginia Tech
+# class notes, ch. 7 'Transonic Aerodynamics of Airfoils and Wings'; Gur, Mason and Schetz,
+# "Full-Configuration Drag Estimation", J. Aircraft 47(4), 2010) for an unswept section,
+# M_dd = kappa_A - t/c - |c_l|/10, with the airfoil technology factor kappa_A = 0.87 of
+# conventional (not supercritical: 0.95) sections; the critical Mach number from Lock's
+# fourth-power law, M_crit = M_dd - (0.1/80)^(1/3) (the Mach number where the drag-rise
+# slope dc_d/dM reaches 0.1), and the wave drag c_d,w = 20 (M - M_crit)^4 above it.
+KORN_KAPPA_CONVENTIONAL = 0.87
+LOCK_COEFFICIENT = 20.0
+LOCK_OFFSET = (0.1 / 80.0) ** (1.0 / 3.0)
+
+# Rotor-section grids: the wing grids below plus Re 2e4 and 5e4 (blade roots of small chords in
+# transition) and Mach every 0.05 up to 0.9 (a pusher's helical tip is limited to 0.85 and the
+# lift rotors' to 0.7; beyond 0.9 the model raises an AnalysisError instead of extrapolating).
+ROTOR_REYNOLDS = np.array([2e4, 5e4, 1e5, 2e5, 3e5, 5e5, 1e6, 2e6, 3e6, 5e6, 1e7])
+ROTOR_MACH = np.array([0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.65, 0.7, 0.75, 0.8, 0.85, 0.9])
+
 # name: coordinate file (None = generated NACA 4-digit symmetric section with thickness t),
-# description, symmetric flag, whether to make XFOIL pressure tables.
+# description, symmetric flag, whether to make XFOIL pressure tables; optional ``reynolds`` and
+# ``mach`` grids (default REYNOLDS, MACH) and ``kappa`` (Korn's technology factor: add the
+# transonic wave drag, with thickness t).
 AIRFOILS = {
     "naca0012": dict(
         file="naca0012.dat",
         t=0.12,
         symmetric=True,
         pressure=False,
+        reynolds=ROTOR_REYNOLDS,
+        mach=ROTOR_MACH,
+        kappa=KORN_KAPPA_CONVENTIONAL,
         description="NACA 0012 (rotor and propeller blades)",
     ),
     "naca0015": dict(
@@ -91,8 +116,8 @@ AIRFOILS = {
 
 # Polar grid (NeuralFoil): alpha every 0.5 deg on +-25 deg (NeuralFoil's confident range; the
 # runtime replaces everything beyond each slice's stall point by Viterna), Reynolds numbers
-# roughly log-uniform on 1e5..1e7 (covers the paper's 1e5..8e6), Mach 0..0.6 (the hover tip-Mach
-# limit; the paper's range is 0..0.5).
+# roughly log-uniform on 1e5..1e7 (covers the paper's 1e5..8e6), Mach 0..0.6 (the wing and tail
+# fly below 0.3; the rotor section has its own grids, ROTOR_REYNOLDS and ROTOR_MACH).
 ALPHA_DEG = np.arange(-25.0, 25.0 + 1e-9, 0.5)
 REYNOLDS = np.array([1e5, 2e5, 3e5, 5e5, 1e6, 2e6, 3e6, 5e6, 1e7])
 MACH = np.array([0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6])
@@ -135,18 +160,33 @@ def load_coordinates(name, coordinates_dir):
 # ------------------------------------------------------------------------------ polars (NeuralFoil)
 
 
-def polar_tables(coords, symmetric):
+def wave_drag(cl, mach, thickness, kappa):
     """
-    cl, cd, cm, confidence on ALPHA_DEG x REYNOLDS x MACH.
+    Korn-Lock wave drag of an unswept section at lift coefficient ``cl`` and Mach ``mach``.
+
+    M_dd = kappa - t/c - |cl|/10, M_crit = M_dd - (0.1/80)^(1/3) and
+    c_d,w = 20 (M - M_crit)^4 for M > M_crit, else 0 (see KORN_KAPPA_CONVENTIONAL). Returns
+    (c_d,w, M_dd); broadcasts.
+    """
+    m_dd = kappa - thickness - np.abs(cl) / 10.0
+    excess = np.maximum(mach - (m_dd - LOCK_OFFSET), 0.0)
+    return LOCK_COEFFICIENT * excess**4, m_dd
+
+
+def polar_tables(coords, symmetric, reynolds=REYNOLDS, mach=MACH, thickness=None, kappa=None):
+    """
+    cl, cd, cm, confidence on ALPHA_DEG x reynolds x mach.
 
     NeuralFoil is incompressible; Mach enters by Prandtl-Glauert, cl = cl_0/beta and
-    cm = cm_0/beta with beta = sqrt(1 - M^2), cd unchanged (subcritical flow, no wave drag).
+    cm = cm_0/beta with beta = sqrt(1 - M^2). Without ``kappa`` cd is unchanged (subcritical
+    flow, no wave drag); with it cd = cd_0 + the Korn-Lock wave drag (:func:`wave_drag`) at the
+    Prandtl-Glauert cl and the section's ``thickness`` ratio.
     """
     import aerosandbox as asb
     import neuralfoil as nf
 
     airfoil = asb.Airfoil(name="airfoil", coordinates=coords)
-    a, r = np.meshgrid(ALPHA_DEG, REYNOLDS, indexing="ij")
+    a, r = np.meshgrid(ALPHA_DEG, reynolds, indexing="ij")
     out = nf.get_aero_from_airfoil(
         airfoil, alpha=a.ravel(), Re=r.ravel(), n_crit=N_CRIT, model_size=MODEL_SIZE
     )
@@ -159,12 +199,16 @@ def polar_tables(coords, symmetric):
         cm = 0.5 * (cm - cm[::-1])
         cd = 0.5 * (cd + cd[::-1])
         conf = 0.5 * (conf + conf[::-1])
-    inv_beta = 1.0 / np.sqrt(1.0 - MACH**2)
+    inv_beta = 1.0 / np.sqrt(1.0 - mach**2)
+    cl_m = cl[..., None] * inv_beta
+    cd_m = cd[..., None] * np.ones_like(mach)
+    if kappa is not None:
+        cd_m = cd_m + wave_drag(cl_m, mach, thickness, kappa)[0]
     return (
-        cl[..., None] * inv_beta,
-        cd[..., None] * np.ones_like(MACH),
+        cl_m,
+        cd_m,
         cm[..., None] * inv_beta,
-        conf[..., None] * np.ones_like(MACH),
+        conf[..., None] * np.ones_like(mach),
     )
 
 
@@ -707,13 +751,26 @@ def make_one(name, args, nf_version, asb_version, stamp, display, out_dir):
     t0 = time.process_time()
     w0 = time.time()
     coords = load_coordinates(name, args.coordinates)
-    cl, cd, cm, conf = polar_tables(coords, spec["symmetric"])
+    reynolds, mach = spec.get("reynolds", REYNOLDS), spec.get("mach", MACH)
+    kappa = spec.get("kappa")
+    if spec["pressure"] and (reynolds is not REYNOLDS or mach is not MACH):
+        raise SystemExit(f"{name}: the XFOIL merge of a wing table needs the grids REYNOLDS, MACH")
+    cl, cd, cm, conf = polar_tables(
+        coords, spec["symmetric"], reynolds, mach, thickness=spec.get("t"), kappa=kappa
+    )
+    compressibility = "Prandtl-Glauert cl/beta and cm/beta, cd unchanged"
+    if kappa is not None:
+        compressibility = (
+            f"Prandtl-Glauert cl/beta and cm/beta, cd plus the Korn-Lock wave drag "
+            f"{LOCK_COEFFICIENT:g} (M - M_crit)^4, M_crit = kappa_A - t/c - |cl|/10 - "
+            f"(0.1/80)^(1/3), kappa_A = {kappa:g}, t/c = {spec['t']:g}"
+        )
     data = dict(
         name=name,
         description=spec["description"],
         alpha_deg=ALPHA_DEG,
-        reynolds=REYNOLDS,
-        mach=MACH,
+        reynolds=reynolds,
+        mach=mach,
         cl=cl,
         cd=cd,
         cm=cm,
@@ -721,8 +778,8 @@ def make_one(name, args, nf_version, asb_version, stamp, display, out_dir):
         coordinates=coords,
         source=f"NeuralFoil {nf_version} get_aero_from_airfoil ({MODEL_SIZE}, "
         f"n_crit={N_CRIT:g}, free transition; AeroSandbox {asb_version} Kulfan "
-        f"fit), incompressible, Prandtl-Glauert cl/beta and cm/beta, cd "
-        f"unchanged; made {stamp} by run_scripts/make_airfoil_tables.py",
+        f"fit), incompressible, {compressibility}; made {stamp} by "
+        f"run_scripts/make_airfoil_tables.py",
     )
     msg = f"{name}: polar {time.process_time() - t0:.1f} s CPU"
     if spec["pressure"] and display is not None:

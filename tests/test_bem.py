@@ -4,6 +4,7 @@ import numpy as np
 import openmdao.api as om
 import pytest
 from openmdao.utils.assert_utils import assert_check_partials, assert_check_totals
+from rotor_cases import BLADES, HUB, NRAD, RADIUS, bem_problem, stations
 from scipy.optimize import brentq
 
 from lpc_mdo.components.aero.polar import LinearQuadraticPolar, Polar, PolarValues
@@ -48,50 +49,6 @@ class NaNPolar(LinearQuadraticPolar):
         return PolarValues(np.full(np.shape(v.cl), np.nan), *list(v.__dict__.values())[1:])
 
 
-# Two rotors of different geometry, blade count and rpm; node 0 near hover, node 1 in climb.
-RADIUS = np.array([1.524, 1.2])
-HUB = np.array([0.2, 0.15])
-BLADES = [2, 3]
-NRAD = 6
-
-
-def _stations(num_radial=NRAD):
-    eta = (np.arange(num_radial) + 0.5) / num_radial
-    rh = HUB * RADIUS
-    r = rh[:, None] + (RADIUS - rh)[:, None] * eta
-    width = np.repeat(((RADIUS - rh) / num_radial)[:, None], num_radial, axis=1)
-    return r, width
-
-
-def _bem_problem(polar=None, num_radial=NRAD, performance=True, mode="auto", **options):
-    opts = dict(num_rotors=2, num_nodes=2, num_radial=num_radial, num_blades=BLADES, **options)
-    if polar is not None:
-        opts["polar"] = polar
-    prob = om.Problem()
-    prob.model.add_subsystem("inflow", BEMInflowComp(**opts), promotes=["*"])
-    prob.model.add_subsystem("loads", BEMLoadsComp(**opts), promotes=["*"])
-    if performance:
-        prob.model.add_subsystem(
-            "performance", RotorPerformanceComp(num_rotors=2, num_nodes=2), promotes=["*"]
-        )
-    prob.setup(mode=mode, force_alloc_complex=True)
-    r, width = _stations(num_radial)
-    eta = np.linspace(0.0, 1.0, num_radial)
-    prob.set_val("radius", RADIUS)
-    prob.set_val("hub_radius", HUB * RADIUS)
-    prob.set_val("station_radius", r)
-    prob.set_val("station_width", width)
-    prob.set_val("chord", np.stack([0.3 - 0.2 * eta, 0.2 - 0.12 * eta]))
-    prob.set_val("twist", np.radians(np.stack([30.0 - 20.0 * eta, 45.0 - 25.0 * eta])))
-    prob.set_val("rpm", [[1200.0, 1300.0], [1500.0, 1800.0]])
-    prob.set_val("axial_velocity", [[0.0, 10.0], [2.0, 40.0]])
-    prob.set_val("density", [1.2, 1.1])
-    prob.set_val("speed_of_sound", [340.0, 336.0])
-    prob.set_val("dynamic_viscosity", [1.8e-5, 1.7e-5])
-    prob.run_model()
-    return prob
-
-
 @pytest.mark.parametrize(
     "options",
     [
@@ -101,7 +58,7 @@ def _bem_problem(polar=None, num_radial=NRAD, performance=True, mode="auto", **o
     ],
 )
 def test_partials(options):
-    prob = _bem_problem(polar=ReMachPolar(), **options)
+    prob = bem_problem(polar=ReMachPolar(), **options)
     data = prob.check_partials(method="cs", compact_print=True, out_stream=None)
     assert_check_partials(data, atol=1e-8, rtol=1e-8)
 
@@ -109,7 +66,7 @@ def test_partials(options):
 def test_totals_through_solve_linear():
     # The inflow angle is inverted by BEMInflowComp.solve_linear (no DirectSolver).
     for mode in ("fwd", "rev"):
-        prob = _bem_problem(performance=False, mode=mode)
+        prob = bem_problem(performance=False, mode=mode)
         data = prob.check_totals(
             of=["thrust", "torque", "thrust_per_span"],
             wrt=["rpm", "axial_velocity", "chord", "twist", "radius", "station_radius"],
@@ -134,9 +91,9 @@ def test_against_independent_ning_solution():
     # then the momentum-form loads of docs theory/rotors 'Loads and coefficients'
     # (dT = 4 pi r rho u_x (u_x - V_x) F, dQ = 2 pi r^2 rho u_x u_theta F). Tolerances:
     # 1e-10 rad on phi, 1e-9 relative on loads.
-    prob = _bem_problem()
+    prob = bem_problem()
     polar = LinearQuadraticPolar()
-    r, _ = _stations()
+    r, _ = stations()
     chord, twist = prob.get_val("chord"), prob.get_val("twist")
     rpm, vx = prob.get_val("rpm"), prob.get_val("axial_velocity")
     rho = prob.get_val("density")
@@ -223,6 +180,51 @@ def test_performance_values_and_partials():
     assert_check_partials(data, atol=1e-10, rtol=1e-10)
 
 
+@pytest.mark.parametrize("edgewise", [False, True])
+def test_helical_tip_mach_values_and_partials(edgewise):
+    # Independent numbers by hand: a pusher of R 1.781 m at 1600 rpm in climb at V_x 60 m/s,
+    # a = 340 m/s: Omega R = 298.40 m/s, helical sqrt(298.40^2 + 60^2)/340 = 0.89524 (Raymer's
+    # helical tip speed, sec. 10.4); with an in-plane velocity of (3, 4) m/s at its advancing
+    # blade sqrt((298.40 + 5)^2 + 60^2)/340 = 0.90966. A lift rotor of R 1.5 m at 900 rpm in
+    # edgewise flight with V_ip = (30, 40) m/s and V_x 5 m/s: advancing tip
+    # sqrt(5^2 + (141.37 + 50)^2)/340 = 0.56305 (Johnson, Rotorcraft Aeromechanics: M_at =
+    # M_tip (1 + mu)), 0.41606 without V_ip (the axial model leaves it out).
+    prob = om.Problem(reports=False)
+    perf = RotorPerformanceComp(num_rotors=2, num_nodes=2, edgewise=edgewise)
+    prob.model.add_subsystem("p", perf, promotes=["*"])
+    prob.setup(force_alloc_complex=True)
+    prob.set_val("thrust", [[4000.0, 3000.0], [2000.0, 1500.0]])
+    prob.set_val("torque", [[700.0, 650.0], [300.0, 200.0]])
+    prob.set_val("rpm", [[1600.0, 1100.0], [900.0, 800.0]])
+    prob.set_val("axial_velocity", [[60.0, 5.0], [5.0, -3.0]])
+    prob.set_val("radius", [1.781, 1.5])
+    prob.set_val("speed_of_sound", [340.0, 330.0])
+    if edgewise:
+        prob.set_val("inplane_velocity", [[[3.0, 4.0], [10.0, -2.0]], [[30.0, 40.0], [-1.0, 2.0]]])
+    prob.run_model()
+    mach = prob.get_val("helical_tip_mach")
+    assert mach[0, 0] == pytest.approx(0.90966 if edgewise else 0.89524, abs=5e-5)
+    assert mach[1, 0] == pytest.approx(0.56305 if edgewise else 0.41606, abs=5e-5)
+    if not edgewise:  # a rotor without axial velocity: the rotational tip Mach number
+        ratio = np.hypot(1.0, 3.0 / (800.0 * np.pi / 30.0 * 1.5))
+        np.testing.assert_allclose(mach[1, 1], prob.get_val("tip_mach")[1, 1] * ratio, rtol=1e-12)
+    data = prob.check_partials(method="cs", compact_print=True, out_stream=None)
+    assert_check_partials(data, atol=1e-10, rtol=1e-10)
+
+
+def test_helical_tip_mach_in_hover_has_the_zero_subgradient():
+    # |V_ip| is not differentiable at V_ip = 0 (hover); the component gives the subgradient 0
+    # there, and the value is the rotational tip Mach number.
+    prob = om.Problem(reports=False)
+    prob.model.add_subsystem("p", RotorPerformanceComp(edgewise=True), promotes=["*"])
+    prob.setup()
+    prob.set_val("torque", 500.0)
+    prob.run_model()
+    assert prob.get_val("helical_tip_mach") == pytest.approx(prob.get_val("tip_mach"), rel=1e-14)
+    jac = prob.compute_totals("helical_tip_mach", "inplane_velocity")
+    np.testing.assert_array_equal(jac["helical_tip_mach", "inplane_velocity"], 0.0)
+
+
 def test_reverse_and_windmilling_stations_converge():
     # Descent, hover, climb and windmilling (V_x up to 2.5 Omega R, negative thrust and torque)
     # on one rotor; a second rotor pitched to -20 deg (no root on [0, pi/2]: found at phi < 0).
@@ -256,7 +258,7 @@ def test_reverse_and_windmilling_stations_converge():
 
 
 def test_bad_inputs_raise():
-    prob = _bem_problem(performance=False)
+    prob = bem_problem(performance=False)
     prob.set_val("rpm", [[0.0, 1300.0], [1500.0, 1800.0]])
     with pytest.raises(
         om.AnalysisError,
@@ -264,8 +266,8 @@ def test_bad_inputs_raise():
         r"must be > 0 \(rpm\)",
     ):
         prob.run_model()
-    prob = _bem_problem(performance=False)
-    r, _ = _stations()
+    prob = bem_problem(performance=False)
+    r, _ = stations()
     r[1, -1] = 1.3
     prob.set_val("station_radius", r)
     with pytest.raises(
@@ -275,7 +277,7 @@ def test_bad_inputs_raise():
     ):
         prob.run_model()
     with pytest.raises(om.AnalysisError, match="BEM inflow-angle solve failed .*no sign change"):
-        _bem_problem(polar=NaNPolar(), performance=False)
+        bem_problem(polar=NaNPolar(), performance=False)
     prob = om.Problem()
     prob.model.add_subsystem("i", BEMInflowComp(num_rotors=2, num_blades=[2, 0]))
     with pytest.raises(ValueError, match=r"'num_blades\[1\]' = 0 is out of range: must be >= 1"):

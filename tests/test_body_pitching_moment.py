@@ -193,6 +193,7 @@ def test_reference_booms():
     assert_near_equal(booms["boom_strip_factor"].sum(), 4 * 0.3048**2 * 4.30682, 1e-5)
 
 
+@pytest.mark.integration
 def test_cruise_budget_sums_to_the_static_margin_and_fuselage_destabilizes():
     from lpc_mdo.analysis import static_margin_budget
     from lpc_mdo.components.aero.polar import LinearQuadraticPolar
@@ -230,6 +231,29 @@ def test_cruise_budget_sums_to_the_static_margin_and_fuselage_destabilizes():
     # ... and the fuselage and booms move the neutral point forward (Munk: a body alone is
     # unstable), the booms by less (about 1/6 of the fuselage's w^2 L, measured -0.013).
     assert budget["fuselage"] < budget["booms"] < 0.0
+
+
+@pytest.mark.integration
+def test_budget_defaults_to_the_vehicles_cruise_condition():
+    # A vehicle file whose design cruise condition has another name (mission.cruise_condition):
+    # the analysis functions find it without being told.
+    from lpc_mdo.analysis import format_static_margin_budget, static_margin_budget
+    from lpc_mdo.problems import build_analysis_problem
+    from lpc_mdo.vehicle import read_vehicle_file, vehicle_from_dict
+
+    data = read_vehicle_file()
+    data["mission"]["cruise_condition"] = "design_cruise"
+    for condition in data["conditions"]:
+        if condition["name"] == "cruise":
+            condition["name"] = "design_cruise"
+    vehicle = vehicle_from_dict(data)
+    prob = build_analysis_problem(vehicle, conditions=["design_cruise"], design_problem=False)
+    prob.run_model()
+    budget = static_margin_budget(prob)
+    assert budget == static_margin_budget(prob, "design_cruise")
+    assert_near_equal(budget["total"], prob.get_val("design_cruise.static_margin")[0], 1e-9)
+    assert format_static_margin_budget(prob) == format_static_margin_budget(prob, "design_cruise")
+    prob.cleanup()
 
 
 def test_tail_efficiency_scales_the_tail_loads():
@@ -311,6 +335,7 @@ def _quarter_mac_x(surface):
     )
 
 
+@pytest.mark.integration
 def test_reference_neutral_point_against_the_classic_formula():
     # Wing-body-tail neutral point by the classic build-up (Raymer, Aircraft Design, eq. 16.9;
     # Etkin & Reid, Dynamics of Flight, eq. 2.3,23): x_np = (x_w CLa_w + eta S_t/S CLa_t

@@ -25,6 +25,9 @@ from lpc_mdo.vehicle import (
     vehicle_from_dict,
 )
 
+#: Builds or runs the full model: the integration tier (README, 'Run the tests').
+pytestmark = pytest.mark.integration
+
 REF = reference_vehicle()
 
 

@@ -10,6 +10,9 @@ from lpc_mdo.components.dynamics.eom import GRAVITY
 from lpc_mdo.drivers import IpoptDriver
 from lpc_mdo.groups.lpc import LPCGroup
 
+#: Builds or runs the full model: the integration tier (README, 'Run the tests').
+pytestmark = pytest.mark.integration
+
 
 def condition_problem(name, design_vars=(), constraints=(), objective=None):
     prob = om.Problem(reports=False)

@@ -55,6 +55,7 @@ def test_the_registry_drives_the_schema():
         for name in (
             "wing",
             "horizontal_tail",
+            "vertical_tail",
             "fuselage",
             "battery",
             "material",
@@ -72,6 +73,9 @@ def test_the_registry_drives_the_schema():
     ]
     for name, spec in specs.items():
         expect = (VEHICLE.material.min_gauge, "material.min_gauge") if name in gauge else None
+        if name == "fuselage_length":  # the cabin and the M4 data range (theory/geometry)
+            expect = (6.4008, "the lower end of the M4 regressions' data range")
+            assert spec.upper_max == (11.8872, "the upper end of the M4 regressions' data range")
         assert spec.lower_min == expect, name
 
 

@@ -64,7 +64,12 @@ def _imports(module, path):
             if node.level:
                 parts = module.split(".")[: len(module.split(".")) - node.level + is_package]
                 base = ".".join(parts + ([base] if base else []))
-            names = [f"{base}.{alias.name}" for alias in node.names] + [base]
+            # ``from package import module`` depends on that module; ``from module import name``
+            # on the module.
+            names = [
+                f"{base}.{alias.name}" if f"{base}.{alias.name}" in MODULES else base
+                for alias in node.names
+            ]
         else:
             continue
         for name in names:

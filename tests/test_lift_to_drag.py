@@ -8,6 +8,9 @@ from lpc_mdo.analysis import airframe_lift_drag, lift_to_drag
 from lpc_mdo.components.aero.polar import LinearQuadraticPolar
 from lpc_mdo.problems import build_analysis_problem
 
+#: Builds or runs the full model: the integration tier (README, 'Run the tests').
+pytestmark = pytest.mark.integration
+
 
 @pytest.fixture(scope="module")
 def cruise():
@@ -72,7 +75,7 @@ def test_trimmed_polar_against_nasa_cfd_like_for_like():
     # difference, added to each point), fitted with the same parabola C_D0 + k C_L^2:
     # measured 0.0363, within 15 % (docs theory/aerodynamics 'Drag build-up'); its maximum L/D
     # 15.9 lies 26 % above the CFD's (the lift-dependent factor k differs, documented there).
-    from test_drag_buildup import fully_turbulent, make_problem
+    from drag_cases import fully_turbulent, make_problem
 
     from lpc_mdo.analysis import analyze_vehicle
     from lpc_mdo.components.aero.drag_buildup import LPC_LEAKAGE_PROTUBERANCE

@@ -18,6 +18,9 @@ from lpc_mdo.trim import trim
 from lpc_mdo.vehicle import load_vehicle, reference_vehicle
 from lpc_mdo.vehicle.condition_contract import condition_kind
 
+#: Builds or runs the full model: the integration tier (README, 'Run the tests').
+pytestmark = pytest.mark.integration
+
 LOITER_DURATION = 600.0  # s
 LOITER_WEIGHT = 1.5  # the loiter counts 1.5 times in the mission energy
 LOITER = f"""
@@ -84,7 +87,9 @@ def test_full_problem_declares_the_loiter_trim_and_variables(loiter_file):
     assert cons["loiter.linear_acceleration"]["size"] == 2
     assert cons["loiter.angular_acceleration"]["size"] == 1
     assert sum(m["size"] for m in dvs.values()) == 181 + 3
-    assert sum(m["size"] for m in cons.values()) == 86 + 11 + 40 + 3
+    # ... and the advance ratios (40), the tip Mach numbers (OEI 28, transition 45,
+    # climb/cruise/descent and the loiter's pusher 4) and the 20 linear minimum chords.
+    assert sum(m["size"] for m in cons.values()) == 86 + 2 + 40 + 3 + 40 + 28 + 45 + 4 + 20 + 9
     # Subproblems select by kind: the loiter is a steady condition of subproblem 4.
     sub4 = build_problem("subproblem_4", vehicle=loiter_file, optimizer="SLSQP")
     assert "loiter" in sub4.model.condition_names

@@ -25,7 +25,11 @@ from openmdao.test_suite.components.sellar import SellarImplicitDis1, SellarImpl
 from lpc_mdo.drivers import IpoptDriver
 from lpc_mdo.post import figures, report, statistics, tables
 
-pytestmark = pytest.mark.filterwarnings("ignore:The following groups have a nonlinear solver")
+# Builds or runs the full model: the integration tier (README, 'Run the tests').
+pytestmark = [
+    pytest.mark.integration,
+    pytest.mark.filterwarnings("ignore:The following groups have a nonlinear solver"),
+]
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 
@@ -732,15 +736,18 @@ def test_report_prints_the_sensitivities_written_beside_a_case_file(runs, tmp_pa
 
     case_file = tmp_path / "full.sql"
     shutil.copy(runs["slsqp"][0], case_file)
-    SensitivityResult(
-        gross_mass=2654.5,
-        rows=[Sensitivity("payload", "payload", "kg", 540.0, 1.5627, 0.3179)],
-        kkt_residual=0.06,
-        active=[],
-    ).to_json(sensitivities_path(case_file))
+    rows = [Sensitivity("payload", "payload", "kg", 540.0, 1.5627, 0.3179)]
+    polished = SensitivityResult(gross_mass=2654.5, rows=rows, kkt_residual=0.01, active=[])
+    polished.to_json(sensitivities_path(case_file))
     index = report.write_report(case_file, tmp_path / "report", report.ReportSpec.generic())
     text = index.read_text()
     assert "**Post-optimal sensitivities**" in text
     assert "| payload | 540 | kg | 1.5627 | 0.3179 |" in text
-    assert "relative KKT residual 6.0e-02" in text
-    assert "The optimum is loosely converged" in text  # 0.06 > LOOSE_KKT_RESIDUAL
+    assert "relative KKT residual 1.0e-02" in text
+    # A loosely converged optimum (0.06 > LOOSE_KKT_RESIDUAL): no numbers, the polish command.
+    loose = SensitivityResult(gross_mass=2654.5, rows=rows, kkt_residual=0.06, active=[])
+    loose.to_json(sensitivities_path(case_file))
+    index = report.write_report(case_file, tmp_path / "report2", report.ReportSpec.generic())
+    text = index.read_text()
+    assert "1.5627" not in text and "Not shown: the optimum is loosely converged" in text
+    assert f"--start-case {case_file} --tol 1e-6" in text

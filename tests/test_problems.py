@@ -3,7 +3,11 @@
 import numpy as np
 import pytest
 
-from lpc_mdo.problems import PROBLEM_NAMES, build_problem
+from lpc_mdo.problems import build_problem
+from lpc_mdo.study_plan import STAGE_NAMES
+
+#: Builds or runs the full model: the integration tier (README, 'Run the tests').
+pytestmark = pytest.mark.integration
 
 
 def sizes(prob):
@@ -26,19 +30,27 @@ def sizes(prob):
         # Subproblem 1
         # constrains the pusher motor margin only (it sizes the pusher motor; the lift motors are
         # subproblem 2's). With the differentials come the 40 linear bounds on each transition
-        # lift rotor's own speed (ours).
+        # lift rotor's own speed and the 40 limits on their edgewise advance ratios (ours).
         ("rotor_presizing", (4 + 4 + 16 + 16, 1 + 2 + 4)),
         (
             "subproblem_1",
-            (4 + 20 + 10 + 5 + 5 + 3 + 3 + 8 + 1 + 1 + 1 + 45, 1 + 2 + 9 + 25 + 1 + 1 + 1 + 40),
+            # ... plus the tip Mach numbers (hover 4 pairs, transition 8 lift rotors and the
+            # pusher at 5 points, the pusher in climb, cruise and descent) and the 20 chord
+            # control points' minimum chord.
+            (
+                4 + 20 + 10 + 5 + 5 + 3 + 3 + 8 + 1 + 1 + 45 + 1,
+                1 + 2 + 9 + 25 + 1 + 1 + 40 + 40 + 4 + 5 * 9 + 3 + 20 + 1,
+            ),
         ),
         ("subproblem_2", (28 + 4 + 4, 16 + 8 + 8)),
         ("subproblem_3", (32 + 2, 2 + 14 + 2)),
         # Subproblem 4: planform in climb, cruise and descent (Table 2: cruise only;
         # see problems.py).
         ("subproblem_4", (5 + 3 * 3, 3 * 3 + 1)),
-        ("full", (161 + 20, 96 + 11 - 10 + 40)),
-        ("baseline", (161 + 20, 96 + 11 - 10 + 40)),
+        # Full: also the tip Mach numbers of the OEI (4 x 7) and transition (5 x 9) rotors and
+        # the pusher in climb, cruise and descent (3), and the minimum chord (20, linear).
+        ("full", (161 + 20, 96 + 2 - 10 + 40 + 40 + 28 + 45 + 3 + 20 + 9)),
+        ("baseline", (161 + 20, 96 + 2 - 10 + 40 + 40 + 28 + 45 + 3 + 20 + 9)),
     ],
 )
 def test_problem_sizes(name, expected):
@@ -47,7 +59,7 @@ def test_problem_sizes(name, expected):
 
 def test_full_problem_with_lateral_trim_is_table6():
     full = build_problem("full", optimizer="SLSQP", lateral_trim=True)
-    assert sizes(full) == (161 + 20, 96 + 11 + 40)
+    assert sizes(full) == (161 + 20, 96 + 2 + 40 + 40 + 28 + 45 + 3 + 20 + 9)
 
 
 @pytest.mark.requires_ipopt
@@ -80,7 +92,7 @@ def test_subproblem_2_trims_every_oei_case():
 def test_unknown_problem_name():
     with pytest.raises(ValueError, match="allowed: "):
         build_problem("subproblem_9")
-    assert PROBLEM_NAMES[-2:] == ("full", "baseline")
+    assert STAGE_NAMES[-2:] == ("full", "baseline")
 
 
 def test_baseline_objective_is_one_at_the_initial_design():
@@ -161,3 +173,30 @@ def test_a_design_variable_recorded_on_its_bound_is_set_on_it():
     # A design variable declared on some indices (rotor presizing: 4 of 5 radii) is left alone.
     five = np.array([1.2 - 1e-12, 1.3, 1.3, 1.3, 1.0])
     np.testing.assert_array_equal(_onto_bounds(five, np.full(4, 1.2), np.full(4, 1.8)), five)
+
+
+def test_clearances_and_control_reserve_are_declared_when_named():
+    # Optional kinds: the 18 plan-view clearances of the left lift rotors (6 same-side disk
+    # pairs, 4 each to the fuselage, the h-tail and the pusher) and the roll and pitch control
+    # reserve of hover and the 4 OEI cases.
+    import openmdao.api as om
+
+    from lpc_mdo.groups.lpc import LPCGroup
+    from lpc_mdo.problems import CONSTRAINT_KINDS, declare_problem
+
+    prob = om.Problem(reports=False)
+    prob.model = LPCGroup()
+    declare_problem(prob.model, constraint_kinds=CONSTRAINT_KINDS + ("clearance",))
+    prob.setup()
+    prob.final_setup()
+    cons = prob.model.get_constraints()
+    clearances = sum(m["size"] for n, m in cons.items() if n.endswith("_clearance"))
+    assert clearances == 6 + 4 + 4 + 4
+    assert not any(n.endswith("control_acceleration") for n in cons)
+    prob = om.Problem(reports=False)
+    prob.model = LPCGroup()
+    declare_problem(prob.model, constraint_kinds=CONSTRAINT_KINDS + ("control_reserve",))
+    prob.setup()
+    prob.final_setup()
+    cons = prob.model.get_constraints()
+    assert sum(m["size"] for n, m in cons.items() if n.endswith("control_acceleration")) == 10

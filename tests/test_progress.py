@@ -20,6 +20,9 @@ from lpc_mdo.problems import attach_recorder, build_analysis_problem
 from lpc_mdo.progress import ProgressLine, interrupt_message, optimizer_iterations, trim_line
 from lpc_mdo.trim import trim
 
+#: Builds or runs the full model: the integration tier (README, 'Run the tests').
+pytestmark = pytest.mark.integration
+
 LINE = re.compile(r"iter +(\d+|-)  eval +(\d+)  ")
 
 

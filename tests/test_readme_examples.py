@@ -1,4 +1,4 @@
-"""The README's Python examples marked ``<!-- test ... -->`` run as written.
+"""The Python examples of the README and the docs' examples page marked ``<!-- test ... -->`` run.
 
 Each marked block runs in a fresh interpreter (so that an example that registers a condition kind
 cannot leak into other tests), in a temporary folder holding ``my_lpc.toml``, a copy of the
@@ -15,14 +15,18 @@ from pathlib import Path
 
 import pytest
 
-README = Path(__file__).resolve().parents[1] / "README.md"
+#: Builds or runs the full model: the integration tier (README, 'Run the tests').
+pytestmark = pytest.mark.integration
+
+ROOT = Path(__file__).resolve().parents[1]
+#: The user-facing pages whose marked examples run: the README and the docs' examples page.
+PAGES = (ROOT / "README.md", ROOT / "docs" / "examples.md")
 MARKER = "<!-- test"
 
 
 def _marked_blocks():
-    text = README.read_text(encoding="utf-8")
     pattern = re.compile(r"^" + re.escape(MARKER) + r"[^\n]*\n```python\n(.*?)^```", re.S | re.M)
-    return pattern.findall(text)
+    return [code for page in PAGES for code in pattern.findall(page.read_text(encoding="utf-8"))]
 
 
 BLOCKS = _marked_blocks()

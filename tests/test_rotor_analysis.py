@@ -2,7 +2,7 @@
 
 import numpy as np
 import pytest
-from test_bem_validation import APC_GEOMETRY, APC_PERFORMANCE, APC_POLAR
+from rotor_cases import APC_GEOMETRY, APC_PERFORMANCE, APC_POLAR
 
 import lpc_mdo.api as lpc
 

@@ -11,9 +11,9 @@ import pytest
 from openmdao.utils.assert_utils import assert_near_equal
 from openmdao.utils.om_warnings import DriverWarning
 
-from lpc_mdo.drivers import SlsqpDriver, make_driver
+from lpc_mdo.drivers import SlsqpDriver, make_driver, max_violation
 from lpc_mdo.post.case_data import driver_cases, last_case
-from lpc_mdo.progress import ProgressLine, max_violation
+from lpc_mdo.progress import ProgressLine
 
 
 class Bowl(om.ExplicitComponent):

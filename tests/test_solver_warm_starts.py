@@ -12,7 +12,7 @@ import numpy as np
 import openmdao.api as om
 import pytest
 from numpy.testing import assert_allclose
-from test_bem import _bem_problem
+from rotor_cases import bem_problem
 
 from lpc_mdo.components.aero.alpha_star import AlphaStarComp
 from lpc_mdo.components.motor.efficiency import EMTorqueComp
@@ -64,7 +64,7 @@ def test_start_inside_the_bracket_is_used_nan_and_outside_are_not():
 
 
 def test_bem_inflow_warm_start_gives_the_cold_root_in_fewer_evaluations(monkeypatch):
-    warm = _bem_problem()
+    warm = bem_problem()
     rpm = warm.get_val("rpm") * 1.01
     speed = warm.get_val("axial_velocity") + 0.3
     evaluations = _counter(monkeypatch, BEMSections, "evaluate")
@@ -73,7 +73,7 @@ def test_bem_inflow_warm_start_gives_the_cold_root_in_fewer_evaluations(monkeypa
     warm.run_model()
     warm_count = evaluations[0]
 
-    cold = _bem_problem()
+    cold = bem_problem()
     cold.set_val("inflow_angle", np.nan)  # no usable previous solution: cold start
     cold.set_val("rpm", rpm)
     cold.set_val("axial_velocity", speed)

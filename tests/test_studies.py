@@ -6,6 +6,9 @@ import pytest
 from lpc_mdo.studies import structural_sizing_problem
 from lpc_mdo.vehicle import reference_vehicle
 
+#: Builds or runs the full model: the integration tier (README, 'Run the tests').
+pytestmark = pytest.mark.integration
+
 
 def solve(aggregated):
     prob = structural_sizing_problem(aggregated=aggregated, optimizer="SLSQP")

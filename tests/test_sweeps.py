@@ -13,15 +13,13 @@ from pathlib import Path
 
 import pytest
 
-from lpc_mdo.sweeps import (
-    SWEEP_PARAMETERS,
-    reference_value,
-    run_sweep,
-    sweep_chains,
-    sweep_vehicle,
-)
+from lpc_mdo.sweep_parameters import SWEEP_PARAMETERS, reference_value, sweep_vehicle
+from lpc_mdo.sweeps import run_sweep, sweep_chains
 from lpc_mdo.vehicle import reference_vehicle
 from lpc_mdo.warm_start import solve_stage
+
+#: Builds or runs the full model: the integration tier (README, 'Run the tests').
+pytestmark = pytest.mark.integration
 
 
 def test_chains_start_at_the_reference_and_walk_outwards():

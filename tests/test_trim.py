@@ -7,6 +7,9 @@ import pytest
 from lpc_mdo.problems import build_analysis_problem
 from lpc_mdo.trim import _solve_block, trim
 
+#: Builds or runs the full model: the integration tier (README, 'Run the tests').
+pytestmark = pytest.mark.integration
+
 
 def test_hover_trims_to_weight_with_equal_rotor_speeds():
     prob = build_analysis_problem(

@@ -16,6 +16,9 @@ from lpc_mdo.post.tables import MissingVariableError
 from lpc_mdo.post.trim_residuals import trim_residual_table, trim_residuals
 from lpc_mdo.vehicle import reference_vehicle
 
+#: Builds or runs the full model: the integration tier (README, 'Run the tests').
+pytestmark = pytest.mark.integration
+
 MASS = 2000.0
 INERTIA = np.array([[5000.0, 0.0, -700.0], [0.0, 9000.0, 0.0], [-700.0, 0.0, 13000.0]])
 HOVER_LINEAR = [0.0, 0.0, 2e-4]

@@ -23,6 +23,9 @@ from lpc_mdo.groups.vehicle import VehicleGroup, motor_loadings, motor_parameter
 from lpc_mdo.groups.weights import placeholder_calibration_inputs
 from lpc_mdo.vehicle import reference_vehicle
 
+#: Builds or runs the full model: the integration tier (README, 'Run the tests').
+pytestmark = pytest.mark.integration
+
 REFERENCE = reference_vehicle()
 REFERENCE = dataclasses.replace(
     REFERENCE,

@@ -250,6 +250,7 @@ def test_vehicle_group_solves_its_adjoint_by_one_lu_and_openmdao_says_nothing_ab
     assert len(notices) == 1 and notices[0].endswith("\nuser\nvehicle\n"), notices
 
 
+@pytest.mark.integration
 def test_blade_geometry_is_computed_once_and_every_condition_reads_its_rows():
     """
     Blade geometry: one group per vehicle, each condition reads the rows of its rotors.

@@ -8,6 +8,9 @@ from openmdao.utils.assert_utils import assert_near_equal
 from lpc_mdo.vehicle import reference_vehicle
 from lpc_mdo.warm_start import magnitude_refs, run_sequence
 
+#: Builds or runs the full model: the integration tier (README, 'Run the tests').
+pytestmark = pytest.mark.integration
+
 
 @pytest.mark.requires_ipopt
 def test_planform_found_by_subproblem_4_carries_into_subproblem_3(tmp_path):
@@ -54,7 +57,7 @@ def test_default_optimizers_follow_the_paper():
     # stands in for SNOPT when pyoptsparse does not have it. The presizing (ours) and
     # subproblems 1 and 3 are SLSQP (measured: IPOPT did not converge there).
     from lpc_mdo.drivers import pyoptsparse_optimizers
-    from lpc_mdo.warm_start import default_optimizer
+    from lpc_mdo.study_plan import default_optimizer
 
     assert default_optimizer("subproblem_2") == default_optimizer("subproblem_4") == "IPOPT"
     assert {default_optimizer(n) for n in ("rotor_presizing", "subproblem_1", "subproblem_3")} == {
@@ -65,10 +68,10 @@ def test_default_optimizers_follow_the_paper():
 
 
 def test_rotor_presizing_converges_with_its_default_optimizer(tmp_path):
-    # Issue 19 item 5: the presizing stage converges (with IPOPT it circled its optimum to the
-    # 400-iteration limit). At the optimum the hover noise sits at its 70 dBA limit (SLSQP's
-    # tolerance: within 0.01 dB) and the lift radii at their 1.8 m upper bound (measured
-    # 2026-12-04: 16 iterations, 504.7 kW), every hover trim row within 1e-4 scaled.
+    # The presizing stage converges with its default optimizer (with IPOPT it circled its
+    # optimum to the 400-iteration limit). At the optimum the hover noise sits at its 70 dBA
+    # limit (SLSQP's tolerance: within 0.01 dB) and the lift radii at their 1.8 m upper bound
+    # (measured 2026-12-04: 16 iterations, 504.7 kW), every hover trim row within 1e-4 scaled.
     from lpc_mdo.warm_start import solve_stage
 
     stage = solve_stage("rotor_presizing", str(tmp_path / "presizing.sql"), log=lambda *a: None)
@@ -81,8 +84,9 @@ def test_rotor_presizing_converges_with_its_default_optimizer(tmp_path):
 
 def test_baseline_continuation_raises_alpha_stage_by_stage(tmp_path):
     # Two alphas, one SLSQP iteration each, no trim (machinery only; the measured runs are in
-    # the issue note): every stage writes its own case file, starts from the previous one, and
-    # its recorded objective is eq. 8 with its own alpha: f/f_ref + alpha * deviation.
+    # docs/theory/optimization.rst): every stage writes its own case file, starts from the
+    # previous one, and its recorded objective is eq. 8 with its own alpha: f/f_ref + alpha *
+    # deviation.
     from lpc_mdo.warm_start import solve_baseline
 
     vehicle = reference_vehicle()
@@ -113,8 +117,8 @@ def test_baseline_continuation_raises_alpha_stage_by_stage(tmp_path):
 
 
 def test_perturbed_start_case_stays_within_the_fraction_and_the_bounds(tmp_path):
-    # Issue 19's perturbed starts: each scalar moves by at most the fraction, stays within its
-    # bounds, and the seed fixes the draw.
+    # Perturbed starts: each scalar moves by at most the fraction, stays within its bounds, and
+    # the seed fixes the draw.
     from lpc_mdo.groups.lpc import openmdao_units
     from lpc_mdo.warm_start import perturbed_start_case
 

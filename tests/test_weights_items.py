@@ -1,4 +1,4 @@
-"""Named mass items: wing secondary structure, landing gear, systems, stations, rotors, cg."""
+"""Named mass items: wing secondary structure, landing gear, systems, zones, rotors, cg."""
 
 import numpy as np
 import openmdao.api as om
@@ -6,7 +6,11 @@ import pytest
 from openmdao.utils.assert_utils import assert_check_partials, assert_near_equal
 
 from lpc_mdo.api.weights import format_mass_properties, mass_breakdown, mass_properties
-from lpc_mdo.components.weights.item_placement import FuselageStationComp
+from lpc_mdo.components.weights.item_placement import (
+    NASA_LANDING_GEAR_STATION,
+    NASA_SYSTEMS_STATION,
+    TailConeShiftComp,
+)
 from lpc_mdo.components.weights.landing_gear import (
     NASA_LANDING_GEAR_FRACTION,
     LandingGearMassComp,
@@ -14,7 +18,7 @@ from lpc_mdo.components.weights.landing_gear import (
 from lpc_mdo.components.weights.systems import SystemsMassComp
 from lpc_mdo.components.weights.wing_secondary import WingSecondaryMassComp
 from lpc_mdo.groups.vehicle import VehicleGroup, calibrated_other_mass
-from lpc_mdo.groups.weights import NASA_FUSELAGE_LENGTH, WeightsGroup, motor_group_indices
+from lpc_mdo.groups.weights import SYSTEMS_AT_NASA_STATION, WeightsGroup, motor_group_indices
 from lpc_mdo.vehicle import paper_calibrated_vehicle, reference_vehicle
 
 LB, FT = 0.45359237, 0.3048
@@ -74,18 +78,93 @@ def test_landing_gear_nasa_weight_statement():
     assert_check_partials(data, atol=1e-12, rtol=1e-12)
 
 
-def test_landing_gear_station_is_nasa_gear_position():
-    # At NASA's fuselage length the gear sits where GUAM puts it: (-13.3246 ft + 2.464 ft)
-    # * 0.3048 = -3.310324 m, z (-1.391179 + 5.113) * 0.3048 = 1.134411 m; 1e-6.
-    from lpc_mdo.groups.weights import NASA_STATIONS
+def test_nasa_stations_by_hand():
+    # GUAM's gear (-13.32464336, 0, -1.391179415) ft and systems (-16, 0, -6) ft, moved to the
+    # nose (CAD (2.464, 0, 5.113) ft) and flipped to x forward, z down, by hand; 1e-9.
+    gear = [(-13.32464336 + 2.464) * FT, 0.0, (-1.391179415 + 5.113) * FT]
+    assert_near_equal(np.array(NASA_LANDING_GEAR_STATION), [-3.310324, 0.0, 1.134411], 1e-6)
+    assert_near_equal(np.array(NASA_LANDING_GEAR_STATION), gear, 1e-12)
+    assert_near_equal(np.array(NASA_SYSTEMS_STATION), [-4.1257728, 0.0, -0.2703576], 1e-9)
 
-    comp = FuselageStationComp(stations={"landing_gear": NASA_STATIONS["landing_gear"]})
-    prob = run(comp, fuselage_length=NASA_FUSELAGE_LENGTH)
-    assert_near_equal(prob.get_val("landing_gear_cg"), [-3.310324, 0.0, 1.134411], 1e-6)
+
+def test_tail_cone_shift_by_hand():
+    # The empennage at x = -7.0 m and the pusher row of two motors ride on the tail: 1.5 m of
+    # stretch (9.144 -> 10.644 m) moves them to -8.5 m; the front motor keeps -1.0 m; y and z
+    # never move. Exact (1e-15); partials constant (checked by complex step).
+    comp = TailConeShiftComp(items={"empennage": 1, "motor": [0, 1]}, reference_length=9.144)
+    prob = run(
+        comp,
+        fuselage_length=10.644,
+        empennage_reference_cg=[-7.0, 0.1, -0.9],
+        motor_reference_cg=[[-1.0, 2.0, -0.7], [-9.0, 0.0, -0.8]],
+    )
+    assert_near_equal(prob.get_val("empennage_cg"), [-8.5, 0.1, -0.9], 1e-15)
+    assert_near_equal(prob.get_val("motor_cg"), [[-1.0, 2.0, -0.7], [-10.5, 0.0, -0.8]], 1e-15)
     data = prob.check_partials(method="cs", compact_print=True, out_stream=None)
     assert_check_partials(data, atol=1e-12, rtol=1e-12)
-    with pytest.raises(ValueError, match="must be"):
-        FuselageStationComp(stations={"gear": (2.0, 0.0, 0.0)})
+    with pytest.raises(ValueError, match="0 and 1"):
+        run(TailConeShiftComp(items={"gear": [2]}, reference_length=9.0))
+
+
+def test_cabin_length_from_seats_by_hand():
+    # 6 seats, 2 abreast -> 3 rows of 0.9144 m (36 in) = 2.7432 m; the cabin starts at the
+    # nose bay's 1.11216 m (0.121627 x 30 ft) and ends at 3.85536 m. The shortest fuselage adds
+    # the fin's root chord 2 S/((1 + taper) h), h = sqrt(AR S): 2 x 2.54/(1.272 x
+    # sqrt(1.17 x 2.54)) = 2.31668 m -> 6.17204 m, below the file's 6.4008 m lower bound; 1e-9.
+    from lpc_mdo.vehicle.consistency import min_fuselage_length
+
+    vehicle = reference_vehicle()
+    fuselage = vehicle.fuselage
+    assert fuselage.seat_rows == 3
+    assert_near_equal(fuselage.cabin_length, 3 * 0.9144, 1e-12)
+    assert_near_equal(fuselage.cabin_end, 1.11216 + 2.7432, 1e-12)
+    fin = 2.0 * 2.54 / (1.272 * np.sqrt(1.17 * 2.54))
+    parts = {"fuselage": fuselage, "vertical_tail": vehicle.vertical_tail}
+    assert_near_equal(min_fuselage_length(parts), 3.85536 + fin, 1e-9)
+    assert min_fuselage_length(parts) < vehicle.design_variables["fuselage_length"].lower[0]
+
+
+def _weights_at(length):
+    prob = weights()
+    prob.set_val("fuselage_length", length)
+    prob.run_model()
+    return prob
+
+
+def test_item_stations_at_two_fuselage_lengths_by_hand():
+    # The stretch is a tail-cone plug: gear and systems keep NASA's stations, the booms their
+    # cg (the wing keeps its station); the empennage and the pusher's motor and rotor move aft
+    # by exactly the change of length. Shortest and longest fuselage of the bounds; 1e-12.
+    vehicle = reference_vehicle()
+    ref = _weights_at(vehicle.fuselage.length)
+    pusher_x = vehicle.pusher.hub_position[0]
+    for length in (6.4008, 11.8872):
+        prob = _weights_at(length)
+        shift = length - 9.144
+        assert_near_equal(prob.get_val("landing_gear_cg"), NASA_LANDING_GEAR_STATION, 1e-12)
+        for name in SYSTEMS_AT_NASA_STATION:
+            assert_near_equal(prob.get_val(f"{name}_cg"), NASA_SYSTEMS_STATION, 1e-12)
+        assert_near_equal(prob.get_val("boom_cg"), ref.get_val("boom_cg"), 1e-12)
+        expected = ref.get_val("empennage_cg") - [shift, 0.0, 0.0]
+        assert_near_equal(prob.get_val("empennage_cg"), expected, 1e-12)
+        for name in ("motor_cg", "rotor_cg"):
+            assert_near_equal(prob.get_val(name)[-1, 0], pusher_x - shift, 1e-12)
+            assert_near_equal(prob.get_val(name)[:-1], ref.get_val(name)[:-1], 1e-12)
+
+
+def test_no_equipment_enters_the_cabin_over_the_fuselage_length_range():
+    # Over the fuselage_length bounds no systems item, the gear, the battery or the power
+    # electronics has its cg in the cabin (between its stations and above its floor), and the
+    # seats and furnishings stay in it.
+    vehicle = reference_vehicle()
+    fuselage = vehicle.fuselage
+    dv = vehicle.design_variables["fuselage_length"]
+    equipment = [*SYSTEMS_AT_NASA_STATION, "landing_gear", "battery", "power_electronics"]
+    for length in np.linspace(dv.lower[0], dv.upper[0], 5):
+        prob = _weights_at(length)
+        for name in equipment:
+            assert not fuselage.in_cabin(prob.get_val(f"{name}_cg")), (name, length)
+        assert fuselage.in_cabin(prob.get_val("payload_cg"))
 
 
 def weights():
@@ -118,7 +197,8 @@ def test_cg_moves_with_fuselage_length_and_battery_position():
     prob.set_val("battery_cg", prob.get_val("battery_cg") + [-1.0, 0.0, 0.0])
     prob.run_model()
     assert_near_equal(cg0[0] - prob.get_val("cg")[0], battery / mass, 1e-10)
-    # Fuselage 1 m longer: fuselage, empennage, gear and systems move aft, so does the cg.
+    # Fuselage 1 m longer: the fuselage structure, the empennage and the pusher move aft, so
+    # does the cg.
     prob.set_val("battery_cg", prob.get_val("battery_cg") + [1.0, 0.0, 0.0])
     prob.set_val("fuselage_length", prob.get_val("fuselage_length") + 1.0)
     prob.run_model()

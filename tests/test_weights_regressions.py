@@ -161,6 +161,21 @@ def test_partials(comp_class):
     assert_check_partials(data, atol=1e-8, rtol=1e-10)
 
 
+def test_boom_cg_at_a_fixed_fuselage_length():
+    # cg_fuselage_length = 9.144: at 10.66 m the booms' cg is the regression's at 9.144 m (the
+    # wing keeps its station), while mass and inertia follow 10.66 m; 1e-12. Partials by
+    # complex step, with d(cg)/dL = 0.
+    fixed = run(BoomRegressionComp(cg_fuselage_length=9.144), fuselage_length=10.66)
+    at_ref = run(BoomRegressionComp(), fuselage_length=9.144)
+    long = run(BoomRegressionComp(), fuselage_length=10.66)
+    assert_near_equal(fixed.get_val("boom_cg"), at_ref.get_val("boom_cg"), 1e-12)
+    assert_near_equal(fixed.get_val("boom_mass"), long.get_val("boom_mass"), 1e-12)
+    assert abs(fixed.get_val("boom_cg")[0] - long.get_val("boom_cg")[0]) > 0.3
+    data = fixed.check_partials(method="cs", compact_print=True, out_stream=None)
+    assert_check_partials(data, atol=1e-8, rtol=1e-10)
+    assert np.all(data["comp"][("boom_cg", "fuselage_length")]["J_fd"] == 0.0)
+
+
 def test_partials_off_design():
     # Away from the initial design, with non-default factors (boom inertia is nonlinear).
     values = dict(
@@ -187,9 +202,19 @@ def test_bad_inputs_and_options():
         r"must be > 0 \(m\*\*2\)",
     ):
         run(FuselageRegressionComp(), wing_area=-1.0)
-    # A 1 m fuselage extrapolates to a negative mass: 42.6 x 1 - 116.7 + ... < 0.
+    # Outside the fuselage-length data range [6.4008, 11.8872] m the regressions stop.
+    for comp in (FuselageRegressionComp, WingRegressionComp, BoomRegressionComp):
+        with pytest.raises(
+            om.AnalysisError,
+            match=r"'fuselage_length' = 1.0 is out of range: must be in \[6.4008, 11.8872\] \(m\)",
+        ):
+            run(comp(), fuselage_length=1.0)
+    # An aspect ratio of 500 extrapolates to a negative mass: 1.01 - 0.4068 x 500 + 42.6 x
+    # 6.4008 + 0.0311 x 800 + 0.0687 x 57.19 - 116.7 = -17.7 kg.
     with pytest.raises(om.AnalysisError, match="fuselage_mass = .* must be > 0"):
-        run(FuselageRegressionComp(), fuselage_length=1.0)
+        run(
+            FuselageRegressionComp(), wing_area=1.0, wing_aspect_ratio=500.0, fuselage_length=6.4008
+        )
     with pytest.raises(ValueError, match=r"'mass_factor' = -1.3 is out of range: must be > 0"):
         FuselageRegressionComp(mass_factor=-1.3)
     with pytest.raises(

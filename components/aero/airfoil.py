@@ -31,12 +31,25 @@ How a :class:`TablePolar` is built from a table cl, cd(alpha, Re, M):
    stored exact slopes, and cubic Hermite with 3-point (parabola) slopes in ln Re and in M.
    Each factor is C1, so cl and cd are C1 in (alpha, Re, M) jointly, periodic and C1 across
    +-180 deg, and the analytic derivatives are those of the interpolant (complex-step safe:
-   intervals are chosen from real parts). Outside the Reynolds and Mach ranges of the table the
-   values are held at the nearest edge (zero Re or M derivative there).
+   intervals are chosen from real parts).
+4. **Stated range**: the table holds for Mach numbers up to its highest tabulated one and for
+   Reynolds numbers up to its highest; a query above either (or a negative or non-finite one)
+   raises ``om.AnalysisError`` naming the polar, the value and the range, so that a rotor or
+   wing model never runs on values held at those edges. Below the lowest tabulated Reynolds
+   number (2e4 for the rotor section) the lowest slice is used, a stated rule, not a range
+   error: such sections are those at almost no relative velocity (an edgewise rotor's
+   reverse-flow boundary, where U -> 0 at every speed; a blade root at low rotor speed), whose
+   dynamic pressure is below 0.05 % of a tip's (U < 3 m/s on a 0.1 m chord), so their loads do
+   not depend on the polar; raising there would stop every transition trim (measured: Re down
+   to 2e3 at Pitt-Peters stations during the trim of the reference vehicle). An axis with a
+   single value (a user table at one Reynolds and Mach number) holds for every value.
 
 Tables shipped in ``lpc_mdo/data/airfoil_<name>.npz`` were made by
 ``run_scripts/make_airfoil_tables.py`` (NeuralFoil 0.3.3, an XFOIL-trained model, with
-Prandtl–Glauert for Mach); ``lpc_mdo/data/README.md`` says how.
+Prandtl–Glauert for Mach, and for the rotor section the Korn–Lock transonic drag rise up to
+M = 0.9); ``lpc_mdo/data/README.md`` says how. Ranges: NACA 0012 (rotor blades) Re 2e4..1e7,
+M 0..0.9; the wing and tail sections Re 1e5..1e7, M 0..0.6 (docs theory/aerodynamics 'Airfoil
+polars').
 """
 
 import collections
@@ -47,6 +60,7 @@ from importlib import resources
 from pathlib import Path
 
 import numpy as np
+import openmdao.api as om
 
 from .hermite import HermiteAxis, tensor_eval
 from .polar import (
@@ -303,8 +317,13 @@ class TablePolar(Polar):
                 f"TablePolar '{self.name}': cl at negative stall >= cl at positive "
                 f"stall; allowed: cl increasing through the attached range."
             )
+        # Viterna's drag rises to CD_max at 90 deg; a stall drag above it (the rotor table's
+        # Korn-Lock wave drag at the Prandtl-Glauert stall lift beyond M 0.8, where the section
+        # is far past drag divergence) would make the post-stall and reverse-flow drag fall
+        # below zero, so the extrapolation starts from at most CD_max (the table up to the stall
+        # point is unchanged; the stall blend joins the two).
         self._a2, self._b2 = viterna_coefficients(
-            self.alpha_stall, self.cl_stall, self.cd_stall, self.cd_max
+            self.alpha_stall, self.cl_stall, np.minimum(self.cd_stall, self.cd_max), self.cd_max
         )
         # Reverse flow (polar.reverse_flow) has cd(+-180 deg) = -B_m; B_m is the mean of the two
         # sides' B2 as in LinearQuadraticPolar, capped at -(the slice's minimum table cd) so the
@@ -435,7 +454,37 @@ class TablePolar(Polar):
         state.pop("_condition_caches", None)  # a cache, not part of the polar
         return state
 
+    def check_conditions(self, reynolds, mach):
+        """
+        Raise ``om.AnalysisError`` if a query lies outside the table's Reynolds or Mach range.
+
+        The table's stated range (module docstring, 'Stated range'): Mach numbers in
+        [0, highest tabulated], Reynolds numbers in [0, highest tabulated] (below the lowest
+        tabulated one the lowest slice is used); an axis with a single value holds for every
+        value. The message names the polar, the extreme value queried and the range.
+        """
+        for label, values, grid in (
+            ("Reynolds number", reynolds, self.table_reynolds),
+            ("Mach number", mach, self.table_mach),
+        ):
+            if grid.size < 2:
+                continue
+            real = np.real(np.asarray(values))
+            if real.size == 0:
+                continue
+            low, high = float(np.min(real)), float(np.max(real))
+            floor = 0.0 if label == "Reynolds number" else grid[0]
+            if low < floor or high > grid[-1] or not (np.isfinite(low) and np.isfinite(high)):
+                raise om.AnalysisError(
+                    f"airfoil polar '{self.name}': {label} {low:.4g}..{high:.4g} queried; the "
+                    f"table holds for {floor:.4g}..{grid[-1]:.4g} (docs theory/aerodynamics "
+                    f"'Airfoil polars'). A section outside it is outside the model's stated "
+                    f"range: keep the design inside (tip-Mach and chord constraints) or supply "
+                    f"a table that covers it."
+                )
+
     def _conditions(self, reynolds, mach):
+        self.check_conditions(reynolds, mach)
         ir, wr, dwr = self._re_axis.weights(reynolds)
         im, wm, dwm = self._mach_axis.weights(mach)
         return (ir, wr, dwr), (im, wm, dwm)

@@ -24,7 +24,8 @@ class HermiteAxis:
 
     The interpolant on interval k is sum_j W_kj(t) f_(s_k + j), j < width, with W_kj cubic in the
     local coordinate t; :meth:`weights` returns the window start s_k and the weights and their
-    derivatives. Queries outside the grid are clamped to its ends (zero derivative weights there).
+    derivatives. Queries outside the grid are clamped to its ends (zero derivative weights beyond
+    them).
 
     Parameters
     ----------
@@ -129,7 +130,9 @@ class HermiteAxis:
             out = [np.zeros((num, 1), dtype=int), ones, np.zeros_like(ones)]
             return tuple(out + [np.zeros_like(ones)]) if second else tuple(out)
         qr = np.real(q)
-        lo, hi = qr <= self.nodes[0], qr >= self.nodes[-1]
+        # Strictly outside: at an end node itself the derivative is the end interval's slope
+        # (a query at a table's edge, e.g. a polar at its highest Mach number, keeps it).
+        lo, hi = qr < self.nodes[0], qr > self.nodes[-1]
         clamped = lo | hi
         q_in = np.where(clamped, self.nodes[0], q)
         u = np.log(q_in) if self.log else q_in

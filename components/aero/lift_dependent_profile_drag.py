@@ -1,4 +1,4 @@
-"""Lift-dependent profile drag of the VLM strips from the airfoil polar (issue 16 item 2)."""
+"""Lift-dependent profile drag of the VLM strips from the airfoil polar."""
 
 import numpy as np
 import openmdao.api as om

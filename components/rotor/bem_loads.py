@@ -251,6 +251,14 @@ class RotorPerformanceComp(om.ExplicitComponent):
     - FoM = T^(3/2)/(sqrt(2 rho pi R^2) P), i.e. C_T,H^(3/2)/(sqrt(2) C_Q,H) (hover; computed as
       T sqrt|T| so that a negative thrust gives a negative value, not NaN)
     - M_tip = Omega R / a   (paper's hover constraint <= 0.6)
+    - M_helical = sqrt(V_x^2 + (Omega R + abs(V_ip))^2) / a, the largest resultant Mach number at
+      the blade tip over a revolution: the helical tip Mach number of a propeller
+      (Raymer, Aircraft Design, sec. 10.4) and, with ``edgewise``, at the advancing blade
+      (V_ip the in-plane velocity of the disk, Johnson, Rotorcraft Aeromechanics, ch. 1:
+      M_at = M_tip (1 + mu) in level flight). It bounds the Mach number of every blade section
+      the BEM (axial: abs(V_ip) not in its sections, so not here) or the Pitt-Peters model
+      (edgewise) evaluates, so its limit keeps the polar inside its table (docs theory/rotors
+      'Tip Mach number limits').
 
     Analytic partials, elementwise over (rotor, node).
 
@@ -278,11 +286,19 @@ class RotorPerformanceComp(om.ExplicitComponent):
         Hover figure of merit.
     tip_mach : float, (num_rotors, num_nodes), -
         Rotational tip Mach number.
+    helical_tip_mach : float, (num_rotors, num_nodes), -
+        Largest resultant tip Mach number (helical; at the advancing blade with ``edgewise``).
+
+    With ``edgewise`` the input ``inplane_velocity`` (num_rotors, num_nodes, 2), m/s, the
+    freestream velocity in the disk plane, enters the helical tip Mach number.
 
     Options
     -------
     num_rotors, num_nodes : int
         Array sizes (>= 1).
+    edgewise : bool
+        The rotor model resolves the in-plane velocity (Pitt-Peters): the helical tip Mach
+        number is the advancing blade's (default False: axial BEM).
     """
 
     _OUTPUTS = (
@@ -293,12 +309,23 @@ class RotorPerformanceComp(om.ExplicitComponent):
         ("efficiency", None, "Propulsive efficiency T V_x / P"),
         ("figure_of_merit", None, "Hover figure of merit T^1.5/(sqrt(2 rho A) P)"),
         ("tip_mach", None, "Rotational tip Mach number Omega R / a"),
+        (
+            "helical_tip_mach",
+            None,
+            "Largest resultant tip Mach number sqrt(V_x^2 + (Omega R + abs(V_ip))^2)/a",
+        ),
     )
 
     def initialize(self):
         self.options.declare("num_rotors", default=1, types=int, lower=1, desc="Number of rotors")
         self.options.declare(
             "num_nodes", default=1, types=int, lower=1, desc="Number of operating points per rotor"
+        )
+        self.options.declare(
+            "edgewise",
+            default=False,
+            types=bool,
+            desc="In-plane velocity enters the helical tip Mach number (advancing blade)",
         )
 
     def setup(self):
@@ -323,6 +350,14 @@ class RotorPerformanceComp(om.ExplicitComponent):
             units="m/s",
             desc="Speed of sound",
         )
+        edgewise = self.options["edgewise"]
+        if edgewise:
+            self.add_input(
+                "inplane_velocity",
+                val=np.zeros(shape + (2,)),
+                units="m/s",
+                desc="Freestream velocity in the disk plane",
+            )
         for name, units, desc in self._OUTPUTS:
             self.add_output(name, val=np.zeros(shape), units=units, desc=desc)
 
@@ -335,6 +370,7 @@ class RotorPerformanceComp(om.ExplicitComponent):
             "efficiency": ("thrust", "torque", "rpm", "axial_velocity"),
             "figure_of_merit": ("thrust", "torque", "rpm", "radius", "density"),
             "tip_mach": ("rpm", "radius", "speed_of_sound"),
+            "helical_tip_mach": ("rpm", "radius", "speed_of_sound", "axial_velocity"),
         }
         for of, wrts in deps.items():
             for wrt in wrts:
@@ -344,6 +380,24 @@ class RotorPerformanceComp(om.ExplicitComponent):
                     else (ar % nn if wrt in ("density", "speed_of_sound") else ar)
                 )
                 self.declare_partials(of, wrt, rows=ar, cols=cols)
+        if edgewise:
+            self.declare_partials(
+                "helical_tip_mach",
+                "inplane_velocity",
+                rows=np.repeat(ar, 2),
+                cols=np.arange(2 * nr * nn),
+            )
+
+    def _helical(self, v, inputs):
+        """Helical tip Mach number and its pieces: (M, w = Omega R + abs(V_ip), U, abs(V_ip))."""
+        if self.options["edgewise"]:
+            vip = inputs["inplane_velocity"]
+            speed_ip = np.sqrt(np.sum(vip * vip, axis=-1))
+        else:
+            speed_ip = np.zeros_like(v["omega"])
+        w = v["omega"] * v["R"] + speed_ip
+        u = np.sqrt(v["vx"] * v["vx"] + w * w)
+        return u / v["a"], w, u, speed_ip
 
     def _values(self, inputs):
         rpm = inputs["rpm"]
@@ -395,6 +449,7 @@ class RotorPerformanceComp(om.ExplicitComponent):
         outputs["efficiency"] = v["T"] * v["vx"] / v["P"]
         outputs["figure_of_merit"] = v["k_fom"] * v["T"] * v["sqrt_abs_T"] / v["P"]
         outputs["tip_mach"] = v["omega"] * v["R"] / v["a"]
+        outputs["helical_tip_mach"] = self._helical(v, inputs)[0]
 
     def compute_partials(self, inputs, partials):
         v = self._values(inputs)
@@ -444,3 +499,19 @@ class RotorPerformanceComp(om.ExplicitComponent):
         put("tip_mach", "rpm", _RPM_TO_RAD_S * big_r / a)
         put("tip_mach", "radius", omega / a)
         put("tip_mach", "speed_of_sound", -omega * big_r / a**2)
+
+        mach, w, u, speed_ip = self._helical(v, inputs)
+        dm_dw = w / (u * a)
+        put("helical_tip_mach", "rpm", dm_dw * _RPM_TO_RAD_S * big_r)
+        put("helical_tip_mach", "radius", dm_dw * omega)
+        put("helical_tip_mach", "axial_velocity", vx / (u * a))
+        put("helical_tip_mach", "speed_of_sound", -mach / a)
+        if self.options["edgewise"]:
+            # dabs(V_ip)/dV_ip = V_ip/abs(V_ip); at abs(V_ip) = 0 (hover) the subgradient 0.
+            safe = np.where(np.real(speed_ip) > 0.0, speed_ip, 1.0)
+            unit = np.where(
+                (np.real(speed_ip) > 0.0)[..., None],
+                inputs["inplane_velocity"] / safe[..., None],
+                0.0,
+            )
+            partials["helical_tip_mach", "inplane_velocity"] = (dm_dw[..., None] * unit).ravel()

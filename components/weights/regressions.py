@@ -104,6 +104,10 @@ class _M4RegressionComp(om.ExplicitComponent):
             desc="fuselage nose (body-frame origin) in the M4 frame, m",
         )
 
+    def _fixed_cg_length(self):
+        """Fuselage length (m) at which the cg's x is evaluated, or None (the regression's L)."""
+        return None
+
     def _sub_parts(self):
         """Return [(mass fraction, {'cg_x': coeffs, ...}, cg_x_factor)] of the sub-parts."""
         raise NotImplementedError
@@ -150,6 +154,16 @@ class _M4RegressionComp(om.ExplicitComponent):
                     entry = factor * _FLIP[a, b] * np.asarray(coeffs[key])
                     self._own[i, a, b] = entry
                     self._own[i, b, a] = entry
+        names = [r[0] for r in self._regressors]
+        fixed = self._fixed_cg_length()
+        if fixed is not None:
+            # The cg at the fixed length: the L column moves into the constant.
+            j = names.index("fuselage_length")
+            self._cg_map[:, :, -1] += fixed * self._cg_map[:, :, j]
+            self._cg_map[:, :, j] = 0.0
+        self._length_range = None
+        if "fuselage_length" in names:
+            self._length_range = tuple(m4_coefficients()["data_range"]["fuselage_length"])
         self._mass_map = factor * np.asarray(self._mass_coefficients(), dtype=float)
         self._cg_total = np.einsum("k,kan->an", self._weights, self._cg_map)
         if k > 1:
@@ -157,7 +171,8 @@ class _M4RegressionComp(om.ExplicitComponent):
 
         for j, (name, *_) in enumerate(self._regressors):
             self.declare_partials(f"{prefix}_mass", name, val=self._mass_map[j])
-            self.declare_partials(f"{prefix}_cg", name, val=self._cg_total[:, j : j + 1])
+            if np.any(self._cg_total[:, j]):  # a cg at a fixed fuselage length has none
+                self.declare_partials(f"{prefix}_cg", name, val=self._cg_total[:, j : j + 1])
             self.declare_partials(f"{prefix}_inertia", name)
 
     def _evaluate(self, inputs):
@@ -175,6 +190,17 @@ class _M4RegressionComp(om.ExplicitComponent):
                 where=self.msginfo,
             )
             values.append(value)
+        if self._length_range is not None:
+            lower, upper = self._length_range
+            check_range(
+                "fuselage_length",
+                inputs["fuselage_length"][0],
+                lower=lower,
+                upper=upper,
+                units="m",
+                error=om.AnalysisError,
+                where=self.msginfo,
+            )
         xt = np.array(values + [1.0])
         mass = self._mass_map @ xt
         if mass.real <= 0.0:
@@ -258,7 +284,9 @@ class FuselageRegressionComp(_SinglePartRegressionComp):
     wing_aspect_ratio : float, (1,), unitless
         Wing aspect ratio (> 0). Default 12.12.
     fuselage_length : float, (1,), m
-        Fuselage length (> 0). Default 9.144.
+        Fuselage length, within the regressions' data range [6.4008, 11.8872] m
+        (``lpc_mdo/data/m4_regressions.toml`` ``[data_range]``; docs theory/weights 'M4
+        regressions'). Default 9.144.
     battery_mass : float, (1,), kg
         Battery mass (>= 0). Default 800.
     cruise_speed : float, (1,), m/s
@@ -285,8 +313,8 @@ class FuselageRegressionComp(_SinglePartRegressionComp):
     Raises
     ------
     om.AnalysisError
-        If an input is outside its range or the regression gives a mass <= 0 or a negative
-        moment of inertia.
+        If an input is outside its range (the fuselage length outside the data range) or the
+        regression gives a mass <= 0 or a negative moment of inertia.
     """
 
     _prefix = "fuselage"
@@ -367,6 +395,14 @@ class BoomRegressionComp(_M4RegressionComp):
         Factor (> 0) on mass and own inertias. Default 1.0 (paper); run scripts 1.3.
     nose : sequence of 3 float
         Body-frame origin in the M4 frame, m.
+    cg_fuselage_length : float or None
+        Fuselage length (m) at which the cg regressions are evaluated; None (default) takes the
+        ``fuselage_length`` input, as coded. The M4 models scale the wing's station, and with
+        it the booms', with the fuselage length (the wing and boom cg regressions both move
+        0.26 m aft and 0.04 m up per metre of fuselage); where the wing keeps its station when
+        the fuselage is stretched (lpc-mdo: the stretch goes into the tail cone, docs
+        theory/geometry 'Fuselage zones'), the booms keep theirs: evaluate their cg at the
+        vehicle's reference length. Mass and inertias still take the input.
 
     Raises
     ------
@@ -377,6 +413,20 @@ class BoomRegressionComp(_M4RegressionComp):
     _prefix = "boom"
     _what = "8 booms"
     groups = ("in_port", "out_port", "in_star", "out_star")
+
+    def initialize(self):
+        super().initialize()
+        self.options.declare(
+            "cg_fuselage_length",
+            default=None,
+            types=(int, float),
+            allow_none=True,
+            lower=0.0,
+            desc="fuselage length (m) of the cg's x; None = the input fuselage_length",
+        )
+
+    def _fixed_cg_length(self):
+        return self.options["cg_fuselage_length"]
 
     def _sub_parts(self):
         data = m4_coefficients()["booms"]

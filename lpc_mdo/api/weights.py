@@ -7,6 +7,8 @@ eqs. 31-33); works on a live problem or on a recorded case alike.
 import numpy as np
 
 from lpc_mdo.components.weights.gross_weight import BREAKDOWN_LABELS
+from lpc_mdo.components.weights.mass_properties import ITEM_COLUMNS
+from lpc_mdo.groups.weights import vehicle_mass_items
 
 __all__ = ["format_mass_breakdown", "format_mass_properties", "mass_breakdown", "mass_properties"]
 
@@ -79,9 +81,6 @@ def mass_properties(source, vehicle=None, prefix=""):
         One per kind of body: ``name``, ``mass`` (kg), ``cg`` (3, m; mass-weighted),
         ``inertia`` (3x3, kg m^2 about the vehicle cg); the last row is ``name='vehicle'``.
     """
-    from lpc_mdo.components.weights.mass_properties import ITEM_COLUMNS
-    from lpc_mdo.groups.weights import vehicle_mass_items
-
     table = np.asarray(source.get_val(f"{prefix}item_mass_properties"), float)
     items = vehicle_mass_items(vehicle)
     if table.shape != (len(items), len(ITEM_COLUMNS)):

@@ -14,6 +14,8 @@ slsqp
     :class:`SlsqpDriver`.
 factory
     :func:`make_driver`, :func:`pyoptsparse_optimizers`.
+scaling
+    :func:`driver_scaling`, :func:`max_violation`: values in the driver's scaled space.
 openmdao_internals
     Every use of OpenMDAO private or semi-private driver API, with the version it was checked
     against and why each is touched.
@@ -26,6 +28,7 @@ from lpc_mdo.drivers.ipopt import (
     IpoptDriver,
     IpoptMultipliers,
 )
+from lpc_mdo.drivers.scaling import driver_scaling, max_violation
 from lpc_mdo.drivers.slsqp import SlsqpDriver
 
 __all__ = [
@@ -35,6 +38,8 @@ __all__ = [
     "IpoptDriver",
     "IpoptMultipliers",
     "SlsqpDriver",
+    "driver_scaling",
     "make_driver",
+    "max_violation",
     "pyoptsparse_optimizers",
 ]

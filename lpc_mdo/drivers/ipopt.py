@@ -265,7 +265,7 @@ class IpoptDriver(omi.DriverHooks):
         bool
             Failure flag: True if IPOPT did not report success.
         """
-        try:
+        try:  # optional dependency (lpc-mdo[ipopt]): imported when IPOPT runs
             import cyipopt
         except ImportError as err:
             raise ImportError(

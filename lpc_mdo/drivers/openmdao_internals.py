@@ -4,7 +4,7 @@ Checked against OpenMDAO 3.45.1, the version pinned in ``pyproject.toml``
 (``openmdao>=3.45.1,<3.46``).  OpenMDAO does not promise that names with a leading underscore
 stay put: the driver autoscaler, for one, changed within 3.45.x.  When the pin moves, this
 module is the only one to re-check; :mod:`lpc_mdo.drivers.ipopt`,
-:mod:`lpc_mdo.drivers.slsqp` and :mod:`lpc_mdo.progress` reach OpenMDAO's internals only
+:mod:`lpc_mdo.drivers.slsqp` and :mod:`lpc_mdo.drivers.scaling` reach OpenMDAO's internals only
 through the names below.
 
 What is touched, and why
@@ -43,8 +43,9 @@ Driver state read or written from outside OpenMDAO's own methods:
 * ``Driver._coloring_info`` - the total-derivative coloring declared with
   ``declare_coloring``, passed to ``Problem.get_total_coloring`` and read for the sparsity of the
   constraint Jacobian.
-* ``Driver._problem`` - weak reference to the owning problem (the progress line reads the
-  declared constraint bounds from its model).
+* ``Driver._problem`` - weak reference to the owning problem (the largest constraint violation,
+  :func:`lpc_mdo.drivers.scaling.max_violation`, reads the declared constraint bounds from its
+  model).
 * ``System._relevance`` (``nonlinear_active``, ``seeds_active``, ``is_relevant``) - restricts a
   model run to the systems the optimization needs, as ``ScipyOptimizeDriver`` does, and tells
   which design variables a constraint depends on when there is no coloring.
@@ -72,6 +73,7 @@ import sys
 
 import openmdao.api as om
 from openmdao.core.driver import Driver, RecordingDebugging
+from openmdao.drivers import scipy_optimizer
 
 __all__ = [
     "DriverHooks",
@@ -231,8 +233,6 @@ def scipy_iteration_callback(callback, finish=None):
         ``finish(result)`` is applied to SciPy's ``OptimizeResult`` before
         ``ScipyOptimizeDriver.run`` reads its ``success`` and ``message``.
     """
-    from openmdao.drivers import scipy_optimizer
-
     original = scipy_optimizer.minimize
 
     def minimize(*args, **kwargs):

@@ -5,7 +5,7 @@ import openmdao.api as om
 from openmdao.utils.om_warnings import DriverWarning, issue_warning
 
 from lpc_mdo.drivers import openmdao_internals as omi
-from lpc_mdo.progress import max_violation
+from lpc_mdo.drivers.scaling import max_violation
 
 __all__ = ["SlsqpDriver"]
 
@@ -31,7 +31,7 @@ class SlsqpDriver(omi.ScipyHooks):
     objective creeps. With ``acceptable_iter`` > 0 the driver also stops, as a success, at an
     *acceptable* point, in the spirit of IPOPT's ``acceptable_iter`` (Wachter and Biegler 2006,
     Sec. 3.9): the current iterate's largest scaled violation
-    (:func:`lpc_mdo.progress.max_violation`, as the progress line prints it) is at most
+    (:func:`lpc_mdo.drivers.scaling.max_violation`, as the progress line prints it) is at most
     ``acceptable_constr_viol`` and the best objective among the iterates of the last
     ``acceptable_iter`` iterations that met that violation differs from the current objective by
     at most ``acceptable_obj_change`` times its size. ``acceptable_stop`` then says why it

@@ -25,12 +25,15 @@ from pathlib import Path
 
 import numpy as np
 
+from lpc_mdo.api.weights import mass_properties as item_mass_properties
 from lpc_mdo.components.weights.gross_weight import BREAKDOWN_LABELS
 from lpc_mdo.post import figures, tables
 from lpc_mdo.post.statistics import statistics_table
 from lpc_mdo.post.tables import DEFAULT_TOL, MissingVariableError, Quantity
 from lpc_mdo.post.trim_residuals import trim_residual_table
 from lpc_mdo.sensitivities import read_sensitivities, sensitivities_path, sensitivity_table
+from lpc_mdo.vehicle import reference_vehicle
+from lpc_mdo.vehicle.condition_contract import condition_kind
 
 __all__ = [
     "LPC_DESIGN_QUANTITIES",
@@ -204,15 +207,11 @@ def lpc_distributions(vehicle):
 
 
 def _powered_conditions(vehicle):
-    from lpc_mdo.vehicle.condition_contract import condition_kind
-
     return tuple(c.name for c in vehicle.conditions if condition_kind(c.kind).power_output)
 
 
 def _all_lift_rotor_conditions(vehicle):
     """Conditions that run every lift rotor (hover and transition in the reference)."""
-    from lpc_mdo.vehicle.condition_contract import condition_kind
-
     n = len(vehicle.lift_rotors)
     return tuple(
         c.name
@@ -335,8 +334,6 @@ class ReportSpec:
     mass_properties: bool = True
 
     def __post_init__(self):
-        from lpc_mdo.vehicle import reference_vehicle
-
         if self.vehicle is None:
             self.vehicle = reference_vehicle()
         if self.conditions is None:
@@ -539,7 +536,7 @@ def _run_section(index, label, cr, spec):
             "docs theory/optimization 'Post-optimal sensitivities'):",
             "",
         )
-        index.table(sensitivity_table(found), f"sensitivities_{slug}")
+        index.table(sensitivity_table(found, cr._filename), f"sensitivities_{slug}")
 
     def convergence():
         path = figures.plot_convergence(
@@ -572,9 +569,7 @@ def mass_properties_table(cr, vehicle=None):
     output of the WeightsGroup, recorded by ``prob.record('final')``); inertia about the
     vehicle cg, the rows add up to the vehicle's.
     """
-    from lpc_mdo.api.weights import mass_properties
-
-    rows = mass_properties(_RecordedValues(cr), vehicle)
+    rows = item_mass_properties(_RecordedValues(cr), vehicle)
     total = rows[-1]["mass"]
     table = tables.Table(
         columns=["item", "mass (kg)", "share (%)", "x (m)", "y (m)", "z (m)",

@@ -96,7 +96,7 @@ def process_peak_memory_mb():
     float or None
         None where the ``resource`` module is unavailable (Windows).
     """
-    try:
+    try:  # Unix only
         import resource
     except ImportError:
         return None

@@ -79,6 +79,20 @@ def _rows(name, rows):
     return rows if name == "hub_radius" else om.slicer[rows, :]
 
 
+def _lift_tip_mach(limits):
+    """Declare each running lift rotor's helical tip Mach <= ``max_lift_rotor_tip_mach``."""
+    return ConditionConstraint(
+        "tip_mach", "lift_helical_tip_mach", {"upper": limits.max_lift_rotor_tip_mach}
+    )
+
+
+def _pusher_tip_mach(limits):
+    """Declare the pusher's helical tip Mach number <= ``max_pusher_tip_mach``."""
+    return ConditionConstraint(
+        "tip_mach", "pusher_helical_tip_mach", {"upper": limits.max_pusher_tip_mach}
+    )
+
+
 def _motor_design_inputs(prefix, rows):
     """Vehicle-level motor designs (``motor_{name}``, one per rotor group): ``rows`` of them."""
     return tuple((f"motor_{name}", f"{prefix}_motor_{name}", rows) for name in DESIGN_OUTPUTS)
@@ -139,7 +153,9 @@ class HoverKind(ConditionKind):
     OEI (hover p_dot and OEI v_dot vanish for every design: degenerate rows). The body is level
     (``pitch`` = 0): the lift-rotor thrust axes are body-fixed and u_dot is not a hover trim row,
     so a pitched hover is a VehicleSpecError. Hover without a failed rotor declares the noise and
-    tip-Mach constraints.
+    tip-Mach constraints (tip Mach <= ``max_tip_mach`` per pair, the paper's); an OEI case the tip
+    Mach number of each working rotor <= ``max_lift_rotor_tip_mach``; hover and OEI declare the
+    control reserve (:meth:`control_reserve`).
     """
 
     field_rules = {
@@ -221,14 +237,43 @@ class HoverKind(ConditionKind):
         )
 
     @classmethod
+    def control_reserve(cls, vehicle):
+        """
+        Return the control-reserve constraint of a hover or OEI condition, or None.
+
+        The axes (roll, pitch, yaw) with a required acceleration > 0 in the vehicle file's
+        ``constraints.min_control_acceleration``: ``control_acceleration`` >= it (docs
+        theory/dynamics 'Hover control reserve').
+        """
+        required = np.array(vehicle.constraints.min_control_acceleration)
+        axes = [int(a) for a in np.flatnonzero(required > 0.0)]
+        if not axes:
+            return None
+        return ConditionConstraint(
+            "control_reserve",
+            "control_acceleration",
+            {
+                "indices": axes,
+                "flat_indices": True,
+                "lower": required[axes],
+                "ref": 0.1,
+                "units": "rad/s**2",
+            },
+        )
+
+    @classmethod
     def constraints(cls, vehicle, condition, bounds):
-        if condition.failed_rotor >= 0:
-            return ()
+        reserve = cls.control_reserve(vehicle)
+        reserve = () if reserve is None else (reserve,)
         limits = vehicle.constraints
+        if condition.failed_rotor >= 0:
+            # Every working rotor turns at its own speed: each one's tip Mach number (in hover
+            # the helical and the rotational one are equal).
+            return reserve + (_lift_tip_mach(limits),)
         active = cls.active_lift_rotors(vehicle, condition)
         pairs = [vehicle.lift_rotors[i].pair for i in active]
         one_per_pair = [pairs.index(p) for p in sorted(set(pairs))]
-        return (
+        return reserve + (
             ConditionConstraint("noise", "total_spl_a", {"upper": limits.max_noise, "ref": 10.0}),
             ConditionConstraint(
                 "tip_mach",
@@ -246,7 +291,8 @@ class SteadyFlightKind(ConditionKind):
     """
     Climb, cruise or descent (kind ``steady``): trim in F_x, F_z, M_y.
 
-    The trim variables are pusher speed, pitch and elevator. The condition named by the
+    The trim variables are pusher speed, pitch and elevator. Every steady condition declares the
+    pusher's helical tip Mach number <= ``max_pusher_tip_mach``; the condition named by the
     vehicle's ``mission.cruise_condition`` also declares the static-margin constraint (paper
     eq. 30).
     """
@@ -283,9 +329,10 @@ class SteadyFlightKind(ConditionKind):
 
     @classmethod
     def constraints(cls, vehicle, condition, bounds):
+        pusher = (_pusher_tip_mach(vehicle.constraints),)
         if not cls.has_stability(vehicle, condition):
-            return ()
-        return (
+            return pusher
+        return pusher + (
             ConditionConstraint(
                 "static_margin",
                 "static_margin",
@@ -359,7 +406,13 @@ class TransitionKind(ConditionKind):
     @classmethod
     def constraints(cls, vehicle, condition, bounds):
         """
-        Each lift rotor's own speed within the bounds of its pair's mean speed (linear).
+        Each lift rotor's speed within its pair's bounds (linear), advance ratio and tip Mach.
+
+        The advance ratio mu = V_inplane / (Omega R) of every lift rotor stays within
+        ``constraints.max_lift_rotor_advance_ratio``, the range of the inflow model: no rotor
+        outside it trims the vehicle (docs theory/rotors 'Advance-ratio limit'). The helical tip
+        Mach number of each lift rotor (at its advancing blade) <= ``max_lift_rotor_tip_mach``
+        and the pusher's <= ``max_pusher_tip_mach``.
 
         With the roll/yaw differentials a rotor turns at its pair's mean speed +- half of each
         differential, so the design-variable bounds alone let it reach 0 rpm (100 rpm mean -
@@ -384,6 +437,13 @@ class TransitionKind(ConditionKind):
                 "lift_rotor_rpm",
                 {"lower": lower, "upper": upper, "ref": ref, "units": "rpm", "linear": True},
             ),
+            ConditionConstraint(
+                "advance_ratio",
+                "lift_advance_ratio",
+                {"upper": vehicle.constraints.max_lift_rotor_advance_ratio, "ref": 0.1},
+            ),
+            _lift_tip_mach(vehicle.constraints),
+            _pusher_tip_mach(vehicle.constraints),
         )
 
     @classmethod

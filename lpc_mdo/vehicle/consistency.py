@@ -11,6 +11,10 @@ import dataclasses
 
 import numpy as np
 
+from lpc_mdo.components.weights.item_placement import (
+    NASA_LANDING_GEAR_STATION,
+    NASA_SYSTEMS_STATION,
+)
 from lpc_mdo.vehicle.condition_contract import CONDITION_KINDS
 from lpc_mdo.vehicle.parts import (
     _IDENTIFIER,
@@ -206,10 +210,73 @@ def _check_limits(parts: dict) -> None:
         )
 
 
+def min_tail_cone_length(parts) -> float:
+    """
+    Shortest tail cone (m): the root chord of the vertical tail, which the tail cone carries.
+
+    The fin of the NASA LPC sits on the tail cone (NASA's OpenVSP model as MCEVS rebuilds it
+    attaches it at 0.77 of the fuselage length, its 2.32 m root chord reaching past the tail
+    end), and so does the horizontal tail on it; a tail cone shorter than the fin's root chord
+    would put the fin's root structure into the cabin.
+    """
+    return parts["vertical_tail"].root_chord
+
+
+def min_fuselage_length(parts) -> float:
+    """Shortest fuselage that keeps its cabin (m): nose bay + cabin + the shortest tail cone."""
+    return parts["fuselage"].cabin_end + min_tail_cone_length(parts)
+
+
+def _check_cabin(parts: dict) -> None:
+    """Check that the fuselage holds nose bay, cabin and tail cone, and the cabin its seats."""
+    fuselage = parts["fuselage"]
+    shortest = min_fuselage_length(parts)
+    if fuselage.length < shortest:
+        raise VehicleSpecError(
+            f"'fuselage.length' = {fuselage.length!r} is out of range: must be >= "
+            f"{shortest:.4f} (m) = fuselage.nose_length {fuselage.nose_length:g} + cabin "
+            f"{fuselage.cabin_length:.4f} ({fuselage.seat_rows} rows of fuselage.seat_pitch "
+            f"{fuselage.seat_pitch:g}) + the shortest tail cone "
+            f"{min_tail_cone_length(parts):.4f} (the vertical tail's root chord)"
+        )
+    # Equipment stays out of the cabin: the battery (file), NASA's gear and systems stations.
+    cabin = (
+        f"the cabin, x in [-{fuselage.cabin_end:.4f}, -{fuselage.cabin_start:.4f}] (m) and z < "
+        f"fuselage.cabin_floor_z = {fuselage.cabin_floor_z:g}"
+    )
+    battery = parts["battery"].cg
+    if fuselage.in_cabin(battery):
+        raise VehicleSpecError(
+            f"'battery.cg' = {battery!r} is out of range: it lies in {cabin}; allowed: the nose "
+            "bay, under the cabin floor (larger z) or the tail cone"
+        )
+    stations = (
+        ("the landing gear", NASA_LANDING_GEAR_STATION),
+        ("the systems", NASA_SYSTEMS_STATION),
+    )
+    for what, position in stations:
+        if fuselage.in_cabin(position):
+            raise VehicleSpecError(
+                f"'fuselage.seat_pitch' = {fuselage.seat_pitch!r} with 'fuselage.nose_length' = "
+                f"{fuselage.nose_length!r} is out of range: {cabin} then covers NASA's station "
+                f"of {what} at {tuple(round(float(v), 4) for v in position)} (m); allowed: a "
+                "cabin that leaves the equipment in the nose bay, under the floor or in the "
+                "tail cone"
+            )
+    payload = parts["masses"].payload_cg
+    if not fuselage.in_cabin(payload):
+        raise VehicleSpecError(
+            f"'masses.payload_cg' = {payload!r} is out of range: the seats must be in the "
+            f"cabin, x in [-{fuselage.cabin_end:.4f}, -{fuselage.cabin_start:.4f}] (m) and z < "
+            f"fuselage.cabin_floor_z = {fuselage.cabin_floor_z:g}"
+        )
+
+
 def _check_geometry(parts: dict) -> None:
-    """Thrust axes, rotor positions and the energy and noise limits (see the functions above)."""
+    """Thrust axes, rotor positions, the cabin and the energy and noise limits (see above)."""
     _check_thrust_axes(parts["lift_rotors"], parts["pusher"])
     _check_rotor_positions(parts["lift_rotors"], parts["pusher"])
+    _check_cabin(parts)
     _check_limits(parts)
 
 

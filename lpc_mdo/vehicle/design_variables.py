@@ -15,8 +15,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from lpc_mdo.components.weights.regressions import m4_coefficients
 from lpc_mdo.vehicle.condition_layout import ConditionLayout
-from lpc_mdo.vehicle.consistency import _PartialVehicle
+from lpc_mdo.vehicle.consistency import _PartialVehicle, min_fuselage_length
 from lpc_mdo.vehicle.design_variable_registry import VEHICLE_DESIGN_VARIABLES
 from lpc_mdo.vehicle.parts import DesignCondition, DesignVariable, _pairs, _ReadOnlyDict
 from lpc_mdo.vehicle.schema import (
@@ -46,6 +47,7 @@ class _DVSpec:
     initial_from: str = ""
     initial: tuple[float, ...] | None = None
     lower_min: tuple[float, str] | None = None  # (value, key) the lower bound may not go below
+    upper_max: tuple[float, str] | None = None  # (value, key) the upper bound may not exceed
 
 
 def _design_variable_specs(parts: dict) -> dict[str, _DVSpec]:
@@ -70,6 +72,9 @@ def _design_variable_specs(parts: dict) -> dict[str, _DVSpec]:
         )
         for dv in VEHICLE_DESIGN_VARIABLES
     }
+    specs["fuselage_length"] = dataclasses.replace(
+        specs["fuselage_length"], **_fuselage_length_limits(parts)
+    )
     conditions = parts["conditions"]
     index = {c.name: i for i, c in enumerate(conditions)}
     suffix = {f.name: _spec(f).suffix for f in dataclasses.fields(DesignCondition)}
@@ -88,6 +93,25 @@ def _design_variable_specs(parts: dict) -> dict[str, _DVSpec]:
             )
         specs[name] = _DVSpec(dv.description, dv.units, dv.shape, initial_from, dv.initial)
     return specs
+
+
+def _fuselage_length_limits(parts: dict) -> dict:
+    """
+    Limits of the fuselage_length bounds: the cabin and the M4 regressions' data range.
+
+    The lower bound may not cut into the cabin (nose bay + cabin + the shortest tail cone,
+    :func:`~lpc_mdo.vehicle.consistency.min_fuselage_length`) nor leave the fuselage, wing and
+    boom regressions' data range; the upper bound may not leave that range either (docs
+    theory/weights 'M4 regressions', theory/geometry 'Fuselage zones').
+    """
+    lower, upper = m4_coefficients()["data_range"]["fuselage_length"]
+    data = "the M4 regressions' data range"
+    cabin = min_fuselage_length(parts)
+    if cabin > lower:
+        lower_min = (cabin, "fuselage.nose_length + cabin + shortest tail cone")
+    else:
+        lower_min = (lower, f"the lower end of {data}")
+    return {"lower_min": lower_min, "upper_max": (upper, f"the upper end of {data}")}
 
 
 def _dv_values(value, shape: tuple[int, ...], path: str) -> tuple[float, ...]:
@@ -162,6 +186,11 @@ def _read_design_variable(data, spec: _DVSpec, path: str) -> DesignVariable:
             raise VehicleSpecError(
                 f"{entry('lower', k)} = {_fmt(lo)} is out of range: must be >= "
                 f"{spec.lower_min[1]} = {_fmt(spec.lower_min[0])} ({units})"
+            )
+        if spec.upper_max is not None and up > spec.upper_max[0]:
+            raise VehicleSpecError(
+                f"{entry('upper', k)} = {_fmt(up)} is out of range: must be <= "
+                f"{spec.upper_max[1]} = {_fmt(spec.upper_max[0])} ({units})"
             )
     return DesignVariable(
         initial=initial,

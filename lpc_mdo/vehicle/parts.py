@@ -242,27 +242,76 @@ class Wing(LiftingSurface):
 
 @dataclass(frozen=True)
 class Fuselage:
-    """Fuselage dimensions; the nose is the origin of the body frame.
+    """Fuselage dimensions and cabin; the nose is the origin of the body frame.
+
+    The fuselage is a nose bay, a cabin and a tail cone, in this order from the nose (docs
+    theory/geometry 'Fuselage zones'). The cabin's length follows from its seats: rows of
+    ``seats_abreast`` seats at ``seat_pitch``. The length is a design variable: a stretch or a
+    shrink goes into the tail cone, so the nose bay and the cabin keep their stations.
 
     Attributes
     ----------
     length : float
-        Length (m).
+        Length (m); the initial value of the ``fuselage_length`` design variable.
     max_height : float
         Maximum height (m).
     max_width : float
         Maximum width (m).
+    nose_length : float
+        Length of the nose bay (m): the cabin starts this far aft of the nose.
+    seats : int
+        Seats in the cabin, crew included.
+    seats_abreast : int
+        Seats side by side in a row.
+    seat_pitch : float
+        Length of one seat row (m).
+    cabin_floor_z : float
+        Body-frame z of the cabin floor (m, z down): an item whose cg is lower (larger z) is
+        under the floor, not in the cabin.
     """
 
     # 1-30 m long, 0.5-10 m high and wide: a one-seat to an airliner-sized cabin (catches mm).
     length: float = _param("m", ge=1, le=30)
     max_height: float = _param("m", ge=0.5, le=10)
     max_width: float = _param("m", ge=0.5, le=10)
+    # A nose bay of 0-10 m; 1-100 seats, 1-10 abreast; a seat row of 0.5-1.5 m (an airliner's
+    # tightest economy pitch is 0.71 m, 28 in; Kundu, Aircraft Design, 2010, Table 4.5; catches
+    # inches and mm); the floor within 10 m of the nose's height.
+    nose_length: float = _param("m", ge=0, le=10)
+    seats: int = _param(ge=1, le=100)
+    seats_abreast: int = _param(ge=1, le=10)
+    seat_pitch: float = _param("m", ge=0.5, le=1.5)
+    cabin_floor_z: float = _param("m", ge=-10, le=10)
 
     @property
     def fineness_ratio(self) -> float:
         """Length over the larger of height and width (-)."""
         return self.length / max(self.max_height, self.max_width)
+
+    @property
+    def seat_rows(self) -> int:
+        """Rows of seats: ceil(seats / seats_abreast)."""
+        return -(-self.seats // self.seats_abreast)
+
+    @property
+    def cabin_length(self) -> float:
+        """Cabin length (m): seat rows x seat pitch."""
+        return self.seat_rows * self.seat_pitch
+
+    @property
+    def cabin_start(self) -> float:
+        """Distance of the cabin's front from the nose (m): the nose bay's length."""
+        return self.nose_length
+
+    @property
+    def cabin_end(self) -> float:
+        """Distance of the cabin's aft bulkhead from the nose (m); the tail cone starts here."""
+        return self.nose_length + self.cabin_length
+
+    def in_cabin(self, position) -> bool:
+        """Whether a body-frame point lies in the cabin: between its stations, above the floor."""
+        x, _, z = position
+        return bool(self.cabin_start < -x < self.cabin_end and z < self.cabin_floor_z)
 
 
 @dataclass(frozen=True)
@@ -639,6 +688,17 @@ class ConstraintLimits:
         its conditions (-).
     max_tip_mach : float
         Hover lift-rotor tip Mach number (-).
+    max_lift_rotor_advance_ratio : float
+        Edgewise advance ratio mu = V_inplane / (Omega R) of every lift rotor in transition
+        (-): the range of the inflow model (docs theory/rotors 'Advance-ratio limit').
+    max_lift_rotor_tip_mach : float
+        Helical tip Mach number of every working lift rotor in one-rotor-out hover and in
+        transition (at the advancing blade) (-).
+    max_pusher_tip_mach : float
+        Helical tip Mach number of the pusher in every condition that runs it (-).
+    min_chord_radius_ratio : float
+        Smallest blade chord of every rotor, as a fraction of its radius (-): each chord control
+        point >= this times the radius (the B-spline chord lies in their convex hull).
     radius_intersection : float
         Target of the 2 radius-intersection equalities: a span fraction (-) or a clearance (m).
     radius_intersection_definition : str
@@ -651,6 +711,19 @@ class ConstraintLimits:
         State of charge at the end of the mission (-).
     max_displacement : float
         Wing-tip displacement in the structural subproblem (m).
+    min_lift_rotor_clearance : float
+        Plan-view gap between two lift-rotor disks (m), docs theory/geometry 'Rotor clearances'.
+    min_rotor_fuselage_clearance : float
+        Plan-view gap between a lift-rotor disk and the fuselage side (m).
+    min_rotor_tail_clearance : float
+        Plan-view gap between a lift-rotor disk and the horizontal-tail planform (m); 0 keeps
+        every disk off the tail.
+    min_rotor_pusher_clearance : float
+        Plan-view gap between a lift-rotor disk and the pusher disk (m).
+    min_control_acceleration : tuple of 3 float
+        Roll, pitch and yaw acceleration (rad/s^2) the lift rotors must be able to add at the
+        trimmed hover and one-engine-inoperative points, within their motors' peak torque
+        (docs theory/dynamics 'Hover control reserve'); 0 for an axis that is not required.
     """
 
     # 20-200 dBA: a quiet room to beyond the pain threshold.
@@ -661,6 +734,13 @@ class ConstraintLimits:
     # A voltage margin is a fraction of the voltage limit: 0-1.
     min_voltage_margin: float = _param(ge=0, le=1)
     max_tip_mach: float = _param(gt=0, le=1)
+    # Edgewise rotor data and inflow models reach mu ~ 1 at most (slowed-rotor tests).
+    max_lift_rotor_advance_ratio: float = _param(gt=0, le=1)
+    # Subsonic tips only: the rotor polar's stated range ends at M 0.9.
+    max_lift_rotor_tip_mach: float = _param(gt=0, le=0.9)
+    max_pusher_tip_mach: float = _param(gt=0, le=0.9)
+    # At most half the radius: a chord that size already exceeds every blade of the class.
+    min_chord_radius_ratio: float = _param(ge=0, le=0.5)
     # A span fraction (<= 1) or a clearance in m (at most 10 m, a rotor radius of the class).
     radius_intersection: float = _param(ge=0, le=10)
     radius_intersection_definition: str = _param(choices=("span_fraction", "clearance"))
@@ -669,6 +749,13 @@ class ConstraintLimits:
     min_final_soc: float = _param(ge=0, lt=1)
     # Wing-tip deflection up to 10 m, more than half the largest span of the class.
     max_displacement: float = _param("m", gt=0, le=10)
+    # Clearances 0-10 m (at most a rotor diameter of the class; catches mm).
+    min_lift_rotor_clearance: float = _param("m", ge=0, le=10)
+    min_rotor_fuselage_clearance: float = _param("m", ge=0, le=10)
+    min_rotor_tail_clearance: float = _param("m", ge=0, le=10)
+    min_rotor_pusher_clearance: float = _param("m", ge=0, le=10)
+    # Angular accelerations 0-20 rad/s^2: beyond what any piloted VTOL demands (catches deg).
+    min_control_acceleration: tuple[float, ...] = _param("rad/s^2", ge=0, le=20, shape=(3,))
 
 
 @dataclass(frozen=True)
