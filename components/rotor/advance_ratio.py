@@ -58,7 +58,11 @@ class EdgewiseAdvanceRatioComp(om.ExplicitComponent):
             "edgewise_advance_ratio", "radius", rows=point, cols=np.repeat(np.arange(nr), nn)
         )
 
-    def _tip_speed(self, inputs):
+    @staticmethod
+    def _tip_speed(inputs):
+        return inputs["rpm"] * RPM_TO_RAD_S * inputs["radius"][:, None]
+
+    def compute(self, inputs, outputs):
         for name in ("rpm", "radius"):
             check_range(
                 name,
@@ -68,9 +72,6 @@ class EdgewiseAdvanceRatioComp(om.ExplicitComponent):
                 error=om.AnalysisError,
                 where=self.msginfo,
             )
-        return inputs["rpm"] * RPM_TO_RAD_S * inputs["radius"][:, None]
-
-    def compute(self, inputs, outputs):
         speed = np.sqrt(np.sum(inputs["inplane_velocity"] ** 2, axis=-1))
         outputs["edgewise_advance_ratio"] = speed / self._tip_speed(inputs)
 
