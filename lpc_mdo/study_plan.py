@@ -377,7 +377,7 @@ STAGES = (
             ("blade_chord_cp", tuple(range(16))),
             ("blade_twist_cp", tuple(range(16))),
         ),
-        constraint_kinds=("trim", "noise", "tip_mach"),
+        constraint_kinds=("trim", "noise", "tip_mach", "clearance"),
         objective=("electrical_power", 5.0e5),  # W, of the (first) hover condition
         optimizer="SLSQP",
         options={
@@ -413,6 +413,7 @@ STAGES = (
             "tip_mach",
             "min_chord",
             "pusher_voltage_margin",
+            "clearance",
         ),
         trust_region={"battery_mass": 0.2},  # the reference code's bounds
         optimizer="SLSQP",
@@ -421,10 +422,11 @@ STAGES = (
     ),
     Stage(
         name="subproblem_2",
-        summary="lift motors in the one-rotor-out cases (paper Table 2)",
-        kinds=("oei",),
+        summary="lift motors in the one-rotor-out cases (paper Table 2) and, for the control "
+        "reserve, in hover",
+        kinds=("hover", "oei"),
         design_variables=(("motor_length", (0, 1, 2, 3)), ("motor_rated_current", (0, 1, 2, 3))),
-        constraint_kinds=("trim", "lift_torque_margin", "lift_voltage_margin"),
+        constraint_kinds=("trim", "lift_torque_margin", "lift_voltage_margin", "control_reserve"),
         optimizer="IPOPT",
         options=OWN_OPTIONS,
         sequence_options=SEQUENCE_OPTIONS,
@@ -455,7 +457,7 @@ STAGES = (
             "htail_aspect_ratio",
             "fuselage_length",
         ),
-        constraint_kinds=("trim", "static_margin"),
+        constraint_kinds=("trim", "static_margin", "clearance"),
         optimizer="IPOPT",
         options=OWN_OPTIONS,
         sequence_options=SEQUENCE_OPTIONS,
