@@ -28,6 +28,7 @@ import numpy as np
 from lpc_mdo.api.weights import mass_properties as item_mass_properties
 from lpc_mdo.components.weights.gross_weight import BREAKDOWN_LABELS
 from lpc_mdo.post import figures, tables
+from lpc_mdo.post.design_review import design_review_table
 from lpc_mdo.post.statistics import statistics_table
 from lpc_mdo.post.tables import DEFAULT_TOL, MissingVariableError, Quantity
 from lpc_mdo.post.trim_residuals import trim_residual_table
@@ -307,6 +308,9 @@ class ReportSpec:
     trim_residuals : bool
         Per run, every Table 6 trim row as a force or moment in % of the weight
         (:func:`~lpc_mdo.post.trim_residuals.trim_residual_table`), declared or not.
+    design_review : bool
+        Per run over every condition, each buildability limit at its worst point
+        (:func:`~lpc_mdo.post.design_review.design_review_table`), constrained or not.
     """
 
     tol: float = DEFAULT_TOL
@@ -332,6 +336,7 @@ class ReportSpec:
     sweeps: tuple = LPC_SWEEPS
     trim_residuals: bool = True
     mass_properties: bool = True
+    design_review: bool = True
 
     def __post_init__(self):
         if self.vehicle is None:
@@ -362,6 +367,7 @@ class ReportSpec:
             sweeps=(),
             trim_residuals=False,
             mass_properties=False,
+            design_review=False,
         )
         return cls(**{**off, **overrides})
 
@@ -517,6 +523,19 @@ def _run_section(index, label, cr, spec):
 
     if spec.trim_residuals:
         _try(index, f"trim residuals of {label}", trim)
+
+    def review():
+        table = design_review_table(cr, vehicle=spec.vehicle)
+        index.add(
+            "**Design review** (each buildability limit at its worst point, constrained or "
+            "not; docs results 'study'):",
+            "",
+        )
+        index.table(table, f"design_review_{slug}")
+
+    every_condition = [f"{c.name}.linear_acceleration" for c in spec.vehicle.conditions]
+    if spec.design_review and _recorded(cr, every_condition):  # runs over every condition
+        _try(index, f"design review of {label}", review)
 
     def mass_properties():
         table = mass_properties_table(cr, spec.vehicle)
