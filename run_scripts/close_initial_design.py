@@ -21,7 +21,6 @@ item change.
 
 import argparse
 import os
-import re
 import time
 
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
@@ -32,6 +31,7 @@ import numpy as np  # noqa: E402
 from lpc_mdo.groups.vehicle import closed_design_gross_mass  # noqa: E402
 from lpc_mdo.problems import build_problem  # noqa: E402
 from lpc_mdo.vehicle import read_vehicle_file, vehicle_from_dict  # noqa: E402
+from lpc_mdo.vehicle.file_edit import replace_initial, replace_value, write_values  # noqa: E402
 
 THICKNESSES = (
     "front_spar_thickness",
@@ -87,25 +87,15 @@ def close(data, max_rounds=6, tolerance=0.1):
 
 def write_closure(path, gauges, design_gross_mass):
     """Replace the thickness ``initial`` lines and the ``design_gross_mass`` line of a TOML file."""
-    with open(path) as f:
-        text = f.read()
-    for name, values in gauges.items():
-        listed = ", ".join(f"{v:.6g}" for v in values)
-        pattern = rf"(\[design_variables\.{name}\]\nunits = \"m\"\n)initial = [^\n]*"
-        line = f"initial = [{listed}]   # sized at +3g/-1g (run_scripts/close_initial_design.py)"
-        text, count = re.subn(pattern, lambda m, line=line: m.group(1) + line, text)
-        if count != 1:
-            raise ValueError(f"{path}: no unique [design_variables.{name}] table with units first")
-    text, count = re.subn(
-        r"^design_gross_mass = [0-9.eE+-]+",
-        f"design_gross_mass = {design_gross_mass:.2f}",
-        text,
-        flags=re.MULTILINE,
-    )
-    if count != 1:
-        raise ValueError(f"{path}: no unique 'design_gross_mass = ...' line")
-    with open(path, "w") as f:
-        f.write(text)
+
+    def edit(text):
+        for name, values in gauges.items():
+            text = replace_initial(
+                text, name, values, "sized at +3g/-1g (run_scripts/close_initial_design.py)"
+            )
+        return replace_value(text, "design_gross_mass", f"{design_gross_mass:.2f}")
+
+    write_values(path, edit)
 
 
 def main():

@@ -23,7 +23,6 @@ changes the inverter and cable masses, so close the initial design afterwards
 import argparse
 import math
 import os
-import re
 
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 os.environ.setdefault("OPENMDAO_REPORTS", "0")
@@ -34,6 +33,7 @@ from lpc_mdo.analysis import analyze_vehicle  # noqa: E402
 from lpc_mdo.groups.weights import motor_group_indices  # noqa: E402
 from lpc_mdo.vehicle import load_vehicle  # noqa: E402
 from lpc_mdo.vehicle.condition_contract import condition_kind  # noqa: E402
+from lpc_mdo.vehicle.file_edit import replace_initial, write_values  # noqa: E402
 
 REFERENCE_FILE = os.path.join(
     os.path.dirname(__file__), os.pardir, "lpc_mdo", "data", "lpc_reference.toml"
@@ -92,16 +92,12 @@ def wind(vehicle, iterations=40):
 
 def write_winding(path, current):
     """Replace the ``initial`` line of the winding's design-variable table of a TOML file."""
-    with open(path) as f:
-        text = f.read()
-    listed = ", ".join(f"{v:.1f}" for v in current)
-    pattern = rf"(\[design_variables\.{NAME}\]\nunits = \"A\"\n)initial = [^\n]*"
-    line = f"initial = [{listed}]   # run_scripts/wind_motors_for_bus.py"
-    text, count = re.subn(pattern, lambda m: m.group(1) + line, text)
-    if count != 1:
-        raise ValueError(f"{path}: no unique [design_variables.{NAME}] table with units first")
-    with open(path, "w") as f:
-        f.write(text)
+    write_values(
+        path,
+        lambda text: replace_initial(
+            text, NAME, current, "run_scripts/wind_motors_for_bus.py", fmt="{:.1f}"
+        ),
+    )
 
 
 def main():
