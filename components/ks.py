@@ -53,11 +53,6 @@ class KSComp(om.ExplicitComponent):
         ``minimum`` option of OpenMDAO's om.KSComp, whose ``lower_flag`` only flips the sign of g.)
     units : str or None
         Units of g and KS. Default None (dimensionless).
-    mask : array of bool, (vec_size, width), or None
-        Entries of g that take part in each row (None: all). A row may aggregate fewer values
-        than ``width`` this way (rows of different lengths in one component); the others are
-        left out of the sum, so they neither bias KS nor get a partial. Every row keeps at least
-        one entry.
     """
 
     def initialize(self):
@@ -91,12 +86,6 @@ class KSComp(om.ExplicitComponent):
             allow_none=True,
             desc="Units of g and KS (None: dimensionless)",
         )
-        self.options.declare(
-            "mask",
-            default=None,
-            allow_none=True,
-            desc="Entries of g that take part in each row, bool (vec_size, width) (None: all)",
-        )
 
     def setup(self):
         n = self.options["vec_size"]
@@ -113,16 +102,9 @@ class KSComp(om.ExplicitComponent):
             desc="Smooth maximum (minimum if lower_flag) of each row of g",
         )
 
-        mask = self.options["mask"]
-        mask = np.ones((n, w), dtype=bool) if mask is None else np.asarray(mask, dtype=bool)
-        if mask.shape != (n, w) or not mask.any(axis=1).all():
-            raise ValueError(
-                f"{self.msginfo}: option 'mask' must be a bool array of shape ({n}, {w}) with "
-                f"at least one True entry in every row; got shape {mask.shape}."
-            )
-        self._mask = mask
-        rows, cols = np.nonzero(mask)
-        self.declare_partials("KS", "g", rows=rows, cols=rows * w + cols)
+        rows = np.repeat(np.arange(n), w)
+        cols = np.arange(n * w)
+        self.declare_partials("KS", "g", rows=rows, cols=cols)
 
     def _weights(self, g):
         """Return the signed values s*g, their row shift and the exponentials."""
@@ -130,8 +112,8 @@ class KSComp(om.ExplicitComponent):
         rho = self.options["rho"]
         sg = sign * g
         # Shift by the real row maximum: exact cancellation, so derivatives are unaffected.
-        shift = np.max(np.where(self._mask, sg.real, -np.inf), axis=1)
-        expo = np.exp(np.where(self._mask, rho * (sg - shift[:, np.newaxis]), -np.inf))
+        shift = np.max(sg.real, axis=1)
+        expo = np.exp(rho * (sg - shift[:, np.newaxis]))
         return sign, shift, expo
 
     def compute(self, inputs, outputs):
@@ -142,4 +124,4 @@ class KSComp(om.ExplicitComponent):
     def compute_partials(self, inputs, partials):
         _, _, expo = self._weights(inputs["g"])
         # d(sign * KS_max(sign g))/dg = sign * sign * softmax = softmax.
-        partials["KS", "g"] = (expo / np.sum(expo, axis=1)[:, np.newaxis])[self._mask]
+        partials["KS", "g"] = (expo / np.sum(expo, axis=1)[:, np.newaxis]).ravel()

@@ -30,7 +30,6 @@ from lpc_mdo.components.dynamics.static_margin import NeutralPointComp, StaticMa
 from lpc_mdo.components.energy.power import TotalPowerComp
 from lpc_mdo.components.geometry.blade import BLADE_OUTPUTS
 from lpc_mdo.components.kinematics import KinematicsComp
-from lpc_mdo.components.ks import KSComp
 from lpc_mdo.components.motor.parameters import DESIGN_OUTPUTS
 from lpc_mdo.components.motor.shaft_torque import ShaftTorqueComp
 from lpc_mdo.components.rotor.rotor_speed import RotorSpeedComp
@@ -113,29 +112,6 @@ def roll_yaw_mixing(rotors):
     return 0.5 * np.column_stack([side, spin])
 
 
-#: KS parameter of the per-condition rotor-limit aggregates (paper eq. 7) on tip Mach numbers and
-#: advance ratios (order 0.5-0.9): the aggregate exceeds the largest value by at most
-#: ln(num_rotors)/rho, 0.007 for eight rotors that all sit on the limit (docs theory/rotors
-#: 'Tip Mach number limits'), and by much less when one rotor dominates.
-ROTOR_LIMIT_RHO = 300.0
-
-
-def add_rotor_limit_aggregate(group, output, width):
-    """Add ``{output}_max``, the KS maximum over the ``width`` rotors of ``output`` (n, 1)."""
-    name = f"{output}_ks"
-    group.add_subsystem(
-        name,
-        KSComp(width=width, rho=ROTOR_LIMIT_RHO),
-        promotes_outputs=[("KS", f"{output}_max")],
-    )
-    group.connect(
-        output,
-        f"{name}.g",
-        src_indices=(np.arange(width).reshape(1, width),),
-        flat_src_indices=True,
-    )
-
-
 def add_lift_rotors(group, vehicle, rotors, speed_groups, num_groups, edgewise, roll_yaw=False):
     """Lift rotors (BEM or Pitt–Peters) with their speeds and motors, promoted as ``lift_*``.
 
@@ -191,10 +167,6 @@ def add_lift_rotors(group, vehicle, rotors, speed_groups, num_groups, edgewise, 
             *([("edgewise_advance_ratio", "lift_advance_ratio")] if edgewise else []),
         ],
     )
-    # One constraint row per condition instead of one per rotor: each row costs an adjoint solve.
-    add_rotor_limit_aggregate(group, "lift_helical_tip_mach", na)
-    if edgewise:
-        add_rotor_limit_aggregate(group, "lift_advance_ratio", na)
     add_motors(group, vehicle, "lift", na, "lift_rotor_rpm")
     group.set_input_defaults("lift_radius", np.array([r.radius for r in rotors]), units="m")
     group.set_input_defaults(

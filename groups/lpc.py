@@ -236,18 +236,9 @@ class LPCGroup(om.Group):
                 self._add_margin_aggregate(prefix, members, sizes[prefix], quantity, name)
 
     def _add_margin_aggregate(self, prefix, members, num_motors, quantity, name):
-        """
-        Add the KS over the conditions of each motor's ``quantity`` margin (paper eq. 7).
-
-        ``{prefix}_motor_{quantity}`` (one per motor) reports it; ``{prefix}_motor_design_
-        {quantity}`` (one per motor design: the motors of a lift-rotor pair share one) is the
-        KS over the conditions and the motors of the design, the row a problem constrains. A
-        design is sized for its worst motor anyway, and each row costs an adjoint solve
-        through every condition.
-        """
-        gather = f"{prefix}_{name}_gather"
+        """Add the KS over the conditions of each motor's ``quantity`` margin (paper eq. 7)."""
         self.add_subsystem(
-            gather,
+            f"{prefix}_{name}_gather",
             GatherComp(
                 name=quantity,
                 sources=[c.name for c, _ in members],
@@ -256,47 +247,14 @@ class LPCGroup(om.Group):
                 absent_value=UNUSED_MOTOR_MARGIN,
             ),
         )
-        rho, ns = self.options["ks_rho"], len(members)
         self.add_subsystem(
             f"{prefix}_{name}",
-            KSComp(vec_size=num_motors, width=ns, rho=rho, lower_flag=True),
+            KSComp(
+                vec_size=num_motors, width=len(members), rho=self.options["ks_rho"], lower_flag=True
+            ),
             promotes_outputs=[("KS", f"{prefix}_motor_{quantity}")],
         )
-        self.connect(f"{gather}.{quantity}", f"{prefix}_{name}.g")
-
-        designs = motor_designs(self.options["vehicle"] or reference_vehicle(), prefix)
-        width = max(len(m) for m in designs) * ns
-        index = np.zeros((len(designs), width), dtype=int)
-        mask = np.zeros((len(designs), width), dtype=bool)
-        for d, motors in enumerate(designs):  # setup only
-            flat = (np.asarray(motors)[:, np.newaxis] * ns + np.arange(ns)).ravel()
-            index[d, :] = flat[0]
-            index[d, : flat.size] = flat
-            mask[d, : flat.size] = True
-        self.add_subsystem(
-            f"{prefix}_design_{name}",
-            KSComp(vec_size=len(designs), width=width, rho=rho, lower_flag=True, mask=mask),
-            promotes_outputs=[("KS", f"{prefix}_motor_design_{quantity}")],
-        )
-        self.connect(
-            f"{gather}.{quantity}",
-            f"{prefix}_design_{name}.g",
-            src_indices=(index,),
-            flat_src_indices=True,
-        )
-
-
-def motor_designs(vehicle, prefix):
-    """
-    Return the motors (indices within the set) of each motor design of a motor set.
-
-    ``lift``: the lift rotors of each pair share one design (their pair's design variables),
-    in pair order; ``pusher``: its one motor.
-    """
-    if prefix == "pusher":
-        return [[0]]
-    pairs = [r.pair for r in vehicle.lift_rotors]
-    return [[i for i, p in enumerate(pairs) if p == pair] for pair in sorted(set(pairs))]
+        self.connect(f"{prefix}_{name}_gather.{quantity}", f"{prefix}_{name}.g")
 
 
 @functools.cache

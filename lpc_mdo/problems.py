@@ -325,11 +325,11 @@ def declare_problem(
     for prefix in sorted(motor_sets):
         if "torque_margin" in wanted or f"{prefix}_torque_margin" in wanted:
             model.add_constraint(
-                f"{prefix}_motor_design_torque_margin", lower=limits.min_torque_margin, ref=0.1
+                f"{prefix}_motor_torque_margin", lower=limits.min_torque_margin, ref=0.1
             )
         if "voltage_margin" in wanted or f"{prefix}_voltage_margin" in wanted:
             model.add_constraint(
-                f"{prefix}_motor_design_voltage_margin", lower=limits.min_voltage_margin, ref=0.1
+                f"{prefix}_motor_voltage_margin", lower=limits.min_voltage_margin, ref=0.1
             )
 
 

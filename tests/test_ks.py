@@ -131,27 +131,3 @@ def test_bad_rho_raises(rho):
 def test_bad_shape_option_raises(name):
     with pytest.raises(ValueError, match=rf"\(0\) of option '{name}'"):
         KSComp(**{name: 0})
-
-
-@pytest.mark.parametrize("lower_flag", [False, True])
-def test_mask_leaves_entries_out(lower_flag):
-    # Rows of different lengths in one component: each masked row equals an unmasked KS of
-    # its own entries (here the closed form of two values, ln(e^(rho a) + e^(rho b))/rho),
-    # whatever the left-out entries hold (1e6 would dominate any row it took part in).
-    g = np.array([[0.3, 0.1, 1e6], [0.2, 1e6, 1e6]])
-    mask = np.array([[True, True, False], [True, False, False]])
-    prob = _run(g, rho=20.0, lower_flag=lower_flag, mask=mask)
-    sign = -1.0 if lower_flag else 1.0
-    first = sign * np.log(np.exp(20.0 * sign * 0.3) + np.exp(20.0 * sign * 0.1)) / 20.0
-    assert_near_equal(prob.get_val("KS"), [first, 0.2], 1e-12)
-    data = prob.check_partials(method="cs", compact_print=True, out_stream=None)
-    assert_check_partials(data, atol=1e-10, rtol=1e-10)
-    # Left-out entries have no partials at all (not declared).
-    assert prob.model.ks._subjacs_info[("ks.KS", "ks.g")]["rows"].size == 3
-
-
-def test_mask_of_wrong_shape_or_empty_row_raises():
-    with pytest.raises(ValueError, match="option 'mask'"):
-        _run(np.zeros((2, 3)), mask=np.ones((3, 2), dtype=bool))
-    with pytest.raises(ValueError, match="at least one True entry in every row"):
-        _run(np.zeros((2, 3)), mask=np.array([[True, False, False], [False, False, False]]))

@@ -80,9 +80,9 @@ def _rows(name, rows):
 
 
 def _lift_tip_mach(limits):
-    """Declare the running lift rotors' largest helical tip Mach (KS) <= the vehicle's limit."""
+    """Declare each running lift rotor's helical tip Mach <= ``max_lift_rotor_tip_mach``."""
     return ConditionConstraint(
-        "tip_mach", "lift_helical_tip_mach_max", {"upper": limits.max_lift_rotor_tip_mach}
+        "tip_mach", "lift_helical_tip_mach", {"upper": limits.max_lift_rotor_tip_mach}
     )
 
 
@@ -412,8 +412,7 @@ class TransitionKind(ConditionKind):
         ``constraints.max_lift_rotor_advance_ratio``, the range of the inflow model: no rotor
         outside it trims the vehicle (docs theory/rotors 'Advance-ratio limit'). The helical tip
         Mach number of each lift rotor (at its advancing blade) <= ``max_lift_rotor_tip_mach``
-        and the pusher's <= ``max_pusher_tip_mach``. The lift rotors' rows are their KS maximum,
-        one row per condition (``*_max``, groups.condition_builders.ROTOR_LIMIT_RHO).
+        and the pusher's <= ``max_pusher_tip_mach``.
 
         With the roll/yaw differentials a rotor turns at its pair's mean speed +- half of each
         differential, so the design-variable bounds alone let it reach 0 rpm (100 rpm mean -
@@ -440,7 +439,7 @@ class TransitionKind(ConditionKind):
             ),
             ConditionConstraint(
                 "advance_ratio",
-                "lift_advance_ratio_max",
+                "lift_advance_ratio",
                 {"upper": vehicle.constraints.max_lift_rotor_advance_ratio, "ref": 0.1},
             ),
             _lift_tip_mach(vehicle.constraints),
