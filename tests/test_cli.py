@@ -28,7 +28,7 @@ def test_analyze_reference_vehicle_is_trimmed(tmp_path, capsys):
     )
     text = capsys.readouterr().out
     assert "(initial design, trimmed: each condition by its rotor speeds" in text
-    assert ("15 design conditions, 181 design variables, 223 constraints, 60 linear bounds") in text
+    assert ("15 design conditions, 181 design variables, 249 constraints, 60 linear bounds") in text
     assert "gross" in text and "minus_1g" in text
     assert "trim: all 15 conditions trimmed" in text
     # Structural conditions show their load factor, not a power.
@@ -39,7 +39,7 @@ def test_analyze_reference_vehicle_is_trimmed(tmp_path, capsys):
     assert re.search(r"hover\.total_spl_a +- +<= 70 +\d+\.\d+ +violated", text)
     assert re.search(r"state_of_charge +- +>= 0\.2 +0\.\d+ +(satisfied|violated)", text)
     assert re.search(r"cruise\.linear_acceleration +- +\= 0 .* active", text)
-    assert re.search(r"69 constraints: \d+ satisfied, \d+ active, \d+ violated", text)
+    assert re.search(r"77 constraints: \d+ satisfied, \d+ active, \d+ violated", text)
     # The trimmed variables per condition.
     assert re.search(r"cruise +pusher_rpm [\d.]+ rpm; pitch [\d.]+ deg; elevator", text)
     # The airframe L/D of trimmed cruise and its maximum (about 15, docs theory/aerodynamics).

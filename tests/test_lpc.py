@@ -2,7 +2,8 @@
 
 Paper Table 6: 161 design variables, 96 constraints; and our 10 transition roll/yaw lift-rotor
 speed differentials, with 40 linear bounds on each rotor's speed, 40 limits on the rotors'
-edgewise advance ratio, and the blades' tip-Mach and minimum-chord constraints.
+edgewise advance ratio, the blades' tip-Mach and minimum-chord constraints, the rotor
+clearances and the hover control reserve (the clearances in place of the radius intersection).
 """
 
 from collections import Counter
@@ -61,9 +62,14 @@ OUR_CONSTRAINTS = {
     "minimum blade chord": 5 * 4,
     # Every motor within the voltage limit in every condition (KS over the conditions).
     "motor voltage margin": 9,
+    # The left rotors (mirror symmetry): 6 rotor pairs, 4 to the fuselage, tail and pusher.
+    "rotor clearances": 6 + 3 * 4,
+    # Roll and pitch in hover and the 4 OEI cases.
+    "control reserve": 2 * 5,
 }
-#: Rows of OUR_CONSTRAINTS beyond the paper: 2 + 40 + 76 + 9 nonlinear and 40 + 20 linear.
-OUR_COUNT = 2 + 40 + 76 + 9 + 40 + 20
+#: Rows of OUR_CONSTRAINTS beyond the paper: 2 + 40 + 76 + 9 + 18 + 10 nonlinear and 40 + 20
+#: linear.
+OUR_COUNT = 2 + 40 + 76 + 9 + 18 + 10 + 40 + 20
 TABLE6_CONSTRAINTS = {
     "hover noise": 1,
     "hover trim": 3,
@@ -79,6 +85,10 @@ TABLE6_CONSTRAINTS = {
     "radius intersection": 2,
     "motor torque margin": 9,
 }
+#: Table 6 as the model declares it: the clearances replace the radius-intersection equalities
+#: (a problem may still name them, kind ``radius_intersection``).
+DECLARED_TABLE6 = {k: v for k, v in TABLE6_CONSTRAINTS.items() if k != "radius intersection"}
+DECLARED_TABLE6_COUNT = 96 - 2
 
 
 def _dv_group(name):
@@ -116,6 +126,10 @@ def _dv_group(name):
 
 def _constraint_group(name, meta):
     cond = name.split(".")[0]
+    if name.endswith("control_acceleration"):
+        return "control reserve"
+    if name.endswith("_clearance"):
+        return "rotor clearances"
     if name == "hover.total_spl_a":
         return "hover noise"
     if cond.startswith("transition") and name.endswith("lift_rotor_rpm"):
@@ -189,8 +203,8 @@ def test_table6_design_variables_and_constraints(lpc):
             cons["transition trim (v, p, q, r)"] += 1
         else:
             cons[group] += meta["size"]
-    assert dict(cons) == TABLE6_CONSTRAINTS | OUR_CONSTRAINTS
-    assert sum(cons.values()) == 96 + OUR_COUNT
+    assert dict(cons) == DECLARED_TABLE6 | OUR_CONSTRAINTS
+    assert sum(cons.values()) == DECLARED_TABLE6_COUNT + OUR_COUNT
 
 
 def test_transition_rotor_speed_bounds_are_the_pair_bounds(lpc):
@@ -233,7 +247,8 @@ def test_static_margin_switch():
     declare_problem(prob.model, static_margin=False)
     prob.setup()
     prob.final_setup()
-    assert sum(m["size"] for m in prob.model.get_constraints().values()) == 95 + OUR_COUNT
+    count = sum(m["size"] for m in prob.model.get_constraints().values())
+    assert count == DECLARED_TABLE6_COUNT - 1 + OUR_COUNT
 
 
 def test_the_model_has_physics_options_only():

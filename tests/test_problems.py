@@ -31,7 +31,9 @@ def sizes(prob):
         # constrains the pusher motor margin only (it sizes the pusher motor; the lift motors are
         # subproblem 2's). With the differentials come the 40 linear bounds on each transition
         # lift rotor's own speed and the 40 limits on their edgewise advance ratios (ours).
-        ("rotor_presizing", (4 + 4 + 16 + 16, 1 + 2 + 4)),
+        # Presizing, subproblems 1 and 4 and the full problem: the 18 plan-view clearances of the
+        # left lift disks (6 same-side pairs, 4 each to the fuselage, the tail and the pusher).
+        ("rotor_presizing", (4 + 4 + 16 + 16, 1 + 2 + 4 + 18)),
         (
             "subproblem_1",
             # ... plus the tip Mach numbers (hover 4 pairs, transition 8 lift rotors and the
@@ -39,18 +41,21 @@ def sizes(prob):
             # control points' minimum chord.
             (
                 4 + 20 + 10 + 5 + 5 + 3 + 3 + 8 + 1 + 1 + 45 + 1,
-                1 + 2 + 9 + 25 + 1 + 1 + 40 + 40 + 4 + 5 * 9 + 3 + 20 + 1,
+                1 + 2 + 9 + 25 + 1 + 1 + 40 + 40 + 4 + 5 * 9 + 3 + 20 + 1 + 18,
             ),
         ),
-        ("subproblem_2", (28 + 4 + 4, 16 + 8 + 8)),
+        # Subproblem 2 also takes hover (its 4 pair speeds and trim w, q) for the control reserve:
+        # roll and pitch in hover and the 4 OEI cases (10).
+        ("subproblem_2", (28 + 4 + 4 + 4, 16 + 8 + 8 + 2 + 10)),
         ("subproblem_3", (32 + 2, 2 + 14 + 2)),
         # Subproblem 4: planform in climb, cruise and descent (Table 2: cruise only;
         # see problems.py).
-        ("subproblem_4", (5 + 3 * 3, 3 * 3 + 1)),
+        ("subproblem_4", (5 + 3 * 3, 3 * 3 + 1 + 18)),
         # Full: also the tip Mach numbers of the OEI (4 x 7) and transition (5 x 9) rotors and
-        # the pusher in climb, cruise and descent (3), and the minimum chord (20, linear).
-        ("full", (161 + 20, 96 + 2 - 10 + 40 + 40 + 28 + 45 + 3 + 20 + 9)),
-        ("baseline", (161 + 20, 96 + 2 - 10 + 40 + 40 + 28 + 45 + 3 + 20 + 9)),
+        # the pusher in climb, cruise and descent (3), the minimum chord (20, linear), the
+        # clearances (18) and control reserve (10) in place of the radius intersection (2).
+        ("full", (161 + 20, 96 + 2 - 10 + 40 + 40 + 28 + 45 + 3 + 20 + 9 + 18 + 10 - 2)),
+        ("baseline", (161 + 20, 96 + 2 - 10 + 40 + 40 + 28 + 45 + 3 + 20 + 9 + 18 + 10 - 2)),
     ],
 )
 def test_problem_sizes(name, expected):
@@ -59,7 +64,7 @@ def test_problem_sizes(name, expected):
 
 def test_full_problem_with_lateral_trim_is_table6():
     full = build_problem("full", optimizer="SLSQP", lateral_trim=True)
-    assert sizes(full) == (161 + 20, 96 + 2 + 40 + 40 + 28 + 45 + 3 + 20 + 9)
+    assert sizes(full) == (161 + 20, 96 + 2 + 40 + 40 + 28 + 45 + 3 + 20 + 9 + 18 + 10 - 2)
 
 
 @pytest.mark.requires_ipopt
@@ -87,6 +92,9 @@ def test_subproblem_2_trims_every_oei_case():
         assert abs(values[f"oei_{case}.linear_acceleration"]).max() < 1e-5
         assert abs(values[f"oei_{case}.angular_acceleration"]).max() < 1e-5
     assert values["lift_motor_torque_margin"].min() >= 0.1 - 1e-6
+    # The roll and pitch reserve of MIL-F-83300 Level 1 (lpc_reference.toml) in every case.
+    for case in ("hover", "oei_1", "oei_2", "oei_3", "oei_4"):
+        assert values[f"{case}.control_acceleration"].min() >= 0.1047 - 1e-6
 
 
 def test_unknown_problem_name():
@@ -175,28 +183,27 @@ def test_a_design_variable_recorded_on_its_bound_is_set_on_it():
     np.testing.assert_array_equal(_onto_bounds(five, np.full(4, 1.2), np.full(4, 1.8)), five)
 
 
-def test_clearances_and_control_reserve_are_declared_when_named():
-    # Optional kinds: the 18 plan-view clearances of the left lift rotors (6 same-side disk
+def test_clearances_replace_the_radius_intersection_unless_it_is_named():
+    # Default kinds: the 18 plan-view clearances of the left lift rotors (6 same-side disk
     # pairs, 4 each to the fuselage, the h-tail and the pusher) and the roll and pitch control
-    # reserve of hover and the 4 OEI cases.
+    # reserve of hover and the 4 OEI cases; the paper's radius-intersection equalities only
+    # when a problem names them.
     import openmdao.api as om
 
     from lpc_mdo.groups.lpc import LPCGroup
     from lpc_mdo.problems import CONSTRAINT_KINDS, declare_problem
 
-    prob = om.Problem(reports=False)
-    prob.model = LPCGroup()
-    declare_problem(prob.model, constraint_kinds=CONSTRAINT_KINDS + ("clearance",))
-    prob.setup()
-    prob.final_setup()
-    cons = prob.model.get_constraints()
-    clearances = sum(m["size"] for n, m in cons.items() if n.endswith("_clearance"))
-    assert clearances == 6 + 4 + 4 + 4
-    assert not any(n.endswith("control_acceleration") for n in cons)
-    prob = om.Problem(reports=False)
-    prob.model = LPCGroup()
-    declare_problem(prob.model, constraint_kinds=CONSTRAINT_KINDS + ("control_reserve",))
-    prob.setup()
-    prob.final_setup()
-    cons = prob.model.get_constraints()
+    def constraints(kinds):
+        prob = om.Problem(reports=False)
+        prob.model = LPCGroup()
+        declare_problem(prob.model, constraint_kinds=kinds)
+        prob.setup()
+        prob.final_setup()
+        return prob.model.get_constraints()
+
+    cons = constraints(CONSTRAINT_KINDS)
+    assert sum(m["size"] for n, m in cons.items() if n.endswith("_clearance")) == 6 + 4 + 4 + 4
     assert sum(m["size"] for n, m in cons.items() if n.endswith("control_acceleration")) == 10
+    assert "radius_intersection" not in cons
+    cons = constraints(CONSTRAINT_KINDS + ("radius_intersection",))
+    assert cons["radius_intersection"]["size"] == 2
