@@ -413,6 +413,7 @@ STAGES = (
             "tip_mach",
             "min_chord",
             "pusher_voltage_margin",
+            "wing_stall",
         ),
         trust_region={"battery_mass": 0.2},  # the reference code's bounds
         optimizer="SLSQP",
@@ -455,7 +456,7 @@ STAGES = (
             "htail_aspect_ratio",
             "fuselage_length",
         ),
-        constraint_kinds=("trim", "static_margin"),
+        constraint_kinds=("trim", "static_margin", "wing_stall"),
         optimizer="IPOPT",
         options=OWN_OPTIONS,
         sequence_options=SEQUENCE_OPTIONS,

@@ -28,7 +28,7 @@ def test_analyze_reference_vehicle_is_trimmed(tmp_path, capsys):
     )
     text = capsys.readouterr().out
     assert "(initial design, trimmed: each condition by its rotor speeds" in text
-    assert ("15 design conditions, 181 design variables, 223 constraints, 60 linear bounds") in text
+    assert ("15 design conditions, 181 design variables, 233 constraints, 60 linear bounds") in text
     assert "gross" in text and "minus_1g" in text
     assert "trim: all 15 conditions trimmed" in text
     # Structural conditions show their load factor, not a power.

@@ -61,9 +61,12 @@ OUR_CONSTRAINTS = {
     "minimum blade chord": 5 * 4,
     # Every motor within the voltage limit in every condition (KS over the conditions).
     "motor voltage margin": 9,
+    # Every wing section's lift within its stall limit, one KS row per wing-borne condition
+    # (5 transition points, climb, cruise, descent, +3g, -1g).
+    "wing section lift (KS)": 10,
 }
-#: Rows of OUR_CONSTRAINTS beyond the paper: 2 + 40 + 76 + 9 nonlinear and 40 + 20 linear.
-OUR_COUNT = 2 + 40 + 76 + 9 + 40 + 20
+#: Rows of OUR_CONSTRAINTS beyond the paper: 2 + 40 + 76 + 9 + 10 nonlinear and 40 + 20 linear.
+OUR_COUNT = 2 + 40 + 76 + 9 + 10 + 40 + 20
 TABLE6_CONSTRAINTS = {
     "hover noise": 1,
     "hover trim": 3,
@@ -152,6 +155,8 @@ def _constraint_group(name, meta):
         return "buckling"
     if name.endswith("stress_ratio_ks"):
         return "wing-box stress (KS)"
+    if name.endswith("wing_stall_ratio_ks"):
+        return "wing section lift (KS)"
     return {
         "cruise.static_margin": "static margin",
         "state_of_charge": "final SoC",
