@@ -89,16 +89,31 @@ class SectionStallRatioComp(om.ExplicitComponent):
         )
 
     def _limits(self, inputs):
-        """Section limits of every strip as (2, nn, ns) arrays: values, d/dRe, d/dM."""
+        """
+        Section limits of every strip as (2, nn, ns) arrays: values, d/dRe, d/dM.
+
+        The last real result is kept with its Reynolds and Mach numbers: the linearization at
+        the point just evaluated, and every evaluation whose strips keep their Re and M (a trim
+        iteration moves the angles only; Re changes with the chord), reuse it.
+        """
         nn, ns = self.options["num_nodes"], self.options["num_span_panels"]
+        reynolds, mach = inputs["reynolds"], inputs["mach"]
+        real = not (np.iscomplexobj(reynolds) or np.iscomplexobj(mach))
+        key = (reynolds.tobytes(), mach.tobytes()) if real else None
+        cached = getattr(self, "_last_limits", None)
+        if real and cached is not None and cached[0] == key:
+            return cached[1]
         low, high, dlow_re, dhigh_re, dlow_m, dhigh_m = self._polar.max_lift_coefficients(
-            inputs["reynolds"], inputs["mach"]
+            reynolds, mach
         )
-        return (
+        limits = (
             np.stack([high, low]).reshape(2, nn, ns),
             np.stack([dhigh_re, dlow_re]).reshape(2, nn, ns),
             np.stack([dhigh_m, dlow_m]).reshape(2, nn, ns),
         )
+        if real:
+            self._last_limits = (key, limits)
+        return limits
 
     def compute(self, inputs, outputs):
         limit, _, _ = self._limits(inputs)
