@@ -41,10 +41,11 @@ from lpc_mdo.groups.pitt_peters_rotor import PittPetersRotorGroup
 from lpc_mdo.groups.vehicle import motor_parameters
 from lpc_mdo.groups.vehicle_drag import lpc_drag_components
 from lpc_mdo.groups.vlm import VLMGroup, lpc_vlm_surfaces
+from lpc_mdo.vehicle.condition_kinds import is_wing_load_case, wing_stall_speed_fraction
 
 #: KS parameter of ``wing_stall_ratio_ks``, the smooth maximum of the 2 x 26 section lift ratios
 #: of a wing-borne condition (paper eq. 7): it exceeds the largest ratio by at most
-#: ln(52)/rho = 0.020; at the reference vehicle's wing-borne conditions by 0.009-0.011
+#: ln(52)/rho = 0.020; at the reference vehicle's wing-borne conditions by 0.003-0.011
 #: (measured: the strips next to the most loaded one are within a few percent of it; rho = 100
 #: gave up to 0.025), i.e. 1.5 % of the 0.625 limit, on the safe side (docs
 #: theory/aerodynamics 'Section lift limit').
@@ -267,7 +268,13 @@ def add_aerodynamics(
     group.set_input_defaults(
         "wing_zero_lift_angle", np.full((1, opts["wing_panels"]), wing_zero_lift_angle), units="rad"
     )
-    _add_wing_stall(group, vehicle.wing.airfoil, opts["wing_panels"])
+    load_case = is_wing_load_case(condition)
+    _add_wing_stall(
+        group,
+        vehicle.wing.airfoil,
+        opts["wing_panels"],
+        wing_stall_speed_fraction(vehicle.constraints, load_case),
+    )
     # alpha_0w of the body moment: the section zero-lift angle less the root incidence.
     body_options = {"wing_zero_lift_angle": float(wing_zero_lift_angle) - vehicle.wing.incidence}
     tail_options = _tail_efficiency_options(vehicle, surfaces)
@@ -365,8 +372,11 @@ def add_aerodynamics(
         )
 
 
-def _add_wing_stall(group, airfoil, num_strips):
+def _add_wing_stall(group, airfoil, num_strips, speed_fraction):
     """Each wing strip's c_l over its section's c_l,max and c_l,min, and their KS maximum.
+
+    The section maxima are taken at ``speed_fraction`` times the condition's Re and M
+    (:func:`~lpc_mdo.vehicle.condition_kinds.wing_stall_speed_fraction`).
 
     Outputs ``wing_stall_ratio`` (1, 2 ns) and ``wing_stall_ratio_ks`` (1,), the constraint of
     kind ``wing_stall`` (docs theory/aerodynamics 'Section lift limit'). The strips' Reynolds
@@ -374,7 +384,12 @@ def _add_wing_stall(group, airfoil, num_strips):
     """
     group.add_subsystem(
         "wing_stall",
-        SectionStallRatioComp(num_nodes=1, num_span_panels=num_strips, airfoil=airfoil),
+        SectionStallRatioComp(
+            num_nodes=1,
+            num_span_panels=num_strips,
+            airfoil=airfoil,
+            speed_fraction=float(speed_fraction),
+        ),
         promotes_inputs=[("sectional_cl", "wing_sectional_cl")],
         promotes_outputs=[("stall_ratio", "wing_stall_ratio")],
     )

@@ -82,12 +82,12 @@ def test_max_lift_outside_the_table_raises():
         polar.max_lift_coefficients(np.array([3e6]), np.array([0.65]))
 
 
-def _ratio_problem(cl, reynolds, mach, rho=200.0):
+def _ratio_problem(cl, reynolds, mach, rho=200.0, speed_fraction=1.0):
     nn, ns = cl.shape
     prob = om.Problem(reports=False)
     prob.model.add_subsystem(
         "stall",
-        SectionStallRatioComp(num_nodes=nn, num_span_panels=ns),
+        SectionStallRatioComp(num_nodes=nn, num_span_panels=ns, speed_fraction=speed_fraction),
         promotes_inputs=["*"],
     )
     prob.model.add_subsystem("ks", KSComp(vec_size=nn, width=2 * ns, rho=rho))
@@ -109,10 +109,26 @@ def _strips(nn=2, ns=6, seed=3):
     )
 
 
-def test_partials():
-    prob = _ratio_problem(*_strips())
+@pytest.mark.parametrize("speed_fraction", [1.0, 1.0 / 1.2])
+def test_partials(speed_fraction):
+    prob = _ratio_problem(*_strips(), speed_fraction=speed_fraction)
     data = prob.check_partials(method="cs", out_stream=None, compact_print=True)
     assert_check_partials(data, atol=1e-9, rtol=1e-9)
+
+
+def test_section_maximum_at_the_stall_speed():
+    # With speed_fraction f the maxima are the polar's at f Re and f M (1e-12): a 1-g condition
+    # at 1.2 V_S takes them at its stall speed's flow, where c_l,max is lower (Re 4e6 -> 3.3e6).
+    cl, re, mach = _strips()
+    f = 1.0 / 1.2
+    prob = _ratio_problem(cl, re, mach, speed_fraction=f)
+    low, high, *_ = get_polar("ls413").max_lift_coefficients(f * re, f * mach)
+    nn, ns = cl.shape
+    expected = np.concatenate([cl / high.reshape(nn, ns), cl / low.reshape(nn, ns)], axis=1)
+    assert_near_equal(prob.get_val("stall.stall_ratio"), expected, 1e-12)
+    unscaled = _ratio_problem(cl, re, mach).get_val("stall.stall_ratio")
+    positive = cl > 0.0
+    assert np.all(prob.get_val("stall.stall_ratio")[:, :ns][positive] > unscaled[:, :ns][positive])
 
 
 def test_ratios_and_ks_against_hand_computation():

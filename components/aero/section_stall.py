@@ -26,7 +26,11 @@ class SectionStallRatioComp(om.ExplicitComponent):
 
     The section maximum varies with Reynolds number (the chord, a design variable, and the
     speed) and Mach number: the derivatives with respect to both are those of the C1 table
-    interpolant. Outside the table's Reynolds and Mach range the lookup raises
+    interpolant. With ``speed_fraction`` f < 1 it is taken at f Re and f M, the strip's flow at
+    f times the condition's speed: a limit c_l / c_l,max <= kappa f^2 then says that at the
+    speed f V (the stall speed, when 1/f is the required margin over it) the section reaches
+    kappa c_l,max with the Reynolds and Mach numbers it has there (c_l grows as 1/V^2 at a
+    fixed lift). Outside the table's Reynolds and Mach range the lookup raises
     ``om.AnalysisError`` (the stated range of the polar; the wing tables hold for Re up to 1e7
     and M up to 0.6), never a value held at the table's edge.
 
@@ -53,12 +57,23 @@ class SectionStallRatioComp(om.ExplicitComponent):
     airfoil : str, Polar, array_like or dict
         The section (anything :func:`~lpc_mdo.components.aero.airfoil.get_polar` takes that
         gives a :class:`~lpc_mdo.components.aero.airfoil.TablePolar`); default 'ls413'.
+    speed_fraction : float
+        f in [0.1, 1]: the section maxima are those at f Re and f M (default 1).
     """
 
     def initialize(self):
         self.options.declare("num_nodes", default=1, types=int, lower=1, desc="conditions")
         self.options.declare("num_span_panels", types=int, lower=1, desc="strips per condition")
         self.options.declare("airfoil", default="ls413", desc="airfoil (see get_polar)")
+        self.options.declare(
+            "speed_fraction",
+            default=1.0,
+            types=float,
+            lower=0.1,
+            upper=1.0,
+            desc="the section maximum is taken at Re and M times this (the speed where the "
+            "limit applies over the condition's speed)",
+        )
 
     def setup(self):
         nn, ns = self.options["num_nodes"], self.options["num_span_panels"]
@@ -103,13 +118,14 @@ class SectionStallRatioComp(om.ExplicitComponent):
         cached = getattr(self, "_last_limits", None)
         if real and cached is not None and cached[0] == key:
             return cached[1]
+        f = self.options["speed_fraction"]
         low, high, dlow_re, dhigh_re, dlow_m, dhigh_m = self._polar.max_lift_coefficients(
-            reynolds, mach
+            f * reynolds, f * mach
         )
         limits = (
             np.stack([high, low]).reshape(2, nn, ns),
-            np.stack([dhigh_re, dlow_re]).reshape(2, nn, ns),
-            np.stack([dhigh_m, dlow_m]).reshape(2, nn, ns),
+            f * np.stack([dhigh_re, dlow_re]).reshape(2, nn, ns),
+            f * np.stack([dhigh_m, dlow_m]).reshape(2, nn, ns),
         )
         if real:
             self._last_limits = (key, limits)

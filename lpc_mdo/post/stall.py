@@ -27,7 +27,7 @@ import numpy as np
 
 from lpc_mdo.components.aero.airfoil import get_polar
 from lpc_mdo.core.constants import GRAVITY, SEA_LEVEL_DENSITY
-from lpc_mdo.vehicle.condition_kinds import wing_stall_limit
+from lpc_mdo.vehicle.condition_kinds import is_wing_load_case, wing_stall_limit
 
 __all__ = ["WING_BORNE_KINDS", "format_stall_speed_check", "stall_speed", "stall_speed_rows"]
 
@@ -130,7 +130,7 @@ def stall_speed_rows(source, vehicle):
                 "speed": speed,
                 "speed_eas": speed * np.sqrt(density / SEA_LEVEL_DENSITY),
                 "ratio_ks": float(_value(source, f"{c.name}.wing_stall_ratio_ks")[0]),
-                "limit": wing_stall_limit(vehicle.constraints, c.kind == "structural"),
+                "limit": wing_stall_limit(vehicle.constraints, is_wing_load_case(c)),
                 **found,
             }
         )

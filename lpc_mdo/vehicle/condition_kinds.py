@@ -36,8 +36,10 @@ __all__ = [
     "SteadyFlightKind",
     "StructuralKind",
     "TransitionKind",
+    "is_wing_load_case",
     "num_lift_pairs",
     "wing_stall_limit",
+    "wing_stall_speed_fraction",
 ]
 
 _ZERO = (lambda x: x == 0, "0")
@@ -112,6 +114,22 @@ def wing_stall_limit(limits, load_case=False):
     """
     kappa = limits.wing_stall_lift_fraction
     return kappa if load_case else kappa / limits.min_stall_speed_ratio**2
+
+
+def wing_stall_speed_fraction(limits, load_case=False):
+    """
+    Return the speed, as a fraction of a condition's, at which its section maxima are taken.
+
+    A 1-g condition's limit kappa / k^2 says that at V / k (its stall speed when V = k V_S) the
+    critical section reaches kappa c_l,max: taken there, c_l,max has the Reynolds and Mach
+    numbers of that speed (1 / k); a load case's at its own speed (1).
+    """
+    return 1.0 if load_case else 1.0 / limits.min_stall_speed_ratio
+
+
+def is_wing_load_case(condition):
+    """Whether a wing-borne condition is a structural load case (kind ``structural``)."""
+    return condition.kind == "structural"
 
 
 def _wing_stall(limits, load_case=False):
