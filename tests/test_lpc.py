@@ -119,6 +119,8 @@ def _dv_group(name):
 
 def _constraint_group(name, meta):
     cond = name.split(".")[0]
+    if name.endswith("wing_stall_ratio_ks"):
+        return "wing section lift (KS)"
     if name == "hover.total_spl_a":
         return "hover noise"
     if cond.startswith("transition") and name.endswith("lift_rotor_rpm"):
@@ -155,8 +157,6 @@ def _constraint_group(name, meta):
         return "buckling"
     if name.endswith("stress_ratio_ks"):
         return "wing-box stress (KS)"
-    if name.endswith("wing_stall_ratio_ks"):
-        return "wing section lift (KS)"
     return {
         "cruise.static_margin": "static margin",
         "state_of_charge": "final SoC",
