@@ -11,6 +11,7 @@ from lpc_mdo.components.aero.drag_buildup import (
     LPC_LEAKAGE_PROTUBERANCE,
     DragBuildupComp,
 )
+from lpc_mdo.components.aero.section_stall import SectionStallRatioComp
 from lpc_mdo.components.aero.tail_efficiency import TailEfficiencyComp
 from lpc_mdo.components.aero.vlm_lattice import lattice_of
 from lpc_mdo.components.aero.wing_zero_lift_moment import (
@@ -30,6 +31,7 @@ from lpc_mdo.components.dynamics.static_margin import NeutralPointComp, StaticMa
 from lpc_mdo.components.energy.power import TotalPowerComp
 from lpc_mdo.components.geometry.blade import BLADE_OUTPUTS
 from lpc_mdo.components.kinematics import KinematicsComp
+from lpc_mdo.components.ks import KSComp
 from lpc_mdo.components.motor.parameters import DESIGN_OUTPUTS
 from lpc_mdo.components.motor.shaft_torque import ShaftTorqueComp
 from lpc_mdo.components.rotor.rotor_speed import RotorSpeedComp
@@ -39,6 +41,15 @@ from lpc_mdo.groups.pitt_peters_rotor import PittPetersRotorGroup
 from lpc_mdo.groups.vehicle import motor_parameters
 from lpc_mdo.groups.vehicle_drag import lpc_drag_components
 from lpc_mdo.groups.vlm import VLMGroup, lpc_vlm_surfaces
+from lpc_mdo.vehicle.condition_kinds import is_wing_load_case, wing_stall_speed_fraction
+
+#: KS parameter of ``wing_stall_ratio_ks``, the smooth maximum of the 2 x 26 section lift ratios
+#: of a wing-borne condition (paper eq. 7): it exceeds the largest ratio by at most
+#: ln(52)/rho = 0.020; at the reference vehicle's wing-borne conditions by 0.003-0.011
+#: (measured: the strips next to the most loaded one are within a few percent of it; rho = 100
+#: gave up to 0.025), i.e. 1.5 % of the 0.625 limit, on the safe side (docs
+#: theory/aerodynamics 'Section lift limit').
+WING_STALL_KS_RHO = 200.0
 
 
 def declare_aero_options(group):
@@ -257,6 +268,13 @@ def add_aerodynamics(
     group.set_input_defaults(
         "wing_zero_lift_angle", np.full((1, opts["wing_panels"]), wing_zero_lift_angle), units="rad"
     )
+    load_case = is_wing_load_case(condition)
+    _add_wing_stall(
+        group,
+        vehicle.wing.airfoil,
+        opts["wing_panels"],
+        wing_stall_speed_fraction(vehicle.constraints, load_case),
+    )
     # alpha_0w of the body moment: the section zero-lift angle less the root incidence.
     body_options = {"wing_zero_lift_angle": float(wing_zero_lift_angle) - vehicle.wing.incidence}
     tail_options = _tail_efficiency_options(vehicle, surfaces)
@@ -352,6 +370,37 @@ def add_aerodynamics(
             promotes_inputs=["neutral_point", "cg_x", ("mean_aerodynamic_chord", "wing_mac")],
             promotes_outputs=["static_margin"],
         )
+
+
+def _add_wing_stall(group, airfoil, num_strips, speed_fraction):
+    """Each wing strip's c_l over its section's c_l,max and c_l,min, and their KS maximum.
+
+    The section maxima are taken at ``speed_fraction`` times the condition's Re and M
+    (:func:`~lpc_mdo.vehicle.condition_kinds.wing_stall_speed_fraction`).
+
+    Outputs ``wing_stall_ratio`` (1, 2 ns) and ``wing_stall_ratio_ks`` (1,), the constraint of
+    kind ``wing_stall`` (docs theory/aerodynamics 'Section lift limit'). The strips' Reynolds
+    and Mach numbers are those the VLM's lift-dependent drag already computes.
+    """
+    group.add_subsystem(
+        "wing_stall",
+        SectionStallRatioComp(
+            num_nodes=1,
+            num_span_panels=num_strips,
+            airfoil=airfoil,
+            speed_fraction=float(speed_fraction),
+        ),
+        promotes_inputs=[("sectional_cl", "wing_sectional_cl")],
+        promotes_outputs=[("stall_ratio", "wing_stall_ratio")],
+    )
+    for name in ("reynolds", "mach"):
+        group.connect(f"vlm.wing_strip_flow.strip_{name}", f"wing_stall.{name}")
+    group.add_subsystem(
+        "wing_stall_ks",
+        KSComp(width=2 * num_strips, rho=WING_STALL_KS_RHO),
+        promotes_inputs=[("g", "wing_stall_ratio")],
+        promotes_outputs=[("KS", "wing_stall_ratio_ks")],
+    )
 
 
 def _tail_efficiency_options(vehicle, surfaces):

@@ -39,6 +39,7 @@ from lpc_mdo.analysis import (
 from lpc_mdo.api.weights import format_mass_breakdown, mass_breakdown
 from lpc_mdo.core.checks import check_choice, check_integer, check_number
 from lpc_mdo.post.report import _CASE_SUFFIXES, ReportSpec, find_case_files, write_report
+from lpc_mdo.post.stall import format_stall_speed_check
 from lpc_mdo.post.tables import (
     DEFAULT_TOL,
     constraint_rows,
@@ -651,6 +652,10 @@ def _analyze_lift_to_drag(analysis, args):
     )
 
 
+def _analyze_stall_speed(analysis, args):
+    return format_stall_speed_check(analysis.prob, analysis.vehicle)
+
+
 #: The sections ``lpc-mdo analyze`` prints, in order: each takes (Analysis, args) and returns
 #: text. A new table is one more function here.
 ANALYZE_SECTIONS = (
@@ -660,6 +665,7 @@ ANALYZE_SECTIONS = (
     _analyze_trim_variables,
     _analyze_drag,
     _analyze_lift_to_drag,
+    _analyze_stall_speed,
     _analyze_constraints,
     _analyze_summary,
     _analyze_static_margin_budget,

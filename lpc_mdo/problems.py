@@ -43,6 +43,7 @@ CONSTRAINT_KINDS = (
     "advance_ratio",
     "min_chord",
     "voltage_margin",
+    "wing_stall",
 )
 #: Finer kinds a subproblem may name instead of 'torque_margin' or 'voltage_margin' (which mean
 #: both motor kinds). ``voltage_margin`` (not in the paper): every motor's MTPA operating point

@@ -414,6 +414,7 @@ STAGES = (
             "min_chord",
             "pusher_voltage_margin",
             "clearance",
+            "wing_stall",
         ),
         trust_region={"battery_mass": 0.2},  # the reference code's bounds
         optimizer="SLSQP",
@@ -457,7 +458,7 @@ STAGES = (
             "htail_aspect_ratio",
             "fuselage_length",
         ),
-        constraint_kinds=("trim", "static_margin", "clearance"),
+        constraint_kinds=("trim", "static_margin", "clearance", "wing_stall"),
         optimizer="IPOPT",
         options=OWN_OPTIONS,
         sequence_options=SEQUENCE_OPTIONS,

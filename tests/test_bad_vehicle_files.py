@@ -521,6 +521,18 @@ DICT_CASES = [
         "in [0, 0.5]",
     ),
     (
+        "stall lift fraction in percent",
+        _set("constraints", "wing_stall_lift_fraction", 90.0),
+        "constraints.wing_stall_lift_fraction",
+        "in (0, 1]",
+    ),
+    (
+        "stall speed ratio below 1",
+        _set("constraints", "min_stall_speed_ratio", 0.8),
+        "constraints.min_stall_speed_ratio",
+        "in [1, 2]",
+    ),
+    (
         "buckling ratio 1e30",
         _set("constraints", "max_buckling_ratio", 1e30),
         "constraints.max_buckling_ratio",

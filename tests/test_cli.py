@@ -3,10 +3,12 @@
 import re
 from importlib import resources
 
+import numpy as np
 import openmdao.api as om
 import pytest
 
 from lpc_mdo.cli import main
+from lpc_mdo.post.stall import stall_speed_rows
 from lpc_mdo.vehicle import reference_vehicle
 
 #: Builds or runs the full model: the integration tier (README, 'Run the tests').
@@ -28,7 +30,7 @@ def test_analyze_reference_vehicle_is_trimmed(tmp_path, capsys):
     )
     text = capsys.readouterr().out
     assert "(initial design, trimmed: each condition by its rotor speeds" in text
-    assert ("15 design conditions, 181 design variables, 249 constraints, 60 linear bounds") in text
+    assert ("15 design conditions, 181 design variables, 259 constraints, 60 linear bounds") in text
     assert "gross" in text and "minus_1g" in text
     assert "trim: all 15 conditions trimmed" in text
     # Structural conditions show their load factor, not a power.
@@ -39,7 +41,7 @@ def test_analyze_reference_vehicle_is_trimmed(tmp_path, capsys):
     assert re.search(r"hover\.total_spl_a +- +<= 70 +\d+\.\d+ +violated", text)
     assert re.search(r"state_of_charge +- +>= 0\.2 +0\.\d+ +(satisfied|violated)", text)
     assert re.search(r"cruise\.linear_acceleration +- +\= 0 .* active", text)
-    assert re.search(r"77 constraints: \d+ satisfied, \d+ active, \d+ violated", text)
+    assert re.search(r"87 constraints: \d+ satisfied, \d+ active, \d+ violated", text)
     # The trimmed variables per condition.
     assert re.search(r"cruise +pusher_rpm [\d.]+ rpm; pitch [\d.]+ deg; elevator", text)
     # The airframe L/D of trimmed cruise and its maximum (about 15, docs theory/aerodynamics).
@@ -59,6 +61,24 @@ def test_analyze_reference_vehicle_is_trimmed(tmp_path, capsys):
     # reaches ~1e-10).
     thrust = case.get_val("hover.lift_thrust", units="N").sum()
     assert thrust == pytest.approx(w0 * 9.81, rel=1e-3)
+    # The stall-speed check, printed and from the case file alone: every wing-borne condition
+    # within its section-lift limit, cruise above 1.2 V_S with V/V_S = sqrt(kappa / r) to within
+    # the Reynolds-number effect on c_l,max (a few %; docs theory/aerodynamics 'Section lift
+    # limit').
+    assert re.search(r"stall-speed check: 1-g stall speed \d+\.\d m/s EAS", text)
+    assert "ABOVE LIMIT" not in text
+    vehicle = reference_vehicle()
+    design, rows = stall_speed_rows(case, vehicle)
+    assert [r["condition"] for r in rows] == [
+        c.name for c in vehicle.conditions if c.kind in ("transition", "steady", "structural")
+    ]
+    for row in rows:
+        assert row["ratio"] <= row["ratio_ks"] <= row["limit"]
+    cruise = next(r for r in rows if r["condition"] == "cruise")
+    kappa = vehicle.constraints.wing_stall_lift_fraction
+    assert cruise["speed_ratio"] >= vehicle.constraints.min_stall_speed_ratio
+    assert cruise["speed_ratio"] == pytest.approx(np.sqrt(kappa / cruise["ratio"]), rel=0.03)
+    assert 30.0 < design < 50.0
 
 
 def test_analyze_names_a_condition_that_cannot_trim(tmp_path, capsys):

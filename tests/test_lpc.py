@@ -66,10 +66,13 @@ OUR_CONSTRAINTS = {
     "rotor clearances": 6 + 3 * 4,
     # Roll and pitch in hover and the 4 OEI cases.
     "control reserve": 2 * 5,
+    # Every wing section's lift within its stall limit, one KS row per wing-borne condition
+    # (5 transition points, climb, cruise, descent, +3g, -1g).
+    "wing section lift (KS)": 10,
 }
-#: Rows of OUR_CONSTRAINTS beyond the paper: 2 + 40 + 76 + 9 + 18 + 10 nonlinear and 40 + 20
-#: linear.
-OUR_COUNT = 2 + 40 + 76 + 9 + 18 + 10 + 40 + 20
+#: Rows of OUR_CONSTRAINTS beyond the paper: 2 + 40 + 76 + 9 + 18 + 10 + 10 nonlinear and
+#: 40 + 20 linear.
+OUR_COUNT = 2 + 40 + 76 + 9 + 18 + 10 + 10 + 40 + 20
 TABLE6_CONSTRAINTS = {
     "hover noise": 1,
     "hover trim": 3,
@@ -130,6 +133,8 @@ def _constraint_group(name, meta):
         return "control reserve"
     if name.endswith("_clearance"):
         return "rotor clearances"
+    if name.endswith("wing_stall_ratio_ks"):
+        return "wing section lift (KS)"
     if name == "hover.total_spl_a":
         return "hover noise"
     if cond.startswith("transition") and name.endswith("lift_rotor_rpm"):

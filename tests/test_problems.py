@@ -37,11 +37,12 @@ def sizes(prob):
         (
             "subproblem_1",
             # ... plus the tip Mach numbers (hover 4 pairs, transition 8 lift rotors and the
-            # pusher at 5 points, the pusher in climb, cruise and descent) and the 20 chord
-            # control points' minimum chord.
+            # pusher at 5 points, the pusher in climb, cruise and descent), the 20 chord
+            # control points' minimum chord and the wing section lift (one KS row in each of the
+            # 5 transition points, climb, cruise and descent).
             (
                 4 + 20 + 10 + 5 + 5 + 3 + 3 + 8 + 1 + 1 + 45 + 1,
-                1 + 2 + 9 + 25 + 1 + 1 + 40 + 40 + 4 + 5 * 9 + 3 + 20 + 1 + 18,
+                1 + 2 + 9 + 25 + 1 + 1 + 40 + 40 + 4 + 5 * 9 + 3 + 20 + 1 + 18 + 8,
             ),
         ),
         # Subproblem 2 also takes hover (its 4 pair speeds and trim w, q) for the control reserve:
@@ -50,12 +51,14 @@ def sizes(prob):
         ("subproblem_3", (32 + 2, 2 + 14 + 2)),
         # Subproblem 4: planform in climb, cruise and descent (Table 2: cruise only;
         # see problems.py).
-        ("subproblem_4", (5 + 3 * 3, 3 * 3 + 1 + 18)),
+        # The clearances (18) and the wing section lift of climb, cruise and descent (3).
+        ("subproblem_4", (5 + 3 * 3, 3 * 3 + 1 + 18 + 3)),
         # Full: also the tip Mach numbers of the OEI (4 x 7) and transition (5 x 9) rotors and
         # the pusher in climb, cruise and descent (3), the minimum chord (20, linear), the
-        # clearances (18) and control reserve (10) in place of the radius intersection (2).
-        ("full", (161 + 20, 96 + 2 - 10 + 40 + 40 + 28 + 45 + 3 + 20 + 9 + 18 + 10 - 2)),
-        ("baseline", (161 + 20, 96 + 2 - 10 + 40 + 40 + 28 + 45 + 3 + 20 + 9 + 18 + 10 - 2)),
+        # clearances (18) and control reserve (10) in place of the radius intersection (2), and
+        # the wing section lift of the 10 wing-borne conditions.
+        ("full", (161 + 20, 96 + 2 - 10 + 40 + 40 + 28 + 45 + 3 + 20 + 9 + 18 + 10 - 2 + 10)),
+        ("baseline", (161 + 20, 96 + 2 - 10 + 40 + 40 + 28 + 45 + 3 + 20 + 9 + 18 + 10 - 2 + 10)),
     ],
 )
 def test_problem_sizes(name, expected):
@@ -64,7 +67,7 @@ def test_problem_sizes(name, expected):
 
 def test_full_problem_with_lateral_trim_is_table6():
     full = build_problem("full", optimizer="SLSQP", lateral_trim=True)
-    assert sizes(full) == (161 + 20, 96 + 2 + 40 + 40 + 28 + 45 + 3 + 20 + 9 + 18 + 10 - 2)
+    assert sizes(full) == (161 + 20, 96 + 2 + 40 + 40 + 28 + 45 + 3 + 20 + 9 + 18 + 10 - 2 + 10)
 
 
 @pytest.mark.requires_ipopt

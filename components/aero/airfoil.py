@@ -433,6 +433,7 @@ class TablePolar(Polar):
         self._composite_table = table
         stall = np.moveaxis(self.alpha_stall, 0, -1)  # (n_r, n_m, 2)
         self._stall_table = stall[None]  # (1, n_r, n_m, 2)
+        self._max_lift_table = np.moveaxis(self.cl_stall, 0, -1)[None]  # (1, n_r, n_m, 2)
 
     # ------------------------------------------------------------------------------ evaluation
 
@@ -538,6 +539,35 @@ class TablePolar(Polar):
         one = np.ones((ir.shape[0], 1))
         v, _, d_r, d_m = tensor_eval(
             self._stall_table, (zero_idx, ir, im), (one, wr, wm), (0.0 * one, dwr, dwm)
+        )
+        return tuple(x[:, s].reshape(shape) for x in (v, d_r, d_m) for s in (0, 1))
+
+    def max_lift_coefficients(self, reynolds, mach):
+        """
+        Section maximum and minimum lift coefficients at (Re, M), interpolated like the polar.
+
+        The table's cl at each slice's positive and negative stall points (step 1 of the module
+        docstring: the first dominant extremum of cl going up and down from the angle nearest
+        0 deg), interpolated over (ln Re, M) with the same C1 cubic Hermite axes as
+        :meth:`stall_angles`, so at a tabulated (Re, M) it is the table's own cl there. These
+        are the section's cl_max and cl_min as the table gives them; the composite polar's
+        stall blend (eps = ``blend``) rounds the peak, so :meth:`evaluate` at the stall angle
+        gives up to 3 % less (the wing tables, measured). Queries outside the stated Reynolds
+        and Mach range raise ``om.AnalysisError`` (:meth:`check_conditions`).
+
+        Returns
+        -------
+        tuple of ndarray
+            (cl_min, cl_max, dmin_dre, dmax_dre, dmin_dm, dmax_dm), each of the broadcast shape
+            of the inputs (cl_min < 0 < cl_max for a section with a negative stall).
+        """
+        reynolds, mach = np.broadcast_arrays(np.asarray(reynolds), np.asarray(mach))
+        shape = reynolds.shape
+        (ir, wr, dwr), (im, wm, dwm) = self._conditions(reynolds.ravel(), mach.ravel())
+        zero_idx = np.zeros((ir.shape[0], 1), dtype=int)
+        one = np.ones((ir.shape[0], 1))
+        v, _, d_r, d_m = tensor_eval(
+            self._max_lift_table, (zero_idx, ir, im), (one, wr, wm), (0.0 * one, dwr, dwm)
         )
         return tuple(x[:, s].reshape(shape) for x in (v, d_r, d_m) for s in (0, 1))
 

@@ -132,7 +132,7 @@ class ConditionConstraint:
     ----------
     kind : str
         Constraint kind a problem selects by (``noise``, ``tip_mach``, ``static_margin``,
-        ``buckling``, ``rotor_speed``, ``control_reserve``).
+        ``buckling``, ``rotor_speed``, ``control_reserve``, ``wing_stall``, ...).
     output : str
         Output of the condition group (promoted, relative to it).
     options : dict

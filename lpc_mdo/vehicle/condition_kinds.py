@@ -31,7 +31,16 @@ from lpc_mdo.vehicle.condition_contract import (
 from lpc_mdo.vehicle.condition_layout import condition_layout
 from lpc_mdo.vehicle.schema import VehicleSpecError
 
-__all__ = ["HoverKind", "SteadyFlightKind", "StructuralKind", "TransitionKind", "num_lift_pairs"]
+__all__ = [
+    "HoverKind",
+    "SteadyFlightKind",
+    "StructuralKind",
+    "TransitionKind",
+    "is_wing_load_case",
+    "num_lift_pairs",
+    "wing_stall_limit",
+    "wing_stall_speed_fraction",
+]
 
 _ZERO = (lambda x: x == 0, "0")
 _ONE = (lambda x: x == 1, "1")
@@ -90,6 +99,43 @@ def _pusher_tip_mach(limits):
     """Declare the pusher's helical tip Mach number <= ``max_pusher_tip_mach``."""
     return ConditionConstraint(
         "tip_mach", "pusher_helical_tip_mach", {"upper": limits.max_pusher_tip_mach}
+    )
+
+
+def wing_stall_limit(limits, load_case=False):
+    """
+    Return the upper limit of a wing-borne condition's section lift ratio ``wing_stall_ratio_ks``.
+
+    The wing stalls when its most loaded section reaches ``wing_stall_lift_fraction`` (kappa)
+    of the section's maximum lift coefficient: a structural load case (``load_case``) may reach
+    that line, a 1-g condition flies at least ``min_stall_speed_ratio`` (k) times the stall
+    speed, so its sections stay within kappa / k^2 (docs theory/aerodynamics 'Section lift
+    limit').
+    """
+    kappa = limits.wing_stall_lift_fraction
+    return kappa if load_case else kappa / limits.min_stall_speed_ratio**2
+
+
+def wing_stall_speed_fraction(limits, load_case=False):
+    """
+    Return the speed, as a fraction of a condition's, at which its section maxima are taken.
+
+    A 1-g condition's limit kappa / k^2 says that at V / k (its stall speed when V = k V_S) the
+    critical section reaches kappa c_l,max: taken there, c_l,max has the Reynolds and Mach
+    numbers of that speed (1 / k); a load case's at its own speed (1).
+    """
+    return 1.0 if load_case else 1.0 / limits.min_stall_speed_ratio
+
+
+def is_wing_load_case(condition):
+    """Whether a wing-borne condition is a structural load case (kind ``structural``)."""
+    return condition.kind == "structural"
+
+
+def _wing_stall(limits, load_case=False):
+    """Declare the KS of the wing sections' c_l / c_l,max (both stalls) <= its limit."""
+    return ConditionConstraint(
+        "wing_stall", "wing_stall_ratio_ks", {"upper": wing_stall_limit(limits, load_case)}
     )
 
 
@@ -292,7 +338,8 @@ class SteadyFlightKind(ConditionKind):
     Climb, cruise or descent (kind ``steady``): trim in F_x, F_z, M_y.
 
     The trim variables are pusher speed, pitch and elevator. Every steady condition declares the
-    pusher's helical tip Mach number <= ``max_pusher_tip_mach``; the condition named by the
+    pusher's helical tip Mach number <= ``max_pusher_tip_mach`` and its wing sections' lift
+    within the 1-g limit (:func:`wing_stall_limit`); the condition named by the
     vehicle's ``mission.cruise_condition`` also declares the static-margin constraint (paper
     eq. 30).
     """
@@ -329,7 +376,7 @@ class SteadyFlightKind(ConditionKind):
 
     @classmethod
     def constraints(cls, vehicle, condition, bounds):
-        pusher = (_pusher_tip_mach(vehicle.constraints),)
+        pusher = (_pusher_tip_mach(vehicle.constraints), _wing_stall(vehicle.constraints))
         if not cls.has_stability(vehicle, condition):
             return pusher
         return pusher + (
@@ -412,7 +459,8 @@ class TransitionKind(ConditionKind):
         ``constraints.max_lift_rotor_advance_ratio``, the range of the inflow model: no rotor
         outside it trims the vehicle (docs theory/rotors 'Advance-ratio limit'). The helical tip
         Mach number of each lift rotor (at its advancing blade) <= ``max_lift_rotor_tip_mach``
-        and the pusher's <= ``max_pusher_tip_mach``.
+        and the pusher's <= ``max_pusher_tip_mach``; the wing sections' lift within the 1-g
+        limit (:func:`wing_stall_limit`).
 
         With the roll/yaw differentials a rotor turns at its pair's mean speed +- half of each
         differential, so the design-variable bounds alone let it reach 0 rpm (100 rpm mean -
@@ -444,6 +492,7 @@ class TransitionKind(ConditionKind):
             ),
             _lift_tip_mach(vehicle.constraints),
             _pusher_tip_mach(vehicle.constraints),
+            _wing_stall(vehicle.constraints),
         )
 
     @classmethod
@@ -455,8 +504,9 @@ class StructuralKind(ConditionKind):
     """
     A +3g or -1g pull-up or push-over (kind ``structural``): trim in F_z by pitch.
 
-    Declares the buckling constraint of the compressed skin (every bay but the tip bay) and the
-    KS-aggregated von Mises stress constraint; draws no power (``energy_weight`` 0).
+    Declares the buckling constraint of the compressed skin (every bay but the tip bay), the
+    KS-aggregated von Mises stress constraint and the wing sections' lift within the load-case
+    limit (:func:`wing_stall_limit`); draws no power (``energy_weight`` 0).
     """
 
     power_output = None
@@ -509,6 +559,8 @@ class StructuralKind(ConditionKind):
             # KS aggregate of every von Mises stress ratio (sigma / material.allowable_stress,
             # the paper's 350 MPa) of the box.
             ConditionConstraint("stress", "stress_ratio_ks", {"upper": 1.0}),
+            # The load case lies inside the manoeuvring envelope: on or below its stall line.
+            _wing_stall(vehicle.constraints, load_case=True),
         )
 
 

@@ -724,6 +724,13 @@ class ConstraintLimits:
         Roll, pitch and yaw acceleration (rad/s^2) the lift rotors must be able to add at the
         trimmed hover and one-engine-inoperative points, within their motors' peak torque
         (docs theory/dynamics 'Hover control reserve'); 0 for an axis that is not required.
+    wing_stall_lift_fraction : float
+        Fraction kappa of a section's maximum lift coefficient at which the wing stalls (-):
+        the structural load cases keep every wing section's c_l within kappa c_l,max (and
+        kappa c_l,min), docs theory/aerodynamics 'Section lift limit'.
+    min_stall_speed_ratio : float
+        Least speed over the 1-g stall speed, V/V_S, of every 1-g wing-borne condition
+        (transition, steady) (-): their sections keep c_l within kappa c_l,max / ratio^2.
     """
 
     # 20-200 dBA: a quiet room to beyond the pain threshold.
@@ -756,6 +763,10 @@ class ConstraintLimits:
     min_rotor_pusher_clearance: float = _param("m", ge=0, le=10)
     # Angular accelerations 0-20 rad/s^2: beyond what any piloted VTOL demands (catches deg).
     min_control_acceleration: tuple[float, ...] = _param("rad/s^2", ge=0, le=20, shape=(3,))
+    # A fraction of the section maximum: above 0 and at most the section maximum itself.
+    wing_stall_lift_fraction: float = _param(gt=0, le=1)
+    # 1 (flight at the stall speed) to 2 (far beyond any regulation's 1.1-1.3 V_S floors).
+    min_stall_speed_ratio: float = _param(ge=1, le=2)
 
 
 @dataclass(frozen=True)
