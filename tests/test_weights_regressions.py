@@ -209,6 +209,13 @@ def test_bad_inputs_and_options():
             match=r"'fuselage_length' = 1.0 is out of range: must be in \[6.4008, 11.8872\] \(m\)",
         ):
             run(comp(), fuselage_length=1.0)
+    # The edge itself holds, also a few ulps outside it, where a design variable on its bound
+    # arrives after the driver's scaling (a sweep point failed on 6.400799999999999); 1 mm
+    # outside does not.
+    run(FuselageRegressionComp(), fuselage_length=6.400799999999999)
+    run(FuselageRegressionComp(), fuselage_length=11.887200000000002)
+    with pytest.raises(om.AnalysisError, match=r"'fuselage_length' = 6.3998 is out of range"):
+        run(FuselageRegressionComp(), fuselage_length=6.3998)
     # An aspect ratio of 500 extrapolates to a negative mass: 1.01 - 0.4068 x 500 + 42.6 x
     # 6.4008 + 0.0311 x 800 + 0.0687 x 57.19 - 116.7 = -17.7 kg.
     with pytest.raises(om.AnalysisError, match="fuselage_mass = .* must be > 0"):
