@@ -723,7 +723,10 @@ def _optimize(args):
     if args.max_iter is not None:
         settings["max_iter"] = args.max_iter
     if args.tol is not None:
+        # A tolerance asked for is the one to meet: no stop at an acceptable point before it
+        # (a polish from a full.sql stopped after 16 iterations at the acceptable point).
         settings["tol"] = args.tol
+        settings["acceptable_iter"] = 0
     if args.quiet:
         settings["print_level"] = 0
     common = dict(
@@ -876,9 +879,9 @@ def _tol_help():
     """Help of ``optimize --tol``: the full problem's SLSQP tolerance, from the stage table."""
     tol = f"{study_plan.stage('full').optimizer_options('SLSQP').tol:.0e}".replace("e-0", "e-")
     return (
-        f"optimizer tolerance (default: the stage's; SLSQP {tol} on the full problem). "
-        "E.g. 1e-6 with --max-iter 150 from a full.sql polishes an optimum before reading its "
-        "post-optimal sensitivities"
+        f"optimizer tolerance (default: the stage's; SLSQP {tol} on the full problem); given, "
+        "the run does not stop earlier at an acceptable point. E.g. 1e-6 with --max-iter 150 "
+        "from a full.sql polishes an optimum before reading its post-optimal sensitivities"
     )
 
 

@@ -121,7 +121,8 @@ def main(argv=None):
     declared = om.CaseReader(args.start_case).get_case("final").get_constraints()
     static_margin = any(n.endswith(".static_margin") for n in declared)
 
-    settings = {"maxiter": args.max_iter, "tol": args.tol}
+    # At the tolerance asked for: no earlier stop at an acceptable point.
+    settings = {"maxiter": args.max_iter, "tol": args.tol, "acceptable_iter": 0}
     tasks = []
     for row in found.rows:
         if row.active is False:

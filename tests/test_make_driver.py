@@ -24,6 +24,10 @@ def test_make_driver_without_pyoptsparse(monkeypatch):
     assert isinstance(slsqp, om.ScipyOptimizeDriver)
     assert slsqp.options["optimizer"] == "SLSQP"
     assert slsqp.options["maxiter"] == 77
+    # `lpc-mdo optimize --tol` turns the acceptable-point stop off: an option of our SLSQP
+    # driver, IPOPT's native option for IPOPT.
+    assert make_driver("SLSQP", acceptable_iter=0).options["acceptable_iter"] == 0
+    assert make_driver("IPOPT", acceptable_iter=0).opt_settings == {"acceptable_iter": 0}
 
     with pytest.raises(RuntimeError, match="SNOPT is reached only through pyoptsparse"):
         make_driver("SNOPT")
@@ -43,8 +47,9 @@ def test_make_driver_with_pyoptsparse(monkeypatch):
 
     monkeypatch.setattr(factory, "pyoptsparse_optimizers", lambda: {"IPOPT", "SNOPT"})
     monkeypatch.setattr(factory.om, "pyOptSparseDriver", FakePyOptSparseDriver)
-    snopt = make_driver("SNOPT", **{"Major iterations limit": 150})
+    snopt = make_driver("SNOPT", **{"Major iterations limit": 150}, acceptable_iter=0)
     assert isinstance(snopt, FakePyOptSparseDriver)
+    # SNOPT has no acceptable-point stop: turning it off passes nothing SNOPT would reject.
     assert snopt.opt_settings == {"Major iterations limit": 150}
     assert isinstance(make_driver("IPOPT"), FakePyOptSparseDriver)
     assert created == ["SNOPT", "IPOPT"]

@@ -86,6 +86,8 @@ def make_driver(optimizer="IPOPT", **settings):
 
     aliases = {"max_iter": "maxiter", "maxiter": "max_iter", "print_level": "disp"}
     for key, value in settings.items():
+        if name == "SNOPT" and key.startswith("acceptable_") and not value:
+            continue  # SNOPT has no acceptable-point stop to turn off
         if key in driver.options:
             driver.options[key] = value
         elif isinstance(driver, om.ScipyOptimizeDriver) and aliases.get(key) in driver.options:
