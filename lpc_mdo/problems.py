@@ -27,7 +27,13 @@ from lpc_mdo.vehicle.condition_contract import condition_kind
 from lpc_mdo.vehicle.condition_layout import condition_layout
 from lpc_mdo.vehicle.design_variable_registry import BASELINE_SET
 
-#: Constraint kinds a problem may declare.
+#: Constraint kinds a problem may declare (by default, all of them). Beyond paper Table 6:
+#: ``clearance``, the plan-view clearances of the lift disks to each other, the fuselage, the
+#: horizontal tail and the pusher disk (lpc_mdo.vehicle.clearances), each >= the vehicle file's
+#: floor; ``control_reserve``, the roll and pitch acceleration the lift rotors can still add in
+#: hover and every one-rotor-out case; the rotors' advance ratio, tip Mach and minimum chord,
+#: the motors' voltage margin and the wing sections' lift (each condition kind's
+#: ``constraints()`` says where they apply).
 CONSTRAINT_KINDS = (
     "trim",
     "noise",
@@ -57,11 +63,6 @@ TORQUE_MARGIN_KINDS = (
     "lift_voltage_margin",
     "pusher_voltage_margin",
 )
-#: ``clearance`` (not in the paper): the plan-view clearances of the lift disks to each other,
-#: the fuselage, the horizontal tail and the pusher disk (lpc_mdo.vehicle.clearances), each >=
-#: the vehicle file's floor. ``control_reserve`` (not in the paper): the roll and pitch
-#: acceleration the lift rotors can still add in hover and every one-rotor-out case.
-#:
 #: Kinds declared only when a problem names them: ``radius_intersection``, the paper's
 #: equality (R_inner + R_outer)/b = 0.20 (Table 6). It fixes the rotor radii to the span rather
 #: than keeping the disks apart, and with the clearance floors it over-constrains the layout
