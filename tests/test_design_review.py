@@ -45,6 +45,11 @@ def test_the_trimmed_initial_design_fails_where_the_sequence_must_work(initial_c
     assert items["systems, battery and gear inside the cabin (count)"].value == 0.0
     assert items["wing-box gauge"].value == pytest.approx(0.508e-3, rel=1e-9)
     assert items["wing-box gauge"].ok
+    # The reference wing is far from stall (docs theory/aerodynamics 'Section lift limit':
+    # largest ratio 0.45 in cruise against 0.625, 0.50 at +3g against 0.9).
+    assert items["wing section c_l/c_l,max (KS), 1-g conditions"].where == "cruise"
+    assert 0.40 < items["wing section c_l/c_l,max (KS), 1-g conditions"].value < 0.50
+    assert items["wing section c_l/c_l,max (KS), +3g/-1g"].ok
 
 
 def test_the_review_table_names_each_violation(initial_case):

@@ -4,11 +4,11 @@ A designer checks an optimum item by item: every motor within its bus voltage an
 every rotor's tip Mach inside its limit and inside the polar tables, chords and gauges a shop
 can build, no powered lift rotor beyond the advance ratio its inflow model holds to, the lift
 disks clear of each other, the fuselage, the tail and the pusher, no system or gear mass in the
-cabin, and the control reserve in hover and every one-rotor-out case. :func:`design_review`
-evaluates each from the case file's final problem case (``prob.record('final')``), whatever
-the run constrained, with the limits of the vehicle file; :func:`design_review_table` formats
-it for the report. Values are the worst over the conditions and rotors or motors, with where
-that worst point is.
+cabin, every wing section within its stall limit, and the control reserve in hover and every
+one-rotor-out case. :func:`design_review` evaluates each from the case file's final problem
+case (``prob.record('final')``), whatever the run constrained, with the limits of the vehicle
+file; :func:`design_review_table` formats it for the report. Values are the worst over the
+conditions and rotors or motors, with where that worst point is.
 """
 
 import dataclasses
@@ -20,6 +20,7 @@ from lpc_mdo.components.aero.airfoil import get_polar
 from lpc_mdo.post.tables import MissingVariableError, Table, last_case, open_reader, read_value
 from lpc_mdo.vehicle import reference_vehicle
 from lpc_mdo.vehicle.clearances import rotor_pairs
+from lpc_mdo.vehicle.condition_kinds import wing_stall_limit
 
 __all__ = ["ReviewItem", "design_review", "design_review_table", "CABIN_EXCLUDED_ITEMS"]
 
@@ -222,6 +223,20 @@ def design_review(source, vehicle=None, case=None):
             ", ".join(inside) or "none",
         )
     )
+
+    # Wing: each section's lift within its stall limit (the KS the problem constrains).
+    structural = [c for c in conds if kinds[c.name] == "structural"]
+    for group, load_case, label in (
+        (transition + steady, False, "1-g conditions"),
+        (structural, True, "+3g/-1g"),
+    ):
+        if group:
+            add(
+                f"wing section c_l/c_l,max (KS), {label}",
+                _per_condition(get, group, "wing_stall_ratio_ks", "<="),
+                wing_stall_limit(limits, load_case),
+                "<=",
+            )
 
     # Wing box: gauges a shop builds.
     thickness = {
