@@ -6,6 +6,7 @@ from importlib import resources
 import numpy as np
 import openmdao.api as om
 import pytest
+from test_design_review import check_trimmed_initial_design
 
 from lpc_mdo.cli import main
 from lpc_mdo.post.stall import stall_speed_rows
@@ -78,6 +79,8 @@ def test_analyze_reference_vehicle_is_trimmed(tmp_path, capsys):
     kappa = vehicle.constraints.wing_stall_lift_fraction
     assert cruise["speed_ratio"] >= vehicle.constraints.min_stall_speed_ratio
     assert cruise["speed_ratio"] == pytest.approx(np.sqrt(kappa / cruise["ratio"]), rel=0.03)
+    # The design review of the same case (tests/test_design_review.py).
+    check_trimmed_initial_design(tmp_path / "out" / "cases.sql")
     assert 30.0 < design < 50.0
 
 

@@ -2,11 +2,7 @@
 
 import pytest
 
-from lpc_mdo.cli import main
 from lpc_mdo.post.design_review import ReviewItem, design_review, design_review_table
-
-#: Builds or runs the full model: the integration tier (README, 'Run the tests').
-pytestmark = pytest.mark.integration
 
 
 def test_review_item_margin_and_status():
@@ -18,15 +14,14 @@ def test_review_item_margin_and_status():
     assert not ReviewItem("d", 0.698, 0.7, ">=", "x").ok
 
 
-@pytest.fixture(scope="module")
-def initial_case(tmp_path_factory):
-    out = tmp_path_factory.mktemp("review")
-    assert main(["analyze", "--output-dir", str(out), "--processes", "1"]) == 0
-    return out / "cases.sql"
+def check_trimmed_initial_design(case_file):
+    """
+    Check the design review of the trimmed initial design (``lpc-mdo analyze``'s case file).
 
-
-def test_the_trimmed_initial_design_fails_where_the_sequence_must_work(initial_case):
-    items = {item.check: item for item in design_review(initial_case)}
+    Called by the analyze test of tests/test_cli.py, which writes that case file, so that the
+    model is trimmed once for both.
+    """
+    items = {item.check: item for item in design_review(case_file)}
     # The paper's initial lift motors are not sized for one rotor out (subproblem 2 sizes
     # them): with the weight on seven rotors they run beyond their peak torque, which leaves
     # no control reserve.
@@ -50,10 +45,7 @@ def test_the_trimmed_initial_design_fails_where_the_sequence_must_work(initial_c
     assert items["wing section c_l/c_l,max (KS), 1-g conditions"].where == "cruise"
     assert 0.40 < items["wing section c_l/c_l,max (KS), 1-g conditions"].value < 0.50
     assert items["wing section c_l/c_l,max (KS), +3g/-1g"].ok
-
-
-def test_the_review_table_names_each_violation(initial_case):
-    table = design_review_table(initial_case)
-    status = {row[0]: row[-1] for row in table.rows}
+    # The table names each violation.
+    status = {row[0]: row[-1] for row in design_review_table(case_file).rows}
     assert status["lift motors: torque margin T_max/T - 1"] == "VIOLATED"
     assert status["clearance: lift disk to lift disk"] == "ok"
