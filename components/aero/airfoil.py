@@ -532,15 +532,7 @@ class TablePolar(Polar):
             (alpha_neg, alpha_pos, dneg_dre, dpos_dre, dneg_dm, dpos_dm), each of the broadcast
             shape of the inputs; angles in rad.
         """
-        reynolds, mach = np.broadcast_arrays(np.asarray(reynolds), np.asarray(mach))
-        shape = reynolds.shape
-        (ir, wr, dwr), (im, wm, dwm) = self._conditions(reynolds.ravel(), mach.ravel())
-        zero_idx = np.zeros((ir.shape[0], 1), dtype=int)
-        one = np.ones((ir.shape[0], 1))
-        v, _, d_r, d_m = tensor_eval(
-            self._stall_table, (zero_idx, ir, im), (one, wr, wm), (0.0 * one, dwr, dwm)
-        )
-        return tuple(x[:, s].reshape(shape) for x in (v, d_r, d_m) for s in (0, 1))
+        return self._pair_at_conditions(self._stall_table, reynolds, mach)
 
     def max_lift_coefficients(self, reynolds, mach):
         """
@@ -561,13 +553,22 @@ class TablePolar(Polar):
             (cl_min, cl_max, dmin_dre, dmax_dre, dmin_dm, dmax_dm), each of the broadcast shape
             of the inputs (cl_min < 0 < cl_max for a section with a negative stall).
         """
+        return self._pair_at_conditions(self._max_lift_table, reynolds, mach)
+
+    def _pair_at_conditions(self, table, reynolds, mach):
+        """
+        Interpolate a (negative, positive) pair table over (ln Re, M) at each query point.
+
+        Returns (neg, pos, dneg_dre, dpos_dre, dneg_dm, dpos_dm), each of the broadcast shape
+        of ``reynolds`` and ``mach``.
+        """
         reynolds, mach = np.broadcast_arrays(np.asarray(reynolds), np.asarray(mach))
         shape = reynolds.shape
         (ir, wr, dwr), (im, wm, dwm) = self._conditions(reynolds.ravel(), mach.ravel())
         zero_idx = np.zeros((ir.shape[0], 1), dtype=int)
         one = np.ones((ir.shape[0], 1))
         v, _, d_r, d_m = tensor_eval(
-            self._max_lift_table, (zero_idx, ir, im), (one, wr, wm), (0.0 * one, dwr, dwm)
+            table, (zero_idx, ir, im), (one, wr, wm), (0.0 * one, dwr, dwm)
         )
         return tuple(x[:, s].reshape(shape) for x in (v, d_r, d_m) for s in (0, 1))
 
