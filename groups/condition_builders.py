@@ -145,7 +145,9 @@ def add_lift_rotors(group, vehicle, rotors, speed_groups, num_groups, edgewise, 
         promotes_outputs=[("rpm", "lift_rotor_rpm")],
     )
     rotor_cls = PittPetersRotorGroup if edgewise else BEMRotorGroup
-    kwargs = {"num_azimuth": opts["num_azimuth"]} if edgewise else {}
+    # Nothing in a condition reads the edgewise rotors' sectional loads (the noise is the hover
+    # condition's, by BEM); left out, they do not lengthen every adjoint transfer.
+    kwargs = {"num_azimuth": opts["num_azimuth"], "sectional_loads": False} if edgewise else {}
     group.add_subsystem(
         "lift_rotors",
         rotor_cls(

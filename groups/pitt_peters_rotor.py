@@ -62,7 +62,8 @@ class PittPetersRotorGroup(RotorGroupBase):
         (lambda_0, lambda_c, lambda_s).
     thrust_per_span, drag_per_span, inflow_angle : (num_rotors, num_nodes, num_radial,
     num_azimuth), N/m, N/m, rad
-        Sectional loads of one blade over (r, psi) (for the tonal acoustics).
+        Sectional loads of one blade over (r, psi) (for the tonal acoustics), if
+        ``sectional_loads``.
     thrust, torque : (num_rotors, num_nodes), N, N*m
     inplane_force, hub_moment : (num_rotors, num_nodes, 2), N, N*m
         In-plane hub force and hub moment along / about the disk e_x and e_y.
@@ -94,6 +95,9 @@ class PittPetersRotorGroup(RotorGroupBase):
         inflow'); see PittPetersInflowComp.
     tangential_induction : bool
         Wake swirl per station (default True; see PittPetersLoadsComp).
+    sectional_loads : bool
+        Output the sectional loads (default True; a condition that does not read them leaves
+        them out, see PittPetersLoadsComp).
     quadrature, spline_stations : str
         'midpoint', 'as_coded' (defaults; see BladeGeometryGroup).
     body_frame : bool
@@ -122,6 +126,12 @@ class PittPetersRotorGroup(RotorGroupBase):
             types=bool,
             desc="Wake swirl per station (as the BEM)",
         )
+        self.options.declare(
+            "sectional_loads",
+            default=True,
+            types=bool,
+            desc="Output the sectional loads over (r, psi)",
+        )
 
     def add_rotor_model(self, geo):
         opts = self.options
@@ -139,7 +149,11 @@ class PittPetersRotorGroup(RotorGroupBase):
             "tangential_induction": opts["tangential_induction"],
         }
         self.add_subsystem("inflow", PittPetersInflowComp(**pp), promotes=["*"])
-        self.add_subsystem("loads", PittPetersLoadsComp(**pp), promotes=["*"])
+        self.add_subsystem(
+            "loads",
+            PittPetersLoadsComp(**pp, sectional_loads=opts["sectional_loads"]),
+            promotes=["*"],
+        )
         self.add_subsystem(
             "advance_ratio",
             EdgewiseAdvanceRatioComp(num_rotors=geo["num_rotors"], num_nodes=opts["num_nodes"]),

@@ -43,9 +43,11 @@ class ReMachPolar(Polar):
         )
 
 
-def build(nr=2, nn=3, nrad=6, naz=7, **options):
+def build(nr=2, nn=3, nrad=6, naz=7, loads_options=None, **options):
     """
     Return a problem of two rotors (opposite spin) at three nodes.
+
+    ``loads_options``: further options of the loads component only.
 
     The nodes are hover-climb, edgewise with sideslip, and high advance ratio with reverse flow
     on the retreating side.
@@ -61,7 +63,9 @@ def build(nr=2, nn=3, nrad=6, naz=7, **options):
     )
     prob = om.Problem()
     prob.model.add_subsystem("inflow", PittPetersInflowComp(**kw), promotes=["*"])
-    prob.model.add_subsystem("loads", PittPetersLoadsComp(**kw), promotes=["*"])
+    prob.model.add_subsystem(
+        "loads", PittPetersLoadsComp(**kw, **(loads_options or {})), promotes=["*"]
+    )
     prob.setup(force_alloc_complex=True)
     radius = np.array([1.2, 1.5])
     rh = np.array([0.24, 0.33])
@@ -109,6 +113,19 @@ def test_partials_complex_step(case):
     data = prob.check_partials(method="cs", compact_print=True, out_stream=None)
     assert_check_partials(data, atol=1e-6, rtol=1e-8)
     assert_no_approx_partials(prob.model, method="any")
+
+
+def test_without_sectional_loads_the_rotor_loads_are_the_same():
+    # A condition that reads only the rotor loads leaves the sectional loads out; the thrust,
+    # torque, in-plane force and hub moment and their partials must not change.
+    full = build()
+    lean = build(loads_options={"sectional_loads": False})
+    outputs = lean.model.loads.list_outputs(out_stream=None)
+    assert {name for name, _ in outputs} == {"thrust", "torque", "inplane_force", "hub_moment"}
+    for name, _ in outputs:
+        np.testing.assert_array_equal(lean.get_val(name), full.get_val(name))
+    data = lean.check_partials(method="cs", compact_print=True, out_stream=None)
+    assert_check_partials(data, atol=1e-6, rtol=1e-8)
 
 
 def test_partials_no_losses_finite_difference():

@@ -982,11 +982,12 @@ class PittPetersLoadsComp(om.ExplicitComponent):
     Outputs
     -------
     thrust_per_span : float, (num_rotors, num_nodes, num_radial, num_azimuth), N/m
-        Sectional thrust of one blade per unit span at each azimuth.
+        Sectional thrust of one blade per unit span at each azimuth (if ``sectional_loads``).
     drag_per_span : float, (num_rotors, num_nodes, num_radial, num_azimuth), N/m
-        Sectional in-plane drag of one blade per unit span (opposing the rotation; dQ/dr/(B r)).
+        Sectional in-plane drag of one blade per unit span (opposing the rotation; dQ/dr/(B r))
+        (if ``sectional_loads``).
     inflow_angle : float, (num_rotors, num_nodes, num_radial, num_azimuth), rad
-        phi = atan2(U_P, U_T).
+        phi = atan2(U_P, U_T) (if ``sectional_loads``).
     thrust : float, (num_rotors, num_nodes), N
         Rotor thrust along the thrust axis.
     torque : float, (num_rotors, num_nodes), N*m
@@ -1018,10 +1019,21 @@ class PittPetersLoadsComp(om.ExplicitComponent):
         multiplied by F).
     tangential_induction : bool
         Wake swirl per station (default True; module docstring).
+    sectional_loads : bool
+        Output the sectional loads over (r, psi) (default True). A model whose other components
+        do not read them leaves them out: with the default 25 x 25 stations they are 3 x 625
+        values per rotor, 60 % of the full vehicle model's outputs, and every reverse transfer
+        of a total derivative costs in proportion to the output vector's length.
     """
 
     def initialize(self):
         declare_pitt_peters_options(self.options)
+        self.options.declare(
+            "sectional_loads",
+            default=True,
+            types=bool,
+            desc="Output the sectional loads over (r, psi)",
+        )
 
     def setup(self):
         opts = self.options
@@ -1047,25 +1059,15 @@ class PittPetersLoadsComp(om.ExplicitComponent):
             desc="Inflow states (lambda_0, lambda_c, lambda_s) over Omega R",
         )
 
-        shape = (nr, nn, nrad, naz)
-        self.add_output(
-            "thrust_per_span",
-            val=np.zeros(shape),
-            units="N/m",
-            desc="Sectional thrust of one blade per unit span over (r, psi)",
-        )
-        self.add_output(
-            "drag_per_span",
-            val=np.zeros(shape),
-            units="N/m",
-            desc="Sectional in-plane drag of one blade per unit span over (r, psi)",
-        )
-        self.add_output(
-            "inflow_angle",
-            val=np.zeros(shape),
-            units="rad",
-            desc="Inflow angle atan2(U_P, U_T) over (r, psi)",
-        )
+        self._sectional = opts["sectional_loads"]
+        if self._sectional:
+            shape = (nr, nn, nrad, naz)
+            for name, units, desc in (
+                ("thrust_per_span", "N/m", "Sectional thrust of one blade per unit span"),
+                ("drag_per_span", "N/m", "Sectional in-plane drag of one blade per unit span"),
+                ("inflow_angle", "rad", "Inflow angle atan2(U_P, U_T)"),
+            ):
+                self.add_output(name, val=np.zeros(shape), units=units, desc=f"{desc} over (r, psi)")
         self.add_output("thrust", val=np.zeros((nr, nn)), units="N", desc="Rotor thrust")
         self.add_output("torque", val=np.zeros((nr, nn)), units="N*m", desc="Rotor (shaft) torque")
         self.add_output(
@@ -1113,10 +1115,13 @@ class PittPetersLoadsComp(om.ExplicitComponent):
         )
         for name in wrt:
             kind, m = input_kind(name), input_size(name)
-            rows, cols = pat.station(kind, m)
-            self.declare_partials(["thrust_per_span", "drag_per_span"], name, rows=rows, cols=cols)
-            if name in self._phi_wrt:
-                self.declare_partials("inflow_angle", name, rows=rows, cols=cols)
+            if self._sectional:
+                rows, cols = pat.station(kind, m)
+                self.declare_partials(
+                    ["thrust_per_span", "drag_per_span"], name, rows=rows, cols=cols
+                )
+                if name in self._phi_wrt:
+                    self.declare_partials("inflow_angle", name, rows=rows, cols=cols)
             for out, k in (("thrust", 1), ("torque", 1), ("inplane_force", 2), ("hub_moment", 2)):
                 rows, cols = pat.op(k, kind, m)
                 self.declare_partials(out, name, rows=rows, cols=cols)
@@ -1130,9 +1135,10 @@ class PittPetersLoadsComp(om.ExplicitComponent):
     def compute(self, inputs, outputs):
         fld = self._field
         st = fld.evaluate(self._values(inputs), inputs["inflow_states"])
-        outputs["thrust_per_span"] = st.t
-        outputs["drag_per_span"] = st.d
-        outputs["inflow_angle"] = st.phi
+        if self._sectional:
+            outputs["thrust_per_span"] = st.t
+            outputs["drag_per_span"] = st.d
+            outputs["inflow_angle"] = st.phi
         ints = {
             name: fld.integrate(st, name)
             for name in ("thrust", "torque", "moment_cos", "moment_sin", "drag_sin", "drag_cos")
@@ -1146,11 +1152,12 @@ class PittPetersLoadsComp(om.ExplicitComponent):
     def compute_partials(self, inputs, partials):
         fld = self._field
         st = fld.evaluate(self._values(inputs), inputs["inflow_states"], partials=True, shared=True)
-        for out, name, keys in (
+        sectional = (
             ("thrust_per_span", "dt", self._wrt),
             ("drag_per_span", "dd", self._wrt),
             ("inflow_angle", "dphi", self._phi_wrt),
-        ):
+        )
+        for out, name, keys in sectional if self._sectional else ():
             rows, chained = fld.chain(st, name, keys)
             for key, sl in rows.items():
                 val = (
