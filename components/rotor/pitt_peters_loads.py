@@ -1067,7 +1067,9 @@ class PittPetersLoadsComp(om.ExplicitComponent):
                 ("drag_per_span", "N/m", "Sectional in-plane drag of one blade per unit span"),
                 ("inflow_angle", "rad", "Inflow angle atan2(U_P, U_T)"),
             ):
-                self.add_output(name, val=np.zeros(shape), units=units, desc=f"{desc} over (r, psi)")
+                self.add_output(
+                    name, val=np.zeros(shape), units=units, desc=f"{desc} over (r, psi)"
+                )
         self.add_output("thrust", val=np.zeros((nr, nn)), units="N", desc="Rotor thrust")
         self.add_output("torque", val=np.zeros((nr, nn)), units="N*m", desc="Rotor (shaft) torque")
         self.add_output(
