@@ -6,6 +6,7 @@ group and promotes the names the conditions share (see :mod:`lpc_mdo.groups.cond
 """
 
 import numpy as np
+import openmdao.api as om
 
 from lpc_mdo.components.aero.drag_buildup import (
     LPC_LEAKAGE_PROTUBERANCE,
@@ -82,7 +83,7 @@ def add_motors(group, vehicle, prefix, num_motors, rpm):
         ShaftTorqueComp(num_motors=num_motors),
         promotes_inputs=[("rotor_torque", f"{prefix}_torque")],
     )
-    group.add_subsystem(
+    motors = group.add_subsystem(
         f"{prefix}_motors",
         MotorOperationGroup(
             num_motors=num_motors, num_nodes=1, parameters=motor_parameters(vehicle)
@@ -101,6 +102,22 @@ def add_motors(group, vehicle, prefix, num_motors, rpm):
         ],
     )
     group.connect(f"{prefix}_shaft.motor_load_torque", f"{prefix}_motors.rotor_torque")
+    one_factorization(motors)
+
+
+def one_factorization(rotors_or_motors):
+    """
+    Give a condition's rotor or motor group one sparse LU of its assembled Jacobian.
+
+    Nearly every adjoint right-hand side of the optimization (the trim rows, the motor margins,
+    the state of charge, the tip Mach numbers) passes back through a condition's rotors and
+    motors; a ``DirectSolver`` turns each such pass into one back-substitution instead of a
+    visit to each of the group's components, 20 % of the total derivative time of the full
+    model (docs theory/optimization 'Speed of an evaluation and of the derivatives'). The
+    groups are small and feed-forward, so the factors have little fill; exact, like the
+    block passes they replace.
+    """
+    rotors_or_motors.linear_solver = om.DirectSolver(assemble_jac=True)
 
 
 def add_atmosphere(group, condition):
@@ -148,7 +165,7 @@ def add_lift_rotors(group, vehicle, rotors, speed_groups, num_groups, edgewise, 
     # Nothing in a condition reads the edgewise rotors' sectional loads (the noise is the hover
     # condition's, by BEM); left out, they do not lengthen every adjoint transfer.
     kwargs = {"num_azimuth": opts["num_azimuth"], "sectional_loads": False} if edgewise else {}
-    group.add_subsystem(
+    lift_rotors = group.add_subsystem(
         "lift_rotors",
         rotor_cls(
             rotors=list(rotors),
@@ -180,6 +197,7 @@ def add_lift_rotors(group, vehicle, rotors, speed_groups, num_groups, edgewise, 
             *([("edgewise_advance_ratio", "lift_advance_ratio")] if edgewise else []),
         ],
     )
+    one_factorization(lift_rotors)
     add_motors(group, vehicle, "lift", na, "lift_rotor_rpm")
     group.set_input_defaults("lift_radius", np.array([r.radius for r in rotors]), units="m")
     group.set_input_defaults(
@@ -192,7 +210,7 @@ def add_pusher(group, vehicle):
     opts = group.options
     pusher = vehicle.pusher
     polar = opts["rotor_polar"] if opts["pusher_polar"] is None else opts["pusher_polar"]
-    group.add_subsystem(
+    pusher_rotor = group.add_subsystem(
         "pusher",
         BEMRotorGroup(
             rotors=[pusher],
@@ -221,6 +239,7 @@ def add_pusher(group, vehicle):
             ("total_moment", "pusher_moment"),
         ],
     )
+    one_factorization(pusher_rotor)
     add_motors(group, vehicle, "pusher", 1, "pusher_rpm")
     group.set_input_defaults("pusher_radius", np.array([pusher.radius]), units="m")
     group.set_input_defaults("pusher_hub_position", np.array([pusher.hub_position]), units="m")
