@@ -210,7 +210,7 @@ DICT_CASES = [
         "min_final_soc above initial_soc",
         _both(_set("battery", "initial_soc", 0.5), _set("constraints", "min_final_soc", 0.6)),
         "constraints.min_final_soc",
-        "must be < 'battery.initial_soc' = 0.5",
+        "must be <= 'battery.initial_soc' = 0.5 - 0.05",
     ),
     (
         "min_final_soc = initial_soc",
@@ -581,6 +581,135 @@ DICT_CASES = [
         _set("battery", "energy_density_wh_per_kg", float("inf")),
         "battery.energy_density_wh_per_kg",
         "inf",
+    ),
+    # Parts off the airframe and masses that do not add up (lpc_mdo.vehicle.airframe and the
+    # limits of lpc_mdo.vehicle.consistency), as a new user's files had them.
+    *[
+        (
+            f"horizontal tail at x = {x} m",
+            _set("horizontal_tail", "root_leading_edge", [x, 0.0, -0.88]),
+            "horizontal_tail.root_leading_edge",
+            fragment,
+        )
+        for x, fragment in (
+            (-1.0, "behind the wing's root trailing edge"),
+            (3.0, "nose to tail end"),
+            (-29.0, "nose to tail end"),
+        )
+    ],
+    (
+        "fin at the nose",
+        _set("vertical_tail", "root_leading_edge", [-0.5, 0.0, -0.89]),
+        "vertical_tail.root_leading_edge",
+        "behind the wing's root trailing edge",
+    ),
+    (
+        "wing off the symmetry plane",
+        _set("wing", "root_leading_edge", [-1.96, 1.0, -1.07]),
+        "wing.root_leading_edge",
+        "symmetry plane",
+    ),
+    (
+        "wing 5 m below the datum",
+        _set("wing", "root_leading_edge", [-1.96, 0.0, 5.0]),
+        "wing.root_leading_edge",
+        "must lie at z in",
+    ),
+    (
+        "lift rotors beyond the wing tips",
+        _mirror_pair(0, 6, "hub_position", [-0.79431, -20.0, -0.68336]),
+        "lift_rotors[0].hub_position",
+        "half span",
+    ),
+    (
+        "lift rotors ahead of the nose",
+        _mirror_pair(0, 6, "hub_position", [2.0, -5.715, -0.68336]),
+        "lift_rotors[0].hub_position",
+        "nose to tail end",
+    ),
+    (
+        "pusher ahead of the nose",
+        _set("pusher", "hub_position", [2.0, 0.0, -0.816]),
+        "pusher.hub_position",
+        "the pusher must sit at the tail",
+    ),
+    (
+        "pusher at the wing tip",
+        _set("pusher", "hub_position", [-9.19, 7.0, -0.816]),
+        "pusher.hub_position",
+        "the pusher must sit at the tail",
+    ),
+    (
+        "boom attach point 30 m outboard",
+        _set("booms", "attach_points", 0, [-2.937, -30.0, -0.761]),
+        "booms.attach_points[0]",
+        "within a rotor radius",
+    ),
+    (
+        "battery 16 m behind the tail",
+        _set("battery", "cg", [-25.0, 0.0, 0.558]),
+        "battery.cg",
+        "nose to tail end",
+    ),
+    (
+        "payload 40 m ahead",
+        _set("masses", "payload_cg", [40.0, 0.0, 0.05]),
+        "masses.payload_cg",
+        "nose to tail end",
+    ),
+    (
+        "power electronics 20 m down",
+        _set("masses", "power_electronics_cg", [-0.25, 0.0, 20.0]),
+        "masses.power_electronics_cg",
+        "must lie at z in",
+    ),
+    (
+        "systems 30 m to the side",
+        _set("masses", "systems_cg", [-0.25, 30.0, 0.05]),
+        "masses.systems_cg",
+        "half span",
+    ),
+    (
+        "wing sections as full span",
+        lambda d: [sec.update(span=2 * sec["span"]) for sec in d["wing"]["sections"]],
+        "wing.sections",
+        "within a factor 1.4",
+    ),
+    (
+        "blade chord longer than the radius",
+        _all_lift_rotors("chord_cp", [1.9, 1.6, 1.2, 0.8]),
+        "lift_rotors[0].chord_cp",
+        "slender blade",
+    ),
+    (
+        "blade twisted 89 deg",
+        _all_lift_rotors("twist_cp_deg", [89.0, 60.0, 40.0, 10.0]),
+        "lift_rotors[0].twist_cp_deg[0]",
+        "[-80, 80]",
+    ),
+    (
+        "payload above the design gross mass",
+        _set("masses", "payload", 5000.0),
+        "masses.payload",
+        "must be < 'masses.design_gross_mass'",
+    ),
+    (
+        "cruise of 0 s",
+        _set("conditions", CRUISE, "duration", 0.0),
+        f"conditions[{CRUISE}].duration",
+        "must last > 0 s",
+    ),
+    (
+        "transition of 0 s",
+        _set("conditions", 1, "duration", 0.0),
+        "conditions[1].duration",
+        "must last > 0 s",
+    ),
+    (
+        "no state-of-charge window",
+        _both(_set("battery", "initial_soc", 0.2000001), _set("constraints", "min_final_soc", 0.2)),
+        "constraints.min_final_soc",
+        "usable state-of-charge window",
     ),
 ]
 
