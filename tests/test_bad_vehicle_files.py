@@ -9,6 +9,7 @@ type, that the message names the key and a fragment that says what is wrong.
 import copy
 import importlib.util
 import math
+import os
 import zipfile
 from importlib import resources
 from pathlib import Path
@@ -799,6 +800,8 @@ POLAR_CASES = [
         lambda t: _npz_bytes(t, alpha_deg=ALPHA, cl=0.1 * ALPHA, cd=CD),
         "is an .npz (zip) archive",
     ),
+    ("cl in percent", "blade.dat", _rows(cl=10.0 * ALPHA + 10.0), "(coefficients, not percent)"),
+    ("cd in percent", "blade.dat", _rows(cd=100.0 * CD + 4.0), "cd = 5.25 at alpha -5 deg"),
     ("binary .dat", "blade.dat", bytes(range(256)), "is binary"),
     (
         "latin-1 .dat",
@@ -891,6 +894,13 @@ TEXT_CASES = [
         "is not valid TOML",
     ),
     ("BOM then invalid TOML", b"\xef\xbb\xbf" + b"[wing\narea = 1\n", "is not valid TOML"),
+    (
+        "arrays nested 5000 deep",
+        REFERENCE_TEXT.replace(
+            "area = 19.6 ", "area = " + "[" * 5000 + "1" + "]" * 5000, 1
+        ).encode(),
+        "nests arrays or tables too deeply to read",
+    ),
 ]
 
 
@@ -906,6 +916,55 @@ def test_bad_file_content_is_a_named_error(tmp_path, content, fragment):
     assert fragment in message, message
     if "missing key" not in fragment:
         assert f"vehicle file '{path}'" in message, message
+
+
+#: Values in a file's text that TOML reads but a vehicle cannot have: (id, text, fragment).
+VALUE_TEXT_CASES = [
+    (
+        "an integer beyond 64 bits",
+        REFERENCE_TEXT.replace("num_blades = 4", "num_blades = " + "9" * 30, 1).encode(),
+        "'pusher.num_blades' = 1e+30 is out of range: must be in [2, 8]",
+    ),
+    (
+        "an integer beyond the float range",
+        REFERENCE_TEXT.replace("num_blades = 4", "num_blades = " + "9" * 400, 1).encode(),
+        "'pusher.num_blades' = inf is out of range",
+    ),
+    (
+        "a terminal escape in a name",
+        REFERENCE_TEXT.replace('name = "pusher"', 'name = "pu\\u001b[31mRED"', 1).encode(),
+        "'pusher.name' = 'pu\\x1b[31mRED' is not allowed: it holds the control character",
+    ),
+    (
+        "a name of a million characters",
+        REFERENCE_TEXT.replace('name = "pusher"', 'name = "' + "x" * 10**6 + '"', 1).encode(),
+        "... (1000000 characters) is not allowed",
+    ),
+]
+
+
+@pytest.mark.parametrize(
+    "content, fragment", [c[1:] for c in VALUE_TEXT_CASES], ids=[c[0] for c in VALUE_TEXT_CASES]
+)
+def test_bad_value_in_the_file_text_is_a_named_error(tmp_path, content, fragment):
+    path = tmp_path / "bad.toml"
+    path.write_bytes(content)
+    with pytest.raises(VehicleSpecError) as info:
+        load_vehicle(path)
+    assert fragment in str(info.value), str(info.value)
+    assert len(str(info.value)) < 400  # a long or escaped name is cut, not printed
+
+
+def test_polar_path_that_is_not_a_file_is_named(tmp_path):
+    folder = tmp_path / "blade.dat"
+    folder.mkdir()
+    fifo = tmp_path / "pipe.dat"
+    os.mkfifo(fifo)
+    for path, kind in ((folder, "is a directory"), (fifo, "is not a regular file")):
+        data = copy.deepcopy(REFERENCE_DATA)
+        data["lift_rotors"][3]["airfoil"] = str(path)
+        with pytest.raises(VehicleSpecError, match=f"'lift_rotors\\[3\\].airfoil' = .*{kind}"):
+            vehicle_from_dict(data)
 
 
 def test_missing_and_directory_paths_are_named_errors(tmp_path):
@@ -955,4 +1014,4 @@ def test_a_good_polar_file_loads(tmp_path):
 
 def test_case_counts():
     # Issue 18 item 3: at least 60 parametrized bad-vehicle-file cases in this module.
-    assert len(DICT_CASES) + len(POLAR_CASES) + len(TEXT_CASES) >= 60
+    assert len(DICT_CASES) + len(POLAR_CASES) + len(TEXT_CASES) + len(VALUE_TEXT_CASES) >= 60

@@ -726,6 +726,14 @@ _MIN_POLAR_ROWS = 5
 #: over, so a table that stops short of +10 deg would put stall where the section is attached.
 POLAR_FILE_ALPHA_SPAN_DEG = (-5.0, 10.0)
 _TEXT_SUFFIXES = (".txt", ".dat", ".csv", ".pol")
+#: Physical ranges of a section's coefficients in the attached range
+#: (:data:`POLAR_FILE_ALPHA_SPAN_DEG`): the largest lift coefficient of a single-element airfoil
+#: is about 2 (Abbott & von Doenhoff, Theory of Wing Sections, 1959, appendix IV; the shipped
+#: NACA 0012 table reaches 2.57 at M 0.9 by Prandtl-Glauert), and no drag exceeds that of a
+#: flat plate normal to the flow, 1.98 in 2-D (Hoerner, Fluid-Dynamic Drag, 1965, ch. 3);
+#: beyond 3 and 2 a table is in percent or in another unit.
+POLAR_MAX_ABS_CL = 3.0
+POLAR_MAX_CD = 2.0
 
 
 def check_polar_file_arrays(path, alpha_deg, cl, cd):
@@ -765,6 +773,17 @@ def check_polar_file_arrays(path, alpha_deg, cl, cd):
     if np.any(cd <= 0.0):
         fail(f"cd has the value {float(np.min(cd)):g}; allowed: cd > 0")
     lo, hi = POLAR_FILE_ALPHA_SPAN_DEG
+    attached = (alpha_deg >= lo) & (alpha_deg <= hi)
+    for label, values, limit in (("cl", cl, POLAR_MAX_ABS_CL), ("cd", cd, POLAR_MAX_CD)):
+        beyond = np.abs(values) > limit
+        beyond &= attached.reshape((-1,) + (1,) * (values.ndim - 1))
+        if np.any(beyond):
+            index = tuple(int(i) for i in np.argwhere(beyond)[0])
+            fail(
+                f"{label} = {float(values[index]):g} at alpha {alpha_deg[index[0]]:g} deg (row "
+                f"{index[0]}); allowed in the attached range {lo:g}..{hi:g} deg: |cl| <= "
+                f"{POLAR_MAX_ABS_CL:g}, cd <= {POLAR_MAX_CD:g} (coefficients, not percent)"
+            )
     if alpha_deg[0] > lo or alpha_deg[-1] < hi:
         fail(
             f"alpha spans {alpha_deg[0]:g}..{alpha_deg[-1]:g} deg; allowed: a table that "

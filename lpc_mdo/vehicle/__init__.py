@@ -215,6 +215,11 @@ def read_vehicle_file(path: str | os.PathLike | None = None) -> dict:
         return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise VehicleSpecError(f"vehicle file '{label}' is not valid TOML: {exc}") from exc
+    except RecursionError as exc:  # the parser recurses once per level of nesting
+        raise VehicleSpecError(
+            f"vehicle file '{label}' nests arrays or tables too deeply to read; allowed: the "
+            "nesting of the reference file (arrays of at most 2 levels, tables of 3)"
+        ) from exc
 
 
 def load_vehicle(path: str | os.PathLike | None = None) -> Vehicle:
