@@ -81,15 +81,15 @@ class _Parser(argparse.ArgumentParser):
 # argparse type= validators: each names its argument and raises CLIError.
 
 
-def _integer(flag, lower):
-    """Return an argparse type: an integer >= ``lower``."""
+def _integer(flag, lower, upper=None):
+    """Return an argparse type: an integer in [``lower``, ``upper``]."""
 
     def parse(text):
         try:
             value = int(text)
         except ValueError:
             value = text
-        return check_integer(flag, value, lower=lower, error=CLIError)
+        return check_integer(flag, value, lower=lower, upper=upper, error=CLIError)
 
     parse.__name__ = "integer"
     return parse
@@ -124,6 +124,9 @@ def _existing(flag, what, folder_ok=False):
             raise CLIError(f"'{flag}' = {text!r} does not exist: must be {what}")
         if is_dir and not folder_ok:
             raise CLIError(f"'{flag}' = {text!r} is a folder: must be {what}")
+        if not is_dir and not path.is_file():  # a pipe or device would block the read
+            raise CLIError(f"'{flag}' = {text!r} is not a regular file (a pipe or device): "
+                           f"must be {what}")  # fmt: skip
         if not is_dir and not os.access(path, os.R_OK):
             raise CLIError(f"'{flag}' = {text!r} is not readable: must be {what}")
         return text
@@ -224,7 +227,7 @@ def check_output_folder(flag, path):
         If the path is a file, lies under a regular file, or the folder (or the existing folder
         it would be created in) is not writable.
     """
-    problem = _folder_problem(path)
+    problem = "is empty" if not os.fspath(path).strip() else _folder_problem(path)
     if problem:
         raise CLIError(
             f"'{flag}' = {os.fspath(path)!r} {problem}: must be a folder that exists or can be "
@@ -439,6 +442,7 @@ def _preflight(args):
     check_output_folder("--output-dir", args.output_dir)
     if command == "analyze" and args.n2:
         check_output_file("--n2", args.n2)
+        _not_an_input("--n2", args.n2, _input_files(args))
     if command in ("optimize", "sweep"):
         if args.optimizer is None:  # a given --optimizer was checked by its type
             names = study_plan.SEQUENCE if args.problem == "sequence" else [args.problem]
@@ -453,19 +457,58 @@ def _preflight(args):
         if command == "sweep":
             _check_sweep_values(args)
             if args.mpi:
-                try:  # optional dependency, imported only to see whether it is there
-                    import mpi4py  # noqa: F401
-                except ImportError as err:
-                    raise CLIError(
-                        "'--mpi' needs mpi4py, which is not importable here: must be run with "
-                        "mpi4py installed (pip install 'lpc-mdo[mpi]'), or use --processes N"
-                    ) from err
+                _check_mpi_ranks()
         if args.start_case is not None:
             open_case_file(
                 "--start-case", args.start_case, need_final=True, vehicle=args.vehicle_spec
             )
     if command == "report":
         _check_report_cases(args.cases)
+
+
+def _check_mpi_ranks():
+    """``--mpi`` needs mpi4py and more than one MPI rank (a run under ``mpirun -n N``)."""
+    try:  # optional dependency, imported only here
+        from mpi4py import MPI
+    except (ImportError, RuntimeError) as err:  # RuntimeError: mpi4py without an MPI library
+        raise CLIError(
+            "'--mpi' needs mpi4py, which is not importable here: must be run with "
+            "mpi4py installed (pip install 'lpc-mdo[mpi]'), or use --processes N"
+        ) from err
+    if MPI.COMM_WORLD.size < 2:
+        raise CLIError(
+            "'--mpi' was given outside mpirun (1 MPI rank): must be started as "
+            "'mpirun -n N lpc-mdo sweep ... --mpi' with N >= 2, or use --processes N"
+        )
+
+
+def _input_files(args):
+    """Return the files a command reads: the vehicle file, its polar files, the start case."""
+    files = {}
+    if getattr(args, "vehicle", None):
+        files["--vehicle"] = args.vehicle
+    vehicle = args.vehicle_spec
+    for i, rotor in enumerate((*vehicle.lift_rotors, vehicle.pusher)):
+        if os.path.isfile(rotor.airfoil):  # a polar file (a name is a shipped table)
+            where = f"lift_rotors[{i}]" if i < len(vehicle.lift_rotors) else "pusher"
+            files[f"{where}.airfoil of --vehicle"] = rotor.airfoil
+    if getattr(args, "start_case", None):
+        files["--start-case"] = args.start_case
+    return files
+
+
+def _not_an_input(flag, path, inputs):
+    """Refuse an output path that is one of the command's input files."""
+    for source, given in inputs.items():
+        try:
+            same = os.path.exists(path) and os.path.samefile(path, given)
+        except OSError:
+            same = False
+        if same:
+            raise CLIError(
+                f"'{flag}' = {os.fspath(path)!r} is the file of {source}, which the command "
+                "reads: must be a new file name (lpc-mdo never writes over its inputs)"
+            )
 
 
 def _check_sweep_values(args):
@@ -491,16 +534,6 @@ def _check_sweep_values(args):
                 f"'--values' = {value:g} is out of range for --parameter {args.parameter} "
                 f"({reason})"
             ) from err
-        if args.parameter == "final_soc":  # a limit at or above the start is infeasible
-            initial = args.vehicle_spec.battery.initial_soc
-            check_number(
-                "--values",
-                value,
-                upper=initial,
-                upper_open=True,
-                allowed=f"below the vehicle's battery.initial_soc = {initial:g}",
-                error=CLIError,
-            )
 
 
 def _check_report_cases(cases):
@@ -901,7 +934,11 @@ def build_parser():
     _add_debug(parser, False)
     sub = parser.add_subparsers(dest="command", required=True)
     vehicle_type = _existing("--vehicle", "a vehicle TOML file")
-    positive = {flag: _integer(flag, 1) for flag in ("--max-iter", "--processes")}
+    # 10^6 iterations are days of optimizing; 1024 processes more than any one machine has.
+    positive = {
+        "--max-iter": _integer("--max-iter", 1, upper=1_000_000),
+        "--processes": _integer("--processes", 1, upper=1024),
+    }
 
     def add_command(name, help):
         command = sub.add_parser(name, help=help)

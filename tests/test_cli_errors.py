@@ -95,6 +95,7 @@ def files(tmp_path_factory):
     path("not_toml.toml").write_text("[wing\narea = \n")
     path("binary.toml").write_bytes(b"\xff\xfe\x00\x81" + os.urandom(64))
     path("a_file.txt").write_text("a regular file\n")
+    os.mkfifo(path("pipe.toml"))  # reading it would block: refused as not a regular file
     path("empty_folder").mkdir()
     path("folder_with_empty_run").mkdir()
     shutil.copy(paths["zero_cases.sql"], root / "folder_with_empty_run" / "cases.sql")
@@ -155,6 +156,36 @@ def no_pyoptsparse(monkeypatch):
 FULL = ["optimize", "--problem", "full", "--output-dir", "{out}"]
 SWEEP = ["sweep", "--output-dir", "{out}"]
 MISUSES = [
+    # Outputs over inputs, paths that are no files, numbers beyond any sensible run
+    (
+        "n2_over_the_vehicle_file",
+        [
+            "analyze",
+            "--vehicle",
+            "{vehicle.toml}",
+            "--n2",
+            "{vehicle.toml}",
+            "--output-dir",
+            "{out}",
+        ],
+        "--n2",
+    ),
+    ("output_dir_empty", ["analyze", "--output-dir", ""], "--output-dir"),
+    ("output_dir_blank", ["analyze", "--output-dir", "  "], "--output-dir"),
+    ("max_iter_1e15", [*FULL, "--max-iter", "1000000000000000"], "--max-iter"),
+    ("processes_1e6", [*FULL, "--processes", "1000000"], "--processes"),
+    (
+        "values_energy_density_1e9",
+        [*SWEEP, "--start-case", "{good.sql}", "--parameter", "energy_density", "--values", "1e9"],
+        "--values",
+    ),
+    (
+        "values_payload_above_the_gross_mass",
+        [*SWEEP, "--start-case", "{good.sql}", "--parameter", "payload", "--values", "5000"],
+        "--values",
+    ),
+    ("vehicle_pipe", ["analyze", "--vehicle", "{pipe.toml}", "--output-dir", "{out}"], "--vehicle"),
+    ("mpi_on_one_rank", [*SWEEP, "--start-case", "{good.sql}", "--mpi"], "--mpi"),
     # --start-case files
     ("start_case_corrupted", [*FULL, "--start-case", "{corrupted.sql}"], "--start-case"),
     ("start_case_truncated", [*FULL, "--start-case", "{truncated.sql}"], "--start-case"),
@@ -403,7 +434,16 @@ def test_mpi_without_mpi4py(paths, capsys, monkeypatch):
 
 def test_messages_say_what_is_allowed(paths, capsys, no_pyoptsparse):
     cases = {
-        (*FULL, "--max-iter", "-1"): "'--max-iter' = -1 is out of range: must be >= 1",
+        (*FULL, "--max-iter", "-1"): "'--max-iter' = -1 is out of range: must be in [1, 1e+06]",
+        (
+            "analyze",
+            "--vehicle",
+            "{vehicle.toml}",
+            "--n2",
+            "{vehicle.toml}",
+        ): "is the file of --vehicle, which the command reads",
+        ("analyze", "--vehicle", "{pipe.toml}"): "is not a regular file (a pipe or device)",
+        ("analyze", "--output-dir", ""): "'--output-dir' = '' is empty",
         (*FULL, "--start-case", "{zero_cases.sql}"): "holds no cases",
         (*FULL, "--start-case", "{driver_only.sql}"): "not the problem case 'final'",
         (*FULL, "--start-case", "{vehicle.toml}"): "is a TOML file",
@@ -428,7 +468,9 @@ def test_debug_shows_the_traceback(where, paths, capsys):
     assert main(argv) == 2
     err = capsys.readouterr().err
     assert "Traceback" in err
-    assert err.splitlines()[-1] == "lpc-mdo: error: '--max-iter' = -1 is out of range: must be >= 1"
+    assert err.splitlines()[-1] == (
+        "lpc-mdo: error: '--max-iter' = -1 is out of range: must be in [1, 1e+06]"
+    )
 
 
 def test_a_bug_keeps_its_traceback(paths, capsys, monkeypatch):

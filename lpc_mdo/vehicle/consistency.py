@@ -375,3 +375,20 @@ def _check_wing(wing: Wing) -> Wing:
             )
     taper = wing.sections[-1].tip_chord / wing.sections[0].root_chord
     return dataclasses.replace(wing, taper_ratio=taper)
+
+
+def check_across_parts(vehicle) -> None:
+    """
+    Re-check a vehicle built another way than from a file (a sweep's) across its parts.
+
+    The geometry, mass and energy rules and the mission rules of a vehicle file
+    (:func:`_check_geometry`, :func:`_check_mission`).
+
+    Raises
+    ------
+    VehicleSpecError
+        At the first rule broken, naming the key.
+    """
+    parts = {f.name: getattr(vehicle, f.name) for f in dataclasses.fields(vehicle)}
+    _check_geometry(parts)
+    _check_mission(parts["mission"], parts["conditions"])

@@ -248,6 +248,22 @@ def _cut(text: str) -> str:
     return shown if len(text) <= 60 else f"{shown}... ({len(text)} characters)"
 
 
+def check_field(cls, name: str, value, key: str) -> float:
+    """
+    Check a number against the range of field ``name`` of vehicle part ``cls`` (file units).
+
+    The range a vehicle file's ``key`` has (e.g. ``battery.energy_density_wh_per_kg`` in
+    Wh/kg), for values that reach a vehicle another way (a sweep); returns the stored value.
+
+    Raises
+    ------
+    VehicleSpecError
+        Naming ``key``, the value and the range.
+    """
+    spec = _spec(next(f for f in dataclasses.fields(cls) if f.name == name))
+    return _number(value, spec, key)
+
+
 def _string(value, spec: _Spec, path: str) -> str:
     if not isinstance(value, str):
         raise VehicleSpecError(f"'{path}' must be a string, got {_show(value)}")
