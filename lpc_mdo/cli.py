@@ -745,10 +745,6 @@ def _analyze(args):
     return 0
 
 
-def _silent(message):
-    """Drop a stage's log line (``lpc-mdo optimize --quiet``)."""
-
-
 def _optimize(args):
     out = Path(args.output_dir)
     out.mkdir(parents=True, exist_ok=True)
@@ -768,8 +764,7 @@ def _optimize(args):
         driver_settings=settings,
         trim_first=not args.no_trim,
         progress=not args.quiet,
-        # --quiet: no stage summaries either; the exit code and the case file path remain.
-        log=_silent if args.quiet else print,
+        log=print,  # one line per stage, also with --quiet
         trim_processes=args.processes,
     )
     # Each stage prints a progress line per iteration (and IPOPT its own table unless
@@ -782,9 +777,23 @@ def _optimize(args):
                 optimizer=args.optimizer,
                 full_optimizer=args.optimizer,
                 start_case=args.start_case,
+                keep_going=args.keep_going,
                 **common,
             )
-            return 0 if all(r.success for r in results) else 1
+            failed = [r for r in results if not r.success]
+            if failed:
+                stopped = (
+                    ""
+                    if args.keep_going
+                    else "; the sequence stopped there (--keep-going runs the later stages)"
+                )
+                print(
+                    f"lpc-mdo: {failed[0].name}: {failed[0].exit_status}{stopped} "
+                    f"(case file {failed[0].case_file})",
+                    file=sys.stderr,
+                )
+                return 1
+            return 0
         case_file = out / f"{args.problem}.sql"
         if args.problem == "baseline":  # continuation in alpha (paper eq. 8)
             stage = warm_start.solve_baseline(
@@ -1019,7 +1028,15 @@ def build_parser():
         "--no-trim", action="store_true", help="do not trim the conditions before optimizing"
     )
     optimize.add_argument(
-        "--quiet", action="store_true", help="only the progress lines, not IPOPT's iteration table"
+        "--quiet",
+        action="store_true",
+        help="one line per stage and the reason of a failure, no iteration tables",
+    )
+    optimize.add_argument(
+        "--keep-going",
+        action="store_true",
+        help="run the later stages of the sequence after a stage that did not converge "
+        "(default: stop there, exit status 1)",
     )
     optimize.add_argument(
         "--processes",

@@ -89,9 +89,13 @@ def run_sequence(
     log=print,
     progress=False,
     trim_processes=1,
+    keep_going=False,
 ):
     """
     Solve the stages in order, each warm-started from the previous stage's final case.
+
+    A stage that does not converge stops the sequence (its successor would start from a point
+    that is not that stage's optimum) unless ``keep_going``.
 
     Parameters
     ----------
@@ -128,10 +132,13 @@ def run_sequence(
         Progress lines of the trim and the optimizer (see :func:`solve_stage`).
     trim_processes : int
         Processes of each stage's trim (see :func:`solve_stage`).
+    keep_going : bool
+        Run the later stages after a stage that did not converge.
 
     Returns
     -------
     list of StageResult
+        One per stage run: the last is the failed stage when the sequence stopped.
     """
     os.makedirs(out_dir, exist_ok=True)
     if vehicle is None or isinstance(vehicle, (str, os.PathLike)):
@@ -158,6 +165,9 @@ def run_sequence(
         )
         results.append(result)
         previous = result.case_file
+        if not result.success and not keep_going and name != names[-1]:
+            log(f"{name} did not converge: the sequence stops here")
+            break
     return results
 
 
