@@ -13,6 +13,8 @@ and on stderr, and the command exits with code 1 after writing its case file and
 """
 
 import argparse
+import contextlib
+import errno
 import os
 import sqlite3
 import sys
@@ -47,6 +49,7 @@ from lpc_mdo.post.tables import (
     format_constraint_status,
 )
 from lpc_mdo.progress import interrupt_message
+from lpc_mdo.run_lock import LOCK_NAME, FolderInUse, folder_lock
 from lpc_mdo.sensitivities import sensitivities_from_case, sensitivities_path
 from lpc_mdo.sweep_parameters import PAPER_SWEEPS, SWEEP_PARAMETERS, reference_value, sweep_vehicle
 from lpc_mdo.sweeps import run_sweep
@@ -55,6 +58,8 @@ from lpc_mdo.vehicle.condition_contract import condition_kind
 
 #: Exit code of a user error (as argparse's own), of a bug, and of Ctrl-C.
 EXIT_USER_ERROR, EXIT_BUG, EXIT_INTERRUPTED = 2, 1, 130
+#: A write into the output folder failed (full disk, read-only file system).
+EXIT_WRITE_ERROR = 1
 
 SQLITE_MAGIC = b"SQLite format 3\x00"
 #: Tables every OpenMDAO SqliteRecorder file has.
@@ -367,10 +372,18 @@ def open_case_file(flag, path, need_final=False, vehicle=None, given=None):
         raise fail("holds no cases (the run that wrote it recorded none)")
     if need_final and final is None:
         others = f" (problem cases: {', '.join(problem_cases)})" if problem_cases else ""
-        raise fail(
-            f"holds {len(driver_cases)} driver case(s) but not the problem case 'final'{others}, "
-            "which a start loads (lpc-mdo records it when a run ends)"
-        )
+        if vehicle is None:
+            raise fail(
+                f"holds {len(driver_cases)} driver case(s) but not the problem case "
+                f"'final'{others}, which a report reads (lpc-mdo records it when a run ends)"
+            )
+        try:  # an interrupted run: its last recorded iteration (warm_start.start_point)
+            warm_start.start_point(text, vehicle)
+        except ValueError as err:
+            raise fail(
+                f"holds {len(driver_cases)} driver case(s) but not the problem case "
+                f"'final'{others}, and no iteration to resume from ({err})"
+            ) from err
     if vehicle is not None and final is not None:
         found = 0
         for name, dv in vehicle.design_variables.items():
@@ -1151,17 +1164,20 @@ def main(argv=None):
     -------
     int
         Exit code: 0 success, 1 an optimization that did not converge, an analysis with a
-        condition that did not trim (named on stderr), or a bug (with its traceback), 2 a
-        user error (one line ``lpc-mdo: error: ...``), 130 interrupted.
+        condition that did not trim (named on stderr), a failed write into the output folder
+        (one line) or a bug (with its traceback), 2 a user error (one line ``lpc-mdo: error:
+        ...``), 130 interrupted.
     """
     os.environ.setdefault("OPENMDAO_REPORTS", "0")
     argv = sys.argv[1:] if argv is None else list(argv)
     debug = "--debug" in argv
+    args = None
     try:
         args = build_parser().parse_args(argv)
         debug = args.debug
         _preflight(args)
-        return args.func(args)
+        with _output_folder_lock(args):
+            return args.func(args)
     except KeyboardInterrupt:
         print("lpc-mdo: interrupted", file=sys.stderr)
         return EXIT_INTERRUPTED
@@ -1172,8 +1188,60 @@ def main(argv=None):
             traceback.print_exc()
         print(f"lpc-mdo: error: {_one_line(err)}", file=sys.stderr)
         return EXIT_USER_ERROR
+    except (OSError, sqlite3.Error) as err:
+        problem = _write_failure(err)
+        if problem is None:
+            return _bug(err)
+        if debug:
+            traceback.print_exc()
+        print(f"lpc-mdo: error: {_kept_after_write_failure(args, problem)}", file=sys.stderr)
+        return EXIT_WRITE_ERROR
     except Exception as err:  # not hidden: the traceback, then what to do with it
         return _bug(err)
+
+
+def _write_failure(err):
+    """Say what went wrong when ``err`` is a failed write (full disk, read-only), else None."""
+    text = str(err)
+    if isinstance(err, OSError) and err.errno in (errno.ENOSPC, errno.EDQUOT, errno.EROFS):
+        return err.strerror or os.strerror(err.errno)
+    if isinstance(err, sqlite3.Error) and any(
+        fragment in text for fragment in ("disk is full", "readonly database", "disk I/O error")
+    ):
+        return text
+    return None
+
+
+def _kept_after_write_failure(args, problem):
+    """One line: the folder whose write failed, why, and the case files it keeps."""
+    folder = getattr(args, "output_dir", None) or "."
+    kept = sorted(p.name for p in Path(folder).glob("*.sql")) if Path(folder).is_dir() else []
+    listed = ", ".join(kept) if kept else "none"
+    return (
+        f"writing into '--output-dir' = {folder!r} failed ({problem}); the case files there "
+        f"are kept as they were last written ({listed}): free space (or choose another folder) "
+        "and start again, e.g. from the last one with --start-case"
+    )
+
+
+@contextlib.contextmanager
+def _output_folder_lock(args):
+    """Hold the ``--output-dir`` lock while the command runs (one run per folder)."""
+    if getattr(args, "mpi", False):
+        from mpi4py import MPI  # checked by _preflight
+
+        if MPI.COMM_WORLD.rank != 0:  # the ranks of one sweep share its folder
+            yield
+            return
+    try:
+        with folder_lock(args.output_dir):
+            yield
+    except FolderInUse as err:
+        raise CLIError(
+            f"'--output-dir' = {args.output_dir!r} is in use by another lpc-mdo run (process "
+            f"{err.pid}, lock file {os.path.join(args.output_dir, LOCK_NAME)}): must be a folder "
+            "no running lpc-mdo writes into (wait for it, or choose another folder)"
+        ) from err
 
 
 def _bug(err):

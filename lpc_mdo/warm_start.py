@@ -70,6 +70,51 @@ def magnitude_refs(case, vehicle, floor=1e-6):
     return refs
 
 
+def start_point(path, vehicle):
+    """
+    Return the case a run starts from and how it was chosen.
+
+    The problem case ``'final'`` (what every run records when it ends), or, in a case file
+    without one (a run killed or stopped by two Ctrl-C), its last recorded driver iteration
+    that evaluated without error, if it holds every design-variable array of ``vehicle`` (the
+    driver records them all at each iteration, :func:`lpc_mdo.problems.attach_recorder`).
+
+    Returns
+    -------
+    case : openmdao Case
+    label : str
+        ``"final"`` or, e.g., ``"driver iteration 52 of 53 (no 'final' case: an interrupted
+        run)"``.
+
+    Raises
+    ------
+    ValueError
+        When the file holds neither, saying what it holds.
+    """
+    reader = om.CaseReader(os.fspath(path))
+    if "final" in reader.list_cases("problem", recurse=False, out_stream=None):
+        return reader.get_case("final"), "final"
+    names = reader.list_cases("driver", recurse=False, out_stream=None)
+    for k in range(len(names) - 1, -1, -1):
+        case = reader.get_case(names[k])
+        if not case.success:
+            continue
+        missing = [n for n in vehicle.design_variables if n not in case.outputs]
+        if missing:
+            raise ValueError(
+                f"{os.fspath(path)!r} holds no 'final' case, and its last driver case lacks "
+                f"design variables {missing[:3]}{' ...' if len(missing) > 3 else ''} (a run "
+                "recorded before lpc-mdo kept every design variable at each iteration)"
+            )
+        return case, (
+            f"driver iteration {k + 1} of {len(names)} (no 'final' case: an interrupted run)"
+        )
+    raise ValueError(
+        f"{os.fspath(path)!r} holds no 'final' case and no driver iteration that evaluated "
+        f"without error ({len(names)} driver case(s))"
+    )
+
+
 def load_design_variables(prob, case, vehicle):
     """Set every design-variable array of the vehicle file from a recorded case."""
     copy_design_variables(case, prob, vehicle)
@@ -395,7 +440,11 @@ def solve_stage(
     optimizer = optimizer or study_plan.default_optimizer(name)
     # Absolute: OpenMDAO puts a bare file name under the problem's {name}_out folder.
     case_file = os.path.abspath(case_file)
-    case = om.CaseReader(start_case).get_case("final") if start_case is not None else None
+    case = None
+    if start_case is not None:
+        case, label = start_point(start_case, vehicle)
+        if label != "final":
+            log(f"{name}: starts from {start_case}, {label}")
     refs = magnitude_refs(case, vehicle) if (rescale and case is not None) else None
     prob = build_problem(
         name,

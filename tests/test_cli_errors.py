@@ -543,3 +543,49 @@ def test_entry_point_in_a_process(paths):
         timeout=120,
     )
     _assert_one_line_error(run.returncode, run, "--processes")
+
+
+# --- one run per output folder ----------------------------------------------------------------
+
+
+def test_a_folder_in_use_is_refused_and_a_stale_lock_taken_over(paths, capsys, tmp_path):
+    from lpc_mdo.run_lock import LOCK_NAME
+
+    out = Path(paths["out"])
+    out.mkdir()
+    running = subprocess.Popen([sys.executable, "-c", "import time; time.sleep(60)"])
+    try:
+        (out / LOCK_NAME).write_text(f"{running.pid}\n")
+        rc = main(["analyze", "--output-dir", str(out)])
+        _assert_one_line_error(rc, capsys.readouterr(), "--output-dir")
+    finally:
+        running.kill()
+        running.wait()
+    # The same lock once its process has ended: stale, taken over and removed at the end.
+    assert main(["analyze", "--output-dir", str(out)]) == 0
+    assert not (out / LOCK_NAME).exists()
+
+
+@pytest.mark.parametrize(
+    "error",
+    [
+        sqlite3.OperationalError("database or disk is full"),
+        OSError(28, "No space left on device"),
+    ],
+    ids=["sqlite_disk_full", "no_space_left"],
+)
+def test_a_failed_write_is_one_line_and_keeps_the_case_files(paths, capsys, monkeypatch, error):
+    out = Path(paths["out"])
+
+    def fill_the_disk(args):
+        out.mkdir(exist_ok=True)
+        (out / "subproblem_1.sql").write_bytes(b"an earlier stage")
+        raise error
+
+    monkeypatch.setattr(cli, "_optimize", fill_the_disk)
+    assert main([*_format(FULL, paths)]) == 1
+    err = capsys.readouterr().err
+    assert len(err.strip().splitlines()) == 1, err
+    assert f"writing into '--output-dir' = '{out}' failed" in err
+    assert "kept as they were last written (subproblem_1.sql)" in err
+    assert (out / "subproblem_1.sql").read_bytes() == b"an earlier stage"
