@@ -45,6 +45,7 @@ from lpc_mdo.post.stall import format_stall_speed_check
 from lpc_mdo.post.tables import (
     DEFAULT_TOL,
     constraint_rows,
+    constraint_summary,
     constraint_table,
     format_constraint_status,
 )
@@ -585,9 +586,10 @@ def _analyze_header(analysis, args):
         [
             f"lpc-mdo analysis of '{vehicle.name}' ({state})",
             f"  {len(prob.model.condition_names)} design conditions, "
-            f"{sum(m['size'] for m in dvs.values())} design variables, "
-            f"{sum(m['size'] for m in cons.values() if not m['linear'])} constraints, "
-            f"{sum(m['size'] for m in cons.values() if m['linear'])} linear bounds",
+            f"{sum(m['size'] for m in dvs.values())} design variables, {len(cons)} "
+            f"constraints of {sum(m['size'] for m in cons.values())} rows "
+            f"({sum(m['size'] for m in cons.values() if not m['linear'])} nonlinear, "
+            f"{sum(m['size'] for m in cons.values() if m['linear'])} linear bounds)",
             f"  wing: S = {prob.get_val('wing_area')[0]:.2f} m^2, "
             f"AR = {prob.get_val('wing_aspect_ratio')[0]:.2f}, "
             f"span = {prob.get_val('wing_span')[0]:.2f} m; fuselage "
@@ -640,8 +642,16 @@ def _analyze_trim_variables(analysis, args):
     return f"  {title}:\n" + format_trim_variables(analysis.prob)
 
 
+def _constraint_rows(analysis, args):
+    """Return the constraint rows of the analysed case (read once per command)."""
+    if getattr(args, "constraint_rows", None) is None:
+        tols = trim_tolerances(analysis.prob)
+        args.constraint_rows = constraint_rows(str(args.case_file), case="final", tols=tols)
+    return args.constraint_rows
+
+
 def _analyze_constraints(analysis, args):
-    rows = constraint_rows(str(args.case_file), case="final", tols=trim_tolerances(analysis.prob))
+    rows = _constraint_rows(analysis, args)
     return (
         f"  constraints (status band: {DEFAULT_TOL:g} of the limit or scaling reference; trim "
         f"rows {TRIM_TOLERANCE:g}, 0.1 % of the weight):\n" + format_constraint_status(rows)
@@ -667,6 +677,7 @@ def _analyze_summary(analysis, args):
         lines.append(f"  trim FAILED for {failed}: the values above are not a trimmed state")
     else:
         lines.append(f"  trim: all {len(analysis.trim.conditions)} conditions trimmed")
+    lines.append(constraint_summary(_constraint_rows(analysis, args)))
     return "\n".join(lines)
 
 
