@@ -71,6 +71,72 @@ def _both(*mutators):
     return mutate
 
 
+def _airframe_cases():
+    """Families of parts off the airframe: each mass item, surface, rotor and boom moved out."""
+    cases = []
+    far = {"ahead of the nose": (0, 3.0), "behind the tail": (0, -15.0)}
+    far_z = {"far above": (2, -8.0), "far below": (2, 8.0)}
+    items = {
+        "battery.cg": ("battery", "cg"),
+        "masses.payload_cg": ("masses", "payload_cg"),
+        "masses.systems_cg": ("masses", "systems_cg"),
+        "masses.other_cg": ("masses", "other_cg"),
+        "masses.power_electronics_cg": ("masses", "power_electronics_cg"),
+    }
+    for key, (table, field) in items.items():
+        base = REFERENCE_DATA[table][field]
+        for where, (axis, value) in {**far, **far_z, "beyond the wing tip": (1, 9.0)}.items():
+            moved = list(base)
+            moved[axis] = value
+            fragment = {0: "nose to tail end", 1: "half span", 2: "must lie at z in"}[axis]
+            cases.append((f"{key} {where}", _set(table, field, moved), key, fragment))
+    for surface in ("wing", "horizontal_tail", "vertical_tail"):
+        base = REFERENCE_DATA[surface]["root_leading_edge"]
+        for where, (axis, value) in {**far, **far_z, "off the symmetry plane": (1, 0.5)}.items():
+            moved = list(base)
+            moved[axis] = value
+            fragment = {0: "nose to tail end", 1: "symmetry plane", 2: "must lie at z in"}[axis]
+            key = f"{surface}.root_leading_edge"
+            cases.append(
+                (f"{key} {where}", _set(surface, "root_leading_edge", moved), key, fragment)
+            )
+    for i, j in ((0, 6), (1, 7), (2, 4), (3, 5)):  # each lift-rotor pair, mirrored
+        hub = REFERENCE_DATA["lift_rotors"][i]["hub_position"]
+        for where, moved, fragment in (
+            ("beyond the wing tip", [hub[0], -12.0, hub[2]], "half span"),
+            ("ahead of the nose", [4.0, hub[1], hub[2]], "nose to tail end"),
+            ("behind the tail", [-14.0, hub[1], hub[2]], "nose to tail end"),
+        ):
+            key = f"lift_rotors[{i}].hub_position"
+            cases.append(
+                (f"{key} {where}", _mirror_pair(i, j, "hub_position", moved), key, fragment)
+            )
+    for k in range(8):  # each boom attach point far from its rotor
+        point = list(REFERENCE_DATA["booms"]["attach_points"][k])
+        point[1] = -point[1] if abs(point[1]) > 1.0 else point[1] + 3.0
+        key = f"booms.attach_points[{k}]"
+        cases.append((f"{key} away from its rotor", _set("booms", "attach_points", k, point), key,
+                      "within a rotor radius"))  # fmt: skip
+    for i, c in enumerate(REFERENCE_DATA["conditions"]):  # each mission segment of 0 s
+        if c["energy_weight"] > 0:
+            key = f"conditions[{i}].duration"
+            cases.append((f"{c['name']} of 0 s", _set("conditions", i, "duration", 0.0), key,
+                          "must last > 0 s"))  # fmt: skip
+    for i in range(8):  # each lift rotor's blades wider than half the radius
+        rotors = REFERENCE_DATA["lift_rotors"]
+        partner = next(j for j, r in enumerate(rotors) if r["pair"] == rotors[i]["pair"] and j != i)
+        wide = [0.9, 0.8, 0.7, 0.6]
+        first = min(i, partner)
+        cases.append((
+            f"lift_rotors[{i}] blades wider than half the radius",
+            _both(_set("lift_rotors", i, "chord_cp", wide),
+                  _set("lift_rotors", partner, "chord_cp", wide)),
+            f"lift_rotors[{first}].chord_cp",
+            "slender blade",
+        ))  # fmt: skip
+    return cases
+
+
 def _hub(i):
     return REFERENCE_DATA["lift_rotors"][i]["hub_position"]
 
@@ -706,6 +772,7 @@ DICT_CASES = [
         "conditions[1].duration",
         "must last > 0 s",
     ),
+    *_airframe_cases(),
     (
         "no state-of-charge window",
         _both(_set("battery", "initial_soc", 0.2000001), _set("constraints", "min_final_soc", 0.2)),
