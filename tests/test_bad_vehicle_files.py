@@ -773,6 +773,21 @@ DICT_CASES = [
         "must last > 0 s",
     ),
     *_airframe_cases(),
+    *[
+        (
+            f"design-variable ref {ref:g}",
+            _set("design_variables", "wing_area", "ref", ref),
+            "design_variables.wing_area.ref",
+            "must be within a factor 1000 of the bounds' magnitude",
+        )
+        for ref in (1e-300, 1e-3, 1e5, 1e300)
+    ],
+    (
+        "rotor radius lower bound 0",
+        lambda d: d["design_variables"]["rotor_radius"].update(lower=[0.0, 1.2, 1.2, 1.2, 0.959]),
+        "design_variables.rotor_radius.lower[0]",
+        "must be > 0",
+    ),
     (
         "no state-of-charge window",
         _both(_set("battery", "initial_soc", 0.2000001), _set("constraints", "min_final_soc", 0.2)),

@@ -37,6 +37,12 @@ from lpc_mdo.vehicle.schema import (
 # Design variables
 
 
+#: Largest factor between a design variable's ref and the magnitude of its bounds.
+REF_RANGE = 1000.0
+#: Units of design variables that are positive by nature (lengths, areas, masses, currents).
+POSITIVE_UNITS = ("m", "m**2", "kg", "A")
+
+
 @dataclass(frozen=True)
 class _DVSpec:
     """What the vehicle fixes about a design variable: units, shape and any linked initial value."""
@@ -169,6 +175,23 @@ def _read_design_variable(data, spec: _DVSpec, path: str) -> DesignVariable:
                         f"values need units = 'deg')"
                     )
     ref = _number(data["ref"], _Spec(units=units, gt=0), f"{path}.ref") * scale
+    magnitude = max(abs(x) for x in (*lower, *upper))
+    if magnitude > 0 and not magnitude / REF_RANGE <= ref <= magnitude * REF_RANGE:
+        raise VehicleSpecError(
+            f"'{path}.ref' = {_fmt(ref / scale)} is out of range: must be within a factor "
+            f"{REF_RANGE:g} of the bounds' magnitude {_fmt(magnitude / scale)} ({units}), i.e. in "
+            f"[{_fmt(magnitude / scale / REF_RANGE)}, {_fmt(magnitude / scale * REF_RANGE)}] "
+            "(the optimizer sees value/ref, which should be of order one)"
+        )
+    if spec.units in POSITIVE_UNITS:
+        for k, lo in enumerate(lower):
+            if lo <= 0.0:
+                raise VehicleSpecError(
+                    f"'{path}.lower"
+                    + "".join(f"[{i}]" for i in np.unravel_index(k, spec.shape))
+                    + f"' = {_fmt(lo)} is out of range: must be > 0 ({units}; a length, area, "
+                    "mass or current is positive)"
+                )
 
     def entry(key, k):
         if len(initial) == 1:
