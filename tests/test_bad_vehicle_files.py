@@ -783,6 +783,12 @@ DICT_CASES = [
         for ref in (1e-300, 1e-3, 1e5, 1e300)
     ],
     (
+        "climb sharing the cruise prefix, its own tables left",
+        _set("conditions", 6, "design_variable_prefix", "cruise"),
+        "design_variables.climb_pusher_rpm",
+        "has design_variable_prefix = 'cruise', so its design variables are the 'cruise_*'",
+    ),
+    (
         "rotor radius lower bound 0",
         lambda d: d["design_variables"]["rotor_radius"].update(lower=[0.0, 1.2, 1.2, 1.2, 0.959]),
         "design_variables.rotor_radius.lower[0]",

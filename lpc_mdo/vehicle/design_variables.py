@@ -132,12 +132,34 @@ def _dv_values(value, shape: tuple[int, ...], path: str) -> tuple[float, ...]:
 
 def _read_design_variables(data, parts: dict) -> dict[str, DesignVariable]:
     specs = _design_variable_specs(parts)
+    if isinstance(data, Mapping):
+        _check_shared_prefixes(data, specs, parts["conditions"])
     _check_keys(data, dict.fromkeys(specs, "design-variable table"), "design_variables")
     # In the file's order (the order of the model's design-variable outputs).
     return _ReadOnlyDict(
         (name, _read_design_variable(data[name], specs[name], f"design_variables.{name}"))
         for name in data
     )
+
+
+def _check_shared_prefixes(data, specs, conditions) -> None:
+    """Name a table left over by a condition that shares another's ``design_variable_prefix``.
+
+    Conditions with one prefix share one set of design variables (``{prefix}_*``, e.g. the five
+    transition points); a table under the condition's own name is then not read.
+    """
+    for i, c in enumerate(conditions):
+        if c.design_variable_prefix == c.name:
+            continue
+        for key in data:
+            if key not in specs and key.startswith(f"{c.name}_"):
+                raise VehicleSpecError(
+                    f"unknown key 'design_variables.{key}': 'conditions[{i}]' ({c.name!r}) has "
+                    f"design_variable_prefix = {c.design_variable_prefix!r}, so its design "
+                    f"variables are the '{c.design_variable_prefix}_*' tables (shared with the "
+                    "conditions of that prefix); allowed: remove the "
+                    f"'{c.name}_*' tables, or give {c.name!r} its own prefix"
+                )
 
 
 def _read_design_variable(data, spec: _DVSpec, path: str) -> DesignVariable:
