@@ -53,7 +53,7 @@ from lpc_mdo.progress import interrupt_message
 from lpc_mdo.run_lock import LOCK_NAME, FolderInUse, folder_lock
 from lpc_mdo.sensitivities import sensitivities_from_case, sensitivities_path
 from lpc_mdo.sweep_parameters import PAPER_SWEEPS, SWEEP_PARAMETERS, reference_value, sweep_vehicle
-from lpc_mdo.sweeps import run_sweep
+from lpc_mdo.sweeps import point_case_file, run_sweep
 from lpc_mdo.vehicle import VehicleSpecError, load_vehicle
 from lpc_mdo.vehicle.condition_contract import condition_kind
 
@@ -457,6 +457,8 @@ def _preflight(args):
     if command == "analyze" and args.n2:
         check_output_file("--n2", args.n2)
         _not_an_input("--n2", args.n2, _input_files(args))
+    for path in _case_files_written(args):
+        _not_an_input("--output-dir", path, _input_files(args))
     if command in ("optimize", "sweep"):
         if args.optimizer is None:  # a given --optimizer was checked by its type
             names = study_plan.SEQUENCE if args.problem == "sequence" else [args.problem]
@@ -509,6 +511,26 @@ def _input_files(args):
     if getattr(args, "start_case", None):
         files["--start-case"] = args.start_case
     return files
+
+
+def _case_files_written(args):
+    """Return the case files a command writes into its output folder (checked against inputs)."""
+    out = Path(args.output_dir)
+    if args.command == "analyze":
+        return [out / "cases.sql"]
+    if args.command == "optimize":
+        names = study_plan.SEQUENCE if args.problem == "sequence" else [args.problem]
+        return [out / f"{name}.sql" for name in names]
+    if args.command == "sweep":
+        parameters = list(PAPER_SWEEPS) if args.parameter == "all" else [args.parameter]
+        margins = {"on": (True,), "off": (False,), "both": (True, False)}[args.static_margin]
+        return [
+            Path(point_case_file(str(out), parameter, value, margin))
+            for parameter in parameters
+            for value in (args.values or SWEEP_PARAMETERS[parameter][2] or ())
+            for margin in margins
+        ]
+    return []
 
 
 def _not_an_input(flag, path, inputs):

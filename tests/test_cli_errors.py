@@ -101,6 +101,9 @@ def files(tmp_path_factory):
     shutil.copy(paths["zero_cases.sql"], root / "folder_with_empty_run" / "cases.sql")
     path("good_folder").mkdir()
     shutil.copy(paths["good.sql"], root / "good_folder" / "cases.sql")
+    (root / "run").mkdir()  # a finished run: its full.sql is a start case for the next
+    shutil.copy(paths["good.sql"], root / "run" / "full.sql")
+    paths["run"], paths["run_full.sql"] = str(root / "run"), str(root / "run" / "full.sql")
     paths["missing"] = str(root / "missing" / "nothing.sql")
     paths["root"] = str(root)
     return paths
@@ -169,6 +172,19 @@ MISUSES = [
             "{out}",
         ],
         "--n2",
+    ),
+    (
+        "output_over_the_start_case",
+        [
+            "optimize",
+            "--problem",
+            "full",
+            "--start-case",
+            "{run_full.sql}",
+            "--output-dir",
+            "{run}",
+        ],
+        "--output-dir",
     ),
     ("output_dir_empty", ["analyze", "--output-dir", ""], "--output-dir"),
     ("output_dir_blank", ["analyze", "--output-dir", "  "], "--output-dir"),
