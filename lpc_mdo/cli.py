@@ -797,11 +797,8 @@ def _optimize(args):
     settings = {}
     if args.max_iter is not None:
         settings["max_iter"] = args.max_iter
-    if args.tol is not None:
-        # A tolerance asked for is the one to meet: no stop at an acceptable point before it
-        # (a polish from a full.sql stopped after 16 iterations at the acceptable point).
-        settings["tol"] = args.tol
-        settings["acceptable_iter"] = 0
+    if args.tol is not None:  # the tolerance asked for is the one to meet
+        settings.update(drivers.tolerance_settings(args.tol))
     if args.quiet:
         settings["print_level"] = 0
     common = dict(
