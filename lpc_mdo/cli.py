@@ -47,7 +47,9 @@ from lpc_mdo.post.tables import (
     constraint_rows,
     constraint_summary,
     constraint_table,
+    entry_status,
     format_constraint_status,
+    status_word,
 )
 from lpc_mdo.progress import interrupt_message
 from lpc_mdo.run_lock import LOCK_NAME, FolderInUse, folder_lock
@@ -632,11 +634,13 @@ def _analyze_conditions(analysis, args):
     trim = analysis.trim.conditions if analysis.trim else {}
     lines = [
         f"  {'condition':<14}{'power [kW]':>12}{'u_dot':>9}{'w_dot':>9}{'q_dot':>9}"
-        f"{'V margin':>10}{'trim residual':>15}   (accelerations in m/s^2, rad/s^2; structural "
+        f"{'V margin':>21}{'trim residual':>15}   (accelerations in m/s^2, rad/s^2; structural "
         "conditions show their load factor n instead of a power; V margin: the lowest motor "
-        "voltage margin 1 - |U|/V_lim, below 0 the motor needs more than the voltage limit; "
-        "trim residual: the largest scaled trim row, 1e-3 = 0.1 % of the weight)"
+        "voltage margin 1 - |U|/V_lim and its status against constraints.min_voltage_margin, "
+        "violated: the motor needs more than the voltage limit; trim residual: the largest "
+        "scaled trim row, 1e-3 = 0.1 % of the weight)"
     ]
+    floor = vehicle.constraints.min_voltage_margin
     for condition in prob.model.conditions:
         name = condition.name
         lin = prob.get_val(f"{name}.linear_acceleration")[0]
@@ -649,7 +653,11 @@ def _analyze_conditions(analysis, args):
             power = f"{f'n = {factor:+g}' if factor is not None else '-':>12}"
         motors = kind.motor_sets(vehicle, condition)
         margins = [prob.get_val(f"{name}.{prefix}_motor_voltage_margin").min() for prefix in motors]
-        margin = f"{min(margins):>10.2f}" if margins else f"{'-':>10}"
+        if margins:
+            _, active, violated = entry_status([min(margins)], lower=[floor])
+            margin = f"{min(margins):>10.3f} {status_word(active, violated):>10}"
+        else:
+            margin = f"{'-':>21}"
         residual = f"{trim[name].max_residual:>15.2e}" if name in trim else f"{'-':>15}"
         if name in analysis.failed:
             residual += "  NOT TRIMMED"

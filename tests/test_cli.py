@@ -184,6 +184,8 @@ def test_analyze_no_trim_says_so_and_reports_voltage_margins(tmp_path, capsys):
     assert "trim: not trimmed (--no-trim)" in first
     assert "trim variables (initial values, not trimmed)" in first
     assert "V margin" in first and "replacing" not in first
+    # Each condition's lowest voltage margin with its status, as any constraint has.
+    assert re.search(r"hover +[\d.]+ .* -?\d\.\d{3} +(satisfied|active|violated)", first)
     case = om.CaseReader(str(out / "cases.sql")).get_case("final")
     thrust = case.get_val("hover.lift_thrust", units="N").sum()
     # Untrimmed: the initial rotor speeds lift 103.5 % of the weight (measured 2026-12-04).
