@@ -52,7 +52,7 @@ from lpc_mdo.post.tables import (
     status_word,
 )
 from lpc_mdo.progress import interrupt_message
-from lpc_mdo.run_lock import LOCK_NAME, FolderInUse, folder_lock
+from lpc_mdo.run_lock import LOCK_NAME, FolderInUse, LockFailed, folder_lock
 from lpc_mdo.sensitivities import sensitivities_from_case, sensitivities_path
 from lpc_mdo.sweep_parameters import PAPER_SWEEPS, SWEEP_PARAMETERS, reference_value, sweep_vehicle
 from lpc_mdo.sweeps import point_case_file, run_sweep
@@ -235,7 +235,13 @@ def check_output_folder(flag, path):
         If the path is a file, lies under a regular file, or the folder (or the existing folder
         it would be created in) is not writable.
     """
-    problem = "is empty" if not os.fspath(path).strip() else _folder_problem(path)
+    text = os.fspath(path)
+    if not text.strip():
+        problem = "is empty"
+    elif os.path.islink(text) and not os.path.exists(text):
+        problem = f"is a link to '{os.readlink(text)}', which does not exist"
+    else:
+        problem = _folder_problem(path)
     if problem:
         raise CLIError(
             f"'{flag}' = {os.fspath(path)!r} {problem}: must be a folder that exists or can be "
@@ -456,9 +462,8 @@ def _preflight(args):
     command = args.command
     args.vehicle_spec = load_vehicle_argument("--vehicle", args.vehicle)
     check_output_folder("--output-dir", args.output_dir)
-    if command == "analyze" and args.n2:
-        check_output_file("--n2", args.n2)
-        _not_an_input("--n2", args.n2, _input_files(args))
+    if command == "analyze" and args.n2 is not None:
+        _check_n2_file(args)
     for path in _case_files_written(args):
         _not_an_input("--output-dir", path, _input_files(args))
     if command in ("optimize", "sweep"):
@@ -515,11 +520,28 @@ def _input_files(args):
     return files
 
 
+def _check_n2_file(args):
+    """``--n2``: a new HTML file, none of the command's inputs or its other outputs."""
+    text = args.n2
+    if not text.strip() or text.endswith(("/", os.sep)):
+        why = "is empty" if not text.strip() else "names a folder"
+        raise CLIError(f"'--n2' = {text!r} {why}: must be a file name, e.g. n2.html")
+    check_output_file("--n2", text)
+    _not_an_input("--n2", text, _input_files(args))
+    target = Path(text).absolute()
+    for written in _case_files_written(args):
+        if target == written.absolute():
+            raise CLIError(
+                f"'--n2' = {text!r} is the file {written.name} the command writes into "
+                "--output-dir: must be another file name, e.g. n2.html"
+            )
+
+
 def _case_files_written(args):
     """Return the case files a command writes into its output folder (checked against inputs)."""
     out = Path(args.output_dir)
     if args.command == "analyze":
-        return [out / "cases.sql"]
+        return [out / name for name in ("cases.sql", "constraints.md", "constraints.csv")]
     if args.command == "optimize":
         names = study_plan.SEQUENCE if args.problem == "sequence" else [args.problem]
         return [out / f"{name}.sql" for name in names]
@@ -1179,10 +1201,14 @@ def _user_error(err):
         return True
     if not isinstance(err, ValueError) or err.__traceback__ is None:
         return False
-    # A ValueError raised by lpc_mdo's own checks (which name the field), not by a library.
-    package = Path(__file__).resolve().parent
-    raised_in = Path(traceback.extract_tb(err.__traceback__)[-1].filename).resolve()
-    return package in raised_in.parents
+    # A ValueError raised by lpc_mdo's own checks (which name the field), not by a library:
+    # by the module of the frame that raised it (the components and groups are lpc_mdo
+    # subpackages wherever their files are installed).
+    tb = err.__traceback__
+    while tb.tb_next is not None:
+        tb = tb.tb_next
+    module = tb.tb_frame.f_globals.get("__name__", "")
+    return module == "lpc_mdo" or module.startswith("lpc_mdo.")
 
 
 def _one_line(err):
@@ -1274,6 +1300,11 @@ def _output_folder_lock(args):
     try:
         with folder_lock(args.output_dir):
             yield
+    except LockFailed as err:
+        raise CLIError(
+            f"'--output-dir' = {args.output_dir!r}: its lock file cannot be created "
+            f"({err.path}: {err.reason}): must be a folder lpc-mdo can write into"
+        ) from err
     except FolderInUse as err:
         raise CLIError(
             f"'--output-dir' = {args.output_dir!r} is in use by another lpc-mdo run (process "

@@ -16,6 +16,14 @@ from pathlib import Path
 LOCK_NAME = ".lpc-mdo.lock"
 
 
+class LockFailed(RuntimeError):
+    """The lock file of an output folder cannot be created (``reason`` says why)."""
+
+    def __init__(self, path, reason):
+        super().__init__(f"{path}: {reason}")
+        self.path, self.reason = path, reason
+
+
 class FolderInUse(RuntimeError):
     """The output folder is locked by another running process; ``pid`` is that process."""
 
@@ -25,14 +33,23 @@ class FolderInUse(RuntimeError):
 
 
 def _running(pid):
-    """Return whether a process with this id runs (on this machine)."""
+    """
+    Return whether an lpc-mdo process with this id runs (on this machine).
+
+    Where the process table can be read (``/proc``), a process whose command line does not
+    mention lpc-mdo (a process id reused since the lock was written) does not count.
+    """
     try:
         os.kill(pid, 0)
     except ProcessLookupError:
         return False
     except PermissionError:  # it runs, under another user
-        return True
-    return True
+        pass
+    try:
+        command = Path(f"/proc/{pid}/cmdline").read_bytes()
+    except OSError:
+        return True  # no process table to read: a running process is taken as the owner
+    return b"lpc" in command
 
 
 def _owner(path):
@@ -54,8 +71,13 @@ def folder_lock(folder):
         When another running process holds it.
     """
     folder = Path(folder)
-    folder.mkdir(parents=True, exist_ok=True)
     path = folder / LOCK_NAME
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as err:
+        raise LockFailed(folder, err.strerror or str(err)) from err
+    if path.is_dir() or path.is_symlink():
+        raise LockFailed(path, "a folder or link of the lock file's name is in the way")
     for _ in range(3):  # a stale lock is removed once; a race with another starter retried
         try:
             fd = os.open(path, os.O_CREAT | os.O_EXCL | os.O_WRONLY, 0o644)
@@ -66,6 +88,8 @@ def folder_lock(folder):
             with contextlib.suppress(FileNotFoundError):
                 path.unlink()  # stale: its process has ended
             continue
+        except OSError as err:
+            raise LockFailed(path, err.strerror or str(err)) from err
         with os.fdopen(fd, "w", encoding="ascii") as fh:
             fh.write(f"{os.getpid()}\n")
         break

@@ -789,6 +789,39 @@ DICT_CASES = [
         "has design_variable_prefix = 'cruise', so its design variables are the 'cruise_*'",
     ),
     (
+        "battery mass bounds swapped",
+        lambda d: d["design_variables"]["battery_mass"].update(lower=1400.0, upper=400.0),
+        "design_variables.battery_mass.lower",
+        "the bounds are swapped?",
+    ),
+    *[
+        (
+            f"condition named {name!r}",
+            _set("conditions", 6, "name", name),
+            "conditions[6].name",
+            "must be an ASCII identifier that does not start with '_'",
+        )
+        for name in ("mission", "_climb", "ho\u00f6ver", "lift_margin")
+    ],
+    (
+        "motor slots that do not fit the poles",
+        _set("motor", "num_slots", 35),
+        "motor",
+        "'num_slots' = 35 is not allowed",
+    ),
+    (
+        "a wing box without packaged sections",
+        _set("wing_box", "front_spar", 0.15),
+        "wing_box.front_spar",
+        "has no packaged section properties",
+    ),
+    (
+        "a wing airfoil without a wing-box section",
+        _set("wing", "airfoil", "naca0015"),
+        "wing.airfoil",
+        "has no packaged section properties",
+    ),
+    (
         "rotor radius lower bound 0",
         lambda d: d["design_variables"]["rotor_radius"].update(lower=[0.0, 1.2, 1.2, 1.2, 0.959]),
         "design_variables.rotor_radius.lower[0]",

@@ -186,6 +186,19 @@ MISUSES = [
         ],
         "--output-dir",
     ),
+    ("n2_empty", ["analyze", "--output-dir", "{out}", "--n2", ""], "--n2"),
+    ("n2_a_folder_name", ["analyze", "--output-dir", "{out}", "--n2", "{out}/n2dir/"], "--n2"),
+    (
+        "n2_over_the_case_file",
+        ["analyze", "--output-dir", "{out}", "--n2", "{out}/cases.sql"],
+        "--n2",
+    ),
+    (
+        "n2_over_the_constraint_table",
+        ["analyze", "--output-dir", "{out}", "--n2", "{out}/constraints.md"],
+        "--n2",
+    ),
+    ("n2_is_the_output_dir", ["analyze", "--output-dir", "{out}", "--n2", "{root}"], "--n2"),
     ("output_dir_empty", ["analyze", "--output-dir", ""], "--output-dir"),
     ("output_dir_blank", ["analyze", "--output-dir", "  "], "--output-dir"),
     ("max_iter_1e15", [*FULL, "--max-iter", "1000000000000000"], "--max-iter"),
@@ -569,7 +582,8 @@ def test_a_folder_in_use_is_refused_and_a_stale_lock_taken_over(paths, capsys, t
 
     out = Path(paths["out"])
     out.mkdir()
-    running = subprocess.Popen([sys.executable, "-c", "import time; time.sleep(60)"])
+    # A running lpc-mdo (its command line names it) holds the folder.
+    running = subprocess.Popen([sys.executable, "-c", "import time; time.sleep(60)  # lpc-mdo"])
     try:
         (out / LOCK_NAME).write_text(f"{running.pid}\n")
         rc = main(["analyze", "--output-dir", str(out)])
@@ -605,3 +619,19 @@ def test_a_failed_write_is_one_line_and_keeps_the_case_files(paths, capsys, monk
     assert f"writing into '--output-dir' = '{out}' failed" in err
     assert "kept as they were last written (subproblem_1.sql)" in err
     assert (out / "subproblem_1.sql").read_bytes() == b"an earlier stage"
+
+
+def test_a_lock_of_another_program_or_in_the_way(paths, capsys, tmp_path):
+    from lpc_mdo.run_lock import LOCK_NAME
+
+    out = Path(paths["out"])
+    out.mkdir()
+    (out / LOCK_NAME).write_text("1\n")  # pid 1 runs, but it is not lpc-mdo: a stale lock
+    assert main(["analyze", "--output-dir", str(out)]) == 0
+    (out / LOCK_NAME).mkdir()  # a folder of the lock file's name
+    rc = main(["analyze", "--output-dir", str(out)])
+    _assert_one_line_error(rc, capsys.readouterr(), "--output-dir")
+    dangling = tmp_path / "link"
+    dangling.symlink_to(tmp_path / "nowhere")
+    rc = main(["analyze", "--output-dir", str(dangling)])
+    _assert_one_line_error(rc, capsys.readouterr(), "--output-dir")

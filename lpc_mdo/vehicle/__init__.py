@@ -284,12 +284,6 @@ def vehicle_from_dict(data: Mapping) -> Vehicle:
     _check_pusher(values["pusher"])
     _check_geometry(values)
     _check_conditions(values)
-    wing_box = values["wing_box"]
-    if wing_box.rear_spar <= wing_box.front_spar:
-        raise VehicleSpecError(
-            f"'wing_box.rear_spar' = {wing_box.rear_spar!r} is out of range: must be > "
-            f"'wing_box.front_spar' = {wing_box.front_spar!r}"
-        )
     _check_mission(values["mission"], values["conditions"])
     values["design_variables"] = _read_design_variables(data["design_variables"], values)
     return Vehicle(**values)

@@ -11,6 +11,8 @@ import dataclasses
 
 import numpy as np
 
+from lpc_mdo.components.motor.parameters import MotorParameters
+from lpc_mdo.components.structures.wing_box_geometry import WING_BOX_SECTIONS
 from lpc_mdo.components.weights.item_placement import (
     NASA_LANDING_GEAR_STATION,
     NASA_SYSTEMS_STATION,
@@ -133,6 +135,67 @@ def _check_conditions(parts: dict) -> None:
                 f"lpc_mdo.groups.condition_kinds.register_condition_kind)"
             )
         CONDITION_KINDS[c.kind].check(i, c, vehicle)
+
+
+#: Names of the full model's own subsystems beside the conditions (groups/lpc.py), which a
+#: condition name may not take.
+RESERVED_NAMES = frozenset(
+    ["design_variables", "vehicle", "power_mux", "mission", "battery"]
+    + [
+        f"{prefix}_{name}{suffix}"
+        for prefix in ("lift", "pusher")
+        for name in ("margin", "voltage_margin")
+        for suffix in ("", "_gather")
+    ]
+)
+
+
+def _check_condition_names(conditions: tuple[DesignCondition, ...]) -> None:
+    """Condition names that can name a subsystem of the model: ASCII, no leading '_', free."""
+    for i, c in enumerate(conditions):
+        if not c.name.isascii() or c.name.startswith("_") or c.name in RESERVED_NAMES:
+            raise VehicleSpecError(
+                f"'conditions[{i}].name' = {c.name!r} is not allowed: must be an ASCII "
+                "identifier that does not start with '_' and is none of the model's own "
+                f"subsystems ({', '.join(sorted(RESERVED_NAMES))})"
+            )
+
+
+def _check_buildable(parts: dict) -> None:
+    """Check the fixed models the vehicle needs: its motor winding and its wing-box section."""
+    m = parts["motor"]
+    try:
+        MotorParameters(
+            pole_pairs=m.pole_pairs,
+            phases=m.num_phases,
+            num_slots=m.num_slots,
+            rated_current=m.rated_current,
+            voltage_limit=m.voltage_limit,
+            gear_ratio=m.gear_ratio,
+            torque_density=m.torque_density,
+        )
+    except ValueError as err:
+        raise VehicleSpecError(f"'motor' (num_slots, pole_pairs, num_phases): {err}") from err
+    airfoil, box = parts["wing"].airfoil, parts["wing_box"]
+    if box.rear_spar <= box.front_spar:
+        raise VehicleSpecError(
+            f"'wing_box.rear_spar' = {box.rear_spar!r} is out of range: must be > "
+            f"'wing_box.front_spar' = {box.front_spar!r}"
+        )
+    section = WING_BOX_SECTIONS.get(airfoil)
+    layout = (box.front_spar, box.rear_spar, box.beam_axis)
+    if section is None or (section.front_spar, section.rear_spar, section.beam_axis) != layout:
+        packaged = ", ".join(
+            f"{name!r} with front_spar {s.front_spar:g}, rear_spar {s.rear_spar:g}, beam_axis "
+            f"{s.beam_axis:g}"
+            for name, s in sorted(WING_BOX_SECTIONS.items())
+        )
+        key = "wing.airfoil" if section is None else "wing_box.front_spar"
+        raise VehicleSpecError(
+            f"'{key}': the wing box of airfoil {airfoil!r} with front_spar {box.front_spar:g}, "
+            f"rear_spar {box.rear_spar:g}, beam_axis {box.beam_axis:g} has no packaged section "
+            f"properties; allowed: {packaged} (docs theory/structures)"
+        )
 
 
 def _check_mission(mission: Mission, conditions: tuple[DesignCondition, ...]) -> None:
@@ -333,6 +396,8 @@ def _check_geometry(parts: dict) -> None:
     _check_blades(parts["lift_rotors"], parts["pusher"])
     _check_cabin(parts)
     _check_limits(parts)
+    _check_buildable(parts)
+    _check_condition_names(parts["conditions"])
 
 
 def _check_wing(wing: Wing) -> Wing:

@@ -221,6 +221,12 @@ def _read_design_variable(data, spec: _DVSpec, path: str) -> DesignVariable:
         return f"'{path}.{key}" + "".join(f"[{i}]" for i in np.unravel_index(k, spec.shape)) + "'"
 
     source = f"; the initial value is taken from '{spec.initial_from}'" if spec.initial_from else ""
+    for k, (lo, up) in enumerate(zip(lower, upper, strict=True)):
+        if lo > up:
+            raise VehicleSpecError(
+                f"{entry('lower', k)} = {_fmt(lo / scale)} is out of range: must be <= "
+                f"{entry('upper', k)} = {_fmt(up / scale)} ({units}; the bounds are swapped?)"
+            )
     for k, (x0, lo, up) in enumerate(zip(initial, lower, upper, strict=True)):
         if not lo <= x0 <= up:
             raise VehicleSpecError(
