@@ -788,6 +788,15 @@ DICT_CASES = [
         "design_variables.climb_pusher_rpm",
         "has design_variable_prefix = 'cruise', so its design variables are the 'cruise_*'",
     ),
+    *[
+        (f"a key with {what}", _set("wing", key, 19.6), shown, fragment)
+        for what, key, shown, fragment in (
+            ("a Cyrillic a", "\u0430rea", "wing.\u0430rea", "U+0430, which only looks like"),
+            ("a zero-width space", "area\u200b", "wing.area\\u200b", "U+200B"),
+            ("a terminal escape", "\x1b[31marea", "wing.\\x1b[31marea", "U+001B"),
+            ("a million characters", "x" * 10**6, "wing." + "x" * 55, "(1000005 characters)"),
+        )
+    ],
     (
         "battery mass bounds swapped",
         lambda d: d["design_variables"]["battery_mass"].update(lower=1400.0, upper=400.0),

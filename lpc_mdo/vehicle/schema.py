@@ -139,7 +139,15 @@ def _check_keys(
     for key in data:
         if key not in allowed:
             names = ", ".join(repr(k) for k in sorted(allowed))
-            raise VehicleSpecError(f"unknown key '{_join(path, key)}'; allowed keys: {names}")
+            odd = next((c for c in str(key) if not (c.isascii() and c.isprintable())), None)
+            note = (
+                f" (it holds the character {odd!r}, U+{ord(odd):04X}, which only looks like "
+                "plain text)"
+                if odd is not None
+                else ""
+            )
+            shown = _cut(_join(path, str(key)))
+            raise VehicleSpecError(f"unknown key {shown}{note}; allowed keys: {names}")
     for key, description in allowed.items():
         if key not in data and key not in optional:
             raise VehicleSpecError(f"missing key '{_join(path, key)}' ({description})")
