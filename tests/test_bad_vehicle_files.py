@@ -932,6 +932,18 @@ POLAR_CASES = [
     ),
     ("cl in percent", "blade.dat", _rows(cl=10.0 * ALPHA + 10.0), "(coefficients, not percent)"),
     ("cd in percent", "blade.dat", _rows(cd=100.0 * CD + 4.0), "cd = 5.25 at alpha -5 deg"),
+    (
+        "2001 rows",
+        "blade.dat",
+        _rows(np.linspace(-10.0, 15.0, 2001)),
+        "allowed: 5 to 2000 angles",
+    ),
+    (
+        "npz with half a pressure table",
+        "blade.npz",
+        lambda t: _npz_bytes(t, alpha_deg=ALPHA, cl=0.1 * ALPHA, cd=CD, cp_upper=np.zeros(3)),
+        "has cp_upper but misses the pressure arrays",
+    ),
     ("binary .dat", "blade.dat", bytes(range(256)), "is binary"),
     (
         "latin-1 .dat",
