@@ -798,6 +798,24 @@ DICT_CASES = [
         )
     ],
     (
+        "two seats abreast in 0.6 m",
+        _set("fuselage", "max_width", 0.6),
+        "fuselage.seats_abreast",
+        "need a fuselage wider than 'fuselage.max_width' = 0.6",
+    ),
+    (
+        "shear modulus above E/2",
+        _set("material", "shear_modulus", 260e9),
+        "material.shear_modulus",
+        "G = E/(2 (1 + nu))",
+    ),
+    (
+        "allowable stress of 3.5 GPa",
+        _set("material", "allowable_stress", 3.5e9),
+        "material.allowable_stress",
+        "must be <= 1 % of 'material.youngs_modulus'",
+    ),
+    (
         "battery mass bounds swapped",
         lambda d: d["design_variables"]["battery_mass"].update(lower=1400.0, upper=400.0),
         "design_variables.battery_mass.lower",

@@ -161,8 +161,27 @@ def _check_condition_names(conditions: tuple[DesignCondition, ...]) -> None:
             )
 
 
+def _check_material(material) -> None:
+    """Check G = E/(2 (1 + nu)) <= E/2 (isotropic) and an allowable below 1 % strain."""
+    e, g = material.youngs_modulus, material.shear_modulus
+    if g > e / 2.0:
+        raise VehicleSpecError(
+            f"'material.shear_modulus' = {g:g} is out of range: must be <= "
+            f"'material.youngs_modulus' / 2 = {e / 2.0:g} (Pa; G = E/(2 (1 + nu)) of an "
+            "isotropic material)"
+        )
+    if material.allowable_stress > 0.01 * e:
+        raise VehicleSpecError(
+            f"'material.allowable_stress' = {material.allowable_stress:g} is out of range: "
+            f"must be <= 1 % of 'material.youngs_modulus' = {0.01 * e:g} (Pa; airframe materials "
+            "yield or reach their design allowables below 1 % strain: aluminium alloys about "
+            "0.7 %)"
+        )
+
+
 def _check_buildable(parts: dict) -> None:
     """Check the fixed models the vehicle needs: its motor winding and its wing-box section."""
+    _check_material(parts["material"])
     m = parts["motor"]
     try:
         MotorParameters(
@@ -338,9 +357,21 @@ def min_fuselage_length(parts) -> float:
     return parts["fuselage"].cabin_end + min_tail_cone_length(parts)
 
 
+#: Narrowest seat with its share of the side clearance (m): 0.46 m, the economy seat width of
+#: Kundu, Aircraft Design, 2010, Table 4.5 (the reference's two seats abreast in 1.557 m).
+MIN_SEAT_WIDTH = 0.46
+
+
 def _check_cabin(parts: dict) -> None:
     """Check that the fuselage holds nose bay, cabin and tail cone, and the cabin its seats."""
     fuselage = parts["fuselage"]
+    if fuselage.seats_abreast * MIN_SEAT_WIDTH > fuselage.max_width:
+        raise VehicleSpecError(
+            f"'fuselage.seats_abreast' = {fuselage.seats_abreast} is out of range: "
+            f"{fuselage.seats_abreast} seats of at least {MIN_SEAT_WIDTH:g} m (Kundu, Aircraft "
+            f"Design, Table 4.5) need a fuselage wider than 'fuselage.max_width' = "
+            f"{fuselage.max_width:g} (m)"
+        )
     shortest = min_fuselage_length(parts)
     if fuselage.length < shortest:
         raise VehicleSpecError(
