@@ -849,6 +849,12 @@ DICT_CASES = [
         "has no packaged section properties",
     ),
     (
+        "hover rotor speed lower bound -1800 rpm",
+        lambda d: d["design_variables"]["hover_lift_rpm"].update(lower=-1800.0),
+        "design_variables.hover_lift_rpm.lower[0]",
+        "rotor speed is positive",
+    ),
+    (
         "rotor radius lower bound 0",
         lambda d: d["design_variables"]["rotor_radius"].update(lower=[0.0, 1.2, 1.2, 1.2, 0.959]),
         "design_variables.rotor_radius.lower[0]",

@@ -39,7 +39,8 @@ from lpc_mdo.vehicle.schema import (
 
 #: Largest factor between a design variable's ref and the magnitude of its bounds.
 REF_RANGE = 1000.0
-#: Units of design variables that are positive by nature (lengths, areas, masses, currents).
+#: Units of design variables that are positive by nature (lengths, areas, masses, currents;
+#: rotor speeds too, all but the transition roll/yaw differentials).
 POSITIVE_UNITS = ("m", "m**2", "kg", "A")
 
 
@@ -205,14 +206,15 @@ def _read_design_variable(data, spec: _DVSpec, path: str) -> DesignVariable:
             f"[{_fmt(magnitude / scale / REF_RANGE)}, {_fmt(magnitude / scale * REF_RANGE)}] "
             "(the optimizer sees value/ref, which should be of order one)"
         )
-    if spec.units in POSITIVE_UNITS:
+    speed = spec.units == "rpm" and "roll_yaw" not in path  # a differential may be negative
+    if spec.units in POSITIVE_UNITS or speed:
         for k, lo in enumerate(lower):
             if lo <= 0.0:
                 raise VehicleSpecError(
                     f"'{path}.lower"
                     + "".join(f"[{i}]" for i in np.unravel_index(k, spec.shape))
                     + f"' = {_fmt(lo)} is out of range: must be > 0 ({units}; a length, area, "
-                    "mass or current is positive)"
+                    "mass, current or rotor speed is positive)"
                 )
 
     def entry(key, k):
