@@ -520,6 +520,19 @@ def _input_files(args):
     return files
 
 
+def _no_option_twice(argv):
+    """Refuse an option given twice (argparse would keep the last one without a word)."""
+    seen = set()
+    for token in argv:
+        if token == "--":
+            break
+        flag = token.split("=", 1)[0]
+        if flag.startswith("--") and flag != "--debug":
+            if flag in seen:
+                raise CLIError(f"'{flag}' is given twice: must be given once")
+            seen.add(flag)
+
+
 def _check_n2_file(args):
     """``--n2``: a new HTML file, none of the command's inputs or its other outputs."""
     text = args.n2
@@ -548,12 +561,18 @@ def _case_files_written(args):
     if args.command == "sweep":
         parameters = list(PAPER_SWEEPS) if args.parameter == "all" else [args.parameter]
         margins = {"on": (True,), "off": (False,), "both": (True, False)}[args.static_margin]
-        return [
+        files = [
             Path(point_case_file(str(out), parameter, value, margin))
             for parameter in parameters
             for value in (args.values or SWEEP_PARAMETERS[parameter][2] or ())
             for margin in margins
         ]
+        if len(set(files)) < len(files):  # two values that print alike (6 digits)
+            raise CLIError(
+                f"'--values' = {args.values}: two values give the same case file name (they "
+                "agree to 6 significant digits): must be distinct values"
+            )
+        return files
     return []
 
 
@@ -1080,7 +1099,8 @@ def build_parser():
     )
     optimize.add_argument(
         "--tol",
-        type=_finite_float("--tol", lower=0.0, lower_open=True),
+        # 1e-12 is below what the model's inner solves resolve; 0.1 stops at the start.
+        type=_finite_float("--tol", lower=1e-12, upper=0.1),
         default=None,
         help=_tol_help(),
     )
@@ -1237,6 +1257,7 @@ def main(argv=None):
     debug = "--debug" in argv
     args = None
     try:
+        _no_option_twice(argv)
         args = build_parser().parse_args(argv)
         debug = args.debug
         _preflight(args)
