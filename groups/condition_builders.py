@@ -5,6 +5,8 @@ The condition groups (``hover_condition``, ``transition_condition``, ``steady_fl
 group and promotes the names the conditions share (see :mod:`lpc_mdo.groups.condition_base`).
 """
 
+import warnings
+
 import numpy as np
 import openmdao.api as om
 
@@ -103,6 +105,17 @@ def add_motors(group, vehicle, prefix, num_motors, rpm):
     )
     group.connect(f"{prefix}_shaft.motor_load_torque", f"{prefix}_motors.rotor_torque")
     one_factorization(motors)
+
+
+# OpenMDAO lists every group with a DirectSolver as "treated as atomic" when it sorts the
+# model into pre-, in- and post-optimization systems; the rotor and motor groups lie on the
+# optimization's paths anyway, so the list (one line per group and problem) says nothing a
+# user can act on. Only that message is silenced.
+warnings.filterwarnings(
+    "ignore",
+    message="The following groups have a nonlinear solver that computes gradients",
+    module="openmdao.utils.relevance",
+)
 
 
 def one_factorization(rotors_or_motors):

@@ -13,6 +13,8 @@ and on stderr, and the command exits with code 1 after writing its case file and
 """
 
 import argparse
+import contextlib
+import errno
 import os
 import sqlite3
 import sys
@@ -43,18 +45,24 @@ from lpc_mdo.post.stall import format_stall_speed_check
 from lpc_mdo.post.tables import (
     DEFAULT_TOL,
     constraint_rows,
+    constraint_summary,
     constraint_table,
+    entry_status,
     format_constraint_status,
+    status_word,
 )
 from lpc_mdo.progress import interrupt_message
+from lpc_mdo.run_lock import LOCK_NAME, FolderInUse, LockFailed, folder_lock
 from lpc_mdo.sensitivities import sensitivities_from_case, sensitivities_path
 from lpc_mdo.sweep_parameters import PAPER_SWEEPS, SWEEP_PARAMETERS, reference_value, sweep_vehicle
-from lpc_mdo.sweeps import run_sweep
+from lpc_mdo.sweeps import point_case_file, run_sweep
 from lpc_mdo.vehicle import VehicleSpecError, load_vehicle
 from lpc_mdo.vehicle.condition_contract import condition_kind
 
 #: Exit code of a user error (as argparse's own), of a bug, and of Ctrl-C.
 EXIT_USER_ERROR, EXIT_BUG, EXIT_INTERRUPTED = 2, 1, 130
+#: A write into the output folder failed (full disk, read-only file system).
+EXIT_WRITE_ERROR = 1
 
 SQLITE_MAGIC = b"SQLite format 3\x00"
 #: Tables every OpenMDAO SqliteRecorder file has.
@@ -81,15 +89,15 @@ class _Parser(argparse.ArgumentParser):
 # argparse type= validators: each names its argument and raises CLIError.
 
 
-def _integer(flag, lower):
-    """Return an argparse type: an integer >= ``lower``."""
+def _integer(flag, lower, upper=None):
+    """Return an argparse type: an integer in [``lower``, ``upper``]."""
 
     def parse(text):
         try:
             value = int(text)
         except ValueError:
             value = text
-        return check_integer(flag, value, lower=lower, error=CLIError)
+        return check_integer(flag, value, lower=lower, upper=upper, error=CLIError)
 
     parse.__name__ = "integer"
     return parse
@@ -124,6 +132,9 @@ def _existing(flag, what, folder_ok=False):
             raise CLIError(f"'{flag}' = {text!r} does not exist: must be {what}")
         if is_dir and not folder_ok:
             raise CLIError(f"'{flag}' = {text!r} is a folder: must be {what}")
+        if not is_dir and not path.is_file():  # a pipe or device would block the read
+            raise CLIError(f"'{flag}' = {text!r} is not a regular file (a pipe or device): "
+                           f"must be {what}")  # fmt: skip
         if not is_dir and not os.access(path, os.R_OK):
             raise CLIError(f"'{flag}' = {text!r} is not readable: must be {what}")
         return text
@@ -224,7 +235,13 @@ def check_output_folder(flag, path):
         If the path is a file, lies under a regular file, or the folder (or the existing folder
         it would be created in) is not writable.
     """
-    problem = _folder_problem(path)
+    text = os.fspath(path)
+    if not text.strip():
+        problem = "is empty"
+    elif os.path.islink(text) and not os.path.exists(text):
+        problem = f"is a link to '{os.readlink(text)}', which does not exist"
+    else:
+        problem = _folder_problem(path)
     if problem:
         raise CLIError(
             f"'{flag}' = {os.fspath(path)!r} {problem}: must be a folder that exists or can be "
@@ -364,10 +381,18 @@ def open_case_file(flag, path, need_final=False, vehicle=None, given=None):
         raise fail("holds no cases (the run that wrote it recorded none)")
     if need_final and final is None:
         others = f" (problem cases: {', '.join(problem_cases)})" if problem_cases else ""
-        raise fail(
-            f"holds {len(driver_cases)} driver case(s) but not the problem case 'final'{others}, "
-            "which a start loads (lpc-mdo records it when a run ends)"
-        )
+        if vehicle is None:
+            raise fail(
+                f"holds {len(driver_cases)} driver case(s) but not the problem case "
+                f"'final'{others}, which a report reads (lpc-mdo records it when a run ends)"
+            )
+        try:  # an interrupted run: its last recorded iteration (warm_start.start_point)
+            warm_start.start_point(text, vehicle)
+        except ValueError as err:
+            raise fail(
+                f"holds {len(driver_cases)} driver case(s) but not the problem case "
+                f"'final'{others}, and no iteration to resume from ({err})"
+            ) from err
     if vehicle is not None and final is not None:
         found = 0
         for name, dv in vehicle.design_variables.items():
@@ -437,8 +462,10 @@ def _preflight(args):
     command = args.command
     args.vehicle_spec = load_vehicle_argument("--vehicle", args.vehicle)
     check_output_folder("--output-dir", args.output_dir)
-    if command == "analyze" and args.n2:
-        check_output_file("--n2", args.n2)
+    if command == "analyze" and args.n2 is not None:
+        _check_n2_file(args)
+    for path in _case_files_written(args):
+        _not_an_input("--output-dir", path, _input_files(args))
     if command in ("optimize", "sweep"):
         if args.optimizer is None:  # a given --optimizer was checked by its type
             names = study_plan.SEQUENCE if args.problem == "sequence" else [args.problem]
@@ -453,19 +480,114 @@ def _preflight(args):
         if command == "sweep":
             _check_sweep_values(args)
             if args.mpi:
-                try:  # optional dependency, imported only to see whether it is there
-                    import mpi4py  # noqa: F401
-                except ImportError as err:
-                    raise CLIError(
-                        "'--mpi' needs mpi4py, which is not importable here: must be run with "
-                        "mpi4py installed (pip install 'lpc-mdo[mpi]'), or use --processes N"
-                    ) from err
+                _check_mpi_ranks()
         if args.start_case is not None:
             open_case_file(
                 "--start-case", args.start_case, need_final=True, vehicle=args.vehicle_spec
             )
     if command == "report":
         _check_report_cases(args.cases)
+
+
+def _check_mpi_ranks():
+    """``--mpi`` needs mpi4py and more than one MPI rank (a run under ``mpirun -n N``)."""
+    try:  # optional dependency, imported only here
+        from mpi4py import MPI
+    except (ImportError, RuntimeError) as err:  # RuntimeError: mpi4py without an MPI library
+        raise CLIError(
+            "'--mpi' needs mpi4py, which is not importable here: must be run with "
+            "mpi4py installed (pip install 'lpc-mdo[mpi]'), or use --processes N"
+        ) from err
+    if MPI.COMM_WORLD.size < 2:
+        raise CLIError(
+            "'--mpi' was given outside mpirun (1 MPI rank): must be started as "
+            "'mpirun -n N lpc-mdo sweep ... --mpi' with N >= 2, or use --processes N"
+        )
+
+
+def _input_files(args):
+    """Return the files a command reads: the vehicle file, its polar files, the start case."""
+    files = {}
+    if getattr(args, "vehicle", None):
+        files["--vehicle"] = args.vehicle
+    vehicle = args.vehicle_spec
+    for i, rotor in enumerate((*vehicle.lift_rotors, vehicle.pusher)):
+        if os.path.isfile(rotor.airfoil):  # a polar file (a name is a shipped table)
+            where = f"lift_rotors[{i}]" if i < len(vehicle.lift_rotors) else "pusher"
+            files[f"{where}.airfoil of --vehicle"] = rotor.airfoil
+    if getattr(args, "start_case", None):
+        files["--start-case"] = args.start_case
+    return files
+
+
+def _no_option_twice(argv):
+    """Refuse an option given twice (argparse would keep the last one without a word)."""
+    seen = set()
+    for token in argv:
+        if token == "--":
+            break
+        flag = token.split("=", 1)[0]
+        if flag.startswith("--") and flag != "--debug":
+            if flag in seen:
+                raise CLIError(f"'{flag}' is given twice: must be given once")
+            seen.add(flag)
+
+
+def _check_n2_file(args):
+    """``--n2``: a new HTML file, none of the command's inputs or its other outputs."""
+    text = args.n2
+    if not text.strip() or text.endswith(("/", os.sep)):
+        why = "is empty" if not text.strip() else "names a folder"
+        raise CLIError(f"'--n2' = {text!r} {why}: must be a file name, e.g. n2.html")
+    check_output_file("--n2", text)
+    _not_an_input("--n2", text, _input_files(args))
+    target = Path(text).absolute()
+    for written in _case_files_written(args):
+        if target == written.absolute():
+            raise CLIError(
+                f"'--n2' = {text!r} is the file {written.name} the command writes into "
+                "--output-dir: must be another file name, e.g. n2.html"
+            )
+
+
+def _case_files_written(args):
+    """Return the case files a command writes into its output folder (checked against inputs)."""
+    out = Path(args.output_dir)
+    if args.command == "analyze":
+        return [out / name for name in ("cases.sql", "constraints.md", "constraints.csv")]
+    if args.command == "optimize":
+        names = study_plan.SEQUENCE if args.problem == "sequence" else [args.problem]
+        return [out / f"{name}.sql" for name in names]
+    if args.command == "sweep":
+        parameters = list(PAPER_SWEEPS) if args.parameter == "all" else [args.parameter]
+        margins = {"on": (True,), "off": (False,), "both": (True, False)}[args.static_margin]
+        files = [
+            Path(point_case_file(str(out), parameter, value, margin))
+            for parameter in parameters
+            for value in (args.values or SWEEP_PARAMETERS[parameter][2] or ())
+            for margin in margins
+        ]
+        if len(set(files)) < len(files):  # two values that print alike (6 digits)
+            raise CLIError(
+                f"'--values' = {args.values}: two values give the same case file name (they "
+                "agree to 6 significant digits): must be distinct values"
+            )
+        return files
+    return []
+
+
+def _not_an_input(flag, path, inputs):
+    """Refuse an output path that is one of the command's input files."""
+    for source, given in inputs.items():
+        try:
+            same = os.path.exists(path) and os.path.samefile(path, given)
+        except OSError:
+            same = False
+        if same:
+            raise CLIError(
+                f"'{flag}' = {os.fspath(path)!r} is the file of {source}, which the command "
+                "reads: must be a new file name (lpc-mdo never writes over its inputs)"
+            )
 
 
 def _check_sweep_values(args):
@@ -491,16 +613,6 @@ def _check_sweep_values(args):
                 f"'--values' = {value:g} is out of range for --parameter {args.parameter} "
                 f"({reason})"
             ) from err
-        if args.parameter == "final_soc":  # a limit at or above the start is infeasible
-            initial = args.vehicle_spec.battery.initial_soc
-            check_number(
-                "--values",
-                value,
-                upper=initial,
-                upper_open=True,
-                allowed=f"below the vehicle's battery.initial_soc = {initial:g}",
-                error=CLIError,
-            )
 
 
 def _check_report_cases(cases):
@@ -539,9 +651,10 @@ def _analyze_header(analysis, args):
         [
             f"lpc-mdo analysis of '{vehicle.name}' ({state})",
             f"  {len(prob.model.condition_names)} design conditions, "
-            f"{sum(m['size'] for m in dvs.values())} design variables, "
-            f"{sum(m['size'] for m in cons.values() if not m['linear'])} constraints, "
-            f"{sum(m['size'] for m in cons.values() if m['linear'])} linear bounds",
+            f"{sum(m['size'] for m in dvs.values())} design variables, {len(cons)} "
+            f"constraints of {sum(m['size'] for m in cons.values())} rows "
+            f"({sum(m['size'] for m in cons.values() if not m['linear'])} nonlinear, "
+            f"{sum(m['size'] for m in cons.values() if m['linear'])} linear bounds)",
             f"  wing: S = {prob.get_val('wing_area')[0]:.2f} m^2, "
             f"AR = {prob.get_val('wing_aspect_ratio')[0]:.2f}, "
             f"span = {prob.get_val('wing_span')[0]:.2f} m; fuselage "
@@ -562,11 +675,13 @@ def _analyze_conditions(analysis, args):
     trim = analysis.trim.conditions if analysis.trim else {}
     lines = [
         f"  {'condition':<14}{'power [kW]':>12}{'u_dot':>9}{'w_dot':>9}{'q_dot':>9}"
-        f"{'V margin':>10}{'trim residual':>15}   (accelerations in m/s^2, rad/s^2; structural "
+        f"{'V margin':>21}{'trim residual':>15}   (accelerations in m/s^2, rad/s^2; structural "
         "conditions show their load factor n instead of a power; V margin: the lowest motor "
-        "voltage margin 1 - |U|/V_lim, below 0 the motor needs more than the voltage limit; "
-        "trim residual: the largest scaled trim row, 1e-3 = 0.1 % of the weight)"
+        "voltage margin 1 - |U|/V_lim and its status against constraints.min_voltage_margin, "
+        "violated: the motor needs more than the voltage limit; trim residual: the largest "
+        "scaled trim row, 1e-3 = 0.1 % of the weight)"
     ]
+    floor = vehicle.constraints.min_voltage_margin
     for condition in prob.model.conditions:
         name = condition.name
         lin = prob.get_val(f"{name}.linear_acceleration")[0]
@@ -579,7 +694,11 @@ def _analyze_conditions(analysis, args):
             power = f"{f'n = {factor:+g}' if factor is not None else '-':>12}"
         motors = kind.motor_sets(vehicle, condition)
         margins = [prob.get_val(f"{name}.{prefix}_motor_voltage_margin").min() for prefix in motors]
-        margin = f"{min(margins):>10.2f}" if margins else f"{'-':>10}"
+        if margins:
+            _, active, violated = entry_status([min(margins)], lower=[floor])
+            margin = f"{min(margins):>10.3f} {status_word(active, violated):>10}"
+        else:
+            margin = f"{'-':>21}"
         residual = f"{trim[name].max_residual:>15.2e}" if name in trim else f"{'-':>15}"
         if name in analysis.failed:
             residual += "  NOT TRIMMED"
@@ -594,8 +713,16 @@ def _analyze_trim_variables(analysis, args):
     return f"  {title}:\n" + format_trim_variables(analysis.prob)
 
 
+def _constraint_rows(analysis, args):
+    """Return the constraint rows of the analysed case (read once per command)."""
+    if getattr(args, "constraint_rows", None) is None:
+        tols = trim_tolerances(analysis.prob)
+        args.constraint_rows = constraint_rows(str(args.case_file), case="final", tols=tols)
+    return args.constraint_rows
+
+
 def _analyze_constraints(analysis, args):
-    rows = constraint_rows(str(args.case_file), case="final", tols=trim_tolerances(analysis.prob))
+    rows = _constraint_rows(analysis, args)
     return (
         f"  constraints (status band: {DEFAULT_TOL:g} of the limit or scaling reference; trim "
         f"rows {TRIM_TOLERANCE:g}, 0.1 % of the weight):\n" + format_constraint_status(rows)
@@ -621,6 +748,7 @@ def _analyze_summary(analysis, args):
         lines.append(f"  trim FAILED for {failed}: the values above are not a trimmed state")
     else:
         lines.append(f"  trim: all {len(analysis.trim.conditions)} conditions trimmed")
+    lines.append(constraint_summary(_constraint_rows(analysis, args)))
     return "\n".join(lines)
 
 
@@ -712,21 +840,14 @@ def _analyze(args):
     return 0
 
 
-def _silent(message):
-    """Drop a stage's log line (``lpc-mdo optimize --quiet``)."""
-
-
 def _optimize(args):
     out = Path(args.output_dir)
     out.mkdir(parents=True, exist_ok=True)
     settings = {}
     if args.max_iter is not None:
         settings["max_iter"] = args.max_iter
-    if args.tol is not None:
-        # A tolerance asked for is the one to meet: no stop at an acceptable point before it
-        # (a polish from a full.sql stopped after 16 iterations at the acceptable point).
-        settings["tol"] = args.tol
-        settings["acceptable_iter"] = 0
+    if args.tol is not None:  # the tolerance asked for is the one to meet
+        settings.update(drivers.tolerance_settings(args.tol))
     if args.quiet:
         settings["print_level"] = 0
     common = dict(
@@ -735,8 +856,7 @@ def _optimize(args):
         driver_settings=settings,
         trim_first=not args.no_trim,
         progress=not args.quiet,
-        # --quiet: no stage summaries either; the exit code and the case file path remain.
-        log=_silent if args.quiet else print,
+        log=print,  # one line per stage, also with --quiet
         trim_processes=args.processes,
     )
     # Each stage prints a progress line per iteration (and IPOPT its own table unless
@@ -749,9 +869,23 @@ def _optimize(args):
                 optimizer=args.optimizer,
                 full_optimizer=args.optimizer,
                 start_case=args.start_case,
+                keep_going=args.keep_going,
                 **common,
             )
-            return 0 if all(r.success for r in results) else 1
+            failed = [r for r in results if not r.success]
+            if failed:
+                stopped = (
+                    ""
+                    if args.keep_going
+                    else "; the sequence stopped there (--keep-going runs the later stages)"
+                )
+                print(
+                    f"lpc-mdo: {failed[0].name}: {failed[0].exit_status}{stopped} "
+                    f"(case file {failed[0].case_file})",
+                    file=sys.stderr,
+                )
+                return 1
+            return 0
         case_file = out / f"{args.problem}.sql"
         if args.problem == "baseline":  # continuation in alpha (paper eq. 8)
             stage = warm_start.solve_baseline(
@@ -901,7 +1035,11 @@ def build_parser():
     _add_debug(parser, False)
     sub = parser.add_subparsers(dest="command", required=True)
     vehicle_type = _existing("--vehicle", "a vehicle TOML file")
-    positive = {flag: _integer(flag, 1) for flag in ("--max-iter", "--processes")}
+    # 10^6 iterations are days of optimizing; 1024 processes more than any one machine has.
+    positive = {
+        "--max-iter": _integer("--max-iter", 1, upper=1_000_000),
+        "--processes": _integer("--processes", 1, upper=1024),
+    }
 
     def add_command(name, help):
         command = sub.add_parser(name, help=help)
@@ -961,7 +1099,8 @@ def build_parser():
     )
     optimize.add_argument(
         "--tol",
-        type=_finite_float("--tol", lower=0.0, lower_open=True),
+        # 1e-12 is below what the model's inner solves resolve; 0.1 stops at the start.
+        type=_finite_float("--tol", lower=1e-12, upper=0.1),
         default=None,
         help=_tol_help(),
     )
@@ -982,7 +1121,15 @@ def build_parser():
         "--no-trim", action="store_true", help="do not trim the conditions before optimizing"
     )
     optimize.add_argument(
-        "--quiet", action="store_true", help="only the progress lines, not IPOPT's iteration table"
+        "--quiet",
+        action="store_true",
+        help="one line per stage and the reason of a failure, no iteration tables",
+    )
+    optimize.add_argument(
+        "--keep-going",
+        action="store_true",
+        help="run the later stages of the sequence after a stage that did not converge "
+        "(default: stop there, exit status 1)",
     )
     optimize.add_argument(
         "--processes",
@@ -1074,10 +1221,14 @@ def _user_error(err):
         return True
     if not isinstance(err, ValueError) or err.__traceback__ is None:
         return False
-    # A ValueError raised by lpc_mdo's own checks (which name the field), not by a library.
-    package = Path(__file__).resolve().parent
-    raised_in = Path(traceback.extract_tb(err.__traceback__)[-1].filename).resolve()
-    return package in raised_in.parents
+    # A ValueError raised by lpc_mdo's own checks (which name the field), not by a library:
+    # by the module of the frame that raised it (the components and groups are lpc_mdo
+    # subpackages wherever their files are installed).
+    tb = err.__traceback__
+    while tb.tb_next is not None:
+        tb = tb.tb_next
+    module = tb.tb_frame.f_globals.get("__name__", "")
+    return module == "lpc_mdo" or module.startswith("lpc_mdo.")
 
 
 def _one_line(err):
@@ -1097,17 +1248,21 @@ def main(argv=None):
     -------
     int
         Exit code: 0 success, 1 an optimization that did not converge, an analysis with a
-        condition that did not trim (named on stderr), or a bug (with its traceback), 2 a
-        user error (one line ``lpc-mdo: error: ...``), 130 interrupted.
+        condition that did not trim (named on stderr), a failed write into the output folder
+        (one line) or a bug (with its traceback), 2 a user error (one line ``lpc-mdo: error:
+        ...``), 130 interrupted.
     """
     os.environ.setdefault("OPENMDAO_REPORTS", "0")
     argv = sys.argv[1:] if argv is None else list(argv)
     debug = "--debug" in argv
+    args = None
     try:
+        _no_option_twice(argv)
         args = build_parser().parse_args(argv)
         debug = args.debug
         _preflight(args)
-        return args.func(args)
+        with _output_folder_lock(args):
+            return args.func(args)
     except KeyboardInterrupt:
         print("lpc-mdo: interrupted", file=sys.stderr)
         return EXIT_INTERRUPTED
@@ -1118,8 +1273,65 @@ def main(argv=None):
             traceback.print_exc()
         print(f"lpc-mdo: error: {_one_line(err)}", file=sys.stderr)
         return EXIT_USER_ERROR
+    except (OSError, sqlite3.Error) as err:
+        problem = _write_failure(err)
+        if problem is None:
+            return _bug(err)
+        if debug:
+            traceback.print_exc()
+        print(f"lpc-mdo: error: {_kept_after_write_failure(args, problem)}", file=sys.stderr)
+        return EXIT_WRITE_ERROR
     except Exception as err:  # not hidden: the traceback, then what to do with it
         return _bug(err)
+
+
+def _write_failure(err):
+    """Say what went wrong when ``err`` is a failed write (full disk, read-only), else None."""
+    text = str(err)
+    if isinstance(err, OSError) and err.errno in (errno.ENOSPC, errno.EDQUOT, errno.EROFS):
+        return err.strerror or os.strerror(err.errno)
+    if isinstance(err, sqlite3.Error) and any(
+        fragment in text for fragment in ("disk is full", "readonly database", "disk I/O error")
+    ):
+        return text
+    return None
+
+
+def _kept_after_write_failure(args, problem):
+    """One line: the folder whose write failed, why, and the case files it keeps."""
+    folder = getattr(args, "output_dir", None) or "."
+    kept = sorted(p.name for p in Path(folder).glob("*.sql")) if Path(folder).is_dir() else []
+    listed = ", ".join(kept) if kept else "none"
+    return (
+        f"writing into '--output-dir' = {folder!r} failed ({problem}); the case files there "
+        f"are kept as they were last written ({listed}): free space (or choose another folder) "
+        "and start again, e.g. from the last one with --start-case"
+    )
+
+
+@contextlib.contextmanager
+def _output_folder_lock(args):
+    """Hold the ``--output-dir`` lock while the command runs (one run per folder)."""
+    if getattr(args, "mpi", False):
+        from mpi4py import MPI  # checked by _preflight
+
+        if MPI.COMM_WORLD.rank != 0:  # the ranks of one sweep share its folder
+            yield
+            return
+    try:
+        with folder_lock(args.output_dir):
+            yield
+    except LockFailed as err:
+        raise CLIError(
+            f"'--output-dir' = {args.output_dir!r}: its lock file cannot be created "
+            f"({err.path}: {err.reason}): must be a folder lpc-mdo can write into"
+        ) from err
+    except FolderInUse as err:
+        raise CLIError(
+            f"'--output-dir' = {args.output_dir!r} is in use by another lpc-mdo run (process "
+            f"{err.pid}, lock file {os.path.join(args.output_dir, LOCK_NAME)}): must be a folder "
+            "no running lpc-mdo writes into (wait for it, or choose another folder)"
+        ) from err
 
 
 def _bug(err):

@@ -335,14 +335,18 @@ def declare_problem(
             )
 
 
-def attach_recorder(prob, path):
+def attach_recorder(prob, path, design_variables=()):
     """
     Attach one SQLite recorder to the driver and the problem.
 
     The driver records every iteration and the problem ``'final'`` with every variable, so a
-    single case file holds the run and what post-processing needs.
+    single case file holds the run and what post-processing needs. Each driver case also holds
+    every array named in ``design_variables`` (the vehicle file's design variables, 181 values
+    for the reference), also those the problem does not vary, so that the last iteration of an
+    interrupted run is a whole design to start from (:func:`lpc_mdo.warm_start.start_point`).
     """
     recorder = CaseRecorder(path)
+    prob.driver.recording_options["includes"] = list(design_variables)
     prob.driver.add_recorder(recorder)
     prob.add_recorder(recorder)
     prob.recording_options["includes"] = ["*"]
@@ -576,7 +580,7 @@ def build_problem(
     settings = {**spec.driver_settings(optimizer, in_sequence), **(driver_settings or {})}
     prob.driver = make_driver(optimizer, **settings)
     if recorder_path is not None:
-        attach_recorder(prob, recorder_path)
+        attach_recorder(prob, recorder_path, vehicle.design_variables)
     prob.setup(mode="rev")
     prob.vehicle = vehicle
     return prob

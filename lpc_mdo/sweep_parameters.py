@@ -10,6 +10,10 @@ one of them changed and :func:`reference_value` reads the vehicle's own value. T
 
 import dataclasses
 
+from lpc_mdo.vehicle.consistency import check_across_parts
+from lpc_mdo.vehicle.parts import Battery, ConstraintLimits, DesignCondition, FixedMasses
+from lpc_mdo.vehicle.schema import VehicleSpecError, check_field
+
 #: name -> (description, units, the paper's values or None). The paper swept the first two
 #: (``--parameter all``); the others are the parameters of the post-optimal sensitivities
 #: (:mod:`lpc_mdo.sensitivities`), swept to check them by re-optimizing (values required).
@@ -36,35 +40,42 @@ def sweep_vehicle(vehicle, parameter, value):
     Units: energy density Wh/kg, SoC and static-margin limits -, noise limit dBA, payload kg,
     cruise range km (the cruise condition's duration at its speed).
     """
+    if parameter not in SWEEP_PARAMETERS:
+        raise ValueError(f"sweep: parameter = {parameter!r}; allowed: {list(SWEEP_PARAMETERS)}.")
+    try:
+        changed = _with_value(vehicle, parameter, value)
+        check_across_parts(changed)  # the rules a vehicle file meets, on the swept vehicle
+    except VehicleSpecError as err:
+        raise ValueError(f"sweep: {parameter} = {value:g}: {err}") from err
+    return changed
+
+
+def _with_value(vehicle, parameter, value):
+    """Return the vehicle with one sweep parameter set, within its vehicle-file range."""
     replace = dataclasses.replace
     if parameter == "energy_density":
-        if not value > 0.0:
-            raise ValueError(f"sweep: energy_density = {value}; allowed: > 0 Wh/kg.")
-        return replace(vehicle, battery=replace(vehicle.battery, energy_density=value * 3600.0))
-    limits = {
-        "final_soc": ("min_final_soc", 0.0 <= value < 1.0, "[0, 1)"),
-        "max_noise": ("max_noise", 20.0 <= value <= 200.0, "[20, 200] dBA"),
-        "min_static_margin": ("min_static_margin", -1.0 < value < 1.0, "(-1, 1)"),
-    }
+        stored = check_field(Battery, "energy_density", value, "battery.energy_density_wh_per_kg")
+        return replace(vehicle, battery=replace(vehicle.battery, energy_density=stored))
+    limits = {"final_soc": "min_final_soc", "max_noise": "max_noise"}
+    limits["min_static_margin"] = "min_static_margin"
     if parameter in limits:
-        field_name, ok, allowed = limits[parameter]
-        if not ok:
-            raise ValueError(f"sweep: {parameter} = {value}; allowed: {allowed}.")
-        return replace(vehicle, constraints=replace(vehicle.constraints, **{field_name: value}))
+        name = limits[parameter]
+        stored = check_field(ConstraintLimits, name, value, f"constraints.{name}")
+        return replace(vehicle, constraints=replace(vehicle.constraints, **{name: stored}))
     if parameter == "payload":
-        if not value >= 0.0:
-            raise ValueError(f"sweep: payload = {value}; allowed: >= 0 kg.")
-        return replace(vehicle, masses=replace(vehicle.masses, payload=value))
-    if parameter == "cruise_range":
-        cruise = _cruise(vehicle)
-        if not (value > 0.0 and cruise.speed > 0.0):
-            raise ValueError(
-                f"sweep: cruise_range = {value}; allowed: > 0 km (with a cruise speed > 0)."
-            )
-        changed = replace(cruise, duration=value * 1000.0 / cruise.speed)
-        conditions = tuple(changed if c is cruise else c for c in vehicle.conditions)
-        return replace(vehicle, conditions=conditions)
-    raise ValueError(f"sweep: parameter = {parameter!r}; allowed: {list(SWEEP_PARAMETERS)}.")
+        stored = check_field(FixedMasses, "payload", value, "masses.payload")
+        return replace(vehicle, masses=replace(vehicle.masses, payload=stored))
+    cruise = _cruise(vehicle)  # cruise_range, km
+    if not cruise.speed > 0.0:
+        raise VehicleSpecError(
+            f"'conditions.{cruise.name}.speed' = {cruise.speed!r}: a cruise range needs a "
+            "cruise speed > 0"
+        )
+    key = f"{cruise.name}.duration (cruise range {value:g} km at {cruise.speed:g} m/s)"
+    duration = check_field(DesignCondition, "duration", value * 1000.0 / cruise.speed, key)
+    changed = replace(cruise, duration=duration)
+    conditions = tuple(changed if c is cruise else c for c in vehicle.conditions)
+    return replace(vehicle, conditions=conditions)
 
 
 def reference_value(vehicle, parameter):

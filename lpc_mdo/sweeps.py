@@ -58,7 +58,8 @@ def sweep_chains(values, reference, workers):
     return chains
 
 
-def _point_file(out_dir, parameter, value, static_margin):
+def point_case_file(out_dir, parameter, value, static_margin):
+    """Return the case file of one sweep point (in ``out_dir``)."""
     tag = "sm" if static_margin else "nosm"
     return os.path.join(out_dir, f"{parameter}_{value:g}_{tag}.sql")
 
@@ -86,7 +87,7 @@ def run_chain(task):
     results, previous = [], start_case
     for value in chain:
         vehicle = sweep_vehicle(base, parameter, value)
-        case_file = _point_file(out_dir, parameter, value, static_margin)
+        case_file = point_case_file(out_dir, parameter, value, static_margin)
         label = f"{parameter}={value:g} ({'with' if static_margin else 'without'} SM)"
         retry = {**driver_settings, "max_iter": 2 * int(driver_settings.get("max_iter", 200))}
         attempts = [(previous, driver_settings), (start_case, retry)]

@@ -70,6 +70,51 @@ def magnitude_refs(case, vehicle, floor=1e-6):
     return refs
 
 
+def start_point(path, vehicle):
+    """
+    Return the case a run starts from and how it was chosen.
+
+    The problem case ``'final'`` (what every run records when it ends), or, in a case file
+    without one (a run killed or stopped by two Ctrl-C), its last recorded driver iteration
+    that evaluated without error, if it holds every design-variable array of ``vehicle`` (the
+    driver records them all at each iteration, :func:`lpc_mdo.problems.attach_recorder`).
+
+    Returns
+    -------
+    case : openmdao Case
+    label : str
+        ``"final"`` or, e.g., ``"driver iteration 52 of 53 (no 'final' case: an interrupted
+        run)"``.
+
+    Raises
+    ------
+    ValueError
+        When the file holds neither, saying what it holds.
+    """
+    reader = om.CaseReader(os.fspath(path))
+    if "final" in reader.list_cases("problem", recurse=False, out_stream=None):
+        return reader.get_case("final"), "final"
+    names = reader.list_cases("driver", recurse=False, out_stream=None)
+    for k in range(len(names) - 1, -1, -1):
+        case = reader.get_case(names[k])
+        if not case.success:
+            continue
+        missing = [n for n in vehicle.design_variables if n not in case.outputs]
+        if missing:
+            raise ValueError(
+                f"{os.fspath(path)!r} holds no 'final' case, and its last driver case lacks "
+                f"design variables {missing[:3]}{' ...' if len(missing) > 3 else ''} (a run "
+                "recorded before lpc-mdo kept every design variable at each iteration)"
+            )
+        return case, (
+            f"driver iteration {k + 1} of {len(names)} (no 'final' case: an interrupted run)"
+        )
+    raise ValueError(
+        f"{os.fspath(path)!r} holds no 'final' case and no driver iteration that evaluated "
+        f"without error ({len(names)} driver case(s))"
+    )
+
+
 def load_design_variables(prob, case, vehicle):
     """Set every design-variable array of the vehicle file from a recorded case."""
     copy_design_variables(case, prob, vehicle)
@@ -89,9 +134,13 @@ def run_sequence(
     log=print,
     progress=False,
     trim_processes=1,
+    keep_going=False,
 ):
     """
     Solve the stages in order, each warm-started from the previous stage's final case.
+
+    A stage that does not converge stops the sequence (its successor would start from a point
+    that is not that stage's optimum) unless ``keep_going``.
 
     Parameters
     ----------
@@ -128,10 +177,13 @@ def run_sequence(
         Progress lines of the trim and the optimizer (see :func:`solve_stage`).
     trim_processes : int
         Processes of each stage's trim (see :func:`solve_stage`).
+    keep_going : bool
+        Run the later stages after a stage that did not converge.
 
     Returns
     -------
     list of StageResult
+        One per stage run: the last is the failed stage when the sequence stopped.
     """
     os.makedirs(out_dir, exist_ok=True)
     if vehicle is None or isinstance(vehicle, (str, os.PathLike)):
@@ -158,6 +210,9 @@ def run_sequence(
         )
         results.append(result)
         previous = result.case_file
+        if not result.success and not keep_going and name != names[-1]:
+            log(f"{name} did not converge: the sequence stops here")
+            break
     return results
 
 
@@ -385,7 +440,11 @@ def solve_stage(
     optimizer = optimizer or study_plan.default_optimizer(name)
     # Absolute: OpenMDAO puts a bare file name under the problem's {name}_out folder.
     case_file = os.path.abspath(case_file)
-    case = om.CaseReader(start_case).get_case("final") if start_case is not None else None
+    case = None
+    if start_case is not None:
+        case, label = start_point(start_case, vehicle)
+        if label != "final":
+            log(f"{name}: starts from {start_case}, {label}")
     refs = magnitude_refs(case, vehicle) if (rescale and case is not None) else None
     prob = build_problem(
         name,

@@ -33,6 +33,7 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")  # see benchmark_lpc.py
 os.environ.setdefault("OMP_NUM_THREADS", "1")
 os.environ.setdefault("OPENMDAO_REPORTS", "0")
 
+from lpc_mdo.drivers import tolerance_settings  # noqa: E402
 from lpc_mdo.sensitivities import SENSITIVITY_PARAMETERS, sensitivities_from_case  # noqa: E402
 from lpc_mdo.sweep_parameters import reference_value, sweep_vehicle  # noqa: E402
 from lpc_mdo.vehicle import load_vehicle  # noqa: E402
@@ -121,8 +122,7 @@ def main(argv=None):
     declared = om.CaseReader(args.start_case).get_case("final").get_constraints()
     static_margin = any(n.endswith(".static_margin") for n in declared)
 
-    # At the tolerance asked for: no earlier stop at an acceptable point.
-    settings = {"maxiter": args.max_iter, "tol": args.tol, "acceptable_iter": 0}
+    settings = {"maxiter": args.max_iter, **tolerance_settings(args.tol)}
     tasks = []
     for row in found.rows:
         if row.active is False:

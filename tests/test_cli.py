@@ -31,7 +31,10 @@ def test_analyze_reference_vehicle_is_trimmed(tmp_path, capsys):
     )
     text = capsys.readouterr().out
     assert "(initial design, trimmed: each condition by its rotor speeds" in text
-    assert ("15 design conditions, 181 design variables, 259 constraints, 60 linear bounds") in text
+    assert (
+        "15 design conditions, 181 design variables, 87 constraints of 319 rows "
+        "(259 nonlinear, 60 linear bounds)"
+    ) in text
     assert "gross" in text and "minus_1g" in text
     assert "trim: all 15 conditions trimmed" in text
     # Structural conditions show their load factor, not a power.
@@ -39,10 +42,15 @@ def test_analyze_reference_vehicle_is_trimmed(tmp_path, capsys):
     assert "(none)" not in text
     # Every declared constraint with its limit and status; the paper's initial design violates
     # the hover noise limit (70 dBA) and satisfies the final state of charge (>= 0.2).
-    assert re.search(r"hover\.total_spl_a +- +<= 70 +\d+\.\d+ +violated", text)
-    assert re.search(r"state_of_charge +- +>= 0\.2 +0\.\d+ +(satisfied|violated)", text)
-    assert re.search(r"cruise\.linear_acceleration +- +\= 0 .* active", text)
-    assert re.search(r"87 constraints: \d+ satisfied, \d+ active, \d+ violated", text)
+    # Every row has its units: its own, or what a ratio counts in (dBA, Mach, fraction).
+    assert re.search(r"hover\.total_spl_a +dBA +<= 70 +\d+\.\d+ +violated", text)
+    assert re.search(r"state_of_charge +fraction +>= 0\.2 +0\.\d+ +(satisfied|violated)", text)
+    assert re.search(r"cruise\.linear_acceleration +m/s\*\*2 +\= 0 .* active", text)
+    assert re.search(r"hover\.lift_tip_mach +Mach +<= ", text)
+    assert re.search(r"87 constraints \(319 rows\): \d+ satisfied, \d+ active, \d+ violated", text)
+    # At the end: the violated and the active constraints by name.
+    assert re.search(r"violated \(\d+ of 87 constraints\): hover\.control_acceleration, ", text)
+    assert re.search(r"active \(\d+ of 87 constraints\): hover\.linear_acceleration, ", text)
     # The trimmed variables per condition.
     assert re.search(r"cruise +pusher_rpm [\d.]+ rpm; pitch [\d.]+ deg; elevator", text)
     # The airframe L/D of trimmed cruise and its maximum (about 15, docs theory/aerodynamics).
@@ -176,6 +184,8 @@ def test_analyze_no_trim_says_so_and_reports_voltage_margins(tmp_path, capsys):
     assert "trim: not trimmed (--no-trim)" in first
     assert "trim variables (initial values, not trimmed)" in first
     assert "V margin" in first and "replacing" not in first
+    # Each condition's lowest voltage margin with its status, as any constraint has.
+    assert re.search(r"hover +[\d.]+ .* -?\d\.\d{3} +(satisfied|active|violated)", first)
     case = om.CaseReader(str(out / "cases.sql")).get_case("final")
     thrust = case.get_val("hover.lift_thrust", units="N").sum()
     # Untrimmed: the initial rotor speeds lift 103.5 % of the weight (measured 2026-12-04).

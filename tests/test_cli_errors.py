@@ -95,11 +95,15 @@ def files(tmp_path_factory):
     path("not_toml.toml").write_text("[wing\narea = \n")
     path("binary.toml").write_bytes(b"\xff\xfe\x00\x81" + os.urandom(64))
     path("a_file.txt").write_text("a regular file\n")
+    os.mkfifo(path("pipe.toml"))  # reading it would block: refused as not a regular file
     path("empty_folder").mkdir()
     path("folder_with_empty_run").mkdir()
     shutil.copy(paths["zero_cases.sql"], root / "folder_with_empty_run" / "cases.sql")
     path("good_folder").mkdir()
     shutil.copy(paths["good.sql"], root / "good_folder" / "cases.sql")
+    (root / "run").mkdir()  # a finished run: its full.sql is a start case for the next
+    shutil.copy(paths["good.sql"], root / "run" / "full.sql")
+    paths["run"], paths["run_full.sql"] = str(root / "run"), str(root / "run" / "full.sql")
     paths["missing"] = str(root / "missing" / "nothing.sql")
     paths["root"] = str(root)
     return paths
@@ -155,6 +159,84 @@ def no_pyoptsparse(monkeypatch):
 FULL = ["optimize", "--problem", "full", "--output-dir", "{out}"]
 SWEEP = ["sweep", "--output-dir", "{out}"]
 MISUSES = [
+    # Outputs over inputs, paths that are no files, numbers beyond any sensible run
+    (
+        "n2_over_the_vehicle_file",
+        [
+            "analyze",
+            "--vehicle",
+            "{vehicle.toml}",
+            "--n2",
+            "{vehicle.toml}",
+            "--output-dir",
+            "{out}",
+        ],
+        "--n2",
+    ),
+    (
+        "output_over_the_start_case",
+        [
+            "optimize",
+            "--problem",
+            "full",
+            "--start-case",
+            "{run_full.sql}",
+            "--output-dir",
+            "{run}",
+        ],
+        "--output-dir",
+    ),
+    ("n2_empty", ["analyze", "--output-dir", "{out}", "--n2", ""], "--n2"),
+    ("n2_a_folder_name", ["analyze", "--output-dir", "{out}", "--n2", "{out}/n2dir/"], "--n2"),
+    (
+        "n2_over_the_case_file",
+        ["analyze", "--output-dir", "{out}", "--n2", "{out}/cases.sql"],
+        "--n2",
+    ),
+    (
+        "n2_over_the_constraint_table",
+        ["analyze", "--output-dir", "{out}", "--n2", "{out}/constraints.md"],
+        "--n2",
+    ),
+    ("n2_is_the_output_dir", ["analyze", "--output-dir", "{out}", "--n2", "{root}"], "--n2"),
+    (
+        "output_dir_twice",
+        ["analyze", "--output-dir", "{out}", "--output-dir", "{out}/b"],
+        "--output-dir",
+    ),
+    ("max_iter_twice", [*FULL, "--max-iter", "5", "--max-iter=7"], "--max-iter"),
+    ("tol_1e300", [*FULL, "--tol", "1e300"], "--tol"),
+    ("tol_1e-300", [*FULL, "--tol", "1e-300"], "--tol"),
+    (
+        "values_alike_to_6_digits",
+        [
+            *SWEEP,
+            "--start-case",
+            "{good.sql}",
+            "--parameter",
+            "final_soc",
+            "--values",
+            "0.2",
+            "0.2000001",
+        ],
+        "--values",
+    ),
+    ("output_dir_empty", ["analyze", "--output-dir", ""], "--output-dir"),
+    ("output_dir_blank", ["analyze", "--output-dir", "  "], "--output-dir"),
+    ("max_iter_1e15", [*FULL, "--max-iter", "1000000000000000"], "--max-iter"),
+    ("processes_1e6", [*FULL, "--processes", "1000000"], "--processes"),
+    (
+        "values_energy_density_1e9",
+        [*SWEEP, "--start-case", "{good.sql}", "--parameter", "energy_density", "--values", "1e9"],
+        "--values",
+    ),
+    (
+        "values_payload_above_the_gross_mass",
+        [*SWEEP, "--start-case", "{good.sql}", "--parameter", "payload", "--values", "5000"],
+        "--values",
+    ),
+    ("vehicle_pipe", ["analyze", "--vehicle", "{pipe.toml}", "--output-dir", "{out}"], "--vehicle"),
+    ("mpi_on_one_rank", [*SWEEP, "--start-case", "{good.sql}", "--mpi"], "--mpi"),
     # --start-case files
     ("start_case_corrupted", [*FULL, "--start-case", "{corrupted.sql}"], "--start-case"),
     ("start_case_truncated", [*FULL, "--start-case", "{truncated.sql}"], "--start-case"),
@@ -403,7 +485,16 @@ def test_mpi_without_mpi4py(paths, capsys, monkeypatch):
 
 def test_messages_say_what_is_allowed(paths, capsys, no_pyoptsparse):
     cases = {
-        (*FULL, "--max-iter", "-1"): "'--max-iter' = -1 is out of range: must be >= 1",
+        (*FULL, "--max-iter", "-1"): "'--max-iter' = -1 is out of range: must be in [1, 1e+06]",
+        (
+            "analyze",
+            "--vehicle",
+            "{vehicle.toml}",
+            "--n2",
+            "{vehicle.toml}",
+        ): "is the file of --vehicle, which the command reads",
+        ("analyze", "--vehicle", "{pipe.toml}"): "is not a regular file (a pipe or device)",
+        ("analyze", "--output-dir", ""): "'--output-dir' = '' is empty",
         (*FULL, "--start-case", "{zero_cases.sql}"): "holds no cases",
         (*FULL, "--start-case", "{driver_only.sql}"): "not the problem case 'final'",
         (*FULL, "--start-case", "{vehicle.toml}"): "is a TOML file",
@@ -428,7 +519,9 @@ def test_debug_shows_the_traceback(where, paths, capsys):
     assert main(argv) == 2
     err = capsys.readouterr().err
     assert "Traceback" in err
-    assert err.splitlines()[-1] == "lpc-mdo: error: '--max-iter' = -1 is out of range: must be >= 1"
+    assert err.splitlines()[-1] == (
+        "lpc-mdo: error: '--max-iter' = -1 is out of range: must be in [1, 1e+06]"
+    )
 
 
 def test_a_bug_keeps_its_traceback(paths, capsys, monkeypatch):
@@ -501,3 +594,66 @@ def test_entry_point_in_a_process(paths):
         timeout=120,
     )
     _assert_one_line_error(run.returncode, run, "--processes")
+
+
+# --- one run per output folder ----------------------------------------------------------------
+
+
+def test_a_folder_in_use_is_refused_and_a_stale_lock_taken_over(paths, capsys, tmp_path):
+    from lpc_mdo.run_lock import LOCK_NAME
+
+    out = Path(paths["out"])
+    out.mkdir()
+    # A running lpc-mdo (its command line names it) holds the folder.
+    running = subprocess.Popen([sys.executable, "-c", "import time; time.sleep(60)  # lpc-mdo"])
+    try:
+        (out / LOCK_NAME).write_text(f"{running.pid}\n")
+        rc = main(["analyze", "--output-dir", str(out)])
+        _assert_one_line_error(rc, capsys.readouterr(), "--output-dir")
+    finally:
+        running.kill()
+        running.wait()
+    # The same lock once its process has ended: stale, taken over and removed at the end.
+    assert main(["analyze", "--output-dir", str(out)]) == 0
+    assert not (out / LOCK_NAME).exists()
+
+
+@pytest.mark.parametrize(
+    "error",
+    [
+        sqlite3.OperationalError("database or disk is full"),
+        OSError(28, "No space left on device"),
+    ],
+    ids=["sqlite_disk_full", "no_space_left"],
+)
+def test_a_failed_write_is_one_line_and_keeps_the_case_files(paths, capsys, monkeypatch, error):
+    out = Path(paths["out"])
+
+    def fill_the_disk(args):
+        out.mkdir(exist_ok=True)
+        (out / "subproblem_1.sql").write_bytes(b"an earlier stage")
+        raise error
+
+    monkeypatch.setattr(cli, "_optimize", fill_the_disk)
+    assert main([*_format(FULL, paths)]) == 1
+    err = capsys.readouterr().err
+    assert len(err.strip().splitlines()) == 1, err
+    assert f"writing into '--output-dir' = '{out}' failed" in err
+    assert "kept as they were last written (subproblem_1.sql)" in err
+    assert (out / "subproblem_1.sql").read_bytes() == b"an earlier stage"
+
+
+def test_a_lock_of_another_program_or_in_the_way(paths, capsys, tmp_path):
+    from lpc_mdo.run_lock import LOCK_NAME
+
+    out = Path(paths["out"])
+    out.mkdir()
+    (out / LOCK_NAME).write_text("1\n")  # pid 1 runs, but it is not lpc-mdo: a stale lock
+    assert main(["analyze", "--output-dir", str(out)]) == 0
+    (out / LOCK_NAME).mkdir()  # a folder of the lock file's name
+    rc = main(["analyze", "--output-dir", str(out)])
+    _assert_one_line_error(rc, capsys.readouterr(), "--output-dir")
+    dangling = tmp_path / "link"
+    dangling.symlink_to(tmp_path / "nowhere")
+    rc = main(["analyze", "--output-dir", str(dangling)])
+    _assert_one_line_error(rc, capsys.readouterr(), "--output-dir")

@@ -241,7 +241,7 @@ BAD_INPUTS = {
     "missing key": (_delete("wing", "area"), "missing key 'wing.area' (m^2, in [0.1, 200])"),
     "missing angle key": (
         _delete("lift_rotors", 3, "twist_cp_deg"),
-        "missing key 'lift_rotors[3].twist_cp_deg' (4 numbers, deg, in (-90, 90))",
+        "missing key 'lift_rotors[3].twist_cp_deg' (4 numbers, deg, in [-80, 80])",
     ),
     "missing table": (_delete("battery"), "missing key 'battery' (table)"),
     "missing design variable": (

@@ -635,8 +635,21 @@ class TablePolar(Polar):
             mach = data["mach"] if "mach" in keys else np.array([0.0])
             cm = data["cm"] if "cm" in keys else None
             name = str(data["name"]) if "name" in keys else Path(path).stem
-            pressure = PressureTable.from_npz_data(data) if "cp_upper" in keys else None
-            return cls(alpha, reynolds, mach, cl, cd, cm, name=name, pressure=pressure, **kwargs)
+            pressure = None
+            if "cp_upper" in keys:
+                missing = sorted(set(_PRESSURE_ARRAYS) - keys)
+                if missing:
+                    raise ValueError(
+                        f"{path}: has cp_upper but misses the pressure arrays {missing}; a "
+                        f"pressure table needs {', '.join(_PRESSURE_ARRAYS)} (or none of them)"
+                    )
+                pressure = PressureTable.from_npz_data(data)
+            try:
+                return cls(
+                    alpha, reynolds, mach, cl, cd, cm, name=name, pressure=pressure, **kwargs
+                )
+            except ValueError as exc:  # shapes of cm, reynolds, mach against cl
+                raise ValueError(f"polar file '{path}': {exc}") from exc
 
     @classmethod
     def from_alpha_cl_cd(
@@ -718,14 +731,28 @@ class TablePolar(Polar):
         return cls.from_alpha_cl_cd(rows[:, 0], rows[:, 1], rows[:, 2], **kwargs)
 
 
-#: Fewest alpha rows of a polar file.
+#: Fewest and most alpha rows of a polar file (the interpolation builds an n x n matrix: 2000
+#: rows are 32 MB; tables resolve a polar with 100-200).
 _MIN_POLAR_ROWS = 5
+_MAX_POLAR_ROWS = 2000
+#: The arrays of a pressure table in an .npz polar (:class:`PressureTable`).
+_PRESSURE_ARRAYS = (
+    "cp_alpha_deg", "cp_reynolds", "cp_mach", "x", "y_upper", "y_lower", "cp_upper", "cp_lower"
+)  # fmt: skip
 #: Angles (deg) a polar file must cover: the attached range of a blade section in hover,
 #: transition and cruise. The stall detection needs a stall point beyond +-2 blends (3 deg) on
 #: each side, and past the table's ends the Viterna extrapolation from its stall points takes
 #: over, so a table that stops short of +10 deg would put stall where the section is attached.
 POLAR_FILE_ALPHA_SPAN_DEG = (-5.0, 10.0)
 _TEXT_SUFFIXES = (".txt", ".dat", ".csv", ".pol")
+#: Physical ranges of a section's coefficients in the attached range
+#: (:data:`POLAR_FILE_ALPHA_SPAN_DEG`): the largest lift coefficient of a single-element airfoil
+#: is about 2 (Abbott & von Doenhoff, Theory of Wing Sections, 1959, appendix IV; the shipped
+#: NACA 0012 table reaches 2.57 at M 0.9 by Prandtl-Glauert), and no drag exceeds that of a
+#: flat plate normal to the flow, 1.98 in 2-D (Hoerner, Fluid-Dynamic Drag, 1965, ch. 3);
+#: beyond 3 and 2 a table is in percent or in another unit.
+POLAR_MAX_ABS_CL = 3.0
+POLAR_MAX_CD = 2.0
 
 
 def check_polar_file_arrays(path, alpha_deg, cl, cd):
@@ -740,8 +767,11 @@ def check_polar_file_arrays(path, alpha_deg, cl, cd):
     def fail(what):
         raise ValueError(f"polar file '{path}': {what}")
 
-    if alpha_deg.ndim != 1 or alpha_deg.size < _MIN_POLAR_ROWS:
-        fail(f"alpha has shape {alpha_deg.shape}; allowed: at least {_MIN_POLAR_ROWS} angles")
+    if alpha_deg.ndim != 1 or not _MIN_POLAR_ROWS <= alpha_deg.size <= _MAX_POLAR_ROWS:
+        fail(
+            f"alpha has shape {alpha_deg.shape}; allowed: {_MIN_POLAR_ROWS} to "
+            f"{_MAX_POLAR_ROWS} angles"
+        )
     for label, values in (("alpha", alpha_deg), ("cl", cl), ("cd", cd)):
         bad = ~np.isfinite(values)
         if np.any(bad):
@@ -765,6 +795,17 @@ def check_polar_file_arrays(path, alpha_deg, cl, cd):
     if np.any(cd <= 0.0):
         fail(f"cd has the value {float(np.min(cd)):g}; allowed: cd > 0")
     lo, hi = POLAR_FILE_ALPHA_SPAN_DEG
+    attached = (alpha_deg >= lo) & (alpha_deg <= hi)
+    for label, values, limit in (("cl", cl, POLAR_MAX_ABS_CL), ("cd", cd, POLAR_MAX_CD)):
+        beyond = np.abs(values) > limit
+        beyond &= attached.reshape((-1,) + (1,) * (values.ndim - 1))
+        if np.any(beyond):
+            index = tuple(int(i) for i in np.argwhere(beyond)[0])
+            fail(
+                f"{label} = {float(values[index]):g} at alpha {alpha_deg[index[0]]:g} deg (row "
+                f"{index[0]}); allowed in the attached range {lo:g}..{hi:g} deg: |cl| <= "
+                f"{POLAR_MAX_ABS_CL:g}, cd <= {POLAR_MAX_CD:g} (coefficients, not percent)"
+            )
     if alpha_deg[0] > lo or alpha_deg[-1] < hi:
         fail(
             f"alpha spans {alpha_deg[0]:g}..{alpha_deg[-1]:g} deg; allowed: a table that "

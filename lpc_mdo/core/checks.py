@@ -115,11 +115,28 @@ def _as_real_array(name, value, error, where):
         arr = np.asarray(value)
     except Exception:  # noqa: BLE001 - any failure to form an array is the same user error
         arr = np.asarray(None, dtype=object)
+    if arr.dtype.kind == "O":
+        # Integers beyond 64 bits form an object array: they are numbers, compared as floats
+        # (beyond 1.8e308 as infinite) so that the range check names the value and the range.
+        try:
+            arr = np.vectorize(_big_integer_as_float, otypes=[float])(arr)
+        except (TypeError, ValueError):
+            pass
     if arr.dtype.kind not in "iufc":
         raise error(
             f"{_prefix(where)}'{name}' must be a number or an array of numbers, got {_show(value)}"
         )
     return np.real(arr) if arr.dtype.kind == "c" else arr
+
+
+def _big_integer_as_float(x):
+    """Return a Python int as a float (+-inf beyond the float range); else raise TypeError."""
+    if isinstance(x, bool) or not isinstance(x, int):
+        raise TypeError(x)
+    try:
+        return float(x)
+    except OverflowError:
+        return math.inf if x > 0 else -math.inf
 
 
 def check_range(
@@ -295,11 +312,15 @@ def check_integer(
         The value as an int.
     """
     plain = _plain(value)
-    if (
+    if isinstance(plain, int) and not isinstance(plain, bool):
+        shown = plain if abs(plain) < 2**63 else _big_integer_as_float(plain)  # beyond int64
+        check_range(name, shown, lower=lower, upper=upper, allowed=allowed, error=error,
+                    where=where)  # fmt: skip
+    elif (
         isinstance(plain, bool)
-        or not isinstance(plain, (int, float))
+        or not isinstance(plain, float)
         or not math.isfinite(plain)
-        or not float(plain).is_integer()
+        or not plain.is_integer()
     ):
         raise error(f"{_prefix(where)}'{name}' must be an integer, got {_show(value)}")
     check_range(name, plain, lower=lower, upper=upper, allowed=allowed, error=error, where=where)

@@ -13,7 +13,7 @@ ipopt
 slsqp
     :class:`SlsqpDriver`.
 factory
-    :func:`make_driver`, :func:`pyoptsparse_optimizers`.
+    :func:`make_driver`, :func:`pyoptsparse_optimizers`, :func:`tolerance_settings`.
 scaling
     :func:`driver_scaling`, :func:`max_violation`: values in the driver's scaled space.
 openmdao_internals
@@ -21,7 +21,12 @@ openmdao_internals
     against and why each is touched.
 """
 
-from lpc_mdo.drivers.factory import KNOWN_OPTIMIZERS, make_driver, pyoptsparse_optimizers
+from lpc_mdo.drivers.factory import (
+    KNOWN_OPTIMIZERS,
+    make_driver,
+    pyoptsparse_optimizers,
+    tolerance_settings,
+)
 from lpc_mdo.drivers.ipopt import (
     DEFAULT_IPOPT_SETTINGS,
     WARM_START_SETTINGS,
@@ -42,4 +47,5 @@ __all__ = [
     "make_driver",
     "max_violation",
     "pyoptsparse_optimizers",
+    "tolerance_settings",
 ]

@@ -309,7 +309,11 @@ def constraint_rows(source, case=None, tol=DEFAULT_TOL, refs=None, tols=None):
         ``violation``, ``relative_violation``, ``active``, ``violated`` (arrays), ``tol``.
     """
     cr = open_reader(source)
-    values = final_case(cr, case).get_constraints()
+    chosen = final_case(cr, case)
+    values = chosen.get_constraints()
+    own_units = {}  # each output's own units, by absolute and promoted name
+    for path, meta in chosen.list_outputs(units=True, prom_name=True, out_stream=None):
+        own_units[path] = own_units[meta["prom_name"]] = meta["units"]
     refs = refs or {}
     tols = tols or {}
     rows = []
@@ -324,7 +328,9 @@ def constraint_rows(source, case=None, tol=DEFAULT_TOL, refs=None, tols=None):
         rows.append(
             dict(
                 name=name,
-                units=meta.get("units"),
+                units=meta.get("units")
+                or own_units.get(meta.get("source", name))
+                or own_units.get(name),
                 lower=lower,
                 upper=upper,
                 equals=equals,
@@ -337,6 +343,25 @@ def constraint_rows(source, case=None, tol=DEFAULT_TOL, refs=None, tols=None):
             )
         )
     return rows
+
+
+#: What a dimensionless constraint counts in, by the end of its name (first match): the
+#: A-weighted level in decibels, Mach numbers, the static margin in mean aerodynamic chords,
+#: the state of charge as a fraction of the capacity, other margins and ratios as ratios.
+DIMENSIONLESS_UNITS = (
+    ("_spl_a", "dBA"),
+    ("tip_mach", "Mach"),
+    ("static_margin", "MAC"),
+    ("state_of_charge", "fraction"),
+    ("", "ratio"),
+)
+
+
+def display_units(row):
+    """Return the units a constraint row is shown in: its own, or what a ratio counts in."""
+    if row["units"]:
+        return row["units"]
+    return next(label for end, label in DIMENSIONLESS_UNITS if row["name"].endswith(end))
 
 
 def _limit_text(row):
@@ -387,12 +412,32 @@ def format_constraint_status(rows):
         status = status_word(r["active"], r["violated"])
         counts[status.split()[0]] += 1
         lines.append(
-            f"  {r['name']:<38}{r['units'] or '-':<9}{_limit_text(r):>22}  {value:>24}  {status}"
+            f"  {r['name']:<38}{display_units(r):<9}{_limit_text(r):>22}  {value:>24}  {status}"
         )
+    entries = sum(r["values"].size for r in rows)
     lines.append(
-        f"  {len(rows)} constraints: {counts['satisfied']} satisfied, {counts['active']} active, "
-        f"{counts['violated']} violated"
+        f"  {len(rows)} constraints ({entries} rows): {counts['satisfied']} satisfied, "
+        f"{counts['active']} active, {counts['violated']} violated"
     )
+    return "\n".join(lines)
+
+
+def constraint_summary(rows):
+    """
+    Return the violated and the active constraints of :func:`constraint_rows`, one line each.
+
+    Each constraint is named with how many of its rows are violated (or active) when not all.
+    """
+    groups = {"violated": [], "active": []}
+    for r in rows:
+        status = status_word(r["active"], r["violated"])
+        word, _, detail = status.partition(" ")
+        if word in groups:
+            groups[word].append(f"{r['name']}{' ' + detail if detail else ''}")
+    lines = []
+    for word, names in groups.items():
+        listed = ", ".join(names) if names else "none"
+        lines.append(f"  {word} ({len(names)} of {len(rows)} constraints): {listed}")
     return "\n".join(lines)
 
 

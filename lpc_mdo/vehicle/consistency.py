@@ -11,10 +11,13 @@ import dataclasses
 
 import numpy as np
 
+from lpc_mdo.components.motor.parameters import MotorParameters
+from lpc_mdo.components.structures.wing_box_geometry import WING_BOX_SECTIONS
 from lpc_mdo.components.weights.item_placement import (
     NASA_LANDING_GEAR_STATION,
     NASA_SYSTEMS_STATION,
 )
+from lpc_mdo.vehicle.airframe import check_airframe
 from lpc_mdo.vehicle.condition_contract import CONDITION_KINDS
 from lpc_mdo.vehicle.parts import (
     _IDENTIFIER,
@@ -79,6 +82,25 @@ def _close_or_equal(a, b) -> bool:
     return a == b if isinstance(a, str) else _close(a, b)
 
 
+#: Largest blade chord over the rotor radius: the root chords of built lift rotors and
+#: propellers are below 0.3 R (the reference's 0.2 R); beyond 0.5 R a blade is a paddle,
+#: outside the slender-blade assumption of the BEM and Pitt-Peters models.
+MAX_CHORD_OVER_RADIUS = 0.5
+
+
+def _check_blades(lift_rotors: tuple[Rotor, ...], pusher: Rotor) -> None:
+    """Every chord control point shorter than half its rotor's radius."""
+    rotors = [(f"lift_rotors[{i}]", r) for i, r in enumerate(lift_rotors)] + [("pusher", pusher)]
+    for path, rotor in rotors:
+        longest = max(rotor.chord_cp)
+        if longest > MAX_CHORD_OVER_RADIUS * rotor.radius:
+            raise VehicleSpecError(
+                f"'{path}.chord_cp' = {list(rotor.chord_cp)!r} is out of range: every chord "
+                f"must be <= {MAX_CHORD_OVER_RADIUS:g} x '{path}.radius' = "
+                f"{MAX_CHORD_OVER_RADIUS * rotor.radius:.4g} (m; a slender blade)"
+            )
+
+
 def _check_pusher(pusher: Rotor) -> None:
     if pusher.pair != _PUSHER_GROUP:
         raise VehicleSpecError(
@@ -115,7 +137,94 @@ def _check_conditions(parts: dict) -> None:
         CONDITION_KINDS[c.kind].check(i, c, vehicle)
 
 
+#: Names of the full model's own subsystems beside the conditions (groups/lpc.py), which a
+#: condition name may not take.
+RESERVED_NAMES = frozenset(
+    ["design_variables", "vehicle", "power_mux", "mission", "battery"]
+    + [
+        f"{prefix}_{name}{suffix}"
+        for prefix in ("lift", "pusher")
+        for name in ("margin", "voltage_margin")
+        for suffix in ("", "_gather")
+    ]
+)
+
+
+def _check_condition_names(conditions: tuple[DesignCondition, ...]) -> None:
+    """Condition names that can name a subsystem of the model: ASCII, no leading '_', free."""
+    for i, c in enumerate(conditions):
+        if not c.name.isascii() or c.name.startswith("_") or c.name in RESERVED_NAMES:
+            raise VehicleSpecError(
+                f"'conditions[{i}].name' = {c.name!r} is not allowed: must be an ASCII "
+                "identifier that does not start with '_' and is none of the model's own "
+                f"subsystems ({', '.join(sorted(RESERVED_NAMES))})"
+            )
+
+
+def _check_material(material) -> None:
+    """Check G = E/(2 (1 + nu)) <= E/2 (isotropic) and an allowable below 1 % strain."""
+    e, g = material.youngs_modulus, material.shear_modulus
+    if g > e / 2.0:
+        raise VehicleSpecError(
+            f"'material.shear_modulus' = {g:g} is out of range: must be <= "
+            f"'material.youngs_modulus' / 2 = {e / 2.0:g} (Pa; G = E/(2 (1 + nu)) of an "
+            "isotropic material)"
+        )
+    if material.allowable_stress > 0.01 * e:
+        raise VehicleSpecError(
+            f"'material.allowable_stress' = {material.allowable_stress:g} is out of range: "
+            f"must be <= 1 % of 'material.youngs_modulus' = {0.01 * e:g} (Pa; airframe materials "
+            "yield or reach their design allowables below 1 % strain: aluminium alloys about "
+            "0.7 %)"
+        )
+
+
+def _check_buildable(parts: dict) -> None:
+    """Check the fixed models the vehicle needs: its motor winding and its wing-box section."""
+    _check_material(parts["material"])
+    m = parts["motor"]
+    try:
+        MotorParameters(
+            pole_pairs=m.pole_pairs,
+            phases=m.num_phases,
+            num_slots=m.num_slots,
+            rated_current=m.rated_current,
+            voltage_limit=m.voltage_limit,
+            gear_ratio=m.gear_ratio,
+            torque_density=m.torque_density,
+        )
+    except ValueError as err:
+        raise VehicleSpecError(f"'motor' (num_slots, pole_pairs, num_phases): {err}") from err
+    airfoil, box = parts["wing"].airfoil, parts["wing_box"]
+    if box.rear_spar <= box.front_spar:
+        raise VehicleSpecError(
+            f"'wing_box.rear_spar' = {box.rear_spar!r} is out of range: must be > "
+            f"'wing_box.front_spar' = {box.front_spar!r}"
+        )
+    section = WING_BOX_SECTIONS.get(airfoil)
+    layout = (box.front_spar, box.rear_spar, box.beam_axis)
+    if section is None or (section.front_spar, section.rear_spar, section.beam_axis) != layout:
+        packaged = ", ".join(
+            f"{name!r} with front_spar {s.front_spar:g}, rear_spar {s.rear_spar:g}, beam_axis "
+            f"{s.beam_axis:g}"
+            for name, s in sorted(WING_BOX_SECTIONS.items())
+        )
+        key = "wing.airfoil" if section is None else "wing_box.front_spar"
+        raise VehicleSpecError(
+            f"'{key}': the wing box of airfoil {airfoil!r} with front_spar {box.front_spar:g}, "
+            f"rear_spar {box.rear_spar:g}, beam_axis {box.beam_axis:g} has no packaged section "
+            f"properties; allowed: {packaged} (docs theory/structures)"
+        )
+
+
 def _check_mission(mission: Mission, conditions: tuple[DesignCondition, ...]) -> None:
+    for i, c in enumerate(conditions):
+        if c.energy_weight > 0 and c.duration <= 0:
+            raise VehicleSpecError(
+                f"'conditions[{i}].duration' = {c.duration!r} is out of range: a mission "
+                f"segment (energy_weight = {c.energy_weight!r} > 0) must last > 0 s; set "
+                f"energy_weight = 0 to keep '{c.name}' as a design condition outside the mission"
+            )
     steady = [c.name for c in conditions if c.kind == "steady"]
     if mission.cruise_condition not in steady:
         raise VehicleSpecError(
@@ -193,13 +302,34 @@ def _check_rotor_positions(lift_rotors: tuple[Rotor, ...], pusher: Rotor) -> Non
                 )
 
 
+#: Smallest usable state-of-charge window, initial less final: a narrower window flies the
+#: reference mission's hover alone (about 2 % of its energy) and little more.
+MIN_SOC_WINDOW = 0.05
+
+
 def _check_limits(parts: dict) -> None:
-    """``min_final_soc`` below ``initial_soc``; the noise observer at least a rotor radius away."""
+    """
+    Check the state-of-charge window, the fixed masses and the noise observer.
+
+    The window must be usable, the fixed masses and the battery lighter than the design gross
+    mass, the noise observer at least a rotor radius away.
+    """
     limits, battery = parts["constraints"], parts["battery"]
-    if limits.min_final_soc >= battery.initial_soc:
+    if limits.min_final_soc > battery.initial_soc - MIN_SOC_WINDOW:
         raise VehicleSpecError(
-            f"'constraints.min_final_soc' = {limits.min_final_soc!r} is out of range: must be < "
-            f"'battery.initial_soc' = {battery.initial_soc!r} (the mission uses energy)"
+            f"'constraints.min_final_soc' = {limits.min_final_soc!r} is out of range: must be "
+            f"<= 'battery.initial_soc' = {battery.initial_soc!r} - {MIN_SOC_WINDOW:g} (the "
+            "mission needs a usable state-of-charge window)"
+        )
+    masses = parts["masses"]
+    other = masses.other if masses.other_rule == "fixed" else 0.0  # calibrated: not read
+    fixed = masses.payload + masses.systems + other + battery.mass
+    if fixed >= masses.design_gross_mass:
+        raise VehicleSpecError(
+            f"'masses.payload' = {masses.payload!r} is out of range: payload + systems "
+            f"{masses.systems:g} + other {other:g} + battery.mass {battery.mass:g} = "
+            f"{fixed:g} kg must be < 'masses.design_gross_mass' = "
+            f"{masses.design_gross_mass!r} (the airframe, rotors and motors weigh the rest)"
         )
     radius = max(r.radius for r in (*parts["lift_rotors"], parts["pusher"]))
     distance = parts["noise_observer"].distance
@@ -227,9 +357,21 @@ def min_fuselage_length(parts) -> float:
     return parts["fuselage"].cabin_end + min_tail_cone_length(parts)
 
 
+#: Narrowest seat with its share of the side clearance (m): 0.46 m, the economy seat width of
+#: Kundu, Aircraft Design, 2010, Table 4.5 (the reference's two seats abreast in 1.557 m).
+MIN_SEAT_WIDTH = 0.46
+
+
 def _check_cabin(parts: dict) -> None:
     """Check that the fuselage holds nose bay, cabin and tail cone, and the cabin its seats."""
     fuselage = parts["fuselage"]
+    if fuselage.seats_abreast * MIN_SEAT_WIDTH > fuselage.max_width:
+        raise VehicleSpecError(
+            f"'fuselage.seats_abreast' = {fuselage.seats_abreast} is out of range: "
+            f"{fuselage.seats_abreast} seats of at least {MIN_SEAT_WIDTH:g} m (Kundu, Aircraft "
+            f"Design, Table 4.5) need a fuselage wider than 'fuselage.max_width' = "
+            f"{fuselage.max_width:g} (m)"
+        )
     shortest = min_fuselage_length(parts)
     if fuselage.length < shortest:
         raise VehicleSpecError(
@@ -273,11 +415,20 @@ def _check_cabin(parts: dict) -> None:
 
 
 def _check_geometry(parts: dict) -> None:
-    """Thrust axes, rotor positions, the cabin and the energy and noise limits (see above)."""
+    """
+    Check the geometry across parts.
+
+    Thrust axes, rotor positions, the parts on the airframe (:mod:`lpc_mdo.vehicle.airframe`),
+    blade chords, the cabin and the energy and noise limits (see above).
+    """
     _check_thrust_axes(parts["lift_rotors"], parts["pusher"])
     _check_rotor_positions(parts["lift_rotors"], parts["pusher"])
+    check_airframe(parts)
+    _check_blades(parts["lift_rotors"], parts["pusher"])
     _check_cabin(parts)
     _check_limits(parts)
+    _check_buildable(parts)
+    _check_condition_names(parts["conditions"])
 
 
 def _check_wing(wing: Wing) -> Wing:
@@ -320,3 +471,20 @@ def _check_wing(wing: Wing) -> Wing:
             )
     taper = wing.sections[-1].tip_chord / wing.sections[0].root_chord
     return dataclasses.replace(wing, taper_ratio=taper)
+
+
+def check_across_parts(vehicle) -> None:
+    """
+    Re-check a vehicle built another way than from a file (a sweep's) across its parts.
+
+    The geometry, mass and energy rules and the mission rules of a vehicle file
+    (:func:`_check_geometry`, :func:`_check_mission`).
+
+    Raises
+    ------
+    VehicleSpecError
+        At the first rule broken, naming the key.
+    """
+    parts = {f.name: getattr(vehicle, f.name) for f in dataclasses.fields(vehicle)}
+    _check_geometry(parts)
+    _check_mission(parts["mission"], parts["conditions"])

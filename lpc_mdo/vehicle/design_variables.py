@@ -37,6 +37,13 @@ from lpc_mdo.vehicle.schema import (
 # Design variables
 
 
+#: Largest factor between a design variable's ref and the magnitude of its bounds.
+REF_RANGE = 1000.0
+#: Units of design variables that are positive by nature (lengths, areas, masses, currents;
+#: rotor speeds too, all but the transition roll/yaw differentials).
+POSITIVE_UNITS = ("m", "m**2", "kg", "A")
+
+
 @dataclass(frozen=True)
 class _DVSpec:
     """What the vehicle fixes about a design variable: units, shape and any linked initial value."""
@@ -126,12 +133,34 @@ def _dv_values(value, shape: tuple[int, ...], path: str) -> tuple[float, ...]:
 
 def _read_design_variables(data, parts: dict) -> dict[str, DesignVariable]:
     specs = _design_variable_specs(parts)
+    if isinstance(data, Mapping):
+        _check_shared_prefixes(data, specs, parts["conditions"])
     _check_keys(data, dict.fromkeys(specs, "design-variable table"), "design_variables")
     # In the file's order (the order of the model's design-variable outputs).
     return _ReadOnlyDict(
         (name, _read_design_variable(data[name], specs[name], f"design_variables.{name}"))
         for name in data
     )
+
+
+def _check_shared_prefixes(data, specs, conditions) -> None:
+    """Name a table left over by a condition that shares another's ``design_variable_prefix``.
+
+    Conditions with one prefix share one set of design variables (``{prefix}_*``, e.g. the five
+    transition points); a table under the condition's own name is then not read.
+    """
+    for i, c in enumerate(conditions):
+        if c.design_variable_prefix == c.name:
+            continue
+        for key in data:
+            if key not in specs and key.startswith(f"{c.name}_"):
+                raise VehicleSpecError(
+                    f"unknown key 'design_variables.{key}': 'conditions[{i}]' ({c.name!r}) has "
+                    f"design_variable_prefix = {c.design_variable_prefix!r}, so its design "
+                    f"variables are the '{c.design_variable_prefix}_*' tables (shared with the "
+                    "conditions of that prefix); allowed: remove the "
+                    f"'{c.name}_*' tables, or give {c.name!r} its own prefix"
+                )
 
 
 def _read_design_variable(data, spec: _DVSpec, path: str) -> DesignVariable:
@@ -169,6 +198,24 @@ def _read_design_variable(data, spec: _DVSpec, path: str) -> DesignVariable:
                         f"values need units = 'deg')"
                     )
     ref = _number(data["ref"], _Spec(units=units, gt=0), f"{path}.ref") * scale
+    magnitude = max(abs(x) for x in (*lower, *upper))
+    if magnitude > 0 and not magnitude / REF_RANGE <= ref <= magnitude * REF_RANGE:
+        raise VehicleSpecError(
+            f"'{path}.ref' = {_fmt(ref / scale)} is out of range: must be within a factor "
+            f"{REF_RANGE:g} of the bounds' magnitude {_fmt(magnitude / scale)} ({units}), i.e. in "
+            f"[{_fmt(magnitude / scale / REF_RANGE)}, {_fmt(magnitude / scale * REF_RANGE)}] "
+            "(the optimizer sees value/ref, which should be of order one)"
+        )
+    speed = spec.units == "rpm" and "roll_yaw" not in path  # a differential may be negative
+    if spec.units in POSITIVE_UNITS or speed:
+        for k, lo in enumerate(lower):
+            if lo <= 0.0:
+                raise VehicleSpecError(
+                    f"'{path}.lower"
+                    + "".join(f"[{i}]" for i in np.unravel_index(k, spec.shape))
+                    + f"' = {_fmt(lo)} is out of range: must be > 0 ({units}; a length, area, "
+                    "mass, current or rotor speed is positive)"
+                )
 
     def entry(key, k):
         if len(initial) == 1:
@@ -176,6 +223,12 @@ def _read_design_variable(data, spec: _DVSpec, path: str) -> DesignVariable:
         return f"'{path}.{key}" + "".join(f"[{i}]" for i in np.unravel_index(k, spec.shape)) + "'"
 
     source = f"; the initial value is taken from '{spec.initial_from}'" if spec.initial_from else ""
+    for k, (lo, up) in enumerate(zip(lower, upper, strict=True)):
+        if lo > up:
+            raise VehicleSpecError(
+                f"{entry('lower', k)} = {_fmt(lo / scale)} is out of range: must be <= "
+                f"{entry('upper', k)} = {_fmt(up / scale)} ({units}; the bounds are swapped?)"
+            )
     for k, (x0, lo, up) in enumerate(zip(initial, lower, upper, strict=True)):
         if not lo <= x0 <= up:
             raise VehicleSpecError(

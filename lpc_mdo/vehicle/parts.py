@@ -355,7 +355,10 @@ class Rotor:
     hub_radius_ratio: float = _param(ge=0, le=0.5)
     # Chord up to 2 m (the reference root chord is 0.3 m; catches mm).
     chord_cp: tuple[float, ...] = _param("m", gt=0, le=2, shape=(4,))
-    twist_cp: tuple[float, ...] = _angle(gt=-90, lt=90, shape=(4,))
+    # Blade pitch within 80 deg of the disk plane either way: a section pitched further is
+    # nearly edge-on to the rotation, so its lift acts in the disk plane (no thrust); the
+    # reference pusher's root is at 60 deg, its lift rotors' at 30 deg.
+    twist_cp: tuple[float, ...] = _angle(ge=-80, le=80, shape=(4,))
     spin_direction: int = _param(choices=(-1, 1))
     thrust_axis: tuple[float, ...] = _param(shape=(3,), unit_vector=True)
     pair: int = _param(ge=0, le=_PUSHER_GROUP)

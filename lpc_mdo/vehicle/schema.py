@@ -15,6 +15,7 @@ import functools
 import math
 import os
 import typing
+import unicodedata
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
@@ -138,7 +139,15 @@ def _check_keys(
     for key in data:
         if key not in allowed:
             names = ", ".join(repr(k) for k in sorted(allowed))
-            raise VehicleSpecError(f"unknown key '{_join(path, key)}'; allowed keys: {names}")
+            odd = next((c for c in str(key) if not (c.isascii() and c.isprintable())), None)
+            note = (
+                f" (it holds the character {odd!r}, U+{ord(odd):04X}, which only looks like "
+                "plain text)"
+                if odd is not None
+                else ""
+            )
+            shown = _cut(_join(path, str(key)))
+            raise VehicleSpecError(f"unknown key {shown}{note}; allowed keys: {names}")
     for key, description in allowed.items():
         if key not in data and key not in optional:
             raise VehicleSpecError(f"missing key '{_join(path, key)}' ({description})")
@@ -219,6 +228,12 @@ def _polar_file(value: str, path: str) -> str:
         places = [os.path.join(base, candidate)] if base is not None else []
         places.append(os.path.join(os.getcwd(), candidate))
     found = next((p for p in places if os.path.isfile(p)), None)
+    other = next((p for p in places if os.path.exists(p) and not os.path.isfile(p)), None)
+    if found is None and other is not None:
+        kind = "a directory" if os.path.isdir(other) else "not a regular file (a pipe or device)"
+        raise VehicleSpecError(
+            f"'{path}' = {value!r}: '{os.path.abspath(other)}' is {kind}; allowed: a polar file"
+        )
     if found is None:
         looked = ", ".join(repr(os.path.abspath(p)) for p in places)
         raise VehicleSpecError(f"'{path}' = {value!r}: polar file not found (looked at {looked})")
@@ -230,9 +245,48 @@ def _polar_file(value: str, path: str) -> str:
     return found
 
 
+#: Longest name or keyword (characters) and longest polar-file path in a vehicle file.
+_MAX_NAME = 200
+_MAX_PATH = 4096
+
+
+def _cut(text: str) -> str:
+    """``repr`` of a text with control characters escaped, cut to 60 characters for messages."""
+    shown = repr(text[:60])
+    return shown if len(text) <= 60 else f"{shown}... ({len(text)} characters)"
+
+
+def check_field(cls, name: str, value, key: str) -> float:
+    """
+    Check a number against the range of field ``name`` of vehicle part ``cls`` (file units).
+
+    The range a vehicle file's ``key`` has (e.g. ``battery.energy_density_wh_per_kg`` in
+    Wh/kg), for values that reach a vehicle another way (a sweep); returns the stored value.
+
+    Raises
+    ------
+    VehicleSpecError
+        Naming ``key``, the value and the range.
+    """
+    spec = _spec(next(f for f in dataclasses.fields(cls) if f.name == name))
+    return _number(value, spec, key)
+
+
 def _string(value, spec: _Spec, path: str) -> str:
     if not isinstance(value, str):
         raise VehicleSpecError(f"'{path}' must be a string, got {_show(value)}")
+    control = next((c for c in value if unicodedata.category(c) in ("Cc", "Cf")), None)
+    longest = _MAX_PATH if spec.polar_file else _MAX_NAME
+    if control is not None or len(value) > longest:
+        why = (
+            f"it holds the control character {control!r}"
+            if control is not None
+            else f"it has {len(value)} characters"
+        )
+        raise VehicleSpecError(
+            f"'{path}' = {_cut(value)} is not allowed: {why}; allowed: printable text of at "
+            f"most {longest} characters"
+        )
     if spec.choices and value not in spec.choices:
         if spec.polar_file and value.lower().endswith(_POLAR_SUFFIXES):
             return _polar_file(value, path)
