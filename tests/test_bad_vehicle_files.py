@@ -798,6 +798,27 @@ DICT_CASES = [
         )
     ],
     (
+        "rear inner lift disks through the cabin",
+        _mirror_pair(3, 5, "hub_position", [-3.6, -1.6, -0.9]),
+        "lift_rotors[3].hub_position",
+        "cuts through the fuselage",
+    ),
+    (
+        "rear inner lift disks through the pusher disk",
+        _mirror_pair(3, 5, "hub_position", [-8.5, -2.0, -1.38]),
+        "lift_rotors[3].hub_position",
+        "and the pusher disk",
+    ),
+    *[
+        (
+            f"pusher disk at x = {x} m, inside the body's length",
+            _set("pusher", "hub_position", [x, 0.0, -0.816]),
+            "pusher.hub_position",
+            "cuts through the fuselage",
+        )
+        for x in (-4.5, -8.0)
+    ],
+    (
         "two seats abreast in 0.6 m",
         _set("fuselage", "max_width", 0.6),
         "fuselage.seats_abreast",

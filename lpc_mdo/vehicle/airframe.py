@@ -24,6 +24,11 @@ The rules, with L the fuselage length, W its width, H its height, the body's bot
   span and within a rotor radius of its hub's y;
 - *the pusher at the tail*: its hub within half the body width of the symmetry plane, behind
   the wing's root trailing edge and at most one pusher radius behind the tail end;
+- *no disk through the fuselage or another disk*: a lift disk whose plane lies within the
+  body's height must stay clear of the body's plan outline (nose to tail end, half its width
+  either side), a pusher disk whose plane crosses the body's length must stay clear of its
+  cross-section, and no lift disk may cut through the pusher disk (the body's outline is a box
+  here; the optimizer's clearances, :mod:`lpc_mdo.vehicle.clearances`, keep the stated floors);
 - *mass items inside the airframe*: the battery, payload, systems, power electronics and other
   masses between the nose and the tail end, within the half span, and at most H/2 above the
   body's top or below its bottom.
@@ -33,6 +38,8 @@ fuselage, wing, conventional or T-tail, lift rotors on booms, a pusher at the ta
 """
 
 from __future__ import annotations
+
+import math
 
 from lpc_mdo.vehicle.schema import VehicleSpecError
 
@@ -175,6 +182,55 @@ def _check_rotors(parts: dict, env: _Envelope) -> None:
     _check_height(env, "pusher.hub_position", hub, "the pusher's hub")
 
 
+def _check_disks_through_the_body(parts: dict, env: _Envelope) -> None:
+    body = (
+        f"the fuselage (x in [{-env.length:.4g}, 0], |y| <= {env.half_width:.4g}, z in "
+        f"[{env.top:.4g}, {env.bottom:.4g}] m)"
+    )
+    for i, rotor in enumerate(parts["lift_rotors"]):
+        x, y, z = rotor.hub_position
+        if not env.top < z < env.bottom:
+            continue  # the disk's plane passes above or below the body
+        gap = math.hypot(max(-env.length - x, x, 0.0), max(abs(y) - env.half_width, 0.0))
+        if gap < rotor.radius:
+            _refuse(
+                f"lift_rotors[{i}].hub_position",
+                _fmt(rotor.hub_position),
+                f"its disk (radius {rotor.radius:.4g} m, plane at z = {z:.4g}) cuts through "
+                f"{body}: its hub is {gap:.4g} m from the body's side; allowed: a hub at least "
+                "a radius from the body, or the disk above or below it",
+            )
+    pusher = parts["pusher"]
+    x, y, z = pusher.hub_position
+    if -env.length < x < 0.0:
+        gap = math.hypot(max(abs(y) - env.half_width, 0.0), max(env.top - z, z - env.bottom, 0.0))
+        if gap < pusher.radius:
+            _refuse(
+                "pusher.hub_position",
+                _fmt(pusher.hub_position),
+                f"its disk (radius {pusher.radius:.4g} m, plane at x = {x:.4g}) cuts through "
+                f"{body}; allowed: behind the tail end, x <= {-env.length:.4g}, or clear of "
+                "the body's cross-section",
+            )
+
+    for i, rotor in enumerate(parts["lift_rotors"]):  # a lift disk through the pusher disk
+        xh, yh, zh = rotor.hub_position
+        xp, yp, zp = pusher.hub_position
+        dx, dz = abs(xp - xh), abs(zh - zp)
+        if dx < rotor.radius and dz < pusher.radius:
+            # The two disks' chords on the line x = xp, z = zh, where their planes meet.
+            half_lift = math.sqrt(rotor.radius**2 - dx**2)
+            half_pusher = math.sqrt(pusher.radius**2 - dz**2)
+            if abs(yh - yp) < half_lift + half_pusher:
+                _refuse(
+                    f"lift_rotors[{i}].hub_position",
+                    _fmt(rotor.hub_position),
+                    f"its disk (radius {rotor.radius:.4g} m) and the pusher disk (radius "
+                    f"{pusher.radius:.4g} m at {_fmt(pusher.hub_position)}) cut through each "
+                    "other; allowed: disks that do not meet",
+                )
+
+
 def _check_mass_items(parts: dict, env: _Envelope) -> None:
     masses = parts["masses"]
     items = (
@@ -210,4 +266,5 @@ def check_airframe(parts: dict) -> None:
     env = _Envelope(parts)
     _check_surface_roots(parts, env)
     _check_rotors(parts, env)
+    _check_disks_through_the_body(parts, env)
     _check_mass_items(parts, env)
