@@ -49,16 +49,7 @@ _ATOMIC_VEHICLE_NOTICE = (
 
 def motor_parameters(vehicle):
     """Return the PMSM's fixed parameters from the vehicle file's [motor] table."""
-    m = vehicle.motor
-    return MotorParameters(
-        pole_pairs=m.pole_pairs,
-        phases=m.num_phases,
-        num_slots=m.num_slots,
-        rated_current=m.rated_current,
-        voltage_limit=m.voltage_limit,
-        gear_ratio=m.gear_ratio,
-        torque_density=m.torque_density,
-    )
+    return MotorParameters.of_motor_table(vehicle.motor)
 
 
 def motor_loadings(vehicle):

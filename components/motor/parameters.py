@@ -161,6 +161,24 @@ class MotorParameters:
     peak_torque_coefficients: tuple = (0.4840, 3.3169, 60.8142)
     magnet_temperature: float = 75.0
 
+    @classmethod
+    def of_motor_table(cls, motor):
+        """
+        Return the parameters of a vehicle file's ``[motor]`` table (``vehicle.motor``).
+
+        Raises ValueError (naming the parameter) for a winding or a number the model cannot
+        take; the vehicle loader calls it so that such a file is refused before any model.
+        """
+        return cls(
+            pole_pairs=motor.pole_pairs,
+            phases=motor.num_phases,
+            num_slots=motor.num_slots,
+            rated_current=motor.rated_current,
+            voltage_limit=motor.voltage_limit,
+            gear_ratio=motor.gear_ratio,
+            torque_density=motor.torque_density,
+        )
+
     def __post_init__(self):
         for name in ("pole_pairs", "phases", "num_slots"):
             value = getattr(self, name)

@@ -182,17 +182,8 @@ def _check_material(material) -> None:
 def _check_buildable(parts: dict) -> None:
     """Check the fixed models the vehicle needs: its motor winding and its wing-box section."""
     _check_material(parts["material"])
-    m = parts["motor"]
     try:
-        MotorParameters(
-            pole_pairs=m.pole_pairs,
-            phases=m.num_phases,
-            num_slots=m.num_slots,
-            rated_current=m.rated_current,
-            voltage_limit=m.voltage_limit,
-            gear_ratio=m.gear_ratio,
-            torque_density=m.torque_density,
-        )
+        MotorParameters.of_motor_table(parts["motor"])
     except ValueError as err:
         raise VehicleSpecError(f"'motor' (num_slots, pole_pairs, num_phases): {err}") from err
     airfoil, box = parts["wing"].airfoil, parts["wing_box"]
