@@ -462,10 +462,11 @@ def _preflight(args):
     command = args.command
     args.vehicle_spec = load_vehicle_argument("--vehicle", args.vehicle)
     check_output_folder("--output-dir", args.output_dir)
+    inputs, written = _input_files(args), _files_written(args)
     if command == "analyze" and args.n2 is not None:
-        _check_n2_file(args)
-    for path in _case_files_written(args):
-        _not_an_input("--output-dir", path, _input_files(args))
+        _check_n2_file(args.n2, inputs, written)
+    for path in written:
+        _not_an_input("--output-dir", path, inputs)
     if command in ("optimize", "sweep"):
         if args.optimizer is None:  # a given --optimizer was checked by its type
             names = study_plan.SEQUENCE if args.problem == "sequence" else [args.problem]
@@ -533,25 +534,24 @@ def _no_option_twice(argv):
             seen.add(flag)
 
 
-def _check_n2_file(args):
-    """``--n2``: a new HTML file, none of the command's inputs or its other outputs."""
-    text = args.n2
+def _check_n2_file(text, inputs, written):
+    """``--n2``: a new HTML file, none of the command's ``inputs`` or ``written`` files."""
     if not text.strip() or text.endswith(("/", os.sep)):
         why = "is empty" if not text.strip() else "names a folder"
         raise CLIError(f"'--n2' = {text!r} {why}: must be a file name, e.g. n2.html")
     check_output_file("--n2", text)
-    _not_an_input("--n2", text, _input_files(args))
+    _not_an_input("--n2", text, inputs)
     target = Path(text).absolute()
-    for written in _case_files_written(args):
-        if target == written.absolute():
+    for path in written:
+        if target == path.absolute():
             raise CLIError(
-                f"'--n2' = {text!r} is the file {written.name} the command writes into "
+                f"'--n2' = {text!r} is the file {path.name} the command writes into "
                 "--output-dir: must be another file name, e.g. n2.html"
             )
 
 
-def _case_files_written(args):
-    """Return the case files a command writes into its output folder (checked against inputs)."""
+def _files_written(args):
+    """Return the files a command writes into its output folder (checked against inputs)."""
     out = Path(args.output_dir)
     if args.command == "analyze":
         return [out / name for name in ("cases.sql", "constraints.md", "constraints.csv")]
