@@ -312,16 +312,10 @@ def check_integer(
         The value as an int.
     """
     plain = _plain(value)
-    if isinstance(plain, int) and not isinstance(plain, bool):
-        shown = plain if abs(plain) < 2**63 else _big_integer_as_float(plain)  # beyond int64
-        check_range(name, shown, lower=lower, upper=upper, allowed=allowed, error=error,
-                    where=where)  # fmt: skip
-    elif (
-        isinstance(plain, bool)
-        or not isinstance(plain, float)
-        or not math.isfinite(plain)
-        or not plain.is_integer()
-    ):
+    # An int of any size is an integer (check_range compares those beyond int64 as floats); a
+    # float must be finite and integral.
+    integral_float = isinstance(plain, float) and math.isfinite(plain) and plain.is_integer()
+    if isinstance(plain, bool) or not (isinstance(plain, int) or integral_float):
         raise error(f"{_prefix(where)}'{name}' must be an integer, got {_show(value)}")
     check_range(name, plain, lower=lower, upper=upper, allowed=allowed, error=error, where=where)
     return int(plain)
