@@ -206,22 +206,20 @@ def _read_design_variable(data, spec: _DVSpec, path: str) -> DesignVariable:
             f"[{_fmt(magnitude / scale / REF_RANGE)}, {_fmt(magnitude / scale * REF_RANGE)}] "
             "(the optimizer sees value/ref, which should be of order one)"
         )
-    speed = spec.units == "rpm" and "roll_yaw" not in path  # a differential may be negative
-    if spec.units in POSITIVE_UNITS or speed:
-        for k, lo in enumerate(lower):
-            if lo <= 0.0:
-                raise VehicleSpecError(
-                    f"'{path}.lower"
-                    + "".join(f"[{i}]" for i in np.unravel_index(k, spec.shape))
-                    + f"' = {_fmt(lo)} is out of range: must be > 0 ({units}; a length, area, "
-                    "mass, current or rotor speed is positive)"
-                )
 
     def entry(key, k):
         if len(initial) == 1:
             return f"'{path}.{key}'"
         return f"'{path}.{key}" + "".join(f"[{i}]" for i in np.unravel_index(k, spec.shape)) + "'"
 
+    speed = spec.units == "rpm" and "roll_yaw" not in path  # a differential may be negative
+    if spec.units in POSITIVE_UNITS or speed:
+        for k, lo in enumerate(lower):
+            if lo <= 0.0:
+                raise VehicleSpecError(
+                    f"{entry('lower', k)} = {_fmt(lo)} is out of range: must be > 0 ({units}; "
+                    "a length, area, mass, current or rotor speed is positive)"
+                )
     source = f"; the initial value is taken from '{spec.initial_from}'" if spec.initial_from else ""
     for k, (lo, up) in enumerate(zip(lower, upper, strict=True)):
         if lo > up:
