@@ -56,8 +56,11 @@ def _with_value(vehicle, parameter, value):
     if parameter == "energy_density":
         stored = check_field(Battery, "energy_density", value, "battery.energy_density_wh_per_kg")
         return replace(vehicle, battery=replace(vehicle.battery, energy_density=stored))
-    limits = {"final_soc": "min_final_soc", "max_noise": "max_noise"}
-    limits["min_static_margin"] = "min_static_margin"
+    limits = {
+        "final_soc": "min_final_soc",
+        "max_noise": "max_noise",
+        "min_static_margin": "min_static_margin",
+    }
     if parameter in limits:
         name = limits[parameter]
         stored = check_field(ConstraintLimits, name, value, f"constraints.{name}")
