@@ -82,6 +82,11 @@ def _close_or_equal(a, b) -> bool:
     return a == b if isinstance(a, str) else _close(a, b)
 
 
+def _named_rotors(lift_rotors: tuple[Rotor, ...], pusher: Rotor) -> list[tuple[str, Rotor]]:
+    """Every rotor with its key in the vehicle file: ``lift_rotors[i]``, then ``pusher``."""
+    return [(f"lift_rotors[{i}]", r) for i, r in enumerate(lift_rotors)] + [("pusher", pusher)]
+
+
 #: Largest blade chord over the rotor radius: the root chords of built lift rotors and
 #: propellers are below 0.3 R (the reference's 0.2 R); beyond 0.5 R a blade is a paddle,
 #: outside the slender-blade assumption of the BEM and Pitt-Peters models.
@@ -90,7 +95,7 @@ MAX_CHORD_OVER_RADIUS = 0.5
 
 def _check_blades(lift_rotors: tuple[Rotor, ...], pusher: Rotor) -> None:
     """Every chord control point shorter than half its rotor's radius."""
-    rotors = [(f"lift_rotors[{i}]", r) for i, r in enumerate(lift_rotors)] + [("pusher", pusher)]
+    rotors = _named_rotors(lift_rotors, pusher)
     for path, rotor in rotors:
         longest = max(rotor.chord_cp)
         if longest > MAX_CHORD_OVER_RADIUS * rotor.radius:
@@ -270,7 +275,7 @@ def _check_rotor_positions(lift_rotors: tuple[Rotor, ...], pusher: Rotor) -> Non
     be at least R_i + R_j (no clearance is required: the reference's inner and outer rotors are
     0.16 m apart, 5 % of a diameter).
     """
-    rotors = [(f"lift_rotors[{i}]", r) for i, r in enumerate(lift_rotors)] + [("pusher", pusher)]
+    rotors = _named_rotors(lift_rotors, pusher)
     for k, (path_i, a) in enumerate(rotors):
         for path_j, b in rotors[k + 1 :]:
             d = np.subtract(b.hub_position, a.hub_position)
