@@ -89,6 +89,8 @@ def _airframe_cases():
             moved = list(base)
             moved[axis] = value
             fragment = {0: "nose to tail end", 1: "half span", 2: "must lie at z in"}[axis]
+            if key == "masses.payload_cg" and axis == 1:  # in the cabin, not only the span
+                fragment = "within half the fuselage width"
             cases.append((f"{key} {where}", _set(table, field, moved), key, fragment))
     for surface in ("wing", "horizontal_tail", "vertical_tail"):
         base = REFERENCE_DATA[surface]["root_leading_edge"]
@@ -205,7 +207,7 @@ DICT_CASES = [
         "observer 1e-9 m",
         _set("noise_observer", "distance", 1e-9),
         "noise_observer.distance",
-        "must be >= the largest rotor radius",
+        "must be >= 10 x the largest rotor radius",
     ),
     (
         "voltage 0.001 V",
@@ -259,13 +261,13 @@ DICT_CASES = [
         "lift disks overlap",
         _mirror_pair(2, 4, "hub_position", [-0.66020, -4.0, -0.77602]),
         "lift_rotors[2].hub_position",
-        "disk overlaps that of 'lift_rotors[0]'",
+        "overlaps that one's",
     ),
     (
         "front and rear disks overlap",
         _mirror_pair(1, 7, "hub_position", [-2.0, -5.715, -0.9]),
         "lift_rotors[1].hub_position",
-        "must be >= R_i + R_j = 3.048 m",
+        "R_i + R_j = 3.048 m",
     ),
     (
         "pusher at a lift hub",
@@ -286,10 +288,10 @@ DICT_CASES = [
         "must be <",
     ),
     (
-        "observer inside a rotor radius",
-        _set("noise_observer", "distance", 1.0),
+        "observer inside the rotors' near field",
+        _set("noise_observer", "distance", 12.0),
         "noise_observer.distance",
-        "1.524 (m)",
+        "10 x the largest rotor radius 1.524 = 15.24 (m)",
     ),
     # Further plausibility ranges (units mistaken, or absurd magnitudes)
     ("wing area 1e30", _set("wing", "area", 1e30), "wing.area", "in [0.1, 200] (m^2)"),
@@ -386,20 +388,20 @@ DICT_CASES = [
         "fuselage shorter than its cabin",
         _set("design_variables", "fuselage_length", "lower", 6.0),
         "design_variables.fuselage_length.lower",
-        "must be >= the lower end of the M4 regressions' data range = 6.4008 (m)",
+        "must be >= 6.4008 (m; the lower end of the M4 regressions' data range)",
     ),
     (
         # A fin of 5 m^2 has a 3.2504 m root chord: 3.85536 + 3.2504 = 7.1057 m.
         "fuselage bound cuts into the cabin",
-        _set("vertical_tail", "area", 5.0),
+        _set("fuselage", "seat_pitch", 1.0),
         "design_variables.fuselage_length.lower",
-        "must be >= fuselage.nose_length + cabin + shortest tail cone = 7.1057",
+        "must be >= 6.42884 (m; fuselage.nose_length + cabin + shortest tail cone)",
     ),
     (
         "fuselage beyond the regression data",
         _set("design_variables", "fuselage_length", "upper", 13.0),
         "design_variables.fuselage_length.upper",
-        "must be <= the upper end of the M4 regressions' data range = 11.8872 (m)",
+        "must be <= 11.8872 (m; the upper end of the M4 regressions' data range)",
     ),
     (
         "rotor radius in mm",
@@ -818,11 +820,149 @@ DICT_CASES = [
         )
         for x in (-4.5, -8.0)
     ],
+    # Disks through a surface, a fin under the belly, booms that do not reach their rotors.
+    (
+        "outer lift rotors in the wing",
+        _both(
+            _mirror_pair(0, 6, "hub_position", [-2.9, -5.715, -0.85]),
+            _mirror_pair(1, 7, "hub_position", [-6.0, -5.715, -1.37831]),
+        ),
+        "lift_rotors[0].hub_position",
+        "cuts through the wing",
+    ),
+    (
+        "rear inner lift rotors in the h-tail plane",
+        _mirror_pair(3, 5, "hub_position", [-7.6, -2.6, -0.88]),
+        "lift_rotors[3].hub_position",
+        "cuts through the horizontal tail",
+    ),
+    (
+        "fin reaching back through the pusher disk",
+        _set("vertical_tail", "root_leading_edge", [-6.99774, 0.0, -0.89454]),
+        "pusher.hub_position",
+        "cuts through the fin",
+    ),
+    (
+        "fin root under the belly",
+        _set("vertical_tail", "root_leading_edge", [-6.36517, 0.0, 1.3]),
+        "vertical_tail.root_leading_edge",
+        "at or above the fuselage's bottom",
+    ),
+    (
+        "booms in ft",
+        _set("booms", "length", 8.0),
+        "booms.length",
+        "must be in [2.263, 3.787] (m)",
+    ),
+    (
+        "1 micron wing root chord",
+        _set("wing", "sections", 0, "root_chord", 1e-6),
+        "wing.sections[0].root_chord",
+        "0.05 x the largest section chord",
+    ),
+    (
+        "blade roots that overlap at the hub",
+        _both(_all_lift_rotors("num_blades", 8), _all_lift_rotors("chord_cp", [0.5] * 4)),
+        "lift_rotors[0].chord_cp",
+        "the blade roots overlap",
+    ),
+    (
+        "fuselage height in ft",
+        _set("fuselage", "max_height", 5.538),
+        "fuselage.max_height",
+        "must be in [0.5, 2]",
+    ),
+    (
+        "radius intersection span fraction above 1/2",
+        _set("constraints", "radius_intersection", 0.6),
+        "constraints.radius_intersection",
+        "must be <= 0.5",
+    ),
+    # Speeds no wing within the bounds can fly, a transition faster than the cruise.
+    (
+        "cruise at 0.5 m/s",
+        _set("conditions", CRUISE, "speed", 0.5),
+        f"conditions[{CRUISE}].speed",
+        "must fly at >= 27.46 m/s",
+    ),
+    (
+        "+3g pull-up at 5 m/s",
+        _set("conditions", 13, "speed", 5.0),
+        "conditions[13].speed",
+        "must fly at >= 48.75 m/s",
+    ),
+    (
+        "transition point in mph",
+        _set("conditions", 5, "speed", 131.65),
+        "conditions[5].speed",
+        "no faster than the fastest 'steady' condition",
+    ),
+    # Design-variable tables in another unit: bounds outside what the quantity can be.
+    (
+        "hover rotor speeds in rad/s under units rpm",
+        _both(
+            _set("design_variables", "hover_lift_rpm", "lower", 52.36),
+            _set("design_variables", "hover_lift_rpm", "upper", 188.5),
+        ),
+        "design_variables.hover_lift_rpm.upper[0]",
+        "a tip speed of 50 m/s",
+    ),
+    (
+        "climb pusher speeds in rev/s under units rpm",
+        _set("design_variables", "climb_pusher_rpm", "upper", 41.67),
+        "design_variables.climb_pusher_rpm.upper",
+        "a table in rad/s or rev/s?",
+    ),
+    (
+        "pusher speed bound with supersonic tips",
+        _set("design_variables", "cruise_pusher_rpm", "lower", 6000.0),
+        "design_variables.cruise_pusher_rpm.lower",
+        "(Mach 1.2)",
+    ),
+    (
+        "rated currents in mA",
+        _both(
+            _set("design_variables", "motor_rated_current", "upper", 1e6),
+            _set("design_variables", "motor_rated_current", "ref", 1e5),
+        ),
+        "design_variables.motor_rated_current.upper[0]",
+        "must be <= 5000 (A; the range of motor.rated_current)",
+    ),
+    (
+        "motor lengths in mm",
+        _both(
+            _set("design_variables", "motor_length", "upper", 250.0),
+            _set("design_variables", "motor_length", "ref", 100.0),
+        ),
+        "design_variables.motor_length.upper[0]",
+        "must be <= 1 (m",
+    ),
+    (
+        "motor length bound of 1 nm",
+        _set("design_variables", "motor_length", "lower", 1e-9),
+        "design_variables.motor_length.lower[0]",
+        "must be >= 0.01 (m",
+    ),
+    (
+        "spar thickness in mm",
+        _both(
+            _set("design_variables", "front_spar_thickness", "upper", 50.0),
+            _set("design_variables", "front_spar_thickness", "ref", 1.0),
+        ),
+        "design_variables.front_spar_thickness.upper[0]",
+        "must be <= 0.1 (m",
+    ),
+    (
+        "rotor radius bound in ft",
+        _set("design_variables", "rotor_radius", "upper", 20.0),
+        "design_variables.rotor_radius.upper[0]",
+        "must be <= 10 (m; the range of lift_rotors[i].radius",
+    ),
     (
         "two seats abreast in 0.6 m",
-        _set("fuselage", "max_width", 0.6),
+        _set("fuselage", "max_width", 0.9),
         "fuselage.seats_abreast",
-        "need a fuselage wider than 'fuselage.max_width' = 0.6",
+        "need a fuselage wider than 'fuselage.max_width' = 0.9",
     ),
     (
         "shear modulus above E/2",

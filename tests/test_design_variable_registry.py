@@ -71,12 +71,24 @@ def test_the_registry_drives_the_schema():
     assert gauge == [
         f"{p}_thickness" for p in ("front_spar", "rear_spar", "top_skin", "bottom_skin")
     ]
-    for name, spec in specs.items():
-        expect = (VEHICLE.material.min_gauge, "material.min_gauge") if name in gauge else None
-        if name == "fuselage_length":  # the cabin and the M4 data range (theory/geometry)
-            expect = (6.4008, "the lower end of the M4 regressions' data range")
-            assert spec.upper_max == (11.8872, "the upper end of the M4 regressions' data range")
-        assert spec.lower_min == expect, name
+    for name in gauge:
+        assert specs[name].lower_min == (VEHICLE.material.min_gauge, "material.min_gauge")
+        assert specs[name].upper_max[0] == 0.1, name  # a table in mm fails
+    fuselage = specs["fuselage_length"]  # the cabin and the M4 data range (theory/geometry)
+    assert fuselage.lower_min == (6.4008, "the lower end of the M4 regressions' data range")
+    assert fuselage.upper_max == (11.8872, "the upper end of the M4 regressions' data range")
+    # Bounds within the range of the field that gives the initial value (parts.Rotor.radius,
+    # LiftingSurface.area), or the design variable's own limits.
+    assert specs["rotor_radius"].lower_min[0] == 0.1
+    assert specs["rotor_radius"].upper_max[0] == 10.0
+    assert specs["wing_area"].upper_max[0] == 200.0
+    assert specs["motor_length"].lower_min[0] == 0.01
+    assert specs["motor_rated_current"].upper_max[0] == 5000.0
+    assert specs["blade_twist_cp"].lower_min is None  # angles: the degree check
+    # Rotor speeds are checked at the tip speed of the largest radius they turn.
+    assert specs["hover_lift_rpm"].tip_radius == max(r.radius for r in VEHICLE.lift_rotors)
+    assert specs["cruise_pusher_rpm"].tip_radius == VEHICLE.pusher.radius
+    assert specs["transition_roll_yaw_rpm"].tip_radius is None
 
 
 def test_vehicle_group_inputs_are_the_registry():

@@ -457,7 +457,7 @@ BAD_INPUTS = {
     "thickness below the minimum gauge": (
         _set("design_variables", "top_skin_thickness", "lower", 1e-4),
         "'design_variables.top_skin_thickness.lower[0]' = 0.0001 is out of range: must be >= "
-        "material.min_gauge = 0.000508 (m)",
+        "0.000508 (m; material.min_gauge)",
     ),
     "thickness of the wrong size": (
         _set("design_variables", "front_spar_thickness", "initial", [0.0015] * 7),

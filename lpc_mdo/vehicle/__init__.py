@@ -109,6 +109,7 @@ from lpc_mdo.vehicle.consistency import (
     _check_mission,
     _check_pusher,
     _check_wing,
+    check_flight_speeds,
 )
 from lpc_mdo.vehicle.design_variables import _read_design_variables
 from lpc_mdo.vehicle.parts import (
@@ -286,7 +287,9 @@ def vehicle_from_dict(data: Mapping) -> Vehicle:
     _check_conditions(values)
     _check_mission(values["mission"], values["conditions"])
     values["design_variables"] = _read_design_variables(data["design_variables"], values)
-    return Vehicle(**values)
+    vehicle = Vehicle(**values)
+    check_flight_speeds(vehicle)
+    return vehicle
 
 
 def design_variable_count(vehicle: Vehicle | None = None) -> int:

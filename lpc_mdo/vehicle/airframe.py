@@ -22,6 +22,10 @@ The rules, with L the fuselage length, W its width, H its height, the body's bot
 - *lift rotors on booms under the wing*: each hub between the nose and the tail end and
   within the wing's half span of the symmetry plane; its boom's attach point within the half
   span and within a rotor radius of its hub's y;
+- *booms that reach their rotors*: ``booms.length`` at least the farthest distance from an
+  attach point to its hub and at most a rotor radius more;
+- *wing sections of a real taper*: every section chord at least 1/20 of the largest, but a
+  pointed tip (the last tip chord may be 0);
 - *the pusher at the tail*: its hub within half the body width of the symmetry plane, behind
   the wing's root trailing edge and at most one pusher radius behind the tail end;
 - *no disk through the fuselage or another disk*: a lift disk whose plane lies within the
@@ -29,6 +33,16 @@ The rules, with L the fuselage length, W its width, H its height, the body's bot
   either side), a pusher disk whose plane crosses the body's length must stay clear of its
   cross-section, and no lift disk may cut through the pusher disk (the body's outline is a box
   here; the optimizer's clearances, :mod:`lpc_mdo.vehicle.clearances`, keep the stated floors);
+- *no disk through a wing or tail*: no point of a rotor disk (a lift rotor's or the pusher's,
+  hub included) may lie inside the wing, the horizontal tail or the fin: over the surface's
+  planform (between its leading and trailing edges, within its span) and within half the
+  section's thickness, (t/c) c / 2, of its chord line (the disk is a circle normal to its
+  thrust axis; the surface is the planform the model builds, with its dihedral and incidence);
+  the optimizer's plan-view clearances keep the disks off the horizontal tail as well;
+- *the fin on the body*: its root, from which its height is measured upwards, at or above the
+  body's bottom (a fin hung below the belly would run up through the fuselage);
+- *the payload in the cabin's width*: its centre of gravity within half the fuselage width of
+  the symmetry plane (the cabin check, :mod:`lpc_mdo.vehicle.consistency`, holds its x and z);
 - *mass items inside the airframe*: the battery, payload, systems, power electronics and other
   masses between the nose and the tail end, within the half span, and at most H/2 above the
   body's top or below its bottom.
@@ -41,12 +55,20 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from lpc_mdo.vehicle.schema import VehicleSpecError
 
 #: Largest factor between the sections' half span and sqrt(AR S)/2 (either way).
 SECTION_SPAN_FACTOR = 1.4
+#: Smallest wing-section chord as a fraction of the largest (all but a pointed tip): a taper
+#: beyond 20:1 is a typing error (the reference's root to tip is 5.2:1, built wings 2-10:1).
+MIN_CHORD_FRACTION = 0.05
 #: Distance (m) from y = 0 that still counts as on the symmetry plane.
 ON_SYMMETRY_PLANE = 1e-6
+#: Points of a rotor disk tested against the surfaces: rings and points per ring (the hub is
+#: one more); 24 rings put them under 7 cm apart on the reference's 1.5 m radius.
+DISK_RINGS, DISK_POINTS_PER_RING = 24, 96
 
 
 class _Envelope:
@@ -115,6 +137,14 @@ def _check_surface_roots(parts: dict, env: _Envelope) -> None:
             )
         _check_between_nose_and_tail(env, key, position, what)
         _check_height(env, key, position, what, extra_top)
+        if name == "vertical_tail" and position[2] > env.bottom:
+            _refuse(
+                key,
+                _fmt(position),
+                f"the fin's root (its height is measured upwards from it) must lie at or above "
+                f"the fuselage's bottom, z <= fuselage.cabin_floor_z = {env.bottom:.4g} (m), "
+                f"got z = {position[2]:.6g}",
+            )
         if aft_of_wing and position[0] > env.wing_trailing_edge:
             _refuse(
                 key,
@@ -128,6 +158,20 @@ def _check_surface_roots(parts: dict, env: _Envelope) -> None:
 def _check_wing_sections(wing) -> None:
     if wing.sections is None:
         return
+    chords = [c for s in wing.sections for c in (s.root_chord, s.tip_chord)][:-1]
+    largest = max(chords)
+    for k, section in enumerate(wing.sections):
+        for name in ("root_chord", "tip_chord"):
+            chord = getattr(section, name)
+            if (k, name) != (len(wing.sections) - 1, "tip_chord") and (
+                chord < MIN_CHORD_FRACTION * largest
+            ):
+                raise VehicleSpecError(
+                    f"'wing.sections[{k}].{name}' = {chord!r} is out of range: must be >= "
+                    f"{MIN_CHORD_FRACTION:g} x the largest section chord {largest:g} = "
+                    f"{MIN_CHORD_FRACTION * largest:.4g} (m); only the tip may be pointed "
+                    "(a tip_chord of 0 on the last section)"
+                )
     total = sum(s.span for s in wing.sections)
     half = wing.span / 2.0
     if not half / SECTION_SPAN_FACTOR <= total <= half * SECTION_SPAN_FACTOR:
@@ -137,6 +181,23 @@ def _check_wing_sections(wing) -> None:
             f"factor {SECTION_SPAN_FACTOR:g} of the half span sqrt(wing.aspect_ratio x "
             f"wing.area)/2 = {half:.6g} m (each section's span is its extent along one wing "
             "half; the model scales the sections to the area and aspect ratio)"
+        )
+
+
+def _check_boom_length(parts: dict) -> None:
+    """Each boom reaches from its attach point to its hub and runs past it by at most a radius."""
+    booms, rotors = parts["booms"], parts["lift_rotors"]
+    pairs = list(zip(booms.attach_points, rotors, strict=False))
+    if not pairs:
+        return
+    reach = max(math.dist(point, r.hub_position) for point, r in pairs)
+    overhang = max(r.radius for r in rotors)
+    if not reach <= booms.length <= reach + overhang:
+        raise VehicleSpecError(
+            f"'booms.length' = {booms.length!r} is out of range: a boom runs from its attach "
+            f"point (booms.attach_points) to its rotor's hub, the farthest {reach:.4g} m, and "
+            f"past it by at most a rotor radius ({overhang:.4g} m): must be in "
+            f"[{reach:.4g}, {reach + overhang:.4g}] (m)"
         )
 
 
@@ -231,6 +292,83 @@ def _check_disks_through_the_body(parts: dict, env: _Envelope) -> None:
                 )
 
 
+def _surface_stations(surface, mirrored: bool):
+    """
+    Return the surface's leading edge and chord at stations along its span: le (n, 3), c (n,).
+
+    The right half of a mirrored surface (the wing's sections as the model scales them, or a
+    trapezoid), or the fin from its root upwards.
+    """
+    root = np.asarray(surface.root_leading_edge, dtype=float)
+    if getattr(surface, "sections", None) is not None:
+        geometry = surface._geometry()
+        return root + geometry["section_leading_edges"], np.asarray(geometry["section_chords"])
+    h = surface.span / 2.0 if mirrored else surface.span
+    if mirrored:  # dihedral > 0 raises the tip (-z)
+        tip = root + h * np.array([-math.tan(surface.sweep), 1.0, -math.tan(surface.dihedral)])
+    else:
+        tip = root + h * np.array([-math.tan(surface.sweep), 0.0, -1.0])
+    return np.array([root, tip]), np.array([surface.root_chord, surface.tip_chord])
+
+
+def _disk_points(rotor) -> np.ndarray:
+    """Points (n, 3) covering a rotor's disk: its hub and rings out to its radius."""
+    n = np.asarray(rotor.thrust_axis, dtype=float)
+    n = n / np.linalg.norm(n)
+    e1 = np.cross(n, [0.0, 1.0, 0.0] if abs(n[1]) < 0.9 else [1.0, 0.0, 0.0])
+    e1 /= np.linalg.norm(e1)
+    e2 = np.cross(n, e1)
+    r = rotor.radius * np.linspace(0.0, 1.0, DISK_RINGS + 1)[1:, None]
+    psi = np.linspace(0.0, 2.0 * math.pi, DISK_POINTS_PER_RING, endpoint=False)[None, :]
+    ring = (r * np.cos(psi))[..., None] * e1 + (r * np.sin(psi))[..., None] * e2
+    hub = np.asarray(rotor.hub_position, dtype=float)
+    return np.vstack([hub, hub + ring.reshape(-1, 3)])
+
+
+def _inside_surface(points, surface, mirrored: bool) -> np.ndarray:
+    """Which points lie inside the surface's section (see the module docstring)."""
+    le, chord = _surface_stations(surface, mirrored)
+    x, y, z = points.T
+    if mirrored:  # span along |y|, the section's thickness along z
+        span, normal, le_span, le_normal = np.abs(y), z, le[:, 1], le[:, 2]
+    else:  # the fin: span upwards (-z) from its root, thickness along y
+        span, normal, le_span, le_normal = le[0, 2] - z, y, le[0, 2] - le[:, 2], le[:, 1]
+    within = (span >= le_span[0]) & (span <= le_span[-1])
+    le_x = np.interp(span, le_span, le[:, 0])
+    c = np.interp(span, le_span, chord)
+    aft = le_x - x  # distance behind the leading edge
+    chord_line = np.interp(span, le_span, le_normal) + (aft * math.sin(surface.incidence))
+    t_c = surface.thickness_to_chord or 0.15
+    return within & (aft >= 0.0) & (aft <= c) & (np.abs(normal - chord_line) <= 0.5 * t_c * c)
+
+
+def _check_disks_through_surfaces(parts: dict) -> None:
+    surfaces = (
+        ("wing", "the wing", True),
+        ("horizontal_tail", "the horizontal tail", True),
+        ("vertical_tail", "the fin", False),
+    )
+    rotors = [(f"lift_rotors[{i}]", r) for i, r in enumerate(parts["lift_rotors"])]
+    rotors.append(("pusher", parts["pusher"]))
+    for path, rotor in rotors:
+        points = _disk_points(rotor)
+        for name, what, mirrored in surfaces:
+            inside = _inside_surface(points, parts[name], mirrored)
+            if inside.any():
+                where = points[np.flatnonzero(inside)[0]]
+                _refuse(
+                    f"{path}.hub_position",
+                    _fmt(rotor.hub_position),
+                    f"its disk (radius {rotor.radius:.4g} m, thrust axis "
+                    f"{_fmt(rotor.thrust_axis)}) cuts through {what} (e.g. at {_fmt(where)} m, "
+                    f"inside the section between its leading and trailing edges, within half its "
+                    f"thickness of the chord line; {name}.root_leading_edge = "
+                    f"{_fmt(parts[name].root_leading_edge)}, span {parts[name].span:.4g} m and "
+                    f"root chord {parts[name].root_chord:.4g} m from its area and aspect ratio); "
+                    "allowed: a disk above, below, ahead of or behind every surface",
+                )
+
+
 def _check_mass_items(parts: dict, env: _Envelope) -> None:
     masses = parts["masses"]
     items = (
@@ -240,6 +378,15 @@ def _check_mass_items(parts: dict, env: _Envelope) -> None:
         ("masses.other_cg", masses.other_cg, "the other masses'"),
         ("masses.power_electronics_cg", masses.power_electronics_cg, "the power electronics'"),
     )
+    payload = masses.payload_cg
+    if abs(payload[1]) > env.half_width:
+        _refuse(
+            "masses.payload_cg",
+            _fmt(payload),
+            f"the payload's centre of gravity must lie in the cabin, within half the fuselage "
+            f"width of the symmetry plane, |y| <= {env.half_width:.4g} (m), got y = "
+            f"{payload[1]:.6g}",
+        )
     for key, position, owner in items:
         what = f"{owner} centre of gravity"
         _check_between_nose_and_tail(env, key, position, what)
@@ -267,4 +414,6 @@ def check_airframe(parts: dict) -> None:
     _check_surface_roots(parts, env)
     _check_rotors(parts, env)
     _check_disks_through_the_body(parts, env)
+    _check_disks_through_surfaces(parts)
+    _check_boom_length(parts)
     _check_mass_items(parts, env)

@@ -8,15 +8,18 @@ fields (names unique, kinds registered, the cruise condition a steady one).
 from __future__ import annotations
 
 import dataclasses
+import math
 
 import numpy as np
 
+from lpc_mdo.components.atmosphere import standard_atmosphere
 from lpc_mdo.components.motor.parameters import MotorParameters
 from lpc_mdo.components.structures.wing_box_geometry import WING_BOX_SECTIONS
 from lpc_mdo.components.weights.item_placement import (
     NASA_LANDING_GEAR_STATION,
     NASA_SYSTEMS_STATION,
 )
+from lpc_mdo.core.constants import GRAVITY
 from lpc_mdo.vehicle.airframe import check_airframe
 from lpc_mdo.vehicle.condition_contract import CONDITION_KINDS
 from lpc_mdo.vehicle.parts import (
@@ -94,7 +97,13 @@ MAX_CHORD_OVER_RADIUS = 0.5
 
 
 def _check_blades(lift_rotors: tuple[Rotor, ...], pusher: Rotor) -> None:
-    """Every chord control point shorter than half its rotor's radius."""
+    """
+    Every chord control point shorter than half its rotor's radius; blade roots that fit.
+
+    At the hub radius r_h the blades' root chords c_0 (the first control point: the clamped
+    B-spline starts there) take B c_0 of the circumference 2 pi r_h: the local solidity
+    B c_0 / (2 pi r_h) must be <= 1, or the blade roots overlap.
+    """
     rotors = _named_rotors(lift_rotors, pusher)
     for path, rotor in rotors:
         longest = max(rotor.chord_cp)
@@ -103,6 +112,16 @@ def _check_blades(lift_rotors: tuple[Rotor, ...], pusher: Rotor) -> None:
                 f"'{path}.chord_cp' = {list(rotor.chord_cp)!r} is out of range: every chord "
                 f"must be <= {MAX_CHORD_OVER_RADIUS:g} x '{path}.radius' = "
                 f"{MAX_CHORD_OVER_RADIUS * rotor.radius:.4g} (m; a slender blade)"
+            )
+        hub = rotor.hub_radius
+        root = rotor.num_blades * rotor.chord_cp[0]
+        if hub > 0.0 and root > 2.0 * math.pi * hub:
+            raise VehicleSpecError(
+                f"'{path}.chord_cp' = {list(rotor.chord_cp)!r} is out of range: "
+                f"{rotor.num_blades} blades of root chord {rotor.chord_cp[0]:g} m take "
+                f"{root:.4g} m of the {2.0 * math.pi * hub:.4g} m circumference at the hub "
+                f"radius {hub:.4g} m ('{path}.hub_radius_ratio' x radius): the blade roots "
+                "overlap; allowed: num_blades x chord_cp[0] <= 2 pi x hub radius"
             )
 
 
@@ -222,11 +241,58 @@ def _check_mission(mission: Mission, conditions: tuple[DesignCondition, ...]) ->
                 f"energy_weight = 0 to keep '{c.name}' as a design condition outside the mission"
             )
     steady = [c.name for c in conditions if c.kind == "steady"]
+    fastest = max((c.speed for c in conditions if c.kind == "steady"), default=None)
+    for i, c in enumerate(conditions):
+        if c.kind == "transition" and fastest is not None and c.speed > fastest:
+            raise VehicleSpecError(
+                f"'conditions[{i}].speed' = {c.speed!r} is out of range: a transition point "
+                f"must fly no faster than the fastest 'steady' condition, {fastest:g} m/s (the "
+                "transition ends where wing-borne flight begins)"
+            )
     if mission.cruise_condition not in steady:
         raise VehicleSpecError(
             f"'mission.cruise_condition' = {mission.cruise_condition!r} is not allowed: must be "
             f"the name of a 'steady' condition, one of {steady}"
         )
+
+
+#: Highest lift coefficient a wing-borne condition may need at the largest wing area the
+#: design variables allow: beyond any wing without high-lift devices (section c_l,max of the
+#: packaged airfoils 1.4-1.8) and most with them (Raymer, Aircraft Design, Table 12.5: about 3
+#: for a wing with double-slotted flaps and slats).
+MAX_LIFT_COEFFICIENT = 3.0
+
+
+def check_flight_speeds(vehicle) -> None:
+    """
+    Check that every wing-borne condition is fast enough for some wing the design may have.
+
+    A steady (1 g) or structural (load factor n) condition needs lift |n| m g from the wing
+    alone: 1/2 rho V^2 S_max C_L,max >= |n| m g, with m the design gross mass, rho at the
+    condition's altitude (ISA), S_max the wing-area design variable's upper bound and C_L,max
+    :data:`MAX_LIFT_COEFFICIENT`. Slower, no design within the bounds can fly it (the
+    optimizer's stall constraints, docs theory/aerodynamics 'Section lift limit', then hold the
+    design's own wing within its polar).
+    """
+    area = vehicle.design_variables.get("wing_area")
+    s_max = max(area.upper) if area is not None else vehicle.wing.area
+    weight = vehicle.masses.design_gross_mass * GRAVITY
+    for i, c in enumerate(vehicle.conditions):
+        if c.kind not in ("steady", "structural"):
+            continue
+        density = standard_atmosphere(c.altitude)[2]
+        least = math.sqrt(
+            2.0 * abs(c.load_factor) * weight / (density * s_max * MAX_LIFT_COEFFICIENT)
+        )
+        if c.speed < least:
+            raise VehicleSpecError(
+                f"'conditions[{i}].speed' = {c.speed!r} is out of range: the wing-borne "
+                f"condition {c.name!r} (load factor {c.load_factor:g}) must fly at >= "
+                f"{least:.4g} m/s, where the largest wing the design variables allow "
+                f"({s_max:g} m^2) at C_L = {MAX_LIFT_COEFFICIENT:g} carries "
+                f"{abs(c.load_factor):g} x the design gross mass "
+                f"{vehicle.masses.design_gross_mass:g} kg at {c.altitude:g} m"
+            )
 
 
 class _PartialVehicle:
@@ -291,13 +357,24 @@ def _check_rotor_positions(lift_rotors: tuple[Rotor, ...], pusher: Rotor) -> Non
             in_plane = float(np.linalg.norm(d - np.dot(d, n) * n))
             if axial < min(a.radius, b.radius) and in_plane < a.radius + b.radius:
                 raise VehicleSpecError(
-                    f"'{path_j}.hub_position' = {list(b.hub_position)!r} is not allowed: its "
-                    f"disk overlaps that of '{path_i}' (hub distance in the disk plane "
-                    f"{in_plane:.3f} m; must be >= R_i + R_j = {a.radius + b.radius:.3f} m for "
-                    f"disks {axial:.3f} m apart along the thrust axis)"
+                    f"'{path_j}.hub_position' = {list(b.hub_position)!r} is not allowed: seen "
+                    f"along the thrust axis of '{path_i}', its disk (radius {b.radius:g} m) "
+                    f"overlaps that one's (radius {a.radius:g} m): hub distance across the axis "
+                    f"{in_plane:.3f} m < R_i + R_j = {a.radius + b.radius:.3f} m, with the disks "
+                    f"only {axial:.3f} m apart along it (less than the smaller radius), so one "
+                    "rotor would run in the other's inflow, which the rotor models do not "
+                    "include; allowed: disks side by side or at least a radius apart along the "
+                    "axis"
                 )
 
 
+#: Least noise-observer distance in rotor radii: the far-field forms of the noise model drop
+#: terms of order R/r against 1; at 10 radii (5 diameters) they are near 10 % (docs
+#: theory/acoustics 'Observer geometry'). The reference observer is at 100 m, 66 radii.
+FAR_FIELD_RADII = 10.0
+#: Largest radius-intersection span fraction (R_inner + R_outer)/b: the two rotors of a side
+#: lie side by side within its half span b/2.
+MAX_RADIUS_SPAN_FRACTION = 0.5
 #: Smallest usable state-of-charge window, initial less final: a narrower window flies the
 #: reference mission's hover alone (about 2 % of its energy) and little more.
 MIN_SOC_WINDOW = 0.05
@@ -322,17 +399,28 @@ def _check_limits(parts: dict) -> None:
     fixed = masses.payload + masses.systems + other + battery.mass
     if fixed >= masses.design_gross_mass:
         raise VehicleSpecError(
-            f"'masses.payload' = {masses.payload!r} is out of range: payload + systems "
-            f"{masses.systems:g} + other {other:g} + battery.mass {battery.mass:g} = "
-            f"{fixed:g} kg must be < 'masses.design_gross_mass' = "
+            f"the fixed masses are out of range: 'masses.payload' {masses.payload:g} + "
+            f"'masses.systems' {masses.systems:g} + 'masses.other' {other:g} + 'battery.mass' "
+            f"{battery.mass:g} = {fixed:g} kg must be < 'masses.design_gross_mass' = "
             f"{masses.design_gross_mass!r} (the airframe, rotors and motors weigh the rest)"
         )
     radius = max(r.radius for r in (*parts["lift_rotors"], parts["pusher"]))
     distance = parts["noise_observer"].distance
-    if distance < radius:
+    if distance < FAR_FIELD_RADII * radius:
         raise VehicleSpecError(
-            f"'noise_observer.distance' = {distance!r} is out of range: must be >= the largest "
-            f"rotor radius {radius:g} (m); the noise model is a far-field one"
+            f"'noise_observer.distance' = {distance!r} is out of range: must be >= "
+            f"{FAR_FIELD_RADII:g} x the largest rotor radius {radius:g} = "
+            f"{FAR_FIELD_RADII * radius:g} (m); the noise model is a far-field one"
+        )
+    if (
+        limits.radius_intersection_definition == "span_fraction"
+        and limits.radius_intersection > MAX_RADIUS_SPAN_FRACTION
+    ):
+        raise VehicleSpecError(
+            f"'constraints.radius_intersection' = {limits.radius_intersection!r} is out of "
+            f"range: as a span fraction, (R_inner + R_outer)/b, it must be <= "
+            f"{MAX_RADIUS_SPAN_FRACTION:g} (two rotors side by side on a half wing span at most "
+            "b/2 together); a clearance in m needs radius_intersection_definition = 'clearance'"
         )
 
 
@@ -358,9 +446,24 @@ def min_fuselage_length(parts) -> float:
 MIN_SEAT_WIDTH = 0.46
 
 
+#: Largest ratio of the fuselage's height to its width or width to height: the drag build-up
+#: takes a body of revolution of the mean diameter (form factor of Raymer, Aircraft Design, eq.
+#: 12.31) and the M4 weight regression a fuselage of its wetted area; the reference's is 1.08,
+#: built cabins 0.8-1.3.
+MAX_SECTION_ASPECT = 2.0
+
+
 def _check_cabin(parts: dict) -> None:
     """Check that the fuselage holds nose bay, cabin and tail cone, and the cabin its seats."""
     fuselage = parts["fuselage"]
+    ratio = fuselage.max_height / fuselage.max_width
+    if not 1.0 / MAX_SECTION_ASPECT <= ratio <= MAX_SECTION_ASPECT:
+        raise VehicleSpecError(
+            f"'fuselage.max_height' = {fuselage.max_height!r} is out of range with "
+            f"'fuselage.max_width' = {fuselage.max_width!r}: the height over the width, "
+            f"{ratio:.3g}, must be in [{1.0 / MAX_SECTION_ASPECT:g}, {MAX_SECTION_ASPECT:g}] "
+            "(a near-round body, as the fuselage drag and weight models take it)"
+        )
     if fuselage.seats_abreast * MIN_SEAT_WIDTH > fuselage.max_width:
         raise VehicleSpecError(
             f"'fuselage.seats_abreast' = {fuselage.seats_abreast} is out of range: "
@@ -484,3 +587,4 @@ def check_across_parts(vehicle) -> None:
     parts = {f.name: getattr(vehicle, f.name) for f in dataclasses.fields(vehicle)}
     _check_geometry(parts)
     _check_mission(parts["mission"], parts["conditions"])
+    check_flight_speeds(vehicle)

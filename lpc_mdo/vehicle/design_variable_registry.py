@@ -47,6 +47,11 @@ class VehicleDesignVariable:
     min_gauge : bool
         Whether the lower bound may not go below the material's minimum gauge
         (``material.min_gauge``).
+    limits : tuple of (float or None, float or None, str) or None
+        The range its bounds must lie in, with the reason, for a design variable without an
+        ``initial_from`` field (whose bounds lie in that field's range): what can be built,
+        wide enough for any vehicle of the class and narrow enough to catch a table written in
+        another unit (mm for m, mA for A).
     baseline : bool
         Whether it is in the set S of the baseline problem (paper eqs. 8-9): the sizing variables
         the initial specification gives.
@@ -59,6 +64,7 @@ class VehicleDesignVariable:
     initial_from: str = ""
     min_gauge: bool = False
     baseline: bool = True
+    limits: tuple | None = None
 
     def __post_init__(self):
         if self.shape not in SHAPES:
@@ -140,8 +146,15 @@ VEHICLE_DESIGN_VARIABLES = (
         "rotors.twist_cp",
     ),
     VehicleDesignVariable("battery_mass", "kg", "scalar", "battery mass", "battery.mass"),
+    # 0.01-1 m: a stack of 1 cm to 1 m, beyond the aircraft PMSMs of the class either way
+    # (the reference's 0.06-0.3 m); the motor model itself raises an AnalysisError below its
+    # smallest stack (about 0.056 m, docs theory/motor 'Sizing').
     VehicleDesignVariable(
-        "motor_length", "m", "rotor_groups", f"motor stack length; {_ROTOR_ROWS}"
+        "motor_length",
+        "m",
+        "rotor_groups",
+        f"motor stack length; {_ROTOR_ROWS}",
+        limits=(0.01, 1.0, "a motor stack of 1 cm to 1 m"),
     ),
     # Not in the paper (it fixes the winding at 120 A); a sizing variable with an initial value
     # of the vehicle file, so in the baseline set S like the others.
@@ -150,6 +163,7 @@ VEHICLE_DESIGN_VARIABLES = (
         "A",
         "rotor_groups",
         f"rated phase current of the motor winding, which sets its turns per phase; {_ROTOR_ROWS}",
+        limits=(1.0, 5000.0, "the range of motor.rated_current"),
     ),
     *(
         VehicleDesignVariable(
@@ -158,6 +172,9 @@ VEHICLE_DESIGN_VARIABLES = (
             "bays",
             f"{part.replace('_', '-')} thickness per wing-box bay, root to tip",
             min_gauge=True,
+            # At most 0.1 m: twice the reference's upper bound, thicker than a light
+            # aircraft's wing-box wall; catches a table in mm.
+            limits=(None, 0.1, "a wing-box wall of at most 0.1 m"),
         )
         for part in ("front_spar", "rear_spar", "top_skin", "bottom_skin")
     ),

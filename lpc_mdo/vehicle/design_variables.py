@@ -19,7 +19,13 @@ from lpc_mdo.components.weights.regressions import m4_coefficients
 from lpc_mdo.vehicle.condition_layout import ConditionLayout
 from lpc_mdo.vehicle.consistency import _PartialVehicle, min_fuselage_length
 from lpc_mdo.vehicle.design_variable_registry import VEHICLE_DESIGN_VARIABLES
-from lpc_mdo.vehicle.parts import DesignCondition, DesignVariable, _pairs, _ReadOnlyDict
+from lpc_mdo.vehicle.parts import (
+    DesignCondition,
+    DesignVariable,
+    Rotor,
+    _pairs,
+    _ReadOnlyDict,
+)
 from lpc_mdo.vehicle.schema import (
     VehicleSpecError,
     _array,
@@ -55,6 +61,7 @@ class _DVSpec:
     initial: tuple[float, ...] | None = None
     lower_min: tuple[float, str] | None = None  # (value, key) the lower bound may not go below
     upper_max: tuple[float, str] | None = None  # (value, key) the upper bound may not exceed
+    tip_radius: float | None = None  # rotor speeds: the radius their tip speeds are checked at
 
 
 def _design_variable_specs(parts: dict) -> dict[str, _DVSpec]:
@@ -68,17 +75,18 @@ def _design_variable_specs(parts: dict) -> dict[str, _DVSpec]:
     rotor_groups = [parts["lift_rotors"][i] for i, _ in _pairs(parts["lift_rotors"])]
     rotor_groups.append(parts["pusher"])
     gauge = (parts["material"].min_gauge, "material.min_gauge")
-    specs = {
-        dv.name: _DVSpec(
+    specs = {}
+    for dv in VEHICLE_DESIGN_VARIABLES:
+        lower_min, upper_max = _physical_limits(dv, parts)
+        specs[dv.name] = _DVSpec(
             dv.description,
             dv.units,
             dv.shape_of(len(rotor_groups), parts["wing_box"].num_bays),
             dv.initial_key,
             dv.initial_of(parts, rotor_groups),
-            lower_min=gauge if dv.min_gauge else None,
+            lower_min=gauge if dv.min_gauge else lower_min,
+            upper_max=upper_max,
         )
-        for dv in VEHICLE_DESIGN_VARIABLES
-    }
     specs["fuselage_length"] = dataclasses.replace(
         specs["fuselage_length"], **_fuselage_length_limits(parts)
     )
@@ -98,8 +106,60 @@ def _design_variable_specs(parts: dict) -> dict[str, _DVSpec]:
                 f"conditions[{index[c]}].{dv.initial_from}{suffix[dv.initial_from]}"
                 for c in dv.conditions
             )
-        specs[name] = _DVSpec(dv.description, dv.units, dv.shape, initial_from, dv.initial)
+        specs[name] = _DVSpec(
+            dv.description,
+            dv.units,
+            dv.shape,
+            initial_from,
+            dv.initial,
+            tip_radius=_tip_radius(name, parts),
+        )
     return specs
+
+
+def _physical_limits(dv, parts: dict) -> tuple:
+    """
+    Return the range a vehicle-level design variable's bounds lie in: (lower_min, upper_max).
+
+    Its ``limits`` if it has them, else the range of the field that gives its initial value (a
+    rotor radius of 0.1-10 m, a wing area of 0.1-200 m^2, ...): the bounds are values the design
+    may take, so they obey what the vehicle file allows for that value. Each is None or
+    (value, reason).
+    """
+    if dv.limits is not None:
+        low, high, why = dv.limits
+        return (
+            None if low is None else (low, why),
+            None if high is None else (high, why),
+        )
+    if not dv.initial_from or dv.units == "rad":  # angles: the degree check covers them
+        return None, None
+    table, _, name = dv.initial_from.partition(".")
+    owner = Rotor if table == "rotors" else type(parts[table])
+    spec = _spec(next(f for f in dataclasses.fields(owner) if f.name == name))
+    key = f"the range of {dv.initial_key}"
+    return (
+        None if spec.ge is None else (spec.ge, key),
+        None if spec.le is None else (spec.le, key),
+    )
+
+
+#: Highest tip speed a rotor-speed bound may give (m/s): Mach 1.2 at sea level, beyond the
+#: transonic tips no rotor or propeller of the class runs (the tip-Mach constraints stop at
+#: 0.9); a table of rad/s written as rpm stays below it, one in rev/s far below the lowest.
+MAX_BOUND_TIP_SPEED = 408.0
+#: Lowest tip speed the upper rotor-speed bound must allow (m/s): a rotor or propeller of the
+#: class hovers or cruises at 120-290 m/s; below 50 m/s it lifts or pushes nothing useful.
+MIN_UPPER_TIP_SPEED = 50.0
+
+
+def _tip_radius(name: str, parts: dict) -> float | None:
+    """Return the largest radius (m) of the rotors a rotor-speed design variable turns, or None."""
+    if name.endswith("_pusher_rpm"):
+        return parts["pusher"].radius
+    if name.endswith("_lift_rpm"):
+        return max(r.radius for r in parts["lift_rotors"])
+    return None  # a speed differential (roll_yaw_rpm): its bounds may be small or negative
 
 
 def _fuselage_length_limits(parts: dict) -> dict:
@@ -163,6 +223,26 @@ def _check_shared_prefixes(data, specs, conditions) -> None:
                 )
 
 
+def _check_tip_speeds(lower, upper, radius: float, entry) -> None:
+    """Rotor-speed bounds (rpm) whose tip speeds at ``radius`` a rotor can run (see the limits)."""
+    to_tip = 2.0 * math.pi / 60.0 * radius
+    for k, (lo, up) in enumerate(zip(lower, upper, strict=True)):
+        if up * to_tip < MIN_UPPER_TIP_SPEED:
+            raise VehicleSpecError(
+                f"{entry('upper', k)} = {_fmt(up)} is out of range: must be >= "
+                f"{_fmt(MIN_UPPER_TIP_SPEED / to_tip)} (rpm), a tip speed of "
+                f"{MIN_UPPER_TIP_SPEED:g} m/s at the radius {radius:g} m, got "
+                f"{up * to_tip:.3g} m/s (a table in rad/s or rev/s? units = 'rpm')"
+            )
+        if lo * to_tip > MAX_BOUND_TIP_SPEED:
+            raise VehicleSpecError(
+                f"{entry('lower', k)} = {_fmt(lo)} is out of range: must be <= "
+                f"{_fmt(MAX_BOUND_TIP_SPEED / to_tip)} (rpm), a tip speed of "
+                f"{MAX_BOUND_TIP_SPEED:g} m/s (Mach 1.2) at the radius {radius:g} m, got "
+                f"{lo * to_tip:.3g} m/s"
+            )
+
+
 def _read_design_variable(data, spec: _DVSpec, path: str) -> DesignVariable:
     if isinstance(data, Mapping) and "initial" in data and spec.initial is not None:
         raise VehicleSpecError(
@@ -220,6 +300,8 @@ def _read_design_variable(data, spec: _DVSpec, path: str) -> DesignVariable:
                     f"{entry('lower', k)} = {_fmt(lo)} is out of range: must be > 0 ({units}; "
                     "a length, area, mass, current or rotor speed is positive)"
                 )
+    if spec.tip_radius is not None:
+        _check_tip_speeds(lower, upper, spec.tip_radius, entry)
     source = f"; the initial value is taken from '{spec.initial_from}'" if spec.initial_from else ""
     for k, (lo, up) in enumerate(zip(lower, upper, strict=True)):
         if lo > up:
@@ -236,12 +318,12 @@ def _read_design_variable(data, spec: _DVSpec, path: str) -> DesignVariable:
         if spec.lower_min is not None and lo < spec.lower_min[0]:
             raise VehicleSpecError(
                 f"{entry('lower', k)} = {_fmt(lo)} is out of range: must be >= "
-                f"{spec.lower_min[1]} = {_fmt(spec.lower_min[0])} ({units})"
+                f"{_fmt(spec.lower_min[0])} ({units}; {spec.lower_min[1]})"
             )
         if spec.upper_max is not None and up > spec.upper_max[0]:
             raise VehicleSpecError(
                 f"{entry('upper', k)} = {_fmt(up)} is out of range: must be <= "
-                f"{spec.upper_max[1]} = {_fmt(spec.upper_max[0])} ({units})"
+                f"{_fmt(spec.upper_max[0])} ({units}; {spec.upper_max[1]})"
             )
     return DesignVariable(
         initial=initial,
