@@ -509,6 +509,75 @@ def test_messages_say_what_is_allowed(paths, capsys, no_pyoptsparse):
         assert text in capsys.readouterr().err, argv
 
 
+# --- Long values are cut in the message -------------------------------------------------------
+
+LONG = "x" * 5000
+#: (id, argv, the argument the message names, the length the message gives)
+LONG_VALUES = [
+    ("vehicle", ["analyze", "--vehicle", "{root}/" + LONG], "--vehicle", "characters)"),
+    ("output_dir", ["analyze", "--output-dir", "{root}/" + LONG], "--output-dir", "characters)"),
+    (
+        "output_dir_under_a_file",
+        ["analyze", "--output-dir", "{a_file.txt}/" + LONG],
+        "--output-dir",
+        "characters)",
+    ),
+    ("n2", ["analyze", "--output-dir", "{out}", "--n2", "{root}/" + LONG], "--n2", "characters)"),
+    ("start_case", [*FULL, "--start-case", "{root}/" + LONG], "--start-case", "characters)"),
+    ("report_cases", ["report", "{root}/" + LONG], "'cases'", "characters)"),
+    ("optimizer", [*FULL, "--optimizer", LONG], "--optimizer", "(5000 characters)"),
+    ("problem", ["optimize", "--problem", LONG], "--problem", "(5000 characters)"),
+    (
+        "parameter_a_million",
+        [*SWEEP, "--start-case", "{good.sql}", "--parameter", "p" * 10**6],
+        "--parameter",
+        "(1000000 characters)",
+    ),
+    ("command", [LONG], "command", "(5000 characters)"),
+    ("unrecognized", ["analyze", LONG], "unrecognized", "(5000 characters)"),
+    ("unrecognized_many", ["analyze", *["x"] * 10**5], "unrecognized", "and 99997 more"),
+    (
+        "values_without_parameter",
+        [*SWEEP, "--start-case", "{good.sql}", "--values", *[str(v) for v in range(500)]],
+        "--values",
+        "(500 values)",
+    ),
+    (
+        "values_too_many",
+        [*SWEEP, "--start-case", "{good.sql}", "--parameter", "final_soc", "--values"]
+        + [str(0.1 + 1e-6 * i) for i in range(10**5)],
+        "--values",
+        "(100000 values)",
+    ),
+]
+
+
+@pytest.mark.parametrize(
+    ("argv", "argument", "length"), [m[1:] for m in LONG_VALUES], ids=[m[0] for m in LONG_VALUES]
+)
+def test_a_long_value_is_cut(argv, argument, length, paths, capsys, commands_must_not_start):
+    rc = main(_format(argv, paths))
+    captured = capsys.readouterr()
+    _assert_one_line_error(rc, captured, argument)
+    assert length in captured.err
+    assert len(captured.err) < 700, captured.err
+    assert not commands_must_not_start
+
+
+def test_too_many_sweep_values_are_refused_first(paths, capsys, monkeypatch):
+    # The count is checked before anything that takes time per value (a vehicle per value).
+    def no_vehicle(*args):
+        raise AssertionError("a vehicle was made for a value")
+
+    monkeypatch.setattr(cli, "sweep_vehicle", no_vehicle)
+    values = [str(0.1 + 1e-6 * i) for i in range(cli.MAX_SWEEP_VALUES + 1)]
+    argv = [*_format(SWEEP, paths), "--start-case", paths["good.sql"], "--parameter", "final_soc"]
+    rc = main([*argv, "--values", *values])
+    captured = capsys.readouterr()
+    _assert_one_line_error(rc, captured, "--values")
+    assert f"must be at most {cli.MAX_SWEEP_VALUES} values" in captured.err
+
+
 # --- --debug and bugs ----------------------------------------------------------------------
 
 
@@ -657,3 +726,16 @@ def test_a_lock_of_another_program_or_in_the_way(paths, capsys, tmp_path):
     dangling.symlink_to(tmp_path / "nowhere")
     rc = main(["analyze", "--output-dir", str(dangling)])
     _assert_one_line_error(rc, capsys.readouterr(), "--output-dir")
+
+
+def test_a_long_message_stays_one_short_line(paths, capsys, monkeypatch):
+    # A message whose value no check cut (the net of main): its start and its end are kept.
+    def long_message(args):
+        raise cli.CLIError(f"'--vehicle' = {'y' * 10**5}: must be a vehicle TOML file")
+
+    monkeypatch.setattr(cli, "_analyze", long_message)
+    rc = main(["analyze", "--output-dir", paths["out"]])
+    captured = capsys.readouterr()
+    _assert_one_line_error(rc, captured, "--vehicle")
+    assert "characters) ... " in captured.err and captured.err.rstrip().endswith("TOML file")
+    assert len(captured.err) < 1200
