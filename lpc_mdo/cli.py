@@ -303,7 +303,8 @@ def check_output_file(flag, path):
     Raises
     ------
     CLIError
-        If the path is a folder or its folder cannot be created or written into.
+        If the path is a folder or another file that is not a regular one (a device, pipe or
+        socket), or its folder cannot be created or written into.
     """
     text = os.fspath(path)
     target = Path(text).absolute()
@@ -318,6 +319,11 @@ def check_output_file(flag, path):
         ) from err
     if is_dir:
         raise CLIError(f"'{flag}' = {_shown(text)} is a folder: must be {allowed}")
+    if target.exists() and not target.is_file():  # writing it would block or fail at the end
+        raise CLIError(
+            f"'{flag}' = {_shown(text)} is not a regular file (a device, pipe or socket): "
+            f"must be {allowed}"
+        )
     problem = _folder_problem(target.parent)
     if problem:
         raise CLIError(
@@ -514,7 +520,7 @@ def _preflight(args):
     check_output_folder("--output-dir", args.output_dir)
     inputs, written = _input_files(args), _files_written(args)
     if command == "analyze" and args.n2 is not None:
-        _check_n2_file(args.n2, inputs, written)
+        _check_n2_file(args.n2, args.output_dir, inputs, written)
     for path in written:
         _not_an_input("--output-dir", path, inputs)
     if command in ("optimize", "sweep"):
@@ -584,19 +590,30 @@ def _no_option_twice(argv):
             seen.add(flag)
 
 
-def _check_n2_file(text, inputs, written):
-    """``--n2``: a new HTML file, none of the command's ``inputs`` or ``written`` files."""
+def _check_n2_file(text, output_dir, inputs, written):
+    """``--n2``: a new HTML file, not ``output_dir``, none of the ``inputs`` or ``written``."""
+    allowed = "must be a file name, e.g. n2.html"
     if not text.strip() or text.endswith(("/", os.sep)):
         why = "is empty" if not text.strip() else "names a folder"
-        raise CLIError(f"'--n2' = {_shown(text)} {why}: must be a file name, e.g. n2.html")
+        raise CLIError(f"'--n2' = {_shown(text)} {why}: {allowed}")
     check_output_file("--n2", text)
     _not_an_input("--n2", text, inputs)
-    target = Path(text).absolute()
+    # Where the paths lead (links and '..' followed): the folder the command creates, a file
+    # it writes, or a folder of one of them, are no place for the diagram.
+    target, out = os.path.realpath(text), os.path.realpath(output_dir)
+    if target == out or out.startswith(target + os.sep):
+        which = "is the folder" if target == out else "is a folder of"
+        raise CLIError(
+            f"'--n2' = {_shown(text)} {which} --output-dir = {_shown(output_dir)}, which the "
+            f"command creates: must be a file name, e.g. {_shown(Path(output_dir, 'n2.html'))}"
+        )
     for path in written:
-        if target == path.absolute():
+        place = os.path.realpath(path)
+        if target == place or target.startswith(place + os.sep):
+            which = "is" if target == place else "lies under"
             raise CLIError(
-                f"'--n2' = {_shown(text)} is the file {path.name} the command writes into "
-                "--output-dir: must be another file name, e.g. n2.html"
+                f"'--n2' = {_shown(text)} {which} {path.name}, a file the command writes into "
+                f"--output-dir: {allowed}"
             )
 
 

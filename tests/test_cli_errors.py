@@ -199,6 +199,25 @@ MISUSES = [
         "--n2",
     ),
     ("n2_is_the_output_dir", ["analyze", "--output-dir", "{out}", "--n2", "{root}"], "--n2"),
+    # the output folder does not exist yet: the command creates it where the diagram would go
+    ("n2_is_the_new_output_dir", ["analyze", "--output-dir", "{out}", "--n2", "{out}"], "--n2"),
+    (
+        "n2_is_the_new_output_dir_spelled_otherwise",
+        ["analyze", "--output-dir", "{out}", "--n2", "{out}/../out"],
+        "--n2",
+    ),
+    (
+        "n2_is_a_folder_of_the_new_output_dir",
+        ["analyze", "--output-dir", "{out}/a/b", "--n2", "{out}/a"],
+        "--n2",
+    ),
+    (
+        "n2_under_the_case_file",
+        ["analyze", "--output-dir", "{out}", "--n2", "{out}/cases.sql/n2.html"],
+        "--n2",
+    ),
+    ("n2_a_device", ["analyze", "--output-dir", "{out}", "--n2", "/dev/null"], "--n2"),
+    ("n2_a_pipe", ["analyze", "--output-dir", "{out}", "--n2", "{pipe.toml}"], "--n2"),
     (
         "output_dir_twice",
         ["analyze", "--output-dir", "{out}", "--output-dir", "{out}/b"],
@@ -503,6 +522,8 @@ def test_messages_say_what_is_allowed(paths, capsys, no_pyoptsparse):
         (*FULL, "--optimizer", "SNOPT"): "pyoptsparse",
         ("report", "{empty_folder}"): "without case files",
         ("analyze", "--output-dir", "{a_file.txt}/out"): "is a regular file, not a folder",
+        ("analyze", "--n2", "/dev/null"): "'--n2' = '/dev/null' is not a regular file",
+        ("analyze", "--output-dir", "{out}", "--n2", "{out}"): "is the folder --output-dir",
     }
     for argv, text in cases.items():
         assert main(_format(argv, paths)) == 2
