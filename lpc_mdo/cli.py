@@ -42,6 +42,7 @@ from lpc_mdo.api.weights import format_mass_breakdown, mass_breakdown
 from lpc_mdo.core.checks import check_choice, check_integer, check_number, cut_text
 from lpc_mdo.post.report import _CASE_SUFFIXES, ReportSpec, find_case_files, write_report
 from lpc_mdo.post.stall import format_stall_speed_check
+from lpc_mdo.post.statistics import run_stats_path
 from lpc_mdo.post.tables import (
     DEFAULT_TOL,
     constraint_rows,
@@ -523,6 +524,7 @@ def _preflight(args):
         _check_n2_file(args.n2, args.output_dir, inputs, written)
     for path in written:
         _not_an_input("--output-dir", path, inputs)
+        _not_taken("--output-dir", args.output_dir, path)
     if command in ("optimize", "sweep"):
         if args.optimizer is None:  # a given --optimizer was checked by its type
             names = study_plan.SEQUENCE if args.problem == "sequence" else [args.problem]
@@ -618,13 +620,20 @@ def _check_n2_file(text, output_dir, inputs, written):
 
 
 def _files_written(args):
-    """Return the files a command writes into its output folder (checked against inputs)."""
+    """Return the files a command writes into its output folder (checked against inputs).
+
+    The case files, each with its run statistics (optimize, sweep), and the tables: the sweep
+    summary, the constraint tables of analyze, the index of a report.
+    """
     out = Path(args.output_dir)
     if args.command == "analyze":
         return [out / name for name in ("cases.sql", "constraints.md", "constraints.csv")]
+    if args.command == "report":
+        return [out / "index.md"]
     if args.command == "optimize":
         names = study_plan.SEQUENCE if args.problem == "sequence" else [args.problem]
-        return [out / f"{name}.sql" for name in names]
+        cases = [out / f"{name}.sql" for name in names]
+        return [*cases, *map(run_stats_path, cases)]
     if args.command == "sweep":
         parameters = list(PAPER_SWEEPS) if args.parameter == "all" else [args.parameter]
         margins = {"on": (True,), "off": (False,), "both": (True, False)}[args.static_margin]
@@ -640,8 +649,23 @@ def _files_written(args):
                             "distinct values"
                         )
                     files[path] = value
-        return list(files)
+        return [*files, *map(run_stats_path, files), out / "sweep_summary.csv"]
     return []
+
+
+def _not_taken(flag, folder, path):
+    """Refuse a file the command writes whose name a folder (or a device, pipe) already has."""
+    try:
+        taken = path.exists() and not path.is_file()
+    except OSError:  # e.g. a name too long: check_output_folder has said so
+        return
+    if taken:
+        what = "a folder" if path.is_dir() else "a device, pipe or socket"
+        raise CLIError(
+            f"'{flag}' = {_shown(folder)} holds {what} {_shown(path)} where the command writes "
+            f"the file {path.name}: must be a folder in which {path.name} is a regular file or "
+            "does not exist (remove or rename it, or choose another folder)"
+        )
 
 
 def _not_an_input(flag, path, inputs):

@@ -104,6 +104,19 @@ def files(tmp_path_factory):
     (root / "run").mkdir()  # a finished run: its full.sql is a start case for the next
     shutil.copy(paths["good.sql"], root / "run" / "full.sql")
     paths["run"], paths["run_full.sql"] = str(root / "run"), str(root / "run" / "full.sql")
+    # Earlier runs' folders with a folder (or a pipe) where the command writes a file.
+    for folder, name in [
+        ("leftover_case_file", "cases.sql"),
+        ("leftover_table", "constraints.md"),
+        ("leftover_stage", "full.sql"),
+        ("leftover_run_stats", "full.run_stats.json"),
+        ("leftover_summary", "sweep_summary.csv"),
+        ("leftover_index", "index.md"),
+    ]:
+        path(folder).mkdir()
+        (root / folder / name).mkdir()
+    path("leftover_pipe").mkdir()
+    os.mkfifo(root / "leftover_pipe" / "full.sql")
     paths["missing"] = str(root / "missing" / "nothing.sql")
     paths["root"] = str(root)
     return paths
@@ -297,6 +310,37 @@ MISUSES = [
         "--output-dir",
     ),
     ("n2_under_file", ["analyze", "--output-dir", "{out}", "--n2", "{a_file.txt}/n2.html"], "--n2"),
+    ("folder_named_cases_sql", ["analyze", "--output-dir", "{leftover_case_file}"], "--output-dir"),
+    (
+        "folder_named_constraints_md",
+        ["analyze", "--output-dir", "{leftover_table}"],
+        "--output-dir",
+    ),
+    (
+        "folder_named_full_sql",
+        ["optimize", "--optimizer", "SLSQP", "--output-dir", "{leftover_stage}"],
+        "--output-dir",
+    ),
+    (
+        "folder_named_run_stats",
+        ["optimize", "--problem", "full", "--output-dir", "{leftover_run_stats}"],
+        "--output-dir",
+    ),
+    (
+        "pipe_named_full_sql",
+        ["optimize", "--problem", "full", "--output-dir", "{leftover_pipe}"],
+        "--output-dir",
+    ),
+    (
+        "folder_named_sweep_summary",
+        ["sweep", "--start-case", "{good.sql}", "--output-dir", "{leftover_summary}"],
+        "--output-dir",
+    ),
+    (
+        "folder_named_report_index",
+        ["report", "{good.sql}", "--output-dir", "{leftover_index}"],
+        "--output-dir",
+    ),
     ("n2_is_folder", ["analyze", "--output-dir", "{out}", "--n2", "{empty_folder}"], "--n2"),
     ("n2_unwritable", ["analyze", "--output-dir", "{out}", "--n2", "{unwritable}/n2.html"], "--n2"),
     # integers
@@ -523,6 +567,18 @@ def test_messages_say_what_is_allowed(paths, capsys, no_pyoptsparse):
         ("report", "{empty_folder}"): "without case files",
         ("analyze", "--output-dir", "{a_file.txt}/out"): "is a regular file, not a folder",
         ("analyze", "--n2", "/dev/null"): "'--n2' = '/dev/null' is not a regular file",
+        ("analyze", "--output-dir", "{leftover_case_file}"): "cases.sql' where the command writes",
+        ("analyze", "--output-dir", "{leftover_table}"): "holds a folder",
+        ("optimize", "--output-dir", "{leftover_stage}"): "writes the file full.sql",
+        ("optimize", "--output-dir", "{leftover_run_stats}"): "writes the file full.run_stats.json",
+        ("optimize", "--output-dir", "{leftover_pipe}"): "holds a device, pipe or socket",
+        ("sweep", "--start-case", "{good.sql}", "--output-dir", "{leftover_summary}"): (
+            "writes the file sweep_summary.csv"
+        ),
+        ("report", "{good.sql}", "--output-dir", "{leftover_index}"): "writes the file index.md",
+        ("analyze", "--output-dir", "{out}", "--n2", "{out}/../out"): "is the folder --output-dir",
+        ("analyze", "--output-dir", "{out}/a/b", "--n2", "{out}/a"): "is a folder of --output-dir",
+        ("analyze", "--output-dir", "{out}", "--n2", "{out}/cases.sql/x"): "lies under cases.sql",
         ("analyze", "--output-dir", "{out}", "--n2", "{out}"): "is the folder --output-dir",
     }
     for argv, text in cases.items():
