@@ -52,10 +52,17 @@ from lpc_mdo.post.tables import (
     format_constraint_status,
     status_word,
 )
+from lpc_mdo.problems import CONSTRAINT_KINDS
 from lpc_mdo.progress import interrupt_message
 from lpc_mdo.run_lock import LOCK_NAME, FolderInUse, LockFailed, folder_lock
 from lpc_mdo.sensitivities import sensitivities_from_case, sensitivities_path
-from lpc_mdo.sweep_parameters import PAPER_SWEEPS, SWEEP_PARAMETERS, reference_value, sweep_vehicle
+from lpc_mdo.sweep_parameters import (
+    LIMIT_CONSTRAINT_KINDS,
+    PAPER_SWEEPS,
+    SWEEP_PARAMETERS,
+    reference_value,
+    sweep_vehicle,
+)
 from lpc_mdo.sweeps import point_case_file, run_sweep
 from lpc_mdo.vehicle import VehicleSpecError, load_vehicle
 from lpc_mdo.vehicle.condition_contract import condition_kind
@@ -537,6 +544,7 @@ def _preflight(args):
                         f"{args.problem}) is not available: {missing}"
                     )
         if command == "sweep":
+            _check_sweep_problem(args)
             _check_sweep_values(args)
             if args.mpi:
                 _check_mpi_ranks()
@@ -689,6 +697,34 @@ def _check_sweep_count(args):
             f"'--values' = {_values_text(args.values)} are too many: must be at most "
             f"{MAX_SWEEP_VALUES} values (each is an optimization of its own)"
         )
+
+
+def _check_sweep_problem(args):
+    """Refuse a swept constraint limit that the points' problem does not constrain."""
+    parameters = list(PAPER_SWEEPS) if args.parameter == "all" else [args.parameter]
+    for parameter in parameters:
+        kind = LIMIT_CONSTRAINT_KINDS.get(parameter)
+        if kind is None:
+            continue
+        what = SWEEP_PARAMETERS[parameter][0]
+        if kind == "static_margin" and args.static_margin == "off":
+            raise CLIError(
+                f"'--static-margin' = off leaves out the constraint that --parameter {parameter} "
+                f"moves (the {what}), so every point would be the same problem: must be on "
+                "with --parameter min_static_margin"
+            )
+        posed = study_plan.stage(args.problem).constraint_kinds or CONSTRAINT_KINDS
+        if kind not in posed:
+            problems = [
+                s.name
+                for s in study_plan.STAGES
+                if kind in (s.constraint_kinds or CONSTRAINT_KINDS)
+            ]
+            raise CLIError(
+                f"'--problem' = {args.problem} has no {kind} constraint, which --parameter "
+                f"{args.parameter} moves (the {what}), so every point would be the same "
+                f"problem: must be one of {', '.join(problems)} with --parameter {args.parameter}"
+            )
 
 
 def _check_sweep_values(args):

@@ -417,6 +417,30 @@ MISUSES = [
         [*SWEEP, "--start-case", "{good.sql}", "--parameter", "payload", "--values", "-5"],
         "--values",
     ),
+    # a swept limit whose constraint the points' problem leaves out: every point the same
+    (
+        "static_margin_limit_without_static_margin",
+        [*SWEEP, "--start-case", "{good.sql}", "--parameter", "min_static_margin"]
+        + ["--values", "0.05", "0.1", "--static-margin", "off"],
+        "--static-margin",
+    ),
+    (
+        "static_margin_limit_in_a_problem_without_it",
+        [*SWEEP, "--start-case", "{good.sql}", "--parameter", "min_static_margin"]
+        + ["--values", "0.05", "0.1", "--problem", "subproblem_1"],
+        "--problem",
+    ),
+    (
+        "noise_limit_in_a_problem_without_noise",
+        [*SWEEP, "--start-case", "{good.sql}", "--parameter", "max_noise"]
+        + ["--values", "70", "75", "--problem", "subproblem_4"],
+        "--problem",
+    ),
+    (
+        "paper_sweeps_in_a_problem_without_soc",
+        [*SWEEP, "--start-case", "{good.sql}", "--problem", "subproblem_3"],
+        "--problem",
+    ),
     # the command line itself
     ("unknown_command", ["fly"], "command"),
     ("unknown_problem", ["optimize", "--problem", "subproblem_9"], "--problem"),
@@ -498,6 +522,18 @@ def test_enough_misuses():
             "0.2",
             "0.3",
         ],
+        [
+            *SWEEP,
+            "--start-case",
+            "{good.sql}",
+            "--parameter",
+            "min_static_margin",
+            "--values",
+            "0.05",
+            "0.1",
+            "--static-margin",
+            "on",
+        ],
         ["analyze", "--output-dir", "{out}", "--n2", "{out}/missing_folder/n2.html"],
         ["analyze", "--vehicle", "{vehicle.toml}", "--output-dir", "{out}"],
         ["report", "{good_folder}", "--output-dir", "{out}"],
@@ -507,6 +543,7 @@ def test_enough_misuses():
         "start_case",
         "new_output_dir",
         "sweep_values",
+        "static_margin_limit_sweep",
         "n2_new_folder",
         "vehicle",
         "report_folder",
@@ -576,6 +613,19 @@ def test_messages_say_what_is_allowed(paths, capsys, no_pyoptsparse):
             "writes the file sweep_summary.csv"
         ),
         ("report", "{good.sql}", "--output-dir", "{leftover_index}"): "writes the file index.md",
+        (
+            *SWEEP,
+            "--start-case",
+            "{good.sql}",
+            "--parameter",
+            "min_static_margin",
+            "--values",
+            "0.1",
+            "--static-margin",
+            "off",
+        ): "every point would be the same problem: must be on",
+        (*SWEEP, "--start-case", "{good.sql}", "--parameter", "max_noise", "--values", "70")
+        + ("--problem", "subproblem_4"): "has no noise constraint",
         ("analyze", "--output-dir", "{out}", "--n2", "{out}/../out"): "is the folder --output-dir",
         ("analyze", "--output-dir", "{out}/a/b", "--n2", "{out}/a"): "is a folder of --output-dir",
         ("analyze", "--output-dir", "{out}", "--n2", "{out}/cases.sql/x"): "lies under cases.sql",
