@@ -587,6 +587,31 @@ def _input_files(args):
     return files
 
 
+def _no_option_before_the_command(parser, argv):
+    """Refuse an option of a command given before it (argparse: 'invalid choice: <its value>')."""
+    own = {flag for action in parser._actions for flag in action.option_strings}
+    given = next((token for token in argv if token in parser.commands), None)
+    for token in argv:
+        if token in parser.commands or token == "--":
+            return
+        flag = token.split("=", 1)[0]
+        if not flag.startswith("-") or flag in own:
+            continue
+        having = {}  # command -> its option that ``flag`` is (argparse takes a prefix too)
+        for name, command in parser.commands.items():
+            options = [o for action in command._actions for o in action.option_strings]
+            found = [o for o in options if o == flag or (len(flag) > 2 and o.startswith(flag))]
+            if len(found) == 1 or flag in found:
+                having[name] = flag if flag in found else found[0]
+        if having:
+            name = given if given in having else next(iter(having))
+            other = f"; {given} has no {having[name]}" if given and given not in having else ""
+            raise CLIError(
+                f"'{flag}' must come after the command: lpc-mdo {name} {having[name]} ... "
+                f"(commands: {', '.join(parser.commands)}){other}"
+            )
+
+
 def _no_option_twice(argv):
     """Refuse an option given twice (argparse would keep the last one without a word)."""
     seen = set()
@@ -1178,8 +1203,10 @@ def build_parser():
         "--processes": _integer("--processes", 1, upper=1024),
     }
 
+    parser.commands = {}  # name -> its parser (for _no_option_before_the_command)
+
     def add_command(name, help):
-        command = sub.add_parser(name, help=help)
+        command = parser.commands[name] = sub.add_parser(name, help=help)
         _add_debug(command, argparse.SUPPRESS)  # also accepted after the command
         return command
 
@@ -1406,7 +1433,9 @@ def main(argv=None):
     args = None
     try:
         _no_option_twice(argv)
-        args = build_parser().parse_args(argv)
+        parser = build_parser()
+        _no_option_before_the_command(parser, argv)
+        args = parser.parse_args(argv)
         debug = args.debug
         _preflight(args)
         with _output_folder_lock(args):

@@ -445,6 +445,12 @@ MISUSES = [
     ("unknown_command", ["fly"], "command"),
     ("unknown_problem", ["optimize", "--problem", "subproblem_9"], "--problem"),
     ("unknown_option", ["analyze", "--bogus"], "--bogus"),
+    # an option of a command given before the command
+    ("vehicle_before_the_command", ["--vehicle", "{vehicle.toml}", "analyze"], "--vehicle"),
+    ("vehicle_equals_before_the_command", ["--vehicle={vehicle.toml}", "analyze"], "--vehicle"),
+    ("flag_before_the_command", ["--no-trim", "analyze", "--output-dir", "{out}"], "--no-trim"),
+    ("option_before_no_command", ["--output-dir", "{out}"], "--output-dir"),
+    ("prefix_before_the_command", ["--start", "{good.sql}", "sweep"], "--start"),
     (
         "unknown_parameter",
         [*SWEEP, "--start-case", "{good.sql}", "--parameter", "wing_area"],
@@ -626,6 +632,14 @@ def test_messages_say_what_is_allowed(paths, capsys, no_pyoptsparse):
         ): "every point would be the same problem: must be on",
         (*SWEEP, "--start-case", "{good.sql}", "--parameter", "max_noise", "--values", "70")
         + ("--problem", "subproblem_4"): "has no noise constraint",
+        ("--vehicle", "{vehicle.toml}", "analyze"): (
+            "'--vehicle' must come after the command: lpc-mdo analyze --vehicle ... "
+            "(commands: analyze, optimize, sweep, report)"
+        ),
+        ("--max-iter", "5", "sweep", "--start-case", "{good.sql}"): "lpc-mdo sweep --max-iter",
+        ("--n2", "n2.html", "optimize"): "lpc-mdo analyze --n2 ... (commands: analyze, "
+        "optimize, sweep, report); optimize has no --n2",
+        ("--start", "{good.sql}", "sweep"): "lpc-mdo sweep --start-case ...",
         ("analyze", "--output-dir", "{out}", "--n2", "{out}/../out"): "is the folder --output-dir",
         ("analyze", "--output-dir", "{out}/a/b", "--n2", "{out}/a"): "is a folder of --output-dir",
         ("analyze", "--output-dir", "{out}", "--n2", "{out}/cases.sql/x"): "lies under cases.sql",
