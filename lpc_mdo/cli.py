@@ -39,9 +39,10 @@ from lpc_mdo.analysis import (
     trim_tolerances,
 )
 from lpc_mdo.api.weights import format_mass_breakdown, mass_breakdown
-from lpc_mdo.core.checks import check_choice, check_integer, check_number
+from lpc_mdo.core.checks import check_choice, check_integer, check_number, cut_text
 from lpc_mdo.post.report import _CASE_SUFFIXES, ReportSpec, find_case_files, write_report
 from lpc_mdo.post.stall import format_stall_speed_check
+from lpc_mdo.post.statistics import run_stats_path
 from lpc_mdo.post.tables import (
     DEFAULT_TOL,
     constraint_rows,
@@ -51,10 +52,17 @@ from lpc_mdo.post.tables import (
     format_constraint_status,
     status_word,
 )
+from lpc_mdo.problems import CONSTRAINT_KINDS
 from lpc_mdo.progress import interrupt_message
 from lpc_mdo.run_lock import LOCK_NAME, FolderInUse, LockFailed, folder_lock
 from lpc_mdo.sensitivities import sensitivities_from_case, sensitivities_path
-from lpc_mdo.sweep_parameters import PAPER_SWEEPS, SWEEP_PARAMETERS, reference_value, sweep_vehicle
+from lpc_mdo.sweep_parameters import (
+    LIMIT_CONSTRAINT_KINDS,
+    PAPER_SWEEPS,
+    SWEEP_PARAMETERS,
+    reference_value,
+    sweep_vehicle,
+)
 from lpc_mdo.sweeps import point_case_file, run_sweep
 from lpc_mdo.vehicle import VehicleSpecError, load_vehicle
 from lpc_mdo.vehicle.condition_contract import condition_kind
@@ -63,6 +71,13 @@ from lpc_mdo.vehicle.condition_contract import condition_kind
 EXIT_USER_ERROR, EXIT_BUG, EXIT_INTERRUPTED = 2, 1, 130
 #: A write into the output folder failed (full disk, read-only file system).
 EXIT_WRITE_ERROR = 1
+
+#: Characters of a value (a path, a word) an error message shows: a longer one is cut, with its
+#: length, so that the message stays one short line.
+SHOWN_CHARACTERS = 200
+#: Most values ``lpc-mdo sweep --values`` takes: each is an optimization of the full problem
+#: (minutes to hours), and more than this is a mistake rather than a study.
+MAX_SWEEP_VALUES = 1000
 
 SQLITE_MAGIC = b"SQLite format 3\x00"
 #: Tables every OpenMDAO SqliteRecorder file has.
@@ -77,11 +92,44 @@ class CLIError(Exception):
     """A user error of the command line (the message names the argument, value and allowed)."""
 
 
+def _shown(text):
+    """``repr`` of a path or word for a message, cut to :data:`SHOWN_CHARACTERS` if longer."""
+    return cut_text(os.fspath(text), SHOWN_CHARACTERS)
+
+
+def _values_text(values):
+    """Return the numbers of ``--values`` for a message (a long list: its first and its count)."""
+    if len(values) <= 5:
+        return " ".join(f"{v:g}" for v in values)
+    return " ".join(f"{v:g}" for v in values[:3]) + f" ... ({len(values)} values)"
+
+
 class _Parser(argparse.ArgumentParser):
     """An ArgumentParser whose errors are :class:`CLIError` (one line, no usage block)."""
 
+    def parse_known_args(self, args=None, namespace=None):
+        """Parse as argparse does, keeping the arguments for :meth:`error` (also a command's)."""
+        self._arguments = list(sys.argv[1:] if args is None else args)
+        return super().parse_known_args(args, namespace)
+
+    def parse_args(self, args=None, namespace=None):
+        """Parse as argparse does; name at most three unrecognized arguments, each cut."""
+        parsed, extras = self.parse_known_args(args, namespace)
+        if extras:
+            shown = ", ".join(_shown(text) for text in extras[:3])
+            more = f" and {len(extras) - 3} more" if len(extras) > 3 else ""
+            self.error(f"unrecognized arguments: {shown}{more}")
+        return parsed
+
     def error(self, message):
-        """Raise the parse error as a CLIError; :func:`main` prints it as one line."""
+        """Raise the parse error as a CLIError; :func:`main` prints it as one line.
+
+        argparse puts an offending value into its message in full ('invalid choice: <value>'):
+        a long one is cut here.
+        """
+        for text in sorted(set(getattr(self, "_arguments", ())), key=len, reverse=True):
+            if len(text) > SHOWN_CHARACTERS and text in message:
+                message = message.replace(repr(text), _shown(text)).replace(text, _shown(text))
         raise CLIError(f"{message} (see '{self.prog} --help')")
 
 
@@ -126,17 +174,17 @@ def _existing(flag, what, folder_ok=False):
             exists, is_dir = path.exists(), path.is_dir()
         except OSError as err:
             raise CLIError(
-                f"'{flag}' = {text!r} cannot be read ({err.strerror}): must be {what}"
+                f"'{flag}' = {_shown(text)} cannot be read ({err.strerror}): must be {what}"
             ) from err
         if not exists:
-            raise CLIError(f"'{flag}' = {text!r} does not exist: must be {what}")
+            raise CLIError(f"'{flag}' = {_shown(text)} does not exist: must be {what}")
         if is_dir and not folder_ok:
-            raise CLIError(f"'{flag}' = {text!r} is a folder: must be {what}")
+            raise CLIError(f"'{flag}' = {_shown(text)} is a folder: must be {what}")
         if not is_dir and not path.is_file():  # a pipe or device would block the read
-            raise CLIError(f"'{flag}' = {text!r} is not a regular file (a pipe or device): "
+            raise CLIError(f"'{flag}' = {_shown(text)} is not a regular file (a pipe or device): "
                            f"must be {what}")  # fmt: skip
         if not is_dir and not os.access(path, os.R_OK):
-            raise CLIError(f"'{flag}' = {text!r} is not readable: must be {what}")
+            raise CLIError(f"'{flag}' = {_shown(text)} is not readable: must be {what}")
         return text
 
     parse.__name__ = "path"
@@ -182,7 +230,7 @@ def _optimizer(flag):
         name = check_choice(flag, text.upper(), drivers.KNOWN_OPTIMIZERS, error=CLIError)
         missing = optimizer_problem(name)
         if missing:
-            raise CLIError(f"'{flag}' = {text!r} is not available: {missing}")
+            raise CLIError(f"'{flag}' = {_shown(text)} is not available: {missing}")
         return name
 
     parse.__name__ = "optimizer"
@@ -207,14 +255,14 @@ def _folder_problem(folder):
         while not existing.exists():
             existing = existing.parent
         if not existing.is_dir():
-            return f"cannot be created: '{existing}' is a regular file, not a folder"
+            return f"cannot be created: {_shown(existing)} is a regular file, not a folder"
         # The one reliable test (os.access says yes to root on a read-only folder).
         with tempfile.TemporaryFile(dir=existing, prefix=".lpc-mdo-write-test-"):
             pass
     except OSError as err:
         if existing == target:
             return f"is not writable: {err.strerror}"
-        return f"cannot be created: '{existing}' is not writable: {err.strerror}"
+        return f"cannot be created: {_shown(existing)} is not writable: {err.strerror}"
     return None
 
 
@@ -244,7 +292,7 @@ def check_output_folder(flag, path):
         problem = _folder_problem(path)
     if problem:
         raise CLIError(
-            f"'{flag}' = {os.fspath(path)!r} {problem}: must be a folder that exists or can be "
+            f"'{flag}' = {_shown(path)} {problem}: must be a folder that exists or can be "
             "created, and is writable"
         )
 
@@ -263,19 +311,32 @@ def check_output_file(flag, path):
     Raises
     ------
     CLIError
-        If the path is a folder or its folder cannot be created or written into.
+        If the path is a folder or another file that is not a regular one (a device, pipe or
+        socket), or its folder cannot be created or written into.
     """
     text = os.fspath(path)
     target = Path(text).absolute()
     allowed = (
         "a file name (e.g. n2.html) in a folder that exists or can be created, and is writable"
     )
-    if target.is_dir():
-        raise CLIError(f"'{flag}' = {text!r} is a folder: must be {allowed}")
+    try:
+        is_dir = target.is_dir()
+    except OSError as err:  # e.g. a name longer than the file system allows
+        raise CLIError(
+            f"'{flag}' = {_shown(text)} cannot be used ({err.strerror}): must be {allowed}"
+        ) from err
+    if is_dir:
+        raise CLIError(f"'{flag}' = {_shown(text)} is a folder: must be {allowed}")
+    if target.exists() and not target.is_file():  # writing it would block or fail at the end
+        raise CLIError(
+            f"'{flag}' = {_shown(text)} is not a regular file (a device, pipe or socket): "
+            f"must be {allowed}"
+        )
     problem = _folder_problem(target.parent)
     if problem:
         raise CLIError(
-            f"'{flag}' = {text!r}: its folder '{target.parent}' {problem}: must be {allowed}"
+            f"'{flag}' = {_shown(text)}: its folder {_shown(target.parent)} {problem}: "
+            f"must be {allowed}"
         )
 
 
@@ -348,7 +409,7 @@ def open_case_file(flag, path, need_final=False, vehicle=None, given=None):
     what = CASE_FILE_TEXT
 
     def fail(problem):
-        named = f"{given!r}: its case file {text!r}" if given else repr(text)
+        named = f"{_shown(given)}: its case file {_shown(text)}" if given else _shown(text)
         return CLIError(f"'{flag}' = {named} {problem}: must be {what}")
 
     size = os.path.getsize(text)
@@ -443,30 +504,34 @@ def load_vehicle_argument(flag, path):
             head = fh.read(16)
         if head == SQLITE_MAGIC:
             raise CLIError(
-                f"'{flag}' = {path!r} is an SQLite file (a case file belongs to --start-case): "
+                f"'{flag}' = {_shown(path)} is an SQLite file (a case file belongs to "
+                "--start-case): "
                 f"must be {allowed}"
             )
     try:
         return load_vehicle(path)
     except VehicleSpecError as err:
-        label = "the reference vehicle" if path is None else repr(path)
+        label = "the reference vehicle" if path is None else _shown(path)
         raise VehicleSpecError(f"'{flag}' = {label}: {err}") from err
     except UnicodeDecodeError as err:
         raise CLIError(
-            f"'{flag}' = {path!r} is not UTF-8 text (byte {err.start}): must be {allowed}"
+            f"'{flag}' = {_shown(path)} is not UTF-8 text (byte {err.start}): must be {allowed}"
         ) from err
 
 
 def _preflight(args):
     """Check every path and file of the command before any model is built."""
     command = args.command
+    if command == "sweep":
+        _check_sweep_count(args)
     args.vehicle_spec = load_vehicle_argument("--vehicle", args.vehicle)
     check_output_folder("--output-dir", args.output_dir)
     inputs, written = _input_files(args), _files_written(args)
     if command == "analyze" and args.n2 is not None:
-        _check_n2_file(args.n2, inputs, written)
+        _check_n2_file(args.n2, args.output_dir, inputs, written)
     for path in written:
         _not_an_input("--output-dir", path, inputs)
+        _not_taken("--output-dir", args.output_dir, path)
     if command in ("optimize", "sweep"):
         if args.optimizer is None:  # a given --optimizer was checked by its type
             names = study_plan.SEQUENCE if args.problem == "sequence" else [args.problem]
@@ -479,6 +544,7 @@ def _preflight(args):
                         f"{args.problem}) is not available: {missing}"
                     )
         if command == "sweep":
+            _check_sweep_problem(args)
             _check_sweep_values(args)
             if args.mpi:
                 _check_mpi_ranks()
@@ -521,6 +587,31 @@ def _input_files(args):
     return files
 
 
+def _no_option_before_the_command(parser, argv):
+    """Refuse an option of a command given before it (argparse: 'invalid choice: <its value>')."""
+    own = {flag for action in parser._actions for flag in action.option_strings}
+    given = next((token for token in argv if token in parser.commands), None)
+    for token in argv:
+        if token in parser.commands or token == "--":
+            return
+        flag = token.split("=", 1)[0]
+        if not flag.startswith("-") or flag in own:
+            continue
+        having = {}  # command -> its option that ``flag`` is (argparse takes a prefix too)
+        for name, command in parser.commands.items():
+            options = [o for action in command._actions for o in action.option_strings]
+            found = [o for o in options if o == flag or (len(flag) > 2 and o.startswith(flag))]
+            if len(found) == 1 or flag in found:
+                having[name] = flag if flag in found else found[0]
+        if having:
+            name = given if given in having else next(iter(having))
+            other = f"; {given} has no {having[name]}" if given and given not in having else ""
+            raise CLIError(
+                f"'{flag}' must come after the command: lpc-mdo {name} {having[name]} ... "
+                f"(commands: {', '.join(parser.commands)}){other}"
+            )
+
+
 def _no_option_twice(argv):
     """Refuse an option given twice (argparse would keep the last one without a word)."""
     seen = set()
@@ -534,46 +625,80 @@ def _no_option_twice(argv):
             seen.add(flag)
 
 
-def _check_n2_file(text, inputs, written):
-    """``--n2``: a new HTML file, none of the command's ``inputs`` or ``written`` files."""
+def _check_n2_file(text, output_dir, inputs, written):
+    """``--n2``: a new HTML file, not ``output_dir``, none of the ``inputs`` or ``written``."""
+    allowed = "must be a file name, e.g. n2.html"
     if not text.strip() or text.endswith(("/", os.sep)):
         why = "is empty" if not text.strip() else "names a folder"
-        raise CLIError(f"'--n2' = {text!r} {why}: must be a file name, e.g. n2.html")
+        raise CLIError(f"'--n2' = {_shown(text)} {why}: {allowed}")
     check_output_file("--n2", text)
     _not_an_input("--n2", text, inputs)
-    target = Path(text).absolute()
+    # Where the paths lead (links and '..' followed): the folder the command creates, a file
+    # it writes, or a folder of one of them, are no place for the diagram.
+    target, out = os.path.realpath(text), os.path.realpath(output_dir)
+    if target == out or out.startswith(target + os.sep):
+        which = "is the folder" if target == out else "is a folder of"
+        raise CLIError(
+            f"'--n2' = {_shown(text)} {which} --output-dir = {_shown(output_dir)}, which the "
+            f"command creates: must be a file name, e.g. {_shown(Path(output_dir, 'n2.html'))}"
+        )
     for path in written:
-        if target == path.absolute():
+        place = os.path.realpath(path)
+        if target == place or target.startswith(place + os.sep):
+            which = "is" if target == place else "lies under"
             raise CLIError(
-                f"'--n2' = {text!r} is the file {path.name} the command writes into "
-                "--output-dir: must be another file name, e.g. n2.html"
+                f"'--n2' = {_shown(text)} {which} {path.name}, a file the command writes into "
+                f"--output-dir: {allowed}"
             )
 
 
 def _files_written(args):
-    """Return the files a command writes into its output folder (checked against inputs)."""
+    """Return the files a command writes into its output folder (checked against inputs).
+
+    The case files, each with its run statistics (optimize, sweep), and the tables: the sweep
+    summary, the constraint tables of analyze, the index of a report.
+    """
     out = Path(args.output_dir)
     if args.command == "analyze":
         return [out / name for name in ("cases.sql", "constraints.md", "constraints.csv")]
+    if args.command == "report":
+        return [out / "index.md"]
     if args.command == "optimize":
         names = study_plan.SEQUENCE if args.problem == "sequence" else [args.problem]
-        return [out / f"{name}.sql" for name in names]
+        cases = [out / f"{name}.sql" for name in names]
+        return [*cases, *map(run_stats_path, cases)]
     if args.command == "sweep":
         parameters = list(PAPER_SWEEPS) if args.parameter == "all" else [args.parameter]
         margins = {"on": (True,), "off": (False,), "both": (True, False)}[args.static_margin]
-        files = [
-            Path(point_case_file(str(out), parameter, value, margin))
-            for parameter in parameters
-            for value in (args.values or SWEEP_PARAMETERS[parameter][2] or ())
-            for margin in margins
-        ]
-        if len(set(files)) < len(files):  # two values that print alike (6 digits)
-            raise CLIError(
-                f"'--values' = {args.values}: two values give the same case file name (they "
-                "agree to 6 significant digits): must be distinct values"
-            )
-        return files
+        files = {}
+        for parameter in parameters:
+            for value in args.values or SWEEP_PARAMETERS[parameter][2] or ():
+                for margin in margins:
+                    path = Path(point_case_file(str(out), parameter, value, margin))
+                    if path in files:  # two values that print alike (6 digits)
+                        raise CLIError(
+                            f"'--values' = {files[path]!r} and {value!r} give the same case file "
+                            f"name {path.name} (they agree to 6 significant digits): must be "
+                            "distinct values"
+                        )
+                    files[path] = value
+        return [*files, *map(run_stats_path, files), out / "sweep_summary.csv"]
     return []
+
+
+def _not_taken(flag, folder, path):
+    """Refuse a file the command writes whose name a folder (or a device, pipe) already has."""
+    try:
+        taken = path.exists() and not path.is_file()
+    except OSError:  # e.g. a name too long: check_output_folder has said so
+        return
+    if taken:
+        what = "a folder" if path.is_dir() else "a device, pipe or socket"
+        raise CLIError(
+            f"'{flag}' = {_shown(folder)} holds {what} {_shown(path)} where the command writes "
+            f"the file {path.name}: must be a folder in which {path.name} is a regular file or "
+            "does not exist (remove or rename it, or choose another folder)"
+        )
 
 
 def _not_an_input(flag, path, inputs):
@@ -585,8 +710,45 @@ def _not_an_input(flag, path, inputs):
             same = False
         if same:
             raise CLIError(
-                f"'{flag}' = {os.fspath(path)!r} is the file of {source}, which the command "
+                f"'{flag}' = {_shown(path)} is the file of {source}, which the command "
                 "reads: must be a new file name (lpc-mdo never writes over its inputs)"
+            )
+
+
+def _check_sweep_count(args):
+    """Refuse more ``--values`` than :data:`MAX_SWEEP_VALUES` (before any check per value)."""
+    if args.values and len(args.values) > MAX_SWEEP_VALUES:
+        raise CLIError(
+            f"'--values' = {_values_text(args.values)} are too many: must be at most "
+            f"{MAX_SWEEP_VALUES} values (each is an optimization of its own)"
+        )
+
+
+def _check_sweep_problem(args):
+    """Refuse a swept constraint limit that the points' problem does not constrain."""
+    parameters = list(PAPER_SWEEPS) if args.parameter == "all" else [args.parameter]
+    for parameter in parameters:
+        kind = LIMIT_CONSTRAINT_KINDS.get(parameter)
+        if kind is None:
+            continue
+        what = SWEEP_PARAMETERS[parameter][0]
+        if kind == "static_margin" and args.static_margin == "off":
+            raise CLIError(
+                f"'--static-margin' = off leaves out the constraint that --parameter {parameter} "
+                f"moves (the {what}), so every point would be the same problem: must be on "
+                "with --parameter min_static_margin"
+            )
+        posed = study_plan.stage(args.problem).constraint_kinds or CONSTRAINT_KINDS
+        if kind not in posed:
+            problems = [
+                s.name
+                for s in study_plan.STAGES
+                if kind in (s.constraint_kinds or CONSTRAINT_KINDS)
+            ]
+            raise CLIError(
+                f"'--problem' = {args.problem} has no {kind} constraint, which --parameter "
+                f"{args.parameter} moves (the {what}), so every point would be the same "
+                f"problem: must be one of {', '.join(problems)} with --parameter {args.parameter}"
             )
 
 
@@ -601,7 +763,7 @@ def _check_sweep_values(args):
         return
     if args.parameter == "all":
         raise CLIError(
-            f"'--values' = {args.values} needs one '--parameter': must be used with "
+            f"'--values' = {_values_text(args.values)} needs one '--parameter': must be used with "
             f"--parameter {' or --parameter '.join(SWEEP_PARAMETERS)}"
         )
     for value in args.values:
@@ -623,7 +785,7 @@ def _check_report_cases(cases):
         files = [path for _, path in find_case_files(cases)]
         if not files:
             raise CLIError(
-                f"'cases' = {cases!r} is a folder without case files (no SQLite file named "
+                f"'cases' = {_shown(cases)} is a folder without case files (no SQLite file named "
                 f"*{', *'.join(_CASE_SUFFIXES)} in it or its subfolders): must be {CASE_FILE_TEXT}"
                 ", or a folder holding such files"
             )
@@ -1041,8 +1203,10 @@ def build_parser():
         "--processes": _integer("--processes", 1, upper=1024),
     }
 
+    parser.commands = {}  # name -> its parser (for _no_option_before_the_command)
+
     def add_command(name, help):
-        command = sub.add_parser(name, help=help)
+        command = parser.commands[name] = sub.add_parser(name, help=help)
         _add_debug(command, argparse.SUPPRESS)  # also accepted after the command
         return command
 
@@ -1235,6 +1399,17 @@ def _one_line(err):
     return " ".join(part.strip() for part in str(err).splitlines() if part.strip())
 
 
+def _short(line):
+    """Cut an error line that a value made long (the checks cut what they echo; this is the net).
+
+    Its beginning (the argument and value) and its end (what is allowed) are kept.
+    """
+    if len(line) <= 5 * SHOWN_CHARACTERS:
+        return line
+    head, tail = line[: 3 * SHOWN_CHARACTERS], line[-SHOWN_CHARACTERS:]
+    return f"{head} ... ({len(line)} characters) ... {tail}"
+
+
 def main(argv=None):
     """
     Run the ``lpc-mdo`` command.
@@ -1258,7 +1433,9 @@ def main(argv=None):
     args = None
     try:
         _no_option_twice(argv)
-        args = build_parser().parse_args(argv)
+        parser = build_parser()
+        _no_option_before_the_command(parser, argv)
+        args = parser.parse_args(argv)
         debug = args.debug
         _preflight(args)
         with _output_folder_lock(args):
@@ -1271,7 +1448,7 @@ def main(argv=None):
             return _bug(err)
         if debug:
             traceback.print_exc()
-        print(f"lpc-mdo: error: {_one_line(err)}", file=sys.stderr)
+        print(f"lpc-mdo: error: {_short(_one_line(err))}", file=sys.stderr)
         return EXIT_USER_ERROR
     except (OSError, sqlite3.Error) as err:
         problem = _write_failure(err)
@@ -1303,7 +1480,7 @@ def _kept_after_write_failure(args, problem):
     kept = sorted(p.name for p in Path(folder).glob("*.sql")) if Path(folder).is_dir() else []
     listed = ", ".join(kept) if kept else "none"
     return (
-        f"writing into '--output-dir' = {folder!r} failed ({problem}); the case files there "
+        f"writing into '--output-dir' = {_shown(folder)} failed ({problem}); the case files there "
         f"are kept as they were last written ({listed}): free space (or choose another folder) "
         "and start again, e.g. from the last one with --start-case"
     )
@@ -1323,13 +1500,13 @@ def _output_folder_lock(args):
             yield
     except LockFailed as err:
         raise CLIError(
-            f"'--output-dir' = {args.output_dir!r}: its lock file cannot be created "
-            f"({err.path}: {err.reason}): must be a folder lpc-mdo can write into"
+            f"'--output-dir' = {_shown(args.output_dir)}: its lock file cannot be created "
+            f"({_shown(err.path)}: {err.reason}): must be a folder lpc-mdo can write into"
         ) from err
     except FolderInUse as err:
         raise CLIError(
-            f"'--output-dir' = {args.output_dir!r} is in use by another lpc-mdo run (process "
-            f"{err.pid}, lock file {os.path.join(args.output_dir, LOCK_NAME)}): must be a folder "
+            f"'--output-dir' = {_shown(args.output_dir)} is in use by another lpc-mdo run "
+            f"(process {err.pid}, lock file {LOCK_NAME} in it): must be a folder "
             "no running lpc-mdo writes into (wait for it, or choose another folder)"
         ) from err
 

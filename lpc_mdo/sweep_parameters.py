@@ -25,6 +25,14 @@ SWEEP_PARAMETERS = {
     "min_static_margin": ("static-margin limit", "-", None),
     "cruise_range": ("cruise range", "km", None),
 }
+#: The constraint limits among them: name -> the kind of the constraint each one bounds
+#: (:data:`lpc_mdo.problems.CONSTRAINT_KINDS`). Swept in a problem without that constraint (or
+#: with the static-margin constraint left out), every point is the same problem.
+LIMIT_CONSTRAINT_KINDS = {
+    "final_soc": "soc",
+    "max_noise": "noise",
+    "min_static_margin": "static_margin",
+}
 #: The sweeps of the paper (Sec. V.C): ``lpc-mdo sweep --parameter all``.
 PAPER_SWEEPS = tuple(k for k, (_, _, values) in SWEEP_PARAMETERS.items() if values)
 

@@ -14,6 +14,7 @@ from lpc_mdo.core.checks import (
     check_number,
     check_range,
     check_shape,
+    cut_text,
     range_text,
     units_suffix,
 )
@@ -175,6 +176,17 @@ def test_type_choice_and_shape_messages():
         "'nodes' must have shape (n, 3), got shape (3,)"
     )
     assert check_shape("nodes", np.zeros((4, 3)), (None, 3)).shape == (4, 3)
+
+
+def test_long_text_is_cut_with_its_length():
+    assert cut_text("gauss") == "'gauss'"
+    assert cut_text("a\nb") == "'a\\nb'"  # one line
+    assert cut_text("x" * 5000, 200) == repr("x" * 200) + "... (5000 characters)"
+    message = _message(check_choice, "quadrature", "s" * 10**6, ("gauss", "midpoint"))[1]
+    assert message.endswith(
+        "... (1000000 characters) is not allowed: must be one of 'gauss', 'midpoint'"
+    )
+    assert len(message) < 200
 
 
 def test_range_check_as_openmdao_check_valid():

@@ -104,6 +104,19 @@ def files(tmp_path_factory):
     (root / "run").mkdir()  # a finished run: its full.sql is a start case for the next
     shutil.copy(paths["good.sql"], root / "run" / "full.sql")
     paths["run"], paths["run_full.sql"] = str(root / "run"), str(root / "run" / "full.sql")
+    # Earlier runs' folders with a folder (or a pipe) where the command writes a file.
+    for folder, name in [
+        ("leftover_case_file", "cases.sql"),
+        ("leftover_table", "constraints.md"),
+        ("leftover_stage", "full.sql"),
+        ("leftover_run_stats", "full.run_stats.json"),
+        ("leftover_summary", "sweep_summary.csv"),
+        ("leftover_index", "index.md"),
+    ]:
+        path(folder).mkdir()
+        (root / folder / name).mkdir()
+    path("leftover_pipe").mkdir()
+    os.mkfifo(root / "leftover_pipe" / "full.sql")
     paths["missing"] = str(root / "missing" / "nothing.sql")
     paths["root"] = str(root)
     return paths
@@ -199,6 +212,25 @@ MISUSES = [
         "--n2",
     ),
     ("n2_is_the_output_dir", ["analyze", "--output-dir", "{out}", "--n2", "{root}"], "--n2"),
+    # the output folder does not exist yet: the command creates it where the diagram would go
+    ("n2_is_the_new_output_dir", ["analyze", "--output-dir", "{out}", "--n2", "{out}"], "--n2"),
+    (
+        "n2_is_the_new_output_dir_spelled_otherwise",
+        ["analyze", "--output-dir", "{out}", "--n2", "{out}/../out"],
+        "--n2",
+    ),
+    (
+        "n2_is_a_folder_of_the_new_output_dir",
+        ["analyze", "--output-dir", "{out}/a/b", "--n2", "{out}/a"],
+        "--n2",
+    ),
+    (
+        "n2_under_the_case_file",
+        ["analyze", "--output-dir", "{out}", "--n2", "{out}/cases.sql/n2.html"],
+        "--n2",
+    ),
+    ("n2_a_device", ["analyze", "--output-dir", "{out}", "--n2", "/dev/null"], "--n2"),
+    ("n2_a_pipe", ["analyze", "--output-dir", "{out}", "--n2", "{pipe.toml}"], "--n2"),
     (
         "output_dir_twice",
         ["analyze", "--output-dir", "{out}", "--output-dir", "{out}/b"],
@@ -278,6 +310,37 @@ MISUSES = [
         "--output-dir",
     ),
     ("n2_under_file", ["analyze", "--output-dir", "{out}", "--n2", "{a_file.txt}/n2.html"], "--n2"),
+    ("folder_named_cases_sql", ["analyze", "--output-dir", "{leftover_case_file}"], "--output-dir"),
+    (
+        "folder_named_constraints_md",
+        ["analyze", "--output-dir", "{leftover_table}"],
+        "--output-dir",
+    ),
+    (
+        "folder_named_full_sql",
+        ["optimize", "--optimizer", "SLSQP", "--output-dir", "{leftover_stage}"],
+        "--output-dir",
+    ),
+    (
+        "folder_named_run_stats",
+        ["optimize", "--problem", "full", "--output-dir", "{leftover_run_stats}"],
+        "--output-dir",
+    ),
+    (
+        "pipe_named_full_sql",
+        ["optimize", "--problem", "full", "--output-dir", "{leftover_pipe}"],
+        "--output-dir",
+    ),
+    (
+        "folder_named_sweep_summary",
+        ["sweep", "--start-case", "{good.sql}", "--output-dir", "{leftover_summary}"],
+        "--output-dir",
+    ),
+    (
+        "folder_named_report_index",
+        ["report", "{good.sql}", "--output-dir", "{leftover_index}"],
+        "--output-dir",
+    ),
     ("n2_is_folder", ["analyze", "--output-dir", "{out}", "--n2", "{empty_folder}"], "--n2"),
     ("n2_unwritable", ["analyze", "--output-dir", "{out}", "--n2", "{unwritable}/n2.html"], "--n2"),
     # integers
@@ -354,10 +417,40 @@ MISUSES = [
         [*SWEEP, "--start-case", "{good.sql}", "--parameter", "payload", "--values", "-5"],
         "--values",
     ),
+    # a swept limit whose constraint the points' problem leaves out: every point the same
+    (
+        "static_margin_limit_without_static_margin",
+        [*SWEEP, "--start-case", "{good.sql}", "--parameter", "min_static_margin"]
+        + ["--values", "0.05", "0.1", "--static-margin", "off"],
+        "--static-margin",
+    ),
+    (
+        "static_margin_limit_in_a_problem_without_it",
+        [*SWEEP, "--start-case", "{good.sql}", "--parameter", "min_static_margin"]
+        + ["--values", "0.05", "0.1", "--problem", "subproblem_1"],
+        "--problem",
+    ),
+    (
+        "noise_limit_in_a_problem_without_noise",
+        [*SWEEP, "--start-case", "{good.sql}", "--parameter", "max_noise"]
+        + ["--values", "70", "75", "--problem", "subproblem_4"],
+        "--problem",
+    ),
+    (
+        "paper_sweeps_in_a_problem_without_soc",
+        [*SWEEP, "--start-case", "{good.sql}", "--problem", "subproblem_3"],
+        "--problem",
+    ),
     # the command line itself
     ("unknown_command", ["fly"], "command"),
     ("unknown_problem", ["optimize", "--problem", "subproblem_9"], "--problem"),
     ("unknown_option", ["analyze", "--bogus"], "--bogus"),
+    # an option of a command given before the command
+    ("vehicle_before_the_command", ["--vehicle", "{vehicle.toml}", "analyze"], "--vehicle"),
+    ("vehicle_equals_before_the_command", ["--vehicle={vehicle.toml}", "analyze"], "--vehicle"),
+    ("flag_before_the_command", ["--no-trim", "analyze", "--output-dir", "{out}"], "--no-trim"),
+    ("option_before_no_command", ["--output-dir", "{out}"], "--output-dir"),
+    ("prefix_before_the_command", ["--start", "{good.sql}", "sweep"], "--start"),
     (
         "unknown_parameter",
         [*SWEEP, "--start-case", "{good.sql}", "--parameter", "wing_area"],
@@ -435,6 +528,18 @@ def test_enough_misuses():
             "0.2",
             "0.3",
         ],
+        [
+            *SWEEP,
+            "--start-case",
+            "{good.sql}",
+            "--parameter",
+            "min_static_margin",
+            "--values",
+            "0.05",
+            "0.1",
+            "--static-margin",
+            "on",
+        ],
         ["analyze", "--output-dir", "{out}", "--n2", "{out}/missing_folder/n2.html"],
         ["analyze", "--vehicle", "{vehicle.toml}", "--output-dir", "{out}"],
         ["report", "{good_folder}", "--output-dir", "{out}"],
@@ -444,6 +549,7 @@ def test_enough_misuses():
         "start_case",
         "new_output_dir",
         "sweep_values",
+        "static_margin_limit_sweep",
         "n2_new_folder",
         "vehicle",
         "report_folder",
@@ -503,10 +609,114 @@ def test_messages_say_what_is_allowed(paths, capsys, no_pyoptsparse):
         (*FULL, "--optimizer", "SNOPT"): "pyoptsparse",
         ("report", "{empty_folder}"): "without case files",
         ("analyze", "--output-dir", "{a_file.txt}/out"): "is a regular file, not a folder",
+        ("analyze", "--n2", "/dev/null"): "'--n2' = '/dev/null' is not a regular file",
+        ("analyze", "--output-dir", "{leftover_case_file}"): "cases.sql' where the command writes",
+        ("analyze", "--output-dir", "{leftover_table}"): "holds a folder",
+        ("optimize", "--output-dir", "{leftover_stage}"): "writes the file full.sql",
+        ("optimize", "--output-dir", "{leftover_run_stats}"): "writes the file full.run_stats.json",
+        ("optimize", "--output-dir", "{leftover_pipe}"): "holds a device, pipe or socket",
+        ("sweep", "--start-case", "{good.sql}", "--output-dir", "{leftover_summary}"): (
+            "writes the file sweep_summary.csv"
+        ),
+        ("report", "{good.sql}", "--output-dir", "{leftover_index}"): "writes the file index.md",
+        (
+            *SWEEP,
+            "--start-case",
+            "{good.sql}",
+            "--parameter",
+            "min_static_margin",
+            "--values",
+            "0.1",
+            "--static-margin",
+            "off",
+        ): "every point would be the same problem: must be on",
+        (*SWEEP, "--start-case", "{good.sql}", "--parameter", "max_noise", "--values", "70")
+        + ("--problem", "subproblem_4"): "has no noise constraint",
+        ("--vehicle", "{vehicle.toml}", "analyze"): (
+            "'--vehicle' must come after the command: lpc-mdo analyze --vehicle ... "
+            "(commands: analyze, optimize, sweep, report)"
+        ),
+        ("--max-iter", "5", "sweep", "--start-case", "{good.sql}"): "lpc-mdo sweep --max-iter",
+        ("--n2", "n2.html", "optimize"): "lpc-mdo analyze --n2 ... (commands: analyze, "
+        "optimize, sweep, report); optimize has no --n2",
+        ("--start", "{good.sql}", "sweep"): "lpc-mdo sweep --start-case ...",
+        ("analyze", "--output-dir", "{out}", "--n2", "{out}/../out"): "is the folder --output-dir",
+        ("analyze", "--output-dir", "{out}/a/b", "--n2", "{out}/a"): "is a folder of --output-dir",
+        ("analyze", "--output-dir", "{out}", "--n2", "{out}/cases.sql/x"): "lies under cases.sql",
+        ("analyze", "--output-dir", "{out}", "--n2", "{out}"): "is the folder --output-dir",
     }
     for argv, text in cases.items():
         assert main(_format(argv, paths)) == 2
         assert text in capsys.readouterr().err, argv
+
+
+# --- Long values are cut in the message -------------------------------------------------------
+
+LONG = "x" * 5000
+#: (id, argv, the argument the message names, the length the message gives)
+LONG_VALUES = [
+    ("vehicle", ["analyze", "--vehicle", "{root}/" + LONG], "--vehicle", "characters)"),
+    ("output_dir", ["analyze", "--output-dir", "{root}/" + LONG], "--output-dir", "characters)"),
+    (
+        "output_dir_under_a_file",
+        ["analyze", "--output-dir", "{a_file.txt}/" + LONG],
+        "--output-dir",
+        "characters)",
+    ),
+    ("n2", ["analyze", "--output-dir", "{out}", "--n2", "{root}/" + LONG], "--n2", "characters)"),
+    ("start_case", [*FULL, "--start-case", "{root}/" + LONG], "--start-case", "characters)"),
+    ("report_cases", ["report", "{root}/" + LONG], "'cases'", "characters)"),
+    ("optimizer", [*FULL, "--optimizer", LONG], "--optimizer", "(5000 characters)"),
+    ("problem", ["optimize", "--problem", LONG], "--problem", "(5000 characters)"),
+    (
+        "parameter_a_million",
+        [*SWEEP, "--start-case", "{good.sql}", "--parameter", "p" * 10**6],
+        "--parameter",
+        "(1000000 characters)",
+    ),
+    ("command", [LONG], "command", "(5000 characters)"),
+    ("unrecognized", ["analyze", LONG], "unrecognized", "(5000 characters)"),
+    ("unrecognized_many", ["analyze", *["x"] * 10**5], "unrecognized", "and 99997 more"),
+    (
+        "values_without_parameter",
+        [*SWEEP, "--start-case", "{good.sql}", "--values", *[str(v) for v in range(500)]],
+        "--values",
+        "(500 values)",
+    ),
+    (
+        "values_too_many",
+        [*SWEEP, "--start-case", "{good.sql}", "--parameter", "final_soc", "--values"]
+        + [str(0.1 + 1e-6 * i) for i in range(10**5)],
+        "--values",
+        "(100000 values)",
+    ),
+]
+
+
+@pytest.mark.parametrize(
+    ("argv", "argument", "length"), [m[1:] for m in LONG_VALUES], ids=[m[0] for m in LONG_VALUES]
+)
+def test_a_long_value_is_cut(argv, argument, length, paths, capsys, commands_must_not_start):
+    rc = main(_format(argv, paths))
+    captured = capsys.readouterr()
+    _assert_one_line_error(rc, captured, argument)
+    assert length in captured.err
+    assert len(captured.err) < 700, captured.err
+    assert not commands_must_not_start
+
+
+def test_too_many_sweep_values_are_refused_first(paths, capsys, monkeypatch):
+    # The count is checked before anything that takes time per value (a vehicle per value).
+    def no_vehicle(*args):
+        raise AssertionError("a vehicle was made for a value")
+
+    monkeypatch.setattr(cli, "sweep_vehicle", no_vehicle)
+    values = [str(0.1 + 1e-6 * i) for i in range(cli.MAX_SWEEP_VALUES + 1)]
+    argv = [*_format(SWEEP, paths), "--start-case", paths["good.sql"], "--parameter", "final_soc"]
+    rc = main([*argv, "--values", *values])
+    captured = capsys.readouterr()
+    _assert_one_line_error(rc, captured, "--values")
+    assert f"must be at most {cli.MAX_SWEEP_VALUES} values" in captured.err
 
 
 # --- --debug and bugs ----------------------------------------------------------------------
@@ -657,3 +867,16 @@ def test_a_lock_of_another_program_or_in_the_way(paths, capsys, tmp_path):
     dangling.symlink_to(tmp_path / "nowhere")
     rc = main(["analyze", "--output-dir", str(dangling)])
     _assert_one_line_error(rc, capsys.readouterr(), "--output-dir")
+
+
+def test_a_long_message_stays_one_short_line(paths, capsys, monkeypatch):
+    # A message whose value no check cut (the net of main): its start and its end are kept.
+    def long_message(args):
+        raise cli.CLIError(f"'--vehicle' = {'y' * 10**5}: must be a vehicle TOML file")
+
+    monkeypatch.setattr(cli, "_analyze", long_message)
+    rc = main(["analyze", "--output-dir", paths["out"]])
+    captured = capsys.readouterr()
+    _assert_one_line_error(rc, captured, "--vehicle")
+    assert "characters) ... " in captured.err and captured.err.rstrip().endswith("TOML file")
+    assert len(captured.err) < 1200

@@ -33,6 +33,7 @@ __all__ = [
     "check_number",
     "check_range",
     "check_shape",
+    "cut_text",
     "range_text",
     "units_suffix",
 ]
@@ -49,6 +50,18 @@ def _show(value) -> str:
     if len(text) > 60:
         text = text[:57] + "..."
     return f"{type(value).__name__} {text}"
+
+
+def cut_text(text, limit=60) -> str:
+    """
+    Return the ``repr`` of a text for a message, cut to ``limit`` characters if longer.
+
+    A cut text ends with the length of the whole, e.g. ``'/tmp/xxxx'... (5000 characters)``;
+    control characters are escaped (``repr``), so a message stays one line.
+    """
+    text = str(text)
+    shown = repr(text[:limit])
+    return shown if len(text) <= limit else f"{shown}... ({len(text)} characters)"
 
 
 def _plain(value):
@@ -350,7 +363,8 @@ def check_choice(name, value, allowed, *, error=ValueError, where=None):
         ok = False
     if not ok:
         listed = ", ".join(repr(c) for c in allowed)
-        raise error(f"{_prefix(where)}'{name}' = {value!r} is not allowed: must be one of {listed}")
+        shown = cut_text(value) if isinstance(value, str) else repr(value)
+        raise error(f"{_prefix(where)}'{name}' = {shown} is not allowed: must be one of {listed}")
     return value
 
 

@@ -19,7 +19,15 @@ import unicodedata
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
-from lpc_mdo.core.checks import _fmt, _show, check_integer, check_number, check_range, range_text
+from lpc_mdo.core.checks import (
+    _fmt,
+    _show,
+    check_integer,
+    check_number,
+    check_range,
+    cut_text,
+    range_text,
+)
 
 
 class VehicleSpecError(ValueError):
@@ -146,7 +154,7 @@ def _check_keys(
                 if odd is not None
                 else ""
             )
-            shown = _cut(_join(path, str(key)))
+            shown = cut_text(_join(path, str(key)))
             raise VehicleSpecError(f"unknown key {shown}{note}; allowed keys: {names}")
     for key, description in allowed.items():
         if key not in data and key not in optional:
@@ -250,12 +258,6 @@ _MAX_NAME = 200
 _MAX_PATH = 4096
 
 
-def _cut(text: str) -> str:
-    """``repr`` of a text with control characters escaped, cut to 60 characters for messages."""
-    shown = repr(text[:60])
-    return shown if len(text) <= 60 else f"{shown}... ({len(text)} characters)"
-
-
 def check_field(cls, name: str, value, key: str) -> float:
     """
     Check a number against the range of field ``name`` of vehicle part ``cls`` (file units).
@@ -284,7 +286,7 @@ def _string(value, spec: _Spec, path: str) -> str:
             else f"it has {len(value)} characters"
         )
         raise VehicleSpecError(
-            f"'{path}' = {_cut(value)} is not allowed: {why}; allowed: printable text of at "
+            f"'{path}' = {cut_text(value)} is not allowed: {why}; allowed: printable text of at "
             f"most {longest} characters"
         )
     if spec.choices and value not in spec.choices:
