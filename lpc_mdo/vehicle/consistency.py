@@ -267,7 +267,7 @@ def check_flight_speeds(vehicle) -> None:
     """
     Check that every wing-borne condition is fast enough for some wing the design may have.
 
-    A steady (1 g) or structural (load factor n) condition needs lift |n| m g from the wing
+    A steady (1 g) or structural (load factor n) condition needs lift abs(n) m g from the wing
     alone: 1/2 rho V^2 S_max C_L,max >= abs(n) m g, with m the design gross mass, rho at the
     condition's altitude (ISA), S_max the wing-area design variable's upper bound and C_L,max
     :data:`MAX_LIFT_COEFFICIENT`. Slower, no design within the bounds can fly it (the
