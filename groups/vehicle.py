@@ -33,7 +33,7 @@ from lpc_mdo.core.mpi import serial_comm
 from lpc_mdo.groups.motor import MotorDesignGroup
 from lpc_mdo.groups.weights import WeightsGroup, motor_group_indices
 from lpc_mdo.vehicle import reference_vehicle
-from lpc_mdo.vehicle.clearances import rotor_pairs, rotor_sides
+from lpc_mdo.vehicle.clearances import rotor_pairs, rotor_sides, side_by_side_pairs
 from lpc_mdo.vehicle.design_variable_registry import VEHICLE_DESIGN_VARIABLES
 
 # OpenMDAO notes, when a driver splits the model into systems before, in and after the
@@ -301,7 +301,11 @@ class VehicleGroup(om.Group):
         self.set_input_defaults(
             "wing_root_leading_edge", np.array(wing.root_leading_edge), units="m"
         )
-        self.add_subsystem("rotor_layout", RotorLayoutComp(vehicle=vehicle), promotes=["*"])
+        self.add_subsystem(
+            "rotor_layout",
+            RotorLayoutComp(vehicle=vehicle, side_by_side=side_by_side_pairs(vehicle)),
+            promotes=["*"],
+        )
         self.add_subsystem(
             "rotor_clearance",
             RotorClearanceComp(

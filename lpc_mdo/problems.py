@@ -22,7 +22,7 @@ from lpc_mdo.groups.lpc import LPCGroup, included_conditions, openmdao_units
 from lpc_mdo.recorder import CaseRecorder
 from lpc_mdo.study_plan import default_optimizer, stage
 from lpc_mdo.vehicle import load_vehicle, reference_vehicle
-from lpc_mdo.vehicle.clearances import clearance_constraints
+from lpc_mdo.vehicle.clearances import clearance_constraints, side_by_side_pairs
 from lpc_mdo.vehicle.condition_contract import condition_kind
 from lpc_mdo.vehicle.condition_layout import condition_layout
 from lpc_mdo.vehicle.design_variable_registry import BASELINE_SET
@@ -315,6 +315,12 @@ def declare_problem(
     if "soc" in wanted:
         model.add_constraint("state_of_charge", lower=limits.min_final_soc, ref=0.1)
     if "radius_intersection" in wanted:
+        if not side_by_side_pairs(vehicle):
+            raise ValueError(
+                "the radius-intersection constraint needs two lift rotors side by side in a row; "
+                f"the vehicle {vehicle.name!r} has one rotor per side in each row: choose a "
+                "problem without it (the clearance constraints space the disks)"
+            )
         model.add_constraint("radius_intersection", equals=limits.radius_intersection, ref=0.1)
     for con in clearance_constraints(vehicle):  # lpc_mdo.vehicle.clearances
         if con.kind in wanted:

@@ -887,8 +887,8 @@ DICT_CASES = [
     ),
     (
         "+3g pull-up at 5 m/s",
-        _set("conditions", 13, "speed", 5.0),
-        "conditions[13].speed",
+        _set("conditions", 10, "speed", 5.0),
+        "conditions[10].speed",
         "must fly at >= 48.75 m/s",
     ),
     (

@@ -203,6 +203,19 @@ def test_invalid_toml_is_reported(tmp_path):
 # Bad input: one clear error per kind, naming the key, the value and what is allowed
 
 
+def _explicit_oei(then):
+    """Write the OEI cases out as four tables (failed_rotor 0..3), then apply ``then``."""
+
+    def mutate(d):
+        each = d["conditions"][9]
+        assert each["failed_rotor"] == "each"
+        cases = [{**each, "name": f"oei_{k + 1}", "failed_rotor": k} for k in range(4)]
+        d["conditions"][9:10] = cases
+        then(d)
+
+    return mutate
+
+
 def _set(*keys_and_value):
     """Return a mutator that sets data[k0][k1]... = value."""
     *keys, value = keys_and_value
@@ -331,10 +344,19 @@ BAD_INPUTS = {
         "'constraints.radius_intersection_definition' = 'gap' is not allowed: must be one of "
         "'span_fraction', 'clearance'",
     ),
-    "six lift rotors": (
+    "seven lift rotors": (
+        lambda d: d["lift_rotors"].__delitem__(7),
+        "'lift_rotors' must have 4 or 6 or 8 or 10 or 12 entries (the lift-plus-cruise layout: "
+        "2 to 6 mirror-symmetric pairs, [[lift_rotors]] tables), got 7",
+    ),
+    "fourteen lift rotors": (
+        lambda d: d["lift_rotors"].extend(d["lift_rotors"][:6]),
+        "'lift_rotors' must have 4 or 6 or 8 or 10 or 12 entries",
+    ),
+    "six lift rotors with the pairs of eight": (
         lambda d: d["lift_rotors"].__delitem__(slice(6, 8)),
-        "'lift_rotors' must have exactly 8 entries (the lift-plus-cruise layout: 4 "
-        "mirror-symmetric pairs, [[lift_rotors]] tables), got 6",
+        "'lift_rotors[3].pair' = 3 is out of range: must be in [0, 2] (6 lift rotors make 3 "
+        "pairs; group 3 is the pusher)",
     ),
     "three rotors in a pair": (
         _set("lift_rotors", 7, "pair", 0),
@@ -367,12 +389,12 @@ BAD_INPUTS = {
         "'conditions[6].name' = 'hover' repeats 'conditions[0].name'; names must be unique",
     ),
     "condition name not an identifier": (
-        _set("conditions", 14, "name", "minus 1g"),
-        "'conditions[14].name' = 'minus 1g' is not allowed: must be an identifier",
+        _set("conditions", 11, "name", "minus 1g"),
+        "'conditions[11].name' = 'minus 1g' is not allowed: must be an identifier",
     ),
     "unknown condition kind": (
-        _set("conditions", 14, "kind", "pull_up"),
-        "'conditions[14].kind' = 'pull_up' is not allowed: must be one of 'hover', 'oei', "
+        _set("conditions", 11, "kind", "pull_up"),
+        "'conditions[11].kind' = 'pull_up' is not allowed: must be one of 'hover', 'oei', "
         "'transition', 'steady', 'structural'",
     ),
     "missing energy weight": (
@@ -380,8 +402,8 @@ BAD_INPUTS = {
         "missing key 'conditions[3].energy_weight'",
     ),
     "energy weight of a condition without power": (
-        _set("conditions", 13, "energy_weight", 1.0),
-        "'conditions[13].energy_weight' = 1.0 is not allowed: must be 0 in 'structural' "
+        _set("conditions", 10, "energy_weight", 1.0),
+        "'conditions[10].energy_weight' = 1.0 is not allowed: must be 0 in 'structural' "
         "conditions (they draw no power)",
     ),
     "cruise condition not steady": (
@@ -390,8 +412,8 @@ BAD_INPUTS = {
         "condition, one of ['climb', 'cruise', 'descent']",
     ),
     "structural condition at zero load factor": (
-        _set("conditions", 14, "load_factor", 0.0),
-        "'conditions[14].load_factor' = 0.0 is not allowed: must be non-zero in 'structural'",
+        _set("conditions", 11, "load_factor", 0.0),
+        "'conditions[11].load_factor' = 0.0 is not allowed: must be non-zero in 'structural'",
     ),
     "hover with speed": (
         _set("conditions", 0, "speed", 5.0),
@@ -402,17 +424,17 @@ BAD_INPUTS = {
         "'conditions[7].failed_rotor' = 2 is not allowed: must be -1 in 'steady' conditions",
     ),
     "OEI without a failed rotor": (
-        _set("conditions", 9, "failed_rotor", -1),
+        _explicit_oei(_set("conditions", 9, "failed_rotor", -1)),
         "'conditions[9].failed_rotor' = -1 is not allowed: must be a lift-rotor index (>= 0) "
         "in 'oei' conditions",
     ),
     "OEI repeats a failed rotor": (
-        _set("conditions", 10, "failed_rotor", 0),
+        _explicit_oei(_set("conditions", 10, "failed_rotor", 0)),
         "'conditions[10].failed_rotor' = 0 repeats 'conditions[9].failed_rotor'",
     ),
     "failed rotor index too large": (
-        _set("conditions", 9, "failed_rotor", 8),
-        "'conditions[9].failed_rotor' = 8 is out of range: must be in [-1, 7]",
+        _explicit_oei(_set("conditions", 9, "failed_rotor", 8)),
+        "'conditions[9].failed_rotor' = 8 is out of range: must be -1 or a lift-rotor index",
     ),
     "spars crossed": (
         _set("wing_box", "rear_spar", 0.2),

@@ -23,7 +23,9 @@ class RotorLayoutComp(om.ExplicitComponent):
     rear rotors behind and above it). The pusher hub keeps its offset from the fuselage tail:
     x = -l_fus + (x_ref + l_fus,ref).
 
-    Radius intersection, front and rear (paper Table 6, 2 equality constraints, target 0.20):
+    Radius intersection of each row's side-by-side neighbours (option ``side_by_side``, from
+    :func:`lpc_mdo.vehicle.clearances.side_by_side_pairs`; the reference: front and rear, paper
+    Table 6, 2 equality constraints, target 0.20; none for one rotor per side in each row):
 
     - ``span_fraction`` (default, the public code's form, which the paper's Table 8 satisfies):
       (R_inner + R_outer) / b
@@ -44,8 +46,9 @@ class RotorLayoutComp(om.ExplicitComponent):
     pusher_hub_position : (3,), m
     lift_rotor_radius : (num_lift,), m
         Radius of each lift rotor (its pair's).
-    radius_intersection : (2,), - or m
-        Front and rear values of the chosen definition.
+    radius_intersection : (num_neighbours,), - or m
+        Each row's neighbours' value of the chosen definition, front row first (absent when
+        there are none).
 
     Options
     -------
@@ -53,6 +56,8 @@ class RotorLayoutComp(om.ExplicitComponent):
         Reference layout (hub positions, boom junctions, wing sweep and dihedral, pairs).
     definition : str
         'span_fraction' or 'clearance'; default: the vehicle's constraint definition.
+    side_by_side : sequence of (int, int)
+        (inner pair, outer pair) of each row's neighbouring lift rotors, front row first.
     """
 
     def initialize(self):
@@ -63,6 +68,11 @@ class RotorLayoutComp(om.ExplicitComponent):
             allow_none=True,
             values=("span_fraction", "clearance", None),
             desc="radius-intersection definition; None: the vehicle's",
+        )
+        self.options.declare(
+            "side_by_side",
+            default=((2, 0), (3, 1)),
+            desc="(inner pair, outer pair) of each row's neighbours, front row first",
         )
 
     def setup(self):
@@ -96,9 +106,10 @@ class RotorLayoutComp(om.ExplicitComponent):
             [vehicle.fuselage.length, 0.0, 0.0]
         )
         self._pair = np.array([r.pair for r in rotors])
-        # Front: pairs (2 inner, 0 outer); rear: pairs (3 inner, 1 outer); one rotor each side.
-        self._inner = np.array([2, 3])
-        self._outer = np.array([0, 1])
+        # Side-by-side neighbours of each row (reference: front (2 inner, 0 outer), rear (3, 1)).
+        neighbours = np.array(self.options["side_by_side"], dtype=int).reshape(-1, 2)
+        self._inner, self._outer = neighbours[:, 0], neighbours[:, 1]
+        num_intersections = len(neighbours)
         left = self._sign < 0
         self._rotor_of_pair = np.array(
             [np.flatnonzero(left & (self._pair == p))[0] for p in range(num_pairs)]
@@ -113,7 +124,7 @@ class RotorLayoutComp(om.ExplicitComponent):
             "rotor_radius",
             np.array(radius),
             units="m",
-            desc="radius per rotor group (4 lift pairs, pusher)",
+            desc="radius per rotor group (the lift pairs, then the pusher)",
         )
         # Lateral gap between the inner and outer left rotors, front and rear: on the left side
         # y_inner > y_outer, so |y_outer - y_inner| = gap_base + b * gap_slope.
@@ -132,12 +143,13 @@ class RotorLayoutComp(om.ExplicitComponent):
         self.add_output(
             "lift_rotor_radius", np.full(num_lift, 1.0), units="m", desc="radius of each lift rotor"
         )
-        self.add_output(
-            "radius_intersection",
-            np.zeros(2),
-            units="m" if definition == "clearance" else None,
-            desc=f"front and rear radius intersection ({definition})",
-        )
+        if num_intersections:  # none when no two rotors of a row stand side by side
+            self.add_output(
+                "radius_intersection",
+                np.zeros(num_intersections),
+                units="m" if definition == "clearance" else None,
+                desc=f"radius intersection of each row's neighbours, front first ({definition})",
+            )
 
         self.declare_partials("lift_hub_position", "wing_span", val=self._slope.ravel())
         self.declare_partials(
@@ -146,9 +158,11 @@ class RotorLayoutComp(om.ExplicitComponent):
         self.declare_partials(
             "lift_rotor_radius", "rotor_radius", rows=np.arange(num_lift), cols=self._pair, val=1.0
         )
-        rows = np.array([0, 0, 1, 1])
-        cols = np.array([self._inner[0], self._outer[0], self._inner[1], self._outer[1]])
-        if definition == "span_fraction":
+        rows = np.repeat(np.arange(num_intersections), 2)
+        cols = np.column_stack([self._inner, self._outer]).ravel()
+        if not num_intersections:
+            pass
+        elif definition == "span_fraction":
             self.declare_partials("radius_intersection", "rotor_radius", rows=rows, cols=cols)
             self.declare_partials("radius_intersection", "wing_span")
         else:
@@ -174,6 +188,8 @@ class RotorLayoutComp(om.ExplicitComponent):
             [inputs["fuselage_length"][0], 0.0, 0.0]
         )
         outputs["lift_rotor_radius"] = radius[self._pair]
+        if not self._inner.size:
+            return
         pair_sum = radius[self._inner] + radius[self._outer]
         if self._definition == "span_fraction":
             outputs["radius_intersection"] = pair_sum / span
@@ -183,6 +199,8 @@ class RotorLayoutComp(om.ExplicitComponent):
     def compute_partials(self, inputs, partials):
         span = inputs["wing_span"][0]
         radius = inputs["rotor_radius"]
+        if not self._inner.size:
+            return
         if self._definition == "span_fraction":
             partials["radius_intersection", "rotor_radius"] = np.full(
                 self._inner.size + self._outer.size, 1.0 / span

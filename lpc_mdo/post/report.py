@@ -37,7 +37,7 @@ from lpc_mdo.vehicle import reference_vehicle
 from lpc_mdo.vehicle.condition_contract import condition_kind
 
 __all__ = [
-    "LPC_DESIGN_QUANTITIES",
+    "lpc_design_quantities",
     "LPC_THICKNESS_DISTRIBUTIONS",
     "lpc_distributions",
     "LPC_SWEEPS",
@@ -125,18 +125,25 @@ class SweepSpec:
     group_label: str | None = None
 
 
-#: Table 8 columns: vehicle-level design variables (the registry's; ``rotor_radius``
-#: holds the 4 lift-rotor pairs then the pusher) and the WeightsGroup gross mass.
-LPC_DESIGN_QUANTITIES = (
-    ("l_fuselage", "fuselage_length", "m"),
-    ("S_ref,wing", "wing_area", "m**2"),
-    ("AR_wing", "wing_aspect_ratio"),
-    ("S_ref,tail", "htail_area", "m**2"),
-    ("AR_tail", "htail_aspect_ratio"),
-    ("R_pusher", "rotor_radius", "m", 4),
-    *((f"R_lift,{i + 1}", "rotor_radius", "m", i) for i in range(4)),
-    ("W_0", "gross_mass", "kg"),
-)
+def lpc_design_quantities(vehicle):
+    """
+    Return the Table 8 columns of a vehicle: its vehicle-level design variables and W_0.
+
+    ``rotor_radius`` holds one radius per lift-rotor pair, then the pusher's: one column per
+    pair of the vehicle's layout.
+    """
+    num_pairs = len(vehicle.lift_rotor_pairs)
+    return (
+        ("l_fuselage", "fuselage_length", "m"),
+        ("S_ref,wing", "wing_area", "m**2"),
+        ("AR_wing", "wing_aspect_ratio"),
+        ("S_ref,tail", "htail_area", "m**2"),
+        ("AR_tail", "htail_aspect_ratio"),
+        ("R_pusher", "rotor_radius", "m", num_pairs),
+        *((f"R_lift,{i + 1}", "rotor_radius", "m", i) for i in range(num_pairs)),
+        ("W_0", "gross_mass", "kg"),
+    )
+
 
 #: The paper's Table 8 (its two lift-rotor radii; W0 from the 3723.99 kg calibrated reference),
 #: printed beside ours in the report (``ReportSpec.paper_designs``).
@@ -315,7 +322,7 @@ class ReportSpec:
 
     tol: float = DEFAULT_TOL
     refs: Mapping = field(default_factory=dict)
-    design_quantities: tuple = LPC_DESIGN_QUANTITIES
+    design_quantities: tuple | None = None
     paper_designs: tuple | None = PAPER_TABLE_8
     meshes: tuple = ("wing_mesh", "horizontal_tail_mesh")
     rotors: tuple = (("lift_hub_position", "lift_rotor_radius"),)
@@ -341,6 +348,10 @@ class ReportSpec:
     def __post_init__(self):
         if self.vehicle is None:
             self.vehicle = reference_vehicle()
+        if self.design_quantities is None:
+            self.design_quantities = lpc_design_quantities(self.vehicle)
+        if len(self.vehicle.lift_rotor_pairs) != 4:  # the paper's designs have 4 pairs
+            self.paper_designs = None
         if self.conditions is None:
             self.conditions = _powered_conditions(self.vehicle)
         if self.fom_conditions is None:

@@ -94,6 +94,7 @@ data.
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import os
 import tomllib
@@ -112,6 +113,7 @@ from lpc_mdo.vehicle.consistency import (
     check_flight_speeds,
 )
 from lpc_mdo.vehicle.design_variables import _read_design_variables
+from lpc_mdo.vehicle.one_rotor_out import expand_failures, file_keys
 from lpc_mdo.vehicle.parts import (
     AIRFOILS,
     Airfoil,
@@ -133,6 +135,7 @@ from lpc_mdo.vehicle.parts import (
     Wing,
     WingBox,
     WingSection,
+    _ReadOnlyDict,
 )
 from lpc_mdo.vehicle.schema import BASE_DIR, VehicleSpecError, _read_fields
 
@@ -274,19 +277,39 @@ def paper_calibrated_vehicle() -> Vehicle:
 def vehicle_from_dict(data: Mapping) -> Vehicle:
     """Validate a vehicle description (the parsed TOML) and build the :class:`Vehicle`.
 
+    A one-rotor-out condition with ``failed_rotor = "each"`` becomes one condition per distinct
+    failure (:mod:`lpc_mdo.vehicle.one_rotor_out`); messages name the file's tables.
+
     Raises
     ------
     VehicleSpecError
         At the first problem, naming the dotted key, the value and what is allowed.
     """
+    data, keys = expand_failures(data)
+    try:
+        return _build_vehicle(data, keys)
+    except VehicleSpecError as err:
+        if keys is None:
+            raise
+        raise VehicleSpecError(file_keys(str(err), keys)) from None
+
+
+def _build_vehicle(data: Mapping, keys: list[str] | None) -> Vehicle:
     values = _read_fields(Vehicle, data, "", skip="design_variables")
     values["wing"] = _check_wing(values["wing"])
     _check_lift_rotors(values["lift_rotors"])
-    _check_pusher(values["pusher"])
+    _check_pusher(values["pusher"], values["lift_rotors"])
     _check_geometry(values)
     _check_conditions(values)
     _check_mission(values["mission"], values["conditions"])
     values["design_variables"] = _read_design_variables(data["design_variables"], values)
+    if keys is not None:  # where the initial values come from, as the file's keys
+        values["design_variables"] = _ReadOnlyDict(
+            {
+                name: dataclasses.replace(dv, initial_from=file_keys(dv.initial_from, keys))
+                for name, dv in values["design_variables"].items()
+            }
+        )
     vehicle = Vehicle(**values)
     check_flight_speeds(vehicle)
     return vehicle

@@ -203,6 +203,11 @@ def _check_boom_length(parts: dict) -> None:
 
 def _check_rotors(parts: dict, env: _Envelope) -> None:
     attach = parts["booms"].attach_points
+    if len(attach) != len(parts["lift_rotors"]):
+        raise VehicleSpecError(
+            f"'booms.attach_points' has {len(attach)} entries; allowed: one per lift rotor, "
+            f"{len(parts['lift_rotors'])} ([[lift_rotors]] tables), in their order"
+        )
     for i, rotor in enumerate(parts["lift_rotors"]):
         key = f"lift_rotors[{i}].hub_position"
         hub = rotor.hub_position
@@ -216,19 +221,18 @@ def _check_rotors(parts: dict, env: _Envelope) -> None:
                 f"plane, |y| <= {env.half_span:.4g} (m; its boom hangs from the wing), got "
                 f"y = {hub[1]:.6g}",
             )
-        if i < len(attach):
-            point, akey = attach[i], f"booms.attach_points[{i}]"
-            _check_between_nose_and_tail(env, akey, point, "a boom's attach point")
-            _check_height(env, akey, point, "a boom's attach point")
-            if abs(point[1]) > env.half_span or abs(point[1] - hub[1]) > rotor.radius:
-                _refuse(
-                    akey,
-                    _fmt(point),
-                    f"a boom's attach point must lie within the wing's half span "
-                    f"(|y| <= {env.half_span:.4g} m) and within a rotor radius "
-                    f"({rotor.radius:.4g} m) of its rotor's hub y = {hub[1]:.6g} "
-                    f"(lift_rotors[{i}].hub_position), got y = {point[1]:.6g}",
-                )
+        point, akey = attach[i], f"booms.attach_points[{i}]"
+        _check_between_nose_and_tail(env, akey, point, "a boom's attach point")
+        _check_height(env, akey, point, "a boom's attach point")
+        if abs(point[1]) > env.half_span or abs(point[1] - hub[1]) > rotor.radius:
+            _refuse(
+                akey,
+                _fmt(point),
+                f"a boom's attach point must lie within the wing's half span "
+                f"(|y| <= {env.half_span:.4g} m) and within a rotor radius "
+                f"({rotor.radius:.4g} m) of its rotor's hub y = {hub[1]:.6g} "
+                f"(lift_rotors[{i}].hub_position), got y = {point[1]:.6g}",
+            )
     pusher = parts["pusher"]
     hub = pusher.hub_position
     low, high = -env.length - pusher.radius, env.wing_trailing_edge

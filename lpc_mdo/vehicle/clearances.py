@@ -60,6 +60,36 @@ def is_mirror_symmetric(vehicle):
     return True
 
 
+def side_by_side_pairs(vehicle):
+    """
+    Return the neighbouring lift-rotor pairs of each row, (inner pair, outer pair), front first.
+
+    The left rotors (y < 0) form rows: rotors whose hubs lie less than the smaller radius apart
+    in x share a row (the reference: the front row x = -0.66 and -0.79 m, the rear -4.97 and
+    -5.10 m). Within a row, sorted by abs(y), each rotor and the next one outboard are one entry:
+    the pairs the radius intersection (paper Table 6) ties together. The reference gives
+    ((2, 0), (3, 1)); a layout of one rotor per side in each row gives none.
+    """
+    left = [
+        (r.hub_position[0], abs(r.hub_position[1]), r.radius, r.pair)
+        for r in vehicle.lift_rotors
+        if r.hub_position[1] < 0.0
+    ]
+    left.sort(key=lambda item: -item[0])  # front (largest x) first
+    rows = []
+    for item in left:
+        row = rows[-1] if rows else None
+        if row is not None and row[-1][0] - item[0] < min(row[-1][2], item[2]):
+            row.append(item)
+        else:
+            rows.append([item])
+    out = []
+    for row in rows:
+        row.sort(key=lambda item: item[1])
+        out.extend((a[3], b[3]) for a, b in zip(row, row[1:], strict=False))
+    return tuple(out)
+
+
 def constrained_rotors(vehicle):
     """Return the indices into ``lift_rotors`` whose clearances are constrained."""
     n = len(vehicle.lift_rotors)

@@ -24,8 +24,6 @@ from lpc_mdo.vehicle.airframe import check_airframe
 from lpc_mdo.vehicle.condition_contract import CONDITION_KINDS
 from lpc_mdo.vehicle.parts import (
     _IDENTIFIER,
-    _NUM_PAIRS,
-    _PUSHER_GROUP,
     DesignCondition,
     Mission,
     Rotor,
@@ -43,11 +41,13 @@ def _close(a, b) -> bool:
 
 
 def _check_lift_rotors(rotors: tuple[Rotor, ...]) -> None:
+    num_pairs = len(rotors) // 2  # the count is even (LIFT_ROTOR_COUNTS, the schema)
     for i, r in enumerate(rotors):
-        if r.pair >= _NUM_PAIRS:
+        if r.pair >= num_pairs:
             raise VehicleSpecError(
                 f"'lift_rotors[{i}].pair' = {r.pair} is out of range: must be in [0, "
-                f"{_NUM_PAIRS - 1}] (group {_PUSHER_GROUP} is the pusher)"
+                f"{num_pairs - 1}] ({len(rotors)} lift rotors make {num_pairs} pairs; group "
+                f"{num_pairs} is the pusher)"
             )
     shared = ("radius", "num_blades", "hub_radius_ratio", "chord_cp", "twist_cp", "airfoil")
     for p, members in enumerate(_pairs(rotors)):
@@ -55,7 +55,7 @@ def _check_lift_rotors(rotors: tuple[Rotor, ...]) -> None:
             listed = ", ".join(f"lift_rotors[{i}]" for i in members) or "none"
             raise VehicleSpecError(
                 f"'lift_rotors' pair {p} has {len(members)} rotors ({listed}); each pair "
-                f"0..{_NUM_PAIRS - 1} must have exactly 2 mirror-image rotors"
+                f"0..{num_pairs - 1} must have exactly 2 mirror-image rotors"
             )
         i, j = members
         a, b = rotors[i], rotors[j]
@@ -125,11 +125,12 @@ def _check_blades(lift_rotors: tuple[Rotor, ...], pusher: Rotor) -> None:
             )
 
 
-def _check_pusher(pusher: Rotor) -> None:
-    if pusher.pair != _PUSHER_GROUP:
+def _check_pusher(pusher: Rotor, lift_rotors: tuple[Rotor, ...]) -> None:
+    group = len(lift_rotors) // 2
+    if pusher.pair != group:
         raise VehicleSpecError(
-            f"'pusher.pair' = {pusher.pair} is not allowed: must be {_PUSHER_GROUP} "
-            f"(the pusher is its own group; 0..3 are the lift-rotor pairs)"
+            f"'pusher.pair' = {pusher.pair} is not allowed: must be {group} (the pusher is its "
+            f"own group, after the lift-rotor pairs 0..{group - 1})"
         )
 
 

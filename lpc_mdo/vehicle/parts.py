@@ -53,9 +53,11 @@ AIRFOILS: dict[str, Airfoil] = {
     )
 }
 
-_NUM_LIFT_ROTORS = 8
-_NUM_PAIRS = 4
-_PUSHER_GROUP = 4
+#: Lift-rotor counts of the lift-plus-cruise layouts the model holds: 2 to 6 mirror-symmetric
+#: pairs (a 4-rotor to a 12-rotor vehicle), each pair a rotor group of the design variables;
+#: the pusher is the group after the last pair.
+LIFT_ROTOR_COUNTS = (4, 6, 8, 10, 12)
+_MAX_PAIRS = max(LIFT_ROTOR_COUNTS) // 2
 #: Bound of every body-frame coordinate (m): a vehicle of this class is at most 30 m long and
 #: wide; 50 m catches positions in mm or in ft x 1000.
 _REACH = 50.0
@@ -361,7 +363,7 @@ class Rotor:
     twist_cp: tuple[float, ...] = _angle(ge=-80, le=80, shape=(4,))
     spin_direction: int = _param(choices=(-1, 1))
     thrust_axis: tuple[float, ...] = _param(shape=(3,), unit_vector=True)
-    pair: int = _param(ge=0, le=_PUSHER_GROUP)
+    pair: int = _param(ge=0, le=_MAX_PAIRS)
     airfoil: str = _param(choices=_AIRFOIL_NAMES, polar_file=True)
 
     @property
@@ -386,15 +388,15 @@ class Booms:
         Characteristic length of each boom for the drag build-up (m).
     form_factor : float
         Drag form factor of each boom (-).
-    attach_points : tuple of 8 tuples of 3 float
-        Boom-wing junction of the boom of ``lift_rotors[i]``, body frame (m).
+    attach_points : tuple of tuples of 3 float
+        Boom-wing junction of the boom of ``lift_rotors[i]``, body frame (m): one per lift rotor.
     """
 
     # A boom is 0.1-30 m long (at most a fuselage length); form factors of bodies are 1-3.
     length: float = _param("m", ge=0.1, le=30)
     form_factor: float = _param(ge=1, le=3)
     attach_points: tuple[tuple[float, ...], ...] = _param(
-        "m", ge=-_REACH, le=_REACH, shape=(_NUM_LIFT_ROTORS, 3)
+        "m", ge=-_REACH, le=_REACH, shape=(None, 3)
     )
 
 
@@ -667,7 +669,7 @@ class DesignCondition:
     duration: float = _param("s", ge=0, le=86400)
     energy_weight: float = _param(ge=0, le=100)
     load_factor: float = _param(ge=-5, le=5)
-    failed_rotor: int = _param(ge=-1, le=_NUM_LIFT_ROTORS - 1)
+    failed_rotor: int = _param(ge=-1, le=max(LIFT_ROTOR_COUNTS) - 1)
     acceleration: float = _param("m/s^2", ge=-20, le=20)
     design_variable_prefix: str = _param()
 
@@ -909,8 +911,9 @@ class Vehicle:
     vertical_tail: LiftingSurface = _param()
     fuselage: Fuselage = _param()
     lift_rotors: tuple[Rotor, ...] = _param(
-        count=_NUM_LIFT_ROTORS,
-        count_note="the lift-plus-cruise layout: 4 mirror-symmetric pairs, [[lift_rotors]] tables",
+        count=LIFT_ROTOR_COUNTS,
+        count_note="the lift-plus-cruise layout: 2 to 6 mirror-symmetric pairs, [[lift_rotors]] "
+        "tables",
     )
     pusher: Rotor = _param()
     booms: Booms = _param()
@@ -928,7 +931,7 @@ class Vehicle:
 
     @property
     def lift_rotor_pairs(self) -> tuple[tuple[int, int], ...]:
-        """Indices into :attr:`lift_rotors` of the rotors of pairs 0..3."""
+        """Indices into :attr:`lift_rotors` of the rotors of each pair, pair 0 first."""
         return _pairs(self.lift_rotors)
 
     @property
@@ -950,4 +953,6 @@ class Vehicle:
 
 
 def _pairs(rotors: tuple[Rotor, ...]) -> tuple[tuple[int, int], ...]:
-    return tuple(tuple(i for i, r in enumerate(rotors) if r.pair == p) for p in range(_NUM_PAIRS))
+    """Return the indices of the rotors of each pair 0 .. len(rotors)/2 - 1 (the rotor groups)."""
+    num_pairs = len(rotors) // 2
+    return tuple(tuple(i for i, r in enumerate(rotors) if r.pair == p) for p in range(num_pairs))

@@ -55,7 +55,7 @@ class _Spec:
     scale: float = 1.0  # stored value = file value * scale
     shape: tuple[int, ...] = ()  # arrays of numbers
     unit_vector: bool = False
-    count: int | None = None  # lists of tables
+    count: int | tuple[int, ...] | None = None  # lists of tables: the allowed lengths
     count_note: str = ""
     derived: bool = False  # set by the loader, not read from the file
     polar_file: bool = False  # a string may also name an existing airfoil polar file
@@ -109,14 +109,15 @@ def _describe(tp, spec: _Spec) -> str:
     if dataclasses.is_dataclass(tp):
         return "table"
     if typing.get_origin(tp) is tuple and dataclasses.is_dataclass(typing.get_args(tp)[0]):
-        return f"list of {spec.count} tables"
+        counts = (spec.count,) if isinstance(spec.count, int) else spec.count
+        return "list of " + (" or ".join(str(n) for n in counts) + " " if counts else "") + "tables"
     if typing.get_origin(tp) is Mapping:
         return "table of design-variable tables"
     if spec.choices:
         return "one of " + ", ".join(repr(c) for c in spec.choices)
     parts = [spec.units] if spec.units else []
     if spec.shape:
-        kind = " x ".join(str(n) for n in spec.shape) + " numbers"
+        kind = " x ".join("N" if n is None else str(n) for n in spec.shape) + " numbers"
         parts.insert(0, kind)
     elif tp is int:
         parts.insert(0, "integer")
@@ -308,11 +309,13 @@ def _array(value, shape: tuple[int, ...], spec: _Spec, path: str) -> tuple:
     """Convert a nested list of numbers with ``shape`` to nested tuples of converted floats."""
     if not shape:
         return _number(value, spec, path)
-    n = shape[0]
-    what = f"a list of {n} " + ("numbers" if len(shape) == 1 else "lists")
+    n = shape[0]  # None: any length of at least one (checked against other keys elsewhere)
+    what = f"a list of {n or ''} ".replace("  ", " ") + ("numbers" if len(shape) == 1 else "lists")
     if not isinstance(value, list):
         raise VehicleSpecError(f"'{path}' must be {what}, got {_show(value)}")
-    if len(value) != n:
+    if n is None and not value:
+        raise VehicleSpecError(f"'{path}' must have at least one element, got 0")
+    if n is not None and len(value) != n:
         raise VehicleSpecError(f"'{path}' must have {n} elements, got {len(value)}")
     return tuple(_array(v, shape[1:], spec, f"{path}[{i}]") for i, v in enumerate(value))
 
@@ -322,9 +325,12 @@ def _table_list(cls, spec: _Spec, value, path: str) -> tuple:
         raise VehicleSpecError(
             f"'{path}' must be a list of tables ([[{path}]]), got {_show(value)}"
         )
-    if spec.count is not None and len(value) != spec.count:
+    counts = (spec.count,) if isinstance(spec.count, int) else spec.count
+    if counts is not None and len(value) not in counts:
+        allowed = " or ".join(str(n) for n in counts)
         raise VehicleSpecError(
-            f"'{path}' must have exactly {spec.count} entries ({spec.count_note}), got {len(value)}"
+            f"'{path}' must have {'exactly ' if len(counts) == 1 else ''}{allowed} entries "
+            f"({spec.count_note}), got {len(value)}"
         )
     if not value:
         raise VehicleSpecError(f"'{path}' must have at least one entry ({spec.count_note})")
