@@ -71,6 +71,8 @@ from lpc_mdo.vehicle.condition_contract import condition_kind
 EXIT_USER_ERROR, EXIT_BUG, EXIT_INTERRUPTED = 2, 1, 130
 #: A write into the output folder failed (full disk, read-only file system).
 EXIT_WRITE_ERROR = 1
+#: A model raised om.AnalysisError outside an optimization (its range left at this design).
+EXIT_ANALYSIS_ERROR = 1
 
 #: Characters of a value (a path, a word) an error message shows: a longer one is cut, with its
 #: length, so that the message stays one short line.
@@ -1459,6 +1461,16 @@ def main(argv=None):
         print(f"lpc-mdo: error: {_kept_after_write_failure(args, problem)}", file=sys.stderr)
         return EXIT_WRITE_ERROR
     except Exception as err:  # not hidden: the traceback, then what to do with it
+        if type(err).__name__ == "AnalysisError" and type(err).__module__.startswith("openmdao"):
+            # A model left its stated range for this vehicle's design (om.AnalysisError names the
+            # component and the values): a result, not a bug.
+            if debug:
+                traceback.print_exc()
+            print(
+                f"lpc-mdo: error: the analysis left a model's range: {_short(_one_line(err))}",
+                file=sys.stderr,
+            )
+            return EXIT_ANALYSIS_ERROR
         return _bug(err)
 
 

@@ -32,6 +32,7 @@ from lpc_mdo.vehicle.condition_layout import condition_layout
 from lpc_mdo.vehicle.schema import VehicleSpecError
 
 __all__ = [
+    "MIN_HOVER_ROTORS",
     "HoverKind",
     "SteadyFlightKind",
     "StructuralKind",
@@ -46,6 +47,11 @@ _ZERO = (lambda x: x == 0, "0")
 _ONE = (lambda x: x == 1, "1")
 _POSITIVE = (lambda x: x > 0, "> 0")
 _NO_FAILURE = (lambda x: x == -1, "-1")
+
+
+#: Fewest working lift rotors that hover trimmed: vertical force, roll, pitch and yaw are four
+#: independent demands on the rotor speeds (three thrusts leave one unbalanced).
+MIN_HOVER_ROTORS = 4
 
 
 def num_lift_pairs(lift_rotors):
@@ -234,6 +240,15 @@ class HoverKind(ConditionKind):
             raise VehicleSpecError(
                 f"'conditions[{index}].failed_rotor' = {failed} is out of range: must be -1 or a "
                 f"lift-rotor index in [0, {len(vehicle.lift_rotors) - 1}]"
+            )
+        working = len(vehicle.lift_rotors) - (failed >= 0)
+        if working < MIN_HOVER_ROTORS:
+            raise VehicleSpecError(
+                f"'conditions[{index}].failed_rotor' = {failed} is not allowed: "
+                f"{working} working lift rotors cannot hover trimmed; allowed: at least "
+                f"{MIN_HOVER_ROTORS} (their thrusts must balance the weight and the roll, pitch "
+                "and yaw moments independently, docs theory/dynamics 'Hover control reserve'); "
+                "a layout of 4 lift rotors has no one-rotor-out hover case"
             )
         if failed >= 0:
             for j, other in enumerate(vehicle.conditions[:index]):
