@@ -110,6 +110,7 @@ def example(n):
     data["pusher"]["pair"] = pairs  # the group after the lift pairs
     if n - 1 < MIN_HOVER_ROTORS:  # no one-rotor-out hover: 3 thrusts cannot trim 4 demands
         data["conditions"] = [c for c in data["conditions"] if c["kind"] != "oei"]
+        del data["design_variables"]["oei_lift_rpm"]
     dv = data["design_variables"]
     pusher = {key: dv["rotor_radius"][key][-1] for key in ("lower", "upper")}
     dv["rotor_radius"]["lower"] = [round(1.2 * scale, 4)] * pairs + [pusher["lower"]]
@@ -122,6 +123,8 @@ def example(n):
         dv["motor_rated_current"]["initial"][-1]
     ]
     for name in ("hover_lift_rpm", "transition_lift_rpm", "oei_lift_rpm"):
+        if name not in dv:
+            continue
         for key in ("initial", "lower", "upper"):
             dv[name][key] = round(dv[name][key] / scale, 1)
     return data
