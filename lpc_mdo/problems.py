@@ -20,7 +20,7 @@ from lpc_mdo.components.design_deviation import DesignDeviationComp
 from lpc_mdo.drivers import make_driver
 from lpc_mdo.groups.lpc import LPCGroup, included_conditions, openmdao_units
 from lpc_mdo.recorder import CaseRecorder
-from lpc_mdo.study_plan import default_optimizer, stage
+from lpc_mdo.study_plan import default_optimizer, rotor_group_indices, stage
 from lpc_mdo.vehicle import load_vehicle, reference_vehicle
 from lpc_mdo.vehicle.clearances import clearance_constraints, side_by_side_pairs
 from lpc_mdo.vehicle.condition_contract import condition_kind
@@ -260,6 +260,10 @@ def declare_problem(
                     f"design variable of the vehicle file; allowed: "
                     f"{[n for n in dvs if n not in owned]} (a condition's own "
                     f"design variables come with the condition)"
+                )
+            if isinstance(indices, str):  # lift groups or the pusher group of this layout
+                indices = rotor_group_indices(
+                    indices, dvs[name].shape, len(vehicle.lift_rotor_pairs)
                 )
             selection[name] = None if indices is None else list(indices)
     selection.update({name: None for name in dvs if name in condition_dvs})

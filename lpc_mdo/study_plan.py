@@ -24,12 +24,16 @@ passes (``driver_settings``) go over them.
 from dataclasses import dataclass, field, replace
 from types import MappingProxyType
 
+import numpy as np
+
 from lpc_mdo import drivers
 
 __all__ = [
     "HANDOVERS",
     "ITERATION_LIMIT",
+    "LIFT_GROUPS",
     "OWN_OPTIONS",
+    "PUSHER_GROUP",
     "SEQUENCE",
     "SEQUENCE_OPTIONS",
     "SQP",
@@ -39,6 +43,7 @@ __all__ = [
     "OptimizerOptions",
     "Stage",
     "default_optimizer",
+    "rotor_group_indices",
     "run_rows",
     "settings_rows",
     "stage",
@@ -353,6 +358,24 @@ OWN_OPTIONS = _frozen(
 )
 
 #: A stage before the full problem, as a step of the sequence: a start and a scaling.
+#: Row selections of the per-rotor-group design variables (rotor_radius, blade_chord_cp,
+#: blade_twist_cp, motor_length, motor_rated_current), resolved against the vehicle's layout by
+#: :func:`rotor_group_indices`: every lift-rotor pair's rows, or the pusher's row.
+LIFT_GROUPS, PUSHER_GROUP = "lift groups", "pusher group"
+
+
+def rotor_group_indices(selection, shape, num_pairs):
+    """
+    Return the flat indices of a rotor-group row selection in a design variable of ``shape``.
+
+    ``shape[0]`` counts the rotor groups (the ``num_pairs`` lift pairs, then the pusher); each
+    row holds ``prod(shape[1:])`` values (the 4 blade control points, or one).
+    """
+    per_row = int(np.prod(shape[1:], dtype=int))
+    rows = range(num_pairs) if selection == LIFT_GROUPS else [num_pairs]
+    return tuple(r * per_row + k for r in rows for k in range(per_row))
+
+
 SEQUENCE_OPTIONS = _frozen(
     {
         "IPOPT": OptimizerOptions(
@@ -373,9 +396,9 @@ STAGES = (
         "(lpc-mdo's, before the paper's subproblems)",
         kinds=("hover",),
         design_variables=(
-            ("rotor_radius", (0, 1, 2, 3)),
-            ("blade_chord_cp", tuple(range(16))),
-            ("blade_twist_cp", tuple(range(16))),
+            ("rotor_radius", LIFT_GROUPS),
+            ("blade_chord_cp", LIFT_GROUPS),
+            ("blade_twist_cp", LIFT_GROUPS),
         ),
         constraint_kinds=("trim", "noise", "tip_mach", "clearance"),
         objective=("electrical_power", 5.0e5),  # W, of the (first) hover condition
@@ -397,9 +420,9 @@ STAGES = (
         kinds=("hover", "transition", "steady"),
         design_variables=(
             "battery_mass",
-            ("motor_length", (4,)),
-            ("motor_rated_current", (4,)),
-            ("rotor_radius", (0, 1, 2, 3, 4)),
+            ("motor_length", PUSHER_GROUP),
+            ("motor_rated_current", PUSHER_GROUP),
+            "rotor_radius",
             "blade_chord_cp",
             "blade_twist_cp",
         ),
@@ -426,7 +449,7 @@ STAGES = (
         summary="lift motors in the one-rotor-out cases (paper Table 2) and, for the control "
         "reserve, in hover",
         kinds=("hover", "oei"),
-        design_variables=(("motor_length", (0, 1, 2, 3)), ("motor_rated_current", (0, 1, 2, 3))),
+        design_variables=(("motor_length", LIFT_GROUPS), ("motor_rated_current", LIFT_GROUPS)),
         constraint_kinds=("trim", "lift_torque_margin", "lift_voltage_margin", "control_reserve"),
         optimizer="IPOPT",
         options=OWN_OPTIONS,
@@ -548,6 +571,8 @@ def _design_variables_text(entries):
 
 
 def _indices_text(indices):
+    if isinstance(indices, str):
+        return f"[{indices}]"
     indices = list(indices)
     if len(indices) > 2 and indices == list(range(indices[0], indices[-1] + 1)):
         return f"[{indices[0]}..{indices[-1]}]"
