@@ -123,3 +123,23 @@ def test_bad_layouts_are_named_errors():
     data["booms"]["attach_points"].pop()
     with pytest.raises(VehicleSpecError, match="'booms.attach_points' has 7 entries"):
         vehicle_from_dict(data)
+
+
+def test_bounds_follow_the_vehicle_when_left_out():
+    # Without lower and upper, a design variable with an initial value in the vehicle's parts is
+    # bounded by 0.7 and 1.3 times it (the paper's planform bounds), inside its limits.
+    data = read_vehicle_file()
+    names = ("wing_area", "rotor_radius", "battery_mass", "fuselage_length")
+    for name in names:
+        del data["design_variables"][name]["lower"], data["design_variables"][name]["upper"]
+    dvs = vehicle_from_dict(data).design_variables
+    assert dvs["wing_area"].lower == pytest.approx((0.7 * 19.6,))
+    assert dvs["wing_area"].upper == pytest.approx((1.3 * 19.6,))
+    assert dvs["rotor_radius"].upper == pytest.approx((1.3 * 1.524,) * 4 + (1.3 * 1.37,))
+    assert dvs["battery_mass"].lower == pytest.approx((560.0,))
+    # 1.3 x 9.144 m = 11.887 m: the fuselage regressions' upper data limit holds it.
+    assert dvs["fuselage_length"].upper == pytest.approx((11.8872,))
+    # A variable without an initial value in the parts still needs its bounds.
+    del data["design_variables"]["motor_length"]["lower"]
+    with pytest.raises(VehicleSpecError, match="missing key 'design_variables.motor_length.lower'"):
+        vehicle_from_dict(data)

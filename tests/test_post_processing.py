@@ -497,6 +497,8 @@ def test_write_report_on_a_folder(runs, tmp_path):
     text = index.read_text()
     # Sellar records none of the paraboloid's extras: the comparisons leave it out with a note,
     # as they leave out the rotor pair that no run records.
+    # Sellar's x and z[1] end on their lower bounds (test_design_variable_table_...).
+    assert "On a bound at the final case (2 of 3): x (lower), z[1] (lower)." in text
     assert "Runs left out (variables not recorded): sellar." in text
     assert "Rotor disks ('no_hubs', 'radii') left out" in text
     # 2 hubs in the test model, 8 booms in the (reference) vehicle: no boom is drawn.

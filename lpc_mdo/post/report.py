@@ -524,8 +524,15 @@ def _run_section(index, label, cr, spec):
 
     def design_variables():
         table = tables.design_variable_table(cr, tol=spec.tol)
+        on_bound = [f"{row[0]} ({row[-1]})" for row in table.rows if row[-1]]
         index.add("**Design variables**:", "")
         index.table(table, f"design_variables_{slug}", inline=False)
+        index.add(
+            f"On a bound at the final case ({len(on_bound)} of {len(table.rows)}): "
+            + (", ".join(on_bound) if on_bound else "none")
+            + ".",
+            "",
+        )
 
     def trim():
         table = trim_residual_table(cr, vehicle=spec.vehicle)

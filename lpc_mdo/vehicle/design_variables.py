@@ -3,7 +3,9 @@
 The vehicle-level design variables are fixed by the vehicle's parts; the conditions' come from
 their kinds' contracts (:class:`~lpc_mdo.vehicle.condition_layout.ConditionLayout`). Each table of
 ``[design_variables]`` is checked against its spec: units, shape, bounds around the initial
-value, the minimum gauge.
+value, the minimum gauge. A design variable whose initial value the vehicle's parts give (and is
+not zero) may leave out ``lower`` and ``upper``: they then follow the vehicle, 0.7 and 1.3 times
+the initial value (:data:`RELATIVE_BOUNDS`), inside the variable's limits.
 """
 
 from __future__ import annotations
@@ -243,6 +245,25 @@ def _check_tip_speeds(lower, upper, radius: float, entry) -> None:
             )
 
 
+#: Default bounds of a design variable whose initial value the vehicle gives (a wing area, a
+#: rotor radius, a battery mass), as factors of that value: the paper's planform bounds, 0.7 and
+#: 1.3 times the initial design (inferred from paper Table 8, where several optimized values sit
+#: exactly at +-30 %); a table's own lower and upper replace them.
+RELATIVE_BOUNDS = (0.7, 1.3)
+
+
+def _relative_bound(initial, pick, spec: _DVSpec) -> tuple[float, ...]:
+    """
+    Return the lower (``pick`` = min) or upper (max) default bound of each initial value.
+
+    Of the two factors of :data:`RELATIVE_BOUNDS` times the value (a negative value swaps them),
+    kept inside the design variable's limits (``lower_min``, ``upper_max``).
+    """
+    low = -math.inf if spec.lower_min is None else spec.lower_min[0]
+    high = math.inf if spec.upper_max is None else spec.upper_max[0]
+    return tuple(min(max(pick(f * x for f in RELATIVE_BOUNDS), low), high) for x in initial)
+
+
 def _read_design_variable(data, spec: _DVSpec, path: str) -> DesignVariable:
     if isinstance(data, Mapping) and "initial" in data and spec.initial is not None:
         raise VehicleSpecError(
@@ -255,7 +276,8 @@ def _read_design_variable(data, spec: _DVSpec, path: str) -> DesignVariable:
     if spec.initial is None:
         allowed["initial"] = shape_text
     allowed |= {"lower": shape_text, "upper": shape_text, "ref": "number, > 0"}
-    _check_keys(data, allowed, path)
+    relative = spec.initial is not None and all(x != 0.0 for x in spec.initial)
+    _check_keys(data, allowed, path, frozenset({"lower", "upper"}) if relative else frozenset())
 
     units = _string(data["units"], _Spec(choices=unit_choices), f"{path}.units")
     scale = math.pi / 180.0 if units == "deg" else 1.0
@@ -265,6 +287,9 @@ def _read_design_variable(data, spec: _DVSpec, path: str) -> DesignVariable:
         if key in data
     }
     initial = values.get("initial", spec.initial)
+    if relative:  # bounds that follow the vehicle's own initial values (module docstring)
+        values.setdefault("lower", _relative_bound(initial, min, spec))
+        values.setdefault("upper", _relative_bound(initial, max, spec))
     lower, upper = values["lower"], values["upper"]
     if spec.units == "rad":
         # Pitch, twist and elevator angles lie within +-90 deg; larger values in rad are
