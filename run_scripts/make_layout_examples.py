@@ -17,7 +17,8 @@ and only the layout differs (docs user guide 'Bring your own vehicle'):
   outwards, 0.16 m between neighbouring disks (the reference's inner-outer gap);
 - booms under the wing at the reference's chord station (x = -2.85 m, 0.12 m below the wing's
   chord plane), as long as the farthest hub is from its attach point plus 0.2 m;
-- blade chords scaled with the radius; the rotor-speed bounds scaled with 1/R (the reference's
+- blade chords and their upper bound scaled with the radius; the rotor-speed bounds scaled with
+  1/R (the reference's
   tip speeds); each motor's stack length with the cube root of the hover torque (for equal
   disk loading and tip speed the torque grows as R^3, and a stack of fixed length-to-diameter
   ratio carries a torque of its length cubed) and its rated current with the hover power (R^2);
@@ -115,6 +116,10 @@ def example(n):
     pusher = {key: dv["rotor_radius"][key][-1] for key in ("lower", "upper")}
     dv["rotor_radius"]["lower"] = [round(1.2 * scale, 4)] * pairs + [pusher["lower"]]
     dv["rotor_radius"]["upper"] = [round(1.8 * scale, 4)] * pairs + [pusher["upper"]]
+    chord_upper = dv["blade_chord_cp"]["upper"]  # one number in the reference: every group
+    dv["blade_chord_cp"]["upper"] = [[round(chord_upper * scale, 4)] * 4] * pairs + [
+        [chord_upper] * 4
+    ]
     torque = scale**3  # hover torque per rotor over the reference's
     dv["motor_length"]["initial"] = [round(0.1 * torque ** (1 / 3), 4)] * pairs + [0.15]
     dv["motor_length"]["upper"] = [round(0.25 * torque ** (1 / 3), 4)] * pairs + [0.3]
