@@ -40,6 +40,7 @@ from lpc_mdo.components.weights.systems import SYSTEM_ITEMS, SystemsMassComp
 from lpc_mdo.components.weights.wing_secondary import WingSecondaryMassComp
 from lpc_mdo.core.checks import RangeCheck, check_choice
 from lpc_mdo.vehicle import reference_vehicle
+from lpc_mdo.vehicle.condition_layout import condition_layout
 
 #: Raymer system items (:data:`SYSTEM_ITEMS` without the furnishings, which sit with the seats)
 #: placed at NASA's systems station, in the equipment bay behind the cabin (docs theory/weights
@@ -111,13 +112,23 @@ def rotor_design_speeds(vehicle=None):
     Return the design rotor speed (rpm) of each rotor group for the rotor weight model.
 
     NDARC's AFDD00 blade and hub weights take the design hover tip speed: the lift pairs use
-    the initial ``hover_lift_rpm`` and the pusher the initial ``cruise_pusher_rpm`` design
-    variables of the vehicle file (fixed design values, not the condition's trim variables).
+    the initial lift-rotor speeds of the (first) hover condition and the pusher the initial
+    pusher speed of the mission's cruise condition, from their design variables in the vehicle
+    file (fixed design values, not the conditions' trim variables; the reference's
+    ``hover_lift_rpm`` and ``cruise_pusher_rpm``).
     """
-    dvs = _vehicle(vehicle).design_variables
-    lift = np.asarray(dvs["hover_lift_rpm"].initial_array, dtype=float).ravel()
-    pusher = np.asarray(dvs["cruise_pusher_rpm"].initial_array, dtype=float).ravel()[:1]
-    return np.concatenate([lift, pusher])
+    vehicle = _vehicle(vehicle)
+    layout = condition_layout(vehicle)
+    hover = next(c.name for c in vehicle.conditions if c.kind == "hover")
+    speeds = []
+    for condition, variable in (
+        (hover, "lift_rpm"),
+        (vehicle.mission.cruise_condition, "pusher_rpm"),
+    ):
+        entry = layout.entries[condition][variable]
+        initial = np.asarray(vehicle.design_variables[entry.design_variable].initial_array)
+        speeds.append(initial.ravel()[entry.flat_indices])
+    return np.concatenate([speeds[0], speeds[1][:1]])
 
 
 def _vehicle(vehicle):

@@ -171,6 +171,8 @@ def _existing(flag, what, folder_ok=False):
     """Return an argparse type: a path that exists (a file, or also a folder if ``folder_ok``)."""
 
     def parse(text):
+        if not text:
+            raise CLIError(f"'{flag}' = '' is empty: must be {what}")
         path = Path(text)
         try:
             exists, is_dir = path.exists(), path.is_dir()
@@ -178,8 +180,18 @@ def _existing(flag, what, folder_ok=False):
             raise CLIError(
                 f"'{flag}' = {_shown(text)} cannot be read ({err.strerror}): must be {what}"
             ) from err
+        if not exists and os.path.islink(text):
+            raise CLIError(
+                f"'{flag}' = {_shown(text)} is a symbolic link that leads nowhere (a broken link "
+                f"or a loop): must be {what}"
+            )
         if not exists:
             raise CLIError(f"'{flag}' = {_shown(text)} does not exist: must be {what}")
+        if text.endswith(("/", os.sep)) and not is_dir:
+            raise CLIError(
+                f"'{flag}' = {_shown(text)} ends with '/', but it names a file, not a folder: "
+                f"must be {what} (without the trailing '/')"
+            )
         if is_dir and not folder_ok:
             raise CLIError(f"'{flag}' = {_shown(text)} is a folder: must be {what}")
         if not is_dir and not path.is_file():  # a pipe or device would block the read
@@ -1412,6 +1424,26 @@ def _short(line):
     return f"{head} ... ({len(line)} characters) ... {tail}"
 
 
+def _working_folder_exists():
+    """Refuse to start in a working folder that was removed (relative paths cannot resolve)."""
+    try:
+        os.getcwd()
+    except FileNotFoundError as err:
+        raise CLIError(
+            "the working folder no longer exists (it was removed after this shell entered it): "
+            "must start lpc-mdo in an existing folder, e.g. after 'cd ~'"
+        ) from err
+
+
+def _quiet_stdout():
+    """Point stdout at /dev/null, so that Python's flush at exit does not fail again."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError):  # no file descriptor behind stdout (e.g. under pytest)
+        pass
+
+
 def main(argv=None):
     """
     Run the ``lpc-mdo`` command.
@@ -1434,6 +1466,7 @@ def main(argv=None):
     debug = "--debug" in argv
     args = None
     try:
+        _working_folder_exists()
         _no_option_twice(argv)
         parser = build_parser()
         _no_option_before_the_command(parser, argv)
@@ -1445,6 +1478,9 @@ def main(argv=None):
     except KeyboardInterrupt:
         print("lpc-mdo: interrupted", file=sys.stderr)
         return EXIT_INTERRUPTED
+    except BrokenPipeError:  # the reader of the output went away (lpc-mdo ... | head)
+        _quiet_stdout()
+        return EXIT_WRITE_ERROR
     except (CLIError, ValueError) as err:  # VehicleSpecError is a ValueError
         if not _user_error(err):
             return _bug(err)

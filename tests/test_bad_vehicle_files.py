@@ -158,7 +158,7 @@ DICT_CASES = [
         "fuselage.max_height",
         "out of range",
     ),
-    ("payload 1e30", _set("masses", "payload", 1e30), "masses.payload", "in [0, 10000] (kg)"),
+    ("payload 1e30", _set("masses", "payload", 1e30), "masses.payload", "in [50, 10000] (kg)"),
     ("density 1e30", _set("material", "density", 1e30), "material.density", "in [500, 20000]"),
     (
         "target mass 100",
@@ -338,7 +338,7 @@ DICT_CASES = [
         "nose length in mm",
         _set("fuselage", "nose_length", 1112.16),
         "fuselage.nose_length",
-        "in [0, 10] (m)",
+        "in [0.3, 10] (m)",
     ),
     ("no seats", _set("fuselage", "seats", 0), "fuselage.seats", "in [1, 100]"),
     ("2.5 seats", _set("fuselage", "seats", 2.5), "fuselage.seats", "integer"),
@@ -352,7 +352,7 @@ DICT_CASES = [
         "seat pitch in inches",
         _set("fuselage", "seat_pitch", 36.0),
         "fuselage.seat_pitch",
-        "in [0.5, 1.5] (m)",
+        "in [0.7, 1.5] (m)",
     ),
     (
         "cabin floor in mm",
@@ -957,6 +957,38 @@ DICT_CASES = [
         _set("design_variables", "rotor_radius", "upper", 20.0),
         "design_variables.rotor_radius.upper[0]",
         "must be <= 10 (m; the range of lift_rotors[i].radius",
+    ),
+    # Found by the second audit: typos and impossible placements that used to load.
+    ("wing incidence x10", _set("wing", "incidence_deg", 20.4), "wing.incidence_deg", "[-10, 10]"),
+    (
+        "h-tail floating above a short fin",
+        _both(
+            _set("vertical_tail", "area", 1.0),  # 1.08 m high: its tip at z = -1.98 m
+            _set("horizontal_tail", "root_leading_edge", [-7.60903, 0.0, -2.4]),
+        ),
+        "horizontal_tail.root_leading_edge",
+        "at most as high as the fin's tip",
+    ),
+    (
+        "battery beside the fuselage, under the wing",
+        _set("battery", "cg", [-2.09897, 3.0, 0.55844]),
+        "battery.cg",
+        "so it must lie inside the wing",
+    ),
+    ("payload 5.4 kg", _set("masses", "payload", 5.4), "masses.payload", "in [50, 10000] (kg)"),
+    ("cabin at the nose tip", _set("fuselage", "nose_length", 0.0), "fuselage.nose_length", "0.3"),
+    (
+        "two rotors of one name",
+        _set("lift_rotors", 1, "name", "front_left_outer"),
+        "lift_rotors[1].name",
+        "repeats 'lift_rotors[0].name'",
+    ),
+    ("a rotor without a name", _set("lift_rotors", 2, "name", " "), "lift_rotors[2].name", "empty"),
+    (
+        "no mission segment",
+        lambda d: [c.update(energy_weight=0.0) for c in d["conditions"]],
+        "conditions",
+        "no mission segment",
     ),
     (
         "two seats abreast in 0.6 m",

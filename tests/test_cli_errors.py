@@ -200,6 +200,11 @@ MISUSES = [
         "--output-dir",
     ),
     ("n2_empty", ["analyze", "--output-dir", "{out}", "--n2", ""], "--n2"),
+    # A file named with a trailing '/', an empty path: one line, not a traceback or "a folder".
+    ("vehicle_trailing_slash", ["analyze", "--vehicle", "{vehicle.toml}/"], "ends with '/'"),
+    ("report_trailing_slash", ["report", "{good.sql}/", "--output-dir", "{out}"], "ends with '/'"),
+    ("vehicle_empty", ["analyze", "--vehicle", ""], "is empty"),
+    ("report_empty", ["report", "", "--output-dir", "{out}"], "is empty"),
     ("n2_a_folder_name", ["analyze", "--output-dir", "{out}", "--n2", "{out}/n2dir/"], "--n2"),
     (
         "n2_over_the_case_file",
@@ -880,3 +885,44 @@ def test_a_long_message_stays_one_short_line(paths, capsys, monkeypatch):
     _assert_one_line_error(rc, captured, "--vehicle")
     assert "characters) ... " in captured.err and captured.err.rstrip().endswith("TOML file")
     assert len(captured.err) < 1200
+
+
+def test_a_symbolic_link_loop_is_named(paths, tmp_path, capsys):
+    (tmp_path / "a.toml").symlink_to(tmp_path / "b.toml")
+    (tmp_path / "b.toml").symlink_to(tmp_path / "a.toml")
+    rc = main(["analyze", "--vehicle", str(tmp_path / "a.toml"), "--output-dir", paths["out"]])
+    _assert_one_line_error(rc, capsys.readouterr(), "symbolic link that leads nowhere")
+
+
+def test_a_removed_working_folder_is_named(tmp_path, capsys, monkeypatch):
+    gone = tmp_path / "gone"
+    gone.mkdir()
+    monkeypatch.chdir(gone)
+    gone.rmdir()
+    rc = main(["analyze", "--output-dir", "out"])
+    _assert_one_line_error(rc, capsys.readouterr(), "the working folder no longer exists")
+
+
+def test_a_closed_output_pipe_ends_quietly(paths, capsys, monkeypatch):
+    # lpc-mdo analyze | head: the reader goes away; no traceback, no "internal error".
+    def closed(args):
+        raise BrokenPipeError(32, "Broken pipe")
+
+    monkeypatch.setattr(cli, "_analyze", closed)
+    assert main(["analyze", "--output-dir", paths["out"]]) == cli.EXIT_WRITE_ERROR
+    assert capsys.readouterr().err == ""
+
+
+def test_a_model_out_of_its_range_is_one_line(paths, capsys, monkeypatch):
+    # om.AnalysisError outside an optimization (analyze): the model's own message, no traceback.
+    def out_of_range(args):
+        raise om.AnalysisError("'hover.motor' <class X>: stack length 0.01 m below 0.056 m")
+
+    monkeypatch.setattr(cli, "_analyze", out_of_range)
+    rc = main(["analyze", "--output-dir", paths["out"]])
+    out = capsys.readouterr()
+    assert rc == cli.EXIT_ANALYSIS_ERROR == 1
+    assert out.err.strip().splitlines() == [
+        "lpc-mdo: error: the analysis left a model's range: 'hover.motor' <class X>: stack "
+        "length 0.01 m below 0.056 m"
+    ]

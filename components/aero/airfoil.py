@@ -753,6 +753,16 @@ _TEXT_SUFFIXES = (".txt", ".dat", ".csv", ".pol")
 #: beyond 3 and 2 a table is in percent or in another unit.
 POLAR_MAX_ABS_CL = 3.0
 POLAR_MAX_CD = 2.0
+#: Lift-curve slope of a polar file between -2 and +6 deg, per rad, as fractions of thin-airfoil
+#: theory's 2 pi: measured sections lie near 0.9 x 2 pi (Abbott & von Doenhoff, appendix IV:
+#: 0.098-0.11 per deg), low-Reynolds rotor sections down to about 0.7 x 2 pi. Checked at the
+#: table's lowest Mach number (compressibility raises it by 1/sqrt(1 - M^2)). Outside: no lift,
+#: a table of other columns (cd for cl) or a slope per degree read as per radian.
+POLAR_LIFT_SLOPE_RANGE = (0.4, 1.3)
+#: Least minimum drag coefficient in the attached range: two sides of a flat plate in laminar
+#: flow at Re 1e7, 2 x 1.328/sqrt(Re) = 0.00084 (Blasius; Hoerner, Fluid-Dynamic Drag, ch. 2);
+#: no section has less. Most (the smallest cd of the table) at most 0.1, a bluff section.
+POLAR_CD_MIN_RANGE = (0.0008, 0.1)
 
 
 def check_polar_file_arrays(path, alpha_deg, cl, cd):
@@ -810,6 +820,33 @@ def check_polar_file_arrays(path, alpha_deg, cl, cd):
         fail(
             f"alpha spans {alpha_deg[0]:g}..{alpha_deg[-1]:g} deg; allowed: a table that "
             f"covers at least {lo:g}..{hi:g} deg (the attached range the rotor model needs)"
+        )
+    # The lift slope between -2 and 6 deg and the least drag at every Reynolds number of the
+    # lowest Mach number (tables run alpha, Reynolds, Mach: the Mach axis, if any, is the third;
+    # at transonic Mach numbers drag rise and compressibility leave these ranges).
+    columns = (cl[:, :, 0] if cl.ndim == 3 else cl).reshape(alpha_deg.size, -1)
+    slope = (
+        np.array([np.interp(6.0, alpha_deg, c) - np.interp(-2.0, alpha_deg, c) for c in columns.T])
+        / np.radians(8.0)
+        / (2.0 * np.pi)
+    )
+    low, high = POLAR_LIFT_SLOPE_RANGE
+    if np.any((slope < low) | (slope > high)):
+        worst = float(slope[np.argmax(np.abs(slope - 0.9))])
+        fail(
+            f"the lift-curve slope between -2 and 6 deg is {worst:.3g} x 2 pi per rad; allowed: "
+            f"{low:g} to {high:g} x 2 pi (a lifting section; columns alpha [deg], cl, cd in "
+            "this order, cl per radian of alpha)"
+        )
+    drag = (cd[:, :, 0] if cd.ndim == 3 else cd).reshape(alpha_deg.size, -1)
+    least = np.min(np.where(attached[:, None], drag, np.inf), axis=0)
+    low, high = POLAR_CD_MIN_RANGE
+    if np.any((least < low) | (least > high)):
+        worst = float(least[np.argmax(np.abs(np.log(least / 0.01)))])
+        fail(
+            f"the least drag coefficient in {lo:g}..{hi:g} deg is {worst:g}; allowed: {low:g} "
+            f"to {high:g} (below: less than laminar skin friction; above: not a lifting "
+            "section, or drag in percent)"
         )
 
 

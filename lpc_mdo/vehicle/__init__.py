@@ -195,6 +195,11 @@ def read_vehicle_file(path: str | os.PathLike | None = None) -> dict:
         label = os.fspath(path)
         if os.path.isdir(path):
             raise VehicleSpecError(f"vehicle file '{label}' is a directory; allowed: a TOML file")
+        if os.path.exists(path) and not os.path.isfile(path):  # a pipe would block, a device
+            raise VehicleSpecError(  # such as /dev/zero never end
+                f"vehicle file '{label}' is not a regular file (a pipe, socket or device); "
+                "allowed: a TOML file"
+            )
         try:
             with open(path, "rb") as fh:
                 raw = fh.read()

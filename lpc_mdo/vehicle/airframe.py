@@ -45,7 +45,9 @@ The rules, with L the fuselage length, W its width, H its height, the body's bot
   the symmetry plane (the cabin check, :mod:`lpc_mdo.vehicle.consistency`, holds its x and z);
 - *mass items inside the airframe*: the battery, payload, systems, power electronics and other
   masses between the nose and the tail end, within the half span, and at most H/2 above the
-  body's top or below its bottom.
+  body's top or below its bottom; one farther than W/2 from the symmetry plane inside the wing
+  (the section test of the disks above);
+- *the horizontal tail on the tail cone or the fin*: its root no higher than the fin's tip.
 
 These are the layouts the model's geometry holds (the lift-plus-cruise configuration:
 fuselage, wing, conventional or T-tail, lift rotors on booms, a pusher at the tail).
@@ -137,6 +139,17 @@ def _check_surface_roots(parts: dict, env: _Envelope) -> None:
             )
         _check_between_nose_and_tail(env, key, position, what)
         _check_height(env, key, position, what, extra_top)
+        fin = parts["vertical_tail"]
+        fin_tip_z = fin.root_leading_edge[2] - fin.span
+        if name == "horizontal_tail" and position[2] < min(fin_tip_z, env.top) - 1e-6:
+            _refuse(
+                key,
+                _fmt(position),
+                f"the horizontal tail's root must lie on the tail cone or on the fin, at most "
+                f"as high as the fin's tip, z >= {min(fin_tip_z, env.top):.4g} (m; "
+                f"vertical_tail.root_leading_edge z less its height {fin.span:.4g}), got z = "
+                f"{position[2]:.6g}",
+            )
         if name == "vertical_tail" and position[2] > env.bottom:
             _refuse(
                 key,
@@ -401,6 +414,15 @@ def _check_mass_items(parts: dict, env: _Envelope) -> None:
                 _fmt(position),
                 f"{what} must lie within the wing's half span, "
                 f"|y| <= {env.half_span:.4g} (m), got y = {position[1]:.6g}",
+            )
+        outside_body = abs(position[1]) > env.half_width
+        if outside_body and not _inside_surface(np.array([position]), parts["wing"], True)[0]:
+            _refuse(
+                key,
+                _fmt(position),
+                f"{what} lies outside the fuselage (|y| > {env.half_width:.4g} m, half its "
+                "width), so it must lie inside the wing: between its leading and trailing "
+                "edges, within half its thickness of the chord line",
             )
 
 

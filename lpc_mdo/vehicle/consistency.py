@@ -41,6 +41,19 @@ def _close(a, b) -> bool:
 
 
 def _check_lift_rotors(rotors: tuple[Rotor, ...]) -> None:
+    seen = {}
+    for i, r in enumerate(rotors):
+        if not r.name.strip():
+            raise VehicleSpecError(
+                f"'lift_rotors[{i}].name' = {r.name!r} is empty: must name the rotor (reports "
+                "and messages use it)"
+            )
+        if r.name in seen:
+            raise VehicleSpecError(
+                f"'lift_rotors[{i}].name' = {r.name!r} repeats 'lift_rotors[{seen[r.name]}]"
+                ".name'; each rotor needs its own name"
+            )
+        seen[r.name] = i
     num_pairs = len(rotors) // 2  # the count is even (LIFT_ROTOR_COUNTS, the schema)
     for i, r in enumerate(rotors):
         if r.pair >= num_pairs:
@@ -234,6 +247,11 @@ def _check_buildable(parts: dict) -> None:
 
 
 def _check_mission(mission: Mission, conditions: tuple[DesignCondition, ...]) -> None:
+    if not any(c.energy_weight > 0 for c in conditions):
+        raise VehicleSpecError(
+            "'conditions' has no mission segment: at least one condition needs energy_weight > "
+            "0 (the mission's energy and the final state of charge are their sum)"
+        )
     for i, c in enumerate(conditions):
         if c.energy_weight > 0 and c.duration <= 0:
             raise VehicleSpecError(
@@ -241,6 +259,11 @@ def _check_mission(mission: Mission, conditions: tuple[DesignCondition, ...]) ->
                 f"segment (energy_weight = {c.energy_weight!r} > 0) must last > 0 s; set "
                 f"energy_weight = 0 to keep '{c.name}' as a design condition outside the mission"
             )
+    if not any(c.kind == "hover" for c in conditions):
+        raise VehicleSpecError(
+            "'conditions' has no condition of kind 'hover': a lift-plus-cruise vehicle needs "
+            "one (its lift rotors are designed for it: their weight, noise and speeds)"
+        )
     steady = [c.name for c in conditions if c.kind == "steady"]
     fastest = max((c.speed for c in conditions if c.kind == "steady"), default=None)
     for i, c in enumerate(conditions):

@@ -107,10 +107,12 @@ class LiftingSurface:
     # 0.5-30: a low fin (reference vertical tail 1.17) to a sailplane wing.
     aspect_ratio: float = _param(ge=0.5, le=30)
     taper_ratio: float = _param(gt=0, le=1)
-    # Leading-edge sweep up to 70 deg (reference fin 51 deg); dihedral up to 30 deg either way.
+    # Leading-edge sweep up to 70 deg (reference fin 51 deg); dihedral up to 30 deg either way;
+    # incidence within 10 deg either way (built wings and tails are set at -5..+5 deg; the
+    # reference wing's is 2.04 deg; 20 deg is a factor-10 typo).
     sweep: float = _angle(ge=-70, le=70)
     dihedral: float = _angle(ge=-30, le=30)
-    incidence: float = _angle(ge=-30, le=30)
+    incidence: float = _angle(ge=-10, le=10)
     root_leading_edge: tuple[float, ...] = _param("m", ge=-_REACH, le=_REACH, shape=(3,))
     airfoil: str = _param(choices=_AIRFOIL_NAMES)
     laminar_fraction: float = _param(ge=0, le=1)
@@ -276,13 +278,15 @@ class Fuselage:
     length: float = _param("m", ge=1, le=30)
     max_height: float = _param("m", ge=0.5, le=10)
     max_width: float = _param("m", ge=0.5, le=10)
-    # A nose bay of 0-10 m; 1-100 seats, 1-10 abreast; a seat row of 0.5-1.5 m (an airliner's
-    # tightest economy pitch is 0.71 m, 28 in; Kundu, Aircraft Design, 2010, Table 4.5; catches
-    # inches and mm); the floor within 10 m of the nose's height.
-    nose_length: float = _param("m", ge=0, le=10)
+    # A nose bay of 0.3-10 m (the cabin cannot start at the nose's tip: the nose cone tapers
+    # over at least a third of a metre; the reference's is 1.11 m); 1-100 seats, 1-10 abreast;
+    # a seat row of 0.7-1.5 m (an airliner's tightest economy pitch is 0.71 m, 28 in; Kundu,
+    # Aircraft Design, 2010, Table 4.5; catches inches and mm); the floor within 10 m of the
+    # nose's height.
+    nose_length: float = _param("m", ge=0.3, le=10)
     seats: int = _param(ge=1, le=100)
     seats_abreast: int = _param(ge=1, le=10)
-    seat_pitch: float = _param("m", ge=0.5, le=1.5)
+    seat_pitch: float = _param("m", ge=0.7, le=1.5)
     cabin_floor_z: float = _param("m", ge=-10, le=10)
 
     @property
@@ -469,8 +473,10 @@ class FixedMasses:
         reference and, with ``other_rule = "calibrated"``, the calibration target.
     """
 
-    # Each fixed mass is 0-10 t, half the largest gross mass of the class (catches g and 1e30).
-    payload: float = _param("kg", ge=0, le=_MAX_FIXED_MASS)
+    # Each fixed mass is 0-10 t, half the largest gross mass of the class (catches g and 1e30);
+    # the payload at least 50 kg, one light occupant (a passenger vehicle carries at least one;
+    # the FAA's standard adult is 77-88 kg, AC 120-27F), which catches 5.4 for 540.
+    payload: float = _param("kg", ge=50, le=_MAX_FIXED_MASS)
     payload_cg: tuple[float, ...] = _param("m", ge=-_REACH, le=_REACH, shape=(3,))
     systems: float = _param("kg", ge=0, le=_MAX_FIXED_MASS)
     systems_cg: tuple[float, ...] = _param("m", ge=-_REACH, le=_REACH, shape=(3,))
