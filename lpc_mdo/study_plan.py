@@ -357,7 +357,6 @@ OWN_OPTIONS = _frozen(
     }
 )
 
-#: A stage before the full problem, as a step of the sequence: a start and a scaling.
 #: Row selections of the per-rotor-group design variables (rotor_radius, blade_chord_cp,
 #: blade_twist_cp, motor_length, motor_rated_current), resolved against the vehicle's layout by
 #: :func:`rotor_group_indices`: every lift-rotor pair's rows, or the pusher's row.
@@ -376,6 +375,7 @@ def rotor_group_indices(selection, shape, num_pairs):
     return tuple(r * per_row + k for r in rows for k in range(per_row))
 
 
+#: A stage before the full problem, as a step of the sequence: a start and a scaling.
 SEQUENCE_OPTIONS = _frozen(
     {
         "IPOPT": OptimizerOptions(
