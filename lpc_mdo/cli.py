@@ -669,10 +669,15 @@ def _check_n2_file(text, output_dir, inputs, written):
 def _files_written(args):
     """Return the files a command writes into its output folder (checked against inputs).
 
-    The case files, each with its run statistics (optimize, sweep), and the tables: the sweep
-    summary, the constraint tables of analyze, the index of a report.
+    The folder's lock file; the case files, each with its run statistics (optimize, sweep), and
+    the tables: the sweep summary, the constraint tables of analyze, the index of a report.
     """
     out = Path(args.output_dir)
+    return [out / LOCK_NAME, *_outputs(args, out)]
+
+
+def _outputs(args, out):
+    """Return the files of :func:`_files_written` but the lock file."""
     if args.command == "analyze":
         return [out / name for name in ("cases.sql", "constraints.md", "constraints.csv")]
     if args.command == "report":
@@ -1204,9 +1209,12 @@ def build_parser():
     argparse.ArgumentParser
         Its errors raise :class:`CLIError`.
     """
+    # No abbreviated options (--out for --output-dir): an abbreviation and the full name given
+    # together would pass the given-twice check, and a future option could change its meaning.
     parser = _Parser(
         prog="lpc-mdo",
         description="Analyze, optimize, sweep and report the NASA lift-plus-cruise eVTOL.",
+        allow_abbrev=False,
     )
     _add_debug(parser, False)
     sub = parser.add_subparsers(dest="command", required=True)
@@ -1220,7 +1228,7 @@ def build_parser():
     parser.commands = {}  # name -> its parser (for _no_option_before_the_command)
 
     def add_command(name, help):
-        command = parser.commands[name] = sub.add_parser(name, help=help)
+        command = parser.commands[name] = sub.add_parser(name, help=help, allow_abbrev=False)
         _add_debug(command, argparse.SUPPRESS)  # also accepted after the command
         return command
 

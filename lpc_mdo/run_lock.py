@@ -3,9 +3,11 @@
 Two runs writing case files of the same names into one folder destroy each other's results
 (SQLite then reports "attempt to write a readonly database" to one of them, after minutes of
 work). A command that writes into an output folder takes its lock first: it creates
-``.lpc-mdo.lock`` there exclusively, with its process id, and removes it when it ends. A lock
-whose process no longer runs (a run killed with kill -9 or a machine that went down) is stale
-and taken over.
+``.lpc-mdo.lock`` there exclusively, with its process id and that process's start time, and
+removes it when it ends. A lock whose process no longer runs (a run killed with kill -9 or a
+machine that went down) is stale and taken over; so is one whose process id now belongs to
+another process (started at another time: the id was reused). Where the start time cannot be
+read (no ``/proc``), any running process of that id holds the lock.
 """
 
 import contextlib
@@ -32,12 +34,23 @@ class FolderInUse(RuntimeError):
         self.folder, self.pid = folder, pid
 
 
-def _running(pid):
-    """
-    Return whether an lpc-mdo process with this id runs (on this machine).
+def _start_time(pid):
+    """Return the start time of a process (clock ticks since boot, /proc), or None."""
+    try:
+        stat = Path(f"/proc/{pid}/stat").read_text(encoding="ascii", errors="replace")
+    except OSError:
+        return None
+    # Field 22 (starttime), counted after the command name in parentheses (which may hold
+    # spaces and parentheses itself).
+    fields = stat[stat.rfind(")") + 2 :].split()
+    return fields[19] if len(fields) > 19 else None
 
-    Where the process table can be read (``/proc``), a process whose command line does not
-    mention lpc-mdo (a process id reused since the lock was written) does not count.
+
+def _running(pid, started):
+    """
+    Return whether the process that wrote a lock (id ``pid``, start time ``started``) runs.
+
+    A process of that id that started at another time is another process (the id was reused).
     """
     try:
         os.kill(pid, 0)
@@ -45,18 +58,16 @@ def _running(pid):
         return False
     except PermissionError:  # it runs, under another user
         pass
-    try:
-        command = Path(f"/proc/{pid}/cmdline").read_bytes()
-    except OSError:
-        return True  # no process table to read: a running process is taken as the owner
-    return b"lpc" in command
+    now = _start_time(pid)
+    return now is None or started is None or now == started
 
 
 def _owner(path):
-    """Return the process id in a lock file, or None when it cannot be read as one."""
+    """Return (process id, start time or None) of a lock file, or None when unreadable."""
     try:
-        return int(path.read_text(encoding="ascii").strip())
-    except (OSError, ValueError, UnicodeDecodeError):
+        words = path.read_text(encoding="ascii").split()
+        return int(words[0]), (words[1] if len(words) > 1 else None)
+    except (OSError, ValueError, UnicodeDecodeError, IndexError):
         return None
 
 
@@ -82,22 +93,24 @@ def folder_lock(folder):
         try:
             fd = os.open(path, os.O_CREAT | os.O_EXCL | os.O_WRONLY, 0o644)
         except FileExistsError:
-            pid = _owner(path)
-            if pid is not None and pid != os.getpid() and _running(pid):
-                raise FolderInUse(folder, pid) from None
+            owner = _owner(path)
+            if owner is not None and owner[0] != os.getpid() and _running(*owner):
+                raise FolderInUse(folder, owner[0]) from None
             with contextlib.suppress(FileNotFoundError):
                 path.unlink()  # stale: its process has ended
             continue
         except OSError as err:
             raise LockFailed(path, err.strerror or str(err)) from err
         with os.fdopen(fd, "w", encoding="ascii") as fh:
-            fh.write(f"{os.getpid()}\n")
+            fh.write(f"{os.getpid()} {_start_time(os.getpid()) or ''}".strip() + "\n")
         break
     else:
-        raise FolderInUse(folder, _owner(path))
+        owner = _owner(path)
+        raise FolderInUse(folder, None if owner is None else owner[0])
     try:
         yield path
     finally:
-        if _owner(path) == os.getpid():
+        owner = _owner(path)
+        if owner is not None and owner[0] == os.getpid():
             with contextlib.suppress(FileNotFoundError):
                 path.unlink()

@@ -204,6 +204,12 @@ MISUSES = [
     ("vehicle_trailing_slash", ["analyze", "--vehicle", "{vehicle.toml}/"], "ends with '/'"),
     ("report_trailing_slash", ["report", "{good.sql}/", "--output-dir", "{out}"], "ends with '/'"),
     ("vehicle_empty", ["analyze", "--vehicle", ""], "is empty"),
+    (
+        "n2_is_the_lock_file",
+        ["analyze", "--output-dir", "{out}", "--n2", "{out}/.lpc-mdo.lock"],
+        "--n2",
+    ),
+    ("abbreviated_option", ["analyze", "--out", "{out}", "--output-dir", "{out}"], "--out"),
     ("report_empty", ["report", "", "--output-dir", "{out}"], "is empty"),
     ("n2_a_folder_name", ["analyze", "--output-dir", "{out}", "--n2", "{out}/n2dir/"], "--n2"),
     (
@@ -815,14 +821,15 @@ def test_entry_point_in_a_process(paths):
 
 
 def test_a_folder_in_use_is_refused_and_a_stale_lock_taken_over(paths, capsys, tmp_path):
-    from lpc_mdo.run_lock import LOCK_NAME
+    from lpc_mdo.run_lock import LOCK_NAME, _start_time
 
     out = Path(paths["out"])
     out.mkdir()
-    # A running lpc-mdo (its command line names it) holds the folder.
-    running = subprocess.Popen([sys.executable, "-c", "import time; time.sleep(60)  # lpc-mdo"])
+    # A running process holds the folder: its id and start time are in the lock (whatever its
+    # command line: lpc-mdo run from a Python script holds it too).
+    running = subprocess.Popen([sys.executable, "-c", "import time; time.sleep(60)"])
     try:
-        (out / LOCK_NAME).write_text(f"{running.pid}\n")
+        (out / LOCK_NAME).write_text(f"{running.pid} {_start_time(running.pid)}\n")
         rc = main(["analyze", "--output-dir", str(out)])
         _assert_one_line_error(rc, capsys.readouterr(), "--output-dir")
     finally:
@@ -859,11 +866,13 @@ def test_a_failed_write_is_one_line_and_keeps_the_case_files(paths, capsys, monk
 
 
 def test_a_lock_of_another_program_or_in_the_way(paths, capsys, tmp_path):
-    from lpc_mdo.run_lock import LOCK_NAME
+    from lpc_mdo.run_lock import LOCK_NAME, _start_time
 
     out = Path(paths["out"])
     out.mkdir()
-    (out / LOCK_NAME).write_text("1\n")  # pid 1 runs, but it is not lpc-mdo: a stale lock
+    # Process 1 runs, but it started at another time than the lock's writer: the id was reused
+    # (after a reboot), a stale lock.
+    (out / LOCK_NAME).write_text(f"1 {int(_start_time(1) or 0) + 12345}\n")
     assert main(["analyze", "--output-dir", str(out)]) == 0
     (out / LOCK_NAME).mkdir()  # a folder of the lock file's name
     rc = main(["analyze", "--output-dir", str(out)])
