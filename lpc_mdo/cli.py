@@ -481,6 +481,11 @@ def open_case_file(flag, path, need_final=False, vehicle=None, given=None):
                     f"holds design variable '{name}' with {np.size(value)} value(s) where the "
                     f"vehicle has {dv.size} (a run of another vehicle file?)"
                 )
+            if not np.all(np.isfinite(value)):
+                raise fail(
+                    f"holds design variable '{name}' with values that are not numbers (NaN or "
+                    "inf): a run that failed, which no optimizer can start from"
+                )
         if not found:
             raise fail(
                 f"holds none of the vehicle's {len(vehicle.design_variables)} design variables "

@@ -32,12 +32,15 @@ pytestmark = pytest.mark.integration
 REFERENCE_TOML = resources.files("lpc_mdo") / "data" / "lpc_reference.toml"
 
 
-def _design_variable_problem(path, sizes, driver_cases=True, final=True):
-    """Record a case file whose outputs are design variables named as the reference vehicle's."""
+def _design_variable_problem(path, sizes, driver_cases=True, final=True, nan=()):
+    """Record a case file whose outputs are design variables named as the reference vehicle's.
+
+    The design variables named in ``nan`` hold NaN (a run that failed).
+    """
     prob = om.Problem(reports=False)
     ivc = prob.model.add_subsystem("design", om.IndepVarComp(), promotes=["*"])
     for name, size in sizes.items():
-        ivc.add_output(name, np.ones(size))
+        ivc.add_output(name, np.full(size, np.nan) if name in nan else np.ones(size))
     prob.model.add_subsystem(
         "objective", om.ExecComp("y = 2.0 * x", x=np.ones(1)), promotes_outputs=["y"]
     )
@@ -75,6 +78,7 @@ def files(tmp_path_factory):
     _design_variable_problem(path("zero_cases.sql"), sizes, driver_cases=False, final=False)
     _design_variable_problem(path("foreign.sql"), {"x": 1, "z": 2})
     _design_variable_problem(path("wrong_shape.sql"), {**sizes, "rotor_radius": 3})
+    _design_variable_problem(path("nan_start.sql"), sizes, driver_cases=False, nan=("wing_area",))
     good = (root / "good.sql").read_bytes()
     page = int.from_bytes(good[16:18], "big")
     assert len(good) % page == 0 and len(good) // page > 4
@@ -204,6 +208,19 @@ MISUSES = [
     ("vehicle_trailing_slash", ["analyze", "--vehicle", "{vehicle.toml}/"], "ends with '/'"),
     ("report_trailing_slash", ["report", "{good.sql}/", "--output-dir", "{out}"], "ends with '/'"),
     ("vehicle_empty", ["analyze", "--vehicle", ""], "is empty"),
+    (
+        "start_case_of_nan",
+        [
+            "optimize",
+            "--problem",
+            "full",
+            "--start-case",
+            "{nan_start.sql}",
+            "--output-dir",
+            "{out}",
+        ],
+        "not numbers",
+    ),
     (
         "n2_is_the_lock_file",
         ["analyze", "--output-dir", "{out}", "--n2", "{out}/.lpc-mdo.lock"],
