@@ -269,7 +269,8 @@ def _folder_problem(folder):
         while not existing.exists():
             existing = existing.parent
         if not existing.is_dir():
-            return f"cannot be created: {_shown(existing)} is a regular file, not a folder"
+            kind = "a regular file" if existing.is_file() else "a pipe, socket or device"
+            return f"cannot be created: {_shown(existing)} is {kind}, not a folder"
         # The one reliable test (os.access says yes to root on a read-only folder).
         with tempfile.TemporaryFile(dir=existing, prefix=".lpc-mdo-write-test-"):
             pass

@@ -959,6 +959,25 @@ DICT_CASES = [
         "must be <= 10 (m; the range of lift_rotors[i].radius",
     ),
     # Found by the second audit: typos and impossible placements that used to load.
+    (
+        "a transition sharing the climb's tables",
+        _set("conditions", 3, "design_variable_prefix", "climb"),
+        "conditions[6].design_variable_prefix",
+        "must be of one kind",
+    ),
+    (
+        "one-rotor-out name with a hyphen",
+        _set("conditions", 9, "name", "oei-1"),
+        "conditions[9].name",
+        "the generated one-rotor-out conditions are named <name>_1",
+    ),
+    (
+        "a quoted dotted key",
+        lambda d: d.update({"wing.area": 20.0}),
+        "wing.area",
+        'one quoted key "wing.area" holding a dot',
+    ),
+    ("an empty key", lambda d: d["wing"].update({"": 1.0}), "wing.", "an empty key"),
     ("wing incidence x10", _set("wing", "incidence_deg", 20.4), "wing.incidence_deg", "[-10, 10]"),
     (
         "h-tail floating above a short fin",

@@ -150,6 +150,18 @@ def _check_pusher(pusher: Rotor, lift_rotors: tuple[Rotor, ...]) -> None:
 def _check_conditions(parts: dict) -> None:
     """Names unique identifiers, kinds registered, each kind's own rules (its declaration)."""
     vehicle = _PartialVehicle(parts)
+    first_of_prefix = {}
+    for i, c in enumerate(parts["conditions"]):
+        j = first_of_prefix.setdefault(c.design_variable_prefix, i)
+        other = parts["conditions"][j]
+        if other.kind != c.kind:
+            raise VehicleSpecError(
+                f"'conditions[{i}].design_variable_prefix' = {c.design_variable_prefix!r} is "
+                f"that of 'conditions[{j}]' ({other.name!r}, kind {other.kind!r}), but "
+                f"{c.name!r} is of kind {c.kind!r}: conditions that share design-variable "
+                "tables must be of one kind (their trim variables differ); give it a prefix of "
+                "its own"
+            )
     seen: dict[str, int] = {}
     for i, c in enumerate(parts["conditions"]):
         path = f"conditions[{i}]"

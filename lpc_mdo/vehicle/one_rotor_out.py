@@ -72,10 +72,11 @@ def expand_failures(data: dict) -> tuple[dict, list[str] | None]:
                 "distinct lift-rotor failure"
             )
         name = c.get("name")
-        if not isinstance(name, str):
+        if not isinstance(name, str) or not name.isidentifier() or not name.isascii():
             raise VehicleSpecError(
-                f"'conditions[{i}].name' must be a string (the generated conditions are named "
-                "<name>_1, <name>_2, ...)"
+                f"'conditions[{i}].name' = {name!r} is not allowed: must be an identifier "
+                "(ASCII letters, digits and '_', not starting with a digit); the generated "
+                "one-rotor-out conditions are named <name>_1, <name>_2, ..."
             )
         for k, rotor in enumerate(failures):
             case = copy.deepcopy(c)

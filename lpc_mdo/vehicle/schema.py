@@ -155,6 +155,13 @@ def _check_keys(
                 if odd is not None
                 else ""
             )
+            if not str(key):
+                note = ' (an empty key, "" = ...)'
+            elif "." in str(key):  # a quoted key "wing.area" is one key, not a table's key
+                note = (
+                    f' (one quoted key "{key}" holding a dot; a key of a table is written '
+                    "under the table's [header], or unquoted as table.key)"
+                )
             shown = cut_text(_join(path, str(key)))
             raise VehicleSpecError(f"unknown key {shown}{note}; allowed keys: {names}")
     for key, description in allowed.items():
@@ -242,6 +249,12 @@ def _polar_file(value: str, path: str) -> str:
         kind = "a directory" if os.path.isdir(other) else "not a regular file (a pipe or device)"
         raise VehicleSpecError(
             f"'{path}' = {value!r}: '{os.path.abspath(other)}' is {kind}; allowed: a polar file"
+        )
+    broken = next((p for p in places if not os.path.exists(p) and os.path.islink(p)), None)
+    if found is None and broken is not None:
+        raise VehicleSpecError(
+            f"'{path}' = {value!r}: '{os.path.abspath(broken)}' is a symbolic link that leads "
+            "nowhere (a broken link or a loop); allowed: a polar file"
         )
     if found is None:
         looked = ", ".join(repr(os.path.abspath(p)) for p in places)
