@@ -32,15 +32,15 @@ from lpc_mdo.vehicle import load_vehicle  # noqa: E402
 
 def jacobian(prob, method=None, step=None):
     """Dense driver-scaled total Jacobian (rows: objective then constraints)."""
-    if method is None:
-        totals = prob.compute_totals(driver_scaling=True, return_format="array")
+    of = list(prob.model.get_objectives()) + list(prob.model.get_constraints())
+    wrt = list(prob.model.get_design_vars())
+    if method is None:  # every row, the linear constraints' too, as check_totals gives them
+        totals = prob.compute_totals(of=of, wrt=wrt, driver_scaling=True, return_format="array")
         return np.asarray(totals)
     kwargs = {"form": "forward"} if method == "fd" else {}
     data = prob.check_totals(
         method=method, step=step, out_stream=None, driver_scaling=True, **kwargs
     )
-    of = list(prob.model.get_objectives()) + list(prob.model.get_constraints())
-    wrt = list(prob.model.get_design_vars())
     rows = []
     for o in of:
         rows.append(np.hstack([np.atleast_2d(data[o, w]["J_fd"]) for w in wrt]))
