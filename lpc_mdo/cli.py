@@ -73,6 +73,9 @@ EXIT_USER_ERROR, EXIT_BUG, EXIT_INTERRUPTED = 2, 1, 130
 EXIT_WRITE_ERROR = 1
 #: A model raised om.AnalysisError outside an optimization (its range left at this design).
 EXIT_ANALYSIS_ERROR = 1
+#: How far (as a fraction of its range) a start case's design variable may lie outside the
+#: bounds: the optimizers' own feasibility tolerances, not a different problem.
+START_BOUND_SLACK = 0.01
 
 #: Characters of a value (a path, a word) an error message shows: a longer one is cut, with its
 #: length, so that the message stays one short line.
@@ -487,12 +490,29 @@ def open_case_file(flag, path, need_final=False, vehicle=None, given=None):
                     f"holds design variable '{name}' with values that are not numbers (NaN or "
                     "inf): a run that failed, which no optimizer can start from"
                 )
+            units = None if dv.units == "unitless" else dv.units
+            _within_bounds(fail, name, dv, final.get_val(name, units=units))
         if not found:
             raise fail(
                 f"holds none of the vehicle's {len(vehicle.design_variables)} design variables "
                 "(not an lpc-mdo run)"
             )
     return reader
+
+
+def _within_bounds(fail, name, dv, value):
+    """Refuse start values outside a design variable's bounds by more than 1 % of its range."""
+    value = np.ravel(value)
+    lower, upper = np.ravel(dv.lower_array), np.ravel(dv.upper_array)
+    slack = START_BOUND_SLACK * np.maximum(upper - lower, np.finfo(float).tiny)
+    outside = (value < lower - slack) | (value > upper + slack)
+    if np.any(outside):
+        k = int(np.argmax(outside))
+        raise fail(
+            f"holds design variable '{name}' with entry {k} = {value[k]:.6g} {dv.units}, outside "
+            f"the vehicle file's bounds [{lower[k]:.6g}, {upper[k]:.6g}] (a run of other bounds "
+            "or another vehicle file?); allowed: a start inside the bounds"
+        )
 
 
 def load_vehicle_argument(flag, path):

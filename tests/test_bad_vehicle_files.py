@@ -978,6 +978,24 @@ DICT_CASES = [
         'one quoted key "wing.area" holding a dot',
     ),
     ("an empty key", lambda d: d["wing"].update({"": 1.0}), "wing.", "an empty key"),
+    (
+        "shear modulus 5x off E and nu",
+        _set("material", "shear_modulus", 5e9),
+        "material.shear_modulus",
+        "an isotropic material has G = E/(2 (1 + nu))",
+    ),
+    (
+        "whole-wing sweep against the sections",
+        _set("wing", "sweep_deg", 35.0),
+        "wing.sweep_deg",
+        "the sections' leading edge from root to tip gives 7.821 deg",
+    ),
+    (
+        "whole-wing dihedral against the sections",
+        _set("wing", "dihedral_deg", 6.0),
+        "wing.dihedral_deg",
+        "gives -2 deg",
+    ),
     ("wing incidence x10", _set("wing", "incidence_deg", 20.4), "wing.incidence_deg", "[-10, 10]"),
     (
         "h-tail floating above a short fin",

@@ -32,21 +32,36 @@ pytestmark = pytest.mark.integration
 REFERENCE_TOML = resources.files("lpc_mdo") / "data" / "lpc_reference.toml"
 
 
-def _design_variable_problem(path, sizes, driver_cases=True, final=True, nan=()):
+def _design_variable_problem(path, sizes, driver_cases=True, final=True, nan=(), values=None):
     """Record a case file whose outputs are design variables named as the reference vehicle's.
 
-    The design variables named in ``nan`` hold NaN (a run that failed).
+    The design variables named in ``nan`` hold NaN (a run that failed), those in ``values`` the
+    values given there; the others the reference's initial design.
     """
     prob = om.Problem(reports=False)
     ivc = prob.model.add_subsystem("design", om.IndepVarComp(), promotes=["*"])
+    dvs = load_vehicle(None).design_variables
     for name, size in sizes.items():
-        ivc.add_output(name, np.full(size, np.nan) if name in nan else np.ones(size))
+        dv = dvs.get(name)
+        if dv is not None and dv.size == size:  # the reference's initial design, in its units
+            units = None if dv.units == "unitless" else dv.units
+            value = np.ravel(dv.initial_array)
+        else:
+            units, value = None, np.ones(size)
+        value = (values or {}).get(name, value)
+        ivc.add_output(name, np.full(size, np.nan) if name in nan else value, units=units)
     prob.model.add_subsystem(
         "objective", om.ExecComp("y = 2.0 * x", x=np.ones(1)), promotes_outputs=["y"]
     )
     first = next(iter(sizes))
     prob.model.connect(first, "objective.x", src_indices=[0])
-    prob.model.add_design_var(first, lower=-10.0, upper=10.0)
+    first_dv = dvs.get(first)
+    if first_dv is not None and first_dv.size == sizes[first]:  # stays within its own bounds
+        prob.model.add_design_var(
+            first, lower=first_dv.lower_array.ravel(), upper=first_dv.upper_array.ravel()
+        )
+    else:
+        prob.model.add_design_var(first, lower=-10.0, upper=10.0)
     prob.model.add_objective("y")
     recorder = om.SqliteRecorder(str(path))
     if driver_cases:
@@ -79,6 +94,9 @@ def files(tmp_path_factory):
     _design_variable_problem(path("foreign.sql"), {"x": 1, "z": 2})
     _design_variable_problem(path("wrong_shape.sql"), {**sizes, "rotor_radius": 3})
     _design_variable_problem(path("nan_start.sql"), sizes, driver_cases=False, nan=("wing_area",))
+    _design_variable_problem(
+        path("outside_bounds.sql"), sizes, driver_cases=False, values={"wing_area": 100.0}
+    )
     good = (root / "good.sql").read_bytes()
     page = int.from_bytes(good[16:18], "big")
     assert len(good) % page == 0 and len(good) // page > 4
@@ -220,6 +238,19 @@ MISUSES = [
             "{out}",
         ],
         "not numbers",
+    ),
+    (
+        "start_case_outside_the_bounds",
+        [
+            "optimize",
+            "--problem",
+            "full",
+            "--start-case",
+            "{outside_bounds.sql}",
+            "--output-dir",
+            "{out}",
+        ],
+        "outside the vehicle file's bounds",
     ),
     (
         "n2_is_the_lock_file",

@@ -25,7 +25,8 @@ The rules, with L the fuselage length, W its width, H its height, the body's bot
 - *booms that reach their rotors*: ``booms.length`` at least the farthest distance from an
   attach point to its hub and at most a rotor radius more;
 - *wing sections of a real taper*: every section chord at least 1/20 of the largest, but a
-  pointed tip (the last tip chord may be 0);
+  pointed tip (the last tip chord may be 0); the whole-wing sweep and dihedral within 2 deg of
+  the sections' root-to-tip leading edge;
 - *the pusher at the tail*: its hub within half the body width of the symmetry plane, behind
   the wing's root trailing edge and at most one pusher radius behind the tail end;
 - *no disk through the fuselage or another disk*: a lift disk whose plane lies within the
@@ -63,6 +64,9 @@ from lpc_mdo.vehicle.schema import VehicleSpecError
 
 #: Largest factor between the sections' half span and sqrt(AR S)/2 (either way).
 SECTION_SPAN_FACTOR = 1.4
+#: Largest difference (deg) between a sectioned wing's whole-wing sweep or dihedral and the
+#: root-to-tip leading edge of its sections (the reference's: 7.81 and 7.82 deg, -2 and -2 deg).
+WHOLE_WING_ANGLE_TOLERANCE_DEG = 2.0
 #: Smallest wing-section chord as a fraction of the largest (all but a pointed tip): a taper
 #: beyond 20:1 is a typing error (the reference's root to tip is 5.2:1, built wings 2-10:1).
 MIN_CHORD_FRACTION = 0.05
@@ -195,6 +199,22 @@ def _check_wing_sections(wing) -> None:
             f"wing.area)/2 = {half:.6g} m (each section's span is its extent along one wing "
             "half; the model scales the sections to the area and aspect ratio)"
         )
+    # The whole-wing sweep and dihedral (the estimates that need one number) are those of the
+    # sections' root-to-tip leading edge.
+    tip = np.asarray(wing._geometry()["section_leading_edges"])[-1]
+    derived = {
+        "sweep_deg": math.degrees(math.atan2(-tip[0], tip[1])),
+        "dihedral_deg": math.degrees(math.atan2(-tip[2], tip[1])),
+    }
+    for key, angle in derived.items():
+        given = math.degrees(getattr(wing, key.removesuffix("_deg")))
+        if abs(given - angle) > WHOLE_WING_ANGLE_TOLERANCE_DEG:
+            raise VehicleSpecError(
+                f"'wing.{key}' = {given:.6g} is out of range: the sections' leading edge from "
+                f"root to tip gives {angle:.4g} deg; allowed: within "
+                f"{WHOLE_WING_ANGLE_TOLERANCE_DEG:g} deg of it (the whole-wing figure of the "
+                "estimates that need one number)"
+            )
 
 
 def _check_boom_length(parts: dict) -> None:
