@@ -979,6 +979,12 @@ DICT_CASES = [
     ),
     ("an empty key", lambda d: d["wing"].update({"": 1.0}), "wing.", "an empty key"),
     (
+        "wing box through the seats",
+        _set("wing", "root_leading_edge", [-1.95925, 0.0, -0.3]),
+        "wing.root_leading_edge",
+        "so its box would run through the seats",
+    ),
+    (
         "shear modulus 5x off E and nu",
         _set("material", "shear_modulus", 5e9),
         "material.shear_modulus",

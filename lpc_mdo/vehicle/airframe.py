@@ -13,6 +13,8 @@ The rules, with L the fuselage length, W its width, H its height, the body's bot
   the symmetry plane (y = 0), between the nose and the tail end, and at most H/2 above the
   body's top or below its bottom (a high, mid or low wing; a tail on the tail cone; the
   horizontal tail may also sit on top of the fin, a T-tail);
+- *no wing box through the seats*: a wing whose root chord lies over the cabin sits in the
+  body's top quarter (a high wing on the roof fairing) or under the cabin floor;
 - *tails aft of the wing*: the horizontal tail's and the fin's root leading edges behind the
   wing's root trailing edge (the vehicle's pitch and yaw stability come from them);
 - *the wing's sections* add up to the half span that its area and aspect ratio give within a
@@ -170,6 +172,30 @@ def _check_surface_roots(parts: dict, env: _Envelope) -> None:
                 f"{env.wing_trailing_edge:.4g} (m, wing.root_leading_edge x less the root "
                 f"chord), got x = {position[0]:.6g}",
             )
+
+
+#: Part of the body's height, from its top, that a wing's root may take over the cabin: the
+#: cabin's ceiling lies below the roof fairing that carries a high wing (the reference's root
+#: chord is 0.08 m, 5 % of the height, below the body's top line).
+WING_ROOT_FAIRING = 0.25
+
+
+def _check_wing_over_cabin(parts: dict, env: _Envelope) -> None:
+    """Check that a wing whose root chord lies over the cabin is high (or low, under the floor)."""
+    fuselage, wing = parts["fuselage"], parts["wing"]
+    x_le, _, z = wing.root_leading_edge
+    over_cabin = x_le > -fuselage.cabin_end and x_le - wing.root_chord < -fuselage.cabin_start
+    lowest_high_wing = env.top + WING_ROOT_FAIRING * (env.bottom - env.top)
+    if over_cabin and lowest_high_wing < z < env.bottom:
+        _refuse(
+            "wing.root_leading_edge",
+            _fmt(wing.root_leading_edge),
+            f"the wing's root chord lies over the cabin (x in [-{fuselage.cabin_end:.4g}, "
+            f"-{fuselage.cabin_start:.4g}] m), so its box would run through the seats unless the "
+            f"wing sits in the top {WING_ROOT_FAIRING:.0%} of the body, z <= "
+            f"{lowest_high_wing:.4g} (a high wing), or under the floor, z >= {env.bottom:.4g} "
+            f"(m, fuselage.cabin_floor_z), got z = {z:.6g}",
+        )
 
 
 def _check_wing_sections(wing) -> None:
@@ -458,6 +484,7 @@ def check_airframe(parts: dict) -> None:
     _check_wing_sections(parts["wing"])
     env = _Envelope(parts)
     _check_surface_roots(parts, env)
+    _check_wing_over_cabin(parts, env)
     _check_rotors(parts, env)
     _check_disks_through_the_body(parts, env)
     _check_disks_through_surfaces(parts)

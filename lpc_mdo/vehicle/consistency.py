@@ -503,9 +503,8 @@ MIN_SEAT_WIDTH = 0.46
 MAX_SECTION_ASPECT = 2.0
 
 
-def _check_cabin(parts: dict) -> None:
-    """Check that the fuselage holds nose bay, cabin and tail cone, and the cabin its seats."""
-    fuselage = parts["fuselage"]
+def _check_fuselage_section(fuselage) -> None:
+    """Check a near-round cross-section (:data:`MAX_SECTION_ASPECT`)."""
     ratio = fuselage.max_height / fuselage.max_width
     if not 1.0 / MAX_SECTION_ASPECT <= ratio <= MAX_SECTION_ASPECT:
         raise VehicleSpecError(
@@ -514,6 +513,11 @@ def _check_cabin(parts: dict) -> None:
             f"{ratio:.3g}, must be in [{1.0 / MAX_SECTION_ASPECT:g}, {MAX_SECTION_ASPECT:g}] "
             "(a near-round body, as the fuselage drag and weight models take it)"
         )
+
+
+def _check_cabin(parts: dict) -> None:
+    """Check that the fuselage holds nose bay, cabin and tail cone, and the cabin its seats."""
+    fuselage = parts["fuselage"]
     if fuselage.seats_abreast * MIN_SEAT_WIDTH > fuselage.max_width:
         raise VehicleSpecError(
             f"'fuselage.seats_abreast' = {fuselage.seats_abreast} is out of range: "
@@ -567,11 +571,13 @@ def _check_geometry(parts: dict) -> None:
     """
     Check the geometry across parts.
 
-    Thrust axes, rotor positions, the parts on the airframe (:mod:`lpc_mdo.vehicle.airframe`),
-    blade chords, the cabin and the energy and noise limits (see above).
+    Thrust axes, rotor positions, the fuselage's section (first: the other parts are placed
+    against it), the parts on the airframe (:mod:`lpc_mdo.vehicle.airframe`), blade chords, the
+    cabin and the energy and noise limits (see above).
     """
     _check_thrust_axes(parts["lift_rotors"], parts["pusher"])
     _check_rotor_positions(parts["lift_rotors"], parts["pusher"])
+    _check_fuselage_section(parts["fuselage"])
     check_airframe(parts)
     _check_blades(parts["lift_rotors"], parts["pusher"])
     _check_cabin(parts)
