@@ -6,8 +6,9 @@ work). A command that writes into an output folder takes its lock first: it crea
 ``.lpc-mdo.lock`` there exclusively, with its process id and that process's start time, and
 removes it when it ends. A lock whose process no longer runs (a run killed with kill -9 or a
 machine that went down) is stale and taken over; so is one whose process id now belongs to
-another process (started at another time: the id was reused). Where the start time cannot be
-read (no ``/proc``), any running process of that id holds the lock.
+another process (started at another time: the id was reused), and so is a lock without a start
+time. Where start times cannot be read (no ``/proc``), any running process of that id holds the
+lock.
 """
 
 import contextlib
@@ -59,7 +60,11 @@ def _running(pid, started):
     except PermissionError:  # it runs, under another user
         pass
     now = _start_time(pid)
-    return now is None or started is None or now == started
+    if now is None:  # no process table: any running process of that id holds the lock
+        return True
+    # A lock without a start time, where start times can be read, was not written by a run of
+    # this lpc-mdo on this machine (which always writes one): stale.
+    return started is not None and now == started
 
 
 def _owner(path):
