@@ -593,7 +593,8 @@ def _preflight(args):
                 "--start-case", args.start_case, need_final=True, vehicle=args.vehicle_spec
             )
     if command == "report":
-        _check_report_cases(args.cases)
+        given = f"--vehicle = {_shown(args.vehicle)}" if args.vehicle else "the reference vehicle"
+        _check_report_cases(args.cases, args.vehicle_spec, given)
 
 
 def _check_mpi_ranks():
@@ -822,7 +823,7 @@ def _check_sweep_values(args):
             ) from err
 
 
-def _check_report_cases(cases):
+def _check_report_cases(cases, vehicle, vehicle_flag):
 
     given = None
     if Path(cases).is_dir():
@@ -837,7 +838,32 @@ def _check_report_cases(cases):
     else:
         files = [cases]
     for path in files:
-        open_case_file("cases", path, given=given)
+        reader = open_case_file("cases", path, given=given)
+        _same_layout("cases", path, reader, vehicle, vehicle_flag)
+
+
+def _same_layout(flag, path, reader, vehicle, vehicle_flag):
+    """Refuse a run whose design variables have other sizes than the vehicle's (another vehicle)."""
+    names = reader.list_cases("problem", recurse=False, out_stream=None)
+    drivers = reader.list_cases("driver", recurse=False, out_stream=None)
+    if "final" in names:
+        case = reader.get_case("final")
+    elif drivers:
+        case = reader.get_case(drivers[-1])
+    else:
+        return
+    for name, dv in vehicle.design_variables.items():
+        try:
+            size = np.size(case.get_val(name))
+        except KeyError:
+            continue
+        if size != dv.size:
+            raise CLIError(
+                f"'{flag}' = {_shown(os.fspath(path))} is a run of another vehicle: its design "
+                f"variable '{name}' has {size} value(s), {vehicle_flag} has {dv.size}; allowed: "
+                "runs of the vehicle given with --vehicle (report the runs of each vehicle "
+                "separately)"
+            )
 
 
 # ------------------------------------------------------------------------------------------------

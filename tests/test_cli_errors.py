@@ -253,6 +253,11 @@ MISUSES = [
         "outside the vehicle file's bounds",
     ),
     (
+        "report_of_another_vehicle",
+        ["report", "{wrong_shape.sql}", "--output-dir", "{out}"],
+        "is a run of another vehicle",
+    ),
+    (
         "n2_is_the_lock_file",
         ["analyze", "--output-dir", "{out}", "--n2", "{out}/.lpc-mdo.lock"],
         "--n2",
