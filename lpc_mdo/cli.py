@@ -444,6 +444,10 @@ def open_case_file(flag, path, need_final=False, vehicle=None, given=None):
             tables = {row[0] for row in con.execute("SELECT name FROM sqlite_master")}
         con.close()
     except sqlite3.Error as err:
+        if "locked" in str(err):
+            raise fail(
+                "is locked by another process (a run still writing it?): wait until it ends"
+            ) from err
         raise fail(f"is a damaged SQLite file ({err})") from err
     missing = [t for t in RECORDER_TABLES if t not in tables]
     if missing:

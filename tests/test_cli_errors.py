@@ -988,3 +988,16 @@ def test_a_model_out_of_its_range_is_one_line(paths, capsys, monkeypatch):
         "lpc-mdo: error: the analysis left a model's range: 'hover.motor' <class X>: stack "
         "length 0.01 m below 0.056 m"
     ]
+
+
+def test_a_case_file_locked_by_a_writer_says_so(paths, tmp_path, capsys):
+    busy = tmp_path / "busy.sql"
+    shutil.copy(paths["good.sql"], busy)
+    writer = sqlite3.connect(busy)
+    try:
+        writer.execute("BEGIN EXCLUSIVE")  # a run still writing it
+        rc = main([*_format(FULL, paths), "--start-case", str(busy)])
+        _assert_one_line_error(rc, capsys.readouterr(), "is locked by another process")
+    finally:
+        writer.rollback()
+        writer.close()
