@@ -73,7 +73,8 @@ def test_loiter_is_a_sixteenth_condition_with_its_own_design_variables(loiter_fi
     assert len(vehicle.conditions) == 16 and vehicle.conditions[-1].name == "loiter"
     assert vehicle.design_variable_count() == 181 + 3
     assert vehicle.design_variables["loiter_pitch"].initial == pytest.approx((np.radians(4.0),))
-    assert vehicle.design_variables["loiter_pitch"].initial_from == "conditions[15].pitch_deg"
+    # The file's 13th table (the one 'oei' table generates four conditions).
+    assert vehicle.design_variables["loiter_pitch"].initial_from == "conditions[12].pitch_deg"
     assert "loiter" in [c.name for c in vehicle.mission_segments]
 
 
