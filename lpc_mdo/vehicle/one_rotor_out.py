@@ -18,7 +18,7 @@ from __future__ import annotations
 import copy
 import re
 
-from lpc_mdo.vehicle.parts import Rotor
+from lpc_mdo.vehicle.parts import Rotor, Vehicle
 from lpc_mdo.vehicle.schema import VehicleSpecError, _convert, _hints, _spec
 
 #: The ``failed_rotor`` value that asks for every distinct single failure.
@@ -50,11 +50,9 @@ def expand_failures(data: dict) -> tuple[dict, list[str] | None]:
         isinstance(c, dict) and c.get("failed_rotor") == EACH for c in conditions
     ):
         return data, None
-    from lpc_mdo.vehicle.parts import Vehicle  # the field spec of lift_rotors
-
-    field = next(f for f in Vehicle.__dataclass_fields__.values() if f.name == "lift_rotors")
     if "lift_rotors" not in data:
         return data, None
+    field = Vehicle.__dataclass_fields__["lift_rotors"]
     rotors = _convert(
         _hints(Vehicle)["lift_rotors"], _spec(field), data["lift_rotors"], "lift_rotors"
     )
