@@ -107,51 +107,72 @@ class HoverCondition(ConditionGroup):
         if acoustics:
             nrad = self.options["num_radial"]
             na = len(rotors)
-            self.add_subsystem(
-                "noise",
-                RotorNoiseGroup(
-                    num_rotors=na,
-                    num_radial=nrad,
-                    num_azimuth=1,
-                    num_blades=[r.num_blades for r in rotors],
-                    hub_radius_ratio=rotors[0].hub_radius_ratio,
-                    load_input="sectional",
-                    rotation_direction=tuple(float(r.spin_direction) for r in rotors),
-                ),
-                promotes_inputs=[
-                    ("radius", "lift_radius"),
-                    ("hub_position", "lift_hub_position"),
-                    "density",
-                    "speed_of_sound",
-                    "observer_distance",
-                    "observer_elevation",
-                    ("thickness_to_chord", "lift_thickness_to_chord"),
-                    ("chord", "lift_chord"),
-                ],
-                promotes_outputs=["total_spl_a", "total_spl", "rotor_spl_a"],
-            )
-            observer = vehicle.noise_observer
-            self.set_input_defaults("observer_distance", np.array([observer.distance]), units="m")
-            self.set_input_defaults(
-                "observer_elevation", np.array([observer.elevation]), units="rad"
-            )
+            # One noise group per observer: 'noise' (its levels promoted: total_spl_a, ...)
+            # and 'noise_2', 'noise_3', ... for further observers (levels under their paths,
+            # e.g. noise_2.total_spl_a), each with its own observer inputs.
+            for k, observer in enumerate(vehicle.noise_observer):
+                name = noise_group_name(k)
+                first = k == 0
+                prefix = "" if first else f"{name}_"
+                self.add_subsystem(
+                    name,
+                    RotorNoiseGroup(
+                        num_rotors=na,
+                        num_radial=nrad,
+                        num_azimuth=1,
+                        num_blades=[r.num_blades for r in rotors],
+                        hub_radius_ratio=rotors[0].hub_radius_ratio,
+                        load_input="sectional",
+                        rotation_direction=tuple(float(r.spin_direction) for r in rotors),
+                    ),
+                    promotes_inputs=[
+                        ("radius", "lift_radius"),
+                        ("hub_position", "lift_hub_position"),
+                        "density",
+                        "speed_of_sound",
+                        *(
+                            (f"observer_{q}", f"{prefix}observer_{q}")
+                            for q in ("distance", "elevation", "azimuth")
+                        ),
+                        ("thickness_to_chord", "lift_thickness_to_chord"),
+                        ("chord", "lift_chord"),
+                    ],
+                    promotes_outputs=["total_spl_a", "total_spl", "rotor_spl_a"] if first else [],
+                )
+                for q, value, units in (
+                    ("distance", observer.distance, "m"),
+                    ("elevation", observer.elevation, "rad"),
+                    ("azimuth", observer.azimuth_or_aft, "rad"),
+                ):
+                    self.set_input_defaults(f"{prefix}observer_{q}", np.array([value]), units=units)
+                # (rotor, node = 0, station) of the BEM -> (rotor, station, azimuth = 0) of the
+                # acoustics: a fancy index of the source shaped like the target.
+                rotor, station = np.meshgrid(np.arange(na), np.arange(nrad), indexing="ij")
+                reshape = om.slicer[rotor[..., None], 0 * rotor[..., None], station[..., None]]
+                for load in ("thrust_per_span", "drag_per_span", "inflow_angle"):
+                    self.connect(f"lift_rotors.{load}", f"{name}.{load}", src_indices=reshape)
+                self.connect(
+                    "lift_thrust",
+                    f"{name}.thrust",
+                    src_indices=np.arange(na),
+                    flat_src_indices=True,
+                )
+                self.connect(
+                    "lift_rotor_rpm",
+                    f"{name}.rpm",
+                    src_indices=np.arange(na),
+                    flat_src_indices=True,
+                )
             # Each rotor's section t/c at every acoustic station (rotor, station).
             thickness = [_rotor_thickness_to_chord(vehicle, i) for i in self.active_rotors]
             self.set_input_defaults(
                 "lift_thickness_to_chord", np.repeat(np.array(thickness)[:, None], nrad, axis=1)
             )
-            # (rotor, node = 0, station) of the BEM -> (rotor, station, azimuth = 0) of the
-            # acoustics: a fancy index of the source shaped like the target.
-            rotor, station = np.meshgrid(np.arange(na), np.arange(nrad), indexing="ij")
-            reshape = om.slicer[rotor[..., None], 0 * rotor[..., None], station[..., None]]
-            for name in ("thrust_per_span", "drag_per_span", "inflow_angle"):
-                self.connect(f"lift_rotors.{name}", f"noise.{name}", src_indices=reshape)
-            self.connect(
-                "lift_thrust", "noise.thrust", src_indices=np.arange(na), flat_src_indices=True
-            )
-            self.connect(
-                "lift_rotor_rpm", "noise.rpm", src_indices=np.arange(na), flat_src_indices=True
-            )
+
+
+def noise_group_name(k):
+    """Return the subsystem name of the noise group of observer ``k``: noise, noise_2, ..."""
+    return "noise" if k == 0 else f"noise_{k + 1}"
 
 
 def _rotor_thickness_to_chord(vehicle, index):

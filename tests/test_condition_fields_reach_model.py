@@ -84,13 +84,13 @@ def test_material_density_reaches_the_structural_beam():
 
 
 def _observer(distance=None, elevation=None):
-    obs = REF.noise_observer
+    (obs,) = REF.noise_observer
     obs = dataclasses.replace(
         obs,
         distance=obs.distance if distance is None else distance,
         elevation=obs.elevation if elevation is None else elevation,
     )
-    return dataclasses.replace(REF, noise_observer=obs)
+    return dataclasses.replace(REF, noise_observer=(obs,))
 
 
 def test_observer_distance_reaches_the_noise_model():

@@ -143,3 +143,36 @@ def test_bounds_follow_the_vehicle_when_left_out():
     del data["design_variables"]["motor_length"]["lower"]
     with pytest.raises(VehicleSpecError, match="missing key 'design_variables.motor_length.lower'"):
         vehicle_from_dict(data)
+
+
+def test_several_noise_observers_are_rows_of_the_noise_constraint():
+    # Independent number: each observer's level in a three-observer model equals that of a
+    # model with that observer alone (the groups share the rotors' loads, not the observer).
+    from lpc_mdo.problems import build_analysis_problem
+    from lpc_mdo.vehicle.condition_kinds import HoverKind
+
+    data = read_vehicle_file()
+    aft = data["noise_observer"]
+    side, ahead = {**aft, "azimuth_deg": 90.0}, {**aft, "distance": 150.0, "azimuth_deg": 0.0}
+    data["noise_observer"] = [aft, side, ahead]
+    vehicle = vehicle_from_dict(data)
+    hover = vehicle.condition("hover")
+    outputs = [c.output for c in HoverKind.constraints(vehicle, hover, None) if c.kind == "noise"]
+    assert outputs == ["total_spl_a", "noise_2.total_spl_a", "noise_3.total_spl_a"]
+    prob = build_analysis_problem(vehicle, conditions=["hover"])
+    prob.run_model()
+    levels = [prob.get_val(f"hover.{name}")[0] for name in outputs]
+    for observer, level in zip((aft, side, ahead), levels, strict=True):
+        one = read_vehicle_file()
+        one["noise_observer"] = observer
+        alone = build_analysis_problem(vehicle_from_dict(one), conditions=["hover"])
+        alone.run_model()
+        assert level == pytest.approx(alone.get_val("hover.total_spl_a")[0], rel=1e-12)
+    assert levels[2] < levels[0] - 3.0  # 150 m against 100 m: at least 20 log10(1.5) = 3.5 dB
+
+
+def test_an_observer_list_names_its_entry():
+    data = read_vehicle_file()
+    data["noise_observer"] = [data["noise_observer"], {**data["noise_observer"], "distance": 5.0}]
+    with pytest.raises(VehicleSpecError, match=r"'noise_observer\[1\]\.distance' = 5\.0"):
+        vehicle_from_dict(data)

@@ -90,7 +90,9 @@ def test_reference_values():
     assert vehicle.battery.energy == pytest.approx(800 * 400 * 3600)
     assert vehicle.constraints.min_final_soc == 0.2
     assert vehicle.constraints.radius_intersection_definition == "span_fraction"
-    assert vehicle.noise_observer.elevation == pytest.approx(math.pi / 4)
+    (observer,) = vehicle.noise_observer  # one [noise_observer] table: one observer
+    assert observer.elevation == pytest.approx(math.pi / 4)
+    assert observer.azimuth is None and observer.azimuth_or_aft == pytest.approx(math.pi)
 
 
 def test_rotor_pairs_are_mirror_images_with_balanced_spin():

@@ -291,12 +291,18 @@ def vehicle_from_dict(data: Mapping) -> Vehicle:
         At the first problem, naming the dotted key, the value and what is allowed.
     """
     data, keys = expand_failures(data)
+    single_observer = isinstance(data, dict) and isinstance(data.get("noise_observer"), dict)
+    if single_observer:  # one [noise_observer] table: a list of one
+        data = {**data, "noise_observer": [data["noise_observer"]]}
     try:
         return _build_vehicle(data, keys)
     except VehicleSpecError as err:
-        if keys is None:
+        message = file_keys(str(err), keys)
+        if single_observer:
+            message = message.replace("noise_observer[0]", "noise_observer")
+        if message == str(err):
             raise
-        raise VehicleSpecError(file_keys(str(err), keys)) from None
+        raise VehicleSpecError(message) from None
 
 
 def _build_vehicle(data: Mapping, keys: list[str] | None) -> Vehicle:

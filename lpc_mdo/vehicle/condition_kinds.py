@@ -334,13 +334,24 @@ class HoverKind(ConditionKind):
         active = cls.active_lift_rotors(vehicle, condition)
         pairs = [vehicle.lift_rotors[i].pair for i in active]
         one_per_pair = [pairs.index(p) for p in sorted(set(pairs))]
-        return reserve + (
-            ConditionConstraint("noise", "total_spl_a", {"upper": limits.max_noise, "ref": 10.0}),
+        noise = tuple(
             ConditionConstraint(
-                "tip_mach",
-                "lift_tip_mach",
-                {"indices": one_per_pair, "flat_indices": True, "upper": limits.max_tip_mach},
-            ),
+                "noise",
+                "total_spl_a" if k == 0 else f"noise_{k + 1}.total_spl_a",
+                {"upper": limits.max_noise, "ref": 10.0},
+            )
+            for k in range(len(vehicle.noise_observer))
+        )
+        return (
+            reserve
+            + noise
+            + (
+                ConditionConstraint(
+                    "tip_mach",
+                    "lift_tip_mach",
+                    {"indices": one_per_pair, "flat_indices": True, "upper": limits.max_tip_mach},
+                ),
+            )
         )
 
     @classmethod

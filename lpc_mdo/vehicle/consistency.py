@@ -455,13 +455,13 @@ def _check_limits(parts: dict) -> None:
             f"{masses.design_gross_mass!r} (the airframe, rotors and motors weigh the rest)"
         )
     radius = max(r.radius for r in (*parts["lift_rotors"], parts["pusher"]))
-    distance = parts["noise_observer"].distance
-    if distance < FAR_FIELD_RADII * radius:
-        raise VehicleSpecError(
-            f"'noise_observer.distance' = {distance!r} is out of range: must be >= "
-            f"{FAR_FIELD_RADII:g} x the largest rotor radius {radius:g} = "
-            f"{FAR_FIELD_RADII * radius:g} (m); the noise model is a far-field one"
-        )
+    for k, observer in enumerate(parts["noise_observer"]):
+        if observer.distance < FAR_FIELD_RADII * radius:
+            raise VehicleSpecError(
+                f"'noise_observer[{k}].distance' = {observer.distance!r} is out of range: must "
+                f"be >= {FAR_FIELD_RADII:g} x the largest rotor radius {radius:g} = "
+                f"{FAR_FIELD_RADII * radius:g} (m); the noise model is a far-field one"
+            )
     if (
         limits.radius_intersection_definition == "span_fraction"
         and limits.radius_intersection > MAX_RADIUS_SPAN_FRACTION

@@ -782,19 +782,31 @@ class ConstraintLimits:
 
 @dataclass(frozen=True)
 class NoiseObserver:
-    """Observer of the hover noise constraint (docs theory/acoustics 'Observer and constraint').
+    """An observer of the hover noise constraint (docs theory/acoustics 'Observer and constraint').
+
+    A vehicle file gives one ``[noise_observer]`` table or several ``[[noise_observer]]`` tables;
+    each observer is one row of the hover noise constraint.
 
     Attributes
     ----------
     distance : float
-        Slant distance from the vehicle reference point (m).
+        Slant distance from the rotor-hub centroid (m).
     elevation : float
         Angle below the rotor plane (rad); file key ``elevation_deg``.
+    azimuth : float or None
+        Azimuth about the body z axis from +x (forward) towards +y (right) (rad); file key
+        ``azimuth_deg``, optional: 180 deg (aft, the paper's observer) when absent.
     """
 
-    # Up to 10 km, where a rotor is inaudible; at least a rotor radius (checked with the rotors).
+    # Up to 10 km, where a rotor is inaudible; at least 10 rotor radii (checked with the rotors).
     distance: float = _param("m", gt=0, le=10000)
     elevation: float = _angle(ge=-90, le=90)
+    azimuth: float = _angle(ge=-360, le=360, optional=True)
+
+    @property
+    def azimuth_or_aft(self) -> float:
+        """Azimuth (rad): the file's, or pi (aft)."""
+        return math.pi if self.azimuth is None else self.azimuth
 
 
 @dataclass(frozen=True)
@@ -904,8 +916,8 @@ class Vehicle:
         Design conditions, in vehicle-file order (15 in the reference vehicle).
     constraints : ConstraintLimits
         Constraint limits.
-    noise_observer : NoiseObserver
-        Hover noise observer.
+    noise_observer : tuple of NoiseObserver
+        Hover noise observers (one row of the noise constraint each).
     design_variables : Mapping of str to DesignVariable
         The 161 paper design variables and the 10 transition roll/yaw speed differentials by
         name (read-only); see the module docstring.
@@ -932,7 +944,9 @@ class Vehicle:
     mission: Mission = _param()
     conditions: tuple[DesignCondition, ...] = _param(count_note="at least one [[conditions]] table")
     constraints: ConstraintLimits = _param()
-    noise_observer: NoiseObserver = _param()
+    noise_observer: tuple[NoiseObserver, ...] = _param(
+        count_note="one [noise_observer] table or [[noise_observer]] tables"
+    )
     design_variables: Mapping[str, DesignVariable] = _param()
 
     @property
