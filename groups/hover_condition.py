@@ -12,7 +12,7 @@ from lpc_mdo.groups.condition_builders import (
     add_lift_rotors,
     add_power,
 )
-from lpc_mdo.vehicle.condition_kinds import HoverKind, num_lift_pairs
+from lpc_mdo.vehicle.condition_kinds import HoverKind, noise_group_name, num_lift_pairs
 
 DEFAULT_ROTOR_THICKNESS_TO_CHORD = 0.12
 #: KS scale (rad/s**2) of a control axis without a required acceleration: the available
@@ -35,10 +35,12 @@ class HoverCondition(ConditionGroup):
     (``pitch`` = 0): the lift-rotor thrust axes are body-fixed and u_dot is not a hover trim row,
     so a pitched hover is a VehicleSpecError.
 
-    The noise model (without a failed rotor) takes from the vehicle the observer
-    (``noise_observer.distance``, ``noise_observer.elevation`` -> ``observer_distance``,
-    ``observer_elevation``; the azimuth stays aft, 180 deg) and each lift rotor's section t/c
-    (``lift_rotors[i].airfoil`` -> ``lift_thickness_to_chord``, of the thickness noise).
+    The noise model (without a failed rotor) takes from the vehicle each observer
+    (``noise_observer[k]`` distance, elevation and azimuth -> ``observer_distance``,
+    ``observer_elevation``, ``observer_azimuth`` of the group ``noise``, then
+    ``noise_2_observer_distance``, ... of ``noise_2``, ...; docs theory/acoustics 'Observer and
+    constraint') and each lift rotor's section t/c (``lift_rotors[i].airfoil`` ->
+    ``lift_thickness_to_chord``, of the thickness noise).
 
     Outputs: ``linear_acceleration``, ``angular_acceleration`` (1, 3); ``electrical_power``
     (1,); ``lift_tip_mach``, ``lift_helical_tip_mach``, ``lift_figure_of_merit``,
@@ -168,11 +170,6 @@ class HoverCondition(ConditionGroup):
             self.set_input_defaults(
                 "lift_thickness_to_chord", np.repeat(np.array(thickness)[:, None], nrad, axis=1)
             )
-
-
-def noise_group_name(k):
-    """Return the subsystem name of the noise group of observer ``k``: noise, noise_2, ..."""
-    return "noise" if k == 0 else f"noise_{k + 1}"
 
 
 def _rotor_thickness_to_chord(vehicle, index):

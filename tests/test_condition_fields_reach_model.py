@@ -115,7 +115,7 @@ def test_observer_elevation_reaches_the_noise_model():
     assert_near_equal(prob.get_val("hover.observer_elevation", units="rad"), elevation, 1e-15)
     centroid = prob.get_val("hover.lift_hub_position", units="m").mean(axis=0)
     observer = prob.get_val("hover.noise.observer_position", units="m")
-    d = REF.noise_observer.distance
+    d = REF.noise_observer[0].distance
     assert_near_equal(observer[2] - centroid[2], d * np.sin(elevation), 1e-12)
     # A shallower observer (30 deg instead of 45 deg) is farther from the rotor axes.
     base = run(REF, ["hover"])

@@ -38,6 +38,7 @@ __all__ = [
     "StructuralKind",
     "TransitionKind",
     "is_wing_load_case",
+    "noise_group_name",
     "num_lift_pairs",
     "wing_stall_limit",
     "wing_stall_speed_fraction",
@@ -52,6 +53,11 @@ _NO_FAILURE = (lambda x: x == -1, "-1")
 #: Fewest working lift rotors that hover trimmed: vertical force, roll, pitch and yaw are four
 #: independent demands on the rotor speeds (three thrusts leave one unbalanced).
 MIN_HOVER_ROTORS = 4
+
+
+def noise_group_name(k):
+    """Return the name of the hover noise group of observer ``k``: noise, noise_2, ..."""
+    return "noise" if k == 0 else f"noise_{k + 1}"
 
 
 def num_lift_pairs(lift_rotors):
@@ -337,7 +343,7 @@ class HoverKind(ConditionKind):
         noise = tuple(
             ConditionConstraint(
                 "noise",
-                "total_spl_a" if k == 0 else f"noise_{k + 1}.total_spl_a",
+                "total_spl_a" if k == 0 else f"{noise_group_name(k)}.total_spl_a",
                 {"upper": limits.max_noise, "ref": 10.0},
             )
             for k in range(len(vehicle.noise_observer))
