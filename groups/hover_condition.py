@@ -109,6 +109,10 @@ class HoverCondition(ConditionGroup):
         if acoustics:
             nrad = self.options["num_radial"]
             na = len(rotors)
+            # (rotor, node = 0, station) of the BEM -> (rotor, station, azimuth = 0) of the
+            # acoustics: a fancy index of the source shaped like the target.
+            rotor, station = np.meshgrid(np.arange(na), np.arange(nrad), indexing="ij")
+            reshape = om.slicer[rotor[..., None], 0 * rotor[..., None], station[..., None]]
             # One noise group per observer: 'noise' (its levels promoted: total_spl_a, ...)
             # and 'noise_2', 'noise_3', ... for further observers (levels under their paths,
             # e.g. noise_2.total_spl_a), each with its own observer inputs.
@@ -147,10 +151,6 @@ class HoverCondition(ConditionGroup):
                     ("azimuth", observer.azimuth_or_aft, "rad"),
                 ):
                     self.set_input_defaults(f"{prefix}observer_{q}", np.array([value]), units=units)
-                # (rotor, node = 0, station) of the BEM -> (rotor, station, azimuth = 0) of the
-                # acoustics: a fancy index of the source shaped like the target.
-                rotor, station = np.meshgrid(np.arange(na), np.arange(nrad), indexing="ij")
-                reshape = om.slicer[rotor[..., None], 0 * rotor[..., None], station[..., None]]
                 for load in ("thrust_per_span", "drag_per_span", "inflow_angle"):
                     self.connect(f"lift_rotors.{load}", f"{name}.{load}", src_indices=reshape)
                 self.connect(

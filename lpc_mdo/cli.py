@@ -478,11 +478,7 @@ def open_case_file(flag, path, need_final=False, vehicle=None, given=None):
             ) from err
     if vehicle is not None and final is not None:
         found = 0
-        for name, dv in vehicle.design_variables.items():
-            try:
-                value = final.get_val(name)
-            except KeyError:
-                continue
+        for name, dv, value in _recorded_design_variables(final, vehicle):
             found += 1
             if np.size(value) != dv.size:
                 raise fail(
@@ -502,6 +498,16 @@ def open_case_file(flag, path, need_final=False, vehicle=None, given=None):
                 "(not an lpc-mdo run)"
             )
     return reader
+
+
+def _recorded_design_variables(case, vehicle):
+    """Yield (name, design variable, value) of each vehicle design variable ``case`` records."""
+    for name, dv in vehicle.design_variables.items():
+        try:
+            value = case.get_val(name)
+        except KeyError:
+            continue
+        yield name, dv, value
 
 
 def _within_bounds(fail, name, dv, value):
@@ -856,11 +862,8 @@ def _same_layout(flag, path, reader, vehicle, vehicle_flag):
         case = reader.get_case(drivers[-1])
     else:
         return
-    for name, dv in vehicle.design_variables.items():
-        try:
-            size = np.size(case.get_val(name))
-        except KeyError:
-            continue
+    for name, dv, value in _recorded_design_variables(case, vehicle):
+        size = np.size(value)
         if size != dv.size:
             raise CLIError(
                 f"'{flag}' = {_shown(os.fspath(path))} is a run of another vehicle: its design "

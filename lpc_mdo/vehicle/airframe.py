@@ -127,10 +127,11 @@ def _check_height(env: _Envelope, key: str, position, what: str, extra_top=0.0) 
 
 
 def _check_surface_roots(parts: dict, env: _Envelope) -> None:
-    fin_height = parts["vertical_tail"].span
+    fin = parts["vertical_tail"]
+    fin_tip_z = fin.root_leading_edge[2] - fin.span
     surfaces = (
         ("wing", "the wing's root", 0.0, False),
-        ("horizontal_tail", "the horizontal tail's root", fin_height, True),
+        ("horizontal_tail", "the horizontal tail's root", fin.span, True),
         ("vertical_tail", "the fin's root", 0.0, True),
     )
     for name, what, extra_top, aft_of_wing in surfaces:
@@ -145,8 +146,6 @@ def _check_surface_roots(parts: dict, env: _Envelope) -> None:
             )
         _check_between_nose_and_tail(env, key, position, what)
         _check_height(env, key, position, what, extra_top)
-        fin = parts["vertical_tail"]
-        fin_tip_z = fin.root_leading_edge[2] - fin.span
         if name == "horizontal_tail" and position[2] < min(fin_tip_z, env.top) - 1e-6:
             _refuse(
                 key,

@@ -40,6 +40,15 @@ def _close(a, b) -> bool:
     return bool(np.allclose(a, b, rtol=1e-9, atol=1e-6))
 
 
+def _first_use(seen: dict, table: str, i: int, name: str, note: str) -> None:
+    """Record ``name`` as ``table[i].name``; refuse it if an earlier entry has it already."""
+    if name in seen:
+        raise VehicleSpecError(
+            f"'{table}[{i}].name' = {name!r} repeats '{table}[{seen[name]}].name'; {note}"
+        )
+    seen[name] = i
+
+
 def _check_lift_rotors(rotors: tuple[Rotor, ...]) -> None:
     seen = {}
     for i, r in enumerate(rotors):
@@ -48,12 +57,7 @@ def _check_lift_rotors(rotors: tuple[Rotor, ...]) -> None:
                 f"'lift_rotors[{i}].name' = {r.name!r} is empty: must name the rotor (reports "
                 "and messages use it)"
             )
-        if r.name in seen:
-            raise VehicleSpecError(
-                f"'lift_rotors[{i}].name' = {r.name!r} repeats 'lift_rotors[{seen[r.name]}]"
-                ".name'; each rotor needs its own name"
-            )
-        seen[r.name] = i
+        _first_use(seen, "lift_rotors", i, r.name, "each rotor needs its own name")
     num_pairs = len(rotors) // 2  # the count is even (LIFT_ROTOR_COUNTS, the schema)
     for i, r in enumerate(rotors):
         if r.pair >= num_pairs:
@@ -171,12 +175,7 @@ def _check_conditions(parts: dict) -> None:
                 raise VehicleSpecError(
                     f"'{path}.{key}' = {value!r} is not allowed: must be {_IDENTIFIER}"
                 )
-        if c.name in seen:
-            raise VehicleSpecError(
-                f"'{path}.name' = {c.name!r} repeats "
-                f"'conditions[{seen[c.name]}].name'; names must be unique"
-            )
-        seen[c.name] = i
+        _first_use(seen, "conditions", i, c.name, "names must be unique")
         if c.kind not in CONDITION_KINDS:  # lpc_mdo.vehicle imports condition_kinds
             allowed = ", ".join(repr(k) for k in CONDITION_KINDS)
             raise VehicleSpecError(

@@ -138,7 +138,7 @@ def _physical_limits(dv, parts: dict) -> tuple:
         return None, None
     table, _, name = dv.initial_from.partition(".")
     owner = Rotor if table == "rotors" else type(parts[table])
-    spec = _spec(next(f for f in dataclasses.fields(owner) if f.name == name))
+    spec = _spec(owner.__dataclass_fields__[name])
     key = f"the range of {dv.initial_key}"
     return (
         None if spec.ge is None else (spec.ge, key),

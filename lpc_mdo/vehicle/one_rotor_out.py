@@ -18,7 +18,7 @@ from __future__ import annotations
 import copy
 import re
 
-from lpc_mdo.vehicle.parts import Rotor, Vehicle
+from lpc_mdo.vehicle.parts import Rotor, Vehicle, _pairs
 from lpc_mdo.vehicle.schema import VehicleSpecError, _convert, _hints, _spec
 
 #: The ``failed_rotor`` value that asks for every distinct single failure.
@@ -27,12 +27,10 @@ EACH = "each"
 
 def distinct_failures(lift_rotors: tuple[Rotor, ...]) -> tuple[int, ...]:
     """Return the rotor failed in each distinct one-rotor-out case: each pair's left rotor."""
-    num_pairs = len(lift_rotors) // 2
     failures = []
-    for p in range(num_pairs):
-        members = [i for i, r in enumerate(lift_rotors) if r.pair == p]
+    for members in _pairs(lift_rotors):
         left = [i for i in members if lift_rotors[i].hub_position[1] < 0.0]
-        failures.append((left or members or [-1])[0])
+        failures.append((left or members or (-1,))[0])
     return tuple(failures)
 
 
