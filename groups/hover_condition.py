@@ -14,7 +14,6 @@ from lpc_mdo.groups.condition_builders import (
 )
 from lpc_mdo.vehicle.condition_kinds import HoverKind, noise_group_name, num_lift_pairs
 
-DEFAULT_ROTOR_THICKNESS_TO_CHORD = 0.12
 #: KS scale (rad/s**2) of a control axis without a required acceleration: the available
 #: acceleration is reported to within ln(2 num_rotors)/rho times it (6e-4 rad/s**2 for 8 rotors).
 UNREQUIRED_SCALE = 0.01
@@ -39,8 +38,9 @@ class HoverCondition(ConditionGroup):
     (``noise_observer[k]`` distance, elevation and azimuth -> ``observer_distance``,
     ``observer_elevation``, ``observer_azimuth`` of the group ``noise``, then
     ``noise_2_observer_distance``, ... of ``noise_2``, ...; docs theory/acoustics 'Observer and
-    constraint') and each lift rotor's section t/c (``lift_rotors[i].airfoil`` ->
-    ``lift_thickness_to_chord``, of the thickness noise).
+    constraint') and each lift rotor's section t/c (``lift_rotors[i].thickness_to_chord``, a
+    named airfoil's own or the file's key -> ``lift_thickness_to_chord``, of the thickness
+    noise).
 
     Outputs: ``linear_acceleration``, ``angular_acceleration`` (1, 3); ``electrical_power``
     (1,); ``lift_tip_mach``, ``lift_helical_tip_mach``, ``lift_figure_of_merit``,
@@ -166,25 +166,7 @@ class HoverCondition(ConditionGroup):
                     flat_src_indices=True,
                 )
             # Each rotor's section t/c at every acoustic station (rotor, station).
-            thickness = [_rotor_thickness_to_chord(vehicle, i) for i in self.active_rotors]
+            thickness = [vehicle.lift_rotors[i].thickness_to_chord for i in self.active_rotors]
             self.set_input_defaults(
                 "lift_thickness_to_chord", np.repeat(np.array(thickness)[:, None], nrad, axis=1)
             )
-
-
-def _rotor_thickness_to_chord(vehicle, index):
-    """Section t/c of ``vehicle.lift_rotors[index]`` for the thickness noise.
-
-    A named airfoil gives its t/c (``lpc_mdo.vehicle.AIRFOILS``); a user polar file has none, so
-    the noise model then uses that of NACA 0012 (the reference rotor section), with a warning
-    naming the field.
-    """
-    rotor = vehicle.lift_rotors[index]
-    if rotor.thickness_to_chord is not None:
-        return rotor.thickness_to_chord
-    om.issue_warning(
-        f"'lift_rotors[{index}].airfoil' = {rotor.airfoil!r} is a polar file, "
-        f"which gives no thickness: the thickness noise uses t/c = "
-        f"{DEFAULT_ROTOR_THICKNESS_TO_CHORD} (NACA 0012)"
-    )
-    return DEFAULT_ROTOR_THICKNESS_TO_CHORD

@@ -9,8 +9,8 @@ import functools
 
 import numpy as np
 import openmdao.api as om
-from scipy.optimize import brentq
 
+from lpc_mdo.components.aero.airfoil import zero_lift_angle
 from lpc_mdo.components.atmosphere import standard_atmosphere
 from lpc_mdo.components.energy.battery import BatteryComp
 from lpc_mdo.components.energy.mission_energy import MissionEnergyComp
@@ -295,15 +295,6 @@ def included_conditions(vehicle, names=None, where="LPCGroup"):
             f"vehicle's conditions {all_names} (at least one)."
         )
     return [c for c in vehicle.conditions if c.name in names]
-
-
-def zero_lift_angle(polar, reynolds, mach):
-    """Angle of attack (rad) where a polar's cl vanishes, bracketed in [-20, +10] deg."""
-
-    def cl(alpha):
-        return float(polar.evaluate(np.array(alpha), reynolds, mach).cl)
-
-    return float(brentq(cl, np.radians(-20.0), np.radians(10.0), xtol=1e-12))
 
 
 def _airfoil_models(vehicle, rotor_polar, wing_zero_lift_angle):

@@ -66,6 +66,7 @@ from lpc_mdo.sweep_parameters import (
 from lpc_mdo.sweeps import point_case_file, run_sweep
 from lpc_mdo.vehicle import VehicleSpecError, load_vehicle
 from lpc_mdo.vehicle.condition_contract import condition_kind
+from lpc_mdo.vehicle.sections import SURFACE_NAMES
 
 #: Exit code of a user error (as argparse's own), of a bug, and of Ctrl-C.
 EXIT_USER_ERROR, EXIT_BUG, EXIT_INTERRUPTED = 2, 1, 130
@@ -624,15 +625,18 @@ def _check_mpi_ranks():
 
 
 def _input_files(args):
-    """Return the files a command reads: the vehicle file, its polar files, the start case."""
+    """Return the files a command reads: the vehicle file, its airfoil files, the start case."""
     files = {}
     if getattr(args, "vehicle", None):
         files["--vehicle"] = args.vehicle
     vehicle = args.vehicle_spec
-    for i, rotor in enumerate((*vehicle.lift_rotors, vehicle.pusher)):
-        if os.path.isfile(rotor.airfoil):  # a polar file (a name is a shipped table)
-            where = f"lift_rotors[{i}]" if i < len(vehicle.lift_rotors) else "pusher"
-            files[f"{where}.airfoil of --vehicle"] = rotor.airfoil
+    parts = [(f"lift_rotors[{i}]", rotor) for i, rotor in enumerate(vehicle.lift_rotors)]
+    parts += [(name, getattr(vehicle, name)) for name in ("pusher", *SURFACE_NAMES)]
+    for where, part in parts:
+        if os.path.isfile(part.airfoil):  # a polar file (a name is a shipped table)
+            files[f"{where}.airfoil of --vehicle"] = part.airfoil
+        if getattr(part, "coordinates", None) is not None:
+            files[f"{where}.coordinates of --vehicle"] = part.coordinates
     if getattr(args, "start_case", None):
         files["--start-case"] = args.start_case
     return files

@@ -1244,7 +1244,10 @@ def test_missing_polar_file_says_where_it_looked(tmp_path, monkeypatch):
     vehicle_file = tmp_path / "vehicle" / "my_lpc.toml"
     vehicle_file.parent.mkdir()
     vehicle_file.write_text(
-        REFERENCE_TEXT.replace('airfoil = "naca0012"', 'airfoil = "polars/blade.dat"'), "utf-8"
+        REFERENCE_TEXT.replace(
+            'airfoil = "naca0012"', 'airfoil = "polars/blade.dat"\nthickness_to_chord = 0.12'
+        ),
+        "utf-8",
     )
     work = tmp_path / "work"
     work.mkdir()
@@ -1263,7 +1266,10 @@ def test_relative_polar_path_is_resolved_against_the_vehicle_file_folder(tmp_pat
     (folder / "polars" / "blade.dat").write_text("alpha cl cd\n" + _rows(), "utf-8")
     vehicle_file = folder / "my_lpc.toml"
     vehicle_file.write_text(
-        REFERENCE_TEXT.replace('airfoil = "naca0012"', 'airfoil = "polars/blade.dat"'), "utf-8"
+        REFERENCE_TEXT.replace(
+            'airfoil = "naca0012"', 'airfoil = "polars/blade.dat"\nthickness_to_chord = 0.12'
+        ),
+        "utf-8",
     )
     monkeypatch.chdir(tmp_path)  # not the vehicle file's folder
     vehicle = load_vehicle(vehicle_file)
@@ -1409,9 +1415,10 @@ def test_a_good_polar_file_loads(tmp_path):
     path = _write_polar(tmp_path, "blade.dat", "# XFOIL-like header\nalpha CL CD\n" + _rows())
     data = copy.deepcopy(REFERENCE_DATA)
     for rotor in data["lift_rotors"]:
-        rotor["airfoil"] = str(path)
+        rotor.update(airfoil=str(path), thickness_to_chord=0.11)
     vehicle = vehicle_from_dict(data)
     assert vehicle.lift_rotors[3].airfoil == str(path.resolve())
+    assert vehicle.lift_rotors[3].thickness_to_chord == 0.11
 
 
 def test_case_counts():

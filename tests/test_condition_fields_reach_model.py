@@ -20,6 +20,7 @@ from lpc_mdo.components.aero.polar import LinearQuadraticPolar
 from lpc_mdo.components.dynamics.eom import GRAVITY
 from lpc_mdo.groups.lpc import LPCGroup
 from lpc_mdo.vehicle import (
+    AIRFOILS,
     VehicleSpecError,
     read_vehicle_file,
     reference_vehicle,
@@ -47,9 +48,14 @@ def with_condition(vehicle, name, **changes):
     return dataclasses.replace(vehicle, conditions=conditions)
 
 
-def with_lift_airfoil(vehicle, airfoil, pairs=(0, 1, 2, 3)):
+def with_lift_airfoil(vehicle, airfoil, pairs=(0, 1, 2, 3), thickness_to_chord=None):
+    """Return the vehicle with another lift-rotor airfoil (and its t/c, as the loader sets it)."""
+    if thickness_to_chord is None:
+        thickness_to_chord = AIRFOILS[airfoil].thickness_to_chord
     rotors = tuple(
-        dataclasses.replace(r, airfoil=airfoil) if r.pair in pairs else r
+        dataclasses.replace(r, airfoil=airfoil, thickness_to_chord=thickness_to_chord)
+        if r.pair in pairs
+        else r
         for r in vehicle.lift_rotors
     )
     return dataclasses.replace(vehicle, lift_rotors=rotors)
@@ -259,22 +265,23 @@ def test_lift_rotor_thickness_to_chord_reaches_the_thickness_noise():
     assert thick.get_val("hover.total_spl")[0] > base.get_val("hover.total_spl")[0]
 
 
-def test_polar_file_rotor_uses_naca0012_thickness_with_a_warning(tmp_path):
-    # A polar file has no thickness: the noise model takes NACA 0012's and says so.
+def test_polar_file_rotor_thickness_key_reaches_the_thickness_noise(tmp_path):
+    # A polar file has no thickness: the file's lift_rotors[i].thickness_to_chord gives it.
     path = tmp_path / "blade.dat"
     alpha = np.linspace(-10.0, 12.0, 23)
     np.savetxt(path, np.column_stack([alpha, 0.1 * alpha, 0.01 + 1e-4 * alpha**2]))
-    vehicle = with_lift_airfoil(REF, str(path))
+    data = read_vehicle_file()
+    for rotor in data["lift_rotors"]:
+        rotor.update(airfoil=str(path), thickness_to_chord=0.09)
     prob = om.Problem(
         LPCGroup(
-            vehicle=vehicle,
+            vehicle=vehicle_from_dict(data),
             conditions=["hover"],
             rotor_polar=LinearQuadraticPolar(),
             wing_zero_lift_angle=-0.07,
         ),
         reports=False,
     )
-    with pytest.warns(om.OpenMDAOWarning, match=r"'lift_rotors\[0\]\.airfoil' = .*blade\.dat"):
-        prob.setup()
+    prob.setup()
     prob.final_setup()
-    np.testing.assert_array_equal(prob.get_val("hover.lift_thickness_to_chord"), 0.12)
+    np.testing.assert_array_equal(prob.get_val("hover.lift_thickness_to_chord"), 0.09)

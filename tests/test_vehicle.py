@@ -246,7 +246,8 @@ def _repeat_condition_name(d):
 BAD_INPUTS = {
     "unknown key": (
         _set("wing", "spam", 1.0),
-        "unknown key 'wing.spam'; allowed keys: 'airfoil', 'area', 'aspect_ratio', 'dihedral_deg'",
+        "unknown key 'wing.spam'; allowed keys: 'airfoil', 'area', 'aspect_ratio', "
+        "'coordinates', 'dihedral_deg'",
     ),
     "unknown top-level key": (_set("wings", {}), "unknown key 'wings'; allowed keys: "),
     "unknown design variable": (
@@ -511,8 +512,15 @@ def test_rotor_airfoil_may_be_a_user_polar_file(tmp_path):
     data = read_vehicle_file()
     for rotor in data["lift_rotors"]:
         rotor["airfoil"] = str(polar_path)
+    with pytest.raises(
+        VehicleSpecError, match=r"missing key 'lift_rotors\[0\]\.thickness_to_chord'"
+    ):
+        vehicle_from_dict(data)  # the thickness noise needs the blade's t/c
+    for rotor in data["lift_rotors"]:
+        rotor["thickness_to_chord"] = 0.1
     vehicle = vehicle_from_dict(data)
     assert vehicle.lift_rotors[0].airfoil == str(polar_path.resolve())
+    assert vehicle.lift_rotors[0].thickness_to_chord == 0.1
 
     from lpc_mdo.components.aero.airfoil import get_polar
 

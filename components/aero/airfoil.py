@@ -61,6 +61,7 @@ from pathlib import Path
 
 import numpy as np
 import openmdao.api as om
+from scipy.optimize import brentq
 
 from .hermite import HermiteAxis, tensor_eval
 from .polar import (
@@ -685,11 +686,13 @@ class TablePolar(Polar):
     @classmethod
     def from_text(cls, path, **kwargs):
         """
-        Read a polar text file of alpha [deg], cl, cd rows.
+        Read a polar text file of alpha [deg], cl, cd rows (and cm where the header names it).
 
         Every line with at least three numbers gives alpha [deg], cl, cd (its first three
         columns); other lines (headers, comments) are skipped, so XFOIL polar files (alpha CL CD
-        CDp CM ...) load as they are. The file must be UTF-8 text (a UTF-8 BOM is accepted) and
+        CDp CM ...) load as they are. A header line whose words start with ``alpha`` and hold
+        ``CM`` (XFOIL's column line) makes that column the quarter-chord moment coefficient:
+        every row must then have it. The file must be UTF-8 text (a UTF-8 BOM is accepted) and
         its rows must pass :func:`check_polar_file_arrays`.
         """
         with open(path, "rb") as fh:
@@ -711,15 +714,29 @@ class TablePolar(Polar):
                 f"polar file '{path}' is not UTF-8 text (byte {exc.start}); allowed: a UTF-8 "
                 f"text table of alpha [deg], cl, cd rows"
             ) from exc
-        rows = []
-        for line in text.splitlines():
+        rows, cm_column, cm = [], None, []
+        for number, line in enumerate(text.splitlines(), start=1):
             parts = line.replace(",", " ").split()
+            words = [p.lower() for p in parts]
+            if cm_column is None and words[:1] == ["alpha"] and "cm" in words:
+                cm_column = words.index("cm")
+                continue
             try:
                 values = [float(p) for p in parts[:3]]
             except ValueError:
                 continue
-            if len(values) == 3:
-                rows.append(values)
+            if len(values) < 3:
+                continue
+            rows.append(values)
+            if cm_column is not None:
+                try:
+                    cm.append(float(parts[cm_column]))
+                except (IndexError, ValueError):
+                    raise ValueError(
+                        f"polar file '{path}': line {number} has no number in the CM column "
+                        f"({cm_column + 1}) its header names; allowed: every row with all the "
+                        "header's columns"
+                    ) from None
         if len(rows) < _MIN_POLAR_ROWS:
             raise ValueError(
                 f"{path}: found {len(rows)} rows of (alpha [deg], cl, cd); allowed:"
@@ -728,6 +745,13 @@ class TablePolar(Polar):
         rows = np.array(rows)
         check_polar_file_arrays(path, rows[:, 0], rows[:, 1], rows[:, 2])
         kwargs.setdefault("name", Path(path).stem)
+        if cm_column is not None and len(cm) == len(rows):
+            if not np.all(np.isfinite(cm)) or np.max(np.abs(cm)) > POLAR_MAX_ABS_CM:
+                raise ValueError(
+                    f"polar file '{path}': the CM column holds {max(cm, key=abs)!r}; allowed: "
+                    f"finite moment coefficients within +-{POLAR_MAX_ABS_CM:g}"
+                )
+            kwargs.setdefault("cm", np.asarray(cm))  # rows are in increasing alpha (checked)
         return cls.from_alpha_cl_cd(rows[:, 0], rows[:, 1], rows[:, 2], **kwargs)
 
 
@@ -753,6 +777,11 @@ _TEXT_SUFFIXES = (".txt", ".dat", ".csv", ".pol")
 #: beyond 3 and 2 a table is in percent or in another unit.
 POLAR_MAX_ABS_CL = 3.0
 POLAR_MAX_CD = 2.0
+#: Largest magnitude of cm about the quarter chord a polar file may hold: a flat plate normal to
+#: the flow has its centre of pressure at mid-chord, a quarter-chord moment of magnitude
+#: 0.25 x 1.98 = 0.5 (Hoerner, ch. 3); highly cambered sections stay within 0.3 in the attached
+#: range (Abbott & von Doenhoff, appendix IV); 1 catches a column of other numbers.
+POLAR_MAX_ABS_CM = 1.0
 #: Lift-curve slope of a polar file between -2 and +6 deg, per rad, as fractions of thin-airfoil
 #: theory's 2 pi: measured sections lie near 0.9 x 2 pi (Abbott & von Doenhoff, appendix IV:
 #: 0.098-0.11 per deg), low-Reynolds rotor sections down to about 0.7 x 2 pi. Checked at the
@@ -851,6 +880,15 @@ def check_polar_file_arrays(path, alpha_deg, cl, cd):
 
 
 # ------------------------------------------------------------------------------------------------
+
+
+def zero_lift_angle(polar, reynolds, mach):
+    """Angle of attack (rad) where a polar's cl vanishes, bracketed in [-20, +10] deg."""
+
+    def cl(alpha):
+        return float(polar.evaluate(np.array(alpha), reynolds, mach).cl)
+
+    return float(brentq(cl, np.radians(-20.0), np.radians(10.0), xtol=1e-12))
 
 
 def airfoil_table_path(name):

@@ -6,6 +6,7 @@ import math
 import numpy as np
 import openmdao.api as om
 
+from lpc_mdo.components.aero.airfoil_coordinates import read_coordinates, split_surfaces
 from lpc_mdo.core.checks import check_number, check_range
 
 
@@ -80,14 +81,7 @@ class WingBoxSection:
         xy = np.asarray(coordinates, dtype=float)
         if xy.ndim != 2 or xy.shape[1] != 2 or xy.shape[0] < 5:
             raise ValueError(f"coordinates must have shape (n >= 5, 2), got {xy.shape}.")
-        le = int(np.argmin(xy[:, 0]))
-        upper, lower = xy[: le + 1][::-1], xy[le:]
-        for name, surf in (("upper", upper), ("lower", lower)):
-            if np.any(np.diff(surf[:, 0]) <= 0.0):
-                raise ValueError(
-                    f"coordinates: the {name} surface is not monotonic in x/c; "
-                    "expected Selig order (TE -> upper -> LE -> lower -> TE)."
-                )
+        upper, lower = split_surfaces(xy)
 
         def y_of(surf, x):
             return np.interp(x, surf[:, 0], surf[:, 1])
@@ -109,9 +103,11 @@ class WingBoxSection:
 
     @classmethod
     def from_file(cls, path, front_spar=0.25, rear_spar=0.75, beam_axis=0.5):
-        """Read a Selig-format coordinate file (one name line, then x/c y/c pairs)."""
-        coords = np.loadtxt(path, skiprows=1)
-        return cls.from_coordinates(coords, front_spar, rear_spar, beam_axis, source=str(path))
+        """Read a Selig-format coordinate file (a name line, then x/c y/c pairs)."""
+        shape = read_coordinates(path)
+        return cls.from_coordinates(
+            shape.coordinates, front_spar, rear_spar, beam_axis, source=str(path)
+        )
 
 
 def _arc_radius(x, y):
@@ -156,24 +152,23 @@ def wing_box_section(vehicle, coordinates=None):
     """
     Return the WingBoxSection of a vehicle's wing and wing-box layout.
 
-    The packaged numbers (:data:`WING_BOX_SECTIONS`) are used when the vehicle has the reference
-    layout (spars 0.25/0.75, beam axis 0.5); otherwise pass the airfoil ``coordinates``.
+    From ``coordinates`` if given, else from the wing's coordinate file
+    (``vehicle.wing.coordinates``) if it has one, else the packaged numbers
+    (:data:`WING_BOX_SECTIONS`), which hold for the reference layout (spars 0.25/0.75, beam
+    axis 0.5) only.
     """
-    box = vehicle.wing_box
+    box, wing = vehicle.wing_box, vehicle.wing
+    spars = (box.front_spar, box.rear_spar, box.beam_axis)
     if coordinates is not None:
-        return WingBoxSection.from_coordinates(
-            coordinates, box.front_spar, box.rear_spar, box.beam_axis, source=vehicle.wing.airfoil
-        )
-    sec = WING_BOX_SECTIONS.get(vehicle.wing.airfoil)
-    if sec is None or (sec.front_spar, sec.rear_spar, sec.beam_axis) != (
-        box.front_spar,
-        box.rear_spar,
-        box.beam_axis,
-    ):
+        return WingBoxSection.from_coordinates(coordinates, *spars, source=wing.airfoil)
+    if wing.coordinates is not None:
+        return WingBoxSection.from_file(wing.coordinates, *spars)
+    sec = WING_BOX_SECTIONS.get(wing.airfoil)
+    if sec is None or (sec.front_spar, sec.rear_spar, sec.beam_axis) != spars:
         raise ValueError(
-            f"no packaged wing-box section for airfoil {vehicle.wing.airfoil!r} with front_spar="
+            f"no packaged wing-box section for airfoil {wing.airfoil!r} with front_spar="
             f"{box.front_spar}, rear_spar={box.rear_spar}, beam_axis={box.beam_axis}; packaged: "
-            f"{sorted(WING_BOX_SECTIONS)} with 0.25/0.75/0.5. Pass the airfoil coordinates."
+            f"{sorted(WING_BOX_SECTIONS)} with 0.25/0.75/0.5. Give the wing's coordinates."
         )
     return sec
 

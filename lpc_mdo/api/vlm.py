@@ -11,12 +11,11 @@ import numbers
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.components.aero.airfoil import get_polar
+from lpc_mdo.components.aero.airfoil import get_polar, zero_lift_angle
 from lpc_mdo.components.atmosphere import ATMOSPHERE_CONSTANTS
 from lpc_mdo.components.geometry.planform import SPACINGS, span_stations
 from lpc_mdo.core.checks import check_choice, check_integer, check_number, check_range, check_shape
 from lpc_mdo.core.mpi import serial_comm
-from lpc_mdo.groups.lpc import zero_lift_angle
 from lpc_mdo.groups.vlm import VLMGroup, VLMSurface
 
 __all__ = ["SURFACE_KEYS", "MAX_PANELS", "surface_mesh", "vlm"]

@@ -138,6 +138,7 @@ from lpc_mdo.vehicle.parts import (
     _ReadOnlyDict,
 )
 from lpc_mdo.vehicle.schema import BASE_DIR, VehicleSpecError, _read_fields
+from lpc_mdo.vehicle.sections import check_surface_sections, with_section_thickness
 
 __all__ = [
     "AIRFOILS",
@@ -308,6 +309,11 @@ def vehicle_from_dict(data: Mapping) -> Vehicle:
 def _build_vehicle(data: Mapping, keys: list[str] | None) -> Vehicle:
     values = _read_fields(Vehicle, data, "", skip="design_variables")
     values["wing"] = _check_wing(values["wing"])
+    values["lift_rotors"] = tuple(
+        with_section_thickness(r, f"lift_rotors[{i}]") for i, r in enumerate(values["lift_rotors"])
+    )
+    values["pusher"] = with_section_thickness(values["pusher"], "pusher")
+    check_surface_sections(values)
     _check_lift_rotors(values["lift_rotors"])
     _check_pusher(values["pusher"], values["lift_rotors"])
     _check_geometry(values)

@@ -14,7 +14,7 @@ import numpy as np
 
 from lpc_mdo.components.atmosphere import standard_atmosphere
 from lpc_mdo.components.motor.parameters import MotorParameters
-from lpc_mdo.components.structures.wing_box_geometry import WING_BOX_SECTIONS
+from lpc_mdo.components.structures.wing_box_geometry import WING_BOX_SECTIONS, WingBoxSection
 from lpc_mdo.components.weights.item_placement import (
     NASA_LANDING_GEAR_STATION,
     NASA_SYSTEMS_STATION,
@@ -66,7 +66,10 @@ def _check_lift_rotors(rotors: tuple[Rotor, ...]) -> None:
                 f"{num_pairs - 1}] ({len(rotors)} lift rotors make {num_pairs} pairs; group "
                 f"{num_pairs} is the pusher)"
             )
-    shared = ("radius", "num_blades", "hub_radius_ratio", "chord_cp", "twist_cp", "airfoil")
+    shared = (
+        "radius", "num_blades", "hub_radius_ratio", "chord_cp", "twist_cp", "airfoil",
+        "thickness_to_chord",
+    )  # fmt: skip
     for p, members in enumerate(_pairs(rotors)):
         if len(members) != 2:
             listed = ", ".join(f"lift_rotors[{i}]" for i in members) or "none"
@@ -255,8 +258,15 @@ def _check_buildable(parts: dict) -> None:
             f"'wing_box.rear_spar' = {box.rear_spar!r} is out of range: must be > "
             f"'wing_box.front_spar' = {box.front_spar!r}"
         )
-    section = WING_BOX_SECTIONS.get(airfoil)
     layout = (box.front_spar, box.rear_spar, box.beam_axis)
+    coordinates = parts["wing"].coordinates
+    if coordinates is not None:  # any spar layout inside the chord
+        try:
+            WingBoxSection.from_file(coordinates, *layout)
+        except ValueError as err:
+            raise VehicleSpecError(f"'wing_box' with 'wing.coordinates': {err}") from None
+        return
+    section = WING_BOX_SECTIONS.get(airfoil)
     if section is None or (section.front_spar, section.rear_spar, section.beam_axis) != layout:
         packaged = ", ".join(
             f"{name!r} with front_spar {s.front_spar:g}, rear_spar {s.rear_spar:g}, beam_axis "
@@ -267,7 +277,8 @@ def _check_buildable(parts: dict) -> None:
         raise VehicleSpecError(
             f"'{key}': the wing box of airfoil {airfoil!r} with front_spar {box.front_spar:g}, "
             f"rear_spar {box.rear_spar:g}, beam_axis {box.beam_axis:g} has no packaged section "
-            f"properties; allowed: {packaged} (docs theory/structures)"
+            f"properties; allowed: {packaged}, or any layout with the section's coordinate "
+            "file as 'wing.coordinates' (docs theory/structures)"
         )
 
 

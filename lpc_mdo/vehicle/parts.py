@@ -7,7 +7,9 @@ conventions.
 
 from __future__ import annotations
 
+import functools
 import math
+import os
 from collections.abc import Mapping
 from dataclasses import dataclass
 
@@ -64,8 +66,28 @@ _REACH = 50.0
 _MAX_FIXED_MASS = 10000.0  # kg
 # How W_other (masses.other) is set: as given, or calibrated to the design gross mass (paper IV).
 OTHER_MASS_RULES = ("fixed", "calibrated")
+#: Section t/c of a rotor blade or a lifting surface (-): propeller tips are 4-6 % thick, wing
+#: roots of light aircraft up to 21 % (Raymer, Aircraft Design, 6th ed., sec. 4.3, Fig. 4.14;
+#: the reference's sections are 12-17 %); beyond 25 % no lifting section is built.
+SECTION_THICKNESS_RANGE = (0.04, 0.25)
 _IDENTIFIER = "an identifier (letters, digits and '_', not starting with a digit)"
 _AIRFOIL_NAMES = tuple(AIRFOILS)
+
+
+def section_shape(path: str):
+    """Return the section shape of a coordinate file, read once per file version.
+
+    An :class:`~lpc_mdo.components.aero.airfoil_coordinates.AirfoilShape`; a file is read again
+    when its modification time changes.
+    """
+    return _section_shape(path, os.stat(path).st_mtime_ns)
+
+
+@functools.lru_cache(maxsize=32)
+def _section_shape(path: str, _mtime_ns: int):
+    from lpc_mdo.components.aero.airfoil_coordinates import read_coordinates
+
+    return read_coordinates(path)
 
 
 # ------------------------------------------------------------------------------------------------
@@ -97,9 +119,16 @@ class LiftingSurface:
     root_leading_edge : tuple of 3 float
         Leading edge of the root chord, body frame (m).
     airfoil : str
-        Section name, a key of :data:`AIRFOILS`.
+        Section: a key of :data:`AIRFOILS`, or a polar file (alpha [deg], cl, cd rows; the
+        wing's needs a cm column, an XFOIL polar file has one) that
+        ``components.aero.airfoil.get_polar`` reads.
     laminar_fraction : float
         Laminar part of the skin-friction build-up (-).
+    coordinates : str or None
+        The section's coordinate file (Selig format), absolute path: its thickness and its
+        position feed the drag build-up and, for the wing, the wing box's depth and skins.
+        Required with a polar-file airfoil; with a named one it replaces the packaged section
+        numbers (then another spar layout is possible).
     """
 
     # 0.1-200 m^2: tails to wings of 500-20000 kg vehicles (the reference wing in ft^2 is 211).
@@ -114,8 +143,9 @@ class LiftingSurface:
     dihedral: float = _angle(ge=-30, le=30)
     incidence: float = _angle(ge=-10, le=10)
     root_leading_edge: tuple[float, ...] = _param("m", ge=-_REACH, le=_REACH, shape=(3,))
-    airfoil: str = _param(choices=_AIRFOIL_NAMES)
+    airfoil: str = _param(choices=_AIRFOIL_NAMES, polar_file=True)
     laminar_fraction: float = _param(ge=0, le=1)
+    coordinates: str = _param(coordinate_file=True, optional=True)
 
     @property
     def span(self) -> float:
@@ -140,12 +170,16 @@ class LiftingSurface:
 
     @property
     def thickness_to_chord(self) -> float:
-        """Section t/c of :attr:`airfoil` (-)."""
+        """Section t/c (-): from :attr:`coordinates` if given, else of the named airfoil."""
+        if self.coordinates is not None:
+            return section_shape(self.coordinates).thickness_to_chord
         return AIRFOILS[self.airfoil].thickness_to_chord
 
     @property
     def max_thickness_location(self) -> float:
-        """Section (x/c)_m of :attr:`airfoil` (-)."""
+        """Section (x/c)_m (-): from :attr:`coordinates` if given, else of the named airfoil."""
+        if self.coordinates is not None:
+            return section_shape(self.coordinates).max_thickness_location
         return AIRFOILS[self.airfoil].max_thickness_location
 
 
@@ -345,10 +379,13 @@ class Rotor:
     thrust_axis : tuple of 3 float
         Unit thrust direction, body frame: (0, 0, -1) for a lift rotor, (1, 0, 0) for the pusher.
     pair : int
-        Group: 0..3 for the lift-rotor pairs, 4 for the pusher.
+        Group: one per mirror-symmetric lift-rotor pair (0, 1, ...), the next for the pusher.
     airfoil : str
         Blade section, a key of :data:`AIRFOILS`, or a polar file (alpha [deg], cl, cd rows;
         ``.npz`` in the shipped table format) that ``components.aero.airfoil.get_polar`` reads.
+    thickness_to_chord : float
+        Blade-section t/c (-), of the thickness noise: required with a polar-file airfoil; a
+        named airfoil's own when the key is absent (the loader fills it in).
     """
 
     name: str = _param()
@@ -369,17 +406,14 @@ class Rotor:
     thrust_axis: tuple[float, ...] = _param(shape=(3,), unit_vector=True)
     pair: int = _param(ge=0, le=_MAX_PAIRS)
     airfoil: str = _param(choices=_AIRFOIL_NAMES, polar_file=True)
+    thickness_to_chord: float = _param(
+        ge=SECTION_THICKNESS_RANGE[0], le=SECTION_THICKNESS_RANGE[1], optional=True
+    )
 
     @property
     def hub_radius(self) -> float:
         """Hub radius (m)."""
         return self.hub_radius_ratio * self.radius
-
-    @property
-    def thickness_to_chord(self) -> float | None:
-        """Section t/c of :attr:`airfoil` (-); None for a polar file, which gives no thickness."""
-        airfoil = AIRFOILS.get(self.airfoil)
-        return None if airfoil is None else airfoil.thickness_to_chord
 
 
 @dataclass(frozen=True)

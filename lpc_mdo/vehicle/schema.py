@@ -59,6 +59,7 @@ class _Spec:
     count_note: str = ""
     derived: bool = False  # set by the loader, not read from the file
     polar_file: bool = False  # a string may also name an existing airfoil polar file
+    coordinate_file: bool = False  # the string names an airfoil coordinate file (Selig format)
     optional: bool = False  # the key may be absent (the field is then None); see _read_fields
 
 
@@ -227,15 +228,11 @@ def _integer(value, spec: _Spec, path: str) -> int:
 BASE_DIR: contextvars.ContextVar[str | None] = contextvars.ContextVar("BASE_DIR", default=None)
 
 
-def _polar_file(value: str, path: str) -> str:
-    """Resolve and load a polar file named in a vehicle file; return its absolute path.
+def _input_file(value: str, path: str, what: str) -> str:
+    """Resolve a file named in a vehicle file (a polar or coordinate file); its absolute path.
 
     A relative path is looked up in the vehicle file's folder, then in the working directory.
-    The file is loaded (``components.aero.airfoil.get_polar``) so that a malformed table is a
-    :class:`VehicleSpecError` naming the key, not an error during the run.
     """
-    from lpc_mdo.components.aero.airfoil import get_polar
-
     candidate = os.path.expanduser(value)
     if os.path.isabs(candidate):
         places = [candidate]
@@ -248,22 +245,45 @@ def _polar_file(value: str, path: str) -> str:
     if found is None and other is not None:
         kind = "a directory" if os.path.isdir(other) else "not a regular file (a pipe or device)"
         raise VehicleSpecError(
-            f"'{path}' = {value!r}: '{os.path.abspath(other)}' is {kind}; allowed: a polar file"
+            f"'{path}' = {value!r}: '{os.path.abspath(other)}' is {kind}; allowed: a {what}"
         )
     broken = next((p for p in places if not os.path.exists(p) and os.path.islink(p)), None)
     if found is None and broken is not None:
         raise VehicleSpecError(
             f"'{path}' = {value!r}: '{os.path.abspath(broken)}' is a symbolic link that leads "
-            "nowhere (a broken link or a loop); allowed: a polar file"
+            f"nowhere (a broken link or a loop); allowed: a {what}"
         )
     if found is None:
         looked = ", ".join(repr(os.path.abspath(p)) for p in places)
-        raise VehicleSpecError(f"'{path}' = {value!r}: polar file not found (looked at {looked})")
-    found = os.path.abspath(found)
+        raise VehicleSpecError(f"'{path}' = {value!r}: {what} not found (looked at {looked})")
+    return os.path.abspath(found)
+
+
+def _polar_file(value: str, path: str) -> str:
+    """Resolve and load a polar file named in a vehicle file; return its absolute path.
+
+    The file is loaded (``components.aero.airfoil.get_polar``) so that a malformed table is a
+    :class:`VehicleSpecError` naming the key, not an error during the run.
+    """
+    from lpc_mdo.components.aero.airfoil import get_polar
+
+    found = _input_file(value, path, "polar file")
     try:
         get_polar(found)
     except (ValueError, OSError) as exc:
         raise VehicleSpecError(f"'{path}' = {value!r}: invalid polar file: {exc}") from exc
+    return found
+
+
+def _coordinate_file(value: str, path: str) -> str:
+    """Resolve and read an airfoil coordinate file named in a vehicle file; its absolute path."""
+    from lpc_mdo.components.aero.airfoil_coordinates import read_coordinates
+
+    found = _input_file(value, path, "coordinate file (Selig format)")
+    try:
+        read_coordinates(found)
+    except (ValueError, OSError) as exc:
+        raise VehicleSpecError(f"'{path}' = {value!r}: invalid coordinate file: {exc}") from exc
     return found
 
 
@@ -292,7 +312,7 @@ def _string(value, spec: _Spec, path: str) -> str:
     if not isinstance(value, str):
         raise VehicleSpecError(f"'{path}' must be a string, got {_show(value)}")
     control = next((c for c in value if unicodedata.category(c) in ("Cc", "Cf")), None)
-    longest = _MAX_PATH if spec.polar_file else _MAX_NAME
+    longest = _MAX_PATH if spec.polar_file or spec.coordinate_file else _MAX_NAME
     if control is not None or len(value) > longest:
         why = (
             f"it holds the control character {control!r}"
@@ -303,6 +323,8 @@ def _string(value, spec: _Spec, path: str) -> str:
             f"'{path}' = {cut_text(value)} is not allowed: {why}; allowed: printable text of at "
             f"most {longest} characters"
         )
+    if spec.coordinate_file:
+        return _coordinate_file(value, path)
     if spec.choices and value not in spec.choices:
         if spec.polar_file and value.lower().endswith(_POLAR_SUFFIXES):
             return _polar_file(value, path)
