@@ -485,6 +485,7 @@ STAGES = (
         optimizer="IPOPT",
         options=OWN_OPTIONS,
         sequence_options=SEQUENCE_OPTIONS,
+        handover="design and scaling",
     ),
     Stage(
         name="full",
