@@ -40,17 +40,20 @@ ATMOSPHERE_CONSTANTS = {
 }
 
 
-def standard_atmosphere(altitude, constants="icao"):
+def standard_atmosphere(altitude, constants="icao", temperature_offset=0.0):
     """
-    Return the troposphere states at ``altitude`` (m).
+    Return the troposphere states at ``altitude`` (m), on a day ``temperature_offset`` (K) off ISA.
 
     The states are temperature (K), pressure (Pa), density (kg/m**3), speed of sound (m/s) and
-    dynamic viscosity (Pa s), with a constant set of :data:`ATMOSPHERE_CONSTANTS`. Complex-step
-    safe; no range check (AtmosphereComp checks).
+    dynamic viscosity (Pa s), with a constant set of :data:`ATMOSPHERE_CONSTANTS`. An offset
+    dT keeps the standard pressure of the altitude and raises the temperature, T = T_ISA(h) +
+    dT (the ISA-deviation convention of performance charts: ICAO Doc 7488/3, sec. 2; density
+    then follows from the gas law). Complex-step safe; no range check (AtmosphereComp checks).
     """
     c = ATMOSPHERE_CONSTANTS[constants]
-    temperature = c["T0"] - c["L"] * altitude
-    pressure = c["p0"] * (temperature / c["T0"]) ** (c["g0"] / (c["R"] * c["L"]))
+    standard = c["T0"] - c["L"] * altitude
+    pressure = c["p0"] * (standard / c["T0"]) ** (c["g0"] / (c["R"] * c["L"]))
+    temperature = standard + temperature_offset
     density = pressure / (c["R"] * temperature)
     speed_of_sound = np.sqrt(c["gamma"] * c["R"] * temperature)
     mu = (
@@ -69,8 +72,8 @@ class AtmosphereComp(om.ExplicitComponent):
     Equations (docs theory/atmosphere, with the constants of the option ``constants``; ICAO by
     default):
 
-    - T = T0 - L h
-    - p = p0 (T/T0)**(g0/(R L))
+    - T_ISA = T0 - L h, T = T_ISA + dT (option ``temperature_offset``, a hot or cold day)
+    - p = p0 (T_ISA/T0)**(g0/(R L))
     - rho = p/(R T)
     - a = sqrt(gamma R T)
     - mu = mu_ref (T/T_mu_ref)**1.5 (T_mu_ref + S)/(T + S)   (Sutherland)
@@ -100,6 +103,8 @@ class AtmosphereComp(om.ExplicitComponent):
     -------
     num_nodes : int
         Number of flight-condition nodes (>= 1). Default 1.
+    temperature_offset : float
+        ISA temperature offset dT (K); default 0 (the standard day).
     constants : str
         'icao' (default): ICAO / U.S. 1976 standard atmosphere constants, T0 = 288.15 K,
         g0 = 9.80665 m/s**2, R = 287.053 J/(kg K), mu(T0) = 1.7894e-5 Pa s.
@@ -120,6 +125,14 @@ class AtmosphereComp(om.ExplicitComponent):
     def initialize(self):
         self.options.declare(
             "num_nodes", default=1, types=int, lower=1, desc="Number of flight-condition nodes"
+        )
+        self.options.declare(
+            "temperature_offset",
+            default=0.0,
+            types=float,
+            lower=-100.0,
+            upper=100.0,
+            desc="ISA temperature offset, K",
         )
         self.options.declare(
             "constants",
@@ -189,7 +202,7 @@ class AtmosphereComp(om.ExplicitComponent):
         )
 
     def _states(self, h):
-        return standard_atmosphere(h, self.options["constants"])
+        return standard_atmosphere(h, self.options["constants"], self.options["temperature_offset"])
 
     def compute(self, inputs, outputs):
         h = inputs["altitude"]
@@ -206,13 +219,16 @@ class AtmosphereComp(om.ExplicitComponent):
         c = self._c
         n = self._exponent
         temperature, pressure, density, speed_of_sound, mu = self._states(inputs["altitude"])
+        standard = temperature - self.options["temperature_offset"]
         dT_dh = -c["L"]
 
-        # p ~ T**n, rho ~ T**(n-1), a ~ T**0.5, mu ~ T**1.5/(T + S): logarithmic derivatives in T.
-        dlnrho_dT = (n - 1.0) / temperature
+        # p ~ T_ISA**n, rho = p/(R T), a ~ T**0.5, mu ~ T**1.5/(T + S), T = T_ISA + dT:
+        # logarithmic derivatives (dT/dh = dT_ISA/dh).
+        dlnp_dT = n / standard
+        dlnrho_dT = dlnp_dT - 1.0 / temperature
         dlnmu_dT = 1.5 / temperature - 1.0 / (temperature + c["S"])
 
-        partials["pressure", "altitude"] = pressure * n / temperature * dT_dh
+        partials["pressure", "altitude"] = pressure * dlnp_dT * dT_dh
         partials["density", "altitude"] = density * dlnrho_dT * dT_dh
         partials["speed_of_sound", "altitude"] = 0.5 * speed_of_sound / temperature * dT_dh
         partials["dynamic_viscosity", "altitude"] = mu * dlnmu_dT * dT_dh

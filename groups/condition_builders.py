@@ -133,9 +133,12 @@ def one_factorization(rotors_or_motors):
     rotors_or_motors.linear_solver = om.DirectSolver(assemble_jac=True)
 
 
-def add_atmosphere(group, condition):
-    """Add the standard atmosphere at the condition's altitude, promoted."""
-    group.add_subsystem("atmosphere", AtmosphereComp(num_nodes=1), promotes=["*"])
+def add_atmosphere(group, condition, vehicle):
+    """Add the atmosphere at the condition's altitude on the mission's day (ISA + dT), promoted."""
+    offset = vehicle.mission.isa_offset
+    group.add_subsystem(
+        "atmosphere", AtmosphereComp(num_nodes=1, temperature_offset=offset), promotes=["*"]
+    )
     group.set_input_defaults("altitude", np.array([condition.altitude]), units="m")
 
 

@@ -76,7 +76,7 @@ class HoverCondition(ConditionGroup):
             groups, num_groups = [r.pair for r in rotors], num_lift_pairs(rotors)
         self.speed_groups = num_groups
 
-        add_atmosphere(self, condition)
+        add_atmosphere(self, condition, vehicle)
         add_lift_rotors(self, vehicle, rotors, groups, num_groups, edgewise=False)
         self.set_input_defaults("velocity", np.zeros((1, 3)), units="m/s")
         add_power(self, {"lift": len(rotors)})

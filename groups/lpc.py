@@ -199,15 +199,26 @@ class LPCGroup(om.Group):
         if powered:
             mux = self.add_subsystem("power_mux", om.MuxComp(vec_size=len(powered)))
             mux.add_var("electrical_power", shape=(1,), axis=0, units="W")
+            names = [c.name for c in powered]
+            mission = vehicle.mission
+            reserve = (
+                names.index(mission.reserve_condition)
+                if mission.reserve_condition in names
+                else None
+            )
             self.add_subsystem(
                 "mission",
-                MissionEnergyComp(energy_multipliers=[c.energy_weight for c in powered]),
+                MissionEnergyComp(
+                    energy_multipliers=[c.energy_weight for c in powered], reserve_index=reserve
+                ),
                 promotes_outputs=["energy_used", "segment_energy"],
             )
             self.connect("power_mux.electrical_power", "mission.electrical_power")
             self.set_input_defaults(
                 "mission.duration", np.array([c.duration for c in powered]), units="s"
             )
+            if reserve is not None:
+                self.set_input_defaults("mission.reserve_duration", mission.reserve_time, units="s")
         else:
             self.add_subsystem(
                 "mission",
@@ -327,7 +338,9 @@ def _airfoil_models(vehicle, rotor_polar, wing_zero_lift_angle):
     if wing_zero_lift_angle is None:
         # At the design cruise condition's Reynolds and Mach numbers on the wing MAC.
         cruise = vehicle.condition(vehicle.mission.cruise_condition)
-        _, _, rho, a, mu = standard_atmosphere(cruise.altitude)
+        _, _, rho, a, mu = standard_atmosphere(
+            cruise.altitude, temperature_offset=vehicle.mission.isa_offset
+        )
         reynolds = rho * cruise.speed * vehicle.wing.mean_aerodynamic_chord / mu
         wing_zero_lift_angle = zero_lift_angle(
             get_polar(vehicle.wing.airfoil), reynolds, cruise.speed / a

@@ -39,7 +39,7 @@ class SteadyFlightCondition(ConditionGroup):
     def setup(self):
         vehicle = self.options["vehicle"]
         condition = vehicle.condition(self.options["condition"])
-        add_atmosphere(self, condition)
+        add_atmosphere(self, condition, vehicle)
         stability = self.options["stability"]
         if stability is None:
             stability = SteadyFlightKind.has_stability(vehicle, condition)

@@ -66,7 +66,7 @@ class StructuralCondition(ConditionGroup):
         n_wing = self.options["wing_panels"]
         right = np.arange(n_wing // 2, n_wing)  # wing panels with y > 0 (one chord-wise row)
         nodes = vehicle.wing_box.num_bays + 1
-        add_atmosphere(self, condition)
+        add_atmosphere(self, condition, vehicle)
         two_way = self.options["coupling"] == "two_way"
         if two_way:
             self._add_mesh_deformation(nodes, n_wing)

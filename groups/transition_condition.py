@@ -56,7 +56,7 @@ class TransitionCondition(ConditionGroup):
         rotors = vehicle.lift_rotors
         self.active_rotors = list(range(len(rotors)))
         self.speed_groups = num_lift_pairs(rotors)
-        add_atmosphere(self, condition)
+        add_atmosphere(self, condition, vehicle)
         add_aerodynamics(self, vehicle, condition, self.options["wing_zero_lift_angle"])
         add_lift_rotors(
             self,

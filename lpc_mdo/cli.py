@@ -40,6 +40,7 @@ from lpc_mdo.analysis import (
 )
 from lpc_mdo.api.weights import format_mass_breakdown, mass_breakdown
 from lpc_mdo.core.checks import check_choice, check_integer, check_number, cut_text
+from lpc_mdo.post.mission_table import format_mission
 from lpc_mdo.post.report import _CASE_SUFFIXES, ReportSpec, find_case_files, write_report
 from lpc_mdo.post.stall import format_stall_speed_check
 from lpc_mdo.post.statistics import run_stats_path
@@ -908,6 +909,10 @@ def _analyze_header(analysis, args):
     )
 
 
+def _analyze_mission(analysis, args):
+    return format_mission(analysis.vehicle, analysis.prob)
+
+
 def _analyze_masses(analysis, args):
     return "\n\n".join(
         [format_mass_breakdown(mass_breakdown(analysis.prob)), format_mass_table(analysis)]
@@ -1032,6 +1037,7 @@ def _analyze_stall_speed(analysis, args):
 #: text. A new table is one more function here.
 ANALYZE_SECTIONS = (
     _analyze_header,
+    _analyze_mission,
     _analyze_masses,
     _analyze_conditions,
     _analyze_trim_variables,

@@ -36,6 +36,7 @@ import tomllib
 from pathlib import Path
 
 from lpc_mdo.vehicle.condition_kinds import MIN_HOVER_ROTORS
+from lpc_mdo.vehicle.toml_writer import toml_text
 
 ROOT = Path(__file__).resolve().parents[1]
 REFERENCE = ROOT / "lpc_mdo" / "data" / "lpc_reference.toml"
@@ -135,36 +136,6 @@ def example(n):
     return data
 
 
-def _value(v):
-    if isinstance(v, bool):
-        return "true" if v else "false"
-    if isinstance(v, str):
-        return '"' + v.replace("\\", "\\\\").replace('"', '\\"') + '"'
-    if isinstance(v, list):
-        return "[" + ", ".join(_value(x) for x in v) + "]"
-    return repr(v)
-
-
-def _table(lines, path, table):
-    scalars = {k: v for k, v in table.items() if not isinstance(v, dict) and not _is_tables(v)}
-    for key, value in scalars.items():
-        lines.append(f"{key} = {_value(value)}")
-    for key, value in table.items():
-        if isinstance(value, dict):
-            lines.append("")
-            lines.append(f"[{path}{key}]")
-            _table(lines, f"{path}{key}.", value)
-        elif _is_tables(value):
-            for item in value:
-                lines.append("")
-                lines.append(f"[[{path}{key}]]")
-                _table(lines, f"{path}{key}.", item)
-
-
-def _is_tables(value):
-    return isinstance(value, list) and value and all(isinstance(x, dict) for x in value)
-
-
 def to_toml(data, n):
     """Return the TOML text of an example's data, with a header that says where it came from."""
     lines = [
@@ -174,8 +145,7 @@ def to_toml(data, n):
         "# and lpc_reference.toml for the sources of the rest).",
         "",
     ]
-    _table(lines, "", data)
-    return "\n".join(lines) + "\n"
+    return "\n".join(lines) + "\n" + toml_text(data)
 
 
 def main(argv=None):

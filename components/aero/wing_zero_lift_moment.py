@@ -99,7 +99,9 @@ def wing_zero_lift_moment_options(vehicle, wing_zero_lift_angle):
 
     wing = vehicle.wing
     cruise = vehicle.condition(vehicle.mission.cruise_condition)
-    _, _, rho, a, mu = standard_atmosphere(cruise.altitude)
+    _, _, rho, a, mu = standard_atmosphere(
+        cruise.altitude, temperature_offset=vehicle.mission.isa_offset
+    )
     reynolds = rho * cruise.speed * wing.mean_aerodynamic_chord / mu
     cm0 = airfoil_zero_lift_moment(
         get_polar(wing.airfoil), wing_zero_lift_angle, reynolds, cruise.speed / a

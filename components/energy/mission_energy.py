@@ -25,12 +25,22 @@ class MissionEnergyComp(om.ExplicitComponent):
     3 (cruise), 2 (descent) and 0 for conditions that are not flown (OEI, +3g, -1g).  The
     multipliers come from the vehicle file, so another accounting needs no code change.
 
+    A mission stated as segments (:mod:`lpc_mdo.vehicle.mission_profile`) has k = its legs and,
+    with a reserve, one more term: the reserve condition r flown for t_res,
+
+        E_used = sum_i k_i P_i t_i + P_r t_res,
+
+    a term of its own so that a leg's duration (e.g. a cruise range) and the reserve change
+    apart.
+
     Inputs
     ------
     electrical_power : float, (num_conditions,), W
         Battery-side electrical power in each condition (sum of motor input powers).
     duration : float, (num_conditions,), s
         Time spent in each condition.
+    reserve_duration : float, scalar, s
+        t_res (only with option ``reserve_index``).
 
     Outputs
     -------
@@ -43,6 +53,8 @@ class MissionEnergyComp(om.ExplicitComponent):
     -------
     energy_multipliers : sequence of float
         k_i >= 0 per condition; its length sets num_conditions.
+    reserve_index : int or None
+        Index r of the reserve condition; None (default): no reserve term.
     """
 
     def initialize(self):
@@ -50,6 +62,13 @@ class MissionEnergyComp(om.ExplicitComponent):
             "energy_multipliers",
             types=(list, tuple, np.ndarray),
             desc="how many times each condition's energy counts (>= 0)",
+        )
+        self.options.declare(
+            "reserve_index",
+            default=None,
+            types=int,
+            allow_none=True,
+            desc="condition flown in reserve (None: no reserve term)",
         )
 
     def setup(self):
@@ -81,6 +100,11 @@ class MissionEnergyComp(om.ExplicitComponent):
         self.declare_partials(
             "energy_used", ["electrical_power", "duration"], rows=np.zeros(n, dtype=int), cols=cols
         )
+        self._reserve = self.options["reserve_index"]
+        if self._reserve is not None:
+            check_range("reserve_index", self._reserve, lower=0, upper=n - 1, where=self.msginfo)
+            self.add_input("reserve_duration", 0.0, units="s", desc="time flown in reserve")
+            self.declare_partials("energy_used", "reserve_duration")
 
     def compute(self, inputs, outputs):
         duration = inputs["duration"]
@@ -89,11 +113,20 @@ class MissionEnergyComp(om.ExplicitComponent):
         energy = inputs["electrical_power"] * duration
         outputs["segment_energy"] = energy
         outputs["energy_used"] = np.dot(self._k, energy)
+        if self._reserve is not None:
+            reserve = inputs["reserve_duration"]
+            if reserve.real < 0.0:
+                raise om.AnalysisError(f"{self.msginfo}: reserve_duration = {reserve.real} s < 0")
+            outputs["energy_used"] += inputs["electrical_power"][self._reserve] * reserve
 
     def compute_partials(self, inputs, partials):
         power = inputs["electrical_power"]
         duration = inputs["duration"]
         partials["segment_energy", "electrical_power"] = duration
         partials["segment_energy", "duration"] = power
-        partials["energy_used", "electrical_power"] = self._k * duration
+        d_power = self._k * duration
+        if self._reserve is not None:
+            d_power[self._reserve] += inputs["reserve_duration"][0]
+            partials["energy_used", "reserve_duration"] = power[self._reserve]
+        partials["energy_used", "electrical_power"] = d_power
         partials["energy_used", "duration"] = self._k * power

@@ -113,6 +113,7 @@ from lpc_mdo.vehicle.consistency import (
     check_flight_speeds,
 )
 from lpc_mdo.vehicle.design_variables import _read_design_variables
+from lpc_mdo.vehicle.mission_profile import apply_mission
 from lpc_mdo.vehicle.one_rotor_out import expand_failures, file_keys
 from lpc_mdo.vehicle.parts import (
     AIRFOILS,
@@ -308,6 +309,7 @@ def vehicle_from_dict(data: Mapping) -> Vehicle:
 
 def _build_vehicle(data: Mapping, keys: list[str] | None) -> Vehicle:
     values = _read_fields(Vehicle, data, "", skip="design_variables")
+    values["mission"], values["conditions"] = apply_mission(values["mission"], values["conditions"])
     values["wing"] = _check_wing(values["wing"])
     values["lift_rotors"] = tuple(
         with_section_thickness(r, f"lift_rotors[{i}]") for i, r in enumerate(values["lift_rotors"])

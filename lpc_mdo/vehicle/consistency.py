@@ -340,7 +340,7 @@ def check_flight_speeds(vehicle) -> None:
     for i, c in enumerate(vehicle.conditions):
         if c.kind not in ("steady", "structural"):
             continue
-        density = standard_atmosphere(c.altitude)[2]
+        density = standard_atmosphere(c.altitude, temperature_offset=vehicle.mission.isa_offset)[2]
         least = math.sqrt(
             2.0 * abs(c.load_factor) * weight / (density * s_max * MAX_LIFT_COEFFICIENT)
         )

@@ -11,11 +11,11 @@ import functools
 import math
 import os
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
-from lpc_mdo.vehicle.schema import _angle, _param
+from lpc_mdo.vehicle.schema import _angle, _param, _Spec
 
 # ------------------------------------------------------------------------------------------------
 # Airfoils and conditions
@@ -641,12 +641,78 @@ class Motor:
     cable_mass_per_ampere_metre: float = _param("kg/(A*m)", ge=1e-4, le=1e-2)
 
 
+#: Reserve rules of ``mission.reserve.rule``: a time or a distance at a condition, or a named
+#: preset (:data:`lpc_mdo.vehicle.mission_profile.RESERVE_PRESETS`).
+RESERVE_RULES = (
+    "time", "distance", "faa_vfr_day", "faa_vfr_night", "faa_vfr_rotorcraft", "nasa_uam"
+)  # fmt: skip
+
+
+@dataclass(frozen=True)
+class MissionSegment:
+    """One segment of the mission as a designer states it (``[[mission.segments]]``).
+
+    A segment is flown in one design condition, whose power it draws; its time comes from one
+    of: ``duration``; ``distance`` at the condition's speed; or a climb or descent to
+    ``to_altitude`` at ``vertical_speed``. A segment naming the ``design_variable_prefix`` of
+    several transition points flies them in turn, ``duration`` split evenly among them. The
+    mission sets the conditions' altitudes, flight-path angles, durations and energy weights
+    (:mod:`lpc_mdo.vehicle.mission_profile`).
+
+    Attributes
+    ----------
+    condition : str
+        A condition name, or the shared ``design_variable_prefix`` of transition points.
+    duration : float or None
+        Time (s).
+    distance : float or None
+        Ground distance (m); file key ``distance_km``.
+    to_altitude : float or None
+        Altitude at the segment's end (m); with ``vertical_speed``.
+    vertical_speed : float or None
+        Rate of climb (m/s), negative descending; with ``to_altitude``.
+    """
+
+    condition: str = _param()
+    # Up to 24 h; up to 5000 km; the troposphere; 0.1-25 m/s of climb or descent (a helicopter
+    # climbs at up to 15 m/s; 25 catches ft/min).
+    duration: float = _param("s", gt=0, le=86400, optional=True)
+    distance: float = _param("km", gt=0, le=5000, suffix="_km", scale=1000.0, optional=True)
+    to_altitude: float = _param("m", ge=0, le=11000, optional=True)
+    vertical_speed: float = _param("m/s", ge=-25, le=25, optional=True)
+
+
+@dataclass(frozen=True)
+class MissionReserve:
+    """The energy reserve after the mission's legs (``[mission.reserve]``).
+
+    Attributes
+    ----------
+    rule : str
+        ``"time"`` (``duration``), ``"distance"`` (``distance``) or a preset of
+        :data:`RESERVE_RULES` (its time or distance is the preset's; cited in
+        :data:`lpc_mdo.vehicle.mission_profile.RESERVE_PRESETS`).
+    condition : str or None
+        The condition flown in reserve; default the mission's cruise condition.
+    duration : float or None
+        Reserve time (s), file key ``duration_min`` (minutes); with ``rule = "time"``.
+    distance : float or None
+        Reserve distance (m), file key ``distance_km``; with ``rule = "distance"``.
+    """
+
+    rule: str = _param(choices=RESERVE_RULES)
+    condition: str = _param(optional=True)
+    duration: float = _param("min", gt=0, le=600, suffix="_min", scale=60.0, optional=True)
+    distance: float = _param("km", gt=0, le=5000, suffix="_km", scale=1000.0, optional=True)
+
+
 @dataclass(frozen=True)
 class Mission:
     """The mission-level choices of the sizing mission (paper Sec. IV).
 
-    The mission segments are the design conditions with a positive ``energy_weight`` (see
-    :attr:`Vehicle.mission_segments`); their durations and weights are in the conditions.
+    Either the conditions carry the mission (each its ``duration`` and ``energy_weight``; the
+    reference's form, the paper's energy rule) or ``segments`` state it as a designer does, and
+    the loader derives those keys (:mod:`lpc_mdo.vehicle.mission_profile`).
 
     Attributes
     ----------
@@ -654,9 +720,40 @@ class Mission:
         Name of the design cruise condition (a ``steady`` condition): the static margin is
         evaluated and constrained there, the M4 weight regressions take its speed, and the
         wing's sectional zero-lift angle is taken at its Reynolds and Mach numbers.
+    temperature_offset : float or None
+        ISA temperature offset (K) of every condition: T = T_ISA(h) + dT at the ISA pressure of
+        h (a hot or cold day); None: 0.
+    start_altitude : float or None
+        Altitude of the departure (m): where the first segment starts; required with segments.
+    legs : int or None
+        How often the segments are flown before the reserve (2: out and back without
+        recharging); None: 1.
+    segments : tuple of MissionSegment or None
+        The mission, in flight order.
+    reserve : MissionReserve or None
+        The reserve flown after the legs; None: no reserve (the final state-of-charge floor,
+        ``constraints.final_soc``, is then the only margin).
+    reserve_condition, reserve_time : str or None, float
+        Derived: the condition flown in reserve and for how long (s); None and 0 without one.
     """
 
     cruise_condition: str = _param()
+    # -60..+60 K: ISA-60 is the coldest and ISA+40 the hottest day certification considers.
+    temperature_offset: float = _param("K", ge=-60, le=60, optional=True)
+    start_altitude: float = _param("m", ge=0, le=11000, optional=True)
+    legs: int = _param(ge=1, le=20, optional=True)
+    segments: tuple[MissionSegment, ...] = _param(
+        optional=True, count_note="the mission's segments, [[mission.segments]] tables"
+    )
+    reserve: MissionReserve = _param(optional=True)
+    # Set by the loader from the segments (lpc_mdo.vehicle.mission_profile.apply_mission).
+    reserve_condition: str | None = field(default=None, metadata={"spec": _Spec(derived=True)})
+    reserve_time: float = field(default=0.0, metadata={"spec": _Spec(derived=True)})
+
+    @property
+    def isa_offset(self) -> float:
+        """ISA temperature offset (K), 0 when not given."""
+        return 0.0 if self.temperature_offset is None else self.temperature_offset
 
 
 @dataclass(frozen=True)
@@ -702,12 +799,14 @@ class DesignCondition:
 
     name: str = _param()
     kind: str = _param()
-    altitude: float = _param("m", ge=0, le=11000)
+    # altitude, flight_path_angle, duration and energy_weight are derived from the mission's
+    # segments for the conditions the segments fly (leave them out there), required otherwise.
+    altitude: float = _param("m", ge=0, le=11000, optional=True)
     speed: float = _param("m/s", ge=0, le=150)
     pitch: float = _angle(gt=-90, lt=90)
-    flight_path_angle: float = _angle(gt=-90, lt=90)
-    duration: float = _param("s", ge=0, le=86400)
-    energy_weight: float = _param(ge=0, le=100)
+    flight_path_angle: float = _angle(gt=-90, lt=90, optional=True)
+    duration: float = _param("s", ge=0, le=86400, optional=True)
+    energy_weight: float = _param(ge=0, le=100, optional=True)
     load_factor: float = _param(ge=-5, le=5)
     failed_rotor: int = _param(ge=-1, le=max(LIFT_ROTOR_COUNTS) - 1)
     acceleration: float = _param("m/s^2", ge=-20, le=20)
