@@ -57,6 +57,7 @@ from lpc_mdo.problems import CONSTRAINT_KINDS
 from lpc_mdo.progress import interrupt_message
 from lpc_mdo.run_lock import LOCK_NAME, FolderInUse, LockFailed, folder_lock
 from lpc_mdo.sensitivities import sensitivities_from_case, sensitivities_path
+from lpc_mdo.sizing import SizingError, size_vehicle, sized_vehicle_text
 from lpc_mdo.sweep_parameters import (
     LIMIT_CONSTRAINT_KINDS,
     PAPER_SWEEPS,
@@ -724,6 +725,8 @@ def _outputs(args, out):
         return [out / name for name in ("cases.sql", "constraints.md", "constraints.csv")]
     if args.command == "report":
         return [out / "index.md"]
+    if args.command == "size":
+        return [out / name for name in SIZING_FILES]
     if args.command == "optimize":
         names = study_plan.SEQUENCE if args.problem == "sequence" else [args.problem]
         cases = [out / f"{name}.sql" for name in names]
@@ -1050,6 +1053,24 @@ ANALYZE_SECTIONS = (
 )
 
 
+#: The files ``lpc-mdo size`` writes into its output folder.
+SIZING_FILES = ("sizing.txt", "sized_vehicle.toml")
+
+
+def _size(args):
+    out = Path(args.output_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    result = size_vehicle(args.vehicle_spec, processes=args.processes, log=print)
+    text = result.summary()
+    print(text)
+    (out / SIZING_FILES[0]).write_text(text + "\n", encoding="utf-8")
+    source = args.vehicle if args.vehicle else None
+    sized = out / SIZING_FILES[1]
+    sized.write_text(sized_vehicle_text(source, result), encoding="utf-8")
+    print(f"sized vehicle file: {sized} (lpc-mdo optimize --vehicle {sized})")
+    return 0
+
+
 def _analyze(args):
     out = Path(args.output_dir)
     out.mkdir(parents=True, exist_ok=True)
@@ -1332,6 +1353,29 @@ def build_parser():
     )
     analyze.set_defaults(func=_analyze)
 
+    size = add_command(
+        "size", "close a vehicle's battery and gross mass on its mission (no optimizer)"
+    )
+    size.add_argument(
+        "--vehicle",
+        type=vehicle_type,
+        default=None,
+        help="vehicle TOML file (default: the reference vehicle)",
+    )
+    size.add_argument(
+        "--output-dir",
+        default="sizing_out",
+        help=f"folder for {' and '.join(SIZING_FILES)}: the summary and the vehicle file with "
+        "the closed battery mass and design gross mass, to optimize from (default: sizing_out)",
+    )
+    size.add_argument(
+        "--processes",
+        type=positive["--processes"],
+        default=os.cpu_count() or 1,
+        help="processes that trim conditions at the same time (default: the CPU count)",
+    )
+    size.set_defaults(func=_size)
+
     start_case_type = _existing("--start-case", CASE_FILE_TEXT)
     optimize = add_command(
         "optimize", "solve a subproblem, the full problem, or the warm-start sequence"
@@ -1574,6 +1618,11 @@ def main(argv=None):
         print(f"lpc-mdo: error: {_kept_after_write_failure(args, problem)}", file=sys.stderr)
         return EXIT_WRITE_ERROR
     except Exception as err:  # not hidden: the traceback, then what to do with it
+        if isinstance(err, SizingError):
+            if debug:
+                traceback.print_exc()
+            print(f"lpc-mdo: error: sizing: {_short(_one_line(err))}", file=sys.stderr)
+            return EXIT_ANALYSIS_ERROR
         if type(err).__name__ == "AnalysisError" and type(err).__module__.startswith("openmdao"):
             # A model left its stated range for this vehicle's design (om.AnalysisError names the
             # component and the values): a result, not a bug.

@@ -9,7 +9,7 @@ one.
 
 import re
 
-__all__ = ["replace_initial", "replace_value", "write_values"]
+__all__ = ["replace_initial", "replace_table_value", "replace_value", "write_values"]
 
 
 def replace_initial(text, name, values, comment, fmt="{:.6g}"):
@@ -46,6 +46,22 @@ def replace_value(text, key, value):
     text, count = re.subn(pattern, lambda m: m.group(1) + value, text, flags=re.MULTILINE)
     if count != 1:
         raise ValueError(f"no unique '{key} = <number>' line")
+    return text
+
+
+def replace_table_value(text, table, key, value):
+    """
+    Return ``text`` with the ``<key> = <number>`` line of table ``[<table>]`` set to ``value``.
+
+    The line keeps its comment. Raises ValueError when the table has no such line, or when the
+    text has the table more than once.
+    """
+    pattern = (
+        rf"(^\[{re.escape(table)}\]\n(?:(?:[^\[\n][^\n]*)?\n)*?){re.escape(key)} = [0-9.eE+-]+"
+    )
+    text, count = re.subn(pattern, lambda m: f"{m.group(1)}{key} = {value}", text, flags=re.M)
+    if count != 1:
+        raise ValueError(f"no unique '{key} = <number>' line in table [{table}]")
     return text
 
 

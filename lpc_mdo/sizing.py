@@ -1,0 +1,294 @@
+"""
+Size a vehicle to its mission without an optimizer: battery to the floor, gross-mass fixed point.
+
+:func:`size_vehicle` holds the vehicle's design (planform, rotors, motors, wing box) and closes
+the two quantities a sizing code closes on its mission (as NDARC or FLOPS do):
+
+- the battery mass m_b, so that the mission and its reserve end at the state-of-charge floor
+  ``constraints.min_final_soc``: with the battery model SoC = SoC_0 - E/(e m_b) (docs
+  theory/energy), the mass that would end there at the current energy is
+  m* = E(m_b)/(e (SoC_0 - SoC_min)); the closure is m_b = m*(m_b), solved by secant steps on
+  g(m_b) = m_b - m*(m_b) (the energy grows with the battery's own mass, so plain substitution
+  converges slowly, by a factor of about 0.4 per step);
+- the design gross mass W_dg of the regressions that scale with it (landing gear, wing secondary
+  structure, systems; docs theory/weights) equal to the gross mass W0 it gives, by substitution
+  W_dg <- W0 on model runs without a trim at each new battery mass (the slope dW0/dW_dg is
+  about 0.14); a calibrated vehicle, ``masses.other_rule = "calibrated"``, keeps its W_dg (its
+  W_other closes it);
+
+each step then re-trimming the mission's conditions at the new masses (:func:`lpc_mdo.trim.trim`).
+Closed: |SoC - SoC_min| <= 1e-4 and |W0 - W_dg| <= 0.01 kg. Then the hover and one-rotor-out
+conditions are trimmed once for the installed powers: each motor group's largest shaft power
+over the conditions. The motors, rotors, wing and its gauges stay as the vehicle file gives them
+(the optimizer sizes those).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import os
+import re
+import time
+from importlib import resources
+from pathlib import Path
+
+import numpy as np
+import openmdao.api as om
+
+from lpc_mdo.api.weights import mass_breakdown
+from lpc_mdo.core.constants import GRAVITY
+from lpc_mdo.problems import build_analysis_problem
+from lpc_mdo.trim import trim
+from lpc_mdo.vehicle import AIRFOILS, load_vehicle
+from lpc_mdo.vehicle.file_edit import replace_table_value
+
+__all__ = ["SizingError", "SizingResult", "size_vehicle", "sized_vehicle_text"]
+
+#: Closure tolerances: state of charge (-) and W0 - W_dg (kg).
+SOC_TOLERANCE = 1e-4
+MASS_TOLERANCE = 0.01
+#: A battery heavier than this fraction of the gross mass does not close: the energy it adds to
+#: carry itself grows faster than its capacity (no battery-electric design in the literature
+#: exceeds about 40 %; NASA's lift+cruise: 22 %, Johnson and Silva 2022, Table 3).
+MAX_BATTERY_FRACTION = 0.6
+
+
+class SizingError(om.AnalysisError):
+    """The vehicle does not close on its mission; the message says what was measured."""
+
+
+@dataclasses.dataclass
+class SizingResult:
+    """The closed vehicle (masses in kg, energy in J, powers in W, disk loading in N/m^2)."""
+
+    vehicle: str
+    gross_mass: float
+    battery_mass: float
+    battery_energy: float
+    energy_used: float
+    final_soc: float
+    soc_floor: float
+    design_gross_mass: float
+    disk_loading: float
+    installed_power: dict
+    breakdown: dict
+    history: list
+    seconds: float
+
+    def summary(self) -> str:
+        """Return the result as text (``lpc-mdo size`` prints it)."""
+        lines = [
+            f"sized '{self.vehicle}' to its mission in {len(self.history)} steps "
+            f"({self.seconds:.1f} s): state of charge {self.final_soc:.4f} (floor "
+            f"{self.soc_floor:g}), W0 {self.gross_mass:.2f} kg, W_dg "
+            f"{self.design_gross_mass:.2f} kg",
+            f"  gross mass      {self.gross_mass:10.2f} kg",
+            f"  battery         {self.battery_mass:10.2f} kg, {self.battery_energy / 3.6e6:.1f} "
+            f"kWh ({self.energy_used / 3.6e6:.1f} kWh used over the mission and reserve)",
+            f"  empty mass      {self.gross_mass - self.breakdown.get('payload', 0.0):10.2f} kg "
+            "(gross minus payload, battery included)",
+            f"  disk loading    {self.disk_loading:10.1f} N/m^2 "
+            f"({self.disk_loading / 47.880259:.2f} lb/ft^2)",
+        ]
+        for name, (power, where) in self.installed_power.items():
+            lines.append(
+                f"  {name:<15} {power / 1e3:10.1f} kW per motor ({power / 745.7:.0f} hp), "
+                f"the most over the conditions: {where}"
+            )
+        lines.append("  steps (battery kg, W0 kg, state of charge):")
+        lines += [f"    {m:10.2f} {w:10.2f} {s:8.4f}" for m, w, s in self.history]
+        return "\n".join(lines)
+
+
+def _mission_conditions(vehicle):
+    names = [c.name for c in vehicle.mission_segments]
+    reserve = vehicle.mission.reserve_condition
+    if reserve is not None and reserve not in names:
+        names.append(reserve)
+    return names
+
+
+def size_vehicle(vehicle=None, processes=1, max_steps=12, log=None):
+    """
+    Close a vehicle's battery and gross mass on its mission (module docstring).
+
+    Parameters
+    ----------
+    vehicle : Vehicle, str, os.PathLike or None
+        A vehicle, a vehicle file, or None for the reference.
+    processes : int
+        Processes that trim conditions at the same time.
+    max_steps : int
+        Closure steps before giving up.
+    log : callable or None
+        Called with one line per step.
+
+    Returns
+    -------
+    SizingResult
+
+    Raises
+    ------
+    SizingError
+        When a trim fails or the closure does not converge (diverges: the mission needs a battery
+        heavier than :data:`MAX_BATTERY_FRACTION` of the gross mass), naming what was measured.
+    """
+    start = time.perf_counter()
+    if vehicle is None or isinstance(vehicle, (str,)) or hasattr(vehicle, "__fspath__"):
+        vehicle = load_vehicle(vehicle)
+    mission = _mission_conditions(vehicle)
+    hover = [c.name for c in vehicle.conditions if c.kind in ("hover", "oei")]
+    conditions = [c.name for c in vehicle.conditions if c.name in mission or c.name in hover]
+    prob = build_analysis_problem(
+        vehicle, name="sizing", conditions=conditions, static_margin=False
+    )
+    prob.final_setup()
+    floor = vehicle.constraints.min_final_soc
+    soc0 = vehicle.battery.initial_soc
+    density = vehicle.battery.energy_density
+    calibrated = vehicle.masses.other_rule == "calibrated"
+    battery = float(prob.get_val("battery_mass", units="kg")[0])
+    design = vehicle.masses.design_gross_mass
+    history, previous = [], None
+    for step in range(1, max_steps + 1):
+        prob.set_val("battery_mass", battery, units="kg")
+        if not calibrated:
+            design = _close_design_gross_mass(prob, design)
+        prob.set_val("design_gross_mass", design, units="kg")
+        _trim(prob, mission, processes, f"step {step}")
+        soc = float(prob.get_val("state_of_charge")[0])
+        gross = float(prob.get_val("gross_mass", units="kg")[0])
+        energy = float(prob.get_val("energy_used", units="J")[0])
+        history.append((battery, gross, soc))
+        if log is not None:
+            log(f"size: step {step}: battery {battery:.2f} kg, W0 {gross:.2f} kg, SoC {soc:.4f}")
+        closed_mass = calibrated or abs(gross - design) <= MASS_TOLERANCE
+        if abs(soc - floor) <= SOC_TOLERANCE and closed_mass:
+            break
+        if battery > MAX_BATTERY_FRACTION * gross or not math.isfinite(gross):
+            raise SizingError(
+                f"the mission does not close: at step {step} the battery would be {battery:.0f} "
+                f"kg of a {gross:.0f} kg vehicle (more than {MAX_BATTERY_FRACTION:.0%}), the "
+                f"mission and reserve taking {energy / 3.6e6:.1f} kWh; shorten the mission or "
+                "the reserve, or raise battery.energy_density"
+            )
+        residual = battery - energy / (density * (soc0 - floor))
+        if previous is None or residual == previous[1]:
+            step_to = battery - residual
+        else:
+            slope = (residual - previous[1]) / (battery - previous[0])
+            step_to = battery - residual / slope
+        previous = (battery, residual)
+        battery = max(step_to, 1.0)
+    else:
+        raise SizingError(
+            f"the closure did not converge in {max_steps} steps: last battery "
+            f"{history[-1][0]:.2f} kg, W0 {history[-1][1]:.2f} kg, state of charge "
+            f"{history[-1][2]:.4f} against the floor {floor:g}"
+        )
+    others = [n for n in conditions if n not in mission]
+    if others:
+        _trim(prob, others, processes, "installed power")
+    return SizingResult(
+        vehicle=vehicle.name,
+        gross_mass=gross,
+        battery_mass=battery,
+        battery_energy=float(prob.get_val("energy_capacity", units="J")[0]),
+        energy_used=energy,
+        final_soc=soc,
+        soc_floor=floor,
+        design_gross_mass=design,
+        disk_loading=_disk_loading(prob, vehicle, gross),
+        installed_power=_installed_power(prob, conditions),
+        breakdown=dict(mass_breakdown(prob)),
+        history=history,
+        seconds=time.perf_counter() - start,
+    )
+
+
+def _close_design_gross_mass(prob, design, max_runs=30):
+    """Return W_dg = W0(W_dg) at the problem's state, by substitution on model runs."""
+    for _ in range(max_runs):
+        prob.set_val("design_gross_mass", design, units="kg")
+        prob.run_model()
+        gross = float(prob.get_val("gross_mass", units="kg")[0])
+        if abs(gross - design) <= 0.1 * MASS_TOLERANCE:
+            return gross
+        design = gross
+    raise SizingError(
+        f"the design gross mass did not settle in {max_runs} model runs: W0 {gross:.3f} kg, "
+        f"W_dg {design:.3f} kg"
+    )
+
+
+def _trim(prob, conditions, processes, what):
+    result = trim(prob, conditions=conditions, workers=processes)
+    if not result.success:
+        raise SizingError(f"sizing, {what}: {result.message}")
+
+
+def _disk_loading(prob, vehicle, gross):
+    """W0 g over the lift rotors' disk area (N/m^2)."""
+    radii = np.asarray(prob.get_val("rotor_radius", units="m")).ravel()
+    area = sum(math.pi * radii[r.pair] ** 2 for r in vehicle.lift_rotors)
+    return gross * GRAVITY / area
+
+
+def _installed_power(prob, conditions):
+    """Each motor group's largest shaft power per motor over the conditions: {name: (W, where)}."""
+    found = {}
+    for name in conditions:
+        for group, label in (("lift_motors", "lift motors"), ("pusher_motors", "pusher motor")):
+            path = f"{name}.{group}.output_power"
+            try:
+                power = float(np.max(prob.get_val(path, units="W")))
+            except KeyError:
+                continue
+            if power > found.get(label, (-np.inf, ""))[0]:
+                found[label] = (power, name)
+    return found
+
+
+#: Keys of a vehicle file whose string may be a file path (relative to the file's folder).
+_FILE_KEYS = ("airfoil", "coordinates")
+_AIRFOIL_NAMES = tuple(AIRFOILS)
+
+
+def sized_vehicle_text(path, result):
+    """
+    Return the vehicle file at ``path`` (None: the reference) with the sizing's masses.
+
+    ``battery.mass`` (the battery's initial design value) and ``masses.design_gross_mass`` take
+    the closed values; the file's comments stay; relative polar and coordinate paths become
+    absolute, so the sized file works from any folder. A header line says what changed.
+    """
+    if path is None:
+        text = resources.files("lpc_mdo").joinpath("data", "lpc_reference.toml").read_text()
+        folder, label = None, "the reference vehicle"
+    else:
+        text = Path(path).read_text(encoding="utf-8-sig")
+        folder, label = Path(path).resolve().parent, str(path)
+    text = replace_table_value(text, "battery", "mass", f"{result.battery_mass:.2f}")
+    text = replace_table_value(
+        text, "masses", "design_gross_mass", f"{result.design_gross_mass:.2f}"
+    )
+    if folder is not None:
+
+        def absolute(match):
+            value = match.group(2)
+            if value.lower() in _AIRFOIL_NAMES or os.path.isabs(os.path.expanduser(value)):
+                return match.group(0)
+            here = folder / value
+            where = here if here.exists() else Path.cwd() / value
+            return f'{match.group(1)}"{where.resolve()}"'
+
+        keys = "|".join(_FILE_KEYS)
+        text = re.sub(rf'^((?:{keys}) = )"([^"]*)"', absolute, text, flags=re.M)
+    header = (
+        f"# Sized by lpc-mdo size from {label}: battery.mass {result.battery_mass:.2f} kg and "
+        f"masses.design_gross_mass {result.design_gross_mass:.2f} kg close the mission\n"
+        f"# (state of charge {result.final_soc:.4f} at the floor {result.soc_floor:g}, W0 "
+        f"{result.gross_mass:.2f} kg).\n"
+    )
+    return header + text
