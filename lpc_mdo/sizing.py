@@ -150,6 +150,7 @@ def size_vehicle(vehicle=None, processes=1, max_steps=12, log=None):
     calibrated = vehicle.masses.other_rule == "calibrated"
     battery = float(prob.get_val("battery_mass", units="kg")[0])
     design = vehicle.masses.design_gross_mass
+    _reserve_fits(prob, vehicle)
     history, previous = [], None
     for step in range(1, max_steps + 1):
         prob.set_val("battery_mass", battery, units="kg")
@@ -205,6 +206,34 @@ def size_vehicle(vehicle=None, processes=1, max_steps=12, log=None):
         history=history,
         seconds=time.perf_counter() - start,
     )
+
+
+def _reserve_fits(prob, vehicle):
+    """Refuse, before any trim, a reserve that no battery the vehicle can carry would hold.
+
+    At the vehicle file's initial design (one model run, its rotor speeds and pitch as given:
+    near the trimmed power for a file whose initial values come from a trimmed design): the
+    reserve energy P_r t_res against the usable energy of a battery of
+    :data:`MAX_BATTERY_FRACTION` of the gross mass.
+    """
+    mission = vehicle.mission
+    if mission.reserve_condition is None:
+        return
+    prob.run_model()
+    power = float(prob.get_val(f"{mission.reserve_condition}.electrical_power", units="W")[0])
+    gross = float(prob.get_val("gross_mass", units="kg")[0])
+    battery = vehicle.battery
+    usable = battery.initial_soc - vehicle.constraints.min_final_soc
+    largest = MAX_BATTERY_FRACTION * gross * battery.energy_density * usable
+    if power * mission.reserve_time > largest:
+        raise SizingError(
+            f"'mission.reserve': {mission.reserve_time / 60:.4g} min at "
+            f"{mission.reserve_condition!r} ({power / 1e3:.0f} kW) take "
+            f"{power * mission.reserve_time / 3.6e6:.0f} kWh, more than a battery of "
+            f"{MAX_BATTERY_FRACTION:.0%} of the {gross:.0f} kg vehicle holds between its charge "
+            f"and the floor ({largest / 3.6e6:.0f} kWh); allowed: a shorter reserve, or a higher "
+            "battery.energy_density"
+        )
 
 
 def _close_design_gross_mass(prob, design, max_runs=30):
