@@ -17,7 +17,7 @@ the two quantities a sizing code closes on its mission (as NDARC or FLOPS do):
   W_other closes it);
 
 each step then re-trimming the mission's conditions at the new masses (:func:`lpc_mdo.trim.trim`).
-Closed: |SoC - SoC_min| <= 1e-4 and |W0 - W_dg| <= 0.01 kg. Then the hover and one-rotor-out
+Closed: SoC within 1e-4 of SoC_min and W0 within 0.01 kg of W_dg. Then the hover and one-rotor-out
 conditions are trimmed once for the installed powers: each motor group's largest shaft power
 over the conditions. The motors, rotors, wing and its gauges stay as the vehicle file gives them
 (the optimizer sizes those).
