@@ -7,8 +7,8 @@ the condition's speed, or a climb or descent at a vertical speed to an altitude.
 
 From them the loader derives, for every condition the segments fly:
 
-- ``altitude``: the mean altitude of its segments (the atmosphere of a climb is taken at its mean
-  altitude, docs theory/dynamics 'Condition kinematics');
+- ``altitude``: the mean altitude of its segments, weighted by their times (the atmosphere of a
+  climb is taken at its mean altitude, docs theory/dynamics 'Condition kinematics');
 - ``flight_path_angle``: gamma = asin(vertical_speed / V) in a steady climb or descent, 0 in
   level flight;
 - ``duration``: its time per leg (the sum over its segments), and ``energy_weight`` = legs;
@@ -21,7 +21,8 @@ power P_i evaluated once (quasi-steady segments; docs theory/energy 'Mission ene
 Rules (each broken rule is a VehicleSpecError naming the segment):
 
 - a segment flies a condition of kind ``hover``, ``transition`` or ``steady``; a condition's
-  segments all fly at one altitude (within 1 m) and one flight-path angle (within 0.01 deg);
+  segments all fly at one flight-path angle (within 0.01 deg) and at altitudes within
+  :data:`ALTITUDE_SPREAD` of each other, the condition at their time-weighted mean;
 - hover: ``duration``, or a vertical climb or descent (``to_altitude``, ``vertical_speed``) whose
   power is taken as that of hover at the mean altitude: at 0.5 m/s (100 ft/min) against a hover
   induced velocity of about 10 m/s momentum theory adds 2.5 % (Leishman, Principles of
@@ -53,7 +54,10 @@ DERIVED_KEYS = {
     "duration": "duration",
     "energy_weight": "energy_weight",
 }
-_ALTITUDE_TOLERANCE = 1.0  # m
+#: Largest spread (m) of the altitudes at which one condition is flown: it is evaluated at their
+#: time-weighted mean, and 150 m moves the density by 1.5 % (ISA near sea level); a vertiport's
+#: hover at 50 ft and the take-off climb to it share the hover condition.
+ALTITUDE_SPREAD = 150.0
 _ANGLE_TOLERANCE = math.radians(0.01)
 
 
@@ -247,18 +251,22 @@ def mission_profile(mission: Mission, conditions: Sequence[DesignCondition]):
             c = conditions[i]
             mean = 0.5 * (altitude + end_altitude)
             entry = per_condition.setdefault(
-                i, {"altitude": mean, "flight_path_angle": gamma, "duration": 0.0, "first": k}
+                i,
+                {"altitudes": [], "flight_path_angle": gamma, "duration": 0.0, "first": k},
             )
-            if abs(entry["altitude"] - mean) > _ALTITUDE_TOLERANCE or (
+            heights = [h for h, _ in entry["altitudes"]] + [mean]
+            first = heights[0]
+            if max(heights) - min(heights) > ALTITUDE_SPREAD or (
                 abs(entry["flight_path_angle"] - gamma) > _ANGLE_TOLERANCE
             ):
                 raise VehicleSpecError(
                     f"'{where}' flies condition {c.name!r} at {mean:g} m and "
                     f"{math.degrees(gamma):g} deg, 'mission.segments[{entry['first']}]' at "
-                    f"{entry['altitude']:g} m and {math.degrees(entry['flight_path_angle']):g} "
-                    "deg; allowed: one altitude and flight-path angle per condition (give the "
-                    "other segment a condition of its own)"
+                    f"{first:g} m and {math.degrees(entry['flight_path_angle']):g} deg; allowed: "
+                    f"one flight-path angle and altitudes within {ALTITUDE_SPREAD:g} m per "
+                    "condition (give the other segment a condition of its own)"
                 )
+            entry["altitudes"].append((mean, piece_time))
             entry["duration"] += piece_time
             vertical = 0.0 if piece_time == 0 else (end_altitude - altitude) / piece_time
             horizontal = c.speed * math.cos(gamma) * piece_time
@@ -278,7 +286,7 @@ def mission_profile(mission: Mission, conditions: Sequence[DesignCondition]):
         altitude = pieces[-1][2]
     derived = {
         i: {
-            "altitude": e["altitude"],
+            "altitude": sum(h * t for h, t in e["altitudes"]) / e["duration"],
             "flight_path_angle": e["flight_path_angle"],
             "duration": e["duration"],
             "energy_weight": float(legs),

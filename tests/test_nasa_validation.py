@@ -1,0 +1,60 @@
+"""NASA's own sizing of the lift-plus-cruise vehicle as a validation case."""
+
+import importlib.util
+from importlib import resources
+from pathlib import Path
+
+import pytest
+
+from lpc_mdo.sizing import size_vehicle
+from lpc_mdo.vehicle import load_vehicle
+
+VEHICLE = resources.files("lpc_mdo") / "data" / "nasa_lpc_mission.toml"
+SCRIPT = Path(__file__).resolve().parents[1] / "run_scripts" / "make_nasa_validation.py"
+LB, KW_PER_HP = 0.45359237, 0.7457
+
+#: NASA's numbers (AIAA 2018-3847 Table 3, as transcribed; docs results 'Validation') and the
+#: tolerances the docs justify, set before the comparison was run.
+NASA = {
+    "gross_mass": (8210 * LB, 0.10),
+    "empty_mass": (7000 * LB, 0.10),
+    "battery_mass": (2200 * LB, 0.15),
+    "disk_loading": (13.1 * 47.880259, 0.10),
+}
+#: Our differences as the docs give them (relative), to 0.5 %: none is within its tolerance,
+#: for the reasons the docs measure (drag area, hover efficiency, rotor group, battery rule).
+DOCUMENTED = {
+    "gross_mass": -0.221,
+    "empty_mass": -0.258,
+    "battery_mass": -0.508,
+    "disk_loading": -0.223,
+}
+
+
+def test_the_shipped_file_is_what_its_script_writes(tmp_path):
+    spec = importlib.util.spec_from_file_location("make_nasa_validation", SCRIPT)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    assert module.main(["--output-dir", str(tmp_path)]) == 0
+    assert (tmp_path / module.NAME).read_text() == VEHICLE.read_text()
+    vehicle = load_vehicle(VEHICLE)
+    assert vehicle.masses.payload == pytest.approx(1200 * LB, abs=0.01)
+    assert vehicle.mission.legs == 2 and vehicle.mission.reserve_time == 1200.0
+    assert vehicle.condition("cruise").altitude == pytest.approx(3048.0)
+
+
+@pytest.mark.integration
+def test_sized_to_nasas_mission_against_nasas_numbers():
+    result = size_vehicle(load_vehicle(VEHICLE), processes=2)
+    assert abs(result.final_soc - 0.0) <= 1e-3  # closed: the whole capacity used
+    assert abs(result.gross_mass - result.design_gross_mass) <= 0.1
+    ours = {
+        "gross_mass": result.gross_mass,
+        "empty_mass": result.gross_mass - result.breakdown["payload"],
+        "battery_mass": result.battery_mass,
+        "disk_loading": result.disk_loading,
+    }
+    for name, (nasa, tolerance) in NASA.items():
+        difference = ours[name] / nasa - 1.0
+        assert difference == pytest.approx(DOCUMENTED[name], abs=5e-3), name
+        assert not abs(difference) <= tolerance, name  # the docs' account of each
