@@ -42,7 +42,7 @@ from lpc_mdo.groups.bem_rotor import BEMRotorGroup
 from lpc_mdo.groups.motor import MotorOperationGroup
 from lpc_mdo.groups.pitt_peters_rotor import PittPetersRotorGroup
 from lpc_mdo.groups.vehicle import motor_parameters
-from lpc_mdo.groups.vehicle_drag import lpc_drag_components
+from lpc_mdo.groups.vehicle_drag import SIZED_DRAG_INPUTS, lpc_drag_components
 from lpc_mdo.groups.vlm import VLMGroup, lpc_vlm_surfaces
 from lpc_mdo.vehicle.condition_kinds import is_wing_load_case, wing_stall_speed_fraction
 
@@ -359,7 +359,8 @@ def add_aerodynamics(
         ],
     )
     for name, value in values.items():
-        if name not in renames and name not in ("wing_area", "fuselage_length"):
+        connected = name in ("wing_area", "fuselage_length") or name in SIZED_DRAG_INPUTS
+        if name not in renames and not connected:
             group.set_input_defaults(f"drag_{name}", value)
 
     group.set_input_defaults("speed", np.array([condition.speed]), units="m/s")

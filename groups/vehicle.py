@@ -7,6 +7,7 @@ import numpy as np
 import openmdao.api as om
 from openmdao.utils.om_warnings import OpenMDAOWarning
 
+from lpc_mdo.components.aero.tyre_size import TyreFrontalAreaComp
 from lpc_mdo.components.dynamics.body_pitching_moment import (
     BodyMomentSlopeComp,
     body_moment_slope_options,
@@ -405,6 +406,9 @@ class VehicleGroup(om.Group):
         )
         self.connect("motor_group_mass", "motor_mass", src_indices=groups)
         self.connect("motor_peak_current", "motor_current_rating", src_indices=groups)
+        # The landing-gear tyres of the drag build-up, sized from W_dg (groups/vehicle_drag.py).
+        self.add_subsystem("tyres", TyreFrontalAreaComp(), promotes=["*"])
+        self.set_input_defaults("design_gross_mass", vehicle.masses.design_gross_mass, units="kg")
 
         self.set_input_defaults("material_density", vehicle.material.density, units="kg/m**3")
         dvs = vehicle.design_variables

@@ -17,7 +17,6 @@ from lpc_mdo.components.aero.drag_buildup import (
     LPC_HUB_CD,
     LPC_HUB_DIAMETER,
     LPC_HUB_HEIGHT,
-    LPC_MAIN_GEAR_FRACTION,
     LPC_PYLON_CD,
     LPC_PYLON_THICKNESS,
     LPC_STRUT_CD,
@@ -28,12 +27,17 @@ from lpc_mdo.components.aero.drag_buildup import (
     BodyDrag,
     FixedFormFactorDrag,
     LiftingSurfaceDrag,
+    SizedBluffDrag,
     max_thickness_sweep,
-    raymer_ga_tyre,
 )
+from lpc_mdo.components.aero.tyre_size import tyre_frontal_areas
 from lpc_mdo.vehicle import reference_vehicle
 
-__all__ = ["lpc_drag_components"]
+__all__ = ["SIZED_DRAG_INPUTS", "lpc_drag_components"]
+
+#: Drag-part inputs a condition takes from the vehicle (``drag_<name>``, outputs of
+#: :class:`~lpc_mdo.components.aero.tyre_size.TyreFrontalAreaComp` in the vehicle group).
+SIZED_DRAG_INPUTS = ("main_wheels_frontal_area", "nose_wheel_frontal_area")
 
 
 def lpc_drag_components(vehicle=None, boom_diameter=LPC_BOOM_DIAMETER, gear=True, booms=True):
@@ -127,12 +131,12 @@ def lpc_drag_components(vehicle=None, boom_diameter=LPC_BOOM_DIAMETER, gear=True
     )
     values["pusher_spinner_length"] = 2.0 * r_sp
     values["pusher_spinner_wetted_area"] = math.pi * r_sp * math.sqrt(r_sp**2 + (2.0 * r_sp) ** 2)
-    if gear:
-        m = v.masses.design_gross_mass
-        d_main, w_main = raymer_ga_tyre(LPC_MAIN_GEAR_FRACTION * m / 2.0)
-        d_nose, w_nose = raymer_ga_tyre((1.0 - LPC_MAIN_GEAR_FRACTION) * m)
-        comps.append(BluffDrag("main_wheels", LPC_WHEEL_CD, d_main * w_main, 2))
-        comps.append(BluffDrag("nose_wheel", LPC_WHEEL_CD, d_nose * w_nose, 1))
+    if gear:  # tyres sized from W_dg: inputs (TyreFrontalAreaComp in the model)
+        main, nose = tyre_frontal_areas(v.masses.design_gross_mass)
+        comps.append(SizedBluffDrag("main_wheels", LPC_WHEEL_CD, 2))
+        comps.append(SizedBluffDrag("nose_wheel", LPC_WHEEL_CD, 1))
+        values["main_wheels_frontal_area"] = main
+        values["nose_wheel_frontal_area"] = nose
         comps.append(
             BluffDrag("gear_struts", LPC_STRUT_CD, LPC_STRUT_LENGTH * LPC_STRUT_DIAMETER, 3)
         )

@@ -17,9 +17,8 @@ the two quantities a sizing code closes on its mission (as NDARC or FLOPS do):
   W_other closes it);
 
 each step then re-trimming the mission's conditions at the new masses (:func:`lpc_mdo.trim.trim`).
-Closed: SoC within 1e-4 of SoC_min and W0 within 0.01 kg of W_dg; a model whose W_dg moved is
-built again at the closed one (the landing gear's tyres, whose drag the model sizes from W_dg at
-build) and closed once more from there. Then the hover and one-rotor-out
+Closed: SoC within 1e-4 of SoC_min and W0 within 0.01 kg of W_dg (which also sizes the landing
+gear's tyres and so their drag). Then the hover and one-rotor-out
 conditions are trimmed once for the installed powers: each motor group's largest shaft power
 over the conditions. The motors, rotors, wing and its gauges stay as the vehicle file gives them
 (the optimizer sizes those).
@@ -54,12 +53,6 @@ MASS_TOLERANCE = 0.01
 #: carry itself grows faster than its capacity (no battery-electric design in the literature
 #: exceeds about 40 %; NASA's lift+cruise: 22 %, Johnson and Silva 2022, Table 3).
 MAX_BATTERY_FRACTION = 0.6
-#: The model is built again at the closed W_dg when it moved by more than this (kg) from the
-#: W_dg it was built at (the gear's tyre drag is sized at build: measured on the NASA validation
-#: vehicle, 350 kg of W_dg move the mission energy by 2 %, so 2 kg by about 1e-4); at most
-#: MAX_ROUNDS builds.
-REBUILD_TOLERANCE = 2.0
-MAX_ROUNDS = 3
 
 
 class SizingError(om.AnalysisError):
@@ -145,21 +138,9 @@ def size_vehicle(vehicle=None, processes=1, max_steps=12, log=None):
     start = time.perf_counter()
     if vehicle is None or isinstance(vehicle, (str,)) or hasattr(vehicle, "__fspath__"):
         vehicle = load_vehicle(vehicle)
-    history, battery, slope = [], None, None
-    for _ in range(MAX_ROUNDS):
-        prob, conditions, state = _close(
-            vehicle, battery, slope, processes, max_steps, log, history
-        )
-        battery, design, gross, soc, energy, slope = state
-        built = vehicle.masses.design_gross_mass
-        if vehicle.masses.other_rule == "calibrated" or abs(design - built) <= REBUILD_TOLERANCE:
-            break
-        # The gear's tyres (their drag) are sized from W_dg when the model is built: build it
-        # again at the closed W_dg and close once more from there.
-        masses = dataclasses.replace(vehicle.masses, design_gross_mass=design)
-        vehicle = dataclasses.replace(vehicle, masses=masses)
-        if log is not None:
-            log(f"size: W_dg {built:.2f} -> {design:.2f} kg: the model is built again")
+    history = []
+    prob, conditions, state = _close(vehicle, processes, max_steps, log, history)
+    battery, design, gross, soc, energy = state
     others = [n for n in conditions if n not in _mission_conditions(vehicle)]
     if others:
         _trim(prob, others, processes, "installed power")
@@ -180,12 +161,8 @@ def size_vehicle(vehicle=None, processes=1, max_steps=12, log=None):
     )
 
 
-def _close(vehicle, battery, slope, processes, max_steps, log, history):
-    """Close the battery (from ``battery`` kg; None: the file's) and W_dg on one model build.
-
-    ``slope`` is dg/dm_b of an earlier build (None: the first step substitutes). Returns
-    (prob, conditions, (battery, W_dg, W0, SoC, energy, slope)).
-    """
+def _close(vehicle, processes, max_steps, log, history):
+    """Close the battery and W_dg; return (prob, conditions, (battery, W_dg, W0, SoC, energy))."""
     mission = _mission_conditions(vehicle)
     hover = [c.name for c in vehicle.conditions if c.kind in ("hover", "oei")]
     conditions = [c.name for c in vehicle.conditions if c.name in mission or c.name in hover]
@@ -193,9 +170,8 @@ def _close(vehicle, battery, slope, processes, max_steps, log, history):
         vehicle, name="sizing", conditions=conditions, static_margin=False
     )
     prob.final_setup()
-    # Every trim starts from the vehicle file's trim values: the hover trim has more rotor speeds
-    # than rows, so where it ends depends on where it starts; from the file's, the sized vehicle
-    # file analyzes to the state of charge the sizing found.
+    # Every trim starts from the vehicle file's trim values, as the analysis of the sized file
+    # does, so that the trims do not depend on the path of the closure.
     start_values = {
         name: prob.get_val(name).copy()
         for name in prob.model.get_design_vars(use_prom_ivc=True)
@@ -205,11 +181,10 @@ def _close(vehicle, battery, slope, processes, max_steps, log, history):
     soc0 = vehicle.battery.initial_soc
     density = vehicle.battery.energy_density
     calibrated = vehicle.masses.other_rule == "calibrated"
-    if battery is None:
-        battery = float(prob.get_val("battery_mass", units="kg")[0])
+    battery = float(prob.get_val("battery_mass", units="kg")[0])
     design = vehicle.masses.design_gross_mass
     _reserve_fits(prob, vehicle)
-    previous = None
+    previous, slope = None, None
     for step in range(1, max_steps + 1):
         prob.set_val("battery_mass", battery, units="kg")
         for name, value in start_values.items():
@@ -229,7 +204,7 @@ def _close(vehicle, battery, slope, processes, max_steps, log, history):
             )
         closed_mass = calibrated or abs(gross - design) <= MASS_TOLERANCE
         if abs(soc - floor) <= SOC_TOLERANCE and closed_mass:
-            return prob, conditions, (battery, design, gross, soc, energy, slope)
+            return prob, conditions, (battery, design, gross, soc, energy)
         if battery > MAX_BATTERY_FRACTION * gross or not math.isfinite(gross):
             raise SizingError(
                 f"the mission does not close: at step {step} the battery would be {battery:.0f} "

@@ -145,12 +145,19 @@ def problem_vehicle(prob):
     return prob.vehicle if hasattr(prob, "vehicle") else prob.model.vehicle_spec
 
 
+#: Vehicle-level inputs that are not design variables but a caller may set on the problem, copied
+#: into each single-condition problem with the design: the design gross mass of the weight
+#: regressions and the tyres (:mod:`lpc_mdo.sizing` closes it).
+COPIED_PARAMETERS = (("design_gross_mass", "kg"),)
+
+
 def single_condition_problem(prob, condition, name):
     """
     Return a set-up problem of one condition of ``prob``'s model with ``prob``'s design.
 
     The same vehicle and model options (:data:`_INHERITED_OPTIONS`), the condition's trim
-    constraints only, no static margin; every design variable copied from ``prob`` (not run).
+    constraints only, no static margin; every design variable and the
+    :data:`COPIED_PARAMETERS` copied from ``prob`` (not run).
     Its OpenMDAO output folder is in the per-process scratch folder.
     """
     vehicle = problem_vehicle(prob)
@@ -166,6 +173,8 @@ def single_condition_problem(prob, condition, name):
         **{k: prob.model.options[k] for k in _INHERITED_OPTIONS},
     )
     copy_design_variables(prob, single, vehicle)
+    for name, units in COPIED_PARAMETERS:
+        single.set_val(name, prob.get_val(name, units=units), units=units)
     return single
 
 

@@ -12,6 +12,7 @@ from lpc_mdo.components.aero.drag_parts import (
     BodyDrag,
     FixedFormFactorDrag,
     LiftingSurfaceDrag,
+    SizedBluffDrag,
 )
 from lpc_mdo.core.constants import SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
 
@@ -23,6 +24,7 @@ __all__ = [
     "FixedFormFactorDrag",
     "LiftingSurfaceDrag",
     "LPC_LEAKAGE_PROTUBERANCE",
+    "SizedBluffDrag",
     "max_thickness_sweep",
     "raymer_ga_tyre",
 ]
@@ -74,8 +76,8 @@ def _check_components(name, value):
     for spec in value:
         if not isinstance(spec, _SPEC_TYPES):
             raise ValueError(
-                f"{name}: {spec!r} is not a LiftingSurfaceDrag, BodyDrag, FixedFormFactorDrag "
-                "or BluffDrag."
+                f"{name}: {spec!r} is not a LiftingSurfaceDrag, BodyDrag, FixedFormFactorDrag, "
+                "BluffDrag or SizedBluffDrag."
             )
     names = [s.name for s in value]
     if len(set(names)) != len(names):

@@ -307,5 +307,50 @@ class BluffDrag:
         return self.drag_area * one, one, one, {}
 
 
+@dataclass(frozen=True)
+class SizedBluffDrag:
+    """Identical bluff parts whose frontal area is an input ``{name}_frontal_area`` (one part).
+
+    D/q = count C_D A_front, as :class:`BluffDrag`, for parts sized elsewhere in the model (the
+    landing-gear tyres, from the design gross mass: ``components.aero.tyre_size``).
+
+    Attributes
+    ----------
+    name : str
+    drag_coefficient : float
+        C_D on the frontal area, in (0, 2].
+    count : int
+        Number of parts (>= 1).
+    """
+
+    name: str
+    drag_coefficient: float
+    count: int = 1
+    friction = False
+    laminar_fraction = 0.0
+    interference_factor = 1.0
+
+    def __post_init__(self):
+        owner = f"SizedBluffDrag '{self.name}'"
+        _check_fraction(owner, "drag_coefficient", self.drag_coefficient, 0.0, 2.0, True)
+        check_integer("count", self.count, lower=1, where=owner)
+
+    @property
+    def inputs(self):
+        """(suffix, units, default, desc) of the component's inputs."""
+        return (("frontal_area", "m**2", 0.1, "frontal area of one part"),)
+
+    #: The frontal area changes the drag area (in the wetted-area slot of a bluff part).
+    depends = {"frontal_area": ("wetted",)}
+
+    def evaluate(self, values):
+        """Drag area in place of the wetted area (FF = 1, unit length) and its derivative."""
+        area = values["frontal_area"]
+        _check_positive(self.name, (("frontal_area", area),))
+        one = np.ones_like(area)
+        k = self.count * self.drag_coefficient
+        return k * area, one, one, {"frontal_area": (k * one, 0.0 * one, 0.0 * one)}
+
+
 #: The part description classes the build-up accepts.
-PART_TYPES = (LiftingSurfaceDrag, BodyDrag, FixedFormFactorDrag, BluffDrag)
+PART_TYPES = (LiftingSurfaceDrag, BodyDrag, FixedFormFactorDrag, BluffDrag, SizedBluffDrag)

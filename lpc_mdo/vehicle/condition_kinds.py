@@ -169,6 +169,9 @@ _AERO_INPUTS = tuple(
         "fuselage_length",
         "body_moment_slope",
         "body_moment_zero_lift",
+        # the landing-gear tyres of the drag build-up, sized from W_dg (groups/vehicle_drag.py)
+        "drag_main_wheels_frontal_area",
+        "drag_nose_wheel_frontal_area",
     )
 )
 
