@@ -1322,13 +1322,24 @@ def build_parser():
         _add_debug(command, argparse.SUPPRESS)  # also accepted after the command
         return command
 
+    def add_vehicle(command):
+        command.add_argument(
+            "--vehicle",
+            type=vehicle_type,
+            default=None,
+            help="vehicle TOML file (default: the reference vehicle)",
+        )
+
+    def add_trim_processes(command):
+        command.add_argument(
+            "--processes",
+            type=positive["--processes"],
+            default=os.cpu_count() or 1,
+            help="processes that trim conditions at the same time (default: the CPU count)",
+        )
+
     analyze = add_command("analyze", "analyze a vehicle's design conditions")
-    analyze.add_argument(
-        "--vehicle",
-        type=vehicle_type,
-        default=None,
-        help="vehicle TOML file (default: the reference vehicle)",
-    )
+    add_vehicle(analyze)
     analyze.add_argument(
         "--output-dir",
         default="analysis_out",
@@ -1345,35 +1356,20 @@ def build_parser():
         action="store_true",
         help="show the raw initial design, untrimmed (default: trim every condition)",
     )
-    analyze.add_argument(
-        "--processes",
-        type=positive["--processes"],
-        default=os.cpu_count() or 1,
-        help="processes that trim conditions at the same time (default: the CPU count)",
-    )
+    add_trim_processes(analyze)
     analyze.set_defaults(func=_analyze)
 
     size = add_command(
         "size", "close a vehicle's battery and gross mass on its mission (no optimizer)"
     )
-    size.add_argument(
-        "--vehicle",
-        type=vehicle_type,
-        default=None,
-        help="vehicle TOML file (default: the reference vehicle)",
-    )
+    add_vehicle(size)
     size.add_argument(
         "--output-dir",
         default="sizing_out",
         help=f"folder for {' and '.join(SIZING_FILES)}: the summary and the vehicle file with "
         "the closed battery mass and design gross mass, to optimize from (default: sizing_out)",
     )
-    size.add_argument(
-        "--processes",
-        type=positive["--processes"],
-        default=os.cpu_count() or 1,
-        help="processes that trim conditions at the same time (default: the CPU count)",
-    )
+    add_trim_processes(size)
     size.set_defaults(func=_size)
 
     start_case_type = _existing("--start-case", CASE_FILE_TEXT)

@@ -29,7 +29,7 @@ import tomllib
 from pathlib import Path
 
 from lpc_mdo.vehicle.mission_profile import DERIVED_KEYS
-from lpc_mdo.vehicle.toml_writer import toml_text
+from lpc_mdo.vehicle.toml_writer import write_generated_file
 
 ROOT = Path(__file__).resolve().parents[1]
 REFERENCE = ROOT / "lpc_mdo" / "data" / "lpc_reference.toml"
@@ -82,17 +82,18 @@ def main(argv=None):
     parser.add_argument("--output-dir", type=Path, default=ROOT / "lpc_mdo" / "data")
     args = parser.parse_args(argv)
     path = args.output_dir / NAME
-    if path.exists() and not path.read_text(encoding="utf-8").startswith(HEADER):
-        print(f"make_mission_example: error: {path} exists and was not written by this script")
-        return 1
-    lines = [
-        HEADER + " from lpc_mdo/data/lpc_reference.toml.",
+    comments = [
         "# The NASA lift-plus-cruise vehicle flying a designer's mission (segments, a reserve",
         "# rule, ISA+20); see the script's docstring for the mission and lpc_reference.toml for",
         "# the sources of every other value.",
-        "",
     ]
-    path.write_text("\n".join(lines) + "\n" + toml_text(example()), encoding="utf-8")
+    try:
+        write_generated_file(
+            path, HEADER + " from lpc_mdo/data/lpc_reference.toml.", comments, example()
+        )
+    except FileExistsError as err:
+        print(f"make_mission_example: error: {err}")
+        return 1
     print(f"wrote {path}")
     return 0
 

@@ -41,7 +41,7 @@ import tomllib
 from pathlib import Path
 
 from lpc_mdo.vehicle.mission_profile import DERIVED_KEYS
-from lpc_mdo.vehicle.toml_writer import toml_text
+from lpc_mdo.vehicle.toml_writer import write_generated_file
 
 ROOT = Path(__file__).resolve().parents[1]
 REFERENCE = ROOT / "lpc_mdo" / "data" / "lpc_reference.toml"
@@ -100,16 +100,17 @@ def main(argv=None):
     parser.add_argument("--output-dir", type=Path, default=ROOT / "lpc_mdo" / "data")
     args = parser.parse_args(argv)
     path = args.output_dir / NAME
-    if path.exists() and not path.read_text(encoding="utf-8").startswith(HEADER):
-        print(f"make_nasa_validation: error: {path} exists and was not written by this script")
-        return 1
-    lines = [
-        HEADER + " from lpc_mdo/data/lpc_reference.toml.",
+    comments = [
         "# The NASA lift-plus-cruise vehicle on NASA's UAM sizing mission (Johnson and Silva",
         "# 2022): see the script's docstring for each value and lpc_reference.toml for the rest.",
-        "",
     ]
-    path.write_text("\n".join(lines) + "\n" + toml_text(example()), encoding="utf-8")
+    try:
+        write_generated_file(
+            path, HEADER + " from lpc_mdo/data/lpc_reference.toml.", comments, example()
+        )
+    except FileExistsError as err:
+        print(f"make_nasa_validation: error: {err}")
+        return 1
     print(f"wrote {path}")
     return 0
 

@@ -5,7 +5,9 @@ header states where the values come from). Tables of tables become ``[a.b]`` hea
 tables ``[[a.b]]`` headers, in the order of the dicts.
 """
 
-__all__ = ["toml_text"]
+from pathlib import Path
+
+__all__ = ["toml_text", "write_generated_file"]
 
 
 def toml_text(data):
@@ -13,6 +15,19 @@ def toml_text(data):
     lines = []
     _table(lines, "", data)
     return "\n".join(lines) + "\n"
+
+
+def write_generated_file(path, header, comments, data):
+    """
+    Write ``data`` as TOML to ``path`` under ``header`` and the ``comments`` lines.
+
+    Raises FileExistsError for a file that is there and does not start with ``header`` (a file
+    the writing script did not create is never written over).
+    """
+    path = Path(path)
+    if path.exists() and not path.read_text(encoding="utf-8").startswith(header):
+        raise FileExistsError(f"{path} exists and was not written by this script")
+    path.write_text("\n".join([header, *comments, ""]) + "\n" + toml_text(data), encoding="utf-8")
 
 
 def _value(v):
