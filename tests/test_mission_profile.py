@@ -12,7 +12,8 @@ from openmdao.utils.assert_utils import assert_check_partials
 from lpc_mdo.components.atmosphere import AtmosphereComp, standard_atmosphere
 from lpc_mdo.components.energy.mission_energy import MissionEnergyComp
 from lpc_mdo.vehicle import VehicleSpecError, read_vehicle_file, vehicle_from_dict
-from lpc_mdo.vehicle.mission_profile import RESERVE_PRESETS, mission_profile
+from lpc_mdo.vehicle.mission_profile import mission_profile
+from lpc_mdo.vehicle.reserve_rules import RESERVE_PRESETS
 
 REFERENCE = read_vehicle_file()
 CLIMB_RATE = 60.8756 * math.sin(math.radians(4.3072))  # the reference climb, m/s

@@ -3,7 +3,8 @@
 import math
 
 from lpc_mdo.vehicle.condition_contract import condition_kind
-from lpc_mdo.vehicle.mission_profile import RESERVE_PRESETS, mission_profile
+from lpc_mdo.vehicle.mission_profile import mission_profile
+from lpc_mdo.vehicle.reserve_rules import RESERVE_PRESETS
 
 _J_PER_KWH = 3.6e6
 

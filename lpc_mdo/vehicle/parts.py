@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from lpc_mdo.vehicle.reserve_rules import RESERVE_RULES
 from lpc_mdo.vehicle.schema import _angle, _param, _Spec
 
 # ------------------------------------------------------------------------------------------------
@@ -641,13 +642,6 @@ class Motor:
     cable_mass_per_ampere_metre: float = _param("kg/(A*m)", ge=1e-4, le=1e-2)
 
 
-#: Reserve rules of ``mission.reserve.rule``: a time or a distance at a condition, or a named
-#: preset (:data:`lpc_mdo.vehicle.mission_profile.RESERVE_PRESETS`).
-RESERVE_RULES = (
-    "time", "distance", "faa_vfr_day", "faa_vfr_night", "faa_vfr_rotorcraft", "nasa_uam"
-)  # fmt: skip
-
-
 @dataclass(frozen=True)
 class MissionSegment:
     """One segment of the mission as a designer states it (``[[mission.segments]]``).
@@ -691,7 +685,7 @@ class MissionReserve:
     rule : str
         ``"time"`` (``duration``), ``"distance"`` (``distance``) or a preset of
         :data:`RESERVE_RULES` (its time or distance is the preset's; cited in
-        :data:`lpc_mdo.vehicle.mission_profile.RESERVE_PRESETS`).
+        :data:`lpc_mdo.vehicle.reserve_rules.RESERVE_PRESETS`).
     condition : str or None
         The condition flown in reserve; default the mission's cruise condition.
     duration : float or None
@@ -732,7 +726,7 @@ class Mission:
         The mission, in flight order.
     reserve : MissionReserve or None
         The reserve flown after the legs; None: no reserve (the final state-of-charge floor,
-        ``constraints.final_soc``, is then the only margin).
+        ``constraints.min_final_soc``, is then the only margin).
     reserve_condition, reserve_time : str or None, float
         Derived: the condition flown in reserve and for how long (s); None and 0 without one.
     """
