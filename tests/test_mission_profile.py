@@ -115,6 +115,18 @@ def test_reserve_presets_against_the_rule(rule, minutes):
     assert re.search(r"14 CFR|NASA", RESERVE_PRESETS[rule].source)
 
 
+def test_a_climb_by_its_flight_path_angle():
+    # gamma = 4.3072 deg at 60.8756 m/s: V_z = 4.5720 m/s (the reference's 900 ft/min).
+    data = segment_data()
+    data["mission"]["segments"][2] = {
+        "condition": "climb", "to_altitude": 999.74, "flight_path_angle_deg": 4.3072
+    }  # fmt: skip
+    climb = vehicle_from_dict(data).condition("climb")
+    assert climb.duration == pytest.approx((999.74 - 76.2) / CLIMB_RATE, rel=1e-12)
+    data["mission"]["segments"][2]["vertical_speed"] = CLIMB_RATE
+    _fails(data, "'mission.segments[2].flight_path_angle_deg' goes with 'to_altitude' in a")
+
+
 def test_reserve_by_distance_and_at_another_condition():
     vehicle = vehicle_from_dict(
         segment_data(reserve={"rule": "distance", "distance_km": 30.0, "condition": "climb"})
@@ -201,7 +213,7 @@ def test_bad_missions_get_one_named_error():
     )
     _fails(
         segment(3, to_altitude=2000.0),
-        "'mission.segments[3].vertical_speed' goes with 'to_altitude'",
+        "'mission.segments[3].vertical_speed' (or 'flight_path_angle_deg') goes with",
     )
     _fails(segment(0, distance_km=1.0), "a distance is flown in a 'steady' condition")
     _fails(segment(1, distance_km=1.0), "a transition segment is flown for a 'duration'")

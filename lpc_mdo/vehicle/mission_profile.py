@@ -30,7 +30,8 @@ Rules (each broken rule is a VehicleSpecError naming the segment):
 - transition: the points sharing a ``design_variable_prefix`` are one segment, ``duration`` split
   evenly among them (the quasi-steady points sample the manoeuvre at equal times);
 - steady: ``duration`` or ``distance`` in level flight; ``to_altitude`` with ``vertical_speed``
-  in a climb (``vertical_speed`` > 0 and a higher ``to_altitude``) or a descent;
+  (or ``flight_path_angle_deg``, V_z = V sin gamma) in a climb (positive, to a higher
+  ``to_altitude``) or a descent;
 - the conditions the segments fly leave ``altitude``, ``flight_path_angle``, ``duration`` and
   ``energy_weight`` out (the mission sets them); the others keep them, with no energy weight.
 """
@@ -107,12 +108,20 @@ def _segment_time(segment, condition, altitude, where, in_group):
             f"'vertical_speed'); given: {shown}"
         )
     (key,) = given
-    if (key == "to_altitude") != (segment.vertical_speed is not None):
-        raise VehicleSpecError(
-            f"'{where}.vertical_speed' goes with 'to_altitude' (a climb or descent) and only "
-            "with it"
-        )
     kind, speed = condition.kind, condition.speed
+    rate = segment.vertical_speed
+    if segment.flight_path_angle is not None:
+        if rate is not None or kind != "steady":
+            raise VehicleSpecError(
+                f"'{where}.flight_path_angle_deg' goes with 'to_altitude' in a 'steady' "
+                "condition, in place of 'vertical_speed' (not with it)"
+            )
+        rate = speed * math.sin(segment.flight_path_angle)
+    if (key == "to_altitude") != (rate is not None):
+        raise VehicleSpecError(
+            f"'{where}.vertical_speed' (or 'flight_path_angle_deg') goes with 'to_altitude' (a "
+            "climb or descent) and only with it"
+        )
     if in_group and key != "duration":
         raise VehicleSpecError(
             f"'{where}': a transition segment is flown for a 'duration' (split among its "
@@ -127,7 +136,7 @@ def _segment_time(segment, condition, altitude, where, in_group):
                 "distance is flown in a 'steady' condition (a hover covers none)"
             )
         return segment.distance / speed, altitude, 0.0, segment.distance
-    rate, target = segment.vertical_speed, segment.to_altitude
+    target = segment.to_altitude
     rise = target - altitude
     if rate == 0.0 or rise == 0.0 or (rate > 0.0) != (rise > 0.0):
         verb = "climb" if rate > 0.0 else "descent"

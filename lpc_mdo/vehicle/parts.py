@@ -665,6 +665,9 @@ class MissionSegment:
         Altitude at the segment's end (m); with ``vertical_speed``.
     vertical_speed : float or None
         Rate of climb (m/s), negative descending; with ``to_altitude``.
+    flight_path_angle : float or None
+        Or the climb's flight-path angle (rad), file key ``flight_path_angle_deg``: V_z = V sin
+        gamma at the condition's speed (a steady condition only).
     """
 
     condition: str = _param()
@@ -674,6 +677,8 @@ class MissionSegment:
     distance: float = _param("km", gt=0, le=5000, suffix="_km", scale=1000.0, optional=True)
     to_altitude: float = _param("m", ge=0, le=11000, optional=True)
     vertical_speed: float = _param("m/s", ge=-25, le=25, optional=True)
+    # Within 30 deg either way: steeper is no longer a climb of a fixed-wing flight condition.
+    flight_path_angle: float = _angle(gt=-30, lt=30, optional=True)
 
 
 @dataclass(frozen=True)
