@@ -1060,6 +1060,9 @@ SIZING_FILES = ("sizing.txt", "sized_vehicle.toml")
 def _size(args):
     out = Path(args.output_dir)
     out.mkdir(parents=True, exist_ok=True)
+    replaced = [out / name for name in SIZING_FILES if (out / name).exists()]
+    if replaced:
+        print(f"lpc-mdo: replacing {', '.join(str(p) for p in replaced)}")
     result = size_vehicle(args.vehicle_spec, processes=args.processes, log=print)
     text = result.summary()
     print(text)
