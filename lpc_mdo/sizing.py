@@ -53,6 +53,11 @@ MASS_TOLERANCE = 0.01
 #: carry itself grows faster than its capacity (no battery-electric design in the literature
 #: exceeds about 40 %; NASA's lift+cruise: 22 %, Johnson and Silva 2022, Table 3).
 MAX_BATTERY_FRACTION = 0.6
+#: Units of the summary: J per kWh; Pa per lb/ft^2 (4.4482216 N over 0.09290304 m^2); W per
+#: mechanical horsepower (550 ft lbf/s).
+_J_PER_KWH = 3.6e6
+_PA_PER_PSF = 4.4482216152605 / 0.09290304
+_W_PER_HP = 745.69987158227
 
 
 class SizingError(om.AnalysisError):
@@ -85,16 +90,17 @@ class SizingResult:
             f"{self.soc_floor:g}), W0 {self.gross_mass:.2f} kg, W_dg "
             f"{self.design_gross_mass:.2f} kg",
             f"  gross mass      {self.gross_mass:10.2f} kg",
-            f"  battery         {self.battery_mass:10.2f} kg, {self.battery_energy / 3.6e6:.1f} "
-            f"kWh ({self.energy_used / 3.6e6:.1f} kWh used over the mission and reserve)",
+            f"  battery         {self.battery_mass:10.2f} kg, "
+            f"{self.battery_energy / _J_PER_KWH:.1f} kWh ({self.energy_used / _J_PER_KWH:.1f} "
+            "kWh used over the mission and reserve)",
             f"  empty mass      {self.gross_mass - self.breakdown.get('payload', 0.0):10.2f} kg "
             "(gross minus payload, battery included)",
             f"  disk loading    {self.disk_loading:10.1f} N/m^2 "
-            f"({self.disk_loading / 47.880259:.2f} lb/ft^2)",
+            f"({self.disk_loading / _PA_PER_PSF:.2f} lb/ft^2)",
         ]
         for name, (power, where) in self.installed_power.items():
             lines.append(
-                f"  {name:<15} {power / 1e3:10.1f} kW per motor ({power / 745.7:.0f} hp), "
+                f"  {name:<15} {power / 1e3:10.1f} kW per motor ({power / _W_PER_HP:.0f} hp), "
                 f"the most over the conditions: {where}"
             )
         lines.append("  steps (battery kg, W0 kg, state of charge):")
@@ -209,7 +215,7 @@ def _close(vehicle, processes, max_steps, log, history):
             raise SizingError(
                 f"the mission does not close: at step {step} the battery would be {battery:.0f} "
                 f"kg of a {gross:.0f} kg vehicle (more than {MAX_BATTERY_FRACTION:.0%}), the "
-                f"mission and reserve taking {energy / 3.6e6:.1f} kWh; shorten the mission or "
+                f"mission and reserve taking {energy / _J_PER_KWH:.1f} kWh; shorten the mission or "
                 "the reserve, or raise battery.energy_density"
             )
         residual = battery - energy / (density * (soc0 - floor))
@@ -246,10 +252,10 @@ def _reserve_fits(prob, vehicle):
         raise SizingError(
             f"'mission.reserve': {mission.reserve_time / 60:.4g} min at "
             f"{mission.reserve_condition!r} ({power / 1e3:.0f} kW) take "
-            f"{power * mission.reserve_time / 3.6e6:.0f} kWh, more than a battery of "
+            f"{power * mission.reserve_time / _J_PER_KWH:.0f} kWh, more than a battery of "
             f"{MAX_BATTERY_FRACTION:.0%} of the {gross:.0f} kg vehicle holds between its charge "
-            f"and the floor ({largest / 3.6e6:.0f} kWh); allowed: a shorter reserve, or a higher "
-            "battery.energy_density"
+            f"and the floor ({largest / _J_PER_KWH:.0f} kWh); allowed: a shorter reserve, or a "
+            "higher battery.energy_density"
         )
 
 
