@@ -1306,7 +1306,7 @@ def build_parser():
     # together would pass the given-twice check, and a future option could change its meaning.
     parser = _Parser(
         prog="lpc-mdo",
-        description="Analyze, optimize, sweep and report the NASA lift-plus-cruise eVTOL.",
+        description="Analyze, size, optimize, sweep and report the NASA lift-plus-cruise eVTOL.",
         allow_abbrev=False,
     )
     _add_debug(parser, False)

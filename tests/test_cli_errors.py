@@ -698,7 +698,7 @@ def test_messages_say_what_is_allowed(paths, capsys, no_pyoptsparse):
         + ("--problem", "subproblem_4"): "has no noise constraint",
         ("--vehicle", "{vehicle.toml}", "analyze"): (
             "'--vehicle' must come after the command: lpc-mdo analyze --vehicle ... "
-            "(commands: analyze, optimize, sweep, report)"
+            "(commands: analyze, size, optimize, sweep, report)"
         ),
         ("--max-iter", "5", "sweep", "--start-case", "{good.sql}"): "lpc-mdo sweep --max-iter",
         ("--n2", "n2.html", "optimize"): "lpc-mdo analyze --n2 ... (commands: analyze, "

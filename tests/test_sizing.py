@@ -65,7 +65,7 @@ def test_the_sized_file_carries_the_masses_and_absolute_paths(tmp_path, monkeypa
     assert 'airfoil = "ls413"' in sized  # a named airfoil stays
 
 
-@pytest.mark.integration
+@pytest.mark.slow  # 30 s; the NASA validation test closes a vehicle in the integration tier
 def test_the_reference_closes_on_its_mission(tmp_path, capsys):
     # Acceptance: state of charge on its floor within 0.001, the gross-mass fixed point within
     # 0.1 kg (the closure's own tolerances are 1e-4 and 0.01 kg).
