@@ -702,7 +702,7 @@ def test_messages_say_what_is_allowed(paths, capsys, no_pyoptsparse):
         ),
         ("--max-iter", "5", "sweep", "--start-case", "{good.sql}"): "lpc-mdo sweep --max-iter",
         ("--n2", "n2.html", "optimize"): "lpc-mdo analyze --n2 ... (commands: analyze, "
-        "optimize, sweep, report); optimize has no --n2",
+        "size, optimize, sweep, report); optimize has no --n2",
         ("--start", "{good.sql}", "sweep"): "lpc-mdo sweep --start-case ...",
         ("analyze", "--output-dir", "{out}", "--n2", "{out}/../out"): "is the folder --output-dir",
         ("analyze", "--output-dir", "{out}/a/b", "--n2", "{out}/a"): "is a folder of --output-dir",
