@@ -7,14 +7,13 @@ conventions.
 
 from __future__ import annotations
 
-import functools
 import math
-import os
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 import numpy as np
 
+from lpc_mdo.components.aero.airfoil_coordinates import read_coordinates
 from lpc_mdo.vehicle.reserve_rules import RESERVE_RULES
 from lpc_mdo.vehicle.schema import _angle, _param, _Spec
 
@@ -73,22 +72,6 @@ OTHER_MASS_RULES = ("fixed", "calibrated")
 SECTION_THICKNESS_RANGE = (0.04, 0.25)
 _IDENTIFIER = "an identifier (letters, digits and '_', not starting with a digit)"
 _AIRFOIL_NAMES = tuple(AIRFOILS)
-
-
-def section_shape(path: str):
-    """Return the section shape of a coordinate file, read once per file version.
-
-    An :class:`~lpc_mdo.components.aero.airfoil_coordinates.AirfoilShape`; a file is read again
-    when its modification time changes.
-    """
-    return _section_shape(path, os.stat(path).st_mtime_ns)
-
-
-@functools.lru_cache(maxsize=32)
-def _section_shape(path: str, _mtime_ns: int):
-    from lpc_mdo.components.aero.airfoil_coordinates import read_coordinates
-
-    return read_coordinates(path)
 
 
 # ------------------------------------------------------------------------------------------------
@@ -173,14 +156,14 @@ class LiftingSurface:
     def thickness_to_chord(self) -> float:
         """Section t/c (-): from :attr:`coordinates` if given, else of the named airfoil."""
         if self.coordinates is not None:
-            return section_shape(self.coordinates).thickness_to_chord
+            return read_coordinates(self.coordinates).thickness_to_chord
         return AIRFOILS[self.airfoil].thickness_to_chord
 
     @property
     def max_thickness_location(self) -> float:
         """Section (x/c)_m (-): from :attr:`coordinates` if given, else of the named airfoil."""
         if self.coordinates is not None:
-            return section_shape(self.coordinates).max_thickness_location
+            return read_coordinates(self.coordinates).max_thickness_location
         return AIRFOILS[self.airfoil].max_thickness_location
 
 

@@ -260,30 +260,31 @@ def _input_file(value: str, path: str, what: str) -> str:
 
 
 def _polar_file(value: str, path: str) -> str:
-    """Resolve and load a polar file named in a vehicle file; return its absolute path.
-
-    The file is loaded (``components.aero.airfoil.get_polar``) so that a malformed table is a
-    :class:`VehicleSpecError` naming the key, not an error during the run.
-    """
+    """Resolve and load a polar file named in a vehicle file; return its absolute path."""
     from lpc_mdo.components.aero.airfoil import get_polar
 
-    found = _input_file(value, path, "polar file")
-    try:
-        get_polar(found)
-    except (ValueError, OSError) as exc:
-        raise VehicleSpecError(f"'{path}' = {value!r}: invalid polar file: {exc}") from exc
-    return found
+    return _read_file(value, path, "polar file", "polar file", get_polar)
 
 
 def _coordinate_file(value: str, path: str) -> str:
     """Resolve and read an airfoil coordinate file named in a vehicle file; its absolute path."""
     from lpc_mdo.components.aero.airfoil_coordinates import read_coordinates
 
-    found = _input_file(value, path, "coordinate file (Selig format)")
+    what = "coordinate file (Selig format)"
+    return _read_file(value, path, what, "coordinate file", read_coordinates)
+
+
+def _read_file(value: str, path: str, what: str, kind: str, read) -> str:
+    """Resolve a file (``what`` it must be) and read it with ``read``; its absolute path.
+
+    Reading at load time makes a malformed file a :class:`VehicleSpecError` naming the key, not
+    an error during the run.
+    """
+    found = _input_file(value, path, what)
     try:
-        read_coordinates(found)
+        read(found)
     except (ValueError, OSError) as exc:
-        raise VehicleSpecError(f"'{path}' = {value!r}: invalid coordinate file: {exc}") from exc
+        raise VehicleSpecError(f"'{path}' = {value!r}: invalid {kind}: {exc}") from exc
     return found
 
 

@@ -20,7 +20,8 @@ from __future__ import annotations
 import dataclasses
 import math
 
-from lpc_mdo.vehicle.parts import AIRFOILS, SECTION_THICKNESS_RANGE, Rotor, section_shape
+from lpc_mdo.components.aero.airfoil_coordinates import read_coordinates
+from lpc_mdo.vehicle.parts import AIRFOILS, SECTION_THICKNESS_RANGE, Rotor
 from lpc_mdo.vehicle.schema import VehicleSpecError
 
 #: Largest difference (deg) between a polar's zero-lift angle and the thin-airfoil one of its
@@ -110,7 +111,7 @@ def check_surface_sections(parts: dict) -> None:
             )
         if surface.coordinates is None:
             continue
-        shape = section_shape(surface.coordinates)
+        shape = read_coordinates(surface.coordinates)
         low, high = SECTION_THICKNESS_RANGE
         if not low <= shape.thickness_to_chord <= high:
             raise VehicleSpecError(
