@@ -21,7 +21,6 @@ weights (docs user guide 'Bring your own vehicle'):
 Refuses to write over a file it did not create (a file without this script's header).
 """
 
-import argparse
 import copy
 import math
 import sys
@@ -29,7 +28,7 @@ import tomllib
 from pathlib import Path
 
 from lpc_mdo.vehicle.mission_profile import DERIVED_KEYS
-from lpc_mdo.vehicle.toml_writer import write_generated_file
+from lpc_mdo.vehicle.toml_writer import example_script_main
 
 ROOT = Path(__file__).resolve().parents[1]
 REFERENCE = ROOT / "lpc_mdo" / "data" / "lpc_reference.toml"
@@ -78,24 +77,15 @@ def example():
 
 def main(argv=None):
     """Write the example; refuse a file this script did not write."""
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--output-dir", type=Path, default=ROOT / "lpc_mdo" / "data")
-    args = parser.parse_args(argv)
-    path = args.output_dir / NAME
     comments = [
         "# The NASA lift-plus-cruise vehicle flying a designer's mission (segments, a reserve",
         "# rule, ISA+20); see the script's docstring for the mission and lpc_reference.toml for",
         "# the sources of every other value.",
     ]
-    try:
-        write_generated_file(
-            path, HEADER + " from lpc_mdo/data/lpc_reference.toml.", comments, example()
-        )
-    except FileExistsError as err:
-        print(f"make_mission_example: error: {err}")
-        return 1
-    print(f"wrote {path}")
-    return 0
+    return example_script_main(
+        argv, "make_mission_example", __doc__, ROOT / "lpc_mdo" / "data", NAME,
+        HEADER + " from lpc_mdo/data/lpc_reference.toml.", comments, example,
+    )  # fmt: skip
 
 
 if __name__ == "__main__":

@@ -35,13 +35,12 @@ its figure) mentions.
 Refuses to write over a file it did not create (a file without this script's header).
 """
 
-import argparse
 import sys
 import tomllib
 from pathlib import Path
 
 from lpc_mdo.vehicle.mission_profile import DERIVED_KEYS
-from lpc_mdo.vehicle.toml_writer import write_generated_file
+from lpc_mdo.vehicle.toml_writer import example_script_main
 
 ROOT = Path(__file__).resolve().parents[1]
 REFERENCE = ROOT / "lpc_mdo" / "data" / "lpc_reference.toml"
@@ -96,23 +95,14 @@ def example():
 
 def main(argv=None):
     """Write the file; refuse one this script did not write."""
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--output-dir", type=Path, default=ROOT / "lpc_mdo" / "data")
-    args = parser.parse_args(argv)
-    path = args.output_dir / NAME
     comments = [
         "# The NASA lift-plus-cruise vehicle on NASA's UAM sizing mission (Johnson and Silva",
         "# 2022): see the script's docstring for each value and lpc_reference.toml for the rest.",
     ]
-    try:
-        write_generated_file(
-            path, HEADER + " from lpc_mdo/data/lpc_reference.toml.", comments, example()
-        )
-    except FileExistsError as err:
-        print(f"make_nasa_validation: error: {err}")
-        return 1
-    print(f"wrote {path}")
-    return 0
+    return example_script_main(
+        argv, "make_nasa_validation", __doc__, ROOT / "lpc_mdo" / "data", NAME,
+        HEADER + " from lpc_mdo/data/lpc_reference.toml.", comments, example,
+    )  # fmt: skip
 
 
 if __name__ == "__main__":

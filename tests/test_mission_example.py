@@ -1,22 +1,18 @@
 """The shipped mission example: ISA+20, two cruise segments, a reserve rule; it trims."""
 
-import importlib.util
 from importlib import resources
-from pathlib import Path
 
 import pytest
+from run_script_loader import load_run_script
 
 from lpc_mdo.analysis import analyze_vehicle
 from lpc_mdo.vehicle import load_vehicle
 
 EXAMPLE = resources.files("lpc_mdo") / "data" / "lpc_mission_example.toml"
-SCRIPT = Path(__file__).resolve().parents[1] / "run_scripts" / "make_mission_example.py"
 
 
 def test_the_shipped_file_is_what_its_script_writes(tmp_path):
-    spec = importlib.util.spec_from_file_location("make_mission_example", SCRIPT)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
+    module = load_run_script("make_mission_example")
     assert module.main(["--output-dir", str(tmp_path)]) == 0
     assert (tmp_path / module.NAME).read_text() == EXAMPLE.read_text()
 

@@ -1,16 +1,14 @@
 """NASA's own sizing of the lift-plus-cruise vehicle as a validation case."""
 
-import importlib.util
 from importlib import resources
-from pathlib import Path
 
 import pytest
+from run_script_loader import load_run_script
 
 from lpc_mdo.sizing import size_vehicle
 from lpc_mdo.vehicle import load_vehicle
 
 VEHICLE = resources.files("lpc_mdo") / "data" / "nasa_lpc_mission.toml"
-SCRIPT = Path(__file__).resolve().parents[1] / "run_scripts" / "make_nasa_validation.py"
 LB, KW_PER_HP = 0.45359237, 0.7457
 
 #: NASA's numbers (AIAA 2018-3847 Table 3, as transcribed; docs results 'Validation') and the
@@ -32,9 +30,7 @@ DOCUMENTED = {
 
 
 def test_the_shipped_file_is_what_its_script_writes(tmp_path):
-    spec = importlib.util.spec_from_file_location("make_nasa_validation", SCRIPT)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
+    module = load_run_script("make_nasa_validation")
     assert module.main(["--output-dir", str(tmp_path)]) == 0
     assert (tmp_path / module.NAME).read_text() == VEHICLE.read_text()
     vehicle = load_vehicle(VEHICLE)

@@ -4,26 +4,15 @@ They are run by hand (benchmarks, derivative verification), not by the test suit
 of the model's or the problem's API would otherwise go unnoticed until someone runs them.
 """
 
-import importlib.util
-from pathlib import Path
-
 import pytest
+from run_script_loader import load_run_script
 
 #: Builds or runs the full model: the integration tier (README, 'Run the tests').
 pytestmark = pytest.mark.integration
 
-RUN_SCRIPTS = Path(__file__).resolve().parents[1] / "run_scripts"
-
-
-def _load(name):
-    spec = importlib.util.spec_from_file_location(name, RUN_SCRIPTS / f"{name}.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
 
 def test_benchmark_lpc_builds_the_table6_problem():
-    prob = _load("benchmark_lpc").build()
+    prob = load_run_script("benchmark_lpc").build()
     dvs = prob.model.get_design_vars()
     cons = prob.model.get_constraints()
     assert sum(m["size"] for m in dvs.values()) == 161 + 20
@@ -41,7 +30,7 @@ def test_close_initial_design_writes_gauges_and_design_gross_mass(tmp_path):
 
     from lpc_mdo.vehicle import load_vehicle, reference_vehicle
 
-    script = _load("close_initial_design")
+    script = load_run_script("close_initial_design")
     path = tmp_path / "lpc.toml"
     shutil.copy(script.REFERENCE_FILE, path)
     gauges = {name: [1e-3 * (k + 1)] * 8 for k, name in enumerate(script.THICKNESSES)}

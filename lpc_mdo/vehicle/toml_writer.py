@@ -5,9 +5,10 @@ header states where the values come from). Tables of tables become ``[a.b]`` hea
 tables ``[[a.b]]`` headers, in the order of the dicts.
 """
 
+import argparse
 from pathlib import Path
 
-__all__ = ["toml_text", "write_generated_file"]
+__all__ = ["example_script_main", "toml_text", "write_generated_file"]
 
 
 def toml_text(data):
@@ -28,6 +29,27 @@ def write_generated_file(path, header, comments, data):
     if path.exists() and not path.read_text(encoding="utf-8").startswith(header):
         raise FileExistsError(f"{path} exists and was not written by this script")
     path.write_text("\n".join([header, *comments, ""]) + "\n" + toml_text(data), encoding="utf-8")
+
+
+def example_script_main(argv, tool, doc, default_dir, name, header, comments, build):
+    """
+    Run a script that writes an example vehicle file (``build()``) into ``--output-dir``.
+
+    ``--output-dir`` defaults to ``default_dir``; the file is ``name`` there, written by
+    :func:`write_generated_file`. Returns the exit code: 0 written, 1 a file there that the
+    script did not write (said on stdout).
+    """
+    parser = argparse.ArgumentParser(prog=tool, description=doc.splitlines()[0])
+    parser.add_argument("--output-dir", type=Path, default=Path(default_dir))
+    args = parser.parse_args(argv)
+    path = args.output_dir / name
+    try:
+        write_generated_file(path, header, comments, build())
+    except FileExistsError as err:
+        print(f"{tool}: error: {err}")
+        return 1
+    print(f"wrote {path}")
+    return 0
 
 
 def _value(v):
