@@ -1240,13 +1240,17 @@ def test_bad_polar_file_is_a_named_error(tmp_path, name, content, fragment):
     assert fragment in message, message
 
 
+#: The reference with every rotor on the polar file polars/blade.dat, relative to the vehicle file.
+RELATIVE_POLAR_TEXT = REFERENCE_TEXT.replace(
+    'airfoil = "naca0012"', 'airfoil = "polars/blade.dat"\nthickness_to_chord = 0.12'
+)
+
+
 def test_missing_polar_file_says_where_it_looked(tmp_path, monkeypatch):
     vehicle_file = tmp_path / "vehicle" / "my_lpc.toml"
     vehicle_file.parent.mkdir()
     vehicle_file.write_text(
-        REFERENCE_TEXT.replace(
-            'airfoil = "naca0012"', 'airfoil = "polars/blade.dat"\nthickness_to_chord = 0.12'
-        ),
+        RELATIVE_POLAR_TEXT,
         "utf-8",
     )
     work = tmp_path / "work"
@@ -1266,9 +1270,7 @@ def test_relative_polar_path_is_resolved_against_the_vehicle_file_folder(tmp_pat
     (folder / "polars" / "blade.dat").write_text("alpha cl cd\n" + _rows(), "utf-8")
     vehicle_file = folder / "my_lpc.toml"
     vehicle_file.write_text(
-        REFERENCE_TEXT.replace(
-            'airfoil = "naca0012"', 'airfoil = "polars/blade.dat"\nthickness_to_chord = 0.12'
-        ),
+        RELATIVE_POLAR_TEXT,
         "utf-8",
     )
     monkeypatch.chdir(tmp_path)  # not the vehicle file's folder
