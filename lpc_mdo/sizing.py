@@ -1,8 +1,8 @@
 """
-Size a vehicle to its mission without an optimizer: battery to the floor, gross-mass fixed point.
+Size a vehicle to its mission without an optimizer: battery, gross mass and motors.
 
-:func:`size_vehicle` holds the vehicle's design (planform, rotors, motors, wing box) and closes
-the two quantities a sizing code closes on its mission (as NDARC or FLOPS do):
+:func:`size_vehicle` holds the vehicle's planform, rotors and wing box and closes what a sizing
+code closes on its mission (as NDARC or FLOPS do):
 
 - the battery mass m_b, so that the mission and its reserve end at the state-of-charge floor
   ``constraints.min_final_soc``: with the battery model SoC = SoC_0 - E/(e m_b) (docs
@@ -11,17 +11,19 @@ the two quantities a sizing code closes on its mission (as NDARC or FLOPS do):
   g(m_b) = m_b - m*(m_b) (the energy grows with the battery's own mass, so plain substitution
   converges slowly, by a factor of about 0.4 per step);
 - the design gross mass W_dg of the regressions that scale with it (landing gear, wing secondary
-  structure, systems; docs theory/weights) equal to the gross mass W0 it gives, by substitution
-  W_dg <- W0 on model runs without a trim at each new battery mass (the slope dW0/dW_dg is
-  about 0.14); a calibrated vehicle, ``masses.other_rule = "calibrated"``, keeps its W_dg (its
-  W_other closes it);
+  structure, systems; docs theory/weights) equal to the gross mass W0 it gives, by secant steps
+  on model runs at each new battery mass (the slope dW0/dW_dg is about 0.14); a calibrated
+  vehicle, ``masses.other_rule = "calibrated"``, keeps its W_dg (its W_other closes it);
+- each motor design to its margins at the step's loads (:mod:`lpc_mdo.motor_sizing`: the
+  length to the torque margin and the control reserve, the winding to the bus), in every
+  condition whose motors turn (hover, one rotor out, transition, climb, cruise, descent);
 
-each step then re-trimming the mission's conditions at the new masses (:func:`lpc_mdo.trim.trim`).
-Closed: SoC within 1e-4 of SoC_min and W0 within 0.01 kg of W_dg (which also sizes the landing
-gear's tyres and so their drag). Then the hover and one-rotor-out
-conditions are trimmed once for the installed powers: each motor group's largest shaft power
-over the conditions. The motors, rotors, wing and its gauges stay as the vehicle file gives them
-(the optimizer sizes those).
+each step trimming those conditions at the step's masses and motors (:func:`lpc_mdo.trim.trim`).
+Closed: SoC within 1e-4 of SoC_min, W0 within 0.01 kg of W_dg (which also sizes the landing
+gear's tyres and so their drag), and the motors sized at the step's loads within 0.2 mm and 1 A
+of those the step flew; then one more trim flies the sized motors, so that their margins sit at
+the limits (the battery and W_dg still closed there). The rotors, the wing and its gauges stay
+as the vehicle file gives them (the optimizer sizes those).
 """
 
 from __future__ import annotations
@@ -39,16 +41,44 @@ import openmdao.api as om
 
 from lpc_mdo.api.weights import mass_breakdown
 from lpc_mdo.core.constants import GRAVITY
+from lpc_mdo.motor_sizing import (
+    CURRENT,
+    LENGTH,
+    MotorSizing,
+    MotorSizingError,
+    control_ratio,
+    motor_margins,
+    size_motors,
+)
 from lpc_mdo.problems import build_analysis_problem
 from lpc_mdo.trim import trim
 from lpc_mdo.vehicle import AIRFOILS, load_vehicle
-from lpc_mdo.vehicle.file_edit import replace_table_value
+from lpc_mdo.vehicle.file_edit import replace_initial, replace_table_value
 
 __all__ = ["SizingError", "SizingResult", "size_vehicle", "sized_vehicle_text"]
 
 #: Closure tolerances: state of charge (-) and W0 - W_dg (kg).
 SOC_TOLERANCE = 1e-4
 MASS_TOLERANCE = 0.01
+#: Motors closed when a step's sizing moves no length by more than this (m; 0.2 mm, 0.2 % of a
+#: lift motor: 0.5 % of its peak torque) and no winding by more than this (A).
+LENGTH_TOLERANCE = 2e-4
+CURRENT_TOLERANCE = 1.0
+#: A step that moves the motors by less than this (m) and no winding keeps the motors it flew;
+#: otherwise a closed step is followed by one more trim with the sized motors.
+EXACT_LENGTH = 1e-5
+#: dW0/dm_b with W_dg closed: 1/(1 - 0.14), dW0/dW_dg about 0.14 (module docstring): the slope
+#: of the battery closure until a secant replaces it.
+GROSS_PER_BATTERY = 1.0 / (1.0 - 0.14)
+#: d ln(L)/d ln(W0) of a motor sized for hover torque: the peak torque grows as L^3 at a fixed L/D
+#: (the mass (pi/2) A B D^2 L over a torque density, docs theory/motor 'Sizing'), the hover torque
+#: as W0^(3/2) at a fixed rotor speed (momentum theory, P = T^(3/2)/sqrt(2 rho A)). It predicts
+#: the next step's motors, which speeds the closure; the closed motors do not depend on it.
+LENGTH_PER_GROSS_EXPONENT = 0.5
+#: The largest motor length change (m) of a step whose battery residual a secant may use.
+SECANT_MOTOR_MOVE = 1e-3
+#: Condition kinds whose motors turn: the conditions the motors are sized in.
+MOTOR_KINDS = ("hover", "oei", "transition", "steady")
 #: A battery heavier than this fraction of the gross mass does not close: the energy it adds to
 #: carry itself grows faster than its capacity (no battery-electric design in the literature
 #: exceeds about 40 %; NASA's lift+cruise: 22 %, Johnson and Silva 2022, Table 3).
@@ -78,6 +108,8 @@ class SizingResult:
     design_gross_mass: float
     disk_loading: float
     installed_power: dict
+    motors: MotorSizing
+    peak_torque: np.ndarray
     breakdown: dict
     history: list
     seconds: float
@@ -103,6 +135,18 @@ class SizingResult:
                 f"  {name:<15} {power / 1e3:10.1f} kW per motor ({power / _W_PER_HP:.0f} hp), "
                 f"the most over the conditions: {where}"
             )
+        m = self.motors
+        lines.append(
+            "  motor designs   length  winding  peak torque  torque margin  voltage margin  "
+            "length set by"
+        )
+        for k, label in enumerate(m.labels):
+            lines.append(
+                f"    {label:<44} {m.length[k] * 1e3:6.1f} mm {m.rated_current[k]:5.0f} A "
+                f"{self.peak_torque[k]:8.1f} N m {m.torque_margin[k]:8.3f} "
+                f"{m.voltage_margin[k]:14.3f}   {m.sets_length[k]}"
+            )
+        lines.append(f"  control reserve / required acceleration: {m.control_ratio:.2f}")
         lines.append("  steps (battery kg, W0 kg, state of charge):")
         lines += [f"    {m:10.2f} {w:10.2f} {s:8.4f}" for m, w, s in self.history]
         return "\n".join(lines)
@@ -145,11 +189,8 @@ def size_vehicle(vehicle=None, processes=1, max_steps=12, log=None):
     if vehicle is None or isinstance(vehicle, (str,)) or hasattr(vehicle, "__fspath__"):
         vehicle = load_vehicle(vehicle)
     history = []
-    prob, conditions, state = _close(vehicle, processes, max_steps, log, history)
+    prob, conditions, state, motors = _close(vehicle, processes, max_steps, log, history)
     battery, design, gross, soc, energy = state
-    others = [n for n in conditions if n not in _mission_conditions(vehicle)]
-    if others:
-        _trim(prob, others, processes, "installed power")
     return SizingResult(
         vehicle=vehicle.name,
         gross_mass=gross,
@@ -161,6 +202,8 @@ def size_vehicle(vehicle=None, processes=1, max_steps=12, log=None):
         design_gross_mass=design,
         disk_loading=_disk_loading(prob, vehicle, gross),
         installed_power=_installed_power(prob, conditions),
+        motors=motors,
+        peak_torque=np.ravel(prob.get_val("motor_peak_torque", units="N*m")).copy(),
         breakdown=dict(mass_breakdown(prob)),
         history=history,
         seconds=time.perf_counter() - start,
@@ -168,10 +211,16 @@ def size_vehicle(vehicle=None, processes=1, max_steps=12, log=None):
 
 
 def _close(vehicle, processes, max_steps, log, history):
-    """Close the battery and W_dg; return (prob, conditions, (battery, W_dg, W0, SoC, energy))."""
+    """Close the battery, W_dg and the motors; return (prob, conditions, state, motors).
+
+    ``state`` is (battery, W_dg, W0, SoC, energy) of the last trim. Each step trims every
+    condition whose motors turn at the step's battery, W_dg and motors, sizes the motors at
+    those loads (:func:`lpc_mdo.motor_sizing.size_motors`) and takes a secant step on the
+    battery; closed when the state of charge and W_dg are closed and the sizing moved no motor
+    by more than its tolerance (the motors the step flew are kept).
+    """
     mission = _mission_conditions(vehicle)
-    hover = [c.name for c in vehicle.conditions if c.kind in ("hover", "oei")]
-    conditions = [c.name for c in vehicle.conditions if c.name in mission or c.name in hover]
+    conditions = [c.name for c in vehicle.conditions if c.kind in MOTOR_KINDS or c.name in mission]
     prob = build_analysis_problem(
         vehicle, name="sizing", conditions=conditions, static_margin=False
     )
@@ -181,8 +230,11 @@ def _close(vehicle, processes, max_steps, log, history):
     start_values = {
         name: prob.get_val(name).copy()
         for name in prob.model.get_design_vars(use_prom_ivc=True)
-        if name != "battery_mass"
+        if name not in ("battery_mass", LENGTH, CURRENT)
     }
+    motors = {name: prob.get_val(name).copy() for name in (LENGTH, CURRENT)}
+    dv = vehicle.design_variables[LENGTH]
+    length_bounds = (np.asarray(dv.lower_array, float), np.asarray(dv.upper_array, float))
     floor = vehicle.constraints.min_final_soc
     soc0 = vehicle.battery.initial_soc
     density = vehicle.battery.energy_density
@@ -190,27 +242,52 @@ def _close(vehicle, processes, max_steps, log, history):
     battery = float(prob.get_val("battery_mass", units="kg")[0])
     design = vehicle.masses.design_gross_mass
     _reserve_fits(prob, vehicle)
-    previous, slope = None, None
+    previous, polish, sized = None, False, None
     for step in range(1, max_steps + 1):
         prob.set_val("battery_mass", battery, units="kg")
-        for name, value in start_values.items():
+        for name, value in {**start_values, **motors}.items():
             prob.set_val(name, value)
         if not calibrated:
             design = _close_design_gross_mass(prob, design)
         prob.set_val("design_gross_mass", design, units="kg")
-        _trim(prob, mission, processes, f"step {len(history) + 1}")
+        _trim(prob, conditions, processes, f"step {step}")
         soc = float(prob.get_val("state_of_charge")[0])
         gross = float(prob.get_val("gross_mass", units="kg")[0])
         energy = float(prob.get_val("energy_used", units="J")[0])
+        state = (battery, design, gross, soc, energy)
+        closed_mass = calibrated or abs(gross - design) <= MASS_TOLERANCE
+        closed = abs(soc - floor) <= SOC_TOLERANCE and closed_mass
+        if polish and closed:  # flown with the motors sized at the previous step's loads
+            history.append((battery, gross, soc))
+            if log is not None:
+                log(
+                    f"size: step {step}: battery {battery:.2f} kg, W0 {gross:.2f} kg, SoC "
+                    f"{soc:.4f}; the motors sized at step {step - 1}'s loads"
+                )
+            return prob, conditions, state, _flown_motors(prob, vehicle, motors, sized)
+        try:
+            sized = size_motors(prob, vehicle, guess=motors)
+        except MotorSizingError as err:
+            raise SizingError(f"sizing the motors at step {step}: {err}") from None
+        moved = (
+            float(np.max(np.abs(sized.length - motors[LENGTH]))),
+            float(np.max(np.abs(sized.rated_current - motors[CURRENT]))),
+        )
         history.append((battery, gross, soc))
         if log is not None:
             log(
-                f"size: step {len(history)}: battery {battery:.2f} kg, W0 {gross:.2f} kg, SoC "
-                f"{soc:.4f}"
+                f"size: step {step}: battery {battery:.2f} kg, W0 {gross:.2f} kg, SoC {soc:.4f}; "
+                f"motors moved by {moved[0] * 1e3:.2f} mm and {moved[1]:.0f} A"
             )
-        closed_mass = calibrated or abs(gross - design) <= MASS_TOLERANCE
-        if abs(soc - floor) <= SOC_TOLERANCE and closed_mass:
-            return prob, conditions, (battery, design, gross, soc, energy)
+        if closed and moved[0] <= LENGTH_TOLERANCE and moved[1] <= CURRENT_TOLERANCE:
+            if moved[0] <= EXACT_LENGTH and moved[1] == 0.0:
+                return prob, conditions, state, _flown_motors(prob, vehicle, motors, sized)
+            # One more trim with the sized motors, whose margins are then at their limits (the
+            # loads move with the motors' small change of mass only).
+            polish = True
+            motors = {LENGTH: sized.length, CURRENT: sized.rated_current}
+            continue
+        polish = False
         if battery > MAX_BATTERY_FRACTION * gross or not math.isfinite(gross):
             raise SizingError(
                 f"the mission does not close: at step {step} the battery would be {battery:.0f} "
@@ -218,16 +295,46 @@ def _close(vehicle, processes, max_steps, log, history):
                 f"mission and reserve taking {energy / _J_PER_KWH:.1f} kWh; shorten the mission or "
                 "the reserve, or raise battery.energy_density"
             )
-        residual = battery - energy / (density * (soc0 - floor))
+        # The battery the mission would need with the sized motors: their mass change scales
+        # the energy with the gross mass (E ~ W0; the secant corrects the exponent).
+        sized_gross = float(prob.get_val("gross_mass", units="kg")[0])
+        needed = energy * sized_gross / gross / (density * (soc0 - floor))
+        residual = battery - needed
         if previous is not None and residual != previous[1]:
             slope = (residual - previous[1]) / (battery - previous[0])
-        step_to = battery - residual if slope is None else battery - residual / slope
-        previous = (battery, residual)
+        else:  # dg/dm_b = 1 - (m*/W0) dW0/dm_b with E ~ W0
+            slope = 1.0 - needed / sized_gross * GROSS_PER_BATTERY
+        step_to = battery - residual / slope
+        # A secant over a step whose motors moved far would mix their effect into the slope.
+        previous = (battery, residual) if moved[0] <= SECANT_MOTOR_MOVE else None
+        # The next step's motors anticipate its gross mass (the path only, not the fixed point,
+        # where the prediction is W0 itself): W0 moves by the motors' and the battery's mass
+        # changes with W_dg closed, and the lengths by W0^(1/2).
+        predicted = gross + GROSS_PER_BATTERY * (sized_gross - gross + max(step_to, 1.0) - battery)
         battery = max(step_to, 1.0)
+        length = sized.length * (predicted / gross) ** LENGTH_PER_GROSS_EXPONENT
+        motors = {LENGTH: np.clip(length, *length_bounds), CURRENT: sized.rated_current}
     raise SizingError(
         f"the closure did not converge in {max_steps} steps: last battery {history[-1][0]:.2f} "
         f"kg, W0 {history[-1][1]:.2f} kg, state of charge {history[-1][2]:.4f} against the "
-        f"floor {floor:g}"
+        f"floor {floor:g}; the last step moved the motors by {moved[0] * 1e3:.2f} mm and "
+        f"{moved[1]:.0f} A"
+    )
+
+
+def _flown_motors(prob, vehicle, motors, sized):
+    """Return ``sized`` with the motors the last trim flew and their margins there."""
+    for name, value in motors.items():
+        prob.set_val(name, value)
+    prob.run_model()
+    torque, voltage, _ = motor_margins(prob, vehicle)
+    return dataclasses.replace(
+        sized,
+        length=motors[LENGTH].copy(),
+        rated_current=motors[CURRENT].copy(),
+        torque_margin=torque,
+        voltage_margin=voltage,
+        control_ratio=control_ratio(prob, vehicle),
     )
 
 
@@ -260,14 +367,25 @@ def _reserve_fits(prob, vehicle):
 
 
 def _close_design_gross_mass(prob, design, max_runs=30):
-    """Return W_dg = W0(W_dg) at the problem's state, by substitution on model runs."""
+    """Return W_dg = W0(W_dg) at the problem's state: secant steps on h = W0(W_dg) - W_dg.
+
+    W0 is nearly linear in W_dg (the regressions' exponents), so the secant settles in about
+    three model runs where substitution, converging by dW0/dW_dg ~ 0.14 a run, takes six.
+    """
+    previous = None
     for _ in range(max_runs):
         prob.set_val("design_gross_mass", design, units="kg")
         prob.run_model()
         gross = float(prob.get_val("gross_mass", units="kg")[0])
-        if abs(gross - design) <= 0.1 * MASS_TOLERANCE:
+        miss = gross - design
+        if abs(miss) <= 0.1 * MASS_TOLERANCE:
             return gross
-        design = gross
+        if previous is None or miss == previous[1]:
+            step_to = gross
+        else:
+            step_to = design - miss * (design - previous[0]) / (miss - previous[1])
+        previous = (design, miss)
+        design = step_to
     raise SizingError(
         f"the design gross mass did not settle in {max_runs} model runs: W0 {gross:.3f} kg, "
         f"W_dg {design:.3f} kg"
@@ -311,8 +429,9 @@ def sized_vehicle_text(path, result):
     """
     Return the vehicle file at ``path`` (None: the reference) with the sizing's masses.
 
-    ``battery.mass`` (the battery's initial design value) and ``masses.design_gross_mass`` take
-    the closed values; the file's comments stay; relative polar and coordinate paths become
+    ``battery.mass`` (the battery's initial design value), ``masses.design_gross_mass`` and the
+    initial values of ``motor_length`` and ``motor_rated_current`` take the closed values; the
+    file's comments stay; relative polar and coordinate paths become
     absolute, so the sized file works from any folder. A header line says what changed.
     """
     if path is None:
@@ -324,6 +443,11 @@ def sized_vehicle_text(path, result):
     text = replace_table_value(text, "battery", "mass", f"{result.battery_mass:.2f}")
     text = replace_table_value(
         text, "masses", "design_gross_mass", f"{result.design_gross_mass:.2f}"
+    )
+    motors = result.motors
+    text = replace_initial(text, LENGTH, motors.length, "sized by lpc-mdo size", fmt="{:.6g}")
+    text = replace_initial(
+        text, CURRENT, motors.rated_current, "sized by lpc-mdo size", fmt="{:.1f}"
     )
     if folder is not None:
 
@@ -338,8 +462,9 @@ def sized_vehicle_text(path, result):
         keys = "|".join(_FILE_KEYS)
         text = re.sub(rf'^((?:{keys}) = )"([^"]*)"', absolute, text, flags=re.M)
     header = (
-        f"# Sized by lpc-mdo size from {label}: battery.mass {result.battery_mass:.2f} kg and "
-        f"masses.design_gross_mass {result.design_gross_mass:.2f} kg close the mission\n"
+        f"# Sized by lpc-mdo size from {label}: battery.mass {result.battery_mass:.2f} kg, "
+        f"masses.design_gross_mass {result.design_gross_mass:.2f} kg and the motors close the "
+        "mission\n"
         f"# (state of charge {result.final_soc:.4f} at the floor {result.soc_floor:g}, W0 "
         f"{result.gross_mass:.2f} kg).\n"
     )

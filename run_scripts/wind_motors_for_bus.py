@@ -30,9 +30,8 @@ os.environ.setdefault("OPENMDAO_REPORTS", "0")
 import numpy as np  # noqa: E402
 
 from lpc_mdo.analysis import analyze_vehicle  # noqa: E402
-from lpc_mdo.groups.weights import motor_group_indices  # noqa: E402
+from lpc_mdo.motor_sizing import motor_margins  # noqa: E402
 from lpc_mdo.vehicle import load_vehicle  # noqa: E402
-from lpc_mdo.vehicle.condition_contract import condition_kind  # noqa: E402
 from lpc_mdo.vehicle.file_edit import replace_initial, write_values  # noqa: E402
 
 REFERENCE_FILE = os.path.join(
@@ -43,21 +42,7 @@ NAME = "motor_rated_current"
 
 def group_margins(prob, vehicle):
     """Per motor design: the least KS voltage margin and the least voltage-torque margin."""
-    groups = np.asarray(motor_group_indices(vehicle))
-    num_groups = groups.max() + 1
-    lift = groups[: len(vehicle.lift_rotors)]
-    voltage = np.full(num_groups, np.inf)
-    torque = np.full(num_groups, np.inf)
-    for prefix, rows in (("lift", lift), ("pusher", groups[-1:])):
-        ks = np.asarray(prob.get_val(f"{prefix}_motor_voltage_margin")).ravel()
-        np.minimum.at(voltage, rows, ks)
-    for condition in prob.model.conditions:
-        for prefix, motors in condition_kind(condition.kind).motor_sets(vehicle, condition).items():
-            margin = np.asarray(
-                prob.get_val(f"{condition.name}.{prefix}_motors.voltage_torque_margin")
-            ).ravel()
-            rows = lift[list(motors)] if prefix == "lift" else groups[-1:]
-            np.minimum.at(torque, rows, margin)
+    _, voltage, torque = motor_margins(prob, vehicle)
     return voltage, torque
 
 

@@ -2,6 +2,7 @@
 
 import copy
 import re
+from types import SimpleNamespace
 
 import pytest
 
@@ -38,6 +39,9 @@ class _Result:  # the fields sized_vehicle_text reads
         0.2,
         3100.0,
     )
+    motors = SimpleNamespace(
+        length=[0.11, 0.12, 0.13, 0.14, 0.15], rated_current=[130.0, 140.0, 150.0, 160.0, 270.0]
+    )
 
 
 def test_the_sized_file_carries_the_masses_and_absolute_paths(tmp_path, monkeypatch):
@@ -46,6 +50,9 @@ def test_the_sized_file_carries_the_masses_and_absolute_paths(tmp_path, monkeypa
     (tmp_path / "ref.toml").write_text(text)
     vehicle = load_vehicle(tmp_path / "ref.toml")
     assert vehicle.battery.mass == 700.0 and vehicle.masses.design_gross_mass == 3100.0
+    assert vehicle.design_variables["motor_length"].initial == pytest.approx(_Result.motors.length)
+    current = vehicle.design_variables["motor_rated_current"].initial
+    assert current == pytest.approx(_Result.motors.rated_current)
     # a relative polar path becomes absolute (the sized file lives in another folder)
     folder = tmp_path / "vehicle"
     folder.mkdir()

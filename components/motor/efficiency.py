@@ -32,6 +32,10 @@ def _combine(*terms):
 
 
 # Per-motor inputs of the loss model: (name, units, desc, default).
+#: Sharpness k of the smooth min(T_pk, T_lim) in MotorMarginComp (its largest gap ln(2)/k = 0.0069
+#: of T_pk, at T_lim = T_pk).
+SMOOTH_MIN_SHARPNESS = 100.0
+
 MOTOR_INPUTS = (
     ("resistance", "ohm", "Phase resistance R", 0.02),
     ("inductance_d", "H", "D-axis inductance L_d", 7.5e-4),
@@ -615,7 +619,7 @@ class MotorMarginComp(om.ExplicitComponent):
         )
         self.options.declare(
             "smooth_min_sharpness",
-            default=100.0,
+            default=SMOOTH_MIN_SHARPNESS,
             types=(int, float),
             lower=1e-9,
             desc="Sharpness k of the smooth min(T_pk, T_lim) (> 0)",
