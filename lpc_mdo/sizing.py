@@ -19,11 +19,12 @@ code closes on its mission (as NDARC or FLOPS do):
   condition whose motors turn (hover, one rotor out, transition, climb, cruise, descent);
 
 each step trimming those conditions at the step's masses and motors (:func:`lpc_mdo.trim.trim`).
-Closed: SoC within 1e-4 of SoC_min, W0 within 0.01 kg of W_dg (which also sizes the landing
-gear's tyres and so their drag), and the motors sized at the step's loads within 0.2 mm and 1 A
-of those the step flew; then one more trim flies the sized motors, so that their margins sit at
-the limits (the battery and W_dg still closed there). The rotors, the wing and its gauges stay
-as the vehicle file gives them (the optimizer sizes those).
+Closed: SoC within 5e-4 above SoC_min (aimed at 2.5e-4 above: never below the floor), W0 within 0.01
+kg of W_dg (which also sizes the landing gear's tyres and so their drag), and the motors sized at
+the step's loads within 0.2 mm and 1 A of those the step flew; then one more trim flies the sized
+motors, so that their margins sit at the limits (the battery and W_dg still closed there). The
+rotors, the wing and its gauges stay as the vehicle file gives them
+(the optimizer sizes those).
 """
 
 from __future__ import annotations
@@ -55,10 +56,10 @@ from lpc_mdo.trim import trim
 from lpc_mdo.vehicle import AIRFOILS, load_vehicle
 from lpc_mdo.vehicle.file_edit import replace_initial, replace_table_value
 
-__all__ = ["SizingError", "SizingResult", "size_vehicle", "sized_vehicle_text"]
+__all__ = ["SizingError", "SizingResult", "rounded_up", "size_vehicle", "sized_vehicle_text"]
 
 #: Closure tolerances: state of charge (-) and W0 - W_dg (kg).
-SOC_TOLERANCE = 1e-4
+SOC_TOLERANCE = 5e-4
 MASS_TOLERANCE = 0.01
 #: Motors closed when a step's sizing moves no length by more than this (m; 0.2 mm, 0.2 % of a
 #: lift motor: 0.5 % of its peak torque) and no winding by more than this (A).
@@ -236,6 +237,7 @@ def _close(vehicle, processes, max_steps, log, history):
     dv = vehicle.design_variables[LENGTH]
     length_bounds = (np.asarray(dv.lower_array, float), np.asarray(dv.upper_array, float))
     floor = vehicle.constraints.min_final_soc
+    target = floor + 0.5 * SOC_TOLERANCE  # the middle of the closed band [floor, floor + tol]
     soc0 = vehicle.battery.initial_soc
     density = vehicle.battery.energy_density
     calibrated = vehicle.masses.other_rule == "calibrated"
@@ -256,7 +258,7 @@ def _close(vehicle, processes, max_steps, log, history):
         energy = float(prob.get_val("energy_used", units="J")[0])
         state = (battery, design, gross, soc, energy)
         closed_mass = calibrated or abs(gross - design) <= MASS_TOLERANCE
-        closed = abs(soc - floor) <= SOC_TOLERANCE and closed_mass
+        closed = 0.0 <= soc - floor <= SOC_TOLERANCE and closed_mass
         if polish and closed:  # flown with the motors sized at the previous step's loads
             history.append((battery, gross, soc))
             if log is not None:
@@ -298,7 +300,7 @@ def _close(vehicle, processes, max_steps, log, history):
         # The battery the mission would need with the sized motors: their mass change scales
         # the energy with the gross mass (E ~ W0; the secant corrects the exponent).
         sized_gross = float(prob.get_val("gross_mass", units="kg")[0])
-        needed = energy * sized_gross / gross / (density * (soc0 - floor))
+        needed = energy * sized_gross / gross / (density * (soc0 - target))
         residual = battery - needed
         if previous is not None and residual != previous[1]:
             slope = (residual - previous[1]) / (battery - previous[0])
@@ -425,6 +427,11 @@ _FILE_KEYS = ("airfoil", "coordinates")
 _AIRFOIL_NAMES = tuple(AIRFOILS)
 
 
+def rounded_up(length):
+    """Motor lengths (m) rounded up to the micrometre a vehicle file keeps: margins not lost."""
+    return np.ceil(np.asarray(length) * 1e6 - 1e-6) / 1e6
+
+
 def sized_vehicle_text(path, result):
     """
     Return the vehicle file at ``path`` (None: the reference) with the sizing's masses.
@@ -445,7 +452,9 @@ def sized_vehicle_text(path, result):
         text, "masses", "design_gross_mass", f"{result.design_gross_mass:.2f}"
     )
     motors = result.motors
-    text = replace_initial(text, LENGTH, motors.length, "sized by lpc-mdo size", fmt="{:.6g}")
+    text = replace_initial(
+        text, LENGTH, rounded_up(motors.length), "sized by lpc-mdo size", fmt="{:.6f}"
+    )
     text = replace_initial(
         text, CURRENT, motors.rated_current, "sized by lpc-mdo size", fmt="{:.1f}"
     )

@@ -40,7 +40,8 @@ class _Result:  # the fields sized_vehicle_text reads
         3100.0,
     )
     motors = SimpleNamespace(
-        length=[0.11, 0.12, 0.13, 0.14, 0.15], rated_current=[130.0, 140.0, 150.0, 160.0, 270.0]
+        length=[0.11, 0.1193701, 0.13, 0.14, 0.15],
+        rated_current=[130.0, 140.0, 150.0, 160.0, 270.0],
     )
 
 
@@ -50,7 +51,9 @@ def test_the_sized_file_carries_the_masses_and_absolute_paths(tmp_path, monkeypa
     (tmp_path / "ref.toml").write_text(text)
     vehicle = load_vehicle(tmp_path / "ref.toml")
     assert vehicle.battery.mass == 700.0 and vehicle.masses.design_gross_mass == 3100.0
-    assert vehicle.design_variables["motor_length"].initial == pytest.approx(_Result.motors.length)
+    # lengths rounded up to the micrometre the file keeps (a margin is not lost by rounding)
+    length = vehicle.design_variables["motor_length"].initial
+    assert length == pytest.approx([0.11, 0.119371, 0.13, 0.14, 0.15], abs=1e-12)
     current = vehicle.design_variables["motor_rated_current"].initial
     assert current == pytest.approx(_Result.motors.rated_current)
     # a relative polar path becomes absolute (the sized file lives in another folder)

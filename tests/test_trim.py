@@ -62,15 +62,19 @@ def test_transition_point_trims_to_the_prescribed_acceleration():
     assert abs(acc[1]) < 1e-3 * 9.81
     np.testing.assert_allclose(prob.get_val("transition_3.angular_acceleration"), 0.0, atol=1e-6)
     assert np.abs(before).max() > 1.0 and abs(roll_before) > 0.5  # it did have to move
-    # Closed form of the roll balance: the lift rotors' rolling moment about the body origin
-    # cancels the pusher's (its torque reaction about x); the differentials did it.
+    # Closed form of the roll balance: about the cg the rolling moments cancel, so about the body
+    # origin the lift rotors' and the pusher's (its torque reaction about x; the aerodynamic
+    # roll is zero in symmetric flight) sum to the moment of the net side force m v_dot acting
+    # at the cg, (r_cg x F)_x = -z_cg m v_dot (y_cg = 0); the differentials did it.
     roll = sum(
         prob.get_val(f"transition_3.{source}_moment", units="N*m")[0, 0]
         for source in ("lift", "pusher")
     )
     pusher_roll = prob.get_val("transition_3.pusher_moment", units="N*m")[0, 0]
+    z_cg = prob.get_val("cg", units="m")[2]
+    side = prob.get_val("gross_mass", units="kg")[0] * body[1]
     assert abs(pusher_roll) > 1e3
-    assert abs(roll) < 1e-3 * abs(pusher_roll)
+    assert abs(roll - (-z_cg * side)) < 1e-4 * abs(pusher_roll)
     assert abs(prob.get_val("transition_roll_yaw_rpm")[2, 0]) > 1.0
 
 
