@@ -13,9 +13,10 @@ operating point, with the limits of the vehicle file's ``[constraints]``:
    T_pk and the voltage-limited torque T_lim falls below T_pk (k its sharpness,
    :data:`~lpc_mdo.components.motor.efficiency.SMOOTH_MIN_SHARPNESS`): so that step 3 can wind
    the motor with T_lim near T_pk;
-2. the lift designs' lengths then scaled together until the hover and one-rotor-out control
-   reserve (the roll and pitch acceleration the lift rotors can add within their motors' torque,
-   ``min_control_acceleration``) is met, where the torque margins alone leave it short;
+2. the lift designs' lengths then scaled together (the smallest scale, :func:`_smallest_scale`)
+   until the hover and one-rotor-out control reserve (the roll and pitch acceleration the lift
+   rotors can add within their motors' torque, ``min_control_acceleration``) is met, where the
+   torque margins alone leave it short;
 3. its winding, the rated current I_w that sets its turns per phase: the smallest at which its
    voltage margin (KS) reaches ``min_voltage_margin`` and its voltage-limited torque T_lim stays
    ``min_torque_margin`` above every operating point's torque (docs
@@ -23,8 +24,8 @@ operating point, with the limits of the vehicle file's ``[constraints]``:
    inverters and cables are rated for the current (docs theory/weights 'Power electronics and
    cables'); the lift windings are raised together if the control reserve needs it;
 4. its length again, to the torque margin at that winding (shorter where the voltage margin
-   set the winding and left T_lim well above T_pk), where the winding's margins still hold at
-   the new length.
+   set the winding and left T_lim well above T_pk), where the winding's margins and the control
+   reserve still hold at the new length (not where the control reserve set the length).
 
 Each step is a root-bracketing search (regula falsi, :func:`_smallest`) within the design
 variables' bounds on model runs
@@ -267,21 +268,18 @@ def size_motors(prob, vehicle, guess=None):
 
     # 2. Lift lengths scaled together for the control reserve, where it is short.
     if control_slack(length, loose)[0] < 0.0:
-        largest = np.array([np.min(upper[LENGTH][lift] / length[lift])])
-        scale, slack = _smallest(
-            lambda k: control_slack(_scaled(length, lift, k[0]), loose),
-            np.ones(1),
-            largest,
-            CONTROL_TOLERANCE,
+        largest = float(np.min(upper[LENGTH][lift] / length[lift]))
+        scale, slack = _smallest_scale(
+            lambda k: control_slack(_scaled(length, lift, k), loose)[0], largest
         )
-        if slack[0] < 0.0:
+        if slack < 0.0:
             raise MotorSizingError(
                 "the lift motors cannot give the control reserve "
                 f"(constraints.min_control_acceleration {list(limits.min_control_acceleration)} "
                 f"rad/s^2) within the upper bounds of [design_variables.{LENGTH}]; allowed: "
                 "larger bounds, or a smaller required acceleration"
             )
-        length = _scaled(length, lift, scale[0])
+        length = _scaled(length, lift, scale)
         sets_length = [
             "control reserve" if f else s for f, s in zip(lift, sets_length, strict=True)
         ]
@@ -308,13 +306,11 @@ def size_motors(prob, vehicle, guess=None):
         )
     current = np.ceil(current)
     if control_slack(length, current)[0] < 0.0:
-        scale, _ = _smallest(
-            lambda k: control_slack(length, _scaled(current, lift, k[0])),
-            np.ones(1),
-            np.array([np.min(upper[CURRENT][lift] / current[lift])]),
-            CONTROL_TOLERANCE,
+        scale, _ = _smallest_scale(
+            lambda k: control_slack(length, _scaled(current, lift, k))[0],
+            float(np.min(upper[CURRENT][lift] / current[lift])),
         )
-        current = np.ceil(_scaled(current, lift, scale[0]))
+        current = np.ceil(_scaled(current, lift, scale))
     # 4. The length to the torque margin at that winding, where the winding still holds there.
     shorter, _ = _smallest(
         lambda x: run(x, current)[0] - limits.min_torque_margin,
@@ -326,7 +322,10 @@ def size_motors(prob, vehicle, guess=None):
     fits = (winding_slack(shorter, current) >= 0.0) & (
         run(shorter, current)[0] >= limits.min_torque_margin
     )
-    length = np.where(fits, shorter, length)
+    # ... and not where the control reserve set the length, nor if it leaves the reserve short
+    fits &= np.array([reason != "control reserve" for reason in sets_length])
+    if control_slack(np.where(fits, shorter, length), current)[0] >= 0.0:
+        length = np.where(fits, shorter, length)
     torque, voltage, _ = run(length, current)
     return MotorSizing(
         labels=labels,
@@ -337,6 +336,30 @@ def size_motors(prob, vehicle, guess=None):
         control_ratio=last["control"],
         sets_length=sets_length,
     )
+
+
+def _smallest_scale(slack, largest, step=1.05):
+    """
+    Return the smallest scale k in [1, largest] with slack(k) >= 0 and its slack (< 0: none).
+
+    The control reserve is not monotonic in the lift motors' size: a longer motor gives more
+    torque but adds mass and roll inertia at the booms, and past some length the reserve falls.
+    So the scales are scanned up from 1 by ``step`` to the first feasible one (or ``largest``),
+    and the root is found between it and the last infeasible one (:func:`_smallest`).
+    """
+    low, k = 1.0, 1.0
+    while True:
+        k = min(k * step, largest)
+        found = slack(k)
+        if found >= 0.0 or k >= largest:
+            break
+        low = k
+    if found < 0.0:
+        return k, found
+    scale, value = _smallest(
+        lambda x: np.array([slack(x[0])]), np.array([low]), np.array([k]), CONTROL_TOLERANCE
+    )
+    return float(scale[0]), float(value[0])
 
 
 def _scaled(values, rows, factor):

@@ -64,3 +64,26 @@ def test_a_motor_its_length_bound_cannot_size_is_named():
         r"at its largest motor_length \(0.1 m\)",
     ):
         size_motors(prob, vehicle)
+
+
+@pytest.mark.integration
+def test_the_lift_motors_grow_together_for_a_larger_control_reserve():
+    # Three times MIL-F-83300's Level 1 roll and pitch acceleration: the torque margins alone
+    # (twice the Level 1 reserve at the reference) no longer give it, so the lift motors are
+    # lengthened together until the least ratio over hover and the one-rotor-out cases is 1
+    # (the file's own loads, not trimmed: the motor sizing alone).
+    data = copy.deepcopy(read_vehicle_file())
+    data["constraints"]["min_control_acceleration"] = [3 * 0.1396, 3 * 0.1047, 0.0]
+    vehicle = vehicle_from_dict(data)
+    names = [
+        c.name for c in vehicle.conditions if c.kind in ("hover", "oei", "transition", "steady")
+    ]
+    prob = build_analysis_problem(
+        vehicle, name="big_reserve", conditions=names, static_margin=False
+    )
+    prob.final_setup()
+    sized = size_motors(prob, vehicle)
+    assert sized.sets_length == ["control reserve"] * 4 + ["torque margin"]
+    # on the reserve at the loosest winding; the winding for the bus then moves it (1.15 here)
+    assert sized.control_ratio >= 1.0
+    assert np.all(sized.torque_margin[:4] > 0.1)  # longer than the torque margin needs
