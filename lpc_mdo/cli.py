@@ -1363,14 +1363,15 @@ def build_parser():
     analyze.set_defaults(func=_analyze)
 
     size = add_command(
-        "size", "close a vehicle's battery and gross mass on its mission (no optimizer)"
+        "size", "close a vehicle's battery, gross mass and motors on its mission (no optimizer)"
     )
     add_vehicle(size)
     size.add_argument(
         "--output-dir",
         default="sizing_out",
         help=f"folder for {' and '.join(SIZING_FILES)}: the summary and the vehicle file with "
-        "the closed battery mass and design gross mass, to optimize from (default: sizing_out)",
+        "the closed battery mass, design gross mass and motors, to optimize from (default: "
+        "sizing_out)",
     )
     add_trim_processes(size)
     size.set_defaults(func=_size)

@@ -40,7 +40,6 @@ from pathlib import Path
 import numpy as np
 import openmdao.api as om
 
-from lpc_mdo.api.weights import mass_breakdown
 from lpc_mdo.core.constants import GRAVITY
 from lpc_mdo.motor_sizing import (
     CURRENT,
@@ -163,7 +162,7 @@ def _mission_conditions(vehicle):
 
 def size_vehicle(vehicle=None, processes=1, max_steps=12, log=None):
     """
-    Close a vehicle's battery and gross mass on its mission (module docstring).
+    Close a vehicle's battery, gross mass and motors on its mission (module docstring).
 
     Parameters
     ----------
@@ -186,6 +185,9 @@ def size_vehicle(vehicle=None, processes=1, max_steps=12, log=None):
         When a trim fails or the closure does not converge (diverges: the mission needs a battery
         heavier than :data:`MAX_BATTERY_FRACTION` of the gross mass), naming what was measured.
     """
+    # lpc_mdo.api exports this function, so its weights module is imported here, not at the top
+    from lpc_mdo.api.weights import mass_breakdown
+
     start = time.perf_counter()
     if vehicle is None or isinstance(vehicle, (str,)) or hasattr(vehicle, "__fspath__"):
         vehicle = load_vehicle(vehicle)

@@ -19,6 +19,9 @@ vlm
 weights
     :func:`~lpc_mdo.api.weights.mass_breakdown`,
     :func:`~lpc_mdo.api.weights.format_mass_breakdown`.
+
+and :func:`~lpc_mdo.sizing.size_vehicle`, which closes a vehicle's battery, gross mass and motors
+on its mission (``lpc-mdo size``).
 """
 
 from lpc_mdo.api.acoustics import rotor_noise
@@ -36,6 +39,7 @@ from lpc_mdo.groups.motor import MotorGroup
 from lpc_mdo.groups.vehicle import VehicleGroup, calibrate_other_mass
 from lpc_mdo.groups.weights import WeightsGroup
 from lpc_mdo.problems import build_analysis_problem
+from lpc_mdo.sizing import SizingError, SizingResult, size_vehicle
 from lpc_mdo.vehicle import (
     VehicleSpecError,
     load_vehicle,
@@ -67,6 +71,9 @@ __all__ = [
     "pitt_peters",
     "reference_vehicle",
     "RotorNoiseGroup",
+    "SizingError",
+    "SizingResult",
+    "size_vehicle",
     "a_weighting",
     "airfoil_polar",
     "rotor_noise",
