@@ -530,9 +530,8 @@ def closed_design_gross_mass(vehicle, tolerance=1e-3, max_iterations=50):
 
     The landing-gear, wing-secondary and systems regressions scale with the design gross mass
     (docs theory/weights 'Mass items'), which NDARC and FLOPS take as an input and a sizing
-    code closes on the gross mass it computes. This is that closure for the initial design, by
-    fixed-point iteration W_dg <- W0(W_dg) (the slope dW0/dW_dg is about 0.14 for the reference
-    vehicle, so each iteration gains almost one digit), with the vehicle's fixed W_other. A
+    code closes on the gross mass it computes. This is that closure for the initial design
+    (:func:`close_design_gross_mass`), with the vehicle's fixed W_other. A
     calibrated vehicle (``masses.other_rule = "calibrated"``) is closed by construction (its
     W_other makes W0 = W_dg), so its W_dg is returned unchanged.
     ``run_scripts/close_initial_design.py`` writes the result into a vehicle file.
@@ -560,14 +559,50 @@ def closed_design_gross_mass(vehicle, tolerance=1e-3, max_iterations=50):
     if masses.other_rule == "calibrated":
         return masses.design_gross_mass
     prob = _initial_design(vehicle, masses.other)
-    design_gross_mass = masses.design_gross_mass
-    for _ in range(max_iterations):
+    return close_design_gross_mass(prob, masses.design_gross_mass, tolerance, max_iterations)
+
+
+def close_design_gross_mass(prob, design_gross_mass, tolerance=1e-3, max_runs=50):
+    """
+    Return W_dg = W0(W_dg) of a set-up problem, by secant steps on h = W0(W_dg) - W_dg (kg).
+
+    W0 is nearly linear in W_dg (the regressions' exponents), so the secant settles in about
+    three model runs where substitution W_dg <- W0, converging by dW0/dW_dg ~ 0.14 a run, takes
+    six. The first step is that substitution. The problem is left at the last W_dg tried,
+    within ``tolerance`` of the returned W0.
+
+    Parameters
+    ----------
+    prob : om.Problem
+        A set-up problem with the input ``design_gross_mass`` and the output ``gross_mass``.
+    design_gross_mass : float
+        The first W_dg, kg.
+    tolerance : float
+        Absolute tolerance on W0 - W_dg, kg.
+    max_runs : int
+        Model runs before giving up.
+
+    Raises
+    ------
+    om.AnalysisError
+        When W_dg does not settle within ``max_runs``.
+    """
+    previous = None
+    for _ in range(max_runs):
         prob.set_val("design_gross_mass", design_gross_mass, units="kg")
         gross = _gross_mass(prob)
-        if abs(gross - design_gross_mass) <= tolerance:
+        miss = gross - design_gross_mass
+        if abs(miss) <= tolerance:
             return gross
-        design_gross_mass = gross
+        if previous is None or miss == previous[1]:
+            step_to = gross
+        else:
+            step_to = design_gross_mass - miss * (design_gross_mass - previous[0]) / (
+                miss - previous[1]
+            )
+        previous = (design_gross_mass, miss)
+        design_gross_mass = step_to
     raise om.AnalysisError(
-        f"closed_design_gross_mass: W_dg did not converge in {max_iterations} iterations "
-        f"(last W_dg {design_gross_mass:.4f} kg)"
+        f"the design gross mass did not settle in {max_runs} model runs: W0 {gross:.3f} kg, "
+        f"W_dg {design_gross_mass:.3f} kg"
     )

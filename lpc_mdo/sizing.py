@@ -41,6 +41,7 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.core.constants import GRAVITY
+from lpc_mdo.groups.vehicle import close_design_gross_mass
 from lpc_mdo.motor_sizing import (
     CURRENT,
     LENGTH,
@@ -370,30 +371,12 @@ def _reserve_fits(prob, vehicle):
         )
 
 
-def _close_design_gross_mass(prob, design, max_runs=30):
-    """Return W_dg = W0(W_dg) at the problem's state: secant steps on h = W0(W_dg) - W_dg.
-
-    W0 is nearly linear in W_dg (the regressions' exponents), so the secant settles in about
-    three model runs where substitution, converging by dW0/dW_dg ~ 0.14 a run, takes six.
-    """
-    previous = None
-    for _ in range(max_runs):
-        prob.set_val("design_gross_mass", design, units="kg")
-        prob.run_model()
-        gross = float(prob.get_val("gross_mass", units="kg")[0])
-        miss = gross - design
-        if abs(miss) <= 0.1 * MASS_TOLERANCE:
-            return gross
-        if previous is None or miss == previous[1]:
-            step_to = gross
-        else:
-            step_to = design - miss * (design - previous[0]) / (miss - previous[1])
-        previous = (design, miss)
-        design = step_to
-    raise SizingError(
-        f"the design gross mass did not settle in {max_runs} model runs: W0 {gross:.3f} kg, "
-        f"W_dg {design:.3f} kg"
-    )
+def _close_design_gross_mass(prob, design):
+    """Return W_dg = W0(W_dg) at the problem's state (SizingError when it does not settle)."""
+    try:
+        return close_design_gross_mass(prob, design, 0.1 * MASS_TOLERANCE, max_runs=30)
+    except om.AnalysisError as err:
+        raise SizingError(str(err)) from None
 
 
 def _trim(prob, conditions, processes, what):

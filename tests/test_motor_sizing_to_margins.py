@@ -8,7 +8,16 @@ import pytest
 
 from lpc_mdo.motor_sizing import STALLED, MotorSizingError, _smallest, design_labels, size_motors
 from lpc_mdo.problems import build_analysis_problem
+from lpc_mdo.sizing import MOTOR_KINDS
 from lpc_mdo.vehicle import load_vehicle, read_vehicle_file, vehicle_from_dict
+
+
+def motor_problem(vehicle, name):
+    """Return the analysis problem of the conditions whose motors turn, at the file's loads."""
+    names = [c.name for c in vehicle.conditions if c.kind in MOTOR_KINDS]
+    prob = build_analysis_problem(vehicle, name=name, conditions=names, static_margin=False)
+    prob.final_setup()
+    return prob
 
 
 def test_the_search_finds_each_entrys_root_from_a_guess_or_the_bounds():
@@ -51,13 +60,7 @@ def test_a_motor_its_length_bound_cannot_size_is_named():
     data = copy.deepcopy(read_vehicle_file())
     data["design_variables"]["motor_length"].update(upper=[0.1, 0.25, 0.25, 0.25, 0.3])
     vehicle = vehicle_from_dict(data)
-    names = [
-        c.name for c in vehicle.conditions if c.kind in ("hover", "oei", "transition", "steady")
-    ]
-    prob = build_analysis_problem(
-        vehicle, name="short_motor", conditions=names, static_margin=False
-    )
-    prob.final_setup()
+    prob = motor_problem(vehicle, "short_motor")
     with pytest.raises(
         MotorSizingError,
         match=r"motor design 'lift front_left_outer \+ front_right_outer': torque margin -?\d\.\d+ "
@@ -75,13 +78,7 @@ def test_the_lift_motors_grow_together_for_a_larger_control_reserve():
     data = copy.deepcopy(read_vehicle_file())
     data["constraints"]["min_control_acceleration"] = [3 * 0.1396, 3 * 0.1047, 0.0]
     vehicle = vehicle_from_dict(data)
-    names = [
-        c.name for c in vehicle.conditions if c.kind in ("hover", "oei", "transition", "steady")
-    ]
-    prob = build_analysis_problem(
-        vehicle, name="big_reserve", conditions=names, static_margin=False
-    )
-    prob.final_setup()
+    prob = motor_problem(vehicle, "big_reserve")
     sized = size_motors(prob, vehicle)
     assert sized.sets_length == ["control reserve"] * 4 + ["torque margin"]
     # on the reserve at the loosest winding; the winding for the bus then moves it (1.15 here)
