@@ -8,8 +8,8 @@ import pytest
 from openmdao.utils.assert_utils import (
     assert_check_partials,
     assert_near_equal,
-    assert_sparsity_matches_fd,
 )
+from sparsity import assert_sparsity_matches
 
 from lpc_mdo.components.bspline import BsplineComp, clamped_knots
 
@@ -49,7 +49,7 @@ def test_partials(num_cp, order, vec_size):
     prob = _run(cp, order=order, num_points=11)
     data = prob.check_partials(method="cs", compact_print=True, out_stream=None)
     assert_check_partials(data, atol=1e-12, rtol=1e-12)
-    assert_sparsity_matches_fd(prob.model.spline, outstream=None)
+    assert_sparsity_matches(prob, "spline")
 
 
 def test_cubic_four_cp_is_bezier():

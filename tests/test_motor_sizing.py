@@ -8,8 +8,8 @@ import pytest
 from openmdao.utils.assert_utils import (
     assert_check_partials,
     assert_near_equal,
-    assert_sparsity_matches_fd,
 )
+from sparsity import assert_sparsity_matches
 
 from lpc_mdo.components.motor.parameters import MotorParameters
 from lpc_mdo.components.motor.sizing import MotorSizingComp
@@ -116,9 +116,9 @@ def test_partials(ratio):
     assert_check_partials(data, atol=1e-12, rtol=1e-12)
 
 
-def test_sparsity_matches_fd():
+def test_declared_sparsity_matches_the_sensitivities():
     prob = _run([0.08, 0.131, 0.2], ratio=None, diameter=[0.2, 0.3, 0.45])
-    assert_sparsity_matches_fd(prob.model.sizing, outstream=None)
+    assert_sparsity_matches(prob, "sizing")
 
 
 @pytest.mark.parametrize(

@@ -460,7 +460,10 @@ class MagnetFluxComp(PointwiseExplicitComp):
         "mmf_air_gap": ("air_gap_flux_density", "carter_coefficient", "air_gap"),
         "leakage_coefficient": _mmf_names + ("bridge_area",),
         "magnet_permeance_pu": _mmf_names + ("bridge_area", "magnet_area"),
-        "leakage_permeance_pu": _mmf_names + ("bridge_area", "magnet_area"),
+        # (K_sigma - 1) lambda_theta,std = 2 (phi_f + phi_s)/F_tot h_m/(mu_r mu_0 A_m): the
+        # stack length cancels with the pole flux it scales.
+        "leakage_permeance_pu": tuple(n for n in _mmf_names if n != "length")
+        + ("bridge_area", "magnet_area"),
     }
 
     def _evaluate(self, v):
