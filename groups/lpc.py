@@ -143,6 +143,19 @@ class LPCGroup(om.Group):
                 desc=dv.description,
             )
         self.add_subsystem("vehicle", VehicleGroup(vehicle=vehicle), promotes=["*"])
+        # W0 - W_dg: zero where the design gross mass is closed (lpc_mdo.problems constrains it
+        # wherever design_gross_mass is a design variable).
+        self.add_subsystem(
+            "design_gross_mass_closure",
+            om.ExecComp(
+                "design_gross_mass_closure = gross_mass - design_gross_mass",
+                design_gross_mass_closure={"units": "kg"},
+                gross_mass={"units": "kg"},
+                design_gross_mass={"units": "kg"},
+                has_diag_partials=True,
+            ),
+            promotes=["*"],
+        )
 
         for condition in self.conditions:
             cls = condition_group(condition.kind)

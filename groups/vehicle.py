@@ -408,7 +408,6 @@ class VehicleGroup(om.Group):
         self.connect("motor_peak_current", "motor_current_rating", src_indices=groups)
         # The landing-gear tyres of the drag build-up, sized from W_dg (groups/vehicle_drag.py).
         self.add_subsystem("tyres", TyreFrontalAreaComp(), promotes=["*"])
-        self.set_input_defaults("design_gross_mass", vehicle.masses.design_gross_mass, units="kg")
 
         self.set_input_defaults("material_density", vehicle.material.density, units="kg/m**3")
         dvs = vehicle.design_variables
@@ -418,6 +417,8 @@ class VehicleGroup(om.Group):
                 np.asarray(dvs[dv.name].initial_array).reshape(dvs[dv.name].shape),
                 units=None if dv.units == "unitless" else dv.units,
             )
+        # The vehicle's own W_dg (also where a caller replaced masses without reloading the file)
+        self.set_input_defaults("design_gross_mass", vehicle.masses.design_gross_mass, units="kg")
 
         # Total derivatives: nearly every right-hand side of the adjoint (each trim row, margin
         # and the state of charge) passes back through the vehicle's geometry, motor-design and

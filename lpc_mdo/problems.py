@@ -69,6 +69,10 @@ TORQUE_MARGIN_KINDS = (
 #: (the 2 in rotor-to-rotor floor and the equality together need a span >= 18.1 m), so the
 #: clearances replace it; name it in ``constraint_kinds`` to pose the paper's problem.
 OPTIONAL_CONSTRAINT_KINDS = ("radius_intersection",)
+#: The design variable closed by an equality on the gross mass wherever it is declared (not for
+#: a calibrated vehicle, whose W_dg is the target of its W_other): design_gross_mass_closure =
+#: W0 - W_dg = 0 (kg, ref 10 kg).
+CLOSED_MASS = "design_gross_mass"
 # Paper eq. 8-9: the penalty weight alpha of the baseline problem (its set S is the registry's
 # BASELINE_SET, every sizing variable; the operating variables are free).
 BASELINE_ALPHA = 100.0
@@ -267,6 +271,8 @@ def declare_problem(
                 )
             selection[name] = None if indices is None else list(indices)
     selection.update({name: None for name in dvs if name in condition_dvs})
+    if vehicle.masses.other_rule == "calibrated":  # W_dg is the calibration's target, fixed
+        selection.pop(CLOSED_MASS, None)
     for name in dvs:  # in the vehicle file's order
         if name not in selection:
             continue
@@ -285,6 +291,11 @@ def declare_problem(
             indices=indices,
             flat_indices=indices is not None,
         )
+
+    if CLOSED_MASS in selection:
+        # W_dg closed on the gross mass it gives: every optimum sizes the items that scale with
+        # it (landing gear, wing secondary structure, systems) for its own weight.
+        model.add_constraint("design_gross_mass_closure", equals=0.0, ref=10.0)
 
     name, ref = objective
     if name == "baseline":

@@ -420,6 +420,7 @@ STAGES = (
         kinds=("hover", "transition", "steady"),
         design_variables=(
             "battery_mass",
+            "design_gross_mass",
             ("motor_length", PUSHER_GROUP),
             ("motor_rated_current", PUSHER_GROUP),
             "rotor_radius",
@@ -480,6 +481,7 @@ STAGES = (
             "htail_area",
             "htail_aspect_ratio",
             "fuselage_length",
+            "design_gross_mass",
         ),
         constraint_kinds=("trim", "static_margin", "clearance", "wing_stall"),
         optimizer="IPOPT",

@@ -1397,7 +1397,7 @@ def test_utf8_bom_is_accepted(tmp_path):
 def test_reference_vehicle_loads_unchanged():
     vehicle = load_vehicle()
     assert vehicle == reference_vehicle()
-    assert vehicle.design_variable_count() == 181
+    assert vehicle.design_variable_count() == 182  # with W_dg
 
 
 def test_loiter_vehicle_of_the_loiter_test_loads(tmp_path):
@@ -1410,7 +1410,7 @@ def test_loiter_vehicle_of_the_loiter_test_loads(tmp_path):
     path.write_text(REFERENCE_TEXT + module.LOITER, encoding="utf-8")
     vehicle = load_vehicle(path)
     assert [c.name for c in vehicle.conditions][-1] == "loiter"
-    assert vehicle.design_variable_count() == 181 + 3
+    assert vehicle.design_variable_count() == 182 + 3
 
 
 def test_a_good_polar_file_loads(tmp_path):

@@ -60,12 +60,12 @@ def test_counts_and_condition_order():
     assert [c.kind for c in vehicle.conditions] == (
         ["hover"] + ["transition"] * 5 + ["steady"] * 3 + ["oei"] * 4 + ["structural"] * 2
     )
-    assert design_variable_count() == 161 + 20
-    assert vehicle.design_variable_count() == 161 + 20
+    assert design_variable_count() == 161 + 21
+    assert vehicle.design_variable_count() == 161 + 21
     assert design_variable_count(vehicle) == sum(
         dv.size for dv in vehicle.design_variables.values()
     )
-    assert len(vehicle.design_variables) == 33
+    assert len(vehicle.design_variables) == 34
 
 
 def test_reference_values():
@@ -191,7 +191,7 @@ def test_number_of_bays_sizes_the_thickness_design_variables(data):
         data["design_variables"][f"{name}_thickness"]["initial"] = 0.0015
     vehicle = vehicle_from_dict(data)
     assert vehicle.design_variables["bottom_skin_thickness"].shape == (10,)
-    assert design_variable_count(vehicle) == 161 + 20 + 4 * 2
+    assert design_variable_count(vehicle) == 161 + 21 + 4 * 2
 
 
 def test_invalid_toml_is_reported(tmp_path):

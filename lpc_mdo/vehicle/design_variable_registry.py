@@ -146,6 +146,18 @@ VEHICLE_DESIGN_VARIABLES = (
         "rotors.twist_cp",
     ),
     VehicleDesignVariable("battery_mass", "kg", "scalar", "battery mass", "battery.mass"),
+    # Not in the paper: the W_dg of the regressions that scale with the gross mass (landing
+    # gear, wing secondary structure, systems), closed on the gross mass by an equality
+    # constraint wherever it is a design variable (docs theory/weights 'Gross mass'); not a
+    # sizing variable of the baseline set S.
+    VehicleDesignVariable(
+        "design_gross_mass",
+        "kg",
+        "scalar",
+        "design gross mass W_dg of the weight regressions",
+        "masses.design_gross_mass",
+        baseline=False,
+    ),
     # 0.01-1 m: a stack of 1 cm to 1 m, beyond the aircraft PMSMs of the class either way
     # (the reference's 0.06-0.3 m); the motor model itself raises an AnalysisError below its
     # smallest stack (about 0.056 m, docs theory/motor 'Sizing').
