@@ -12,8 +12,9 @@ A condition counts as trimmed when its largest driver-scaled trim residual is be
 1 rad/s**2, so this is 0.1 % of the weight (times the load factor) as a force: the criterion the
 project uses for the Table 6 trim rows ("trim rows < 0.1 % of W0") and the default limit
 of :func:`lpc_mdo.post.trim_residuals.trim_residual_table`. The same tolerance is the status
-band of the trim rows in the constraint status (:func:`trim_tolerances`); the other constraints
-use :data:`lpc_mdo.post.tables.DEFAULT_TOL`.
+band of the trim rows in the constraint status (:func:`status_tolerances`). The design gross
+mass closure W0 - W_dg = 0 has the band :data:`CLOSURE_TOLERANCE`: the vehicle file keeps W_dg
+to 0.01 kg. The other constraints use :data:`lpc_mdo.post.tables.DEFAULT_TOL`.
 """
 
 from dataclasses import dataclass, field
@@ -22,12 +23,13 @@ import numpy as np
 
 from lpc_mdo.api.weights import format_mass_properties, mass_properties
 from lpc_mdo.groups.vehicle_drag import lpc_drag_components
-from lpc_mdo.problems import build_analysis_problem
+from lpc_mdo.problems import MASS_CLOSURE, build_analysis_problem
 from lpc_mdo.trim import problem_vehicle, single_condition_problem
 from lpc_mdo.trim import trim as trim_conditions
 from lpc_mdo.vehicle.condition_layout import condition_layout
 
 __all__ = [
+    "CLOSURE_TOLERANCE",
     "TRIM_TOLERANCE",
     "Analysis",
     "analyze_vehicle",
@@ -35,7 +37,7 @@ __all__ = [
     "format_drag_breakdown",
     "format_trim_variables",
     "static_margin_budget",
-    "trim_tolerances",
+    "status_tolerances",
     "trim_variable_values",
 ]
 
@@ -43,6 +45,9 @@ __all__ = [
 TRIM_TOLERANCE = 1e-3
 #: Outputs of the trim rows of a condition.
 TRIM_OUTPUTS = ("linear_acceleration", "angular_acceleration")
+#: Status band of W0 - W_dg = 0 (relative to its 10 kg ref): 0.01 kg, the precision to which the
+#: vehicle file keeps W_dg (lpc_mdo.sizing rounds it to that).
+CLOSURE_TOLERANCE = 1e-3
 
 
 @dataclass
@@ -139,14 +144,22 @@ def format_mass_table(analysis):
     return format_mass_properties(mass_properties(analysis.prob, analysis.vehicle))
 
 
-def trim_tolerances(prob, tol=TRIM_TOLERANCE):
-    """Return constraint name -> ``tol`` for every declared trim-row constraint of ``prob``."""
-    return {
+def status_tolerances(prob, tol=TRIM_TOLERANCE):
+    """
+    Return constraint name -> status band for the constraints that do not use the default.
+
+    Every declared trim-row constraint of ``prob`` gets ``tol``, the design gross mass closure
+    :data:`CLOSURE_TOLERANCE`.
+    """
+    tols = {
         name: tol
         for name in prob.model.get_constraints()
         if name.partition(".")[0] in prob.model.condition_names
         and name.partition(".")[2] in TRIM_OUTPUTS
     }
+    if MASS_CLOSURE in prob.model.get_constraints():
+        tols[MASS_CLOSURE] = CLOSURE_TOLERANCE
+    return tols
 
 
 def trim_variable_values(prob, condition):

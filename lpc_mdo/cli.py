@@ -36,7 +36,7 @@ from lpc_mdo.analysis import (
     format_static_margin_budget,
     format_trim_variables,
     lift_to_drag,
-    trim_tolerances,
+    status_tolerances,
 )
 from lpc_mdo.api.weights import format_mass_breakdown, mass_breakdown
 from lpc_mdo.core.checks import check_choice, check_integer, check_number, cut_text
@@ -968,7 +968,7 @@ def _analyze_trim_variables(analysis, args):
 def _constraint_rows(analysis, args):
     """Return the constraint rows of the analysed case (read once per command)."""
     if getattr(args, "constraint_rows", None) is None:
-        tols = trim_tolerances(analysis.prob)
+        tols = status_tolerances(analysis.prob)
         args.constraint_rows = constraint_rows(str(args.case_file), case="final", tols=tols)
     return args.constraint_rows
 
@@ -1093,7 +1093,7 @@ def _analyze(args):
         processes=args.processes,
     )
     prob = analysis.prob
-    tols = trim_tolerances(prob)
+    tols = status_tolerances(prob)
     for section in ANALYZE_SECTIONS:
         print(section(analysis, args))
         print()

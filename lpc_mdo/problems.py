@@ -73,6 +73,8 @@ OPTIONAL_CONSTRAINT_KINDS = ("radius_intersection",)
 #: a calibrated vehicle, whose W_dg is the target of its W_other): design_gross_mass_closure =
 #: W0 - W_dg = 0 (kg, ref 10 kg).
 CLOSED_MASS = "design_gross_mass"
+#: Its closure, W0 - W_dg (an output of lpc_mdo.groups.lpc.LPCGroup).
+MASS_CLOSURE = "design_gross_mass_closure"
 # Paper eq. 8-9: the penalty weight alpha of the baseline problem (its set S is the registry's
 # BASELINE_SET, every sizing variable; the operating variables are free).
 BASELINE_ALPHA = 100.0
@@ -295,7 +297,7 @@ def declare_problem(
     if CLOSED_MASS in selection:
         # W_dg closed on the gross mass it gives: every optimum sizes the items that scale with
         # it (landing gear, wing secondary structure, systems) for its own weight.
-        model.add_constraint("design_gross_mass_closure", equals=0.0, ref=10.0)
+        model.add_constraint(MASS_CLOSURE, equals=0.0, ref=10.0)
 
     name, ref = objective
     if name == "baseline":

@@ -32,8 +32,8 @@ def test_analyze_reference_vehicle_is_trimmed(tmp_path, capsys):
     text = capsys.readouterr().out
     assert "(initial design, trimmed: each condition by its rotor speeds" in text
     assert (
-        "15 design conditions, 181 design variables, 87 constraints of 319 rows "
-        "(259 nonlinear, 60 linear bounds)"
+        "15 design conditions, 182 design variables, 88 constraints of 320 rows "
+        "(260 nonlinear, 60 linear bounds)"
     ) in text
     assert "gross" in text and "minus_1g" in text
     assert "trim: all 15 conditions trimmed" in text
@@ -47,10 +47,11 @@ def test_analyze_reference_vehicle_is_trimmed(tmp_path, capsys):
     assert re.search(r"state_of_charge +fraction +>= 0\.2 +0\.\d+ +(satisfied|violated)", text)
     assert re.search(r"cruise\.linear_acceleration +m/s\*\*2 +\= 0 .* active", text)
     assert re.search(r"hover\.lift_tip_mach +Mach +<= ", text)
-    assert re.search(r"87 constraints \(319 rows\): \d+ satisfied, \d+ active, \d+ violated", text)
+    assert re.search(r"88 constraints \(320 rows\): \d+ satisfied, \d+ active, \d+ violated", text)
     # At the end: the violated and the active constraints by name.
-    assert re.search(r"violated \(\d+ of 87 constraints\): hover\.control_acceleration, ", text)
-    assert re.search(r"active \(\d+ of 87 constraints\): hover\.linear_acceleration, ", text)
+    assert re.search(r"violated \(\d+ of 88 constraints\): hover\.control_acceleration, ", text)
+    active = r"active \(\d+ of 88 constraints\): "
+    assert re.search(active + r"design_gross_mass_closure, hover\.linear_acceleration, ", text)
     # The trimmed variables per condition.
     assert re.search(r"cruise +pusher_rpm [\d.]+ rpm; pitch [\d.]+ deg; elevator", text)
     # The airframe L/D of trimmed cruise and its maximum (about 15, docs theory/aerodynamics).

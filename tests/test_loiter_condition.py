@@ -71,7 +71,7 @@ def loiter_file(tmp_path_factory):
 def test_loiter_is_a_sixteenth_condition_with_its_own_design_variables(loiter_file):
     vehicle = load_vehicle(loiter_file)
     assert len(vehicle.conditions) == 16 and vehicle.conditions[-1].name == "loiter"
-    assert vehicle.design_variable_count() == 181 + 3
+    assert vehicle.design_variable_count() == 182 + 3
     assert vehicle.design_variables["loiter_pitch"].initial == pytest.approx((np.radians(4.0),))
     # The file's 13th table (the one 'oei' table generates four conditions).
     assert vehicle.design_variables["loiter_pitch"].initial_from == "conditions[12].pitch_deg"
@@ -87,13 +87,13 @@ def test_full_problem_declares_the_loiter_trim_and_variables(loiter_file):
     # Steady flight: u_dot, w_dot, q_dot, as climb, cruise and descent (Table 6).
     assert cons["loiter.linear_acceleration"]["size"] == 2
     assert cons["loiter.angular_acceleration"]["size"] == 1
-    assert sum(m["size"] for m in dvs.values()) == 181 + 3
+    assert sum(m["size"] for m in dvs.values()) == 182 + 3
     # ... and the advance ratios (40), the tip Mach numbers (OEI 28, transition 45,
     # climb/cruise/descent and the loiter's pusher 4), the 20 linear minimum chords, the 9
     # voltage margins and the wing section lift of the 11 wing-borne conditions; the 18
     # clearances and 10 control reserves in place of the 2 radius intersections.
     count = sum(m["size"] for m in cons.values())
-    assert count == 86 + 2 + 40 + 3 + 40 + 28 + 45 + 4 + 20 + 9 + 11 + 18 + 10 - 2
+    assert count == 86 + 2 + 40 + 3 + 40 + 28 + 45 + 4 + 20 + 9 + 11 + 18 + 10 - 2 + 1  # W_dg
     # Subproblems select by kind: the loiter is a steady condition of subproblem 4.
     sub4 = build_problem("subproblem_4", vehicle=loiter_file, optimizer="SLSQP")
     assert "loiter" in sub4.model.condition_names

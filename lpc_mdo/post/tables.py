@@ -300,7 +300,7 @@ def constraint_rows(source, case=None, tol=DEFAULT_TOL, refs=None, tols=None):
         Constraint name -> reference magnitude for the violation (e.g. trim -> W0).
     tols : Mapping or None
         Constraint name -> its own relative tolerance instead of ``tol`` (e.g. the trim rows:
-        :func:`lpc_mdo.analysis.trim_tolerances`).
+        :func:`lpc_mdo.analysis.status_tolerances`).
 
     Returns
     -------
