@@ -20,8 +20,9 @@ stationary point (a large residual means the sensitivities are not to be trusted
 
 The parameters (:data:`SENSITIVITY_PARAMETERS`) are those a designer asks about first: battery
 energy density, the final-SoC limit, the hover noise limit, payload, the static-margin limit and
-the cruise range. The regressions' design gross mass ``masses.design_gross_mass`` is held at the
-vehicle file's value (as in the sweeps).
+the cruise range. Where the problem closes the regressions' design gross mass (a design variable
+with W0 - W_dg = 0, :data:`lpc_mdo.problems.CLOSED_MASS`), the sensitivities carry its response;
+otherwise it is held at the vehicle file's value.
 """
 
 import json
@@ -475,8 +476,7 @@ def sensitivity_table(result, case_file="<its case file>"):
         rows.append([f"{r.description}{note}", r.value, r.units, r.dw0_dp, r.elasticity])
     notes = [
         f"At W0* = {result.gross_mass:.2f} kg, from the KKT multipliers and the adjoint "
-        f"(relative KKT residual {result.kkt_residual:.1e}); first order, design gross "
-        "mass of the regressions held."
+        f"(relative KKT residual {result.kkt_residual:.1e}); first order."
     ]
     return Table(header, rows, title="Post-optimal sensitivities", notes=notes)
 
