@@ -411,14 +411,17 @@ class VehicleGroup(om.Group):
 
         self.set_input_defaults("material_density", vehicle.material.density, units="kg/m**3")
         dvs = vehicle.design_variables
+        # W_dg from the vehicle's masses, not its design-variable table: a caller may replace
+        # the masses without reloading the file (lpc_mdo.sizing does).
+        self.set_input_defaults("design_gross_mass", vehicle.masses.design_gross_mass, units="kg")
         for dv in VEHICLE_DESIGN_VARIABLES:
+            if dv.name == "design_gross_mass":
+                continue
             self.set_input_defaults(
                 dv.name,
                 np.asarray(dvs[dv.name].initial_array).reshape(dvs[dv.name].shape),
                 units=None if dv.units == "unitless" else dv.units,
             )
-        # The vehicle's own W_dg (also where a caller replaced masses without reloading the file)
-        self.set_input_defaults("design_gross_mass", vehicle.masses.design_gross_mass, units="kg")
 
         # Total derivatives: nearly every right-hand side of the adjoint (each trim row, margin
         # and the state of charge) passes back through the vehicle's geometry, motor-design and

@@ -117,8 +117,9 @@ class SizingResult:
 
     def summary(self) -> str:
         """Return the result as text (``lpc-mdo size`` prints it)."""
+        steps = len(self.history)
         lines = [
-            f"sized '{self.vehicle}' to its mission in {len(self.history)} steps "
+            f"sized '{self.vehicle}' to its mission in {steps} step{'s' * (steps > 1)} "
             f"({self.seconds:.1f} s): state of charge {self.final_soc:.4f} (floor "
             f"{self.soc_floor:g}), W0 {self.gross_mass:.2f} kg, W_dg "
             f"{self.design_gross_mass:.2f} kg",
@@ -290,7 +291,7 @@ def _close(vehicle, processes, max_steps, log, history):
             # One more trim with the sized motors, whose margins are then at their limits (the
             # loads move with the motors' small change of mass only).
             polish = True
-            motors = {LENGTH: sized.length, CURRENT: sized.rated_current}
+            motors = {LENGTH: rounded_up(sized.length), CURRENT: sized.rated_current}
             continue
         polish = False
         if battery > MAX_BATTERY_FRACTION * gross or not math.isfinite(gross):
@@ -316,9 +317,11 @@ def _close(vehicle, processes, max_steps, log, history):
         # where the prediction is W0 itself): W0 moves by the motors' and the battery's mass
         # changes with W_dg closed, and the lengths by W0^(1/2).
         predicted = gross + GROSS_PER_BATTERY * (sized_gross - gross + max(step_to, 1.0) - battery)
-        battery = max(step_to, 1.0)
+        # Flown as the vehicle file keeps them (battery to 0.01 kg, lengths to the micrometre),
+        # so that the sized file analyzes to the closure found here.
+        battery = round(max(step_to, 1.0), 2)
         length = sized.length * (predicted / gross) ** LENGTH_PER_GROSS_EXPONENT
-        motors = {LENGTH: np.clip(length, *length_bounds), CURRENT: sized.rated_current}
+        motors = {LENGTH: rounded_up(np.clip(length, *length_bounds)), CURRENT: sized.rated_current}
     raise SizingError(
         f"the closure did not converge in {max_steps} steps: last battery {history[-1][0]:.2f} "
         f"kg, W0 {history[-1][1]:.2f} kg, state of charge {history[-1][2]:.4f} against the "

@@ -49,7 +49,7 @@ def test_analyze_reference_vehicle_is_trimmed(tmp_path, capsys):
     assert re.search(r"hover\.lift_tip_mach +Mach +<= ", text)
     assert re.search(r"88 constraints \(320 rows\): \d+ satisfied, \d+ active, \d+ violated", text)
     # At the end: the violated and the active constraints by name.
-    assert re.search(r"violated \(\d+ of 88 constraints\): hover\.control_acceleration, ", text)
+    assert re.search(r"violated \(\d+ of 88 constraints\): hover\.total_spl_a, ", text)
     active = r"active \(\d+ of 88 constraints\): "
     assert re.search(active + r"design_gross_mass_closure, hover\.linear_acceleration, ", text)
     # The trimmed variables per condition.

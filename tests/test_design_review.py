@@ -22,12 +22,15 @@ def check_trimmed_initial_design(case_file):
     model is trimmed once for both.
     """
     items = {item.check: item for item in design_review(case_file)}
-    # The paper's initial lift motors are not sized for one rotor out (subproblem 2 sizes
-    # them): with the weight on seven rotors they run beyond their peak torque, which leaves
-    # no control reserve.
+    # The initial design's motors are sized to the mission (run_scripts/close_initial_design.py):
+    # the worst lift motor sits on its torque margin with a rotor out, within the voltage limit,
+    # and the control reserve holds. (The paper's TC2 lift motors ran beyond their peak torque
+    # there: tests/test_motor_sizing_to_margins.py.)
     torque = items["lift motors: torque margin T_max/T - 1"]
-    assert not torque.ok and torque.value < 0.0 and torque.where.startswith("oei_")
-    assert not items["control reserve / required acceleration"].ok
+    assert torque.ok and torque.value == pytest.approx(0.1, abs=2e-3)
+    assert torque.where.startswith("oei_")
+    assert items["lift motors: voltage margin 1 - |U|/V_lim"].ok
+    assert items["control reserve / required acceleration"].ok
     # The layout is the NASA CAD's (docs theory/geometry 'Rotor clearances'): the rear in-row
     # disks 0.068 m apart, the front-inner disk 0.202 m from the fuselage, the rear-inner one
     # 1.30 m ahead of the tail and 2.88 m from the pusher disk.
@@ -47,5 +50,5 @@ def check_trimmed_initial_design(case_file):
     assert items["wing section c_l/c_l,max (KS), +3g/-1g"].ok
     # The table names each violation.
     status = {row[0]: row[-1] for row in design_review_table(case_file).rows}
-    assert status["lift motors: torque margin T_max/T - 1"] == "VIOLATED"
+    assert status["hover tip Mach (per pair)"] == "VIOLATED"
     assert status["clearance: lift disk to lift disk"] == "ok"

@@ -44,6 +44,7 @@ from lpc_mdo.vehicle import (
     VehicleSpecError,
     load_vehicle,
     paper_calibrated_vehicle,
+    paper_initial_vehicle,
     reference_vehicle,
 )
 
@@ -68,6 +69,7 @@ __all__ = [
     "mass_breakdown",
     "motor",
     "paper_calibrated_vehicle",
+    "paper_initial_vehicle",
     "pitt_peters",
     "reference_vehicle",
     "RotorNoiseGroup",
