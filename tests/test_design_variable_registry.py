@@ -120,3 +120,18 @@ def test_a_bad_shape_rule_is_refused():
     with pytest.raises(ValueError, match="'shape' = 'blades' is not allowed"):
         VehicleDesignVariable("x", "m", "blades", "x")
     assert dataclasses.is_dataclass(VEHICLE_DESIGN_VARIABLES[0])
+
+
+def test_a_file_without_the_design_gross_mass_table_reads_its_default():
+    # Files written before the optimizer closed W_dg have no such table: it is read as
+    # DEFAULT_TABLES gives it (kg, ref 1000 kg, bounds 0.7-1.3 x masses.design_gross_mass),
+    # which is what the reference file writes out.
+    from lpc_mdo.vehicle import read_vehicle_file, vehicle_from_dict
+
+    data = read_vehicle_file()
+    del data["design_variables"]["design_gross_mass"]
+    read = vehicle_from_dict(data).design_variables["design_gross_mass"]
+    w_dg = reference_vehicle().masses.design_gross_mass
+    assert read == reference_vehicle().design_variables["design_gross_mass"]
+    assert read.initial == (w_dg,)
+    assert read.lower == pytest.approx((0.7 * w_dg,)) and read.upper == pytest.approx((1.3 * w_dg,))

@@ -193,11 +193,19 @@ def _dv_values(value, shape: tuple[int, ...], path: str) -> tuple[float, ...]:
     raise VehicleSpecError(f"'{path}' must be {what}, got {_show(value)}")
 
 
+#: Tables a vehicle file may leave out, read as given here: the design gross mass (its initial
+#: value ``masses.design_gross_mass``, its bounds 0.7-1.3 times it), which files written before
+#: the optimizer closed it do not carry.
+DEFAULT_TABLES = {"design_gross_mass": {"units": "kg", "ref": 1000.0}}
+
+
 def _read_design_variables(data, parts: dict) -> dict[str, DesignVariable]:
     specs = _design_variable_specs(parts)
     if isinstance(data, Mapping):
         _check_shared_prefixes(data, specs, parts["conditions"])
-    _check_keys(data, dict.fromkeys(specs, "design-variable table"), "design_variables")
+    optional = frozenset(name for name in DEFAULT_TABLES if name in specs)
+    _check_keys(data, dict.fromkeys(specs, "design-variable table"), "design_variables", optional)
+    data = {**data, **{name: DEFAULT_TABLES[name] for name in optional if name not in data}}
     # In the file's order (the order of the model's design-variable outputs).
     return _ReadOnlyDict(
         (name, _read_design_variable(data[name], specs[name], f"design_variables.{name}"))
