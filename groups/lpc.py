@@ -13,6 +13,7 @@ import openmdao.api as om
 from lpc_mdo.components.aero.airfoil import zero_lift_angle
 from lpc_mdo.components.atmosphere import standard_atmosphere
 from lpc_mdo.components.energy.battery import BatteryComp
+from lpc_mdo.components.energy.flight_time import FlightTimeComp
 from lpc_mdo.components.energy.mission_energy import MissionEnergyComp
 from lpc_mdo.components.gather_across_conditions import GatherComp
 from lpc_mdo.components.ks import KSComp
@@ -206,6 +207,36 @@ class LPCGroup(om.Group):
 
     # ------------------------------------------------------------------ mission and margins
 
+    def _add_flight_time(self, vehicle, powered, free, reserve):
+        """Add the times of the conditions whose optimized speeds fly stated distances."""
+        mission = vehicle.mission
+        fixed = [
+            c.duration - (c.level_distance / c.speed if c.optimizes_speed else 0.0) for c in powered
+        ]
+        self.add_subsystem(
+            "flight_time",
+            FlightTimeComp(
+                fixed_time=fixed,
+                distance=[c.level_distance if c.optimizes_speed else 0.0 for c in powered],
+                speed_conditions=free,
+                reserve_time=None if reserve is None else mission.reserve_time,
+                reserve_distance=mission.reserve_distance,
+                reserve_condition=mission.reserve_condition,
+            ),
+        )
+        self.connect("flight_time.duration", "mission.duration")
+        if reserve is not None:
+            self.connect("flight_time.reserve_duration", "mission.reserve_duration")
+        entries = condition_layout(vehicle).entries
+        for name in free:
+            entry = entries[name]["speed"]
+            self.connect(
+                entry.design_variable,
+                f"flight_time.{name}_speed",
+                src_indices=entry.flat_indices,
+                flat_src_indices=True,
+            )
+
     def _add_mission(self, vehicle):
         powered = [c for c in self.conditions if condition_kind(c.kind).power_output]
         self._powered = powered
@@ -219,6 +250,9 @@ class LPCGroup(om.Group):
                 if mission.reserve_condition in names
                 else None
             )
+            free = {c.name: i for i, c in enumerate(powered) if c.optimizes_speed}
+            if free:  # ahead of the mission energy, which takes its times
+                self._add_flight_time(vehicle, powered, free, reserve)
             self.add_subsystem(
                 "mission",
                 MissionEnergyComp(
@@ -227,11 +261,14 @@ class LPCGroup(om.Group):
                 promotes_outputs=["energy_used", "segment_energy"],
             )
             self.connect("power_mux.electrical_power", "mission.electrical_power")
-            self.set_input_defaults(
-                "mission.duration", np.array([c.duration for c in powered]), units="s"
-            )
-            if reserve is not None:
-                self.set_input_defaults("mission.reserve_duration", mission.reserve_time, units="s")
+            if not free:
+                self.set_input_defaults(
+                    "mission.duration", np.array([c.duration for c in powered]), units="s"
+                )
+                if reserve is not None:
+                    self.set_input_defaults(
+                        "mission.reserve_duration", mission.reserve_time, units="s"
+                    )
         else:
             self.add_subsystem(
                 "mission",

@@ -87,6 +87,9 @@ class SensitivityParameter:
         return SWEEP_PARAMETERS[self.name][1]
 
 
+#: The distances the conditions with optimized speeds fly (lpc_mdo.groups.lpc.LPCGroup).
+CRUISE_DISTANCE = "flight_time.distance"
+
 SENSITIVITY_PARAMETERS = {
     p.name: p
     for p in (
@@ -400,7 +403,7 @@ def post_optimal_sensitivities(prob, vehicle, parameters=None, active_tol=ACTIVE
     params = [SENSITIVITY_PARAMETERS[n] for n in names]
     found = optimum_derivatives(
         prob,
-        inputs=sorted({p.variable for p in params if p.kind == "input"}),
+        inputs=sorted({_input_variable(vehicle, p) for p in params if p.kind == "input"}),
         bounds=[p.variable for p in params if p.kind == "bound"],
         active_tol=active_tol,
     )
@@ -413,7 +416,8 @@ def post_optimal_sensitivities(prob, vehicle, parameters=None, active_tol=ACTIVE
             value = _bound_value(cons, p, vehicle)
         else:
             index, per_model, value = _input_element(prob, vehicle, p)
-            dw, active = float(found.inputs[p.variable][index] * per_model), None
+            variable = _input_variable(vehicle, p)
+            dw, active = float(found.inputs[variable][index] * per_model), None
         rows.append(Sensitivity(p.name, p.description, p.units, value, dw, dw * value / w0, active))
     active_list = [f"{name}[{k}]: {nu:.6g}" for name, k, nu in found.multipliers]
     return SensitivityResult(w0, rows, found.kkt_residual, active_list)
@@ -430,13 +434,29 @@ def _bound_value(cons, parameter, vehicle):
     return reference_value(vehicle, parameter.name)
 
 
+def _input_variable(vehicle, parameter):
+    """Return the model input of an input parameter.
+
+    At an optimized cruise speed the range is the distance it flies (:data:`CRUISE_DISTANCE`),
+    not a duration.
+    """
+    cruise = vehicle.condition(vehicle.mission.cruise_condition)
+    if parameter.name == "cruise_range" and cruise.optimizes_speed:
+        return CRUISE_DISTANCE
+    return parameter.variable
+
+
 def _input_element(prob, vehicle, parameter):
     """(element index, model units per reported unit, value in reported units) of an input."""
-    value = np.atleast_1d(prob.get_val(parameter.variable))
+    variable = _input_variable(vehicle, parameter)
+    value = np.atleast_1d(prob.get_val(variable))
     if parameter.name == "cruise_range":
-        # Range = cruise speed x cruise duration: d/d(range in km) = 1000 / V d/d(duration).
+        # Range = cruise speed x cruise duration: d/d(range in km) = 1000 / V d/d(duration);
+        # at an optimized speed the range is the distance itself: 1000 d/d(distance in m).
         powered = [c.name for c in prob.model._powered]
         index = powered.index(vehicle.mission.cruise_condition)
+        if variable == CRUISE_DISTANCE:
+            return index, 1000.0, float(value[index] / 1000.0)
         per_model = 1000.0 / vehicle.condition(vehicle.mission.cruise_condition).speed
         return index, per_model, float(value[index] / per_model)
     return 0, parameter.model_per_unit, float(value[0] / parameter.model_per_unit)

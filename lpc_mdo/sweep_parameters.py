@@ -46,7 +46,8 @@ def sweep_vehicle(vehicle, parameter, value):
     Return the vehicle with one sweep parameter set.
 
     Units: energy density Wh/kg, SoC and static-margin limits -, noise limit dBA, payload kg,
-    cruise range km (the cruise condition's duration at its speed).
+    cruise range km (the cruise condition's duration at its speed; at an optimized speed, the
+    distance its segments state).
     """
     if parameter not in SWEEP_PARAMETERS:
         raise ValueError(f"sweep: parameter = {parameter!r}; allowed: {list(SWEEP_PARAMETERS)}.")
@@ -83,10 +84,22 @@ def _with_value(vehicle, parameter, value):
             "cruise speed > 0"
         )
     key = f"{cruise.name}.duration (cruise range {value:g} km at {cruise.speed:g} m/s)"
-    duration = check_field(DesignCondition, "duration", value * 1000.0 / cruise.speed, key)
-    changed = replace(cruise, duration=duration)
+    if cruise.optimizes_speed:  # the range is the distance its segments state (at its speed)
+        fixed = cruise.duration - cruise.level_distance / cruise.speed
+        time = check_field(DesignCondition, "duration", fixed + value * 1000.0 / cruise.speed, key)
+        changed = replace(cruise, duration=time, level_distance=value * 1000.0)
+    else:
+        duration = check_field(DesignCondition, "duration", value * 1000.0 / cruise.speed, key)
+        changed = replace(cruise, duration=duration)
     conditions = tuple(changed if c is cruise else c for c in vehicle.conditions)
     return replace(vehicle, conditions=conditions)
+
+
+def _cruise_range(cruise):
+    """Cruise range (km): its stated distance at an optimized speed, else speed x duration."""
+    if cruise.optimizes_speed:
+        return cruise.level_distance / 1000.0
+    return cruise.speed * cruise.duration / 1000.0
 
 
 def reference_value(vehicle, parameter):
@@ -97,7 +110,7 @@ def reference_value(vehicle, parameter):
         "max_noise": lambda: vehicle.constraints.max_noise,
         "min_static_margin": lambda: vehicle.constraints.min_static_margin,
         "payload": lambda: vehicle.masses.payload,
-        "cruise_range": lambda: _cruise(vehicle).speed * _cruise(vehicle).duration / 1000.0,
+        "cruise_range": lambda: _cruise_range(_cruise(vehicle)),
     }
     if parameter not in values:
         raise ValueError(f"sweep: parameter = {parameter!r}; allowed: {list(SWEEP_PARAMETERS)}.")

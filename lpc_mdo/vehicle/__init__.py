@@ -368,7 +368,7 @@ def _build_vehicle(data: Mapping, keys: list[str] | None) -> Vehicle:
 
 
 def design_variable_count(vehicle: Vehicle | None = None) -> int:
-    """Total number of scalar design variables (181: paper 161, 5 windings, 10 + 5 of ours).
+    """Total number of scalar design variables (182: paper 161, 5 windings, 10 + 5 + 1 of ours).
 
     Parameters
     ----------

@@ -179,6 +179,15 @@ class ConditionKind:
                     f"'conditions[{index}].{name}' = {value!r} is not allowed: must be {text} "
                     f"in {condition.kind!r} conditions"
                 )
+        if condition.optimizes_speed and (
+            condition.kind != "steady" or (condition.flight_path_angle or 0.0) != 0.0
+        ):
+            raise VehicleSpecError(
+                f"'conditions[{index}].speed_rule' = 'optimized' is not allowed in condition "
+                f"{condition.name!r} (kind {condition.kind!r}): an optimized speed is flown in "
+                "level flight in a 'steady' condition (a climb or descent fixes its speed with its "
+                "vertical speed); allowed: 'fixed'"
+            )
         if cls.power_output is None and condition.energy_weight != 0.0:
             raise VehicleSpecError(
                 f"'conditions[{index}].energy_weight' = {condition.energy_weight!r} is not "

@@ -198,6 +198,11 @@ def _speed_variable(count, description):
 _PUSHER_RPM = ConditionVariable("pusher_rpm", (1, 1), (1,), "rpm", "pusher speed")
 _ELEVATOR = ConditionVariable("elevator", (1,), (1,), "rad", "h-tail deflection")
 _PITCH = ConditionVariable("pitch", (1,), (1,), "rad", "aircraft pitch", initial_from="pitch")
+#: A steady condition's speed where its ``speed_rule`` is "optimized": the optimizer's, not a
+#: trim variable (lpc_mdo.components.energy.flight_time turns its distances into times).
+_SPEED = ConditionVariable(
+    "speed", (1,), (1,), "m/s", "flight speed", initial_from="speed", trim=False
+)
 
 #: KS parameter of the structural conditions' stress aggregate ``stress_ratio_ks`` when no
 #: structural ``ks_rho`` is given (the stress constraint of the problems). The KS value exceeds
@@ -395,6 +400,8 @@ class SteadyFlightKind(ConditionKind):
 
     @classmethod
     def variables(cls, vehicle, condition):
+        if condition.optimizes_speed:
+            return (_PUSHER_RPM, _PITCH, _ELEVATOR, _SPEED)
         return (_PUSHER_RPM, _PITCH, _ELEVATOR)
 
     @classmethod

@@ -12,6 +12,9 @@ From them the loader derives, for every condition the segments fly:
 - ``flight_path_angle``: gamma = asin(vertical_speed / V) in a steady climb or descent, 0 in
   level flight;
 - ``duration``: its time per leg (the sum over its segments), and ``energy_weight`` = legs;
+- ``level_distance``: the distance its ``distance_km`` segments state, whose time follows the
+  speed in the model where the condition's ``speed_rule`` is "optimized"
+  (:class:`~lpc_mdo.components.energy.flight_time.FlightTimeComp`);
 
 and the reserve's time at its condition (:attr:`~lpc_mdo.vehicle.parts.Mission.reserve_time`), a
 term of its own in the mission energy, so that changing a leg's cruise range leaves the reserve
@@ -194,8 +197,8 @@ def mission_profile(mission: Mission, conditions: Sequence[DesignCondition]):
     rows : list of ProfileRow
     derived : dict
         condition index -> {'altitude', 'flight_path_angle', 'duration', 'energy_weight'}.
-    reserve : tuple of (int, float) or None
-        (condition index, reserve time s).
+    reserve : tuple of (int, float, float) or None
+        (condition index, reserve time s, reserve distance m: 0 unless the rule is a distance).
     """
     altitude = mission.start_altitude
     legs = mission.legs or 1
@@ -222,8 +225,16 @@ def mission_profile(mission: Mission, conditions: Sequence[DesignCondition]):
             mean = 0.5 * (altitude + end_altitude)
             entry = per_condition.setdefault(
                 i,
-                {"altitudes": [], "flight_path_angle": gamma, "duration": 0.0, "first": k},
+                {
+                    "altitudes": [],
+                    "flight_path_angle": gamma,
+                    "duration": 0.0,
+                    "level_distance": 0.0,
+                    "first": k,
+                },
             )
+            if segment.distance is not None:
+                entry["level_distance"] += segment.distance
             heights = [h for h, _ in entry["altitudes"]] + [mean]
             first = heights[0]
             if max(heights) - min(heights) > ALTITUDE_SPREAD or (
@@ -260,6 +271,7 @@ def mission_profile(mission: Mission, conditions: Sequence[DesignCondition]):
             "flight_path_angle": e["flight_path_angle"],
             "duration": e["duration"],
             "energy_weight": float(legs),
+            "level_distance": e["level_distance"],
         }
         for i, e in per_condition.items()
     }
@@ -278,7 +290,8 @@ def mission_profile(mission: Mission, conditions: Sequence[DesignCondition]):
         rows.append(
             ProfileRow("reserve", c.name, level, level, c.speed, 0.0, c.speed * time, time, 1)
         )
-        reserve = (index, time)
+        distance = mission.reserve.distance if mission.reserve.rule == "distance" else 0.0
+        reserve = (index, time, distance)
     return rows, derived, reserve
 
 
@@ -335,10 +348,11 @@ def apply_mission(mission: Mission, conditions: tuple[DesignCondition, ...]):
                 "by the mission's segments, so it states its own)"
             )
         out.append(dataclasses.replace(c, duration=c.duration or 0.0, energy_weight=0.0))
-    reserve_index, reserve_time = reserve if reserve is not None else (None, 0.0)
+    reserve_index, reserve_time, reserve_distance = reserve or (None, 0.0, 0.0)
     mission = dataclasses.replace(
         mission,
         reserve_condition=None if reserve_index is None else conditions[reserve_index].name,
         reserve_time=reserve_time,
+        reserve_distance=reserve_distance,
     )
     return mission, tuple(out)

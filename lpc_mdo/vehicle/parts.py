@@ -59,6 +59,8 @@ AIRFOILS: dict[str, Airfoil] = {
 #: pairs (a 4-rotor to a 12-rotor vehicle), each pair a rotor group of the design variables;
 #: the pusher is the group after the last pair.
 LIFT_ROTOR_COUNTS = (4, 6, 8, 10, 12)
+#: A condition's ``speed_rule``: its speed as given, or a design variable of the optimizer.
+SPEED_RULES = ("fixed", "optimized")
 _MAX_PAIRS = max(LIFT_ROTOR_COUNTS) // 2
 #: Bound of every body-frame coordinate (m): a vehicle of this class is at most 30 m long and
 #: wide; 50 m catches positions in mm or in ft x 1000.
@@ -717,6 +719,9 @@ class Mission:
         ``constraints.min_final_soc``, is then the only margin).
     reserve_condition, reserve_time : str or None, float
         Derived: the condition flown in reserve and for how long (s); None and 0 without one.
+    reserve_distance : float
+        Derived: the reserve's distance (m) where its rule is ``distance`` (its time then
+        follows an optimized speed), else 0.
     """
 
     cruise_condition: str = _param()
@@ -731,6 +736,7 @@ class Mission:
     # Set by the loader from the segments (lpc_mdo.vehicle.mission_profile.apply_mission).
     reserve_condition: str | None = field(default=None, metadata={"spec": _Spec(derived=True)})
     reserve_time: float = field(default=0.0, metadata={"spec": _Spec(derived=True)})
+    reserve_distance: float = field(default=0.0, metadata={"spec": _Spec(derived=True)})
 
     @property
     def isa_offset(self) -> float:
@@ -777,6 +783,15 @@ class DesignCondition:
         file's ``design_variables.{prefix}_{v}``. Conditions that share a prefix share the
         tables, one row each in vehicle-file order (the reference's five transition points:
         ``transition``); a prefix equal to the condition's name gives it tables of its own.
+    speed_rule : str or None
+        ``"optimized"``: the speed is a design variable of the condition (``{prefix}_speed``,
+        initial value ``speed``), so a level segment flown over a distance takes the time
+        distance / V and the optimum flies it at its best-range speed (over a duration, at its
+        best-endurance speed); a ``steady`` condition in level flight only. None (default, or
+        ``"fixed"``): the speed is ``speed``.
+    level_distance : float
+        Derived from the mission's segments: the distance (m) per leg flown by the condition's
+        ``distance_km`` segments; 0 without.
     """
 
     name: str = _param()
@@ -793,6 +808,13 @@ class DesignCondition:
     failed_rotor: int = _param(ge=-1, le=max(LIFT_ROTOR_COUNTS) - 1)
     acceleration: float = _param("m/s^2", ge=-20, le=20)
     design_variable_prefix: str = _param()
+    speed_rule: str = _param(choices=SPEED_RULES, optional=True)
+    level_distance: float = field(default=0.0, metadata={"spec": _Spec(derived=True)})
+
+    @property
+    def optimizes_speed(self) -> bool:
+        """Whether the speed is a design variable (``speed_rule = "optimized"``)."""
+        return self.speed_rule == "optimized"
 
 
 @dataclass(frozen=True)
