@@ -16,7 +16,10 @@ weights (docs user guide 'Bring your own vehicle'):
   65 m/s, in a second steady condition ``cruise_fast`` (its pitch, elevator and pusher speed are
   three more design-variable tables, copies of the cruise condition's);
 - a descent at the reference's 3 deg, the inbound transition, a vertical landing at 100 ft/min;
-- the FAA's day-VFR reserve: 30 minutes at the cruise condition (14 CFR 91.151(a)(1)).
+- the FAA's day-VFR reserve: 30 minutes at the cruise condition (14 CFR 91.151(a)(1));
+- the battery's lower bound 100 kg instead of the reference's 400 kg: this mission needs less
+  than the paper's (sized: 478 kg), and the optimum of its sequence sat on the 400 kg bound with
+  energy to spare.
 
 Refuses to write over a file it did not create (a file without this script's header).
 """
@@ -54,6 +57,7 @@ def example():
     dv = data["design_variables"]
     for table in ("pusher_rpm", "pitch", "elevator"):
         dv[f"cruise_fast_{table}"] = copy.deepcopy(dv[f"cruise_{table}"])
+    dv["battery_mass"]["lower"] = 100.0
     climb_rate = 4.572  # m/s, 900 ft/min (the reference's climb)
     descent_rate = -60.8756 * math.sin(math.radians(3.0))  # the reference's descent
     data["mission"].update(

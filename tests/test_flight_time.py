@@ -131,3 +131,18 @@ def test_a_range_sweep_moves_the_distance_an_optimized_speed_flies():
     assert swept.level_distance == pytest.approx(55e3)
     # the time at the initial speed follows: 15 km more at 57.19 m/s
     assert swept.duration - before.duration == pytest.approx(15e3 / before.speed)
+
+
+def test_the_best_range_study_writes_optimized_cruise_speeds(tmp_path):
+    from run_script_loader import load_run_script
+
+    from lpc_mdo.vehicle import load_vehicle
+
+    script = load_run_script("best_range_study")
+    target = tmp_path / "best_range.toml"
+    assert script.main(["write", str(MISSION_EXAMPLE), str(target)]) == 0
+    vehicle = load_vehicle(target)
+    for name in ("cruise", "cruise_fast"):
+        assert vehicle.condition(name).optimizes_speed
+        assert vehicle.design_variables[f"{name}_speed"].lower == (40.0,)
+    assert script.main(["write", str(MISSION_EXAMPLE), str(target)]) == 1  # not over a file
