@@ -146,3 +146,11 @@ def test_the_best_range_study_writes_optimized_cruise_speeds(tmp_path):
         assert vehicle.condition(name).optimizes_speed
         assert vehicle.design_variables[f"{name}_speed"].lower == (40.0,)
     assert script.main(["write", str(MISSION_EXAMPLE), str(target)]) == 1  # not over a file
+
+
+def test_an_optimized_speed_needs_the_mission_as_segments():
+    data = copy.deepcopy(read_vehicle_file())  # the reference: durations, no segments
+    names = [c["name"] for c in data["conditions"]]
+    data["conditions"][names.index("cruise")]["speed_rule"] = "optimized"
+    with pytest.raises(VehicleSpecError, match=r"speed_rule' = 'optimized' goes with the mission"):
+        vehicle_from_dict(data)

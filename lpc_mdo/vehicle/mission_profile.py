@@ -309,6 +309,13 @@ def apply_mission(mission: Mission, conditions: tuple[DesignCondition, ...]):
                     "without them the conditions' durations and energy weights are the mission"
                 )
         for i, c in enumerate(conditions):
+            if c.optimizes_speed:
+                raise VehicleSpecError(
+                    f"'conditions[{i}].speed_rule' = 'optimized' goes with the mission's segments "
+                    "([[mission.segments]]): they say which distance the speed flies; without "
+                    "them a condition's duration is fixed and the optimizer would fly it at its "
+                    "best-endurance speed; allowed: 'fixed', or segments"
+                )
             for field, key in DERIVED_KEYS.items():
                 if getattr(c, field) is None:
                     raise VehicleSpecError(
