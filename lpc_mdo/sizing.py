@@ -22,7 +22,8 @@ each step trimming those conditions at the step's masses and motors (:func:`lpc_
 Closed: SoC within 5e-4 above SoC_min (aimed at 2.5e-4 above: never below the floor), W0 within 0.01
 kg of W_dg (which also sizes the landing gear's tyres and so their drag), and the motors sized at
 the step's loads within 0.2 mm and 1 A of those the step flew; then one more trim flies the sized
-motors, so that their margins sit at the limits (the battery and W_dg still closed there). The
+motors, so that their margins sit at the limits plus the trim allowance
+(:data:`lpc_mdo.motor_sizing.TRIM_ALLOWANCE`; the battery and W_dg still closed there). The
 rotors, the wing and its gauges stay as the vehicle file gives them
 (the optimizer sizes those).
 """
