@@ -22,10 +22,10 @@ NASA = {
 #: Our differences as the docs give them (relative), to 0.5 %: none is within its tolerance,
 #: for the reasons the docs measure (drag area, hover efficiency, weights, battery rule).
 DOCUMENTED = {
-    "gross_mass": -0.163,
+    "gross_mass": -0.162,
     "empty_mass": -0.189,
     "battery_mass": -0.473,
-    "disk_loading": -0.165,
+    "disk_loading": -0.164,
 }
 
 
