@@ -75,13 +75,13 @@ class FlightTimeComp(om.ExplicitComponent):
             )
         self._reserve = opt["reserve_time"] is not None
         self.add_input("distance", val=self._d.copy(), units="m", desc="Distance per leg")
-        free = list(opt["speed_conditions"].values())
-        self.declare_partials("duration", "distance", rows=free, cols=free)
         self.add_output("duration", val=self._t0.copy(), units="s", desc="Time per leg")
         if self._reserve:
             self.add_output(
                 "reserve_duration", val=float(opt["reserve_time"]), units="s", desc="Reserve time"
             )
+        free = list(opt["speed_conditions"].values())
+        self.declare_partials("duration", "distance", rows=free, cols=free)
         for name, i in opt["speed_conditions"].items():
             self.add_input(f"{name}_speed", val=50.0, units="m/s", desc=f"Speed of {name}")
             self.declare_partials("duration", f"{name}_speed", rows=[i], cols=[0])
