@@ -151,13 +151,14 @@ def status_tolerances(prob, tol=TRIM_TOLERANCE):
     Every declared trim-row constraint of ``prob`` gets ``tol``, the design gross mass closure
     :data:`CLOSURE_TOLERANCE`.
     """
+    constraints = prob.model.get_constraints()
     tols = {
         name: tol
-        for name in prob.model.get_constraints()
+        for name in constraints
         if name.partition(".")[0] in prob.model.condition_names
         and name.partition(".")[2] in TRIM_OUTPUTS
     }
-    if MASS_CLOSURE in prob.model.get_constraints():
+    if MASS_CLOSURE in constraints:
         tols[MASS_CLOSURE] = CLOSURE_TOLERANCE
     return tols
 

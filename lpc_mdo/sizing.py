@@ -57,7 +57,14 @@ from lpc_mdo.trim import trim
 from lpc_mdo.vehicle import AIRFOILS, load_vehicle
 from lpc_mdo.vehicle.file_edit import replace_initial, replace_table_value
 
-__all__ = ["SizingError", "SizingResult", "rounded_up", "size_vehicle", "sized_vehicle_text"]
+__all__ = [
+    "SizingError",
+    "SizingResult",
+    "rounded_up",
+    "size_vehicle",
+    "sized_vehicle_text",
+    "with_sized_values",
+]
 
 #: Closure tolerances: state of charge (-) and W0 - W_dg (kg).
 SOC_TOLERANCE = 5e-4
@@ -289,8 +296,8 @@ def _close(vehicle, processes, max_steps, log, history):
         if closed and moved[0] <= LENGTH_TOLERANCE and moved[1] <= CURRENT_TOLERANCE:
             if moved[0] <= EXACT_LENGTH and moved[1] == 0.0:
                 return prob, conditions, state, _flown_motors(prob, vehicle, motors, sized)
-            # One more trim with the sized motors, whose margins are then at their limits (the
-            # loads move with the motors' small change of mass only).
+            # One more trim with the sized motors, whose margins are then at their limits plus
+            # the trim allowance (the loads move with the motors' small change of mass only).
             polish = True
             motors = {LENGTH: rounded_up(sized.length), CURRENT: sized.rated_current}
             continue
@@ -421,6 +428,23 @@ def rounded_up(length):
     return np.ceil(np.asarray(length) * 1e6 - 1e-6) / 1e6
 
 
+def with_sized_values(text, result, note):
+    """
+    Return a vehicle file's text with a sizing's closed values, each line's comment ``note``.
+
+    ``battery.mass``, ``masses.design_gross_mass`` (to the 0.01 kg the sizing flew) and the
+    initial values of ``motor_length`` (to the micrometre, rounded up) and
+    ``motor_rated_current``.
+    """
+    text = replace_table_value(text, "battery", "mass", f"{result.battery_mass:.2f}")
+    text = replace_table_value(
+        text, "masses", "design_gross_mass", f"{result.design_gross_mass:.2f}"
+    )
+    motors = result.motors
+    text = replace_initial(text, LENGTH, rounded_up(motors.length), note, fmt="{:.6f}")
+    return replace_initial(text, CURRENT, motors.rated_current, note, fmt="{:.1f}")
+
+
 def sized_vehicle_text(path, result):
     """
     Return the vehicle file at ``path`` (None: the reference) with the sizing's masses.
@@ -436,17 +460,7 @@ def sized_vehicle_text(path, result):
     else:
         text = Path(path).read_text(encoding="utf-8-sig")
         folder, label = Path(path).resolve().parent, str(path)
-    text = replace_table_value(text, "battery", "mass", f"{result.battery_mass:.2f}")
-    text = replace_table_value(
-        text, "masses", "design_gross_mass", f"{result.design_gross_mass:.2f}"
-    )
-    motors = result.motors
-    text = replace_initial(
-        text, LENGTH, rounded_up(motors.length), "sized by lpc-mdo size", fmt="{:.6f}"
-    )
-    text = replace_initial(
-        text, CURRENT, motors.rated_current, "sized by lpc-mdo size", fmt="{:.1f}"
-    )
+    text = with_sized_values(text, result, "sized by lpc-mdo size")
     if folder is not None:
 
         def absolute(match):

@@ -37,14 +37,9 @@ import numpy as np  # noqa: E402
 from lpc_mdo.groups.vehicle import closed_design_gross_mass  # noqa: E402
 from lpc_mdo.motor_sizing import CURRENT, LENGTH  # noqa: E402
 from lpc_mdo.problems import build_problem  # noqa: E402
-from lpc_mdo.sizing import rounded_up, size_vehicle  # noqa: E402
+from lpc_mdo.sizing import size_vehicle, with_sized_values  # noqa: E402
 from lpc_mdo.vehicle import read_vehicle_file, vehicle_from_dict  # noqa: E402
-from lpc_mdo.vehicle.file_edit import (  # noqa: E402
-    replace_initial,
-    replace_table_value,
-    replace_value,
-    write_values,
-)
+from lpc_mdo.vehicle.file_edit import replace_initial, replace_value, write_values  # noqa: E402
 
 THICKNESSES = (
     "front_spar_thickness",
@@ -128,17 +123,9 @@ def write_closure(path, gauges, design_gross_mass, sizing=None):
     def edit(text):
         for name, values in gauges.items():
             text = replace_initial(text, name, values, f"sized at +3g/-1g ({note})")
-        text = replace_value(text, "design_gross_mass", f"{design_gross_mass:.2f}")
-        if sizing is not None:
-            text = replace_table_value(text, "battery", "mass", f"{sizing.battery_mass:.2f}")
-            motors = sizing.motors
-            text = replace_initial(
-                text, LENGTH, rounded_up(motors.length), f"sized to the mission ({note})", "{:.6f}"
-            )
-            text = replace_initial(
-                text, CURRENT, motors.rated_current, f"sized to the mission ({note})", "{:.1f}"
-            )
-        return text
+        if sizing is not None:  # its W_dg is the closure's
+            return with_sized_values(text, sizing, f"sized to the mission ({note})")
+        return replace_value(text, "design_gross_mass", f"{design_gross_mass:.2f}")
 
     write_values(path, edit)
 

@@ -82,11 +82,16 @@ class FlightTimeComp(om.ExplicitComponent):
             )
         free = list(opt["speed_conditions"].values())
         self.declare_partials("duration", "distance", rows=free, cols=free)
+        # The condition whose speed flies the reserve distance, if any.
+        reserve_speed = opt["reserve_condition"] if opt["reserve_distance"] else None
+        self._reserve_speed = (
+            reserve_speed if self._reserve and reserve_speed in opt["speed_conditions"] else None
+        )
         for name, i in opt["speed_conditions"].items():
             self.add_input(f"{name}_speed", val=50.0, units="m/s", desc=f"Speed of {name}")
             self.declare_partials("duration", f"{name}_speed", rows=[i], cols=[0])
-            if self._reserve and name == opt["reserve_condition"] and opt["reserve_distance"]:
-                self.declare_partials("reserve_duration", f"{name}_speed")
+        if self._reserve_speed is not None:
+            self.declare_partials("reserve_duration", f"{self._reserve_speed}_speed")
 
     def _speed(self, inputs, name):
         speed = inputs[f"{name}_speed"]
@@ -108,12 +113,11 @@ class FlightTimeComp(om.ExplicitComponent):
         for name, i in opt["speed_conditions"].items():
             duration[i] += distance[i] / self._speed(inputs, name)
         outputs["duration"] = duration
-        if self._reserve:
-            name = opt["reserve_condition"]
-            if opt["reserve_distance"] and name in opt["speed_conditions"]:
-                outputs["reserve_duration"] = opt["reserve_distance"] / self._speed(inputs, name)
-            else:
-                outputs["reserve_duration"] = opt["reserve_time"]
+        if self._reserve_speed is not None:
+            speed = self._speed(inputs, self._reserve_speed)
+            outputs["reserve_duration"] = opt["reserve_distance"] / speed
+        elif self._reserve:
+            outputs["reserve_duration"] = opt["reserve_time"]
 
     def compute_partials(self, inputs, partials):
         opt = self.options
@@ -123,6 +127,6 @@ class FlightTimeComp(om.ExplicitComponent):
             speed = self._speed(inputs, name)
             partials["duration", f"{name}_speed"] = -distance[i] / speed**2
             per_distance.append(1.0 / speed)
-            if self._reserve and name == opt["reserve_condition"] and opt["reserve_distance"]:
+            if name == self._reserve_speed:
                 partials["reserve_duration", f"{name}_speed"] = -opt["reserve_distance"] / speed**2
         partials["duration", "distance"] = per_distance
