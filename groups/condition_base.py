@@ -38,7 +38,8 @@ class ConditionGroup(om.Group):
     ``variables`` as inputs of their names, the outputs its trim rows, constraints, motor sets and
     ``power_output`` name. Options common to every condition: ``vehicle``
     (:class:`~lpc_mdo.vehicle.Vehicle`), ``condition`` (its name in the vehicle file),
-    ``rotor_polar``/``pusher_polar`` (blade-section polars) and ``num_radial``.
+    ``rotor_polar``/``pusher_polar`` (blade-section polars), ``num_radial`` and ``footprint``
+    (the departure's noise at the noise-footprint observers, lpc_mdo.groups.footprint).
     """
 
     #: The declaration of the condition's kind (a ConditionKind subclass).
@@ -63,4 +64,11 @@ class ConditionGroup(om.Group):
         )
         self.options.declare(
             "num_radial", default=25, types=int, lower=2, desc="radial stations of the rotor models"
+        )
+        self.options.declare(
+            "footprint",
+            default=False,
+            types=bool,
+            desc="add the noise of the condition's departure legs at the vehicle's noise-footprint "
+            "observers (lpc_mdo.groups.footprint; a hover or transition point)",
         )

@@ -12,6 +12,7 @@ from lpc_mdo.groups.condition_builders import (
     add_lift_rotors,
     add_power,
 )
+from lpc_mdo.groups.footprint import add_footprint_noise
 from lpc_mdo.vehicle.condition_kinds import HoverKind, noise_group_name, num_lift_pairs
 
 #: KS scale (rad/s**2) of a control axis without a required acceleration: the available
@@ -165,6 +166,8 @@ class HoverCondition(ConditionGroup):
                     src_indices=np.arange(na),
                     flat_src_indices=True,
                 )
+            if self.options["footprint"]:
+                add_footprint_noise(self, vehicle, condition.name, flying=False)
             # Each rotor's section t/c at every acoustic station (rotor, station).
             thickness = [vehicle.lift_rotors[i].thickness_to_chord for i in self.active_rotors]
             self.set_input_defaults(

@@ -18,10 +18,18 @@ from lpc_mdo.components.energy.mission_energy import MissionEnergyComp
 from lpc_mdo.components.gather_across_conditions import GatherComp
 from lpc_mdo.components.ks import KSComp
 from lpc_mdo.groups.condition_kinds import condition_group
+from lpc_mdo.groups.footprint import FootprintGroup, footprint_stations
 from lpc_mdo.groups.vehicle import VehicleGroup
 from lpc_mdo.vehicle import VehicleSpecError, reference_vehicle
 from lpc_mdo.vehicle.condition_contract import condition_kind
+from lpc_mdo.vehicle.condition_kinds import footprint_chord_inputs
 from lpc_mdo.vehicle.condition_layout import condition_layout
+from lpc_mdo.vehicle.footprint_path import (
+    departure_conditions,
+    departure_points,
+    footprint_geometry,
+    footprint_observers,
+)
 
 # Torque margin reported for a motor that no included condition loads (a model built with a
 # single OEI case); large, so it never binds.
@@ -158,6 +166,7 @@ class LPCGroup(om.Group):
             promotes=["*"],
         )
 
+        self.footprint_conditions = footprint_conditions(vehicle, self.conditions)
         for condition in self.conditions:
             cls = condition_group(condition.kind)
             kwargs = {
@@ -165,6 +174,7 @@ class LPCGroup(om.Group):
                 "condition": condition.name,
                 "rotor_polar": polar,
                 "pusher_polar": pusher_polar,
+                "footprint": condition.name in self.footprint_conditions,
             }
             if _declares(cls, "wing_zero_lift_angle"):
                 kwargs["wing_zero_lift_angle"] = alpha0
@@ -174,6 +184,8 @@ class LPCGroup(om.Group):
                 kwargs["coupling"] = self.options["structural_coupling"]
             self.add_subsystem(condition.name, cls(**kwargs))
         self.condition_names = [c.name for c in self.conditions]
+        if self.footprint_conditions:
+            self.add_subsystem("footprint", FootprintGroup(vehicle=vehicle), promotes_outputs=["*"])
         self._add_mission(vehicle)
 
     def configure(self):
@@ -193,6 +205,21 @@ class LPCGroup(om.Group):
                     src_indices=(entry.flat_indices.reshape(v.target_shape),),
                     flat_src_indices=True,
                 )
+        for name, width in self.footprint_conditions.items():
+            nrad = self._get_subsystem(name).options["num_radial"]
+            for source, target, src_indices in footprint_chord_inputs(
+                vehicle, vehicle.condition(name), footprint_stations(nrad), nrad
+            ):
+                self.connect(
+                    source, f"{name}.{target}", src_indices=src_indices, flat_src_indices=True
+                )
+            no = len(footprint_observers(vehicle.noise_footprint))
+            self.connect(
+                f"{name}.footprint_spl_a",
+                f"footprint.exposure.{name}",
+                src_indices=(np.arange(no * width).reshape(no, width),),
+                flat_src_indices=True,
+            )
         for i, condition in enumerate(self._powered):
             power = condition_kind(condition.kind).power_output
             self.connect(f"{condition.name}.{power}", f"power_mux.electrical_power_{i}")
@@ -316,6 +343,22 @@ class LPCGroup(om.Group):
             promotes_outputs=[("KS", f"{prefix}_motor_{quantity}")],
         )
         self.connect(f"{prefix}_{name}_gather.{quantity}", f"{prefix}_{name}.g")
+
+
+def footprint_conditions(vehicle, conditions):
+    """
+    Return the departure conditions the noise footprint hears, name -> quadrature points.
+
+    Empty unless the vehicle has a ``noise_footprint`` and ``conditions`` include every
+    condition of its departure (lpc_mdo.vehicle.footprint_path): a model of a subset of the
+    conditions (a subproblem) has no footprint.
+    """
+    if vehicle.noise_footprint is None:
+        return {}
+    names = {c.name for c in conditions}
+    if not all(c.name in names for c in departure_conditions(vehicle)):
+        return {}
+    return departure_points(*footprint_geometry(vehicle))
 
 
 @functools.cache

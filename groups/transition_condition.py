@@ -10,6 +10,7 @@ from lpc_mdo.groups.condition_builders import (
     add_pusher,
     declare_aero_options,
 )
+from lpc_mdo.groups.footprint import add_footprint_noise
 from lpc_mdo.vehicle.condition_kinds import TransitionKind, num_lift_pairs
 
 
@@ -72,3 +73,5 @@ class TransitionCondition(ConditionGroup):
         add_equations_of_motion(
             self, ["aero", "drag", "lift", "pusher"], forces_only=["drag"], path_axes=True
         )
+        if self.options["footprint"]:
+            add_footprint_noise(self, vehicle, condition.name, flying=True)

@@ -18,7 +18,7 @@ import openmdao.api as om
 
 from lpc_mdo.components.design_deviation import DesignDeviationComp
 from lpc_mdo.drivers import make_driver
-from lpc_mdo.groups.lpc import LPCGroup, included_conditions, openmdao_units
+from lpc_mdo.groups.lpc import LPCGroup, footprint_conditions, included_conditions, openmdao_units
 from lpc_mdo.recorder import CaseRecorder
 from lpc_mdo.study_plan import default_optimizer, rotor_group_indices, stage
 from lpc_mdo.vehicle import load_vehicle, reference_vehicle
@@ -33,7 +33,10 @@ from lpc_mdo.vehicle.design_variable_registry import BASELINE_SET
 #: floor; ``control_reserve``, the roll and pitch acceleration the lift rotors can still add in
 #: hover and every one-rotor-out case; the rotors' advance ratio, tip Mach and minimum chord,
 #: the motors' voltage margin and the wing sections' lift (each condition kind's
-#: ``constraints()`` says where they apply).
+#: ``constraints()`` says where they apply); ``noise_footprint``, where the vehicle file has a
+#: ``[noise_footprint]`` and the model every condition of the departure: the smooth maximum
+#: over its ground observers of the sound exposure level (and of the maximum level, if the
+#: file limits it) within the file's limits (lpc_mdo.groups.footprint).
 CONSTRAINT_KINDS = (
     "trim",
     "noise",
@@ -50,6 +53,7 @@ CONSTRAINT_KINDS = (
     "min_chord",
     "voltage_margin",
     "wing_stall",
+    "noise_footprint",
 )
 #: Finer kinds a subproblem may name instead of 'torque_margin' or 'voltage_margin' (which mean
 #: both motor kinds). ``voltage_margin`` (not in the paper): every motor's MTPA operating point
@@ -329,6 +333,11 @@ def declare_problem(
                 model.add_constraint(f"{c.name}.{con.output}", **con.options)
 
     # Vehicle-level constraints.
+    if "noise_footprint" in wanted and footprint_conditions(vehicle, conditions):
+        footprint = vehicle.noise_footprint
+        model.add_constraint("footprint_sel_max", upper=footprint.max_sel, ref=10.0)
+        if footprint.max_lamax is not None:
+            model.add_constraint("footprint_lamax_max", upper=footprint.max_lamax, ref=10.0)
     if "soc" in wanted:
         model.add_constraint("state_of_charge", lower=limits.min_final_soc, ref=0.1)
     if "radius_intersection" in wanted:

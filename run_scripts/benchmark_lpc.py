@@ -31,6 +31,7 @@ import openmdao.api as om  # noqa: E402
 
 from lpc_mdo.groups.lpc import LPCGroup  # noqa: E402
 from lpc_mdo.problems import declare_problem  # noqa: E402
+from lpc_mdo.vehicle import load_vehicle  # noqa: E402
 
 PAPER_FORWARD_S = 7.06
 PAPER_DERIVATIVE_S = 24.84
@@ -41,10 +42,10 @@ REFERENCE_TIMES = {"setup": 2.96, "run_model": 0.121, "totals": 0.366}
 MOVED_BY = 1.0e-3
 
 
-def build():
+def build(vehicle=None):
     """Return the set-up full LPC model with a driver, so that totals use the driver scaling."""
     prob = om.Problem(reports=False)
-    prob.model = LPCGroup()
+    prob.model = LPCGroup(vehicle=vehicle)
     declare_problem(prob.model)  # paper Table 6 + ours: 176 design variables, every constraint
     prob.driver = om.ScipyOptimizeDriver()  # only so compute_totals uses the driver's scaling
     prob.setup(mode="rev")
@@ -57,10 +58,11 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeats", type=int, default=5, help="timed repetitions (median)")
     parser.add_argument("--profile", action="store_true", help="profile one run + totals")
+    parser.add_argument("--vehicle", default=None, help="vehicle file (default: the reference)")
     args = parser.parse_args(argv)
 
     start = time.perf_counter()
-    prob = build()
+    prob = build(None if args.vehicle is None else load_vehicle(args.vehicle))
     setup = time.perf_counter() - start
     prob.run_model()
     prob.compute_totals()  # warm-up: first linearization allocates the Jacobians

@@ -33,15 +33,20 @@ class NoiseExposureComp(om.ExplicitComponent):
     speed V at closest distance d with spherical spreading, L(t) = L_0 - 10 log10(1 +
     (V t/d)^2), gives sel = L_0 + 10 log10(pi d/(V t_0)) over an infinite time window.
 
-    Partials: analytic; ``sel`` and ``lmax`` of observer i depend on row i of ``level``, ``sel``
-    also on every duration.
+    Partials: analytic; ``sel`` and ``lmax`` of observer i depend on row i of the levels, ``sel``
+    also on the durations.
 
     Inputs
     ------
     level : float, (num_observers, num_points), dB (units=None)
-        A-weighted level at each observer from each point of the path.
-    duration : float, (num_points,), s
-        Time share of each point (> 0).
+        A-weighted level at each observer from each point of the path (without ``sources``).
+    {name} : float, (num_observers, width), dB (units=None)
+        With ``sources`` = ((name, width), ...): the levels of consecutive points of the path
+        from each source (e.g. one design condition), in path order.
+    duration : float, (num_points,) or (num_observers, num_points), s
+        Time share of each point (> 0); one per observer and point with
+        ``duration_per_observer`` (an equivalent time that also carries the spreading over a
+        leg, lpc_mdo.vehicle.footprint_path).
 
     Outputs
     -------
@@ -53,7 +58,11 @@ class NoiseExposureComp(om.ExplicitComponent):
     Options
     -------
     num_observers, num_points : int
-        Array sizes (>= 1).
+        Array sizes (>= 1); with ``sources`` num_points is the sum of their widths.
+    sources : sequence of (str, int) or None
+        Names and widths of the level inputs (None: one input ``level``).
+    duration_per_observer : bool
+        Whether ``duration`` has one row per observer. Default False.
     rho : float
         Sharpness of the smooth maximum, per dB (> 0). Default 20.
     """
@@ -62,21 +71,59 @@ class NoiseExposureComp(om.ExplicitComponent):
         self.options.declare("num_observers", default=1, desc="Number of observers (>= 1)")
         self.options.declare("num_points", default=1, desc="Points of the path (>= 1)")
         self.options.declare("rho", default=20.0, desc="Smooth-maximum sharpness, 1/dB (> 0)")
+        self.options.declare(
+            "sources",
+            default=None,
+            types=(list, tuple),
+            allow_none=True,
+            desc="(name, width) of each level input, in path order (None: one input 'level')",
+        )
+        self.options.declare(
+            "duration_per_observer",
+            default=False,
+            types=bool,
+            desc="duration has one row per observer",
+        )
 
     def setup(self):
         no = check_integer("num_observers", self.options["num_observers"], lower=1)
-        npt = check_integer("num_points", self.options["num_points"], lower=1)
         check_number("rho", self.options["rho"], lower=0.0, lower_open=True)
-        self.add_input("level", np.full((no, npt), 60.0), units=None,
-                       desc="A-weighted level at each observer from each point, dB")  # fmt: skip
-        self.add_input("duration", np.ones(npt), units="s", desc="time share of each point")
+        sources = self.options["sources"]
+        if sources is None:
+            npt = check_integer("num_points", self.options["num_points"], lower=1)
+            sources = (("level", npt),)
+        else:
+            sources = tuple(
+                (str(name), check_integer(f"width of source {name!r}", width, lower=1))
+                for name, width in sources
+            )
+            npt = sum(width for _, width in sources)
+        self._sources = sources
+        self._npt = npt
+        starts = np.cumsum([0] + [width for _, width in sources])
+        for name, width in sources:
+            self.add_input(
+                name,
+                np.full((no, width), 60.0),
+                units=None,
+                desc="A-weighted level at each observer from points of the path, dB",
+            )
+            rows = np.repeat(np.arange(no), width)
+            cols = np.arange(no * width)
+            self.declare_partials("sel", name, rows=rows, cols=cols)
+            self.declare_partials("lmax", name, rows=rows, cols=cols)
+        self._columns = [
+            slice(start, start + width)
+            for (_, width), start in zip(sources, starts[:-1], strict=True)
+        ]
+        per_observer = self.options["duration_per_observer"]
+        self.add_input("duration", np.ones((no, npt) if per_observer else npt), units="s",
+                       desc="time share of each point")  # fmt: skip
         self.add_output("sel", np.zeros(no), units=None, desc="sound exposure level, dB")
         self.add_output("lmax", np.zeros(no), units=None, desc="smooth maximum level, dB")
         rows = np.repeat(np.arange(no), npt)
-        cols = np.arange(no * npt)
-        self.declare_partials("sel", "level", rows=rows, cols=cols)
-        self.declare_partials("lmax", "level", rows=rows, cols=cols)
-        self.declare_partials("sel", "duration", rows=rows, cols=np.tile(np.arange(npt), no))
+        cols = np.arange(no * npt) if per_observer else np.tile(np.arange(npt), no)
+        self.declare_partials("sel", "duration", rows=rows, cols=cols)
 
     def _parts(self, inputs):
         check_range(
@@ -88,8 +135,9 @@ class NoiseExposureComp(om.ExplicitComponent):
             error=om.AnalysisError,
             where=self.msginfo,
         )
-        check_range("level", inputs["level"], error=om.AnalysisError, where=self.msginfo)
-        level = inputs["level"]
+        for name, _ in self._sources:
+            check_range(name, inputs[name], error=om.AnalysisError, where=self.msginfo)
+        level = np.concatenate([inputs[name] for name, _ in self._sources], axis=1)
         top = np.max(level.real, axis=1, keepdims=True)
         # Energies relative to the loudest point: 10**((L - top)/10) <= 1, no overflow.
         energy = 10.0 ** ((level - top) / 10.0) * inputs["duration"]
@@ -106,6 +154,9 @@ class NoiseExposureComp(om.ExplicitComponent):
         _, energy, weights = self._parts(inputs)
         share = energy / np.sum(energy, axis=1, keepdims=True)
         # d sel/dL_ij = E_ij dt_j / sum; d sel/d dt_j = (10/ln 10) E_ij / sum.
-        partials["sel", "level"] = share.ravel()
-        partials["sel", "duration"] = (DB_PER_NEPER * share / inputs["duration"]).ravel()
-        partials["lmax", "level"] = (weights / np.sum(weights, axis=1, keepdims=True)).ravel()
+        softmax = weights / np.sum(weights, axis=1, keepdims=True)
+        for (name, _), columns in zip(self._sources, self._columns, strict=True):
+            partials["sel", name] = share[:, columns].ravel()
+            partials["lmax", name] = softmax[:, columns].ravel()
+        duration = np.broadcast_to(inputs["duration"], share.shape)
+        partials["sel", "duration"] = (DB_PER_NEPER * share / duration).ravel()

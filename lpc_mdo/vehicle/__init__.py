@@ -114,6 +114,7 @@ from lpc_mdo.vehicle.consistency import (
     check_flight_speeds,
 )
 from lpc_mdo.vehicle.design_variables import _read_design_variables
+from lpc_mdo.vehicle.footprint_path import footprint_geometry
 from lpc_mdo.vehicle.mission_profile import apply_mission
 from lpc_mdo.vehicle.one_rotor_out import expand_failures, file_keys
 from lpc_mdo.vehicle.parts import (
@@ -130,6 +131,7 @@ from lpc_mdo.vehicle.parts import (
     Material,
     Mission,
     Motor,
+    NoiseFootprint,
     NoiseObserver,
     Rotor,
     Stability,
@@ -156,6 +158,7 @@ __all__ = [
     "Material",
     "Mission",
     "Motor",
+    "NoiseFootprint",
     "NoiseObserver",
     "Rotor",
     "Vehicle",
@@ -364,6 +367,8 @@ def _build_vehicle(data: Mapping, keys: list[str] | None) -> Vehicle:
         )
     vehicle = Vehicle(**values)
     check_flight_speeds(vehicle)
+    if vehicle.noise_footprint is not None:
+        footprint_geometry(vehicle)  # the departure it hears, its observers in the far field
     return vehicle
 
 

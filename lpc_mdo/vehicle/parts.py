@@ -61,6 +61,15 @@ AIRFOILS: dict[str, Airfoil] = {
 LIFT_ROTOR_COUNTS = (4, 6, 8, 10, 12)
 #: A condition's ``speed_rule``: its speed as given, or a design variable of the optimizer.
 SPEED_RULES = ("fixed", "optimized")
+#: Microphone height of a noise footprint's ground observers when the file gives none (m): the
+#: certification microphone 1.2 m (4 ft) above ground (14 CFR Part 36, Appendix H, H36.109;
+#: ICAO Annex 16 Vol. I, Appendix 2).
+DEFAULT_OBSERVER_HEIGHT = 1.2
+#: Parts of each transition leg of a noise footprint, and Gauss points per part in the angle of
+#: the line of sight, when the file gives none (lpc_mdo.vehicle.footprint_path; docs
+#: theory/acoustics 'Noise footprint' measures the SEL's change with more).
+DEFAULT_LEG_SUBDIVISIONS = 1
+DEFAULT_QUADRATURE_POINTS = 3
 _MAX_PAIRS = max(LIFT_ROTOR_COUNTS) // 2
 #: Bound of every body-frame coordinate (m): a vehicle of this class is at most 30 m long and
 #: wide; 50 m catches positions in mm or in ft x 1000.
@@ -947,6 +956,73 @@ class NoiseObserver:
 
 
 @dataclass(frozen=True)
+class NoiseFootprint:
+    """Ground observers of the departure's noise footprint (``[noise_footprint]``).
+
+    The departure is the first hover without a failed rotor, held over the vertiport for
+    ``hover_time``, then every transition point in file order, each flown along the track for
+    its duration at its speed (:mod:`lpc_mdo.vehicle.footprint_path`; docs theory/acoustics
+    'Noise footprint'). The observers stand on the ground at every combination of a track
+    position (along the flight direction from the vertiport) and a lateral offset.
+
+    Attributes
+    ----------
+    track_positions : tuple of float
+        Observer positions along the track from the vertiport (m), flight direction positive.
+    lateral_offsets : tuple of float or None
+        Observer offsets to the right of the track (m); None: on the track only (0).
+    observer_height : float or None
+        Microphone height above the ground (m); None: 1.2 m (:data:`DEFAULT_OBSERVER_HEIGHT`).
+    hover_time : float
+        Time hovering over the vertiport on departure (s).
+    max_sel : float
+        Limit of every observer's sound exposure level (dBA).
+    max_lamax : float or None
+        Limit of every observer's maximum A-weighted level (dBA); None: not constrained.
+    leg_subdivisions : int or None
+        Parts each transition leg is split into (None: 1).
+    quadrature_points : int or None
+        Gauss points per part, in the angle of the line of sight (None: 3).
+    """
+
+    # Within 20 km of the vertiport: the departure's transition covers a few km.
+    track_positions: tuple[float, ...] = _param("m", ge=-20000, le=20000, shape=(None,))
+    lateral_offsets: tuple[float, ...] = _param(
+        "m", ge=-20000, le=20000, shape=(None,), optional=True
+    )
+    # A microphone 0-30 m above ground (a roof top at most).
+    observer_height: float = _param("m", ge=0, le=30, optional=True)
+    hover_time: float = _param("s", gt=0, le=600)
+    # 20-200 dBA: a quiet room to beyond the pain threshold.
+    max_sel: float = _param("dBA", ge=20, le=200)
+    max_lamax: float = _param("dBA", ge=20, le=200, optional=True)
+    leg_subdivisions: int = _param(ge=1, le=20, optional=True)
+    quadrature_points: int = _param(ge=1, le=20, optional=True)
+
+    @property
+    def offsets(self) -> tuple[float, ...]:
+        """Lateral offsets (m): the file's, or (0,)."""
+        return (0.0,) if self.lateral_offsets is None else self.lateral_offsets
+
+    @property
+    def height(self) -> float:
+        """Microphone height (m): the file's, or 1.2 m."""
+        return DEFAULT_OBSERVER_HEIGHT if self.observer_height is None else self.observer_height
+
+    @property
+    def subdivisions(self) -> int:
+        """Parts of each transition leg: the file's, or 1."""
+        return DEFAULT_LEG_SUBDIVISIONS if self.leg_subdivisions is None else self.leg_subdivisions
+
+    @property
+    def nodes(self) -> int:
+        """Gauss points per part of a transition leg: the file's, or 3."""
+        return (
+            DEFAULT_QUADRATURE_POINTS if self.quadrature_points is None else self.quadrature_points
+        )
+
+
+@dataclass(frozen=True)
 class DesignVariable:
     """Bounds, initial value and scaling of one (vector) design variable.
 
@@ -1055,6 +1131,8 @@ class Vehicle:
         Constraint limits.
     noise_observer : tuple of NoiseObserver
         Hover noise observers (one row of the noise constraint each).
+    noise_footprint : NoiseFootprint or None
+        Ground observers of the departure's noise footprint; None: no footprint.
     design_variables : Mapping of str to DesignVariable
         The 161 paper design variables and the 10 transition roll/yaw speed differentials by
         name (read-only); see the module docstring.
@@ -1084,6 +1162,7 @@ class Vehicle:
     noise_observer: tuple[NoiseObserver, ...] = _param(
         count_note="one [noise_observer] table or [[noise_observer]] tables"
     )
+    noise_footprint: NoiseFootprint = _param(optional=True)
     design_variables: Mapping[str, DesignVariable] = _param()
 
     @property

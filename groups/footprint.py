@@ -1,0 +1,205 @@
+"""The departure's noise footprint: rotor noise at ground observers from each leg, SEL and L_Amax.
+
+Each condition of the departure (lpc_mdo.vehicle.footprint_path: the vertiport hover, then the
+transition points) hears its own legs with :func:`add_footprint_noise`: its rotors, in their
+trimmed state, at every observer from each leg's closest point. :class:`FootprintGroup`, at the
+vehicle level, adds up the exposure of every observer over the path and the smooth maxima the
+constraint kind ``noise_footprint`` bounds (docs theory/acoustics 'Noise footprint').
+"""
+
+import numpy as np
+import openmdao.api as om
+
+from lpc_mdo.components.acoustics.exposure import NoiseExposureComp
+from lpc_mdo.components.acoustics.path_observer import PathObserverComp
+from lpc_mdo.components.ks import KSComp
+from lpc_mdo.groups.acoustics import RotorNoiseGroup
+from lpc_mdo.vehicle.footprint_path import departure_points, footprint_geometry
+
+__all__ = [
+    "FootprintGroup",
+    "add_footprint_noise",
+    "footprint_stations",
+    "FOOTPRINT_BANDS",
+    "FOOTPRINT_GUST_HARMONICS",
+]
+
+#: One-third-octave bands of the footprint's broadband noise: 24 bands, 50 Hz to 10 kHz, where
+#: the A-weighting is above -30 dB (IEC 61672-1:2013, Table 3). The hover constraint's 38 bands
+#: from 12.5 Hz add nothing the A-weighted level shows (docs theory/acoustics 'Noise footprint'
+#: measures it).
+FOOTPRINT_BANDS = (24, 50.0)
+#: Sears gust load harmonics of the footprint's loading noise (the hover constraint's 10;
+#: measured in docs theory/acoustics 'Noise footprint').
+FOOTPRINT_GUST_HARMONICS = 4
+#: Every third station of the rotor model, tip element included: the acoustic stations of the
+#: footprint (9 of 25; the loads come from the rotor's thrust and torque).
+FOOTPRINT_STATION_STEP = 3
+#: Smooth maximum over the observers, per dB: at most ln(n)/rho above the largest (0.23 dB for
+#: ten observers).
+FOOTPRINT_KS_RHO = 10.0
+
+
+def footprint_stations(num_radial):
+    """Return the rotor model's radial stations (indices) the footprint's noise uses."""
+    return np.arange(num_radial - 1, -1, -FOOTPRINT_STATION_STEP)[::-1]
+
+
+def _legs_of(vehicle, condition):
+    """Return the geometry of ``condition``'s legs and the observer count."""
+    legs, geometry = footprint_geometry(vehicle)
+    mine = [g for leg, g in zip(legs, geometry, strict=True) if leg.condition == condition]
+    return mine, len(geometry[0].offset)
+
+
+def add_footprint_noise(group, vehicle, condition, flying):
+    """
+    Add the noise of ``condition``'s legs at the footprint's observers to a condition group.
+
+    Output ``footprint_spl_a`` (num_observers x num_points,), observer-major: the total
+    A-weighted level of the lift rotors (and, if ``flying``, the pusher; a transition point)
+    at each observer from each quadrature point of the condition's legs. Loads from each
+    rotor's thrust and torque (hover load shape,
+    :class:`~lpc_mdo.components.acoustics.loads.HoverLoadDistributionComp`), at the stations
+    :func:`footprint_stations`; the chords are connected by the vehicle-level model
+    (:func:`lpc_mdo.vehicle.condition_kinds.footprint_chord_inputs`).
+    """
+    geometry, no = _legs_of(vehicle, condition)
+    offsets = np.concatenate([g.offset for g in geometry], axis=1)  # (observer, point, 3)
+    width = offsets.shape[1]
+    offsets = offsets.reshape(no * width, 3)
+    rotors = vehicle.lift_rotors
+    nrad = group.options["num_radial"]
+    stations = footprint_stations(nrad)
+    hub = rotors[0].hub_radius_ratio
+    bem_stations = hub + (1.0 - hub) * (np.arange(nrad) + 0.5) / nrad
+    group.add_subsystem(
+        "footprint_observers",
+        PathObserverComp(offsets=offsets, num_rotors=len(rotors)),
+        promotes_inputs=["pitch", ("hub_position", "lift_hub_position")],
+    )
+    sources = [("lift", rotors, "lift_rotor_rpm")]
+    if flying:
+        sources.append(("pusher", [vehicle.pusher], "pusher_rpm"))
+    for name, members, rpm in sources:
+        noise = f"footprint_{name}"
+        # The rotors' state through a copy: OpenMDAO 3.x cannot chain the noise group's
+        # per-pair indices onto a (1, 3) or row-selecting view of the model's outputs. The
+        # chords are connected by the vehicle-level model to the acoustic stations.
+        n = len(members)
+        copies = {
+            "radius": ((n,), "m", f"{name}_radius"),
+            "rpm": ((n,), "rpm", rpm),
+            "thrust": ((n,), "N", f"{name}_thrust"),
+            "torque": ((n,), "N*m", f"{name}_torque"),
+            "hub_position": ((n, 3), "m", f"{name}_hub_position"),
+            "chord": ((n, len(stations)), "m", None),
+        }
+        group.add_subsystem(
+            f"{noise}_inputs",
+            om.ExecComp(
+                [f"{q} = {q}_in" for q in copies],
+                **{q: {"shape": shape, "units": units} for q, (shape, units, _) in copies.items()},
+                **{
+                    f"{q}_in": {"shape": shape, "units": units}
+                    for q, (shape, units, _) in copies.items()
+                },
+                has_diag_partials=True,
+            ),
+            promotes_inputs=[(f"{q}_in", source) for q, (_, _, source) in copies.items() if source],
+        )
+        group.add_subsystem(
+            noise,
+            RotorNoiseGroup(
+                num_rotors=len(members),
+                num_observers=no * width,
+                num_radial=len(stations),
+                radial_stations=bem_stations[stations],
+                hub_radius_ratio=members[0].hub_radius_ratio,
+                num_blades=[r.num_blades for r in members],
+                num_bands=FOOTPRINT_BANDS[0],
+                lowest_band_frequency=FOOTPRINT_BANDS[1],
+                num_gust_harmonics=FOOTPRINT_GUST_HARMONICS,
+                load_input="totals",
+                observer_input="position",
+                rotation_direction=tuple(float(r.spin_direction) for r in members),
+            ),
+            promotes_inputs=[
+                ("thrust_direction", f"{noise}_thrust_direction"),
+                ("thickness_to_chord", f"{noise}_thickness_to_chord"),
+                "density",
+                "speed_of_sound",
+            ],
+        )
+        group.connect("footprint_observers.observer_position", f"{noise}.observer_position")
+        for q in copies:
+            group.connect(f"{noise}_inputs.{q}", f"{noise}.{q}")
+        group.set_input_defaults(
+            f"{noise}_thrust_direction", np.array([r.thrust_axis for r in members])
+        )
+        group.set_input_defaults(
+            f"{noise}_thickness_to_chord",
+            np.repeat([[r.thickness_to_chord] for r in members], len(stations), axis=1),
+        )
+        if flying:  # the flight velocity in the body frame (the kinematics'); zero in hover
+            group.connect("velocity", f"{noise}.flight_velocity", src_indices=[0, 1, 2],
+                          flat_src_indices=True)  # fmt: skip
+    if flying:
+        group.add_subsystem(
+            "footprint_total",
+            om.ExecComp(
+                "footprint_spl_a = 10.0 * log10(10.0 ** (lift / 10.0) + 10.0 ** (pusher / 10.0))",
+                shape=(no * width,),
+                has_diag_partials=True,
+            ),
+            promotes_outputs=["footprint_spl_a"],
+        )
+        group.connect("footprint_lift.total_spl_a", "footprint_total.lift")
+        group.connect("footprint_pusher.total_spl_a", "footprint_total.pusher")
+    else:
+        group.promotes("footprint_lift", outputs=[("total_spl_a", "footprint_spl_a")])
+
+
+class FootprintGroup(om.Group):
+    """
+    Sound exposure and maximum level of every footprint observer over the departure.
+
+    Inputs ``{condition}`` (num_observers, num_points): the levels of each departure
+    condition's quadrature points (connected from ``{condition}.footprint_spl_a``);
+    ``exposure.duration`` holds their equivalent times (lpc_mdo.vehicle.footprint_path).
+    Outputs (dBA, units=None): ``footprint_sel`` and ``footprint_lamax`` per observer
+    (NoiseExposureComp) and their smooth maxima over the observers ``footprint_sel_max``,
+    ``footprint_lamax_max`` (KS, :data:`FOOTPRINT_KS_RHO`), which the constraint kind ``noise_footprint`` bounds.
+
+    Options
+    -------
+    vehicle : Vehicle
+        A vehicle with a ``noise_footprint``.
+    """
+
+    def initialize(self):
+        self.options.declare("vehicle", desc="lpc_mdo.vehicle.Vehicle with a noise_footprint")
+
+    def setup(self):
+        vehicle = self.options["vehicle"]
+        legs, geometry = footprint_geometry(vehicle)
+        no = len(geometry[0].offset)
+        points = departure_points(legs, geometry)
+        self.add_subsystem(
+            "exposure",
+            NoiseExposureComp(
+                num_observers=no,
+                sources=list(points.items()),
+                duration_per_observer=True,
+            ),
+            promotes_outputs=[("sel", "footprint_sel"), ("lmax", "footprint_lamax")],
+        )
+        times = np.concatenate([g.equivalent_time for g in geometry], axis=1)
+        self.set_input_defaults("exposure.duration", times, units="s")
+        for level in ("sel", "lamax"):
+            self.add_subsystem(
+                f"{level}_max",
+                KSComp(width=no, rho=FOOTPRINT_KS_RHO),
+                promotes_outputs=[("KS", f"footprint_{level}_max")],
+            )
+            self.connect(f"footprint_{level}", f"{level}_max.g", src_indices=np.arange(no)[None, :])

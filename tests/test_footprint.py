@@ -1,0 +1,210 @@
+"""The departure's noise footprint: path geometry, observers, exposure, and the model's rows."""
+
+import numpy as np
+import openmdao.api as om
+import pytest
+from openmdao.utils.assert_utils import assert_check_partials
+
+from lpc_mdo.components.acoustics.exposure import NoiseExposureComp
+from lpc_mdo.components.acoustics.path_observer import PathObserverComp
+from lpc_mdo.groups.acoustics import RotorNoiseGroup
+from lpc_mdo.vehicle import VehicleSpecError, read_vehicle_file, vehicle_from_dict
+from lpc_mdo.vehicle.footprint_path import (
+    PathLeg,
+    departure_legs,
+    footprint_geometry,
+    footprint_observers,
+    leg_geometry,
+)
+
+FOOTPRINT = {
+    "track_positions": [-300.0, 0.0, 300.0, 1000.0, 2500.0],
+    "hover_time": 30.0,
+    "max_sel": 85.0,
+    "leg_subdivisions": 1,
+}
+
+
+def footprint_vehicle(**changes):
+    data = read_vehicle_file()
+    data["noise_footprint"] = {**FOOTPRINT, **changes}
+    return vehicle_from_dict(data)
+
+
+def test_quadrature_of_a_leg_integrates_the_spreading_exactly():
+    # A leg of 600 m flown in 20 s at 80 m over the ground; observers under it, beside it and
+    # beyond its end. A source of uniform directivity, L = L_1 - 20 log10(r / 1 m): the points'
+    # sum_k 10^(L_k/10) tau_k is int dt / r(t)^2 (times 10^(L_1/10)) for any number of points,
+    # against the midpoint rule on 200000 steps; the points lie on the leg.
+    leg = PathLeg("t", (0.0, 0.0, -80.0), (600.0, 0.0, -80.0), 20.0)
+    observers = np.array([[300.0, 0.0, 0.0], [100.0, 150.0, -1.2], [900.0, -50.0, 0.0]])
+    t = (np.arange(200000) + 0.5) * 20.0 / 200000
+    path = np.column_stack([30.0 * t, 0.0 * t, np.full(t.size, -80.0)])
+    for nodes in (1, 3, 6):
+        geometry = leg_geometry(leg, observers, nodes)
+        assert geometry.offset.shape == (3, nodes, 3)
+        points = observers[:, None, :] - geometry.offset
+        assert np.all((points[..., 0] >= 0.0) & (points[..., 0] <= 600.0))
+        np.testing.assert_allclose(points[..., 1:], np.broadcast_to([0.0, -80.0], (3, nodes, 2)))
+        for i, obs in enumerate(observers):
+            hand = np.sum(1.0 / np.sum((obs - path) ** 2, axis=1)) * (20.0 / 200000)
+            ours = np.sum(geometry.equivalent_time[i] / np.sum(geometry.offset[i] ** 2, axis=1))
+            assert ours == pytest.approx(hand, rel=1e-7)
+    # A steady source (the hover: a leg of zero length) carries its time.
+    hover = leg_geometry(PathLeg("h", (0.0, 0.0, -80.0), (0.0, 0.0, -80.0), 30.0), observers, 4)
+    np.testing.assert_array_equal(hover.equivalent_time, 30.0)
+    np.testing.assert_allclose(hover.offset[:, 0], observers - [0.0, 0.0, -80.0])
+
+
+def test_the_departure_is_the_hover_then_the_transition_legs_end_to_end():
+    vehicle = footprint_vehicle(leg_subdivisions=2, lateral_offsets=[0.0, 200.0])
+    legs = departure_legs(vehicle)
+    transition = [c for c in vehicle.conditions if c.kind == "transition"]
+    assert [leg.condition for leg in legs] == ["hover"] + [
+        c.name for c in transition for _ in range(2)
+    ]
+    assert legs[0].time == 30.0 and legs[0].length == 0.0
+    for a, b in zip(legs[1:-1], legs[2:], strict=True):
+        np.testing.assert_allclose(a.end, b.start, atol=1e-9)
+    total = sum(c.speed * c.duration for c in transition)
+    assert legs[-1].end[0] == pytest.approx(total, rel=1e-12)
+    observers = footprint_observers(vehicle.noise_footprint)
+    assert observers.shape == (10, 3)
+    np.testing.assert_allclose(observers[5], [-300.0, 200.0, -1.2])
+
+
+@pytest.mark.parametrize(
+    "changes, match",
+    [
+        ({"track_positions": [0.0], "observer_height": 30.0, "hover_time": 30.0}, None),
+        ({"hover_time": 0.0}, "hover_time"),
+        ({"max_sel": 500.0}, "max_sel"),
+    ],
+)
+def test_footprint_table_is_checked(changes, match):
+    if match is None:
+        assert footprint_vehicle(**changes).noise_footprint.height == 30.0
+        return
+    with pytest.raises(VehicleSpecError, match=match):
+        footprint_vehicle(**changes)
+
+
+def test_an_observer_in_the_near_field_is_a_named_error():
+    data = read_vehicle_file()
+    for c in data["conditions"]:
+        if c["kind"] in ("hover", "transition"):
+            c["altitude"] = 10.0
+    data["noise_footprint"] = FOOTPRINT
+    with pytest.raises(VehicleSpecError, match="noise_footprint.*rotor radii"):
+        vehicle_from_dict(data)
+
+
+def test_path_observer_turns_with_the_pitch_and_partials_are_exact():
+    offsets = np.array([[100.0, 20.0, 80.0], [-50.0, 0.0, 70.0]])
+    hubs = np.array([[1.0, -2.0, -1.0], [3.0, 2.0, -1.0]])
+    prob = om.Problem(reports=False)
+    prob.model.add_subsystem("obs", PathObserverComp(offsets=offsets, num_rotors=2))
+    prob.setup(force_alloc_complex=True)
+    prob.set_val("obs.hub_position", hubs)
+    prob.set_val("obs.pitch", np.radians(10.0))
+    prob.run_model()
+    position = prob.get_val("obs.observer_position") - hubs.mean(axis=0)
+    # Distances are kept; an observer ahead and below sits higher in the nose-up body frame.
+    np.testing.assert_allclose(np.linalg.norm(position, axis=1), np.linalg.norm(offsets, axis=1))
+    theta = np.radians(10.0)
+    expected = offsets[:, 0] * np.sin(theta) + offsets[:, 2] * np.cos(theta)
+    np.testing.assert_allclose(position[:, 2], expected)
+    assert_check_partials(prob.check_partials(method="cs", out_stream=None), atol=1e-10, rtol=1e-10)
+
+
+def test_exposure_of_sources_with_per_observer_times_matches_one_input():
+    rng = np.random.default_rng(5)
+    level = 60.0 + 20.0 * rng.random((3, 5))
+    times = 0.5 + rng.random((3, 5))
+    results = []
+    for sources in (None, [("a", 2), ("b", 3)]):
+        prob = om.Problem(reports=False)
+        prob.model.add_subsystem(
+            "e",
+            NoiseExposureComp(
+                num_observers=3, num_points=5, sources=sources, duration_per_observer=True
+            ),
+        )
+        prob.setup(force_alloc_complex=True)
+        if sources is None:
+            prob.set_val("e.level", level)
+        else:
+            prob.set_val("e.a", level[:, :2])
+            prob.set_val("e.b", level[:, 2:])
+        prob.set_val("e.duration", times)
+        prob.run_model()
+        assert_check_partials(prob.check_partials(method="cs", out_stream=None), atol=1e-9)
+        results.append(prob.get_val("e.sel"))
+    np.testing.assert_allclose(results[0], results[1], rtol=1e-14)
+    hand = 10.0 * np.log10(np.sum(10.0 ** (level / 10.0) * times, axis=1))
+    np.testing.assert_allclose(results[0], hand, rtol=1e-12)
+
+
+def test_one_rotor_passing_overhead_against_a_time_integration():
+    # One rotor (hover loads from thrust and torque) flies level at 40 m/s, 80 m up, past an
+    # observer on the ground under the middle of its 800 m leg. Hand computation: the full noise
+    # model at 801 points of the pass (directivity, Doppler, absorption of each), the energy
+    # summed over time (trapezoids). The footprint's Gauss points in the line-of-sight angle
+    # must agree within 0.5 dB with the default 3 points; the rotor is quietest on its axis,
+    # straight below, so 1 point (the closest) is far off.
+    speed, height, length = 40.0, 80.0, 800.0
+    x = np.linspace(0.0, length, 801)
+    observer = np.array([400.0, 0.0, -1.2])
+
+    def levels(sources):
+        offsets = observer - sources  # earth axes = body axes (level flight, no pitch)
+        n = len(offsets)
+        prob = om.Problem(reports=False)
+        prob.model.add_subsystem(
+            "noise",
+            RotorNoiseGroup(
+                num_rotors=1,
+                num_observers=n,
+                num_radial=9,
+                num_bands=24,
+                lowest_band_frequency=50.0,
+                load_input="totals",
+                observer_input="position",
+            ),
+            promotes=["*"],
+        )
+        prob.setup()
+        prob.set_val("radius", [1.5])
+        prob.set_val("rpm", [1100.0])
+        prob.set_val("thrust", [4000.0])
+        prob.set_val("torque", [700.0])
+        prob.set_val("chord", np.full((1, 9), 0.15))
+        prob.set_val("hub_position", np.zeros((1, 3)))
+        prob.set_val("observer_position", offsets)
+        prob.set_val("flight_velocity", [speed, 0.0, 0.0])
+        prob.run_model()
+        return prob.get_val("total_spl_a")
+
+    path = np.column_stack([x, 0.0 * x, np.full(x.size, -height)])
+    weights = np.full(x.size, 1.0)
+    weights[[0, -1]] = 0.5
+    hand = 10.0 * np.log10(np.sum(10.0 ** (levels(path) / 10.0) * weights) * (x[1] - x[0]) / speed)
+    leg = PathLeg("t", (0.0, 0.0, -height), (length, 0.0, -height), length / speed)
+    sel = {}
+    for nodes in (1, 3, 6):
+        geometry = leg_geometry(leg, observer[None, :], nodes)
+        level = levels(observer - geometry.offset[0])
+        sel[nodes] = 10.0 * np.log10(np.sum(10.0 ** (level / 10.0) * geometry.equivalent_time[0]))
+    assert sel[3] == pytest.approx(hand, abs=0.5)  # 57.10 against 57.09 dBA
+    assert sel[6] == pytest.approx(hand, abs=0.5)  # 57.11
+    # 1 point: 40.8 dBA
+    assert abs(sel[1] - hand) > 3.0
+
+
+def test_reference_footprint_geometry_covers_the_departure():
+    vehicle = footprint_vehicle()
+    legs, geometry = footprint_geometry(vehicle)
+    assert len(legs) == 6 and len(geometry) == 6
+    # The observer under the vertiport hears the hover for its whole time, 76.2 - 1.2 m below.
+    assert geometry[0].equivalent_time[1, 0] == 30.0
+    assert np.linalg.norm(geometry[0].offset[1, 0]) == pytest.approx(75.0)
