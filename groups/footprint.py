@@ -169,7 +169,8 @@ class FootprintGroup(om.Group):
     ``exposure.duration`` holds their equivalent times (lpc_mdo.vehicle.footprint_path).
     Outputs (dBA, units=None): ``footprint_sel`` and ``footprint_lamax`` per observer
     (NoiseExposureComp) and their smooth maxima over the observers ``footprint_sel_max``,
-    ``footprint_lamax_max`` (KS, :data:`FOOTPRINT_KS_RHO`), which the constraint kind ``noise_footprint`` bounds.
+    ``footprint_lamax_max`` (KS, :data:`FOOTPRINT_KS_RHO`), which the constraint kind
+    ``noise_footprint`` bounds.
 
     Options
     -------
