@@ -13,12 +13,14 @@ import openmdao.api as om
 from lpc_mdo.components.acoustics.exposure import NoiseExposureComp
 from lpc_mdo.components.acoustics.path_observer import PathObserverComp
 from lpc_mdo.components.ks import KSComp
+from lpc_mdo.components.rotor_stack import RotorStackComp
 from lpc_mdo.groups.acoustics import RotorNoiseGroup
 from lpc_mdo.vehicle.footprint_path import departure_points, footprint_geometry
 
 __all__ = [
     "FootprintGroup",
     "add_footprint_noise",
+    "footprint_sources",
     "footprint_stations",
     "FOOTPRINT_BANDS",
     "FOOTPRINT_GUST_HARMONICS",
@@ -52,6 +54,23 @@ def _legs_of(vehicle, condition):
     return mine, len(geometry[0].offset)
 
 
+def footprint_sources(vehicle, flying):
+    """
+    Return the rotor sets of a departure condition's footprint noise, grouped for evaluation.
+
+    One list per noise evaluation, each of (set name, rotors): the lift rotors and, if
+    ``flying`` (a transition point), the pusher, in one evaluation when their hubs have the same
+    radius ratio (the acoustic stations are fractions of the radius), else in two.
+    """
+    lift = ("lift", list(vehicle.lift_rotors))
+    if not flying:
+        return [[lift]]
+    pusher = ("pusher", [vehicle.pusher])
+    if vehicle.pusher.hub_radius_ratio == vehicle.lift_rotors[0].hub_radius_ratio:
+        return [[lift, pusher]]
+    return [[lift], [pusher]]
+
+
 def add_footprint_noise(group, vehicle, condition, flying):
     """
     Add the noise of ``condition``'s legs at the footprint's observers to a condition group.
@@ -61,53 +80,53 @@ def add_footprint_noise(group, vehicle, condition, flying):
     at each observer from each quadrature point of the condition's legs. Loads from each
     rotor's thrust and torque (hover load shape,
     :class:`~lpc_mdo.components.acoustics.loads.HoverLoadDistributionComp`), at the stations
-    :func:`footprint_stations`; the chords are connected by the vehicle-level model
+    :func:`footprint_stations`. The rotors' state reaches the noise model through
+    ``footprint_rotors`` (:class:`~lpc_mdo.components.rotor_stack.RotorStackComp`), whose
+    chord inputs ``{set}_chord`` the vehicle-level model connects
     (:func:`lpc_mdo.vehicle.condition_kinds.footprint_chord_inputs`).
     """
     geometry, no = _legs_of(vehicle, condition)
     offsets = np.concatenate([g.offset for g in geometry], axis=1)  # (observer, point, 3)
     width = offsets.shape[1]
-    offsets = offsets.reshape(no * width, 3)
-    rotors = vehicle.lift_rotors
     nrad = group.options["num_radial"]
     stations = footprint_stations(nrad)
-    hub = rotors[0].hub_radius_ratio
-    bem_stations = hub + (1.0 - hub) * (np.arange(nrad) + 0.5) / nrad
     group.add_subsystem(
         "footprint_observers",
-        PathObserverComp(offsets=offsets, num_rotors=len(rotors)),
+        PathObserverComp(
+            offsets=offsets.reshape(no * width, 3), num_rotors=len(vehicle.lift_rotors)
+        ),
         promotes_inputs=["pitch", ("hub_position", "lift_hub_position")],
     )
-    sources = [("lift", rotors, "lift_rotor_rpm")]
-    if flying:
-        sources.append(("pusher", [vehicle.pusher], "pusher_rpm"))
-    for name, members, rpm in sources:
-        noise = f"footprint_{name}"
-        # The rotors' state through a copy: OpenMDAO 3.x cannot chain the noise group's
-        # per-pair indices onto a (1, 3) or row-selecting view of the model's outputs. The
-        # chords are connected by the vehicle-level model to the acoustic stations.
-        n = len(members)
-        copies = {
-            "radius": ((n,), "m", f"{name}_radius"),
-            "rpm": ((n,), "rpm", rpm),
-            "thrust": ((n,), "N", f"{name}_thrust"),
-            "torque": ((n,), "N*m", f"{name}_torque"),
-            "hub_position": ((n, 3), "m", f"{name}_hub_position"),
-            "chord": ((n, len(stations)), "m", None),
-        }
+    speeds = {"lift": "lift_rotor_rpm", "pusher": "pusher_rpm"}
+    evaluations = footprint_sources(vehicle, flying)
+    for k, sets in enumerate(evaluations):
+        suffix = "" if len(evaluations) == 1 else f"_{k + 1}"
+        members = [r for _, rotors in sets for r in rotors]
+        # The rotors' state through a stack that is also a copy: OpenMDAO 3.x cannot chain the
+        # noise group's per-pair indices onto a (1, 3) or row-selecting view of the model's
+        # outputs.
         group.add_subsystem(
-            f"{noise}_inputs",
-            om.ExecComp(
-                [f"{q} = {q}_in" for q in copies],
-                **{q: {"shape": shape, "units": units} for q, (shape, units, _) in copies.items()},
-                **{
-                    f"{q}_in": {"shape": shape, "units": units}
-                    for q, (shape, units, _) in copies.items()
-                },
-                has_diag_partials=True,
+            f"footprint_rotors{suffix}",
+            RotorStackComp(
+                sets=[(name, len(rotors)) for name, rotors in sets],
+                quantities=[
+                    ("radius", (), "m"),
+                    ("rpm", (), "rpm"),
+                    ("thrust", (), "N"),
+                    ("torque", (), "N*m"),
+                    ("hub_position", (3,), "m"),
+                    ("chord", (len(stations),), "m"),
+                ],
             ),
-            promotes_inputs=[(f"{q}_in", source) for q, (_, _, source) in copies.items() if source],
+            promotes_inputs=[
+                (f"{name}_{q}", speeds[name] if q == "rpm" else f"{name}_{q}")
+                for name, _ in sets
+                for q in ("radius", "rpm", "thrust", "torque", "hub_position")
+            ],
         )
+        noise = f"footprint_noise{suffix}"
+        hub = members[0].hub_radius_ratio
+        bem_stations = hub + (1.0 - hub) * (np.arange(nrad) + 0.5) / nrad
         group.add_subsystem(
             noise,
             RotorNoiseGroup(
@@ -115,7 +134,7 @@ def add_footprint_noise(group, vehicle, condition, flying):
                 num_observers=no * width,
                 num_radial=len(stations),
                 radial_stations=bem_stations[stations],
-                hub_radius_ratio=members[0].hub_radius_ratio,
+                hub_radius_ratio=hub,
                 num_blades=[r.num_blades for r in members],
                 num_bands=FOOTPRINT_BANDS[0],
                 lowest_band_frequency=FOOTPRINT_BANDS[1],
@@ -131,9 +150,9 @@ def add_footprint_noise(group, vehicle, condition, flying):
                 "speed_of_sound",
             ],
         )
+        for q in ("radius", "rpm", "thrust", "torque", "hub_position", "chord"):
+            group.connect(f"footprint_rotors{suffix}.{q}", f"{noise}.{q}")
         group.connect("footprint_observers.observer_position", f"{noise}.observer_position")
-        for q in copies:
-            group.connect(f"{noise}_inputs.{q}", f"{noise}.{q}")
         group.set_input_defaults(
             f"{noise}_thrust_direction", np.array([r.thrust_axis for r in members])
         )
@@ -142,22 +161,23 @@ def add_footprint_noise(group, vehicle, condition, flying):
             np.repeat([[r.thickness_to_chord] for r in members], len(stations), axis=1),
         )
         if flying:  # the flight velocity in the body frame (the kinematics'); zero in hover
-            group.connect("velocity", f"{noise}.flight_velocity", src_indices=[0, 1, 2],
-                          flat_src_indices=True)  # fmt: skip
-    if flying:
-        group.add_subsystem(
-            "footprint_total",
-            om.ExecComp(
-                "footprint_spl_a = 10.0 * log10(10.0 ** (lift / 10.0) + 10.0 ** (pusher / 10.0))",
-                shape=(no * width,),
-                has_diag_partials=True,
-            ),
-            promotes_outputs=["footprint_spl_a"],
-        )
-        group.connect("footprint_lift.total_spl_a", "footprint_total.lift")
-        group.connect("footprint_pusher.total_spl_a", "footprint_total.pusher")
-    else:
-        group.promotes("footprint_lift", outputs=[("total_spl_a", "footprint_spl_a")])
+            group.connect(
+                "velocity", f"{noise}.flight_velocity", src_indices=[0, 1, 2], flat_src_indices=True
+            )
+    if len(evaluations) == 1:
+        group.promotes("footprint_noise", outputs=[("total_spl_a", "footprint_spl_a")])
+        return
+    group.add_subsystem(
+        "footprint_total",
+        om.ExecComp(
+            "footprint_spl_a = 10.0 * log10(10.0 ** (a / 10.0) + 10.0 ** (b / 10.0))",
+            shape=(no * width,),
+            has_diag_partials=True,
+        ),
+        promotes_outputs=["footprint_spl_a"],
+    )
+    group.connect("footprint_noise_1.total_spl_a", "footprint_total.a")
+    group.connect("footprint_noise_2.total_spl_a", "footprint_total.b")
 
 
 class FootprintGroup(om.Group):

@@ -335,7 +335,8 @@ def declare_problem(
     # Vehicle-level constraints.
     if "noise_footprint" in wanted and footprint_conditions(vehicle, conditions):
         footprint = vehicle.noise_footprint
-        model.add_constraint("footprint_sel_max", upper=footprint.max_sel, ref=10.0)
+        if footprint.max_sel is not None:
+            model.add_constraint("footprint_sel_max", upper=footprint.max_sel, ref=10.0)
         if footprint.max_lamax is not None:
             model.add_constraint("footprint_lamax_max", upper=footprint.max_lamax, ref=10.0)
     if "soc" in wanted:

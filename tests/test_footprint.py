@@ -27,7 +27,8 @@ FOOTPRINT = {
 
 def footprint_vehicle(**changes):
     data = read_vehicle_file()
-    data["noise_footprint"] = {**FOOTPRINT, **changes}
+    table = {**FOOTPRINT, **changes}
+    data["noise_footprint"] = {key: value for key, value in table.items() if value is not None}
     return vehicle_from_dict(data)
 
 
@@ -79,6 +80,7 @@ def test_the_departure_is_the_hover_then_the_transition_legs_end_to_end():
         ({"track_positions": [0.0], "observer_height": 30.0, "hover_time": 30.0}, None),
         ({"hover_time": 0.0}, "hover_time"),
         ({"max_sel": 500.0}, "max_sel"),
+        ({"max_sel": None}, "no limit"),
     ],
 )
 def test_footprint_table_is_checked(changes, match):
@@ -208,3 +210,81 @@ def test_reference_footprint_geometry_covers_the_departure():
     # The observer under the vertiport hears the hover for its whole time, 76.2 - 1.2 m below.
     assert geometry[0].equivalent_time[1, 0] == 30.0
     assert np.linalg.norm(geometry[0].offset[1, 0]) == pytest.approx(75.0)
+
+
+@pytest.fixture(scope="module")
+def footprint_model():
+    from lpc_mdo.groups.lpc import LPCGroup
+    from lpc_mdo.problems import declare_problem
+
+    vehicle = footprint_vehicle(max_lamax=95.0)
+    prob = om.Problem(reports=False)
+    prob.model = LPCGroup(vehicle=vehicle)
+    declare_problem(prob.model)
+    prob.driver = om.ScipyOptimizeDriver()
+    prob.setup(mode="rev", force_alloc_complex=True)
+    prob.run_model()
+    return prob
+
+
+@pytest.mark.integration
+def test_footprint_rows_are_declared_and_sum_the_departure(footprint_model):
+    prob = footprint_model
+    constraints = prob.model.get_constraints()
+    assert constraints["footprint_sel_max"]["upper"] == pytest.approx(85.0)
+    assert constraints["footprint_lamax_max"]["upper"] == pytest.approx(95.0)
+    # The exposure of each observer from the departure's levels and equivalent times by hand.
+    vehicle = prob.model.options["vehicle"]
+    legs, geometry = footprint_geometry(vehicle)
+    levels = np.concatenate(
+        [
+            prob.get_val(f"{name}.footprint_spl_a").reshape(5, -1)
+            for name in dict.fromkeys(leg.condition for leg in legs)
+        ],
+        axis=1,
+    )
+    times = np.concatenate([g.equivalent_time for g in geometry], axis=1)
+    hand = 10.0 * np.log10(np.sum(10.0 ** (levels / 10.0) * times, axis=1))
+    np.testing.assert_allclose(prob.get_val("footprint_sel"), hand, rtol=1e-12)
+    assert prob.get_val("footprint_sel_max")[0] >= hand.max()
+    assert prob.get_val("footprint_sel_max")[0] <= hand.max() + np.log(5) / 10.0
+    # The hover point heard straight below equals its own level there; a subproblem's model
+    # (without every departure condition) has no footprint.
+    from lpc_mdo.groups.lpc import footprint_conditions
+
+    assert footprint_conditions(vehicle, vehicle.conditions[:3]) == {}
+
+
+@pytest.mark.integration
+def test_footprint_derivatives_match_complex_step(footprint_model):
+    # The footprint rows' adjoint totals against complex step through the whole model, for the
+    # design variables that reach them along every path: the lift rotors' hover speeds, the
+    # pusher's transition speeds, the transition pitch (the observers' directions) and the
+    # rotor radii (run_scripts/verify_derivatives.py --vehicle checks every column).
+    prob = footprint_model
+    wrt = ["hover_lift_rpm", "transition_pusher_rpm", "transition_pitch", "rotor_radius"]
+    data = prob.check_totals(
+        of=["footprint_sel_max", "footprint_lamax_max"],
+        wrt=wrt,
+        method="cs",
+        out_stream=None,
+        driver_scaling=True,
+    )
+    for key, entry in data.items():
+        adjoint = np.asarray(entry["J_rev"] if "J_rev" in entry else entry["J_fwd"])
+        reference = np.asarray(entry["J_fd"])
+        scale = max(np.abs(reference).max(), 1e-8)
+        assert np.abs(adjoint - reference).max() <= 1e-7 * scale, key
+
+
+def test_footprint_figure_is_written_and_checks_its_values(tmp_path):
+    from lpc_mdo.post.figures import plot_footprint
+
+    vehicle = footprint_vehicle(
+        lateral_offsets=[0.0, 150.0, 300.0], track_positions=[0.0, 1e3, 2e3]
+    )
+    sel = np.linspace(60.0, 80.0, 9)
+    path = plot_footprint(vehicle, sel, sel - 10.0, tmp_path / "footprint.png")
+    assert path.stat().st_size > 10000
+    with pytest.raises(ValueError, match="9 observers"):
+        plot_footprint(vehicle, sel[:5], sel[:5], tmp_path / "bad.png")

@@ -64,6 +64,10 @@ def iso9613_absorption(frequency, temperature, pressure, relative_humidity):
     )
 
 
+#: Relative complex step of the absorption's partials (exact to round-off for any small step).
+_COMPLEX_STEP = 1.0e-30
+
+
 class AtmosphericAbsorptionComp(om.ExplicitComponent):
     """
     Atmospheric attenuation coefficient of each frequency by ISO 9613-1:1993.
@@ -97,7 +101,10 @@ class AtmosphericAbsorptionComp(om.ExplicitComponent):
         Fixed frequencies (Hz) of ``shape`` (e.g. band centres); None: ``frequency`` is an input.
 
     Partials by complex step (the derivation through the relaxation frequencies is out of
-    proportion to the cost of this small component), with a diagonal pattern in frequency.
+    proportion to the cost of this small component), with a diagonal pattern in frequency:
+    each coefficient depends on its own frequency only, so one complex step of every frequency
+    at once gives the whole diagonal, and one step of each scalar its column (four evaluations
+    in all, where OpenMDAO's column-by-column complex step took one per frequency).
     """
 
     def initialize(self):
@@ -141,11 +148,9 @@ class AtmosphericAbsorptionComp(om.ExplicitComponent):
         ar = np.arange(size)
         zeros = np.zeros(size, dtype=int)
         for name in ("temperature", "pressure", "relative_humidity"):
-            self.declare_partials("absorption_coefficient", name, rows=ar, cols=zeros, method="cs")
+            self.declare_partials("absorption_coefficient", name, rows=ar, cols=zeros)
         if fixed is None:
-            self.declare_partials(
-                "absorption_coefficient", "frequency", rows=ar, cols=ar, method="cs"
-            )
+            self.declare_partials("absorption_coefficient", "frequency", rows=ar, cols=ar)
 
     def compute(self, inputs, outputs):
         where = self.msginfo
@@ -180,3 +185,27 @@ class AtmosphericAbsorptionComp(om.ExplicitComponent):
         outputs["absorption_coefficient"] = iso9613_absorption(
             freq, inputs["temperature"][0], inputs["pressure"][0], inputs["relative_humidity"][0]
         )
+
+    def compute_partials(self, inputs, partials):
+        fixed = self.options["frequencies"]
+        args = {
+            "frequency": inputs["frequency"] if fixed is None else fixed,
+            "temperature": inputs["temperature"][0],
+            "pressure": inputs["pressure"][0],
+            "relative_humidity": inputs["relative_humidity"][0],
+        }
+        names = ["temperature", "pressure", "relative_humidity"]
+        if fixed is None:
+            names.append("frequency")
+        for name in names:
+            step = max(abs(float(np.max(np.abs(args[name])))), 1.0) * _COMPLEX_STEP
+            stepped = {**args, name: args[name] + 1j * step}
+            rate = np.imag(
+                iso9613_absorption(
+                    stepped["frequency"],
+                    stepped["temperature"],
+                    stepped["pressure"],
+                    stepped["relative_humidity"],
+                )
+            )
+            partials["absorption_coefficient", name] = (rate / step).ravel()

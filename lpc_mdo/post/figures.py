@@ -1009,3 +1009,86 @@ def plot_sweep(
         ax.legend(fontsize="small")
     _title(ax, title or f"{describe(yname)[0]} against {xlabel.split(' (')[0].lower()}")
     return _save(fig, path)
+
+
+def plot_footprint(vehicle, sel, lamax, path, title=None):
+    """
+    Plot the departure's noise footprint on the ground (docs theory/acoustics 'Noise footprint').
+
+    The ground seen from above, the flight direction to the right of the page (so the right
+    side of the track is down): the departure's legs (the hover point and each transition
+    leg, named by its condition), each observer coloured by its sound exposure level with its
+    SEL and L_Amax written beside it, and, when the observers form a grid of at least three by
+    three, filled SEL contours between them.
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        A vehicle with a ``noise_footprint``: the observers and the path.
+    sel, lamax : array, (num_observers,)
+        Sound exposure level and maximum level of each observer, dBA.
+    path : str or Path
+        Image file to write.
+    title : str or None
+        Figure title.
+    """
+    from lpc_mdo.vehicle.footprint_path import departure_legs, footprint_observers
+
+    footprint = vehicle.noise_footprint
+    observers = footprint_observers(footprint)
+    sel, lamax = np.ravel(sel), np.ravel(lamax)
+    if sel.size != len(observers) or lamax.size != len(observers):
+        raise ValueError(
+            f"plot_footprint: {len(observers)} observers in the vehicle's noise_footprint, "
+            f"got {sel.size} SEL and {lamax.size} L_Amax values"
+        )
+    fig, (ax,) = _figure(figsize=(8.0, 4.2))
+    x, y = observers[:, 0], observers[:, 1]
+    levels = np.linspace(np.floor(sel.min()), np.ceil(sel.max()), 11)
+    if len(footprint.track_positions) >= 3 and len(footprint.offsets) >= 3:
+        filled = ax.tricontourf(x, y, sel, levels=levels, cmap="viridis", alpha=0.5)
+        fig.colorbar(filled, ax=ax, label="sound exposure level SEL [dBA]")
+    dots = ax.scatter(x, y, c=sel, cmap="viridis", vmin=levels[0], vmax=levels[-1], s=40,
+                      edgecolors="k", zorder=3)  # fmt: skip
+    if len(footprint.track_positions) < 3 or len(footprint.offsets) < 3:
+        fig.colorbar(dots, ax=ax, label="sound exposure level SEL [dBA]")
+    for xi, yi, s, m in zip(x, y, sel, lamax, strict=True):
+        ax.annotate(f"{s:.1f}\n{m:.1f}", (xi, yi), textcoords="offset points", xytext=(4, -22),
+                    fontsize=7)  # fmt: skip
+    names = []
+    for leg in departure_legs(vehicle):
+        (x0, y0, _), (x1, y1, _) = leg.start, leg.end
+        if leg.length == 0.0:
+            ax.plot([x0], [y0], marker="*", ms=12, color="C3", zorder=4)
+        else:
+            ax.plot([x0, x1], [y0, y1], "-", color="C3", lw=2, zorder=2)
+            ax.plot([x0], [y0], "|", color="C3", ms=10, zorder=2)
+        if leg.condition not in names and leg.length > 0.0:
+            names.append(leg.condition)
+            ax.annotate(leg.condition.replace("_", " "), (x0, y0), textcoords="offset points",
+                        xytext=(3, 6), fontsize=7, color="C3")  # fmt: skip
+    ax.set_xlabel("distance along the track from the vertiport [m]")
+    ax.set_ylabel("distance to the right of the track [m]")
+    ax.margins(0.12)
+    ax.invert_yaxis()
+    ax.legend(
+        handles=[
+            Line2D([], [], marker="*", ms=10, color="C3", ls="", label="hover over the vertiport"),
+            Line2D([], [], color="C3", lw=2, label="transition legs"),
+            Line2D(
+                [],
+                [],
+                marker="o",
+                color="k",
+                mfc="w",
+                ls="",
+                label="observer: SEL over L_Amax [dBA]",
+            ),  # fmt: skip
+        ],
+        loc="upper center",
+        bbox_to_anchor=(0.5, -0.16),
+        ncol=3,
+        fontsize=7,
+    )
+    _title(ax, title or "Departure noise footprint: sound exposure level on the ground")
+    return _save(fig, path)

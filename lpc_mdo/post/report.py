@@ -587,6 +587,20 @@ def _run_section(index, label, cr, spec):
     index.add("**Convergence**:", "")
     _try(index, f"convergence of {label}", convergence)
 
+    def footprint():
+        path = figures.plot_footprint(
+            spec.vehicle,
+            tables.read_value(cr, "footprint_sel"),
+            tables.read_value(cr, "footprint_lamax"),
+            index.out_dir / "figures" / f"footprint_{slug}.png",
+            title=f"Departure noise footprint of {label}: SEL and L_Amax on the ground",
+        )
+        index.figure(path, f"Departure noise footprint of {label}")
+
+    if spec.vehicle.noise_footprint is not None and _recorded(cr, ["footprint_sel"]):
+        index.add("**Departure noise footprint** (docs theory/acoustics 'Noise footprint'):", "")
+        _try(index, f"noise footprint of {label}", footprint)
+
 
 class _RecordedValues:
     """``get_val`` over a case file's final values (:func:`tables.read_value`)."""

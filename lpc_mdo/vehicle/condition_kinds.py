@@ -95,24 +95,28 @@ def _pusher_inputs(vehicle):
     )
 
 
-def footprint_chord_inputs(vehicle, condition, stations, num_radial):
+def footprint_chord_inputs(vehicle, evaluations, stations, num_radial):
     """
     Return the blade chords of a departure condition's footprint noise.
 
-    (source, target, src_indices, flat) of the vehicle's ``blade_chord`` (one row per rotor
-    group, ``num_radial`` stations) at the acoustic ``stations`` (indices of the rotor model's
-    stations) for the copies ``footprint_lift_inputs.chord_in`` and, in a transition point,
-    ``footprint_pusher_inputs.chord_in``
-    (lpc_mdo.groups.footprint): one flat fancy index shaped like the target.
+    (source, target, src_indices) of the vehicle's ``blade_chord`` (one row per rotor group,
+    ``num_radial`` stations) at the acoustic ``stations`` (indices of the rotor model's
+    stations), for each rotor set of each noise evaluation (``evaluations``, from
+    :func:`lpc_mdo.groups.footprint.footprint_sources`): the stack's input
+    ``footprint_rotors{suffix}.{set}_chord`` (lpc_mdo.groups.footprint), as one flat fancy
+    index shaped like the target.
     """
     stations = np.asarray(stations)[None, :]
-    rows = _rotor_group_rows(vehicle, np.arange(len(vehicle.lift_rotors)))[:, None]
-    inputs = [("blade_chord", "footprint_lift_inputs.chord_in", (rows * num_radial + stations,))]
-    if condition.kind == "transition":
-        pusher = num_lift_pairs(vehicle.lift_rotors)
-        inputs.append(
-            ("blade_chord", "footprint_pusher_inputs.chord_in", (pusher * num_radial + stations,))
-        )
+    rows = {
+        "lift": _rotor_group_rows(vehicle, np.arange(len(vehicle.lift_rotors)))[:, None],
+        "pusher": np.array([[num_lift_pairs(vehicle.lift_rotors)]]),
+    }
+    inputs = []
+    for k, sets in enumerate(evaluations):
+        suffix = "" if len(evaluations) == 1 else f"_{k + 1}"
+        for name, _ in sets:
+            target = f"footprint_rotors{suffix}.{name}_chord"
+            inputs.append(("blade_chord", target, (rows[name] * num_radial + stations,)))
     return tuple(inputs)
 
 

@@ -167,8 +167,12 @@ def footprint_geometry(vehicle) -> tuple[tuple[PathLeg, ...], list[LegGeometry]]
     than :data:`FOOTPRINT_FAR_FIELD_RADII` times the largest rotor radius (the noise model's
     far-field forms).
     """
-    legs = departure_legs(vehicle)
     footprint = vehicle.noise_footprint
+    if footprint.max_sel is None and footprint.max_lamax is None:
+        raise VehicleSpecError(
+            "'noise_footprint' has no limit: give 'max_sel' (dBA), 'max_lamax' (dBA) or both"
+        )
+    legs = departure_legs(vehicle)
     observers = footprint_observers(footprint)
     geometry = [leg_geometry(leg, observers, footprint.nodes) for leg in legs]
     radius = max(r.radius for r in (*vehicle.lift_rotors, vehicle.pusher))

@@ -975,10 +975,11 @@ class NoiseFootprint:
         Microphone height above the ground (m); None: 1.2 m (:data:`DEFAULT_OBSERVER_HEIGHT`).
     hover_time : float
         Time hovering over the vertiport on departure (s).
-    max_sel : float
-        Limit of every observer's sound exposure level (dBA).
+    max_sel : float or None
+        Limit of every observer's sound exposure level (dBA); None: not constrained.
     max_lamax : float or None
         Limit of every observer's maximum A-weighted level (dBA); None: not constrained.
+        At least one of the two limits is given.
     leg_subdivisions : int or None
         Parts each transition leg is split into (None: 1).
     quadrature_points : int or None
@@ -994,7 +995,7 @@ class NoiseFootprint:
     observer_height: float = _param("m", ge=0, le=30, optional=True)
     hover_time: float = _param("s", gt=0, le=600)
     # 20-200 dBA: a quiet room to beyond the pain threshold.
-    max_sel: float = _param("dBA", ge=20, le=200)
+    max_sel: float = _param("dBA", ge=20, le=200, optional=True)
     max_lamax: float = _param("dBA", ge=20, le=200, optional=True)
     leg_subdivisions: int = _param(ge=1, le=20, optional=True)
     quadrature_points: int = _param(ge=1, le=20, optional=True)
