@@ -15,7 +15,11 @@ from lpc_mdo.components.acoustics.path_observer import PathObserverComp
 from lpc_mdo.components.ks import KSComp
 from lpc_mdo.components.rotor_stack import RotorStackComp
 from lpc_mdo.groups.acoustics import RotorNoiseGroup
-from lpc_mdo.vehicle.footprint_path import departure_points, footprint_geometry
+from lpc_mdo.vehicle.footprint_path import (
+    departure_points,
+    footprint_geometry,
+    footprint_observers,
+)
 
 __all__ = [
     "FootprintGroup",
@@ -47,13 +51,6 @@ def footprint_stations(num_radial):
     return np.arange(num_radial - 1, -1, -FOOTPRINT_STATION_STEP)[::-1]
 
 
-def _legs_of(vehicle, condition):
-    """Return the geometry of ``condition``'s legs and the observer count."""
-    legs, geometry = footprint_geometry(vehicle)
-    mine = [g for leg, g in zip(legs, geometry, strict=True) if leg.condition == condition]
-    return mine, len(geometry[0].offset)
-
-
 def footprint_sources(vehicle, flying):
     """
     Return the rotor sets of a departure condition's footprint noise, grouped for evaluation.
@@ -75,7 +72,7 @@ def add_footprint_noise(group, vehicle, condition, flying):
     """
     Add the noise of ``condition``'s legs at the footprint's observers to a condition group.
 
-    Output ``footprint_spl_a`` (num_observers x num_points,), observer-major: the total
+    Output ``footprint_spl_a`` (num_points,): the total
     A-weighted level of the lift rotors (and, if ``flying``, the pusher; a transition point)
     at each observer from each quadrature point of the condition's legs. Loads from each
     rotor's thrust and torque (hover load shape,
@@ -85,16 +82,13 @@ def add_footprint_noise(group, vehicle, condition, flying):
     chord inputs ``{set}_chord`` the vehicle-level model connects
     (:func:`lpc_mdo.vehicle.condition_kinds.footprint_chord_inputs`).
     """
-    geometry, no = _legs_of(vehicle, condition)
-    offsets = np.concatenate([g.offset for g in geometry], axis=1)  # (observer, point, 3)
-    width = offsets.shape[1]
+    points = departure_points(*footprint_geometry(vehicle))[condition]
+    width = len(points.observer)
     nrad = group.options["num_radial"]
     stations = footprint_stations(nrad)
     group.add_subsystem(
         "footprint_observers",
-        PathObserverComp(
-            offsets=offsets.reshape(no * width, 3), num_rotors=len(vehicle.lift_rotors)
-        ),
+        PathObserverComp(offsets=points.offset, num_rotors=len(vehicle.lift_rotors)),
         promotes_inputs=["pitch", ("hub_position", "lift_hub_position")],
     )
     speeds = {"lift": "lift_rotor_rpm", "pusher": "pusher_rpm"}
@@ -131,7 +125,7 @@ def add_footprint_noise(group, vehicle, condition, flying):
             noise,
             RotorNoiseGroup(
                 num_rotors=len(members),
-                num_observers=no * width,
+                num_observers=width,
                 num_radial=len(stations),
                 radial_stations=bem_stations[stations],
                 hub_radius_ratio=hub,
@@ -171,7 +165,7 @@ def add_footprint_noise(group, vehicle, condition, flying):
         "footprint_total",
         om.ExecComp(
             "footprint_spl_a = 10.0 * log10(10.0 ** (a / 10.0) + 10.0 ** (b / 10.0))",
-            shape=(no * width,),
+            shape=(width,),
             has_diag_partials=True,
         ),
         promotes_outputs=["footprint_spl_a"],
@@ -184,8 +178,8 @@ class FootprintGroup(om.Group):
     """
     Sound exposure and maximum level of every footprint observer over the departure.
 
-    Inputs ``{condition}`` (num_observers, num_points): the levels of each departure
-    condition's quadrature points (connected from ``{condition}.footprint_spl_a``);
+    Inputs ``{condition}`` (num_points,): the levels of each departure condition's
+    quadrature points at their observers (connected from ``{condition}.footprint_spl_a``);
     ``exposure.duration`` holds their equivalent times (lpc_mdo.vehicle.footprint_path).
     Outputs (dBA, units=None): ``footprint_sel`` and ``footprint_lamax`` per observer
     (NoiseExposureComp) and their smooth maxima over the observers ``footprint_sel_max``,
@@ -203,19 +197,17 @@ class FootprintGroup(om.Group):
 
     def setup(self):
         vehicle = self.options["vehicle"]
-        legs, geometry = footprint_geometry(vehicle)
-        no = len(geometry[0].offset)
-        points = departure_points(legs, geometry)
+        points = departure_points(*footprint_geometry(vehicle))
+        no = len(footprint_observers(vehicle.noise_footprint))
         self.add_subsystem(
             "exposure",
             NoiseExposureComp(
                 num_observers=no,
-                sources=list(points.items()),
-                duration_per_observer=True,
+                sources=[(name, p.observer) for name, p in points.items()],
             ),
             promotes_outputs=[("sel", "footprint_sel"), ("lmax", "footprint_lamax")],
         )
-        times = np.concatenate([g.equivalent_time for g in geometry], axis=1)
+        times = np.concatenate([p.equivalent_time for p in points.values()])
         self.set_input_defaults("exposure.duration", times, units="s")
         for level in ("sel", "lamax"):
             self.add_subsystem(

@@ -28,7 +28,6 @@ from lpc_mdo.vehicle.footprint_path import (
     departure_conditions,
     departure_points,
     footprint_geometry,
-    footprint_observers,
 )
 
 # Torque margin reported for a motor that no included condition loads (a model built with a
@@ -205,7 +204,7 @@ class LPCGroup(om.Group):
                     src_indices=(entry.flat_indices.reshape(v.target_shape),),
                     flat_src_indices=True,
                 )
-        for name, width in self.footprint_conditions.items():
+        for name in self.footprint_conditions:
             nrad = self._get_subsystem(name).options["num_radial"]
             flying = vehicle.condition(name).kind == "transition"
             for source, target, src_indices in footprint_chord_inputs(
@@ -214,13 +213,7 @@ class LPCGroup(om.Group):
                 self.connect(
                     source, f"{name}.{target}", src_indices=src_indices, flat_src_indices=True
                 )
-            no = len(footprint_observers(vehicle.noise_footprint))
-            self.connect(
-                f"{name}.footprint_spl_a",
-                f"footprint.exposure.{name}",
-                src_indices=(np.arange(no * width).reshape(no, width),),
-                flat_src_indices=True,
-            )
+            self.connect(f"{name}.footprint_spl_a", f"footprint.exposure.{name}")
         for i, condition in enumerate(self._powered):
             power = condition_kind(condition.kind).power_output
             self.connect(f"{condition.name}.{power}", f"power_mux.electrical_power_{i}")
@@ -348,7 +341,7 @@ class LPCGroup(om.Group):
 
 def footprint_conditions(vehicle, conditions):
     """
-    Return the departure conditions the noise footprint hears, name -> quadrature points.
+    Return the departure conditions the noise footprint hears, name -> their points.
 
     Empty unless the vehicle has a ``noise_footprint`` and ``conditions`` include every
     condition of its departure (lpc_mdo.vehicle.footprint_path): a model of a subset of the

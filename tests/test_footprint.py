@@ -12,6 +12,7 @@ from lpc_mdo.vehicle import VehicleSpecError, read_vehicle_file, vehicle_from_di
 from lpc_mdo.vehicle.footprint_path import (
     PathLeg,
     departure_legs,
+    departure_points,
     footprint_geometry,
     footprint_observers,
     leg_geometry,
@@ -42,19 +43,24 @@ def test_quadrature_of_a_leg_integrates_the_spreading_exactly():
     t = (np.arange(200000) + 0.5) * 20.0 / 200000
     path = np.column_stack([30.0 * t, 0.0 * t, np.full(t.size, -80.0)])
     for nodes in (1, 3, 6):
-        geometry = leg_geometry(leg, observers, nodes)
-        assert geometry.offset.shape == (3, nodes, 3)
-        points = observers[:, None, :] - geometry.offset
-        assert np.all((points[..., 0] >= 0.0) & (points[..., 0] <= 600.0))
-        np.testing.assert_allclose(points[..., 1:], np.broadcast_to([0.0, -80.0], (3, nodes, 2)))
+        geometry = leg_geometry(leg, observers, nodes, angle=0.01)  # every observer: nodes
+        np.testing.assert_array_equal(geometry.observer, np.repeat([0, 1, 2], nodes))
+        points = observers[geometry.observer] - geometry.offset
+        assert np.all((points[:, 0] >= 0.0) & (points[:, 0] <= 600.0))
+        np.testing.assert_allclose(points[:, 1:], np.broadcast_to([0.0, -80.0], (3 * nodes, 2)))
         for i, obs in enumerate(observers):
             hand = np.sum(1.0 / np.sum((obs - path) ** 2, axis=1)) * (20.0 / 200000)
-            ours = np.sum(geometry.equivalent_time[i] / np.sum(geometry.offset[i] ** 2, axis=1))
-            assert ours == pytest.approx(hand, rel=1e-7)
+            mine = geometry.observer == i
+            r2 = np.sum(geometry.offset[mine] ** 2, axis=1)
+            assert np.sum(geometry.equivalent_time[mine] / r2) == pytest.approx(hand, rel=1e-7)
+    # The default: one point per 30 deg the leg subtends, at most 6: the observer under the
+    # middle sees it over 150 deg, the one beyond its end over 17 deg.
+    geometry = leg_geometry(leg, observers, 6)
+    np.testing.assert_array_equal(np.bincount(geometry.observer), [6, 4, 1])
     # A steady source (the hover: a leg of zero length) carries its time.
     hover = leg_geometry(PathLeg("h", (0.0, 0.0, -80.0), (0.0, 0.0, -80.0), 30.0), observers, 4)
     np.testing.assert_array_equal(hover.equivalent_time, 30.0)
-    np.testing.assert_allclose(hover.offset[:, 0], observers - [0.0, 0.0, -80.0])
+    np.testing.assert_allclose(hover.offset, observers - [0.0, 0.0, -80.0])
 
 
 def test_the_departure_is_the_hover_then_the_transition_legs_end_to_end():
@@ -119,32 +125,38 @@ def test_path_observer_turns_with_the_pitch_and_partials_are_exact():
     assert_check_partials(prob.check_partials(method="cs", out_stream=None), atol=1e-10, rtol=1e-10)
 
 
-def test_exposure_of_sources_with_per_observer_times_matches_one_input():
+def test_exposure_of_ragged_sources_is_the_hand_sum():
+    # Three observers hearing 2, 1 and 3 points of a source "a" and 1, 2, 1 of a source "b",
+    # each point with its own time: SEL = 10 log10 sum 10^(L/10) tau over an observer's points.
     rng = np.random.default_rng(5)
-    level = 60.0 + 20.0 * rng.random((3, 5))
-    times = 0.5 + rng.random((3, 5))
-    results = []
-    for sources in (None, [("a", 2), ("b", 3)]):
-        prob = om.Problem(reports=False)
-        prob.model.add_subsystem(
-            "e",
-            NoiseExposureComp(
-                num_observers=3, num_points=5, sources=sources, duration_per_observer=True
-            ),
-        )
-        prob.setup(force_alloc_complex=True)
-        if sources is None:
-            prob.set_val("e.level", level)
-        else:
-            prob.set_val("e.a", level[:, :2])
-            prob.set_val("e.b", level[:, 2:])
-        prob.set_val("e.duration", times)
-        prob.run_model()
-        assert_check_partials(prob.check_partials(method="cs", out_stream=None), atol=1e-9)
-        results.append(prob.get_val("e.sel"))
-    np.testing.assert_allclose(results[0], results[1], rtol=1e-14)
-    hand = 10.0 * np.log10(np.sum(10.0 ** (level / 10.0) * times, axis=1))
-    np.testing.assert_allclose(results[0], hand, rtol=1e-12)
+    observers = {"a": [0, 0, 1, 2, 2, 2], "b": [0, 1, 1, 2]}
+    levels = {name: 60.0 + 20.0 * rng.random(len(o)) for name, o in observers.items()}
+    times = 0.5 + rng.random(10)
+    prob = om.Problem(reports=False)
+    prob.model.add_subsystem(
+        "e", NoiseExposureComp(num_observers=3, sources=list(observers.items()), rho=30.0)
+    )
+    prob.setup(force_alloc_complex=True)
+    for name, level in levels.items():
+        prob.set_val(f"e.{name}", level)
+    prob.set_val("e.duration", times)
+    prob.run_model()
+    assert_check_partials(prob.check_partials(method="cs", out_stream=None), atol=1e-9)
+    who = np.concatenate(list(observers.values()))
+    level = np.concatenate(list(levels.values()))
+    for i in range(3):
+        mine = who == i
+        hand = 10.0 * np.log10(np.sum(10.0 ** (level[mine] / 10.0) * times[mine]))
+        assert prob.get_val("e.sel")[i] == pytest.approx(hand, abs=1e-12)
+        top = level[mine].max()
+        assert top <= prob.get_val("e.lmax")[i] <= top + np.log(mine.sum()) / 30.0
+
+
+def test_an_observer_without_points_is_a_named_error():
+    prob = om.Problem(reports=False)
+    prob.model.add_subsystem("e", NoiseExposureComp(num_observers=3, sources=[("a", [0, 2])]))
+    with pytest.raises(ValueError, match=r"observers \[1\] hear no point"):
+        prob.setup()
 
 
 def test_one_rotor_passing_overhead_against_a_time_integration():
@@ -152,7 +164,7 @@ def test_one_rotor_passing_overhead_against_a_time_integration():
     # observer on the ground under the middle of its 800 m leg. Hand computation: the full noise
     # model at 801 points of the pass (directivity, Doppler, absorption of each), the energy
     # summed over time (trapezoids). The footprint's Gauss points in the line-of-sight angle
-    # must agree within 0.5 dB with the default 3 points; the rotor is quietest on its axis,
+    # must agree within 0.5 dB with the default 6 points; the rotor is quietest on its axis,
     # straight below, so 1 point (the closest) is far off.
     speed, height, length = 40.0, 80.0, 800.0
     x = np.linspace(0.0, length, 801)
@@ -193,14 +205,13 @@ def test_one_rotor_passing_overhead_against_a_time_integration():
     hand = 10.0 * np.log10(np.sum(10.0 ** (levels(path) / 10.0) * weights) * (x[1] - x[0]) / speed)
     leg = PathLeg("t", (0.0, 0.0, -height), (length, 0.0, -height), length / speed)
     sel = {}
-    for nodes in (1, 3, 6):
+    for nodes in (1, 3, 6):  # 6: the default for this leg, seen over 157 deg
         geometry = leg_geometry(leg, observer[None, :], nodes)
-        level = levels(observer - geometry.offset[0])
-        sel[nodes] = 10.0 * np.log10(np.sum(10.0 ** (level / 10.0) * geometry.equivalent_time[0]))
-    assert sel[3] == pytest.approx(hand, abs=0.5)  # 57.10 against 57.09 dBA
-    assert sel[6] == pytest.approx(hand, abs=0.5)  # 57.11
-    # 1 point: 40.8 dBA
-    assert abs(sel[1] - hand) > 3.0
+        level = levels(observer - geometry.offset)
+        sel[nodes] = 10.0 * np.log10(np.sum(10.0 ** (level / 10.0) * geometry.equivalent_time))
+    assert sel[6] == pytest.approx(hand, abs=0.5)  # 57.11 against 57.09 dBA
+    assert sel[3] == pytest.approx(hand, abs=0.5)  # 57.10
+    assert abs(sel[1] - hand) > 3.0  # the closest point alone: 40.8 dBA
 
 
 def test_reference_footprint_geometry_covers_the_departure():
@@ -208,8 +219,8 @@ def test_reference_footprint_geometry_covers_the_departure():
     legs, geometry = footprint_geometry(vehicle)
     assert len(legs) == 6 and len(geometry) == 6
     # The observer under the vertiport hears the hover for its whole time, 76.2 - 1.2 m below.
-    assert geometry[0].equivalent_time[1, 0] == 30.0
-    assert np.linalg.norm(geometry[0].offset[1, 0]) == pytest.approx(75.0)
+    assert geometry[0].equivalent_time[1] == 30.0
+    assert np.linalg.norm(geometry[0].offset[1]) == pytest.approx(75.0)
 
 
 @pytest.fixture(scope="module")
@@ -236,15 +247,11 @@ def test_footprint_rows_are_declared_and_sum_the_departure(footprint_model):
     # The exposure of each observer from the departure's levels and equivalent times by hand.
     vehicle = prob.model.options["vehicle"]
     legs, geometry = footprint_geometry(vehicle)
-    levels = np.concatenate(
-        [
-            prob.get_val(f"{name}.footprint_spl_a").reshape(5, -1)
-            for name in dict.fromkeys(leg.condition for leg in legs)
-        ],
-        axis=1,
-    )
-    times = np.concatenate([g.equivalent_time for g in geometry], axis=1)
-    hand = 10.0 * np.log10(np.sum(10.0 ** (levels / 10.0) * times, axis=1))
+    energy = np.zeros(5)
+    for name, points in departure_points(legs, geometry).items():
+        level = prob.get_val(f"{name}.footprint_spl_a")
+        np.add.at(energy, points.observer, 10.0 ** (level / 10.0) * points.equivalent_time)
+    hand = 10.0 * np.log10(energy)
     np.testing.assert_allclose(prob.get_val("footprint_sel"), hand, rtol=1e-12)
     assert prob.get_val("footprint_sel_max")[0] >= hand.max()
     assert prob.get_val("footprint_sel_max")[0] <= hand.max() + np.log(5) / 10.0

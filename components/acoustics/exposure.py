@@ -33,20 +33,21 @@ class NoiseExposureComp(om.ExplicitComponent):
     speed V at closest distance d with spherical spreading, L(t) = L_0 - 10 log10(1 +
     (V t/d)^2), gives sel = L_0 + 10 log10(pi d/(V t_0)) over an infinite time window.
 
-    Partials: analytic; ``sel`` and ``lmax`` of observer i depend on row i of the levels, ``sel``
-    also on the durations.
+    Partials: analytic; ``sel`` and ``lmax`` of observer i depend on its own points' levels,
+    ``sel`` also on their durations.
 
     Inputs
     ------
     level : float, (num_observers, num_points), dB (units=None)
         A-weighted level at each observer from each point of the path (without ``sources``).
-    {name} : float, (num_observers, width), dB (units=None)
-        With ``sources`` = ((name, width), ...): the levels of consecutive points of the path
-        from each source (e.g. one design condition), in path order.
-    duration : float, (num_points,) or (num_observers, num_points), s
-        Time share of each point (> 0); one per observer and point with
-        ``duration_per_observer`` (an equivalent time that also carries the spreading over a
-        leg, lpc_mdo.vehicle.footprint_path).
+    {name} : float, (number of its points,), dB (units=None)
+        With ``sources`` = ((name, observers), ...): the levels of one source's points (e.g.
+        one design condition's), each heard by the observer ``observers[k]``; each observer
+        may hear its own number of points (lpc_mdo.vehicle.footprint_path).
+    duration : float, (num_points,), s
+        Time share of each point (> 0): of each column of ``level``; with ``sources``, of every
+        point in the order of the sources (an equivalent time that also carries the spreading
+        over a leg).
 
     Outputs
     -------
@@ -58,11 +59,10 @@ class NoiseExposureComp(om.ExplicitComponent):
     Options
     -------
     num_observers, num_points : int
-        Array sizes (>= 1); with ``sources`` num_points is the sum of their widths.
-    sources : sequence of (str, int) or None
-        Names and widths of the level inputs (None: one input ``level``).
-    duration_per_observer : bool
-        Whether ``duration`` has one row per observer. Default False.
+        Array sizes (>= 1); with ``sources`` num_points is the number of all their points.
+    sources : sequence of (str, sequence of int) or None
+        Name of each level input and the observer of each of its points (None: one input
+        ``level``, every observer hearing every point). Every observer hears at least one point.
     rho : float
         Sharpness of the smooth maximum, per dB (> 0). Default 20.
     """
@@ -76,13 +76,7 @@ class NoiseExposureComp(om.ExplicitComponent):
             default=None,
             types=(list, tuple),
             allow_none=True,
-            desc="(name, width) of each level input, in path order (None: one input 'level')",
-        )
-        self.options.declare(
-            "duration_per_observer",
-            default=False,
-            types=bool,
-            desc="duration has one row per observer",
+            desc="(name, observer of each point) of each level input (None: one input 'level')",
         )
 
     def setup(self):
@@ -91,39 +85,38 @@ class NoiseExposureComp(om.ExplicitComponent):
         sources = self.options["sources"]
         if sources is None:
             npt = check_integer("num_points", self.options["num_points"], lower=1)
-            sources = (("level", npt),)
-        else:
-            sources = tuple(
-                (str(name), check_integer(f"width of source {name!r}", width, lower=1))
-                for name, width in sources
-            )
-            npt = sum(width for _, width in sources)
-        self._sources = sources
-        self._npt = npt
-        starts = np.cumsum([0] + [width for _, width in sources])
-        for name, width in sources:
             self.add_input(
-                name,
-                np.full((no, width), 60.0),
-                units=None,
-                desc="A-weighted level at each observer from points of the path, dB",
+                "level", np.full((no, npt), 60.0), units=None, desc="level at each observer, dB"
             )
-            rows = np.repeat(np.arange(no), width)
-            cols = np.arange(no * width)
-            self.declare_partials("sel", name, rows=rows, cols=cols)
-            self.declare_partials("lmax", name, rows=rows, cols=cols)
-        self._columns = [
-            slice(start, start + width)
-            for (_, width), start in zip(sources, starts[:-1], strict=True)
-        ]
-        per_observer = self.options["duration_per_observer"]
-        self.add_input("duration", np.ones((no, npt) if per_observer else npt), units="s",
-                       desc="time share of each point")  # fmt: skip
+            self._sources = [("level", np.repeat(np.arange(no), npt))]
+            self._duration_index = np.tile(np.arange(npt), no)
+        else:
+            self._sources = []
+            for name, observers in sources:
+                observers = np.asarray(observers, dtype=int).ravel()
+                if observers.size == 0 or observers.min() < 0 or observers.max() >= no:
+                    raise ValueError(
+                        f"{self.msginfo}: the observers of source {name!r} must be at least one "
+                        f"index in [0, {no - 1}], got {observers.tolist()}"
+                    )
+                self.add_input(
+                    str(name), np.full(observers.size, 60.0), units=None, desc="levels, dB"
+                )
+                self._sources.append((str(name), observers))
+            npt = sum(observers.size for _, observers in self._sources)
+            self._duration_index = np.arange(npt)
+        self._observer = np.concatenate([observers for _, observers in self._sources])
+        missing = np.setdiff1d(np.arange(no), self._observer)
+        if missing.size:
+            raise ValueError(f"{self.msginfo}: observers {missing.tolist()} hear no point")
+        self.add_input("duration", np.ones(npt), units="s", desc="time share of each point")
         self.add_output("sel", np.zeros(no), units=None, desc="sound exposure level, dB")
         self.add_output("lmax", np.zeros(no), units=None, desc="smooth maximum level, dB")
-        rows = np.repeat(np.arange(no), npt)
-        cols = np.arange(no * npt) if per_observer else np.tile(np.arange(npt), no)
-        self.declare_partials("sel", "duration", rows=rows, cols=cols)
+        for name, observers in self._sources:
+            cols = np.arange(observers.size)
+            self.declare_partials("sel", name, rows=observers, cols=cols)
+            self.declare_partials("lmax", name, rows=observers, cols=cols)
+        self.declare_partials("sel", "duration", rows=self._observer, cols=self._duration_index)
 
     def _parts(self, inputs):
         check_range(
@@ -137,26 +130,36 @@ class NoiseExposureComp(om.ExplicitComponent):
         )
         for name, _ in self._sources:
             check_range(name, inputs[name], error=om.AnalysisError, where=self.msginfo)
-        level = np.concatenate([inputs[name] for name, _ in self._sources], axis=1)
-        top = np.max(level.real, axis=1, keepdims=True)
-        # Energies relative to the loudest point: 10**((L - top)/10) <= 1, no overflow.
-        energy = 10.0 ** ((level - top) / 10.0) * inputs["duration"]
-        weights = np.exp(self.options["rho"] * (level - top))
-        return top[:, 0], energy, weights
+        level = np.concatenate([inputs[name].ravel() for name, _ in self._sources])
+        observer = self._observer
+        top = np.full(self.options["num_observers"], -np.inf)
+        np.maximum.at(top, observer, level.real)
+        # Energies relative to each observer's loudest point: <= 1, no overflow.
+        relative = level - top[observer]
+        energy = 10.0 ** (relative / 10.0) * inputs["duration"][self._duration_index]
+        weights = np.exp(self.options["rho"] * relative)
+        total = np.zeros(top.shape, dtype=energy.dtype)
+        np.add.at(total, observer, energy)
+        weight_sum = np.zeros(top.shape, dtype=weights.dtype)
+        np.add.at(weight_sum, observer, weights)
+        return top, energy, weights, total, weight_sum
 
     def compute(self, inputs, outputs):
-        top, energy, weights = self._parts(inputs)
-        total = np.sum(energy, axis=1)
+        top, _, _, total, weight_sum = self._parts(inputs)
         outputs["sel"] = top + 10.0 * np.log10(total / REFERENCE_DURATION)
-        outputs["lmax"] = top + np.log(np.sum(weights, axis=1)) / self.options["rho"]
+        outputs["lmax"] = top + np.log(weight_sum) / self.options["rho"]
 
     def compute_partials(self, inputs, partials):
-        _, energy, weights = self._parts(inputs)
-        share = energy / np.sum(energy, axis=1, keepdims=True)
-        # d sel/dL_ij = E_ij dt_j / sum; d sel/d dt_j = (10/ln 10) E_ij / sum.
-        softmax = weights / np.sum(weights, axis=1, keepdims=True)
-        for (name, _), columns in zip(self._sources, self._columns, strict=True):
-            partials["sel", name] = share[:, columns].ravel()
-            partials["lmax", name] = softmax[:, columns].ravel()
-        duration = np.broadcast_to(inputs["duration"], share.shape)
-        partials["sel", "duration"] = (DB_PER_NEPER * share / duration).ravel()
+        _, energy, weights, total, weight_sum = self._parts(inputs)
+        observer = self._observer
+        # d sel/dL_p = E_p dt_p / sum of its observer; d sel/d dt_p = (10/ln 10) E_p / sum.
+        share = energy / total[observer]
+        softmax = weights / weight_sum[observer]
+        start = 0
+        for name, observers in self._sources:
+            part = slice(start, start + observers.size)
+            partials["sel", name] = share[part]
+            partials["lmax", name] = softmax[part]
+            start += observers.size
+        duration = inputs["duration"][self._duration_index]
+        partials["sel", "duration"] = DB_PER_NEPER * share / duration

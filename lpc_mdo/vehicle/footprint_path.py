@@ -23,8 +23,10 @@ L(beta) the noise model's level from that point (directivity, Doppler, spreading
 absorption of that line of sight). Gauss-Legendre nodes in beta over the leg give the points
 and their **equivalent times** tau_k = w_k h/(V cos^2 beta_k), E = sum_k 10^(L_k/10) tau_k:
 exact for a source of uniform directivity with spherical spreading (the integrand is then
-constant in beta), and the nodes follow the line of sight evenly however long the leg. The
-hover is one point held for its time.
+constant in beta), and the nodes follow the line of sight evenly however long the leg. Each
+observer hears each leg at one node per :data:`QUADRATURE_ANGLE` of the angle the leg subtends
+(at least one, at most the footprint's ``quadrature_points``): a far leg, seen over a narrow
+angle, at one point. The hover is one point held for its time.
 """
 
 from __future__ import annotations
@@ -38,6 +40,10 @@ from lpc_mdo.vehicle.schema import VehicleSpecError
 #: Least distance from the path to a footprint observer in rotor radii (the far-field forms of
 #: the noise model; lpc_mdo.vehicle.consistency.FAR_FIELD_RADII for the hover observers).
 FOOTPRINT_FAR_FIELD_RADII = 10.0
+#: Line-of-sight angle per Gauss point of a leg (rad): a leg seen over up to 30 deg is heard at
+#: one point, one seen over nearly 180 deg (passing overhead) at six (docs theory/acoustics
+#: 'Noise footprint' measures the choice against one point per 10 deg).
+QUADRATURE_ANGLE = np.radians(30.0)
 
 
 @dataclass(frozen=True)
@@ -121,42 +127,60 @@ def footprint_observers(footprint) -> np.ndarray:
 
 @dataclass(frozen=True)
 class LegGeometry:
-    """Where and for how long each observer hears one leg.
+    """Where and for how long the observers hear one leg: its quadrature points, flat.
 
     Attributes
     ----------
-    offset : ndarray, (num_observers, num_nodes, 3)
-        Observer minus each quadrature point of the leg, earth axes (m).
-    equivalent_time : ndarray, (num_observers, num_nodes)
-        tau_k (s): the leg's energy at the observer is sum_k 10^(L_k/10) tau_k, L_k the level
-        from point k (module docstring).
+    observer : ndarray of int, (num_points,)
+        The observer hearing each point (each observer hears at least one, in order).
+    offset : ndarray, (num_points, 3)
+        That observer minus the point, earth axes (m).
+    equivalent_time : ndarray, (num_points,)
+        tau_k (s): the leg's energy at an observer is the sum over its points of
+        10^(L_k/10) tau_k, L_k the level from point k (module docstring).
     """
 
+    observer: np.ndarray
     offset: np.ndarray
     equivalent_time: np.ndarray
 
 
-def leg_geometry(leg: PathLeg, observers: np.ndarray, num_nodes: int) -> LegGeometry:
-    """Quadrature points and equivalent times of one leg for every observer (module docstring).
+def leg_nodes(span, max_nodes, angle=None):
+    """Gauss points for a leg seen over ``span`` rad: one per ``angle``, 1 to ``max_nodes``."""
+    angle = QUADRATURE_ANGLE if angle is None else angle
+    return np.clip(np.ceil(np.asarray(span) / angle - 1e-9), 1, max_nodes).astype(int)
 
-    The hover (a leg of zero length) is one point held for its time.
+
+def leg_geometry(leg: PathLeg, observers: np.ndarray, max_nodes: int, angle=None) -> LegGeometry:
+    """
+    Return the quadrature points and equivalent times of one leg for every observer.
+
+    See the module docstring. Each observer hears the leg at :func:`leg_nodes` Gauss points in
+    the angle of its line of sight over the angle the leg subtends; the hover (a leg of zero
+    length) at one point held for its time.
     """
     start = np.asarray(leg.start, dtype=float)
     rel = np.asarray(observers, dtype=float) - start
+    index = np.arange(len(rel))
     length = leg.length
     if length == 0.0:
-        return LegGeometry(rel[:, None, :], np.full((len(rel), 1), leg.time))
+        return LegGeometry(index, rel, np.full(len(rel), leg.time))
     along = (np.asarray(leg.end) - start) / length
     s_star = rel @ along
-    h = np.sqrt(np.maximum(np.sum(rel * rel, axis=1) - s_star**2, 0.0))[:, None]
-    first, last = np.arctan(-s_star / h[:, 0]), np.arctan((length - s_star) / h[:, 0])
-    nodes, weights = np.polynomial.legendre.leggauss(num_nodes)
-    half = 0.5 * (last - first)[:, None]
-    angle = 0.5 * (last + first)[:, None] + half * nodes
-    position = s_star[:, None] + h * np.tan(angle)
-    offset = rel[:, None, :] - position[..., None] * along
+    h = np.sqrt(np.maximum(np.sum(rel * rel, axis=1) - s_star**2, 0.0))
+    first, last = np.arctan(-s_star / h), np.arctan((length - s_star) / h)
+    counts = leg_nodes(last - first, max_nodes, angle)
     speed = length / leg.time
-    return LegGeometry(offset, half * weights * h / (speed * np.cos(angle) ** 2))
+    observer, offset, times = [], [], []
+    for i, n in zip(index, counts, strict=True):
+        nodes, weights = np.polynomial.legendre.leggauss(n)
+        half = 0.5 * (last[i] - first[i])
+        beta = 0.5 * (last[i] + first[i]) + half * nodes
+        position = s_star[i] + h[i] * np.tan(beta)
+        observer.append(np.full(n, i))
+        offset.append(rel[i] - position[:, None] * along)
+        times.append(half * weights * h[i] / (speed * np.cos(beta) ** 2))
+    return LegGeometry(np.concatenate(observer), np.concatenate(offset), np.concatenate(times))
 
 
 def footprint_geometry(vehicle) -> tuple[tuple[PathLeg, ...], list[LegGeometry]]:
@@ -176,7 +200,7 @@ def footprint_geometry(vehicle) -> tuple[tuple[PathLeg, ...], list[LegGeometry]]
     observers = footprint_observers(footprint)
     geometry = [leg_geometry(leg, observers, footprint.nodes) for leg in legs]
     radius = max(r.radius for r in (*vehicle.lift_rotors, vehicle.pusher))
-    closest = min(float(np.min(np.linalg.norm(g.offset, axis=-1))) for g in geometry)
+    closest = min(float(np.min(np.linalg.norm(g.offset, axis=1))) for g in geometry)
     if closest < FOOTPRINT_FAR_FIELD_RADII * radius:
         raise VehicleSpecError(
             f"'noise_footprint' has an observer {closest:.1f} m from the departure path: must be "
@@ -187,9 +211,16 @@ def footprint_geometry(vehicle) -> tuple[tuple[PathLeg, ...], list[LegGeometry]]
     return legs, geometry
 
 
-def departure_points(legs, geometry) -> dict[str, int]:
-    """Quadrature points of each departure condition's legs, name -> count, in flight order."""
-    points: dict[str, int] = {}
+def departure_points(legs, geometry) -> dict[str, LegGeometry]:
+    """Return each departure condition's quadrature points, its legs' joined, in flight order."""
+    parts: dict[str, list[LegGeometry]] = {}
     for leg, g in zip(legs, geometry, strict=True):
-        points[leg.condition] = points.get(leg.condition, 0) + g.offset.shape[1]
-    return points
+        parts.setdefault(leg.condition, []).append(g)
+    return {
+        name: LegGeometry(
+            np.concatenate([g.observer for g in mine]),
+            np.concatenate([g.offset for g in mine]),
+            np.concatenate([g.equivalent_time for g in mine]),
+        )
+        for name, mine in parts.items()
+    }

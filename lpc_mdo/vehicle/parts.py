@@ -65,11 +65,11 @@ SPEED_RULES = ("fixed", "optimized")
 #: certification microphone 1.2 m (4 ft) above ground (14 CFR Part 36, Appendix H, H36.109;
 #: ICAO Annex 16 Vol. I, Appendix 2).
 DEFAULT_OBSERVER_HEIGHT = 1.2
-#: Parts of each transition leg of a noise footprint, and Gauss points per part in the angle of
-#: the line of sight, when the file gives none (lpc_mdo.vehicle.footprint_path; docs
+#: Parts of each transition leg of a noise footprint, and the most Gauss points per part in the
+#: angle of the line of sight, when the file gives none (lpc_mdo.vehicle.footprint_path; docs
 #: theory/acoustics 'Noise footprint' measures the SEL's change with more).
 DEFAULT_LEG_SUBDIVISIONS = 1
-DEFAULT_QUADRATURE_POINTS = 3
+DEFAULT_QUADRATURE_POINTS = 6
 _MAX_PAIRS = max(LIFT_ROTOR_COUNTS) // 2
 #: Bound of every body-frame coordinate (m): a vehicle of this class is at most 30 m long and
 #: wide; 50 m catches positions in mm or in ft x 1000.
@@ -983,7 +983,8 @@ class NoiseFootprint:
     leg_subdivisions : int or None
         Parts each transition leg is split into (None: 1).
     quadrature_points : int or None
-        Gauss points per part, in the angle of the line of sight (None: 3).
+        Most Gauss points per part, in the angle of the line of sight (None: 6; one per 30 deg
+        the part subtends at the observer, lpc_mdo.vehicle.footprint_path).
     """
 
     # Within 20 km of the vertiport: the departure's transition covers a few km.
@@ -1017,7 +1018,7 @@ class NoiseFootprint:
 
     @property
     def nodes(self) -> int:
-        """Gauss points per part of a transition leg: the file's, or 3."""
+        """Most Gauss points per part of a transition leg: the file's, or 6."""
         return (
             DEFAULT_QUADRATURE_POINTS if self.quadrature_points is None else self.quadrature_points
         )
