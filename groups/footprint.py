@@ -215,4 +215,9 @@ class FootprintGroup(om.Group):
                 KSComp(width=no, rho=FOOTPRINT_KS_RHO),
                 promotes_outputs=[("KS", f"footprint_{level}_max")],
             )
-            self.connect(f"footprint_{level}", f"{level}_max.g", src_indices=np.arange(no)[None, :])
+            self.connect(
+                f"footprint_{level}",
+                f"{level}_max.g",
+                src_indices=(np.arange(no)[None, :],),
+                flat_src_indices=True,
+            )

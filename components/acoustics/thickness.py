@@ -4,7 +4,7 @@ import numpy as np
 import openmdao.api as om
 
 from lpc_mdo.components.acoustics.common import (
-    bessel_j,
+    bessel_j_range,
     blade_counts,
     check_input_range,
     declare_radial_options,
@@ -181,7 +181,7 @@ class BarryMagliozziThicknessComp(om.ExplicitComponent):
         area = SECTION_AREA_FACTOR * chord * chord * tc  # (nr, nrad)
 
         x = self._n[:, :, None] * eta[:, None, None] * rbar[None, None, :]  # (nr, nm, nrad)
-        jt = bessel_j(self._orders[:, :, None, :], x[..., None])  # (.., 5)
+        jt = bessel_j_range(self._orders[:, :, :1], 5, x)  # (.., 5): orders n-2 .. n+2
         j0 = jt[..., 2]
         j1 = 0.5 * (jt[..., 1] - jt[..., 3])  # J'_n
         g = j0 + 2.0 * zeta[:, None, None] * rbar * j1

@@ -5,6 +5,7 @@ import openmdao.api as om
 
 from lpc_mdo.components.acoustics.common import (
     bessel_j,
+    bessel_j_range,
     bessel_y,
     blade_counts,
     check_input_range,
@@ -594,7 +595,8 @@ class LowsonLoadingNoiseComp(om.ExplicitComponent):
 
     def _bessel(self, mu, grad):
         x = self._n[:, :, None] * mu[:, None, None] * self._rbar[None, None, :]
-        jtab = bessel_j(self._orders[:, :, None, :], x[..., None])  # (nr, nm, nrad, nq)
+        low = self._orders[:, :, :1]  # (nr, nm, 1): the lowest order of each harmonic
+        jtab = bessel_j_range(low, self._orders.shape[-1], x)  # (nr, nm, nrad, nq)
         if not grad:
             return jtab, None
         jdtab = np.zeros_like(jtab)
