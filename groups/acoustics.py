@@ -310,9 +310,36 @@ class RotorNoiseGroup(om.Group):
                 ObserverPositionComp(num_rotors=nr, num_observers=no),
                 promotes=["*"] if no == 1 else ["hub_position", "observer_*"],
             )
+        # The blade loads (the hover load shape, their Fourier harmonics, the Sears gusts) are
+        # the rotors' own, whoever hears them: computed once per rotor, here.
+        self.add_subsystem("blade_loads", om.Group(), promotes=["*"])
+        if opt["load_input"] == "totals":
+            self.blade_loads.add_subsystem(
+                "hover_loads",
+                HoverLoadDistributionComp(num_rotors=nr, num_blades=blades, **radial),
+                promotes=["*"],
+            )
+        self.blade_loads.add_subsystem(
+            "fourier",
+            LoadFourierComp(num_rotors=nr, num_radial=nrad, num_azimuth=naz, num_load_harmonics=L),
+            promotes=["*"],
+        )
+        if path != "unsteady":
+            self.blade_loads.add_subsystem(
+                "sears",
+                SearsGustLoadsComp(
+                    num_rotors=nr,
+                    num_azimuth=naz,
+                    num_gust_harmonics=opt["num_gust_harmonics"],
+                    gust_factor=opt["gust_factor"],
+                    **radial,
+                ),
+                promotes=["*"],
+            )
         # Several observers: every rotor-observer pair is one "rotor" of the components below,
         # observer-major (row j nr + k is rotor k heard by observer j), in the subgroup 'pairs'
-        # whose per-rotor inputs take the rotors' values (configure). One pass, vectorized.
+        # whose per-rotor inputs and blade loads take their rotor's values (configure). One
+        # pass, vectorized.
         target = self if no == 1 else self.add_subsystem("pairs", om.Group())
         nr_pairs = nr * no
         blades = tuple(int(b) for b in blades) * no
@@ -328,29 +355,6 @@ class RotorNoiseGroup(om.Group):
             ),
             promotes=["*"],
         )
-        if opt["load_input"] == "totals":
-            target.add_subsystem(
-                "hover_loads", HoverLoadDistributionComp(**common, **radial), promotes=["*"]
-            )
-        target.add_subsystem(
-            "fourier",
-            LoadFourierComp(
-                num_rotors=nr_pairs, num_radial=nrad, num_azimuth=naz, num_load_harmonics=L
-            ),
-            promotes=["*"],
-        )
-        if path != "unsteady":
-            target.add_subsystem(
-                "sears",
-                SearsGustLoadsComp(
-                    num_rotors=nr_pairs,
-                    num_azimuth=naz,
-                    num_gust_harmonics=opt["num_gust_harmonics"],
-                    gust_factor=opt["gust_factor"],
-                    **radial,
-                ),
-                promotes=["*"],
-            )
         target.add_subsystem(
             "loading",
             LowsonLoadingNoiseComp(
@@ -473,12 +477,18 @@ class RotorNoiseGroup(om.Group):
             return
         meta = target.get_io_metadata(iotypes="input", metadata_keys=["val", "units"])
         outputs = {m["prom_name"] for m in target.get_io_metadata(iotypes="output").values()}
-        # Inputs the pairs' own outputs feed (e.g. the hover load shape) stay inside.
+        # Inputs the pairs' own outputs feed stay inside.
         inputs = {m["prom_name"]: m for m in meta.values() if m["prom_name"] not in outputs}
         rotor_rows = np.tile(np.arange(nr), no)  # pair j nr + k <- rotor k
         observer_rows = np.repeat(np.arange(no), nr)  # pair j nr + k <- observer j
+        loads = self.blade_loads.get_io_metadata(iotypes="output", metadata_keys=["shape"])
+        load_shapes = {m["prom_name"]: m["shape"] for m in loads.values()}
         defaults = {}  # the components' own defaults, at the rotors' (observers') shapes
         for name, m in sorted(inputs.items()):
+            if name in load_shapes:  # a blade load of the pair's rotor
+                index = (rotor_rows,) + (slice(None),) * (len(load_shapes[name]) - 1)
+                self.connect(name, f"pairs.{name}", src_indices=om.slicer[index])
+                continue
             if name == "observer_position":
                 if self.options["observer_input"] == "relative":
                     self.connect(
