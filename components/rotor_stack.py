@@ -11,8 +11,8 @@ class RotorStackComp(om.ExplicitComponent):
     Per-rotor arrays of several rotor sets, one after the other, as arrays of one set.
 
     For each quantity ``name`` with per-rotor shape ``tail`` and each set ``prefix`` of
-    ``count`` rotors, the input ``{prefix}_{name}`` (count, *tail) fills the rows of the output
-    ``name`` (sum of the counts, *tail) in the order of ``sets``. A model that hears the lift
+    ``count`` rotors, the input ``{prefix}_{name}`` of shape ``(count, *tail)`` fills the rows
+    of the output ``name`` of shape ``(sum of the counts, *tail)`` in the order of ``sets``. A model that hears the lift
     rotors and the pusher in one noise evaluation takes its rotor inputs from here. Partials:
     constant ones.
 

@@ -295,3 +295,10 @@ def test_footprint_figure_is_written_and_checks_its_values(tmp_path):
     assert path.stat().st_size > 10000
     with pytest.raises(ValueError, match="9 observers"):
         plot_footprint(vehicle, sel[:5], sel[:5], tmp_path / "bad.png")
+
+
+@pytest.mark.parametrize("name", ["footprint_sel_max", "footprint_lamax_max"])
+def test_footprint_rows_are_shown_in_dba(name):
+    from lpc_mdo.post.tables import display_units
+
+    assert display_units({"units": None, "name": name}) == "dBA"

@@ -346,10 +346,12 @@ def constraint_rows(source, case=None, tol=DEFAULT_TOL, refs=None, tols=None):
 
 
 #: What a dimensionless constraint counts in, by the end of its name (first match): the
-#: A-weighted level in decibels, Mach numbers, the static margin in mean aerodynamic chords,
+#: A-weighted level and the footprint's exposure and maximum levels in decibels, Mach numbers, the static margin in mean aerodynamic chords,
 #: the state of charge as a fraction of the capacity, other margins and ratios as ratios.
 DIMENSIONLESS_UNITS = (
     ("_spl_a", "dBA"),
+    ("footprint_sel_max", "dBA"),
+    ("footprint_lamax_max", "dBA"),
     ("tip_mach", "Mach"),
     ("static_margin", "MAC"),
     ("state_of_charge", "fraction"),
