@@ -12,9 +12,9 @@ class RotorStackComp(om.ExplicitComponent):
 
     For each quantity ``name`` with per-rotor shape ``tail`` and each set ``prefix`` of
     ``count`` rotors, the input ``{prefix}_{name}`` of shape ``(count, *tail)`` fills the rows
-    of the output ``name`` of shape ``(sum of the counts, *tail)`` in the order of ``sets``. A model that hears the lift
-    rotors and the pusher in one noise evaluation takes its rotor inputs from here. Partials:
-    constant ones.
+    of the output ``name`` of shape ``(sum of the counts, *tail)`` in the order of ``sets``. A
+    model that hears the lift rotors and the pusher in one noise evaluation takes its rotor
+    inputs from here. Partials: constant ones.
 
     Options
     -------

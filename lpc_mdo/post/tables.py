@@ -346,8 +346,9 @@ def constraint_rows(source, case=None, tol=DEFAULT_TOL, refs=None, tols=None):
 
 
 #: What a dimensionless constraint counts in, by the end of its name (first match): the
-#: A-weighted level and the footprint's exposure and maximum levels in decibels, Mach numbers, the static margin in mean aerodynamic chords,
-#: the state of charge as a fraction of the capacity, other margins and ratios as ratios.
+#: A-weighted level and the footprint's exposure and maximum levels in decibels, Mach numbers,
+#: the static margin in mean aerodynamic chords, the state of charge as a fraction of the
+#: capacity, other margins and ratios as ratios.
 DIMENSIONLESS_UNITS = (
     ("_spl_a", "dBA"),
     ("footprint_sel_max", "dBA"),
