@@ -1,24 +1,18 @@
-"""Bessel functions of consecutive orders by downward recurrence: acoustics.common."""
+"""Bessel functions of consecutive orders by Miller's algorithm: acoustics.common."""
 
 import numpy as np
 import pytest
 from scipy.special import jv
 
-import lpc_mdo.components.acoustics.common as common
 from lpc_mdo.components.acoustics.common import bessel_j, bessel_j_range
 
 
-@pytest.fixture(autouse=True)
-def recurrence_on_small_tables(monkeypatch):
-    # The tests' tables are small; the recurrence, not the order-by-order fallback, is tested.
-    monkeypatch.setattr(common, "_RECURRENCE_MIN_TABLE", 0)
-
-
-@pytest.mark.parametrize("low, count", [(-12, 25), (0, 5), (8, 11), (30, 23)])
-def test_recurrence_matches_order_by_order_evaluation(low, count):
-    # Arguments from near the rotor axis (1e-8) through the loading noise's range (a few tens),
-    # orders around the harmonics m B of the rotors (both signs), against scipy's jv.
-    x = np.concatenate([np.geomspace(1e-8, 1.0, 40), np.linspace(1.0, 60.0, 120)])
+@pytest.mark.parametrize("low, count", [(-12, 25), (0, 5), (8, 11), (30, 23), (40, 23)])
+@pytest.mark.parametrize("largest", [15.0, 120.0])
+def test_recurrence_matches_order_by_order_evaluation(low, count, largest):
+    # Arguments from near the rotor axis (1e-8) through the loading noise's range (a few tens)
+    # and beyond, orders around the harmonics m B of the rotors (both signs), against scipy's jv.
+    x = np.concatenate([np.geomspace(1e-8, 1.0, 40), np.linspace(1.0, largest, 120)])
     table = bessel_j_range(low, count, x)
     direct = jv(low + np.arange(count), x[:, None])
     assert table.shape == (x.size, count)

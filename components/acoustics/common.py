@@ -183,60 +183,61 @@ def bessel_j(order, x):
     return _complex_step_safe(jv, order, x)
 
 
-#: Smallest argument of the downward recurrence of :func:`bessel_j_range` (below it, and for a
-#: complex step's real part there, the table is evaluated order by order).
-_RECURRENCE_MIN_ARGUMENT = 1.0e-30
-#: Smallest table (arguments x orders) worth the recurrence: below it the order-by-order
-#: evaluation is faster (measured: the 8-rotor hover noise, 13800 entries, 6.3 ms against
-#: 8.1 ms per evaluation; a 40-observer footprint evaluation, 267000 entries, 36 ms against
-#: 29 ms).
-_RECURRENCE_MIN_TABLE = 50000
+#: Arguments below which :func:`bessel_j_range` evaluates order by order (near the rotor axis,
+#: where the downward recurrence would grow by 2n/x per step).
+_MILLER_MIN_ARGUMENT = 1.0e-3
+#: Rescaling threshold of the recurrence's running values (well inside the double range).
+_MILLER_RESCALE = 1.0e250
 
 
 def bessel_j_range(low, count, x):
     """
     Bessel functions J_n(x) of the consecutive integer orders n = low .. low + count - 1.
 
-    Returns an array of shape broadcast(low, x) + (count,). The two highest orders come from
-    :func:`bessel_j`; the lower ones from the downward recurrence J_{n-1} = (2n/x) J_n - J_{n+1}
-    (Abramowitz and Stegun 9.1.27), which is stable downward to n = 0 because J_n is the minimal
-    solution of the recurrence as n grows (Miller's algorithm; Press et al., Numerical Recipes,
-    3rd ed., sec. 6.5); negative orders by J_{-n} = (-1)^n J_n (A&S 9.1.5). Two library
-    evaluations instead of ``count``, exact to round-off (tests: against order-by-order
-    evaluation); where the top order's J underflows (high orders at tiny arguments), order by
-    order. Complex-step safe: the recurrence is analytic in x and the seeds are
-    :func:`bessel_j`'s. Arguments at or below 1e-30 (the rotor axis: J_n(0) = 0 but for n = 0)
-    and small tables take the order-by-order evaluation.
+    Returns an array of shape broadcast(low, x) + (count,). Miller's algorithm (Press et al.,
+    Numerical Recipes, 3rd ed., sec. 6.5; Abramowitz and Stegun 9.12): the recurrence
+    J_{n-1} = (2n/x) J_n - J_{n+1} (A&S 9.1.27), run downward from an order N well above the
+    orders needed and the argument (N = max(n, x) + 12 + 3 sqrt(max(n, x)), even) with
+    J_{N+1} = 0 and an arbitrary J_N, is stable because J_n is its minimal solution as n grows;
+    the sum rule J_0 + 2 (J_2 + J_4 + ...) = 1 (A&S 9.1.46) normalises it. Negative orders by
+    J_{-n} = (-1)^n J_n (A&S 9.1.5). No library call, where one per order cost ten times as
+    much; within 1e-10 of the library's values (tests: orders -12 to 62, arguments 1e-8 to 120).
+    Complex-step safe: the recurrence and the normalisation are analytic in x. Arguments below
+    1e-3 (near the rotor axis) take :func:`bessel_j` order by order.
     """
     low = np.asarray(low)
     x = np.asarray(x)
     shape = np.broadcast_shapes(low.shape, x.shape)
     low = np.broadcast_to(low, shape).astype(int)
     x = np.broadcast_to(x, shape)
-    if (
-        count < 3
-        or x.size * count < _RECURRENCE_MIN_TABLE
-        or np.any(np.abs(x.real) <= _RECURRENCE_MIN_ARGUMENT)
-    ):
-        return bessel_j(low[..., None] + np.arange(count), x[..., None])
     orders = low[..., None] + np.arange(count)  # (..., count)
-    top = np.maximum(np.abs(orders[..., 0]), np.abs(orders[..., -1]))  # highest |n| needed
-    span = int(np.max(top)) + 1  # nonnegative orders 0 .. span - 1 for every element
-    # One table of J_0 .. J_{span-1} per element, seeded at each element's own top order
-    # (higher entries stay unused): 0 .. top by recurrence from top and top - 1.
-    positive = np.zeros(shape + (span,), dtype=np.result_type(x, float))
-    seed_high, seed_low = bessel_j(top, x), bessel_j(np.maximum(top - 1, 0), x)
-    index = np.indices(shape)
-    positive[(*index, top)] = seed_high
-    positive[(*index, np.maximum(top - 1, 0))] = seed_low
-    for k in range(span - 1, 0, -1):
-        below = 2.0 * k / x * positive[..., k] - (positive[..., k + 1] if k + 1 < span else 0.0)
-        positive[..., k - 1] = np.where(k < top, below, positive[..., k - 1])
+    top = int(np.max(np.abs(orders)))
+    small = np.abs(x.real) < _MILLER_MIN_ARGUMENT
+    xs = np.where(small, 1.0, x)  # the small ones are replaced below
+    reach = max(top, float(np.max(np.abs(xs.real))))
+    start = int(np.ceil(reach + 12.0 + 3.0 * np.sqrt(reach)))
+    start += start % 2
+    dtype = np.result_type(x, float)
+    positive = np.zeros(shape + (top + 1,), dtype=dtype)  # J_0 .. J_top, unnormalised
+    after = np.zeros(shape, dtype=dtype)
+    value = np.full(shape, 1.0e-30, dtype=dtype)
+    norm = np.zeros(shape, dtype=dtype)
+    for k in range(start, 0, -1):  # value = J_k, after = J_{k+1}
+        if k <= top:
+            positive[..., k] = value
+        if k % 2 == 0:
+            norm = norm + 2.0 * value
+        value, after = 2.0 * k / xs * value - after, value
+        if np.max(np.abs(value.real)) > _MILLER_RESCALE:
+            scale = np.where(np.abs(value.real) > _MILLER_RESCALE, 1.0 / _MILLER_RESCALE, 1.0)
+            value, after, norm = value * scale, after * scale, norm * scale
+            positive *= scale[..., None]
+    positive[..., 0] = value
+    positive /= (norm + value)[..., None]
     table = np.take_along_axis(positive, np.abs(orders), axis=-1)
     table = np.where((orders < 0) & (orders % 2 == 1), -table, table)
-    under = seed_high.real == 0.0  # the top order underflowed: order by order there
-    if np.any(under):
-        table[under] = bessel_j(orders[under], x[under][..., None])
+    if np.any(small):
+        table[small] = bessel_j(orders[small], x[small][..., None])
     return table
 
 
