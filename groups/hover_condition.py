@@ -166,10 +166,10 @@ class HoverCondition(ConditionGroup):
                     src_indices=np.arange(na),
                     flat_src_indices=True,
                 )
-            if self.options["footprint"]:
-                add_footprint_noise(self, vehicle, condition.name, flying=False)
             # Each rotor's section t/c at every acoustic station (rotor, station).
             thickness = [vehicle.lift_rotors[i].thickness_to_chord for i in self.active_rotors]
             self.set_input_defaults(
                 "lift_thickness_to_chord", np.repeat(np.array(thickness)[:, None], nrad, axis=1)
             )
+        if self.options["footprint"]:  # the departure's noise at the footprint's observers
+            add_footprint_noise(self, vehicle, condition.name, flying=False)
