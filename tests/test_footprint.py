@@ -265,11 +265,11 @@ def test_footprint_rows_are_declared_and_sum_the_departure(footprint_model):
 @pytest.mark.integration
 def test_footprint_derivatives_match_complex_step(footprint_model):
     # The footprint rows' adjoint totals against complex step through the whole model, for the
-    # design variables that reach them along every path: the lift rotors' hover speeds, the
-    # pusher's transition speeds, the transition pitch (the observers' directions) and the
-    # rotor radii (run_scripts/verify_derivatives.py --vehicle checks every column).
+    # design variables that reach them along both kinds of path: the lift rotors' hover speeds
+    # (the hover's rotor state) and the transition pitch (the transition's rotor state and the
+    # observers' directions); run_scripts/verify_derivatives.py --vehicle checks every column.
     prob = footprint_model
-    wrt = ["hover_lift_rpm", "transition_pusher_rpm", "transition_pitch", "rotor_radius"]
+    wrt = ["hover_lift_rpm", "transition_pitch"]
     data = prob.check_totals(
         of=["footprint_sel_max", "footprint_lamax_max"],
         wrt=wrt,
