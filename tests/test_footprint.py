@@ -302,3 +302,25 @@ def test_footprint_rows_are_shown_in_dba(name):
     from lpc_mdo.post.tables import display_units
 
     assert display_units({"units": None, "name": name}) == "dBA"
+
+
+@pytest.mark.integration
+def test_a_pusher_of_another_hub_ratio_is_heard_in_its_own_evaluation():
+    # Lift rotors and pusher of different hub radius ratios cannot share the acoustic stations:
+    # two noise evaluations per transition point, their levels added as energies.
+    from lpc_mdo.groups.lpc import LPCGroup
+
+    data = read_vehicle_file()
+    data["pusher"]["hub_radius_ratio"] = 0.15
+    data["noise_footprint"] = {**FOOTPRINT, "track_positions": [0.0, 1000.0]}
+    vehicle = vehicle_from_dict(data)
+    departure = [c.name for c in vehicle.conditions if c.kind in ("hover", "transition")]
+    prob = om.Problem(reports=False)
+    prob.model = LPCGroup(vehicle=vehicle, conditions=departure)
+    prob.setup()
+    prob.run_model()
+    lift = prob.get_val("transition_2.footprint_noise_1.total_spl_a")
+    pusher = prob.get_val("transition_2.footprint_noise_2.total_spl_a")
+    both = prob.get_val("transition_2.footprint_spl_a")
+    np.testing.assert_allclose(both, 10.0 * np.log10(10 ** (lift / 10) + 10 ** (pusher / 10)))
+    assert np.all(np.isfinite(prob.get_val("footprint_sel")))
