@@ -2,7 +2,7 @@
 
 Each condition of the departure (lpc_mdo.vehicle.footprint_path: the vertiport hover, then the
 transition points) hears its own legs with :func:`add_footprint_noise`: its rotors, in their
-trimmed state, at every observer from the quadrature points of each leg. :class:`FootprintGroup`, at the
+trimmed state, at every observer from each leg's quadrature points. :class:`FootprintGroup`, at the
 vehicle level, adds up the exposure of every observer over the path and the smooth maxima the
 constraint kind ``noise_footprint`` bounds (docs theory/acoustics 'Noise footprint').
 """

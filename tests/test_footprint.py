@@ -97,12 +97,14 @@ def test_footprint_table_is_checked(changes, match):
         footprint_vehicle(**changes)
 
 
-def test_an_observer_in_the_near_field_is_a_named_error():
+@pytest.mark.parametrize("height", [1.2, 10.0])
+def test_an_observer_in_the_near_field_is_a_named_error(height):
+    # 10 m up: the departure flies at 10 m, through a 10 m mast's microphone (distance 0).
     data = read_vehicle_file()
     for c in data["conditions"]:
         if c["kind"] in ("hover", "transition"):
             c["altitude"] = 10.0
-    data["noise_footprint"] = FOOTPRINT
+    data["noise_footprint"] = {**FOOTPRINT, "observer_height": height}
     with pytest.raises(VehicleSpecError, match="noise_footprint.*rotor radii"):
         vehicle_from_dict(data)
 

@@ -198,9 +198,8 @@ def footprint_geometry(vehicle) -> tuple[tuple[PathLeg, ...], list[LegGeometry]]
         )
     legs = departure_legs(vehicle)
     observers = footprint_observers(footprint)
-    geometry = [leg_geometry(leg, observers, footprint.nodes) for leg in legs]
     radius = max(r.radius for r in (*vehicle.lift_rotors, vehicle.pusher))
-    closest = min(float(np.min(np.linalg.norm(g.offset, axis=1))) for g in geometry)
+    closest = min(float(np.min(_distance_to(leg, observers))) for leg in legs)
     if closest < FOOTPRINT_FAR_FIELD_RADII * radius:
         raise VehicleSpecError(
             f"'noise_footprint' has an observer {closest:.1f} m from the departure path: must be "
@@ -208,7 +207,18 @@ def footprint_geometry(vehicle) -> tuple[tuple[PathLeg, ...], list[LegGeometry]]
             f"({FOOTPRINT_FAR_FIELD_RADII * radius:.1f} m) away, where the noise model's "
             "far-field forms hold; fly the departure higher or move the observers"
         )
-    return legs, geometry
+    return legs, [leg_geometry(leg, observers, footprint.nodes) for leg in legs]
+
+
+def _distance_to(leg, observers):
+    """Return each observer's distance to the closest point of ``leg`` (m)."""
+    start = np.asarray(leg.start, dtype=float)
+    rel = np.asarray(observers, dtype=float) - start
+    if leg.length == 0.0:
+        return np.linalg.norm(rel, axis=1)
+    along = (np.asarray(leg.end) - start) / leg.length
+    closest = np.clip(rel @ along, 0.0, leg.length)
+    return np.linalg.norm(rel - closest[:, None] * along, axis=1)
 
 
 def departure_points(legs, geometry) -> dict[str, LegGeometry]:
