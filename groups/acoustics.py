@@ -53,8 +53,9 @@ class RotorNoiseGroup(om.Group):
 
     ``observer_position`` (ObserverPositionComp; only if observer_input = 'relative')
     -> ``geometry`` (ObserverGeometryComp: S, z, Y, Doppler r1, observer azimuth, speeds)
-    -> [``hover_loads`` (HoverLoadDistributionComp; only if load_input = 'totals')]
-    -> ``fourier`` (LoadFourierComp, eqs. 19-20) -> [``sears`` (SearsGustLoadsComp)]
+    -> ``blade_loads``, once per rotor whoever hears it: [``hover_loads``
+    (HoverLoadDistributionComp; only if load_input = 'totals')] -> ``fourier``
+    (LoadFourierComp, eqs. 19-20) -> [``sears`` (SearsGustLoadsComp)]
     -> ``loading`` (LowsonLoadingNoiseComp, eq. 21) · ``thickness`` (BarryMagliozziThicknessComp)
     -> ``tonal_absorption`` (AtmosphericAbsorptionComp at each harmonic) -> ``tonal_propagation``
     (AbsorptionLossComp: ISO 9613-1 absorption over the hub-observer path)

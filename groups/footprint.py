@@ -15,6 +15,7 @@ from lpc_mdo.components.acoustics.path_observer import PathObserverComp
 from lpc_mdo.components.ks import KSComp
 from lpc_mdo.components.rotor_stack import RotorStackComp
 from lpc_mdo.groups.acoustics import RotorNoiseGroup
+from lpc_mdo.vehicle.condition_kinds import num_lift_pairs
 from lpc_mdo.vehicle.footprint_path import (
     departure_points,
     footprint_geometry,
@@ -24,6 +25,7 @@ from lpc_mdo.vehicle.footprint_path import (
 __all__ = [
     "FootprintGroup",
     "add_footprint_noise",
+    "footprint_chord_inputs",
     "footprint_sources",
     "footprint_stations",
     "FOOTPRINT_BANDS",
@@ -68,6 +70,38 @@ def footprint_sources(vehicle, flying):
     return [[lift], [pusher]]
 
 
+def _suffix(k, evaluations):
+    """Return the name suffix of noise evaluation ``k``: none if it is the only one, else _1..."""
+    return "" if len(evaluations) == 1 else f"_{k + 1}"
+
+
+def footprint_chord_inputs(vehicle, flying, num_radial):
+    """
+    Return the blade chords of a departure condition's footprint noise.
+
+    (source, target, src_indices) of the vehicle's ``blade_chord`` (one row per rotor group,
+    ``num_radial`` stations) at the acoustic stations (:func:`footprint_stations`), for each
+    rotor set of each noise evaluation (:func:`footprint_sources`): the stack's input
+    ``footprint_rotors{suffix}.{set}_chord`` of :func:`add_footprint_noise`, as one flat fancy
+    index shaped like the target, for the vehicle-level model to connect.
+    """
+    stations = footprint_stations(num_radial)[None, :]
+    rows = {
+        "lift": np.array([r.pair for r in vehicle.lift_rotors])[:, None],
+        "pusher": np.array([[num_lift_pairs(vehicle.lift_rotors)]]),
+    }
+    evaluations = footprint_sources(vehicle, flying)
+    return tuple(
+        (
+            "blade_chord",
+            f"footprint_rotors{_suffix(k, evaluations)}.{name}_chord",
+            (rows[name] * num_radial + stations,),
+        )
+        for k, sets in enumerate(evaluations)
+        for name, _ in sets
+    )
+
+
 def add_footprint_noise(group, vehicle, condition, flying):
     """
     Add the noise of ``condition``'s legs at the footprint's observers to a condition group.
@@ -80,7 +114,7 @@ def add_footprint_noise(group, vehicle, condition, flying):
     :func:`footprint_stations`. The rotors' state reaches the noise model through
     ``footprint_rotors`` (:class:`~lpc_mdo.components.rotor_stack.RotorStackComp`), whose
     chord inputs ``{set}_chord`` the vehicle-level model connects
-    (:func:`lpc_mdo.vehicle.condition_kinds.footprint_chord_inputs`).
+    (:func:`footprint_chord_inputs`).
     """
     points = departure_points(*footprint_geometry(vehicle))[condition]
     width = len(points.observer)
@@ -94,7 +128,7 @@ def add_footprint_noise(group, vehicle, condition, flying):
     speeds = {"lift": "lift_rotor_rpm", "pusher": "pusher_rpm"}
     evaluations = footprint_sources(vehicle, flying)
     for k, sets in enumerate(evaluations):
-        suffix = "" if len(evaluations) == 1 else f"_{k + 1}"
+        suffix = _suffix(k, evaluations)
         members = [r for _, rotors in sets for r in rotors]
         # The rotors' state through a stack that is also a copy: OpenMDAO 3.x cannot chain the
         # noise group's per-pair indices onto a (1, 3) or row-selecting view of the model's

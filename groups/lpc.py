@@ -18,11 +18,10 @@ from lpc_mdo.components.energy.mission_energy import MissionEnergyComp
 from lpc_mdo.components.gather_across_conditions import GatherComp
 from lpc_mdo.components.ks import KSComp
 from lpc_mdo.groups.condition_kinds import condition_group
-from lpc_mdo.groups.footprint import FootprintGroup, footprint_sources, footprint_stations
+from lpc_mdo.groups.footprint import FootprintGroup, footprint_chord_inputs
 from lpc_mdo.groups.vehicle import VehicleGroup
 from lpc_mdo.vehicle import VehicleSpecError, reference_vehicle
 from lpc_mdo.vehicle.condition_contract import condition_kind
-from lpc_mdo.vehicle.condition_kinds import footprint_chord_inputs
 from lpc_mdo.vehicle.condition_layout import condition_layout
 from lpc_mdo.vehicle.footprint_path import (
     departure_conditions,
@@ -207,9 +206,7 @@ class LPCGroup(om.Group):
         for name in self.footprint_conditions:
             nrad = self._get_subsystem(name).options["num_radial"]
             flying = vehicle.condition(name).kind == "transition"
-            for source, target, src_indices in footprint_chord_inputs(
-                vehicle, footprint_sources(vehicle, flying), footprint_stations(nrad), nrad
-            ):
+            for source, target, src_indices in footprint_chord_inputs(vehicle, flying, nrad):
                 self.connect(
                     source, f"{name}.{target}", src_indices=src_indices, flat_src_indices=True
                 )

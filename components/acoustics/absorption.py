@@ -198,7 +198,7 @@ class AtmosphericAbsorptionComp(om.ExplicitComponent):
         if fixed is None:
             names.append("frequency")
         for name in names:
-            step = max(abs(float(np.max(np.abs(args[name])))), 1.0) * _COMPLEX_STEP
+            step = max(float(np.max(np.abs(args[name]))), 1.0) * _COMPLEX_STEP
             stepped = {**args, name: args[name] + 1j * step}
             rate = np.imag(
                 iso9613_absorption(

@@ -95,31 +95,6 @@ def _pusher_inputs(vehicle):
     )
 
 
-def footprint_chord_inputs(vehicle, evaluations, stations, num_radial):
-    """
-    Return the blade chords of a departure condition's footprint noise.
-
-    (source, target, src_indices) of the vehicle's ``blade_chord`` (one row per rotor group,
-    ``num_radial`` stations) at the acoustic ``stations`` (indices of the rotor model's
-    stations), for each rotor set of each noise evaluation (``evaluations``, from
-    :func:`lpc_mdo.groups.footprint.footprint_sources`): the stack's input
-    ``footprint_rotors{suffix}.{set}_chord`` (lpc_mdo.groups.footprint), as one flat fancy
-    index shaped like the target.
-    """
-    stations = np.asarray(stations)[None, :]
-    rows = {
-        "lift": _rotor_group_rows(vehicle, np.arange(len(vehicle.lift_rotors)))[:, None],
-        "pusher": np.array([[num_lift_pairs(vehicle.lift_rotors)]]),
-    }
-    inputs = []
-    for k, sets in enumerate(evaluations):
-        suffix = "" if len(evaluations) == 1 else f"_{k + 1}"
-        for name, _ in sets:
-            target = f"footprint_rotors{suffix}.{name}_chord"
-            inputs.append(("blade_chord", target, (rows[name] * num_radial + stations,)))
-    return tuple(inputs)
-
-
 def _rows(name, rows):
     """Source indices of the ``rows`` (rotor groups) of a vehicle ``blade_*`` output."""
     return rows if name == "hub_radius" else om.slicer[rows, :]
