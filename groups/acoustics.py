@@ -12,6 +12,7 @@ import openmdao.api as om
 
 from lpc_mdo.components.acoustics.a_weighting import AWeightingComp
 from lpc_mdo.components.acoustics.absorption import AtmosphericAbsorptionComp
+from lpc_mdo.components.acoustics.bpm_broadband import BPMBroadbandComp
 from lpc_mdo.components.acoustics.broadband import GillLeeBroadbandComp
 from lpc_mdo.components.acoustics.common import (
     blade_counts,
@@ -59,7 +60,7 @@ class RotorNoiseGroup(om.Group):
     -> ``loading`` (LowsonLoadingNoiseComp, eq. 21) · ``thickness`` (BarryMagliozziThicknessComp)
     -> ``tonal_absorption`` (AtmosphericAbsorptionComp at each harmonic) -> ``tonal_propagation``
     (AbsorptionLossComp: ISO 9613-1 absorption over the hub-observer path)
-    · ``broadband`` (GillLeeBroadbandComp, eq. 22) -> [``band_absorption``,
+    · ``broadband`` (GillLeeBroadbandComp, eq. 22, or BPMBroadbandComp) -> [``band_absorption``,
     ``broadband_propagation``: spherical spreading and absorption from the reference distance]
     -> ``tonal_weighting``/``broadband_weighting`` (AWeightingComp, docs theory/acoustics
     'A-weighting') -> ``total_a`` and ``total`` (TotalNoiseComp, docs theory/acoustics 'Total
@@ -145,6 +146,10 @@ class RotorNoiseGroup(om.Group):
         +1/-1 per rotor (azimuth convention of the unsteady path).
     lowest_band_frequency : float
         First one-third-octave band centre, Hz (default 12.5).
+    broadband_model : str
+        'gill_lee' (default, the paper's eq. 22) or 'bpm' (Brooks-Pope-Marcolini self-noise of
+        the blade sections, which needs realistic sectional loads: an angle of attack above
+        25 deg is an error).
     edgewise_broadband_correction : bool
         Gill-Lee edgewise adjustment (default True; zero in hover).
     """
@@ -258,6 +263,13 @@ class RotorNoiseGroup(om.Group):
             types=(tuple, list),
             allow_none=True,
             desc="+1/-1 per rotor",
+        )
+        opt.declare(
+            "broadband_model",
+            default="gill_lee",
+            values=("gill_lee", "bpm"),
+            desc="Broadband model: 'gill_lee' (paper eq. 22) or 'bpm' (blade-section BPM "
+            "self-noise, docs theory/acoustics 'BPM broadband model')",
         )
         opt.declare(
             "edgewise_broadband_correction",
@@ -391,16 +403,23 @@ class RotorNoiseGroup(om.Group):
             ),
             promotes=[("absorption_coefficient", "harmonic_absorption_coefficient"), "*"],
         )
+        band_options = {
+            "num_bands": nb,
+            "lowest_band_frequency": opt["lowest_band_frequency"],
+            "reference_distance": opt["broadband_reference_distance"],
+        }
+        if opt["broadband_model"] == "bpm":
+            broadband = BPMBroadbandComp(**common, num_azimuth=naz, **band_options, **radial)
+        else:
+            broadband = GillLeeBroadbandComp(
+                **common,
+                edgewise_correction=opt["edgewise_broadband_correction"],
+                **band_options,
+                **radial,
+            )
         target.add_subsystem(
             "broadband",
-            GillLeeBroadbandComp(
-                **common,
-                num_bands=nb,
-                lowest_band_frequency=opt["lowest_band_frequency"],
-                edgewise_correction=opt["edgewise_broadband_correction"],
-                reference_distance=opt["broadband_reference_distance"],
-                **radial,
-            ),
+            broadband,
             promotes=["*"]
             if opt["broadband_reference_distance"] is None
             else [("broadband_spl", "broadband_source_spl"), "*"],
@@ -463,12 +482,18 @@ class RotorNoiseGroup(om.Group):
         self.set_input_defaults("chord", np.full((nr, nrad), 0.2), units="m")
         self.set_input_defaults("density", SEA_LEVEL_DENSITY, units="kg/m**3")
         self.set_input_defaults("speed_of_sound", SEA_LEVEL_SPEED_OF_SOUND, units="m/s")
-        self.set_input_defaults("thrust", np.full(nr, 5000.0), units="N")
         self.set_input_defaults("hub_position", np.zeros((nr, 3)), units="m")
-        names = {"radius", "rpm", "chord", "density", "speed_of_sound", "thrust", "hub_position"}
-        if opt["load_input"] == "sectional" and opt["loading_path"] != "unsteady":
+        names = {"radius", "rpm", "chord", "density", "speed_of_sound", "hub_position"}
+        bpm = opt["broadband_model"] == "bpm"
+        if opt["load_input"] == "totals" or not bpm:  # the Gill-Lee model takes the thrust
+            self.set_input_defaults("thrust", np.full(nr, 5000.0), units="N")
+            names.add("thrust")
+        if opt["load_input"] == "sectional" and (opt["loading_path"] != "unsteady" or bpm):
             self.set_input_defaults("inflow_angle", np.full((nr, nrad, naz), 0.1), units="rad")
             names.add("inflow_angle")
+        if opt["load_input"] == "sectional" and bpm:
+            self.set_input_defaults("thrust_per_span", np.full((nr, nrad, naz), 100.0), units="N/m")
+            names.add("thrust_per_span")
         return names
 
     def configure(self):

@@ -38,8 +38,9 @@ class ConditionGroup(om.Group):
     ``variables`` as inputs of their names, the outputs its trim rows, constraints, motor sets and
     ``power_output`` name. Options common to every condition: ``vehicle``
     (:class:`~lpc_mdo.vehicle.Vehicle`), ``condition`` (its name in the vehicle file),
-    ``rotor_polar``/``pusher_polar`` (blade-section polars), ``num_radial`` and ``footprint``
-    (the departure's noise at the noise-footprint observers, lpc_mdo.groups.footprint).
+    ``rotor_polar``/``pusher_polar`` (blade-section polars), ``num_radial``, ``broadband_model``
+    (of the hover noise constraint) and ``footprint`` (the departure's noise at the
+    noise-footprint observers, lpc_mdo.groups.footprint).
     """
 
     #: The declaration of the condition's kind (a ConditionKind subclass).
@@ -64,6 +65,13 @@ class ConditionGroup(om.Group):
         )
         self.options.declare(
             "num_radial", default=25, types=int, lower=2, desc="radial stations of the rotor models"
+        )
+        self.options.declare(
+            "broadband_model",
+            default="gill_lee",
+            values=("gill_lee", "bpm"),
+            desc="broadband noise model of the noise constraint: 'gill_lee' (paper eq. 22) or "
+            "'bpm' (blade-section BPM self-noise, docs theory/acoustics 'BPM broadband model')",
         )
         self.options.declare(
             "footprint",

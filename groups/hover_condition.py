@@ -131,6 +131,7 @@ class HoverCondition(ConditionGroup):
                         hub_radius_ratio=rotors[0].hub_radius_ratio,
                         load_input="sectional",
                         rotation_direction=tuple(float(r.spin_direction) for r in rotors),
+                        broadband_model=self.options["broadband_model"],
                     ),
                     promotes_inputs=[
                         ("radius", "lift_radius"),
@@ -154,12 +155,13 @@ class HoverCondition(ConditionGroup):
                     self.set_input_defaults(f"{prefix}observer_{q}", np.array([value]), units=units)
                 for load in ("thrust_per_span", "drag_per_span", "inflow_angle"):
                     self.connect(f"lift_rotors.{load}", f"{name}.{load}", src_indices=reshape)
-                self.connect(
-                    "lift_thrust",
-                    f"{name}.thrust",
-                    src_indices=np.arange(na),
-                    flat_src_indices=True,
-                )
+                if self.options["broadband_model"] == "gill_lee":  # it takes the thrust
+                    self.connect(
+                        "lift_thrust",
+                        f"{name}.thrust",
+                        src_indices=np.arange(na),
+                        flat_src_indices=True,
+                    )
                 self.connect(
                     "lift_rotor_rpm",
                     f"{name}.rpm",

@@ -76,6 +76,11 @@ class LPCGroup(om.Group):
         ``pusher.airfoil``).
     wing_zero_lift_angle : float or None
         Sectional zero-lift angle of the wing airfoil, rad (None: from its table).
+    broadband_model : str or None
+        Broadband noise model of the hover noise constraint: 'gill_lee' (the paper's eq. 22) or
+        'bpm' (blade-section Brooks-Pope-Marcolini self-noise, docs theory/acoustics 'BPM
+        broadband model'; not with a noise footprint). None (default): the vehicle's
+        ``constraints.noise_broadband_model``, else 'gill_lee'.
     ks_rho : float
         KS aggregation parameter of the torque and voltage margins.
     structural_coupling : str
@@ -110,6 +115,15 @@ class LPCGroup(om.Group):
             allow_none=True,
             types=float,
             desc="wing sectional zero-lift angle, rad",
+        )
+        self.options.declare(
+            "broadband_model",
+            default=None,
+            values=(None, "gill_lee", "bpm"),
+            allow_none=True,
+            desc="broadband noise model of the hover noise constraint: 'gill_lee' (the paper's "
+            "eq. 22), 'bpm' (blade-section BPM self-noise) or None (the vehicle's "
+            "constraints.noise_broadband_model, default 'gill_lee')",
         )
         self.options.declare(
             "ks_rho",
@@ -165,6 +179,14 @@ class LPCGroup(om.Group):
         )
 
         self.footprint_conditions = footprint_conditions(vehicle, self.conditions)
+        broadband = self.options["broadband_model"] or (
+            vehicle.constraints.noise_broadband_model or "gill_lee"
+        )
+        if broadband == "bpm" and self.footprint_conditions:
+            raise ValueError(
+                f"{self.msginfo}: broadband_model = 'bpm' does not serve the noise footprint "
+                "(it hears the rotors through their thrust and torque alone): use 'gill_lee'"
+            )
         for condition in self.conditions:
             cls = condition_group(condition.kind)
             kwargs = {
@@ -173,6 +195,7 @@ class LPCGroup(om.Group):
                 "rotor_polar": polar,
                 "pusher_polar": pusher_polar,
                 "footprint": condition.name in self.footprint_conditions,
+                "broadband_model": broadband,
             }
             if _declares(cls, "wing_zero_lift_angle"):
                 kwargs["wing_zero_lift_angle"] = alpha0

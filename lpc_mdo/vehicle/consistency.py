@@ -472,6 +472,13 @@ def _check_limits(parts: dict) -> None:
                 f"be >= {FAR_FIELD_RADII:g} x the largest rotor radius {radius:g} = "
                 f"{FAR_FIELD_RADII * radius:g} (m); the noise model is a far-field one"
             )
+    if limits.noise_broadband_model == "bpm" and parts.get("noise_footprint") is not None:
+        raise VehicleSpecError(
+            "'constraints.noise_broadband_model' = 'bpm' is not allowed with a "
+            "[noise_footprint] table: the footprint hears the rotors through their thrust and "
+            "torque alone, which the BPM model (blade-section angles of attack) cannot use; "
+            "remove the key (the Gill-Lee model) or the footprint"
+        )
     if (
         limits.radius_intersection_definition == "span_fraction"
         and limits.radius_intersection > MAX_RADIUS_SPAN_FRACTION

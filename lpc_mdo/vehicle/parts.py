@@ -61,6 +61,10 @@ AIRFOILS: dict[str, Airfoil] = {
 LIFT_ROTOR_COUNTS = (4, 6, 8, 10, 12)
 #: A condition's ``speed_rule``: its speed as given, or a design variable of the optimizer.
 SPEED_RULES = ("fixed", "optimized")
+#: Broadband noise models of the hover noise level (``constraints.noise_broadband_model``):
+#: the paper's Gill-Lee fit (eq. 22, the default) or the blade-section BPM self-noise (docs
+#: theory/acoustics 'BPM broadband model').
+BROADBAND_MODELS = ("gill_lee", "bpm")
 #: Microphone height of a noise footprint's ground observers when the file gives none (m): the
 #: certification microphone 1.2 m (4 ft) above ground (14 CFR Part 36, Appendix H, H36.109;
 #: ICAO Annex 16 Vol. I, Appendix 2).
@@ -836,6 +840,10 @@ class ConstraintLimits:
     ----------
     max_noise : float
         Hover A-weighted sound pressure level limit (dBA).
+    noise_broadband_model : str or None
+        Broadband model of the hover noise level: ``"gill_lee"`` (the paper's, the default when
+        absent) or ``"bpm"`` (blade-section Brooks-Pope-Marcolini self-noise; not with a
+        ``[noise_footprint]``, whose noise is Gill-Lee's). docs results/broadband compares them.
     min_static_margin : float
         Static margin in cruise, fraction of the MAC (-).
     min_torque_margin : float
@@ -892,6 +900,7 @@ class ConstraintLimits:
 
     # 20-200 dBA: a quiet room to beyond the pain threshold.
     max_noise: float = _param("dBA", ge=20, le=200)
+    noise_broadband_model: str = _param(choices=BROADBAND_MODELS, optional=True)
     min_static_margin: float = _param(gt=-1, lt=1)
     # A torque margin is a fraction of the rated torque: 0-1.
     min_torque_margin: float = _param(ge=0, le=1)
