@@ -32,6 +32,7 @@ from lpc_mdo.components.acoustics.tonal import LowsonLoadingNoiseComp, SearsGust
 from lpc_mdo.components.acoustics.total import TotalNoiseComp
 from lpc_mdo.core.checks import check_integer
 from lpc_mdo.core.constants import SEA_LEVEL_DENSITY, SEA_LEVEL_SPEED_OF_SOUND
+from lpc_mdo.vehicle.parts import BROADBAND_MODELS
 
 __all__ = ["RotorNoiseGroup", "HOVER_NOISE_LIMIT_DBA"]
 
@@ -267,7 +268,7 @@ class RotorNoiseGroup(om.Group):
         opt.declare(
             "broadband_model",
             default="gill_lee",
-            values=("gill_lee", "bpm"),
+            values=BROADBAND_MODELS,
             desc="Broadband model: 'gill_lee' (paper eq. 22) or 'bpm' (blade-section BPM "
             "self-noise, docs theory/acoustics 'BPM broadband model')",
         )

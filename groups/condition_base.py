@@ -26,6 +26,7 @@ import openmdao.api as om
 
 from lpc_mdo.components.aero.polar import LinearQuadraticPolar, Polar
 from lpc_mdo.vehicle.condition_contract import ConditionKind
+from lpc_mdo.vehicle.parts import BROADBAND_MODELS
 
 
 class ConditionGroup(om.Group):
@@ -69,7 +70,7 @@ class ConditionGroup(om.Group):
         self.options.declare(
             "broadband_model",
             default="gill_lee",
-            values=("gill_lee", "bpm"),
+            values=BROADBAND_MODELS,
             desc="broadband noise model of the noise constraint: 'gill_lee' (paper eq. 22) or "
             "'bpm' (blade-section BPM self-noise, docs theory/acoustics 'BPM broadband model')",
         )

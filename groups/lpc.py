@@ -28,6 +28,7 @@ from lpc_mdo.vehicle.footprint_path import (
     departure_points,
     footprint_geometry,
 )
+from lpc_mdo.vehicle.parts import BROADBAND_MODELS
 
 # Torque margin reported for a motor that no included condition loads (a model built with a
 # single OEI case); large, so it never binds.
@@ -119,7 +120,7 @@ class LPCGroup(om.Group):
         self.options.declare(
             "broadband_model",
             default=None,
-            values=(None, "gill_lee", "bpm"),
+            values=(None, *BROADBAND_MODELS),
             allow_none=True,
             desc="broadband noise model of the hover noise constraint: 'gill_lee' (the paper's "
             "eq. 22), 'bpm' (blade-section BPM self-noise) or None (the vehicle's "

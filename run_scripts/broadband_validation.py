@@ -26,7 +26,10 @@ docs results/broadband shows the numbers.
 """
 
 import math
+import os
+import sqlite3
 import sys
+import tempfile
 
 import numpy as np
 
@@ -119,14 +122,13 @@ def uniform_lift_loads(blades, radius, rpm, chord, thrust, density, hub_radius_r
     return t, np.arctan(math.sqrt(ct / 2.0) / rbar)
 
 
-def airfoil(path):
-    """Print the BPM section model against the measured NACA 0012 spectra."""
+def airfoil(data):
+    """Print the BPM section model against the measured NACA 0012 spectra (rows of ``data``)."""
     from lpc_mdo.components.acoustics.airfoil_self_noise import (
         displacement_thickness,
         trailing_edge_noise,
     )
 
-    data = np.loadtxt(path, skiprows=_header_rows(path))
     f, alpha, chord, speed, ds_file, scaled = data.T
     nu = 1.4529e-5  # the data set's kinematic viscosity (its delta*_s column reproduces with it)
     mach = speed / 340.46
@@ -273,7 +275,7 @@ def helicopters(elevations=(10.0, 45.0, 90.0)):
         print(f"  {name:6s} {rpm:6.1f} {thrust_lbf:6d} {measured:4d} {gl:7.1f} {bpm:7.1f}")
 
 
-def blades(case_file, work_dir="."):
+def blades(case_file, work_dir):
     """Print 2 -> 3 blades at equal thrust and tip speed on the reference optimum's rotors."""
     from lpc_mdo.problems import build_analysis_problem
     from lpc_mdo.vehicle import load_vehicle
@@ -327,11 +329,32 @@ def main(argv=None):
         print("usage:" + usage, file=sys.stderr)
         return 2
     if argv[0] == "airfoil" and len(argv) == 2:
-        airfoil(argv[1])
+        try:
+            data = np.loadtxt(argv[1], skiprows=_header_rows(argv[1]), ndmin=2)
+        except (OSError, ValueError) as err:
+            print(f"broadband_validation: cannot read {argv[1]!r}: {err}", file=sys.stderr)
+            return 2
+        if data.shape[1] != 6:
+            print(
+                f"broadband_validation: {argv[1]!r} has {data.shape[1]} columns; the airfoil "
+                "self-noise data set has 6 (frequency, angle, chord, speed, displacement "
+                "thickness, scaled SPL)",
+                file=sys.stderr,
+            )
+            return 2
+        airfoil(data)
     elif argv[0] == "helicopters" and len(argv) == 1:
         helicopters()
     elif argv[0] == "blades" and len(argv) == 2:
-        blades(argv[1])
+        if not os.path.isfile(argv[1]):
+            print(f"broadband_validation: no case file {argv[1]!r}", file=sys.stderr)
+            return 2
+        with tempfile.TemporaryDirectory() as work_dir:  # OpenMDAO's output folder
+            try:
+                blades(argv[1], work_dir)
+            except (ValueError, OSError, sqlite3.DatabaseError) as err:
+                print(f"broadband_validation: {argv[1]!r}: {err}", file=sys.stderr)
+                return 2
     else:
         print("usage:" + usage, file=sys.stderr)
         return 2

@@ -235,3 +235,19 @@ def test_hover_noise_with_the_bpm_model_and_its_derivatives():
         reference = np.asarray(entry["J_fd"])
         scale = max(np.abs(reference).max(), 1e-8)
         assert np.abs(adjoint - reference).max() <= 1e-8 * scale, key
+
+
+def test_validation_script_loads_and_answers_bad_input(tmp_path, capsys):
+    from run_script_loader import load_run_script
+
+    script = load_run_script("broadband_validation")
+    # The helicopters' uniform-lift loads carry the rotor's thrust.
+    t, inflow = script.uniform_lift_loads(5, 9.45, 203.0, np.full(25, 0.46), 80000.0, 1.2)
+    assert 5 * 9.45 * np.sum(np.full(25, 0.8 / 25) * t) == pytest.approx(80000.0)
+    assert np.all(np.diff(inflow) < 0.0)
+    # Bad input is one line and exit status 2, no traceback.
+    (tmp_path / "bad.dat").write_text("1 2 3\n4 5 6\n")
+    assert script.main(["airfoil", str(tmp_path / "bad.dat")]) == 2
+    assert script.main(["blades", str(tmp_path / "none.sql")]) == 2
+    assert script.main(["nothing"]) == 2
+    assert "usage" in capsys.readouterr().err
