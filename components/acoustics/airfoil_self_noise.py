@@ -210,7 +210,19 @@ def trailing_edge_noise(
     ``frequency`` the one-third-octave band centre (Hz). Returns the band's
     10**(SPL/10): pressure side + suction side + separation part (attached flow,
     alpha* <= min(12.5 deg, gamma_0)), or the separation part alone in the stall form
-    (eq. 30: D_l, A evaluated at 3 Re_c).
+    (eq. 30: D_l, A evaluated at 3 Re_c). It is
+    L/r_e**2 (D_h h + D_l l) with h, l of :func:`trailing_edge_parts`.
+    """
+    high, low = trailing_edge_parts(frequency, chord, speed, mach, alpha_deg, nu)
+    return span / distance**2 * (d_high * high + d_low * low)
+
+
+def trailing_edge_parts(frequency, chord, speed, mach, alpha_deg, nu):
+    """
+    Return the trailing-edge noise per unit L/r_e**2 and unit directivity: (h, l).
+
+    h multiplies D_h (the attached-flow sum of eqs. 25-27), l multiplies D_l (the stall form of
+    eq. 30); one of the two is zero.
     """
     reynolds = speed * chord / nu
     dp, ds = displacement_thickness(chord, reynolds, alpha_deg)
@@ -223,23 +235,27 @@ def trailing_edge_noise(
     st1_bar = 0.5 * (st1 + st2)
     st_p = frequency * dp / speed
     st_s = frequency * ds / speed
-    scale = mach**5 * span / distance**2
+    m5 = mach**5
     kk1 = k1(reynolds)
     re_dp = speed * dp / nu
     dk1 = np.where(_re(re_dp) < 5000.0, a * (1.43 * np.log10(re_dp) - 5.29), 0.0 * a)  # eq. 48
     kk2 = k2(reynolds, mach, a)
     gamma0 = 23.43 * mach + 4.651
     stalled = (_re(a) > STALL_ANGLE_DEG) | (_re(a) > _re(gamma0))
-    high, low = scale * d_high, scale * d_low
-    pressure = dp * high * _energy(spectrum_a(st_p / st1, reynolds) + kk1 - 3.0 + dk1)
-    suction = ds * high * _energy(spectrum_a(st_s / st1_bar, reynolds) + kk1 - 3.0)
-    separation = ds * high * _energy(spectrum_b(st_s / st2, reynolds) + kk2)
-    stall = ds * low * _energy(spectrum_a(st_s / st2, 3.0 * reynolds) + kk2)
-    return np.where(stalled, stall, pressure + suction + separation)
+    pressure = dp * _energy(spectrum_a(st_p / st1, reynolds) + kk1 - 3.0 + dk1)
+    suction = ds * _energy(spectrum_a(st_s / st1_bar, reynolds) + kk1 - 3.0)
+    separation = ds * _energy(spectrum_b(st_s / st2, reynolds) + kk2)
+    attached = m5 * (pressure + suction + separation)
+    zero = 0.0 * attached
+    if not np.any(stalled):  # (the stall form's spectrum only where a section has stalled)
+        return attached, zero
+    stall = m5 * ds * _energy(spectrum_a(st_s / st2, 3.0 * reynolds) + kk2)
+    return np.where(stalled, zero, attached), np.where(stalled, stall, zero)
 
 
 def _energy(level):
-    return 10.0 ** (0.1 * level)
+    """10**(level/10), the mean square of a level in dB."""
+    return np.exp(level * (0.1 * np.log(10.0)))
 
 
 def tip_vortex_noise(frequency, chord, mach, alpha_tip_deg, distance, d_high, speed_of_sound):

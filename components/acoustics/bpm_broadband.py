@@ -8,7 +8,7 @@ from lpc_mdo.components.acoustics.airfoil_self_noise import (
     directivity_high,
     directivity_low,
     tip_vortex_noise,
-    trailing_edge_noise,
+    trailing_edge_parts,
 )
 from lpc_mdo.components.acoustics.common import (
     DB_PER_NEPER,
@@ -232,11 +232,12 @@ class BPMBroadbandComp(om.ExplicitComponent):
             )
 
     # ------------------------------------------------------------------ model
-    def _station_energy(self, inputs, check=False):
+    def _elements(self, inputs, check=False):
         """
-        Mean-square pressure over p_ref**2 per rotor, station and band, shape (nr, nrad, nb).
+        Return the blade elements seen from the observer: arrays (nr, nrad, npsi), (nr, nrad, 1).
 
-        The tip vortex is added to the outermost station.
+        shift = 1 - M_r (frequency shift and observer-time weight), chord, speed U, mach,
+        alpha (abs(alpha*), deg), span, r_e, d_h, d_l; and the scalars nu, a0.
         """
         R = inputs["radius"][:, None, None]
         omega = inputs["rpm"][:, None, None] * RPM_TO_RAD_S
@@ -256,16 +257,13 @@ class BPMBroadbandComp(om.ExplicitComponent):
 
         # Station quantities, shape (nr, nrad, 1).
         r = self._rbar[None, :, None] * R
-        span = self._w[None, :, None] * R
         chord = inputs["chord"][:, :, None]
         load = inputs["thrust_per_span"].mean(axis=2)[:, :, None]
         inflow = inputs["inflow_angle"].mean(axis=2)[:, :, None]
         cos_in = np.cos(inflow)
         u0 = omega * r / cos_in
-        cl = load / (cos_in * 0.5 * rho * u0 * u0 * chord)
-        alpha = cl / (2.0 * np.pi)  # rad, from zero lift
+        alpha = load / (cos_in * 0.5 * rho * u0 * u0 * chord) / (2.0 * np.pi)  # rad
         alpha_deg = alpha * (180.0 / np.pi)
-        alpha_abs = np.where(np.real(alpha_deg) < 0.0, -alpha_deg, alpha_deg)
         pitch = inflow + alpha
         cth, sth = np.cos(pitch), np.sin(pitch)
 
@@ -280,7 +278,7 @@ class BPMBroadbandComp(om.ExplicitComponent):
             check_input_range(
                 self,
                 "BPM angle of attack from zero lift alpha* (deg)",
-                alpha_abs,
+                np.abs(np.real(alpha_deg)),
                 upper=MAX_ANGLE_OF_ATTACK_DEG,
                 upper_open=False,
             )
@@ -301,69 +299,113 @@ class BPMBroadbandComp(om.ExplicitComponent):
         # Mach number of the section towards the observer (blade motion and flight).
         d_x = -Y * cphi + r * cpsi  # observer minus section along e_x
         m_r = (omega * r * along + v_e * d_x + v_ax * z) / (a0 * r_e)
-        weight = (1.0 - m_r) / self._cos_psi.size
+        return {
+            "shift": 1.0 - m_r,
+            "chord": chord,
+            "speed": speed,
+            "mach": mach,
+            "alpha": np.where(np.real(alpha_deg) < 0.0, -alpha_deg, alpha_deg),
+            "span": self._w[None, :, None] * R,
+            "r_e": r_e,
+            "d_h": directivity_high(cos_theta, sin2_phi, mach, 0.8 * mach),
+            "d_l": directivity_low(cos_theta, sin2_phi, mach),
+            "nu": nu,
+            "a0": a0,
+        }
 
-        d_h = directivity_high(cos_theta, sin2_phi, mach, 0.8 * mach)
-        d_l = directivity_low(cos_theta, sin2_phi, mach)
-        f = self.band_frequencies[None, None, None, :]
-        shift = (1.0 - m_r)[..., None]
-        expand = lambda x: x[..., None]  # noqa: E731
-        te = trailing_edge_noise(
-            f * shift,
-            expand(chord),
-            expand(speed),
-            expand(mach),
-            expand(alpha_abs),
-            expand(span),
-            expand(r_e),
-            expand(d_h),
-            expand(d_l),
-            nu,
+    def _parts(self, el, **changed):
+        """Return trailing_edge_parts of every element and band, with ``changed`` arguments."""
+        args = {k: el[k][..., None] for k in ("shift", "chord", "speed", "mach", "alpha")}
+        args["nu"] = el["nu"]
+        args.update(changed)
+        f = self.band_frequencies * args.pop("shift")
+        return trailing_edge_parts(f, alpha_deg=args.pop("alpha"), **args)
+
+    def _tip(self, el):
+        """Tip-vortex energy of the outermost station, (nr, nb), summed over the revolution."""
+        tip = {k: el[k][:, -1, :, None] for k in ("shift", "chord", "mach", "alpha", "r_e", "d_h")}
+        energy = tip_vortex_noise(
+            self.band_frequencies * tip["shift"],
+            tip["chord"],
+            tip["mach"],
+            tip["alpha"],
+            tip["r_e"],
+            tip["d_h"],
+            el["a0"],
         )
-        tip = tip_vortex_noise(
-            f * shift[:, -1:],
-            expand(chord[:, -1:]),
-            expand(mach[:, -1:]),
-            expand(alpha_abs[:, -1:]),
-            expand(r_e[:, -1:]),
-            expand(d_h[:, -1:]),
-            a0,
-        )
-        energy = te * expand(weight)
-        tip_energy = tip * expand(weight[:, -1:])
-        out = energy.sum(axis=2)
-        out[:, -1, :] = out[:, -1, :] + tip_energy.sum(axis=2)[:, 0, :]
-        return out * self._blades[:, None, None]
+        return (energy * tip["shift"]).sum(axis=1) / self._cos_psi.size
+
+    def _station_energy(self, el, high, low):
+        """Mean-square pressure over p_ref**2 per rotor, station and band, (nr, nrad, nb)."""
+        geo = (el["span"] / el["r_e"] ** 2 * el["shift"])[..., None] / self._cos_psi.size
+        te = (geo * (el["d_h"][..., None] * high + el["d_l"][..., None] * low)).sum(axis=2)
+        te[:, -1, :] = te[:, -1, :] + self._tip(el)
+        return te * self._blades[:, None, None]
 
     def compute(self, inputs, outputs):
         for name in ("radius", "rpm", "chord", "density", "dynamic_viscosity", "distance"):
             check_input_range(self, name, inputs[name], lower=0.0)
-        energy = self._station_energy(inputs, check=True).sum(axis=1)
+        el = self._elements(inputs, check=True)
+        energy = self._station_energy(el, *self._parts(el)).sum(axis=1)
         outputs["broadband_spl"] = 10.0 * np.log10(energy + SPL_FLOOR)
 
     def compute_partials(self, inputs, partials):
-        """Complex step, one input at a time for all rotors (and all stations) at once."""
+        """
+        Exact partials by complex steps in two stages.
+
+        The elements' quantities are cheap: one complex step per input, for every rotor (and
+        every station) at once. The band spectra h, l of trailing_edge_parts depend on an input
+        only through six of them (shift, chord, speed, Mach number, alpha*, nu): one complex
+        step per quantity, chained. The rest (span, r_e, directivities, the observer-time
+        weight) multiply the spectra, and the tip vortex (one station) is stepped whole.
+        """
         nr, nrad, naz = (self.options[k] for k in ("num_rotors", "num_radial", "num_azimuth"))
         h = 1.0e-30
-        base = self._station_energy(inputs)
-        total = base.sum(axis=1)
+        el = self._elements(inputs)
+        high, low = self._parts(el)
+        total = self._station_energy(el, high, low).sum(axis=1)
         scale = DB_PER_NEPER / (total + SPL_FLOOR)  # d SPL / d energy, (nr, nb)
-        work = {k: np.asarray(v, dtype=complex) for k, v in inputs.items()}
 
-        def perturbed(name):
+        # d(h, l)/d(quantity) for the six quantities the spectra depend on.
+        spectra = {}
+        for key in ("shift", "chord", "speed", "mach", "alpha"):
+            value = el[key][..., None] + 1j * h
+            if key == "shift":
+                value = value + 0.0 * high
+            hi, lo = self._parts(el, **{key: value})
+            spectra[key] = (np.imag(hi) / h, np.imag(lo) / h)
+        hi, lo = self._parts(el, nu=el["nu"] + 1j * h)
+        spectra["nu"] = (np.imag(hi) / h, np.imag(lo) / h)
+
+        geo = (el["span"] / el["r_e"] ** 2 * el["shift"]) / self._cos_psi.size
+        blades = self._blades[:, None, None]
+        work = {k: np.asarray(v, dtype=complex) for k, v in inputs.items()}
+        for name in _ROW_INPUTS + _SHARED_INPUTS + _STATION_INPUTS:
             saved = work[name].copy()
             work[name] = saved + 1j * h
-            out = np.imag(self._station_energy(work)) / h
+            step = self._elements(work)
             work[name] = saved
-            return out
-
-        for name in _ROW_INPUTS + _SHARED_INPUTS:
-            partials["broadband_spl", name] = (perturbed(name).sum(axis=1) * scale).ravel()
-        for name in _STATION_INPUTS:
-            d = perturbed(name) * scale[:, None, :]  # (nr, nrad, nb): d SPL/d(station value)
+            d = {k: np.imag(v) / h for k, v in step.items()}
+            d_high = sum(spectra[k][0] * d[k][..., None] for k in spectra if np.any(d[k]))
+            d_low = sum(spectra[k][1] * d[k][..., None] for k in spectra if np.any(d[k]))
+            d_geo = geo * (
+                d["span"] / el["span"] - 2.0 * d["r_e"] / el["r_e"] + d["shift"] / el["shift"]
+            )
+            dte = d_geo[..., None] * (el["d_h"][..., None] * high + el["d_l"][..., None] * low)
+            dte = dte + geo[..., None] * (
+                d["d_h"][..., None] * high
+                + d["d_l"][..., None] * low
+                + el["d_h"][..., None] * d_high
+                + el["d_l"][..., None] * d_low
+            )
+            d_station = dte.sum(axis=2)
+            d_station[:, -1, :] = d_station[:, -1, :] + np.imag(self._tip(step)) / h
+            d_station = d_station * blades * scale[:, None, :]  # (nr, nrad, nb)
             if name == "chord":
-                partials["broadband_spl", name] = d.transpose(0, 2, 1).ravel()
-            else:
+                partials["broadband_spl", name] = d_station.transpose(0, 2, 1).ravel()
+            elif name in _STATION_INPUTS:
                 # The station's azimuth mean: each load station carries 1/num_azimuth.
-                per = np.repeat(d.transpose(0, 2, 1)[..., None], naz, axis=3) / naz
+                per = np.repeat(d_station.transpose(0, 2, 1)[..., None], naz, axis=3) / naz
                 partials["broadband_spl", name] = per.reshape(nr, -1, nrad * naz).ravel()
+            else:
+                partials["broadband_spl", name] = d_station.sum(axis=1).ravel()
