@@ -272,6 +272,7 @@ def test_the_model_has_physics_options_only():
         "conditions",
         "rotor_polar",
         "wing_zero_lift_angle",
+        "broadband_model",
         "ks_rho",
         "structural_coupling",
         "structural_ks_rho",
