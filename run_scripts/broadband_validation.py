@@ -268,6 +268,17 @@ def helicopters(elevations=(10.0, 45.0, 90.0)):
             level = np.array([results[key, elevation][k][2] for k in rows])
         coef, *_ = np.linalg.lstsq(design, level, rcond=None)
         print(f"  {key:9s} k_T {coef[2]:5.1f}  k_V {coef[3]:5.1f}")
+    every = np.array([
+        [row[0] == "CH-3C", row[0] == "CH-53A", math.log10(row[2]), math.log10(row[1])]
+        for row in HELICOPTER_DATA
+    ], dtype=float)  # fmt: skip
+    levels = np.array([row[3] for row in HELICOPTER_DATA], dtype=float)
+    coef, *_ = np.linalg.lstsq(every, levels, rcond=None)
+    resid = levels - every @ coef
+    variance = (resid @ resid) / (len(levels) - every.shape[1])
+    error = np.sqrt(np.diag(np.linalg.inv(every.T @ every)) * variance)
+    print(f"  measured, all {len(levels)} points: k_T {coef[2]:.1f} +- {error[2]:.1f}  "
+          f"k_V {coef[3]:.1f} +- {error[3]:.1f} (one standard error)")  # fmt: skip
     print("per point (45 deg): rotor, rpm, thrust lbf, measured, Gill-Lee, BPM")
     for k, (name, rpm, thrust_lbf, measured) in enumerate(HELICOPTER_DATA):
         gl = results["gill_lee", elevation][k][2]
