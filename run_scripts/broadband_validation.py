@@ -6,6 +6,7 @@ Usage::
     python run_scripts/broadband_validation.py airfoil airfoil_self_noise.dat
     python run_scripts/broadband_validation.py helicopters
     python run_scripts/broadband_validation.py blades CASE.sql
+    python run_scripts/broadband_validation.py hover CASE.sql [CASE.sql ...]
 
 ``airfoil``: the BPM section model (components/acoustics/airfoil_self_noise.py) against NASA's
 measured one-third-octave spectra of NACA 0012 sections (Brooks, Pope & Marcolini, NASA RP-1218,
@@ -21,6 +22,9 @@ Gill-Lee and BPM rotor models.
 ``blades``: 2 -> 3 blades at equal thrust and tip speed on the reference optimum's hover
 rotors (CASE.sql, e.g. the sequence's full.sql), at the paper's hover observer, with both
 models.
+
+``hover``: each design's hover noise at the paper's observer by both models, and its lift
+rotors' tip speed, blade loading, angle of attack and lift coefficient in hover.
 
 docs results/broadband shows the numbers.
 """
@@ -286,17 +290,60 @@ def helicopters(elevations=(10.0, 45.0, 90.0)):
         print(f"  {name:6s} {rpm:6.1f} {thrust_lbf:6d} {measured:4d} {gl:7.1f} {bpm:7.1f}")
 
 
-def blades(case_file, work_dir):
-    """Print 2 -> 3 blades at equal thrust and tip speed on the reference optimum's rotors."""
+def _evaluated(case_file, work_dir, broadband_model):
+    """Return the reference model at the design of ``case_file``, run with ``broadband_model``."""
     from lpc_mdo.problems import build_analysis_problem
     from lpc_mdo.vehicle import load_vehicle
     from lpc_mdo.warm_start import load_design_variables, start_point
 
     vehicle = load_vehicle(None)
-    prob = build_analysis_problem(vehicle, work_dir=work_dir)
+    prob = build_analysis_problem(
+        vehicle, work_dir=work_dir, design_problem=False, broadband_model=broadband_model
+    )
     case, _ = start_point(case_file, vehicle)
     load_design_variables(prob, case, vehicle)
     prob.run_model()
+    return prob
+
+
+def hover(case_files, work_dir):
+    """Print each design's hover noise by both models and its lift rotors' loading."""
+    for case_file in case_files:
+        levels = {}
+        for model in ("gill_lee", "bpm"):
+            prob = _evaluated(case_file, work_dir, model)
+            levels[model] = prob.get_val("hover.total_spl_a")[0]
+        print(f"{case_file}: W0 {prob.get_val('gross_mass', units='kg')[0]:.2f} kg, battery "
+              f"{prob.get_val('battery_mass', units='kg')[0]:.1f} kg; hover noise at the "
+              f"paper's observer: Gill-Lee {levels['gill_lee']:.2f} dBA, BPM "
+              f"{levels['bpm']:.2f} dBA")  # fmt: skip
+        pairs = len(prob.get_val("hover_lift_rpm"))
+        radius = prob.get_val("hover.noise.radius", units="m")[:pairs]
+        rpm = prob.get_val("hover.noise.rpm", units="rpm")[:pairs]
+        chord = prob.get_val("hover.noise.chord", units="m")[:pairs]
+        t = prob.get_val("hover.noise.thrust_per_span", units="N/m")[:pairs, :, 0]
+        phi = prob.get_val("hover.noise.inflow_angle", units="rad")[:pairs, :, 0]
+        rho = prob.get_val("hover.noise.density", units="kg/m**3")[0]
+        a0 = prob.get_val("hover.noise.speed_of_sound", units="m/s")[0]
+        aoa = np.degrees(prob.get_val("hover.lift_rotors.angle_of_attack", units="rad"))
+        nrad = chord.shape[1]
+        rbar = 0.2 + 0.8 * (np.arange(nrad) + 0.5) / nrad
+        tip = rpm * math.pi / 30.0 * radius
+        speed = tip[:, None] * rbar / np.cos(phi)
+        cl = t / np.cos(phi) / (0.5 * rho * speed**2 * chord)
+        thrust = 2 * radius * np.sum(0.8 / nrad * t, axis=1)
+        ct = thrust / (rho * math.pi * radius**2 * tip**2)
+        sigma = 2 * 0.8 * chord.mean(axis=1) / math.pi
+        k = int(np.argmin(np.abs(rbar - 0.75)))
+        print("  pair  R m     tip m/s  C_T/sigma  mean alpha deg  c_l at 0.75 R (Mach)")
+        for i in range(pairs):
+            print(f"  {i + 1:4d}  {radius[i]:.3f}  {tip[i]:7.1f}  {ct[i] / sigma[i]:9.3f}  "
+                  f"{aoa[i, 0].mean():14.1f}  {cl[i, k]:.2f} ({speed[i, k] / a0:.2f})")  # fmt: skip
+
+
+def blades(case_file, work_dir):
+    """Print 2 -> 3 blades at equal thrust and tip speed on the reference optimum's rotors."""
+    prob = _evaluated(case_file, work_dir, "gill_lee")
     rpm = prob.get_val("hover.noise.rpm", units="rpm")
     chord = prob.get_val("hover.noise.chord", units="m")
     t = prob.get_val("hover.noise.thrust_per_span", units="N/m")
@@ -336,7 +383,7 @@ def main(argv=None):
     """Run the command of ``argv`` (default: the command line); return the exit status."""
     argv = sys.argv[1:] if argv is None else argv
     usage = __doc__.split("Usage::")[1].split("``airfoil``")[0]
-    if not argv or argv[0] not in ("airfoil", "helicopters", "blades"):
+    if not argv or argv[0] not in ("airfoil", "helicopters", "blades", "hover"):
         print("usage:" + usage, file=sys.stderr)
         return 2
     if argv[0] == "airfoil" and len(argv) == 2:
@@ -356,15 +403,22 @@ def main(argv=None):
         airfoil(data)
     elif argv[0] == "helicopters" and len(argv) == 1:
         helicopters()
-    elif argv[0] == "blades" and len(argv) == 2:
-        if not os.path.isfile(argv[1]):
-            print(f"broadband_validation: no case file {argv[1]!r}", file=sys.stderr)
+    elif argv[0] in ("blades", "hover") and len(argv) >= 2:
+        if argv[0] == "blades" and len(argv) != 2:
+            print("usage:" + usage, file=sys.stderr)
             return 2
+        for path in argv[1:]:
+            if not os.path.isfile(path):
+                print(f"broadband_validation: no case file {path!r}", file=sys.stderr)
+                return 2
         with tempfile.TemporaryDirectory() as work_dir:  # OpenMDAO's output folder
             try:
-                blades(argv[1], work_dir)
+                if argv[0] == "blades":
+                    blades(argv[1], work_dir)
+                else:
+                    hover(argv[1:], work_dir)
             except (ValueError, OSError, sqlite3.DatabaseError) as err:
-                print(f"broadband_validation: {argv[1]!r}: {err}", file=sys.stderr)
+                print(f"broadband_validation: {err}", file=sys.stderr)
                 return 2
     else:
         print("usage:" + usage, file=sys.stderr)

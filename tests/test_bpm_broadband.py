@@ -249,5 +249,6 @@ def test_validation_script_loads_and_answers_bad_input(tmp_path, capsys):
     (tmp_path / "bad.dat").write_text("1 2 3\n4 5 6\n")
     assert script.main(["airfoil", str(tmp_path / "bad.dat")]) == 2
     assert script.main(["blades", str(tmp_path / "none.sql")]) == 2
+    assert script.main(["hover", str(tmp_path / "none.sql")]) == 2
     assert script.main(["nothing"]) == 2
     assert "usage" in capsys.readouterr().err
