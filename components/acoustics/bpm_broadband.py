@@ -15,6 +15,7 @@ from lpc_mdo.components.acoustics.common import (
     SPL_FLOOR,
     blade_counts,
     check_input_range,
+    declare_broadband_options,
     declare_radial_options,
     nominal_third_octave_bands,
     radial_quadrature,
@@ -128,13 +129,7 @@ class BPMBroadbandComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare("num_rotors", default=1, types=int, lower=1, desc="Number of rotors")
-        self.options.declare(
-            "num_blades",
-            default=2,
-            types=(int, tuple, list, np.ndarray),
-            desc="Blades per rotor (int or one per rotor)",
-        )
+        declare_broadband_options(self.options)
         self.options.declare(
             "num_azimuth", default=1, types=int, lower=1, desc="Azimuthal load stations"
         )
@@ -144,15 +139,6 @@ class BPMBroadbandComp(om.ExplicitComponent):
             types=int,
             lower=4,
             desc="Blade positions of the revolution average",
-        )
-        self.options.declare(
-            "num_bands", default=38, types=int, lower=1, desc="Number of one-third-octave bands"
-        )
-        self.options.declare(
-            "lowest_band_frequency",
-            default=12.5,
-            types=(int, float),
-            desc="Nominal centre frequency of the first band, Hz",
         )
         self.options.declare(
             "reference_distance",

@@ -6,6 +6,7 @@ import openmdao.api as om
 from lpc_mdo.components.acoustics.common import (
     blade_counts,
     check_input_range,
+    declare_broadband_options,
     declare_radial_options,
     nominal_third_octave_bands,
     radial_quadrature,
@@ -110,22 +111,7 @@ class GillLeeBroadbandComp(om.ExplicitComponent):
     """
 
     def initialize(self):
-        self.options.declare("num_rotors", default=1, types=int, lower=1, desc="Number of rotors")
-        self.options.declare(
-            "num_blades",
-            default=2,
-            types=(int, tuple, list, np.ndarray),
-            desc="Blades per rotor (int or one per rotor)",
-        )
-        self.options.declare(
-            "num_bands", default=38, types=int, lower=1, desc="Number of one-third-octave bands"
-        )
-        self.options.declare(
-            "lowest_band_frequency",
-            default=12.5,
-            types=(int, float),
-            desc="Nominal centre frequency of the first band, Hz",
-        )
+        declare_broadband_options(self.options)
         self.options.declare(
             "edgewise_correction",
             default=True,

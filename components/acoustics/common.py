@@ -96,6 +96,30 @@ def radial_quadrature(num_radial, radial_stations=None, radial_weights=None, hub
     return stations, weights
 
 
+def declare_broadband_options(options):
+    """
+    Declare the options shared by the broadband spectrum components.
+
+    num_rotors, num_blades, num_bands (38 from 12.5 Hz by default) and lowest_band_frequency.
+    """
+    options.declare("num_rotors", default=1, types=int, lower=1, desc="Number of rotors")
+    options.declare(
+        "num_blades",
+        default=2,
+        types=(int, tuple, list, np.ndarray),
+        desc="Blades per rotor (int or one per rotor)",
+    )
+    options.declare(
+        "num_bands", default=38, types=int, lower=1, desc="Number of one-third-octave bands"
+    )
+    options.declare(
+        "lowest_band_frequency",
+        default=12.5,
+        types=(int, float),
+        desc="Nominal centre frequency of the first band, Hz",
+    )
+
+
 def declare_radial_options(options):
     """Declare the radial-station options shared by the blade-integrating components."""
     options.declare("num_radial", default=25, types=int, lower=1, desc="Number of radial stations")
