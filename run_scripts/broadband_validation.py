@@ -107,20 +107,24 @@ def rotor_broadband(model, blades, radius, rpm, chord, thrust_per_span, inflow, 
     return float(prob.get_val("broadband_oaspl")[0]), float(prob.get_val("broadband_oaspl_a")[0])
 
 
-def uniform_lift_loads(blades, radius, rpm, chord, thrust, density, hub_radius_ratio=0.2):
+def uniform_lift_loads(
+    blades, radius, rpm, chord, thrust, density, hub_radius_ratio=0.2, exponent=2.0
+):
     """
     Sectional thrust per span and inflow angle of a hovering blade of uniform lift coefficient.
 
     C_l the same at every station (Leishman's blade-element mean C_l = 6 C_T/sigma for a
     rectangular blade), scaled so that B R sum_i w_i t_i = T; inflow angle from hover momentum
-    theory, phi_i = arctan(lambda/rbar_i), lambda = sqrt(C_T/2).
+    theory, phi_i = arctan(lambda/rbar_i), lambda = sqrt(C_T/2). ``exponent`` n other than 2
+    gives t proportional to c rbar**n instead (C_l proportional to rbar**(n - 2): n < 2 loads
+    the root more), the check of how much the comparison depends on the load shape.
     """
     chord = np.asarray(chord, dtype=float)
     nrad = chord.size
     rbar = hub_radius_ratio + (1.0 - hub_radius_ratio) * (np.arange(nrad) + 0.5) / nrad
     w = np.full(nrad, (1.0 - hub_radius_ratio) / nrad)
     omega = rpm * math.pi / 30.0
-    shape = chord * rbar**2
+    shape = chord * rbar**exponent
     t = thrust / (blades * radius * np.sum(w * shape)) * shape
     ct = thrust / (density * math.pi * radius**2 * (omega * radius) ** 2)
     return t, np.arctan(math.sqrt(ct / 2.0) / rbar)
@@ -189,32 +193,47 @@ def _sum_db(levels):
     return 10.0 * np.log10(np.sum(10.0 ** (np.asarray(levels) / 10.0)))
 
 
-def helicopters(elevations=(10.0, 45.0, 90.0)):
-    """Print the two helicopters' measured broadband levels against both models."""
+def _helicopter_levels(model, elevation, exponent=2.0, nrad=25):
+    """Return (rotor, measured, model level) of each helicopter point (nan: out of range)."""
     import openmdao.api as om
 
-    nrad = 25
-    results = {}
-    for elevation in elevations:
-        for model in ("gill_lee", "bpm"):
-            rows = []
-            for name, rpm, thrust_lbf, measured in HELICOPTER_DATA:
-                diameter, blades, sigma = HELICOPTERS[name]
-                radius = diameter * FT / 2.0
-                chord = np.full(nrad, sigma * math.pi * radius / blades)
-                thrust = thrust_lbf * LBF
-                t, inflow = uniform_lift_loads(
-                    blades, radius, rpm, chord, thrust, HELICOPTER_DENSITY
-                )
-                try:
-                    level, _ = rotor_broadband(
-                        model, blades, radius, rpm, chord, t, inflow,
-                        (HELICOPTER_DISTANCE, elevation), density=HELICOPTER_DENSITY,
-                    )  # fmt: skip
-                except om.AnalysisError:  # outside the model's range
-                    level = math.nan
-                rows.append((name, measured, level))
-            results[model, elevation] = rows
+    rows = []
+    for name, rpm, thrust_lbf, measured in HELICOPTER_DATA:
+        diameter, blades, sigma = HELICOPTERS[name]
+        radius = diameter * FT / 2.0
+        chord = np.full(nrad, sigma * math.pi * radius / blades)
+        t, inflow = uniform_lift_loads(
+            blades, radius, rpm, chord, thrust_lbf * LBF, HELICOPTER_DENSITY, exponent=exponent
+        )
+        try:
+            level, _ = rotor_broadband(
+                model, blades, radius, rpm, chord, t, inflow,
+                (HELICOPTER_DISTANCE, elevation), density=HELICOPTER_DENSITY,
+            )  # fmt: skip
+        except om.AnalysisError:  # outside the model's range
+            level = math.nan
+        rows.append((name, measured, level))
+    return rows
+
+
+def _fit_slopes(levels, rows):
+    """k_T, k_V of SPL = a_rotor + k_T log10 T + k_V log10 V_tip over HELICOPTER_DATA[rows]."""
+    design = np.array([
+        [HELICOPTER_DATA[k][0] == "CH-3C", HELICOPTER_DATA[k][0] == "CH-53A",
+         math.log10(HELICOPTER_DATA[k][2]), math.log10(HELICOPTER_DATA[k][1])]
+        for k in rows
+    ], dtype=float)  # fmt: skip
+    coef, *_ = np.linalg.lstsq(design, np.asarray(levels, dtype=float), rcond=None)
+    return coef[2], coef[3]
+
+
+def helicopters(elevations=(10.0, 45.0, 90.0)):
+    """Print the two helicopters' measured broadband levels against both models."""
+    results = {
+        (model, elevation): _helicopter_levels(model, elevation)
+        for elevation in elevations
+        for model in ("gill_lee", "bpm")
+    }
     print("measured vortex noise of two helicopter rotors at 300 ft (dB) and the models:")
     for elevation in elevations:
         print(f"observer {elevation:.0f} deg below the rotor plane")
@@ -259,19 +278,21 @@ def helicopters(elevations=(10.0, 45.0, 90.0)):
     # Least squares over the points both models hold: SPL = a_rotor + k_T log10 T + k_V log10 V_T
     # (one offset per helicopter): the level's dependence on thrust and tip speed.
     rows = [k for k in range(len(HELICOPTER_DATA)) if keep[k]]
-    design = np.array([
-        [HELICOPTER_DATA[k][0] == "CH-3C", HELICOPTER_DATA[k][0] == "CH-53A",
-         math.log10(HELICOPTER_DATA[k][2]), math.log10(HELICOPTER_DATA[k][1])]
-        for k in rows
-    ], dtype=float)  # fmt: skip
     print("fit SPL = a_rotor + k_T log10 T + k_V log10 V_tip over the points both models hold:")
     for key in ("measured", "gill_lee", "bpm"):
         if key == "measured":
-            level = np.array([HELICOPTER_DATA[k][3] for k in rows], dtype=float)
+            level = [HELICOPTER_DATA[k][3] for k in rows]
         else:
-            level = np.array([results[key, elevation][k][2] for k in rows])
-        coef, *_ = np.linalg.lstsq(design, level, rcond=None)
-        print(f"  {key:9s} k_T {coef[2]:5.1f}  k_V {coef[3]:5.1f}")
+            level = [results[key, elevation][k][2] for k in rows]
+        k_t, k_v = _fit_slopes(level, rows)
+        print(f"  {key:9s} k_T {k_t:5.1f}  k_V {k_v:5.1f}")
+    # The same fit with a root-heavier load shape (thrust per span ~ c r**1.5).
+    line = []
+    for key in ("gill_lee", "bpm"):
+        other = _helicopter_levels(key, elevation, exponent=1.5)
+        k_t, k_v = _fit_slopes([other[k][2] for k in rows], rows)
+        line.append(f"{key} k_T {k_t:5.1f}  k_V {k_v:5.1f}")
+    print("  with thrust per span ~ c r**1.5 instead of c r**2: " + ";  ".join(line))
     every = np.array([
         [row[0] == "CH-3C", row[0] == "CH-53A", math.log10(row[2]), math.log10(row[1])]
         for row in HELICOPTER_DATA
