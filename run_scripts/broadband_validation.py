@@ -37,6 +37,8 @@ import tempfile
 
 import numpy as np
 
+from lpc_mdo.components.acoustics.common import radial_quadrature
+
 FT = 0.3048
 LBF = 4.4482216152605
 
@@ -89,7 +91,7 @@ def rotor_broadband(model, blades, radius, rpm, chord, thrust_per_span, inflow, 
         promotes=["*"],
     )
     prob.setup()
-    w = np.full(nrad, (1.0 - hub_radius_ratio) / nrad)
+    _, w = radial_quadrature(nrad, hub_radius_ratio=hub_radius_ratio)
     prob.set_val("radius", radius, units="m")
     prob.set_val("rpm", rpm, units="rpm")
     prob.set_val("chord", np.reshape(chord, (1, nrad)), units="m")
@@ -120,9 +122,7 @@ def uniform_lift_loads(
     the root more), the check of how much the comparison depends on the load shape.
     """
     chord = np.asarray(chord, dtype=float)
-    nrad = chord.size
-    rbar = hub_radius_ratio + (1.0 - hub_radius_ratio) * (np.arange(nrad) + 0.5) / nrad
-    w = np.full(nrad, (1.0 - hub_radius_ratio) / nrad)
+    rbar, w = radial_quadrature(chord.size, hub_radius_ratio=hub_radius_ratio)
     omega = rpm * math.pi / 30.0
     shape = chord * rbar**exponent
     t = thrust / (blades * radius * np.sum(w * shape)) * shape
@@ -327,6 +327,34 @@ def _evaluated(case_file, work_dir, broadband_model):
     return prob
 
 
+def _hover_rotors(prob):
+    """
+    One lift rotor of each pair in the evaluated model's hover: its state and blade loading.
+
+    Radius, rpm, chord, thrust per span of one blade and inflow angle at the acoustic stations
+    (rbar), the thrust B R sum_i w_i t_i, tip speed and C_T/sigma, sigma = B R sum_i w_i c_i/(pi
+    R**2); blade count and hub from the vehicle.
+    """
+    pairs = len(prob.get_val("hover_lift_rpm"))
+    rotor = prob.vehicle.lift_rotors[0]
+    get = prob.get_val
+    r = {
+        "radius": get("hover.noise.radius", units="m")[:pairs],
+        "rpm": get("hover.noise.rpm", units="rpm")[:pairs],
+        "chord": get("hover.noise.chord", units="m")[:pairs],
+        "load": get("hover.noise.thrust_per_span", units="N/m")[:pairs, :, 0],
+        "inflow": get("hover.noise.inflow_angle", units="rad")[:pairs, :, 0],
+        "density": float(get("hover.noise.density", units="kg/m**3")[0]),
+        "blades": rotor.num_blades,
+    }
+    r["rbar"], w = radial_quadrature(r["chord"].shape[1], hub_radius_ratio=rotor.hub_radius_ratio)
+    r["thrust"] = r["blades"] * r["radius"] * (r["load"] @ w)
+    r["tip"] = r["rpm"] * math.pi / 30.0 * r["radius"]
+    ct = r["thrust"] / (r["density"] * math.pi * r["radius"] ** 2 * r["tip"] ** 2)
+    r["ct_sigma"] = ct / (r["blades"] * (r["chord"] @ w) / (math.pi * r["radius"]))
+    return r
+
+
 def hover(case_files, work_dir):
     """Print each design's hover noise by both models and its lift rotors' loading."""
     for case_file in case_files:
@@ -338,65 +366,48 @@ def hover(case_files, work_dir):
               f"{prob.get_val('battery_mass', units='kg')[0]:.1f} kg; hover noise at the "
               f"paper's observer: Gill-Lee {levels['gill_lee']:.2f} dBA, BPM "
               f"{levels['bpm']:.2f} dBA")  # fmt: skip
-        pairs = len(prob.get_val("hover_lift_rpm"))
-        radius = prob.get_val("hover.noise.radius", units="m")[:pairs]
-        rpm = prob.get_val("hover.noise.rpm", units="rpm")[:pairs]
-        chord = prob.get_val("hover.noise.chord", units="m")[:pairs]
-        t = prob.get_val("hover.noise.thrust_per_span", units="N/m")[:pairs, :, 0]
-        phi = prob.get_val("hover.noise.inflow_angle", units="rad")[:pairs, :, 0]
-        rho = prob.get_val("hover.noise.density", units="kg/m**3")[0]
+        r = _hover_rotors(prob)
         a0 = prob.get_val("hover.noise.speed_of_sound", units="m/s")[0]
         aoa = np.degrees(prob.get_val("hover.lift_rotors.angle_of_attack", units="rad"))
-        nrad = chord.shape[1]
-        rbar = 0.2 + 0.8 * (np.arange(nrad) + 0.5) / nrad
-        tip = rpm * math.pi / 30.0 * radius
-        speed = tip[:, None] * rbar / np.cos(phi)
-        cl = t / np.cos(phi) / (0.5 * rho * speed**2 * chord)
-        thrust = 2 * radius * np.sum(0.8 / nrad * t, axis=1)
-        ct = thrust / (rho * math.pi * radius**2 * tip**2)
-        sigma = 2 * 0.8 * chord.mean(axis=1) / math.pi
-        k = int(np.argmin(np.abs(rbar - 0.75)))
+        phi = r["inflow"]
+        speed = r["tip"][:, None] * r["rbar"] / np.cos(phi)
+        cl = r["load"] / np.cos(phi) / (0.5 * r["density"] * speed**2 * r["chord"])
+        k = int(np.argmin(np.abs(r["rbar"] - 0.75)))
         print("  pair  R m     tip m/s  C_T/sigma  mean alpha deg  c_l at 0.75 R (Mach)")
-        for i in range(pairs):
-            print(f"  {i + 1:4d}  {radius[i]:.3f}  {tip[i]:7.1f}  {ct[i] / sigma[i]:9.3f}  "
-                  f"{aoa[i, 0].mean():14.1f}  {cl[i, k]:.2f} ({speed[i, k] / a0:.2f})")  # fmt: skip
+        for i in range(len(r["tip"])):
+            print(f"  {i + 1:4d}  {r['radius'][i]:.3f}  {r['tip'][i]:7.1f}  "
+                  f"{r['ct_sigma'][i]:9.3f}  {aoa[i, 0].mean():14.1f}  "
+                  f"{cl[i, k]:.2f} ({speed[i, k] / a0:.2f})")  # fmt: skip
 
 
 def blades(case_file, work_dir):
     """Print 2 -> 3 blades at equal thrust and tip speed on the reference optimum's rotors."""
     prob = _evaluated(case_file, work_dir, "gill_lee")
-    rpm = prob.get_val("hover.noise.rpm", units="rpm")
-    chord = prob.get_val("hover.noise.chord", units="m")
-    t = prob.get_val("hover.noise.thrust_per_span", units="N/m")
-    inflow = prob.get_val("hover.noise.inflow_angle", units="rad")
-    radii = prob.get_val("hover.noise.radius", units="m")
-    thrust = prob.get_val("hover.noise.thrust", units="N")
+    r = _hover_rotors(prob)
     print(f"reference optimum: gross mass {prob.get_val('gross_mass')[0]:.2f} kg; paper's hover "
           "observer (100 m, 45 deg below the rotor plane)")  # fmt: skip
     print(f"{'rotor':>5s} {'R m':>6s} {'rpm':>7s} {'T N':>7s} {'CT/s':>6s} {'loading':10s} "
           f"{'model':9s} "
           f"{'B=2 dBA':>8s} {'3, same c':>10s} {'3, same sigma':>14s}")  # fmt: skip
-    density = float(prob.get_val("hover.noise.density", units="kg/m**3")[0])
-    nrad = chord.shape[1]
-    w = np.full(nrad, 0.8 / nrad)
-    for k in (0, 1, 2, 3):  # one rotor of each pair
-        args = (radii[k], rpm[k])
-        omega_r = rpm[k] * math.pi / 30.0 * radii[k]
-        ct = thrust[k] / (density * math.pi * radii[k] ** 2 * omega_r**2)
-        sigma = 2 * np.sum(w * chord[k]) / math.pi
-        # The same rotor at the optimum's loading, and unloaded to C_T/sigma = 0.08, inside the
-        # helicopter data's 0.03-0.11 (thrust scaled, inflow by momentum theory).
-        for label, scale in (("optimum", 1.0), ("C_T/s 0.08", 0.08 / (ct / sigma))):
-            load = t[k, :, 0] * scale
-            phi = np.arctan(np.tan(inflow[k, :, 0]) * math.sqrt(scale))
+    for k in range(len(r["tip"])):  # one rotor of each pair
+        args = (r["radius"][k], r["rpm"][k])
+        chord, ct_sigma = r["chord"][k], r["ct_sigma"][k]
+        # The same rotor at the optimum's loading, and unloaded to C_T/sigma = 0.05, 0.08 and
+        # 0.11, across the helicopter data's 0.03-0.11 (thrust scaled, inflow by momentum theory).
+        loadings = [("optimum", 1.0)] + [
+            (f"C_T/s {target:.2f}", target / ct_sigma) for target in (0.05, 0.08, 0.11)
+        ]
+        for label, scale in loadings:
+            load = r["load"][k] * scale
+            phi = np.arctan(np.tan(r["inflow"][k]) * math.sqrt(scale))
             for model in ("gill_lee", "bpm"):
-                base = rotor_broadband(model, 2, *args, chord[k], load, phi, (100.0, 45.0))[1]
-                same_c = rotor_broadband(model, 3, *args, chord[k], load * 2 / 3, phi,
+                base = rotor_broadband(model, 2, *args, chord, load, phi, (100.0, 45.0))[1]
+                same_c = rotor_broadband(model, 3, *args, chord, load * 2 / 3, phi,
                                          (100.0, 45.0))[1]  # fmt: skip
-                same_s = rotor_broadband(model, 3, *args, chord[k] * 2 / 3, load * 2 / 3, phi,
+                same_s = rotor_broadband(model, 3, *args, chord * 2 / 3, load * 2 / 3, phi,
                                          (100.0, 45.0))[1]  # fmt: skip
-                print(f"{k:5d} {radii[k]:6.3f} {rpm[k]:7.1f} {thrust[k] * scale:7.0f} "
-                      f"{ct * scale / sigma:6.3f} {label:10s} {model:9s} "
+                print(f"{k:5d} {args[0]:6.3f} {args[1]:7.1f} {r['thrust'][k] * scale:7.0f} "
+                      f"{ct_sigma * scale:6.3f} {label:10s} {model:9s} "
                       f"{base:8.2f} {same_c - base:+10.2f} {same_s - base:+14.2f}")  # fmt: skip
 
 
