@@ -321,10 +321,18 @@ class BPMBroadbandComp(om.ExplicitComponent):
         )
         return (energy * tip["shift"]).sum(axis=1) / self._cos_psi.size
 
+    def _weight(self, el):
+        """Return L/r_e**2 times the observer-time weight (1 - M_r)/N of each element."""
+        return el["span"] / el["r_e"] ** 2 * el["shift"] / self._cos_psi.size
+
+    @staticmethod
+    def _directed(el, high, low):
+        """Return D_h h + D_l l of every element and band."""
+        return el["d_h"][..., None] * high + el["d_l"][..., None] * low
+
     def _station_energy(self, el, high, low):
         """Mean-square pressure over p_ref**2 per rotor, station and band, (nr, nrad, nb)."""
-        geo = (el["span"] / el["r_e"] ** 2 * el["shift"])[..., None] / self._cos_psi.size
-        te = (geo * (el["d_h"][..., None] * high + el["d_l"][..., None] * low)).sum(axis=2)
+        te = (self._weight(el)[..., None] * self._directed(el, high, low)).sum(axis=2)
         te[:, -1, :] = te[:, -1, :] + self._tip(el)
         return te * self._blades[:, None, None]
 
@@ -363,7 +371,8 @@ class BPMBroadbandComp(om.ExplicitComponent):
         hi, lo = self._parts(el, nu=el["nu"] + 1j * h)
         spectra["nu"] = (np.imag(hi) / h, np.imag(lo) / h)
 
-        geo = (el["span"] / el["r_e"] ** 2 * el["shift"]) / self._cos_psi.size
+        weight = self._weight(el)
+        directed = self._directed(el, high, low)
         blades = self._blades[:, None, None]
         work = {k: np.asarray(v, dtype=complex) for k, v in inputs.items()}
         for name in _ROW_INPUTS + _SHARED_INPUTS + _STATION_INPUTS:
@@ -374,15 +383,11 @@ class BPMBroadbandComp(om.ExplicitComponent):
             d = {k: np.imag(v) / h for k, v in step.items()}
             d_high = sum(spectra[k][0] * d[k][..., None] for k in spectra if np.any(d[k]))
             d_low = sum(spectra[k][1] * d[k][..., None] for k in spectra if np.any(d[k]))
-            d_geo = geo * (
+            d_weight = weight * (
                 d["span"] / el["span"] - 2.0 * d["r_e"] / el["r_e"] + d["shift"] / el["shift"]
             )
-            dte = d_geo[..., None] * (el["d_h"][..., None] * high + el["d_l"][..., None] * low)
-            dte = dte + geo[..., None] * (
-                d["d_h"][..., None] * high
-                + d["d_l"][..., None] * low
-                + el["d_h"][..., None] * d_high
-                + el["d_l"][..., None] * d_low
+            dte = d_weight[..., None] * directed + weight[..., None] * (
+                self._directed(d, high, low) + self._directed(el, d_high, d_low)
             )
             d_station = dte.sum(axis=2)
             d_station[:, -1, :] = d_station[:, -1, :] + np.imag(self._tip(step)) / h
