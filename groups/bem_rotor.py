@@ -6,8 +6,15 @@ import openmdao.api as om
 from lpc_mdo.components.aero.polar import LinearQuadraticPolar, Polar
 from lpc_mdo.components.geometry.blade import QUADRATURES, SPLINE_STATIONS, BladeGeometryGroup
 from lpc_mdo.components.rotor.bem_inflow import TIP_LOSS_FORMS, BEMInflowComp
+from lpc_mdo.components.ks import KSComp
 from lpc_mdo.components.rotor.bem_loads import BEMLoadsComp, RotorPerformanceComp
+from lpc_mdo.components.rotor.blade_stall import BladeStallRatioComp
 from lpc_mdo.components.rotor.hub_loads import HubLoadsComp, RotorVelocityComp
+
+#: KS parameter of ``blade_stall_ratio_ks``, the smooth maximum of the stations' alpha /
+#: alpha_stall (both stalls): it exceeds the largest ratio by at most ln(2 nr nn nrad) / 200
+#: (0.030 for 8 rotors of 25 stations), on the safe side (paper eq. 7).
+BLADE_STALL_KS_RHO = 200.0
 
 # Options that the `rotors` option can supply, with their values without it.
 _ROTOR_DERIVED = {
@@ -327,4 +334,18 @@ class BEMRotorGroup(RotorGroupBase):
         }
         self.add_subsystem("inflow", BEMInflowComp(**bem), promotes=["*"])
         self.add_subsystem("loads", BEMLoadsComp(**bem), promotes=["*"])
+        if callable(getattr(opts["polar"], "stall_angles", None)):
+            nr, nn, nrad = geo["num_rotors"], opts["num_nodes"], opts["num_radial"]
+            self.add_subsystem(
+                "blade_stall",
+                BladeStallRatioComp(num_rotors=nr, num_nodes=nn, num_radial=nrad,
+                                    polar=opts["polar"]),  # fmt: skip
+                promotes=["*"],
+            )
+            self.add_subsystem(
+                "blade_stall_ks",
+                KSComp(width=2 * nr * nn * nrad, rho=BLADE_STALL_KS_RHO),
+                promotes_inputs=[("g", "blade_stall_ratio")],
+                promotes_outputs=[("KS", "blade_stall_ratio_ks")],
+            )
         return False  # axial model: no in-plane hub loads

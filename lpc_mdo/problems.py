@@ -53,6 +53,7 @@ CONSTRAINT_KINDS = (
     "min_chord",
     "voltage_margin",
     "wing_stall",
+    "blade_stall",
     "noise_footprint",
 )
 #: Finer kinds a subproblem may name instead of 'torque_margin' or 'voltage_margin' (which mean

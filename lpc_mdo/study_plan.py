@@ -400,7 +400,7 @@ STAGES = (
             ("blade_chord_cp", LIFT_GROUPS),
             ("blade_twist_cp", LIFT_GROUPS),
         ),
-        constraint_kinds=("trim", "noise", "tip_mach", "clearance"),
+        constraint_kinds=("trim", "noise", "tip_mach", "clearance", "blade_stall"),
         objective=("electrical_power", 5.0e5),  # W, of the (first) hover condition
         optimizer="SLSQP",
         options={
@@ -439,6 +439,7 @@ STAGES = (
             "pusher_voltage_margin",
             "clearance",
             "wing_stall",
+            "blade_stall",
         ),
         trust_region={"battery_mass": 0.2},  # the reference code's bounds
         optimizer="SLSQP",

@@ -104,8 +104,11 @@ def test_pitt_peters_edgewise_trends_and_shapes():
     # Several operating points broadcast; tilting the disk back (alpha_d > 0: upflow) raises
     # the thrust at fixed rpm, forward tilt lowers it; forward flight gives lambda_c > 0 (more
     # inflow at the rear, Glauert) and an H-force against the motion (negative along e_x).
+    # A blade in attached flow (twist 20 -> 6 deg): the vehicle file's initial blade (30 -> 10
+    # deg) is stalled at its outer stations here (advancing tip M 0.64, where the NACA 0012
+    # stalls at 6 deg), and tilting it back lowers its thrust.
     out = lpc.pitt_peters(
-        **LPC,
+        **dict(LPC, twist_deg=np.linspace(20.0, 6.0, 25)),
         rpm=1200.0,
         edgewise_velocity=30.0,
         disk_angle_deg=[-5.0, 0.0, 5.0],

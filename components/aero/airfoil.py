@@ -63,6 +63,7 @@ import numpy as np
 import openmdao.api as om
 from scipy.optimize import brentq
 
+from .compressible_stall import naca0012_max_lift
 from .hermite import HermiteAxis, tensor_eval
 from .polar import (
     Polar,
@@ -227,6 +228,7 @@ class TablePolar(Polar):
         aspect_ratio=10.0,
         stall_window=3.0 * _DEG,
         pressure=None,
+        max_lift=None,
     ):
         self.name = str(name)
         alpha = np.asarray(alpha, dtype=float)
@@ -247,7 +249,12 @@ class TablePolar(Polar):
         self._alpha_axis = HermiteAxis(alpha)
         self._re_axis = HermiteAxis(reynolds, log=True)
         self._mach_axis = HermiteAxis(mach)
+        self.max_lift = max_lift
         self._find_stall(stall_window)
+        if max_lift is not None:
+            self._cap_stall(max_lift)
+        self._check_stall()
+        self._extrapolation_coefficients()
         self._build_composite()
 
     # ------------------------------------------------------------------------------ construction
@@ -305,7 +312,44 @@ class TablePolar(Polar):
         grid = np.indices(idx.shape[1:])
         self.cl_stall = cl[idx, grid[0][None], grid[1][None]]
         self.cd_stall = cd[idx, grid[0][None], grid[1][None]]
-        eps = self.blend
+        # Half width of each slice's stall blends: ``blend``, or less where a compressibility
+        # stall (_cap_stall) comes within 2 blend of 0 deg.
+        self.slice_blend = np.full(n_r * n_m, self.blend).reshape(n_r, n_m)
+
+    def _cap_stall(self, max_lift):
+        """
+        Move the stall points down to the measured maximum lift ``max_lift(M)`` where the table
+        exceeds it (module docstring step 1; :mod:`~lpc_mdo.components.aero.compressible_stall`).
+
+        In a slice whose table cl at its stall point exceeds c = max_lift(M), the positive stall
+        point becomes the angle where the table's cl (the run-time cubic Hermite in alpha)
+        reaches c, found by bisection to 1e-12 rad, and the negative one where it reaches -c;
+        cl there is c (-c) and cd the table's. The slice's blend half width becomes at most 0.45
+        of the smaller stall angle, so the blends stay on their side of 0 deg.
+        """
+        ceiling = np.asarray(max_lift(self.table_mach), dtype=float)[None, :]  # (1, n_m)
+        a0 = self.table_alpha[int(np.argmin(np.abs(self.table_alpha)))]
+        for side, sign in ((1, 1.0), (0, -1.0)):
+            target = np.broadcast_to(sign * ceiling, self.cl_stall[side].shape)
+            capped = sign * self.cl_stall[side] > sign * target
+            if not capped.any():
+                continue
+            lo = np.full(target.shape, a0)
+            hi = self.alpha_stall[side].copy()
+            for _ in range(60):
+                mid = 0.5 * (lo + hi)
+                below = sign * self._table_at(mid)[0] < sign * target
+                lo, hi = np.where(below, mid, lo), np.where(below, hi, mid)
+            alpha = np.where(capped, 0.5 * (lo + hi), self.alpha_stall[side])
+            cd = self._table_at(alpha)[1]
+            self.alpha_stall[side] = alpha
+            self.cl_stall[side] = np.where(capped, target, self.cl_stall[side])
+            self.cd_stall[side] = np.where(capped, cd, self.cd_stall[side])
+        smallest = np.minimum(-self.alpha_stall[0], self.alpha_stall[1])
+        self.slice_blend = np.minimum(self.blend, 0.45 * smallest)
+
+    def _check_stall(self):
+        eps = self.slice_blend
         if np.any(self.alpha_stall[0] > -2 * eps) or np.any(self.alpha_stall[1] < 2 * eps):
             raise ValueError(
                 f"TablePolar '{self.name}': stall angles (deg) "
@@ -318,6 +362,9 @@ class TablePolar(Polar):
                 f"TablePolar '{self.name}': cl at negative stall >= cl at positive "
                 f"stall; allowed: cl increasing through the attached range."
             )
+
+    def _extrapolation_coefficients(self):
+        cd = self.table_cd
         # Viterna's drag rises to CD_max at 90 deg; a stall drag above it (the rotor table's
         # Korn-Lock wave drag at the Prandtl-Glauert stall lift beyond M 0.8, where the section
         # is far past drag divergence) would make the post-stall and reverse-flow drag fall
@@ -353,7 +400,7 @@ class TablePolar(Polar):
 
     def _composite(self, a):
         """Composite cl, cd and slopes at grid angles a (n,) for every slice: (n, n_r, n_m)."""
-        eps = self.blend
+        eps = self.slice_blend
         n = a.size
         shape = (n,) + self.alpha_stall.shape[1:]
         aa = np.broadcast_to(a[:, None, None], shape)
@@ -903,9 +950,14 @@ def airfoil_table_path(name):
     return Path(str(resources.files("lpc_mdo") / "data" / f"airfoil_{key}.npz"))
 
 
+#: Measured maximum lift against Mach number of the shipped sections that have it: the tables'
+#: stall points move down to it (:mod:`~lpc_mdo.components.aero.compressible_stall`).
+_MEASURED_MAX_LIFT = {"naca0012": naca0012_max_lift}
+
+
 @functools.lru_cache(maxsize=None)
 def _named_polar(key):
-    return TablePolar.from_npz(airfoil_table_path(key))
+    return TablePolar.from_npz(airfoil_table_path(key), max_lift=_MEASURED_MAX_LIFT.get(key))
 
 
 def get_polar(airfoil):

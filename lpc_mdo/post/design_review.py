@@ -1,7 +1,8 @@
 """The design review of a run's final design: each buildability limit at its worst point.
 
 A designer checks an optimum item by item: every motor within its bus voltage and current,
-every rotor's tip Mach inside its limit and inside the polar tables, chords and gauges a shop
+every rotor's tip Mach inside its limit and inside the polar tables, every blade station within
+its stall limit where blade-element momentum solves the rotor, chords and gauges a shop
 can build, no powered lift rotor beyond the advance ratio its inflow model holds to, the lift
 disks clear of each other, the fuselage, the tail and the pusher, no system or gear mass in the
 cabin, every wing section within its stall limit, and the control reserve in hover and every
@@ -20,7 +21,7 @@ from lpc_mdo.components.aero.airfoil import get_polar
 from lpc_mdo.post.tables import MissingVariableError, Table, last_case, open_reader, read_value
 from lpc_mdo.vehicle import reference_vehicle
 from lpc_mdo.vehicle.clearances import rotor_pairs
-from lpc_mdo.vehicle.condition_kinds import wing_stall_limit
+from lpc_mdo.vehicle.condition_kinds import blade_stall_limit, wing_stall_limit
 
 __all__ = ["ReviewItem", "design_review", "design_review_table", "CABIN_EXCLUDED_ITEMS"]
 
@@ -182,6 +183,17 @@ def design_review(source, vehicle=None, case=None):
         limits.max_lift_rotor_advance_ratio,
         "<=",
     )
+    for label, group, output in (
+        ("lift rotors in hover and one-rotor-out hover", hover + oei, "lift_blade_stall_ratio_ks"),
+        ("pusher", pusher_conds, "pusher_blade_stall_ratio_ks"),
+    ):
+        if group:
+            add(
+                f"blade alpha/alpha_stall (KS), {label}",
+                _per_condition(get, group, output, "<="),
+                blade_stall_limit(limits),
+                "<=",
+            )
     margin = np.asarray(get("blade_chord_margin"), dtype=float)
     rotor = int(np.unravel_index(np.argmin(margin), margin.shape)[0])
     add(

@@ -40,6 +40,7 @@ __all__ = [
     "is_wing_load_case",
     "noise_group_name",
     "num_lift_pairs",
+    "blade_stall_limit",
     "wing_stall_limit",
     "wing_stall_speed_fraction",
 ]
@@ -111,6 +112,25 @@ def _pusher_tip_mach(limits):
     """Declare the pusher's helical tip Mach number <= ``max_pusher_tip_mach``."""
     return ConditionConstraint(
         "tip_mach", "pusher_helical_tip_mach", {"upper": limits.max_pusher_tip_mach}
+    )
+
+
+def blade_stall_limit(limits):
+    """
+    Return the upper limit of a rotor's ``blade_stall_ratio_ks``: ``blade_stall_angle_fraction``.
+
+    Every blade station's angle of attack within that fraction of its section's stall angles
+    (docs theory/rotors 'Blade stall limit'); a vehicle file without the key keeps the stations
+    within the stall angles themselves (1), the range of the blade-element model.
+    """
+    fraction = limits.blade_stall_angle_fraction
+    return 1.0 if fraction is None else fraction
+
+
+def _blade_stall(limits, prefix):
+    """Declare the KS of the ``prefix`` rotors' stations' alpha / alpha_stall <= its limit."""
+    return ConditionConstraint(
+        "blade_stall", f"{prefix}_blade_stall_ratio_ks", {"upper": blade_stall_limit(limits)}
     )
 
 
@@ -344,7 +364,7 @@ class HoverKind(ConditionKind):
         if condition.failed_rotor >= 0:
             # Every working rotor turns at its own speed: each one's tip Mach number (in hover
             # the helical and the rotational one are equal).
-            return reserve + (_lift_tip_mach(limits),)
+            return reserve + (_lift_tip_mach(limits), _blade_stall(limits, "lift"))
         active = cls.active_lift_rotors(vehicle, condition)
         pairs = [vehicle.lift_rotors[i].pair for i in active]
         one_per_pair = [pairs.index(p) for p in sorted(set(pairs))]
@@ -365,6 +385,7 @@ class HoverKind(ConditionKind):
                     "lift_tip_mach",
                     {"indices": one_per_pair, "flat_indices": True, "upper": limits.max_tip_mach},
                 ),
+                _blade_stall(limits, "lift"),
             )
         )
 
@@ -418,7 +439,11 @@ class SteadyFlightKind(ConditionKind):
 
     @classmethod
     def constraints(cls, vehicle, condition, bounds):
-        pusher = (_pusher_tip_mach(vehicle.constraints), _wing_stall(vehicle.constraints))
+        pusher = (
+            _pusher_tip_mach(vehicle.constraints),
+            _blade_stall(vehicle.constraints, "pusher"),
+            _wing_stall(vehicle.constraints),
+        )
         if not cls.has_stability(vehicle, condition):
             return pusher
         return pusher + (
@@ -534,6 +559,7 @@ class TransitionKind(ConditionKind):
             ),
             _lift_tip_mach(vehicle.constraints),
             _pusher_tip_mach(vehicle.constraints),
+            _blade_stall(vehicle.constraints, "pusher"),
             _wing_stall(vehicle.constraints),
         )
 

@@ -896,6 +896,11 @@ class ConstraintLimits:
     min_stall_speed_ratio : float
         Least speed over the 1-g stall speed, V/V_S, of every 1-g wing-borne condition
         (transition, steady) (-): their sections keep c_l within kappa c_l,max / ratio^2.
+    blade_stall_angle_fraction : float or None
+        Fraction of its section's stall angles within which every blade station of the rotors
+        solved by blade-element momentum (lift rotors in hover and one-rotor-out hover, the
+        pusher wherever it turns) keeps its angle of attack (-); absent: 1, the stall itself
+        (docs theory/rotors 'Blade stall limit').
     """
 
     # 20-200 dBA: a quiet room to beyond the pain threshold.
@@ -931,6 +936,8 @@ class ConstraintLimits:
     min_control_acceleration: tuple[float, ...] = _param("rad/s^2", ge=0, le=20, shape=(3,))
     # A fraction of the section maximum: above 0 and at most the section maximum itself.
     wing_stall_lift_fraction: float = _param(gt=0, le=1)
+    # A fraction of the stall angle: above 0 and at most the stall itself.
+    blade_stall_angle_fraction: float = _param(gt=0, le=1, optional=True)
     # 1 (flight at the stall speed) to 2 (far beyond any regulation's 1.1-1.3 V_S floors).
     min_stall_speed_ratio: float = _param(ge=1, le=2)
 
