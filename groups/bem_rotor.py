@@ -5,8 +5,8 @@ import openmdao.api as om
 
 from lpc_mdo.components.aero.polar import LinearQuadraticPolar, Polar
 from lpc_mdo.components.geometry.blade import QUADRATURES, SPLINE_STATIONS, BladeGeometryGroup
-from lpc_mdo.components.rotor.bem_inflow import TIP_LOSS_FORMS, BEMInflowComp
 from lpc_mdo.components.ks import KSComp
+from lpc_mdo.components.rotor.bem_inflow import TIP_LOSS_FORMS, BEMInflowComp
 from lpc_mdo.components.rotor.bem_loads import BEMLoadsComp, RotorPerformanceComp
 from lpc_mdo.components.rotor.blade_stall import BladeStallRatioComp
 from lpc_mdo.components.rotor.hub_loads import HubLoadsComp, RotorVelocityComp
@@ -284,6 +284,9 @@ class BEMRotorGroup(RotorGroupBase):
     inflow_angle : (num_rotors, num_nodes, num_radial), rad
     thrust_per_span, drag_per_span, angle_of_attack : (num_rotors, num_nodes, num_radial)
     thrust, torque : (num_rotors, num_nodes), N, N*m
+    blade_stall_ratio : (1, 2 num_rotors num_nodes num_radial); blade_stall_ratio_ks : (1,)
+        Every station's alpha over its section's stall angles (positive, then negative) and
+        their KS maximum (BladeStallRatioComp; docs theory/rotors 'Blade stall limit').
     power, thrust_coefficient, power_coefficient, advance_ratio, efficiency, figure_of_merit,
     tip_mach, helical_tip_mach : (num_rotors, num_nodes)
     force, moment : (num_rotors, num_nodes, 3); total_force, total_moment : (num_nodes, 3)
@@ -334,18 +337,16 @@ class BEMRotorGroup(RotorGroupBase):
         }
         self.add_subsystem("inflow", BEMInflowComp(**bem), promotes=["*"])
         self.add_subsystem("loads", BEMLoadsComp(**bem), promotes=["*"])
-        if callable(getattr(opts["polar"], "stall_angles", None)):
-            nr, nn, nrad = geo["num_rotors"], opts["num_nodes"], opts["num_radial"]
-            self.add_subsystem(
-                "blade_stall",
-                BladeStallRatioComp(num_rotors=nr, num_nodes=nn, num_radial=nrad,
-                                    polar=opts["polar"]),  # fmt: skip
-                promotes=["*"],
-            )
-            self.add_subsystem(
-                "blade_stall_ks",
-                KSComp(width=2 * nr * nn * nrad, rho=BLADE_STALL_KS_RHO),
-                promotes_inputs=[("g", "blade_stall_ratio")],
-                promotes_outputs=[("KS", "blade_stall_ratio_ks")],
-            )
+        nr, nn, nrad = geo["num_rotors"], opts["num_nodes"], opts["num_radial"]
+        self.add_subsystem(
+            "blade_stall",
+            BladeStallRatioComp(num_rotors=nr, num_nodes=nn, num_radial=nrad, polar=opts["polar"]),
+            promotes=["*"],
+        )
+        self.add_subsystem(
+            "blade_stall_ks",
+            KSComp(width=2 * nr * nn * nrad, rho=BLADE_STALL_KS_RHO),
+            promotes_inputs=[("g", "blade_stall_ratio")],
+            promotes_outputs=[("KS", "blade_stall_ratio_ks")],
+        )
         return False  # axial model: no in-plane hub loads

@@ -211,11 +211,7 @@ def add_lift_rotors(group, vehicle, rotors, speed_groups, num_groups, edgewise, 
             ("total_force", "lift_force"),
             ("total_moment", "lift_moment"),
             *([("edgewise_advance_ratio", "lift_advance_ratio")] if edgewise else []),
-            *(
-                [("blade_stall_ratio_ks", "lift_blade_stall_ratio_ks")]
-                if has_blade_stall(rotor_cls, opts["rotor_polar"])
-                else []
-            ),
+            *([] if edgewise else [("blade_stall_ratio_ks", "lift_blade_stall_ratio_ks")]),
         ],
     )
     one_factorization(lift_rotors)
@@ -224,15 +220,6 @@ def add_lift_rotors(group, vehicle, rotors, speed_groups, num_groups, edgewise, 
     group.set_input_defaults(
         "lift_hub_position", np.array([r.hub_position for r in rotors]), units="m"
     )
-
-
-def has_blade_stall(rotor_cls, polar):
-    """Whether a rotor group of ``rotor_cls`` with ``polar`` gives ``blade_stall_ratio_ks``.
-
-    The BEM rotors do whenever their polar gives stall angles (a TablePolar); the edgewise
-    (Pitt–Peters) rotors do not (docs theory/rotors 'Blade stall limit').
-    """
-    return rotor_cls is BEMRotorGroup and callable(getattr(polar, "stall_angles", None))
 
 
 def add_pusher(group, vehicle):
@@ -267,11 +254,7 @@ def add_pusher(group, vehicle):
             ("helical_tip_mach", "pusher_helical_tip_mach"),
             ("total_force", "pusher_force"),
             ("total_moment", "pusher_moment"),
-            *(
-                [("blade_stall_ratio_ks", "pusher_blade_stall_ratio_ks")]
-                if has_blade_stall(BEMRotorGroup, polar)
-                else []
-            ),
+            ("blade_stall_ratio_ks", "pusher_blade_stall_ratio_ks"),
         ],
     )
     one_factorization(pusher_rotor)

@@ -32,8 +32,8 @@ def test_analyze_reference_vehicle_is_trimmed(tmp_path, capsys):
     text = capsys.readouterr().out
     assert "(initial design, trimmed: each condition by its rotor speeds" in text
     assert (
-        "15 design conditions, 182 design variables, 88 constraints of 320 rows "
-        "(260 nonlinear, 60 linear bounds)"
+        "15 design conditions, 182 design variables, 101 constraints of 333 rows "
+        "(273 nonlinear, 60 linear bounds)"
     ) in text
     assert "gross" in text and "minus_1g" in text
     assert "trim: all 15 conditions trimmed" in text

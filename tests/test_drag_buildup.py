@@ -68,8 +68,9 @@ def test_lpc_buildup_against_hand_calculation():
     swet_fus = math.pi * d_eq * 9.144 * (1 - 2 / f_eq) ** (2 / 3) * (1 + 1 / f_eq**2)
     f_b = 4.8768 / 0.3048
     swet_boom = 4 * math.pi * 0.3048 * 4.8768 * (1 - 2 / f_b) ** (2 / 3) * (1 + 1 / f_b**2)
-    # 16 blades, mean chord 0.2 m over 0.8 R = 1.2192 m, t/c 0.12; spinner cone r 0.274, l 0.548.
-    swet_blades = 16 * 2 * 1.024 * 0.2 * 1.2192
+    # 16 blades, mean chord 0.3 m (0.45 -> 0.15 m) over 0.8 R = 1.2192 m, t/c 0.12; spinner
+    # cone r 0.274, l 0.548.
+    swet_blades = 16 * 2 * 1.024 * 0.3 * 1.2192
     swet_spinner = math.pi * 0.274 * math.hypot(0.274, 0.548)
     swet = [
         2 * 19.6 * 1.026,

@@ -91,9 +91,11 @@ def test_full_problem_declares_the_loiter_trim_and_variables(loiter_file):
     # ... and the advance ratios (40), the tip Mach numbers (OEI 28, transition 45,
     # climb/cruise/descent and the loiter's pusher 4), the 20 linear minimum chords, the 9
     # voltage margins and the wing section lift of the 11 wing-borne conditions; the 18
-    # clearances and 10 control reserves in place of the 2 radius intersections.
+    # clearances and 10 control reserves in place of the 2 radius intersections; the blade
+    # stall limits of the 14 BEM rotor groups (hover, 4 OEI, the pusher at 5 transition points,
+    # climb, cruise, descent and the loiter).
     count = sum(m["size"] for m in cons.values())
-    assert count == 86 + 2 + 40 + 3 + 40 + 28 + 45 + 4 + 20 + 9 + 11 + 18 + 10 - 2 + 1  # W_dg
+    assert count == 86 + 2 + 40 + 3 + 40 + 28 + 45 + 4 + 20 + 9 + 11 + 18 + 10 - 2 + 1 + 14
     # Subproblems select by kind: the loiter is a steady condition of subproblem 4.
     sub4 = build_problem("subproblem_4", vehicle=loiter_file, optimizer="SLSQP")
     assert "loiter" in sub4.model.condition_names

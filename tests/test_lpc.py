@@ -72,12 +72,16 @@ OUR_CONSTRAINTS = {
     # Every wing section's lift within its stall limit, one KS row per wing-borne condition
     # (5 transition points, climb, cruise, descent, +3g, -1g).
     "wing section lift (KS)": 10,
+    # Every blade station's angle within its stall limit, one KS row per BEM rotor group and
+    # condition (lift rotors in hover and 4 OEI cases, the pusher at 5 transition points,
+    # climb, cruise and descent).
+    "blade stall (KS)": 13,
     # W0 - W_dg = 0.
     "design gross mass closure": 1,
 }
-#: Rows of OUR_CONSTRAINTS beyond the paper: 2 + 40 + 76 + 9 + 18 + 10 + 10 + 1 nonlinear and
-#: 40 + 20 linear.
-OUR_COUNT = 2 + 40 + 76 + 9 + 18 + 10 + 10 + 1 + 40 + 20
+#: Rows of OUR_CONSTRAINTS beyond the paper: 2 + 40 + 76 + 9 + 18 + 10 + 10 + 13 + 1 nonlinear
+#: and 40 + 20 linear.
+OUR_COUNT = 2 + 40 + 76 + 9 + 18 + 10 + 10 + 13 + 1 + 40 + 20
 TABLE6_CONSTRAINTS = {
     "hover noise": 1,
     "hover trim": 3,
@@ -143,6 +147,8 @@ def _constraint_group(name, meta):
         return "rotor clearances"
     if name.endswith("wing_stall_ratio_ks"):
         return "wing section lift (KS)"
+    if name.endswith("blade_stall_ratio_ks"):
+        return "blade stall (KS)"
     if name == "hover.total_spl_a":
         return "hover noise"
     if cond.startswith("transition") and name.endswith("lift_rotor_rpm"):

@@ -19,13 +19,14 @@ NASA = {
     "battery_mass": (2200 * LB, 0.15),
     "disk_loading": (13.1 * 47.880259, 0.10),
 }
-#: Our differences as the docs give them (relative), to 0.5 %: none is within its tolerance,
+#: Our differences as the docs give them (relative), to 0.5 %, and whether each is within its
+#: tolerance: the gross mass and the disk loading are, the empty mass and the battery are not,
 #: for the reasons the docs measure (drag area, hover efficiency, weights, battery rule).
 DOCUMENTED = {
-    "gross_mass": -0.162,
-    "empty_mass": -0.189,
-    "battery_mass": -0.473,
-    "disk_loading": -0.164,
+    "gross_mass": (-0.088, True),
+    "empty_mass": (-0.102, False),
+    "battery_mass": (-0.418, False),
+    "disk_loading": (-0.090, True),
 }
 
 
@@ -56,5 +57,6 @@ def test_sized_to_nasas_mission_against_nasas_numbers():
     }
     for name, (nasa, tolerance) in NASA.items():
         difference = ours[name] / nasa - 1.0
-        assert difference == pytest.approx(DOCUMENTED[name], abs=5e-3), name
-        assert not abs(difference) <= tolerance, name  # the docs' account of each
+        documented, within = DOCUMENTED[name]
+        assert difference == pytest.approx(documented, abs=5e-3), name
+        assert (abs(difference) <= tolerance) == within, name  # the docs' account of each

@@ -17,9 +17,11 @@ def test_benchmark_lpc_builds_the_table6_problem():
     cons = prob.model.get_constraints()
     assert sum(m["size"] for m in dvs.values()) == 161 + 21
     # Paper Table 6, the 2 stress rows, the 40 advance ratios, the 76 tip-Mach rows, the 9
-    # voltage margins, the 10 wing section-lift rows and the design gross mass closure.
+    # voltage margins, the 10 wing section-lift rows, the 13 blade-stall rows and the design
+    # gross mass closure.
     count = sum(m["size"] for m in cons.values() if not m["linear"])
-    assert count == 96 + 2 + 40 + 76 + 9 + 10 + 18 + 10 - 2 + 1  # clearances, reserve, no radius
+    # clearances, reserve, no radius intersection
+    assert count == 96 + 2 + 40 + 76 + 9 + 10 + 13 + 18 + 10 - 2 + 1
     assert sum(m["size"] for m in cons.values() if m["linear"]) == 40 + 20  # speeds, chords
 
 

@@ -36,7 +36,7 @@ def test_hover_trims_to_weight_with_equal_rotor_speeds():
 
 
 def test_transition_point_trims_to_the_prescribed_acceleration():
-    # transition_3 starts off in its path-normal acceleration and 0.99 rad/s^2 off in p_dot
+    # transition_3 starts off in its path-normal acceleration and 0.28 rad/s^2 off in p_dot
     # (initial design: the pusher's torque reaction rolls it); 4 lift pair speeds, the roll and
     # yaw differentials, pusher speed, pitch and elevator against the along-path and
     # path-normal accelerations (flight-path axes), p_dot, q_dot, r_dot.
@@ -61,7 +61,7 @@ def test_transition_point_trims_to_the_prescribed_acceleration():
     # 2.3e-3 m/s^2 here (0.02 % of the weight as a force); the issue's criterion is 0.1 %.
     assert abs(acc[1]) < 1e-3 * 9.81
     np.testing.assert_allclose(prob.get_val("transition_3.angular_acceleration"), 0.0, atol=1e-6)
-    assert np.abs(before).max() > 1.0 and abs(roll_before) > 0.5  # it did have to move
+    assert np.abs(before).max() > 1.0 and abs(roll_before) > 0.1  # it did have to move
     # Closed form of the roll balance: about the cg the rolling moments cancel, so about the body
     # origin the lift rotors' and the pusher's (its torque reaction about x; the aerodynamic
     # roll is zero in symmetric flight) sum to the moment of the net side force m v_dot acting

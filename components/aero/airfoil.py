@@ -17,7 +17,10 @@ How a :class:`TablePolar` is built from a table cl, cd(alpha, Re, M):
    ``stall_window`` (3 deg), i.e. the first local maximum of cl that dominates the next 3 deg;
    the negative stall angle is the mirror image (first local minimum going down). If there is
    none, the end of the table is the stall point. (The first dominant extremum, not the global
-   one: NeuralFoil's low-confidence post-stall values can climb again beyond 20 deg.)
+   one: NeuralFoil's low-confidence post-stall values can climb again beyond 20 deg.) With a
+   measured maximum lift against Mach number (``max_lift``; the shipped NACA 0012 has one,
+   :mod:`~lpc_mdo.components.aero.compressible_stall`), a slice whose stall lift exceeds it
+   has its stall points moved in to where the table's cl reaches +-that maximum.
 2. **Composite polar of each slice** on -180..180 deg, exactly as
    :class:`~lpc_mdo.components.aero.polar.LinearQuadraticPolar` does it, with the table in place
    of the linear/quadratic law: the table (cubic Hermite in alpha with 3-point slopes) between
@@ -212,6 +215,10 @@ class TablePolar(Polar):
     pressure : object, optional
         A pressure table (see :mod:`lpc_mdo.components.aero.pressure_table`) attached as
         :attr:`pressure`.
+    max_lift : callable, optional
+        Measured maximum lift coefficient as a function of Mach number (array in, array out;
+        ``inf`` where there is none): the stall points of the slices whose table exceeds it move
+        in to it (:meth:`_cap_stall`).
     """
 
     def __init__(
@@ -318,14 +325,14 @@ class TablePolar(Polar):
 
     def _cap_stall(self, max_lift):
         """
-        Move the stall points down to the measured maximum lift ``max_lift(M)`` where the table
-        exceeds it (module docstring step 1; :mod:`~lpc_mdo.components.aero.compressible_stall`).
+        Move the stall points down to the measured maximum lift ``max_lift(M)``.
 
-        In a slice whose table cl at its stall point exceeds c = max_lift(M), the positive stall
-        point becomes the angle where the table's cl (the run-time cubic Hermite in alpha)
-        reaches c, found by bisection to 1e-12 rad, and the negative one where it reaches -c;
-        cl there is c (-c) and cd the table's. The slice's blend half width becomes at most 0.45
-        of the smaller stall angle, so the blends stay on their side of 0 deg.
+        Module docstring step 1; :mod:`~lpc_mdo.components.aero.compressible_stall`. In a slice
+        whose table cl at its stall point exceeds c = max_lift(M), the positive stall point
+        becomes the angle where the table's cl (the run-time cubic Hermite in alpha) reaches c,
+        found by bisection to 1e-12 rad, and the negative one where it reaches -c; cl there is
+        c (-c) and cd the table's. The slice's blend half width becomes at most 0.45 of the
+        smaller stall angle, so the blends stay on their side of 0 deg.
         """
         ceiling = np.asarray(max_lift(self.table_mach), dtype=float)[None, :]  # (1, n_m)
         a0 = self.table_alpha[int(np.argmin(np.abs(self.table_alpha)))]

@@ -69,5 +69,5 @@ def max_lift_ceiling(mach, onset=NACA0012_STALL_ONSET):
 
 
 def naca0012_max_lift(mach):
-    """The NACA 0012's measured c_l,max at ``mach`` (:func:`max_lift_ceiling` of its data)."""
+    """Return the NACA 0012's measured c_l,max at ``mach`` (:func:`max_lift_ceiling`)."""
     return max_lift_ceiling(mach, NACA0012_STALL_ONSET)

@@ -250,6 +250,16 @@ class LinearQuadraticPolar(Polar):
             self._b2.append(b2)
         self._b_mean = 0.5 * (self._b2[0] + self._b2[1])
 
+    def stall_angles(self, reynolds, mach):
+        """
+        Negative and positive stall angles (rad), the same at every Reynolds and Mach number.
+
+        Returns (alpha_neg, alpha_pos, dneg_dre, dpos_dre, dneg_dm, dpos_dm) of the broadcast
+        shape of the inputs, as :meth:`~lpc_mdo.components.aero.airfoil.TablePolar.stall_angles`.
+        """
+        zero = np.zeros(np.broadcast(np.asarray(reynolds), np.asarray(mach)).shape)
+        return (zero + self.alpha_stall[0], zero + self.alpha_stall[1], zero, zero, zero, zero)
+
     # ---------------------------------------------------------------- the laws and their slopes
 
     def _attached(self, a):

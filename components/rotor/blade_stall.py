@@ -1,4 +1,4 @@
-"""Blade-section angle of attack over the section's stall angle: how close each station is to stall."""
+"""Blade-station angle of attack over the section's stall angle: how close each is to stall."""
 
 import numpy as np
 import openmdao.api as om
@@ -81,8 +81,11 @@ class BladeStallRatioComp(om.ExplicitComponent):
                        desc="Speed of sound")  # fmt: skip
         self.add_input("dynamic_viscosity", val=np.full(nn, 1.7894e-5), units="Pa*s",
                        desc="Dynamic viscosity of air")  # fmt: skip
-        self.add_output("blade_stall_ratio", val=np.zeros((1, 2 * size)),
-                        desc="alpha / alpha_stall+ of every station, then alpha / alpha_stall-")  # fmt: skip
+        self.add_output(
+            "blade_stall_ratio",
+            val=np.zeros((1, 2 * size)),
+            desc="alpha / alpha_stall+ of every station, then alpha / alpha_stall-",
+        )
 
         station = np.arange(size).reshape(shape)
         rows = np.concatenate([station.ravel(), size + station.ravel()])

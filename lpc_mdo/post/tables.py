@@ -405,8 +405,9 @@ def format_constraint_status(rows):
 
     A vector constraint prints the range of its entries; the last line counts the statuses.
     """
+    width = max([38] + [len(r["name"]) + 2 for r in rows])  # the longest name and 2 spaces
     lines = [
-        f"  {'constraint':<38}{'units':<9}{'limit':>22}  {'value':>24}  status",
+        f"  {'constraint':<{width}}{'units':<9}{'limit':>22}  {'value':>24}  status",
     ]
     counts = {"satisfied": 0, "active": 0, "violated": 0}
     for r in rows:
@@ -415,7 +416,8 @@ def format_constraint_status(rows):
         status = status_word(r["active"], r["violated"])
         counts[status.split()[0]] += 1
         lines.append(
-            f"  {r['name']:<38}{display_units(r):<9}{_limit_text(r):>22}  {value:>24}  {status}"
+            f"  {r['name']:<{width}}{display_units(r):<9}{_limit_text(r):>22}  {value:>24}  "
+            f"{status}"
         )
     entries = sum(r["values"].size for r in rows)
     lines.append(
