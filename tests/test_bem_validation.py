@@ -1,6 +1,7 @@
 """BEM against independent numbers: public reference code, momentum theory, wind-tunnel data."""
 
 import dataclasses
+
 import numpy as np
 import openmdao.api as om
 import pytest

@@ -47,10 +47,10 @@ def test_analyze_reference_vehicle_is_trimmed(tmp_path, capsys):
     assert re.search(r"state_of_charge +fraction +>= 0\.2 +0\.\d+ +(satisfied|violated)", text)
     assert re.search(r"cruise\.linear_acceleration +m/s\*\*2 +\= 0 .* active", text)
     assert re.search(r"hover\.lift_tip_mach +Mach +<= ", text)
-    assert re.search(r"88 constraints \(320 rows\): \d+ satisfied, \d+ active, \d+ violated", text)
+    assert re.search(r"101 constraints \(333 rows\): \d+ satisfied, \d+ active, \d+ violated", text)
     # At the end: the violated and the active constraints by name.
-    assert re.search(r"violated \(\d+ of 88 constraints\): hover\.total_spl_a, ", text)
-    active = r"active \(\d+ of 88 constraints\): "
+    assert re.search(r"violated \(\d+ of 101 constraints\): hover\.total_spl_a, ", text)
+    active = r"active \(\d+ of 101 constraints\): "
     assert re.search(active + r"design_gross_mass_closure, hover\.linear_acceleration, ", text)
     # The trimmed variables per condition.
     assert re.search(r"cruise +pusher_rpm [\d.]+ rpm; pitch [\d.]+ deg; elevator", text)
