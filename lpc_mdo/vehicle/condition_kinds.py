@@ -241,7 +241,8 @@ class HoverKind(ConditionKind):
     so a pitched hover is a VehicleSpecError. Hover without a failed rotor declares the noise and
     tip-Mach constraints (tip Mach <= ``max_tip_mach`` per pair, the paper's); an OEI case the tip
     Mach number of each working rotor <= ``max_lift_rotor_tip_mach``; hover and OEI declare the
-    control reserve (:meth:`control_reserve`).
+    control reserve (:meth:`control_reserve`) and the lift rotors' blade stations within their
+    stall limit (:func:`blade_stall_limit`).
     """
 
     field_rules = {
@@ -399,8 +400,9 @@ class SteadyFlightKind(ConditionKind):
     Climb, cruise or descent (kind ``steady``): trim in F_x, F_z, M_y.
 
     The trim variables are pusher speed, pitch and elevator. Every steady condition declares the
-    pusher's helical tip Mach number <= ``max_pusher_tip_mach`` and its wing sections' lift
-    within the 1-g limit (:func:`wing_stall_limit`); the condition named by the
+    pusher's helical tip Mach number <= ``max_pusher_tip_mach``, its blade stations within
+    their stall limit (:func:`blade_stall_limit`) and its wing sections' lift within the 1-g
+    limit (:func:`wing_stall_limit`); the condition named by the
     vehicle's ``mission.cruise_condition`` also declares the static-margin constraint (paper
     eq. 30).
     """
@@ -526,8 +528,9 @@ class TransitionKind(ConditionKind):
         ``constraints.max_lift_rotor_advance_ratio``, the range of the inflow model: no rotor
         outside it trims the vehicle (docs theory/rotors 'Advance-ratio limit'). The helical tip
         Mach number of each lift rotor (at its advancing blade) <= ``max_lift_rotor_tip_mach``
-        and the pusher's <= ``max_pusher_tip_mach``; the wing sections' lift within the 1-g
-        limit (:func:`wing_stall_limit`).
+        and the pusher's <= ``max_pusher_tip_mach``; the pusher's blade stations within their
+        stall limit (:func:`blade_stall_limit`); the wing sections' lift within the 1-g limit
+        (:func:`wing_stall_limit`).
 
         With the roll/yaw differentials a rotor turns at its pair's mean speed +- half of each
         differential, so the design-variable bounds alone let it reach 0 rpm (100 rpm mean -
