@@ -208,9 +208,26 @@ def linearized_sections(comp, inputs, inflow_angle, names):
     return hit[1:]
 
 
-def add_section_inputs(comp, num_rotors, num_nodes, num_radial):
-    """Add the inputs of the sectional equations (SECTION_INPUTS) to a component."""
-    for name, (kind, units, default, desc) in SECTION_INPUTS.items():
+def station_flow(rpm, station_radius, axial_velocity, chord, density, speed_of_sound, viscosity):
+    """
+    In-plane speed, undisturbed resultant U, chord Reynolds number and Mach number of stations.
+
+    V_t = Omega r, U = sqrt(V_x^2 + V_t^2), Re = rho U c / mu, M = U / a (docs theory/rotors
+    'Stations and disk frame'); the arguments broadcast against each other (complex-step safe).
+    """
+    vt = _RPM_TO_RAD_S * rpm * station_radius
+    u = np.sqrt(axial_velocity**2 + vt**2)
+    return vt, u, density * u * chord / viscosity, u / speed_of_sound
+
+
+def add_section_inputs(comp, num_rotors, num_nodes, num_radial, names=None):
+    """
+    Add the inputs of the sectional equations (SECTION_INPUTS) to a component.
+
+    ``names`` selects some of them (default: all).
+    """
+    for name in SECTION_INPUTS if names is None else names:
+        kind, units, default, desc = SECTION_INPUTS[name]
         shape = input_shape(kind, num_rotors, num_nodes, num_radial)
         if default is None:  # station radius: element centres of a unit rotor with a 0.2 hub
             val = np.broadcast_to(0.2 + 0.8 * (np.arange(num_radial) + 0.5) / num_radial, shape)
@@ -306,11 +323,11 @@ class BEMSections:
         c = {name: flat(inputs[name], SECTION_INPUTS[name][0]) for name in SECTION_INPUTS}
         c["half_b"] = 0.5 * flat(np.asarray(num_blades, dtype=float), "rotor")
         c["omega"] = _RPM_TO_RAD_S * c["rpm"]
-        c["vt"] = c["omega"] * c["station_radius"]
-        c["u"] = np.sqrt(c["axial_velocity"] ** 2 + c["vt"] ** 2)
+        c["vt"], c["u"], c["re"], c["mach"] = station_flow(
+            c["rpm"], c["station_radius"], c["axial_velocity"], c["chord"], c["density"],
+            c["speed_of_sound"], c["dynamic_viscosity"],
+        )  # fmt: skip
         c["lam"] = c["axial_velocity"] / c["vt"]
-        c["re"] = c["density"] * c["u"] * c["chord"] / c["dynamic_viscosity"]
-        c["mach"] = c["u"] / c["speed_of_sound"]
         c["sigma"] = c["half_b"] * c["chord"] / (np.pi * c["station_radius"])
         r, big_r, rh = c["station_radius"], c["radius"], c["hub_radius"]
         norm = r if tip_loss_form == "classical" else big_r

@@ -3,7 +3,18 @@
 import numpy as np
 import openmdao.api as om
 
-from .bem_inflow import _RPM_TO_RAD_S
+from .bem_inflow import _RPM_TO_RAD_S, add_section_inputs, station_flow
+
+#: The BEM section inputs that fix a station's Reynolds and Mach numbers.
+_FLOW_INPUTS = (
+    "rpm",
+    "axial_velocity",
+    "station_radius",
+    "chord",
+    "density",
+    "speed_of_sound",
+    "dynamic_viscosity",
+)
 
 
 class BladeStallRatioComp(om.ExplicitComponent):
@@ -70,17 +81,7 @@ class BladeStallRatioComp(om.ExplicitComponent):
         size = nr * nn * nrad
         self.add_input("angle_of_attack", val=np.zeros(shape), units="rad",
                        desc="Blade-element angle of attack")  # fmt: skip
-        self.add_input("rpm", val=np.full((nr, nn), 1000.0), units="rpm", desc="Rotor speed")
-        self.add_input("axial_velocity", val=np.zeros((nr, nn)), units="m/s",
-                       desc="Freestream through the disk along the thrust axis")  # fmt: skip
-        self.add_input("station_radius", val=np.full((nr, nrad), 0.5), units="m",
-                       desc="Radius of the blade-element centres")  # fmt: skip
-        self.add_input("chord", val=np.full((nr, nrad), 0.1), units="m", desc="Blade chord")
-        self.add_input("density", val=np.full(nn, 1.225), units="kg/m**3", desc="Air density")
-        self.add_input("speed_of_sound", val=np.full(nn, 340.294), units="m/s",
-                       desc="Speed of sound")  # fmt: skip
-        self.add_input("dynamic_viscosity", val=np.full(nn, 1.7894e-5), units="Pa*s",
-                       desc="Dynamic viscosity of air")  # fmt: skip
+        add_section_inputs(self, nr, nn, nrad, names=_FLOW_INPUTS)
         self.add_output(
             "blade_stall_ratio",
             val=np.zeros((1, 2 * size)),
@@ -110,10 +111,14 @@ class BladeStallRatioComp(om.ExplicitComponent):
                                   cols=np.concatenate([col, col]))  # fmt: skip
 
     def _flow(self, inputs):
-        """U, Re and M at every station, (nr, nn, nrad)."""
-        vt = _RPM_TO_RAD_S * inputs["rpm"][..., None] * inputs["station_radius"][:, None, :]
+        """V_t, V_x, U, Re and M at every station, (nr, nn, nrad) (bem_inflow.station_flow)."""
         vx = inputs["axial_velocity"][..., None]
-        u = np.sqrt(vx * vx + vt * vt)
+        rho, a, mu = (inputs[n][None, :, None] for n in ("density", "speed_of_sound",
+                                                        "dynamic_viscosity"))  # fmt: skip
+        vt, u, re, mach = station_flow(
+            inputs["rpm"][..., None], inputs["station_radius"][:, None, :], vx,
+            inputs["chord"][:, None, :], rho, a, mu,
+        )  # fmt: skip
         if np.any(np.real(u) <= 0.0):
             raise om.AnalysisError(
                 f"{self.msginfo}: a blade station has no relative flow (rpm "
@@ -121,9 +126,7 @@ class BladeStallRatioComp(om.ExplicitComponent):
                 f"{np.real(inputs['axial_velocity']).tolist()} m/s); its Reynolds and Mach "
                 "numbers, and so its stall angle, are undefined."
             )
-        rho, a, mu = (inputs[n][None, :, None] for n in ("density", "speed_of_sound",
-                                                        "dynamic_viscosity"))  # fmt: skip
-        return vt, vx, u, rho * u * inputs["chord"][:, None, :] / mu, u / a
+        return vt, vx, u, re, mach
 
     def compute(self, inputs, outputs):
         _, _, _, re, mach = self._flow(inputs)
