@@ -82,6 +82,10 @@ class LPCGroup(om.Group):
         'bpm' (blade-section Brooks-Pope-Marcolini self-noise, docs theory/acoustics 'BPM
         broadband model'; not with a noise footprint). None (default): the vehicle's
         ``constraints.noise_broadband_model``, else 'gill_lee'.
+    footprint_levels : bool
+        Build each departure condition's footprint levels even where the model does not have
+        the whole departure, and so no exposure (a single condition's trim problem, whose
+        solve then meets the levels' range as the whole model's run will). Default False.
     ks_rho : float
         KS aggregation parameter of the torque and voltage margins.
     structural_coupling : str
@@ -125,6 +129,13 @@ class LPCGroup(om.Group):
             desc="broadband noise model of the hover noise constraint: 'gill_lee' (the paper's "
             "eq. 22), 'bpm' (blade-section BPM self-noise) or None (the vehicle's "
             "constraints.noise_broadband_model, default 'gill_lee')",
+        )
+        self.options.declare(
+            "footprint_levels",
+            default=False,
+            types=bool,
+            desc="each departure condition's footprint levels even where the model lacks the "
+            "rest of the departure (no exposure then): a trim then meets the levels' range",
         )
         self.options.declare(
             "ks_rho",
@@ -180,6 +191,12 @@ class LPCGroup(om.Group):
         )
 
         self.footprint_conditions = footprint_conditions(vehicle, self.conditions)
+        # The conditions whose footprint levels the model computes: those the exposure hears,
+        # or with footprint_levels every departure condition it has.
+        heard = set(self.footprint_conditions)
+        if self.options["footprint_levels"] and vehicle.noise_footprint is not None:
+            heard |= {c.name for c in departure_conditions(vehicle)}
+        self.heard_conditions = [c.name for c in self.conditions if c.name in heard]
         broadband = self.options["broadband_model"] or (
             vehicle.constraints.noise_broadband_model or "gill_lee"
         )
@@ -195,7 +212,7 @@ class LPCGroup(om.Group):
                 "condition": condition.name,
                 "rotor_polar": polar,
                 "pusher_polar": pusher_polar,
-                "footprint": condition.name in self.footprint_conditions,
+                "footprint": condition.name in self.heard_conditions,
                 "broadband_model": broadband,
             }
             if _declares(cls, "wing_zero_lift_angle"):
@@ -227,14 +244,15 @@ class LPCGroup(om.Group):
                     src_indices=(entry.flat_indices.reshape(v.target_shape),),
                     flat_src_indices=True,
                 )
-        for name in self.footprint_conditions:
+        for name in self.heard_conditions:
             nrad = self._get_subsystem(name).options["num_radial"]
             flying = vehicle.condition(name).kind == "transition"
             for source, target, src_indices in footprint_chord_inputs(vehicle, flying, nrad):
                 self.connect(
                     source, f"{name}.{target}", src_indices=src_indices, flat_src_indices=True
                 )
-            self.connect(f"{name}.footprint_spl_a", f"footprint.exposure.{name}")
+            if name in self.footprint_conditions:
+                self.connect(f"{name}.footprint_spl_a", f"footprint.exposure.{name}")
         for i, condition in enumerate(self._powered):
             power = condition_kind(condition.kind).power_output
             self.connect(f"{condition.name}.{power}", f"power_mux.electrical_power_{i}")

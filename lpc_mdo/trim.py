@@ -158,7 +158,10 @@ def single_condition_problem(prob, condition, name):
 
     The same vehicle and model options (:data:`_INHERITED_OPTIONS`), the condition's trim
     constraints only, no static margin; every design variable and the
-    :data:`COPIED_PARAMETERS` copied from ``prob`` (not run).
+    :data:`COPIED_PARAMETERS` copied from ``prob`` (not run). Where ``prob``'s model computes
+    the condition's footprint levels, this one does too: a trim point outside their range
+    (a lift rotor turning slower than the flight speed) then fails in the solve, which backs
+    off from it, and not afterwards in ``prob``.
     Its OpenMDAO output folder is in the per-process scratch folder.
     """
     vehicle = problem_vehicle(prob)
@@ -171,6 +174,7 @@ def single_condition_problem(prob, condition, name):
         static_margin=False,
         comm=prob.comm,
         work_dir=_scratch_dir(),
+        footprint_levels=condition in getattr(prob.model, "heard_conditions", ()),
         **{k: prob.model.options[k] for k in _INHERITED_OPTIONS},
     )
     copy_design_variables(prob, single, vehicle)

@@ -326,3 +326,29 @@ def test_a_pusher_of_another_hub_ratio_is_heard_in_its_own_evaluation():
     both = prob.get_val("transition_2.footprint_spl_a")
     np.testing.assert_allclose(both, 10.0 * np.log10(10 ** (lift / 10) + 10 ** (pusher / 10)))
     assert np.all(np.isfinite(prob.get_val("footprint_sel")))
+
+
+@pytest.mark.integration
+def test_the_trim_keeps_the_departure_inside_the_footprint_levels_range():
+    # A single condition's trim problem has no exposure (not the whole departure) but does
+    # compute that condition's footprint levels, so that its solve backs off from a point
+    # outside their range. Without them the reference's initial design trimmed transition_2
+    # with a lift pair at 126 rpm, its tip slower than the flight (Gill-Lee: V_tip > 0), and
+    # the whole model then failed on the trimmed design.
+    from lpc_mdo.problems import build_analysis_problem
+    from lpc_mdo.trim import single_condition_problem, trim
+
+    prob = build_analysis_problem(footprint_vehicle(max_lamax=67.0), name="fp_trim")
+    prob.final_setup()
+    single = single_condition_problem(prob, "transition_2", name="fp_trim_single")
+    assert single.model.heard_conditions == ["transition_2"]
+    assert single.model.footprint_conditions == {}
+    result = trim(prob, conditions=["transition_1", "transition_2", "transition_3"], workers=1)
+    assert result.success, result.message
+    prob.run_model()  # the whole model, with the exposure, runs at the trimmed design
+    assert np.isfinite(prob.get_val("footprint_lamax_max")[0])
+    plain = build_analysis_problem(vehicle_from_dict(read_vehicle_file()), name="plain_trim")
+    plain.final_setup()
+    assert (
+        single_condition_problem(plain, "transition_2", "plain_single").model.heard_conditions == []
+    )

@@ -305,12 +305,23 @@ class GillLeeBroadbandComp(om.ExplicitComponent):
         ddelta_dmu = self._edge_slope * (0.5 * t + 0.5) + g * 500.0 * (1.0 - t * t)
         return delta, ddelta_dmu, mu
 
-    def _spectrum(self, inputs, grad):
+    def _spectrum(self, inputs, grad, checked=False):
         v, dv = self._intermediates(inputs, grad)
+        if checked:  # the ranges the spectrum's logarithms and powers need, before them
+            check_input_range(self, "tip speed minus flight speed (V_tip)", v["vtip"], lower=0.0)
+            check_input_range(self, "solidity", v["sigma"], lower=0.0, upper=1.0)
         p, dpb = self._parameters(v, dv)
         f = self.band_frequencies[None, :]
         X = f * p["u"][:, None] - p["xs"][:, None]
         A = X + p["f5"][:, None]
+        if checked:
+            check_input_range(
+                self,
+                "Gill-Lee spectrum variable X (St - f1 log10 C_T - f2 log10 sigma)",
+                X,
+                lower=0.0,
+            )
+            check_input_range(self, "Gill-Lee X + f5", A, lower=0.0)
         Bq = p["f7"][:, None] * X
         f6, f8 = p["f6"][:, None], p["f8"][:, None]
         a_pow = A**f6
@@ -323,13 +334,7 @@ class GillLeeBroadbandComp(om.ExplicitComponent):
     def compute(self, inputs, outputs):
         for name in ("radius", "rpm", "thrust", "chord", "density", "speed_of_sound", "distance"):
             check_input_range(self, name, inputs[name], lower=0.0)
-        v, p, _, X, A, _, _, _, _, _, spl = self._spectrum(inputs, grad=False)
-        check_input_range(self, "tip speed minus flight speed (V_tip)", v["vtip"], lower=0.0)
-        check_input_range(self, "solidity", v["sigma"], lower=0.0, upper=1.0)
-        check_input_range(
-            self, "Gill-Lee spectrum variable X (St - f1 log10 C_T - f2 log10 sigma)", X, lower=0.0
-        )
-        check_input_range(self, "Gill-Lee X + f5", A, lower=0.0)
+        spl = self._spectrum(inputs, grad=False, checked=True)[-1]
         if self.options["edgewise_correction"]:
             spl = spl + self._edgewise(inputs)[0][:, None]
         outputs["broadband_spl"] = spl
