@@ -272,10 +272,12 @@ def test_static_margin_switch():
 
 def test_the_model_has_physics_options_only():
     # The problem (design variables, constraints, objective, subproblems, baseline penalty) is
-    # declared by lpc_mdo.problems; the model's options are its physics and its conditions.
+    # declared by lpc_mdo.problems; the model's options are its physics and its conditions
+    # (footprint_levels: which conditions' footprint levels it computes).
     assert set(LPCGroup().options) - {"assembled_jac_type", "derivs_method", "auto_order"} == {
         "vehicle",
         "conditions",
+        "footprint_levels",
         "rotor_polar",
         "wing_zero_lift_angle",
         "broadband_model",
