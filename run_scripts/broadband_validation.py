@@ -17,11 +17,12 @@ r_e = 1.22 m, observer at 90 deg).
 
 ``helicopters``: the measured broadband (vortex) noise of two helicopter rotors in hover at
 300 ft (CH-3C: 5 blades, solidity 0.078; CH-53A: 6 blades, solidity 0.115), against the
-Gill-Lee and BPM rotor models.
+Gill-Lee and BPM rotor models; and the data's local rise with blade loading, with the 2 -> 3
+blade change it implies.
 
 ``blades``: 2 -> 3 blades at equal thrust and tip speed on the reference optimum's hover
 rotors (CASE.sql, e.g. the sequence's full.sql), at the paper's hover observer, with both
-models.
+models, unweighted (as the helicopter data) and A-weighted.
 
 ``hover``: each design's hover noise at the paper's observer by both models, and its lift
 rotors' tip speed, blade loading, angle of attack and lift coefficient in hover.
@@ -285,7 +286,10 @@ def helicopters(elevations=(10.0, 45.0, 90.0)):
         else:
             level = [results[key, elevation][k][2] for k in rows]
         k_t, k_v = _fit_slopes(level, rows)
-        print(f"  {key:9s} k_T {k_t:5.1f}  k_V {k_v:5.1f}")
+        # C_T/sigma is proportional to T/V_tip**2 on each rotor: at fixed blade loading the
+        # level rises k_V + 2 k_T per decade of tip speed.
+        print(f"  {key:9s} k_T {k_t:5.1f}  k_V {k_v:5.1f}  (at fixed C_T/sigma "
+              f"{k_v + 2.0 * k_t:5.1f})")  # fmt: skip
     # The same fit with a root-heavier load shape (thrust per span ~ c r**1.5).
     line = []
     for key in ("gill_lee", "bpm"):
@@ -304,11 +308,58 @@ def helicopters(elevations=(10.0, 45.0, 90.0)):
     error = np.sqrt(np.diag(np.linalg.inv(every.T @ every)) * variance)
     print(f"  measured, all {len(levels)} points: k_T {coef[2]:.1f} +- {error[2]:.1f}  "
           f"k_V {coef[3]:.1f} +- {error[3]:.1f} (one standard error)")  # fmt: skip
+    print_loading_fit()
     print("per point (45 deg): rotor, rpm, thrust lbf, measured, Gill-Lee, BPM")
     for k, (name, rpm, thrust_lbf, measured) in enumerate(HELICOPTER_DATA):
         gl = results["gill_lee", elevation][k][2]
         bpm = results["bpm", elevation][k][2]
         print(f"  {name:6s} {rpm:6.1f} {thrust_lbf:6d} {measured:4d} {gl:7.1f} {bpm:7.1f}")
+
+
+def loading_fit(levels, reference):
+    """
+    Fit the helicopter levels' local rise with blade loading; return (coefficients, errors).
+
+    Least squares over HELICOPTER_DATA: SPL = a_3C + a_53A + k log10 V_tip + s x + q x**2,
+    x = log10((C_T/sigma)/reference), C_T = T/(rho pi R**2 V_tip**2); coefficients and their
+    standard errors in that order. s is the rise per decade of thrust at fixed rotor and tip
+    speed at C_T/sigma = reference, k the rise per decade of tip speed at fixed blade loading.
+    Also returns the loading range of the data as a third item.
+    """
+    design = []
+    for name, rpm, thrust_lbf, _ in HELICOPTER_DATA:
+        diameter, _, sigma = HELICOPTERS[name]
+        radius = diameter * FT / 2.0
+        tip = rpm * math.pi / 30.0 * radius
+        ct = thrust_lbf * LBF / (HELICOPTER_DENSITY * math.pi * radius**2 * tip**2)
+        x = math.log10(ct / sigma / reference)
+        design.append([name == "CH-3C", name == "CH-53A", math.log10(tip), x, x * x])
+    design, levels = np.array(design, dtype=float), np.asarray(levels, dtype=float)
+    coef, *_ = np.linalg.lstsq(design, levels, rcond=None)
+    resid = levels - design @ coef
+    variance = (resid @ resid) / (len(levels) - design.shape[1])
+    error = np.sqrt(np.diag(np.linalg.inv(design.T @ design)) * variance)
+    loading = reference * 10.0 ** design[:, 3]
+    return coef, error, (loading.min(), loading.max())
+
+
+def print_loading_fit(references=(0.05, 0.08, 0.11, 0.16, 0.22)):
+    """
+    Print the measured level's local rise with blade loading and the 2 -> 3 blade change.
+
+    A third blade of the same chord at equal thrust and tip speed has 1.5 times the blade area
+    and 2/3 of the loading per blade area: (10 - s) log10 1.5 dB, s of :func:`loading_fit`.
+    """
+    measured = [row[3] for row in HELICOPTER_DATA]
+    print("measured level against blade loading: SPL = a_rotor + k log10 V_tip + s x + q x**2, "
+          "x = log10((C_T/sigma)/ref)")  # fmt: skip
+    for ref in references:
+        (_, _, k, s, q), (_, _, dk, ds, dq), span = loading_fit(measured, ref)
+        change = (10.0 - s) * math.log10(1.5)
+        print(f"  ref {ref:.3f} (data {span[0]:.3f}-{span[1]:.3f}): s {s:5.1f} +- {ds:.1f} "
+              f"dB/decade, q {q:5.1f} +- {dq:.1f}, k {k:5.1f} +- {dk:.1f}; 3 blades of the "
+              f"same chord: {change:+.2f} +- {ds * math.log10(1.5):.2f} dB"
+              + ("  (beyond the data)" if ref > span[1] else ""))  # fmt: skip
 
 
 def _evaluated(case_file, work_dir, broadband_model):
@@ -386,8 +437,9 @@ def blades(case_file, work_dir):
     r = _hover_rotors(prob)
     print(f"reference optimum: gross mass {prob.get_val('gross_mass')[0]:.2f} kg; paper's hover "
           "observer (100 m, 45 deg below the rotor plane)")  # fmt: skip
+    print("levels unweighted (dB, as the helicopter data) and A-weighted (dBA)")
     print(f"{'rotor':>5s} {'R m':>6s} {'rpm':>7s} {'T N':>7s} {'CT/s':>6s} {'loading':10s} "
-          f"{'model':9s} "
+          f"{'model':9s} {'B=2 dB':>7s} {'3, same c':>10s} {'3, same sigma':>14s} "
           f"{'B=2 dBA':>8s} {'3, same c':>10s} {'3, same sigma':>14s}")  # fmt: skip
     for k in range(len(r["tip"])):  # one rotor of each pair
         args = (r["radius"][k], r["rpm"][k])
@@ -401,14 +453,16 @@ def blades(case_file, work_dir):
             load = r["load"][k] * scale
             phi = np.arctan(np.tan(r["inflow"][k]) * math.sqrt(scale))
             for model in ("gill_lee", "bpm"):
-                base = rotor_broadband(model, 2, *args, chord, load, phi, (100.0, 45.0))[1]
-                same_c = rotor_broadband(model, 3, *args, chord, load * 2 / 3, phi,
-                                         (100.0, 45.0))[1]  # fmt: skip
+                observer = (100.0, 45.0)
+                base = np.array(rotor_broadband(model, 2, *args, chord, load, phi, observer))
+                same_c = rotor_broadband(model, 3, *args, chord, load * 2 / 3, phi, observer)
                 same_s = rotor_broadband(model, 3, *args, chord * 2 / 3, load * 2 / 3, phi,
-                                         (100.0, 45.0))[1]  # fmt: skip
+                                         observer)  # fmt: skip
+                same_c, same_s = np.array(same_c) - base, np.array(same_s) - base
                 print(f"{k:5d} {args[0]:6.3f} {args[1]:7.1f} {r['thrust'][k] * scale:7.0f} "
                       f"{ct_sigma * scale:6.3f} {label:10s} {model:9s} "
-                      f"{base:8.2f} {same_c - base:+10.2f} {same_s - base:+14.2f}")  # fmt: skip
+                      f"{base[0]:7.2f} {same_c[0]:+10.2f} {same_s[0]:+14.2f} "
+                      f"{base[1]:8.2f} {same_c[1]:+10.2f} {same_s[1]:+14.2f}")  # fmt: skip
 
 
 def main(argv=None):

@@ -252,3 +252,31 @@ def test_validation_script_loads_and_answers_bad_input(tmp_path, capsys):
     assert script.main(["hover", str(tmp_path / "none.sql")]) == 2
     assert script.main(["nothing"]) == 2
     assert "usage" in capsys.readouterr().err
+
+
+def test_helicopter_loading_fit_recovers_a_known_law():
+    """The local-loading fit returns the slopes of levels built from a known law, exactly."""
+    from run_script_loader import load_run_script
+
+    script = load_run_script("broadband_validation")
+    # Levels from SPL = a_rotor + 60 log10 V + 20 x + 5 x**2 about C_T/sigma = 0.04, seen from
+    # C_T/sigma = 0.08: s = 20 + 10 log10 2, q = 5, k = 60, with zero residual.
+    base = script.loading_fit(np.zeros(len(script.HELICOPTER_DATA)), 0.04)
+    assert np.allclose(base[0], 0.0)
+    levels = []
+    for name, rpm, thrust_lbf, _ in script.HELICOPTER_DATA:
+        diameter, _, sigma = script.HELICOPTERS[name]
+        radius = diameter * script.FT / 2.0
+        tip = rpm * np.pi / 30.0 * radius
+        ct = thrust_lbf * script.LBF / (script.HELICOPTER_DENSITY * np.pi * radius**2 * tip**2)
+        x = np.log10(ct / sigma / 0.04)
+        levels.append((3.0 if name == "CH-3C" else 7.0) + 60 * np.log10(tip) + 20 * x + 5 * x * x)
+    coef, error, span = script.loading_fit(levels, 0.08)
+    assert coef[2:] == pytest.approx([60.0, 20.0 + 10.0 * np.log10(2.0), 5.0], abs=1e-8)
+    assert np.all(error < 1e-6)
+    # The measured data: loading 0.033-0.106, and a rise with loading that steepens with it.
+    measured = [row[3] for row in script.HELICOPTER_DATA]
+    (_, _, _, s05, q05), _, span = script.loading_fit(measured, 0.05)
+    (_, _, _, s11, _), _, _ = script.loading_fit(measured, 0.11)
+    assert span == pytest.approx((0.0331, 0.1060), abs=5e-4)
+    assert q05 > 0.0 and s11 > s05
