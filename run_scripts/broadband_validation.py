@@ -438,9 +438,14 @@ def blades(case_file, work_dir):
     print(f"reference optimum: gross mass {prob.get_val('gross_mass')[0]:.2f} kg; paper's hover "
           "observer (100 m, 45 deg below the rotor plane)")  # fmt: skip
     print("levels unweighted (dB, as the helicopter data) and A-weighted (dBA)")
+    print(
+        "columns: 2 blades; the change with 3 blades of the same chord, 3 of the same "
+        "solidity, 2 blades 1.5 times as wide (all at equal thrust and tip speed)"
+    )
     print(f"{'rotor':>5s} {'R m':>6s} {'rpm':>7s} {'T N':>7s} {'CT/s':>6s} {'loading':10s} "
           f"{'model':9s} {'B=2 dB':>7s} {'3, same c':>10s} {'3, same sigma':>14s} "
-          f"{'B=2 dBA':>8s} {'3, same c':>10s} {'3, same sigma':>14s}")  # fmt: skip
+          f"{'2, c x1.5':>10s} {'B=2 dBA':>8s} {'3, same c':>10s} {'3, same sigma':>14s} "
+          f"{'2, c x1.5':>10s}")  # fmt: skip
     for k in range(len(r["tip"])):  # one rotor of each pair
         args = (r["radius"][k], r["rpm"][k])
         chord, ct_sigma = r["chord"][k], r["ct_sigma"][k]
@@ -458,11 +463,14 @@ def blades(case_file, work_dir):
                 same_c = rotor_broadband(model, 3, *args, chord, load * 2 / 3, phi, observer)
                 same_s = rotor_broadband(model, 3, *args, chord * 2 / 3, load * 2 / 3, phi,
                                          observer)  # fmt: skip
+                wide = rotor_broadband(model, 2, *args, chord * 1.5, load, phi, observer)
                 same_c, same_s = np.array(same_c) - base, np.array(same_s) - base
+                wide = np.array(wide) - base
                 print(f"{k:5d} {args[0]:6.3f} {args[1]:7.1f} {r['thrust'][k] * scale:7.0f} "
                       f"{ct_sigma * scale:6.3f} {label:10s} {model:9s} "
-                      f"{base[0]:7.2f} {same_c[0]:+10.2f} {same_s[0]:+14.2f} "
-                      f"{base[1]:8.2f} {same_c[1]:+10.2f} {same_s[1]:+14.2f}")  # fmt: skip
+                      f"{base[0]:7.2f} {same_c[0]:+10.2f} {same_s[0]:+14.2f} {wide[0]:+10.2f} "
+                      f"{base[1]:8.2f} {same_c[1]:+10.2f} {same_s[1]:+14.2f} "
+                      f"{wide[1]:+10.2f}")  # fmt: skip
 
 
 def main(argv=None):
