@@ -96,8 +96,10 @@ def analyze_vehicle(
     vehicle : Vehicle, str, os.PathLike or None
         A vehicle, a vehicle file, or None for the reference vehicle.
     trim : bool
-        Trim every condition by its trim variables (:func:`lpc_mdo.trim.trim`); False: run the
-        raw initial design (the vehicle file's initial rotor speeds, pitch and elevator).
+        Trim every condition by its trim variables (:func:`lpc_mdo.trim.trim`), where more
+        variables than rows leave a family of trims the one of least electrical power within
+        the condition's limits (``least_power``); False: run the raw initial design (the vehicle
+        file's initial rotor speeds, pitch and elevator).
     recorder_path : str, os.PathLike or None
         Case file; the problem case ``'final'`` (every variable) is recorded into it.
     static_margin : bool
@@ -121,7 +123,9 @@ def analyze_vehicle(
     )
     result, failed = None, {}
     if trim:
-        result = trim_conditions(prob, report=report, label="analyze", workers=processes)
+        result = trim_conditions(
+            prob, report=report, label="analyze", workers=processes, least_power=True
+        )
         failed = {
             name: c.max_residual
             for name, c in result.conditions.items()

@@ -141,7 +141,7 @@ def optimizer_iterations(driver):
     return None if count is None else int(count)
 
 
-def trim_line(label, condition, before, after, iterations, seconds):
+def trim_line(label, condition, before, after, iterations, seconds, power=None):
     """
     Return the progress line of one trimmed condition.
 
@@ -157,15 +157,21 @@ def trim_line(label, condition, before, after, iterations, seconds):
         Jacobian evaluations of the trim solve (its Gauss-Newton iterations).
     seconds : float
         Time of the condition's trim, including building its problem.
+    power : tuple or None
+        A least-power trim's (power at the trim reached, power kept in W, outcome):
+        :attr:`lpc_mdo.trim.ConditionTrim.power`; None: not a least-power trim.
 
     Returns
     -------
     str
     """
-    return (
+    line = (
         f"{label:>16}  trim {condition:<14}  max scaled residual {before:9.3e} -> {after:9.3e}"
         f"  {iterations:3d} iterations  {seconds:6.1f} s"
     )
+    if power is not None:
+        line += f"  power {power[0] / 1e3:.1f} -> {power[1] / 1e3:.1f} kW ({power[2]})"
+    return line
 
 
 def interrupt_message(case_files):

@@ -18,7 +18,9 @@ code closes on its mission (as NDARC or FLOPS do):
   length to the torque margin and the control reserve, the winding to the bus), in every
   condition whose motors turn (hover, one rotor out, transition, climb, cruise, descent);
 
-each step trimming those conditions at the step's masses and motors (:func:`lpc_mdo.trim.trim`).
+each step trimming those conditions at the step's masses and motors (:func:`lpc_mdo.trim.trim`;
+where a family of trims holds a condition, the one of least electrical power within its limits,
+so that the energy and the motors' loads are defined by the design, not by the trim's start).
 Closed: SoC within 5e-4 above SoC_min (aimed at 2.5e-4 above: never below the floor), W0 within 0.01
 kg of W_dg (which also sizes the landing gear's tyres and so their drag), and the motors sized at
 the step's loads within 0.2 mm and 1 A of those the step flew; then one more trim flies the sized
@@ -391,7 +393,7 @@ def _close_design_gross_mass(prob, design):
 
 
 def _trim(prob, conditions, processes, what):
-    result = trim(prob, conditions=conditions, workers=processes)
+    result = trim(prob, conditions=conditions, workers=processes, least_power=True)
     if not result.success:
         raise SizingError(f"sizing, {what}: {result.message}")
 

@@ -467,7 +467,11 @@ def solve_stage(
     if trim_first and spec.trim_first:
         try:
             trimmed = trim(
-                prob, report=log if progress else None, label=name, workers=trim_processes
+                prob,
+                report=log if progress else None,
+                label=name,
+                workers=trim_processes,
+                least_power=True,
             )
         except KeyboardInterrupt:  # nothing recorded yet: no 'final' case of an untrimmed point
             _write_interrupted_stats(prob, case_file, start, "during the trim")

@@ -26,10 +26,10 @@ reference vehicle (the NASA LPC OpenVSP geometry, itemised masses, motors and wi
   so the state-of-charge floor is 0 (ours, 0.2 in the reference, would count a second reserve);
 - the one-rotor-out hover cases at the take-off altitude (NASA sizes the lift motors for hover
   out of ground effect at 6000 ft at 100 % of their rating);
-- the sizing's start: battery 600 kg and design gross mass 3500 kg. The reference's start,
-  closed on its own mission (932 kg, 3910.97 kg), does not trim the climb to 10000 ft at this
-  payload, so ``lpc-mdo size`` stopped at its first step; from any start that trims, the sizing
-  closes on the same vehicle (docs results 'Validation').
+- the sizing's start: battery 600 kg and design gross mass 3500 kg. The reference's start as
+  closed on its own mission on 2026-12-07 (932 kg, 3910.97 kg) did not trim the climb to
+  10000 ft at this payload, so ``lpc-mdo size`` stopped at its first step; from any start that
+  trims, the sizing closes on the same vehicle (docs results 'Validation').
 
 Assumptions where NASA publishes nothing for the electric vehicle (its wing, tail and fuselage
 sizes, its weights by item): the reference's values. Not modelled: the 15 s taxis at 10 % power

@@ -883,13 +883,13 @@ DICT_CASES = [
         "cruise at 0.5 m/s",
         _set("conditions", CRUISE, "speed", 0.5),
         f"conditions[{CRUISE}].speed",
-        "must fly at >= 30.05 m/s",
+        "must fly at >= 28.92 m/s",
     ),
     (
         "+3g pull-up at 5 m/s",
         _set("conditions", 10, "speed", 5.0),
         "conditions[10].speed",
-        "must fly at >= 53.35 m/s",
+        "must fly at >= 51.34 m/s",
     ),
     (
         "transition point in mph",

@@ -29,7 +29,7 @@ def test_the_example_derives_its_conditions():
 def test_the_example_trims_its_mission():
     vehicle = load_vehicle(EXAMPLE)
     mission = [c.name for c in vehicle.mission_segments]  # the energy's conditions
-    analysis = analyze_vehicle(vehicle, conditions=mission)
+    analysis = analyze_vehicle(vehicle, conditions=mission, processes=2)
     assert analysis.failed == {}, analysis.failed
     prob = analysis.prob
     # the hot day: cruise at 457.2 m and ISA+20 (ICAO Doc 7488/3 convention)

@@ -20,13 +20,13 @@ NASA = {
     "disk_loading": (13.1 * 47.880259, 0.10),
 }
 #: Our differences as the docs give them (relative), to 0.5 %, and whether each is within its
-#: tolerance: the gross mass and the disk loading are, the empty mass and the battery are not,
-#: for the reasons the docs measure (drag area, hover efficiency, weights, battery rule).
+#: tolerance: with the trims at least power within the rotors' limits none is, for the reasons
+#: the docs measure (drag area, hover efficiency, weights, battery rule).
 DOCUMENTED = {
-    "gross_mass": (-0.088, True),
-    "empty_mass": (-0.102, False),
-    "battery_mass": (-0.418, False),
-    "disk_loading": (-0.090, True),
+    "gross_mass": (-0.155, False),
+    "empty_mass": (-0.181, False),
+    "battery_mass": (-0.463, False),
+    "disk_loading": (-0.157, False),
 }
 
 

@@ -43,3 +43,22 @@ def test_close_initial_design_writes_gauges_and_design_gross_mass(tmp_path):
         assert list(vehicle.design_variables[name].initial_array) == values
     reference = reference_vehicle()
     assert vehicle.wing == reference.wing and vehicle.conditions == reference.conditions
+
+
+def test_trim_family_perturbs_the_trim_variables_only_and_refuses_bad_input(capsys):
+    import numpy as np
+
+    from lpc_mdo.problems import build_analysis_problem
+
+    script = load_run_script("trim_family")
+    with pytest.raises(SystemExit) as stop:
+        script.main(["--seeds", "0"])
+    assert stop.value.code == 2 and "need seeds >= 1" in capsys.readouterr().err
+    assert script.main(["--vehicle", "no_such_file.toml"]) == 2
+    prob = build_analysis_problem(None, conditions=["hover", "cruise"])
+    rpm = prob.get_val("hover_lift_rpm", units="rpm").copy()
+    span = prob.get_val("wing_span", units="m").copy()
+    script.perturb_trim_variables(prob, 0.1, seed=1)
+    moved = prob.get_val("hover_lift_rpm", units="rpm")
+    assert np.all(np.abs(moved / rpm - 1.0) <= 0.1) and np.any(moved != rpm)
+    assert np.array_equal(prob.get_val("wing_span", units="m"), span)  # not a trim variable

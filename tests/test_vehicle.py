@@ -87,7 +87,7 @@ def test_reference_values():
     assert vehicle.pusher.hub_radius == pytest.approx(0.274)
     assert vehicle.masses.other == 0.0
     assert vehicle.material.allowable_stress == 350e6
-    assert vehicle.battery.energy == pytest.approx(932.00 * 400 * 3600)  # sized to the mission
+    assert vehicle.battery.energy == pytest.approx(856.41 * 400 * 3600)  # sized to the mission
     assert vehicle.constraints.min_final_soc == 0.2
     assert vehicle.constraints.radius_intersection_definition == "span_fraction"
     (observer,) = vehicle.noise_observer  # one [noise_observer] table: one observer

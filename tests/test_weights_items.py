@@ -244,7 +244,7 @@ def test_report_reads_the_mass_properties_of_a_recorded_case(tmp_path):
 def test_every_kilogram_of_the_reference_is_an_item():
     # At most 10 % of the gross mass may be unitemised (W_other). The reference vehicle itemises
     # everything: its rule keeps W_other at the file's 0 kg, and the breakdown's items add up to
-    # the gross mass. The paper's calibration to 3723.99 kg (paper Sec. IV) would leave 9.1 %
+    # the gross mass. The paper's calibration to 3723.99 kg (paper Sec. IV) would leave 9.3 %
     # unitemised (docs theory/weights 'Gross mass'), which is why the reference does not use it.
     vehicle = reference_vehicle()
     assert (vehicle.masses.other_rule, vehicle.masses.other) == ("fixed", 0.0)
@@ -258,4 +258,4 @@ def test_every_kilogram_of_the_reference_is_an_item():
     assert_near_equal(items, breakdown["gross"], 1e-12)
     paper = paper_calibrated_vehicle()
     other, _ = calibrated_other_mass(paper)
-    assert_near_equal(other / paper.masses.design_gross_mass, 0.0906, 2e-3)
+    assert_near_equal(other / paper.masses.design_gross_mass, 0.0927, 2e-3)
