@@ -12,6 +12,13 @@ does not reach the tolerance, trust-region reflective again from the same start 
 evaluations), keeping the better of the two; where that still does not, dogbox once more from
 the better end point, with a fresh trust region.
 
+Where a condition has more trim variables than rows (hover, transition, one rotor out), a
+family of trims holds it and the least-squares solve returns the member its path reaches. With
+``least_power`` (what ``lpc-mdo analyze``, ``lpc-mdo size`` and the sequence's stages use) the
+trim then moves to the member of least electrical power within the condition's
+:data:`LEAST_POWER_LIMITS` (:func:`_least_power`), so the trimmed numbers depend on the design,
+not on the start.
+
 The stages of the warm-start sequence trim their conditions before their optimizer runs
 (:attr:`lpc_mdo.study_plan.Stage.trim_first`): an optimizer with a quasi-Newton Hessian started
 far from trim stalls at a locally infeasible point. The measurements behind these choices are
@@ -350,7 +357,8 @@ def _least_power(prob, cond, cons, variables, max_iter):
     Where no trim within the limits is found, each limit is relaxed to its margin at the trim of
     least excess, and the least power sought within that.
 
-    Returns (power at the start, power kept, message); the problem is left at the point kept:
+    Returns (power at the start, power kept, message, scaled trim residuals at the point kept,
+    as :func:`_solve_block` gives them); the problem is left at the point kept:
     the least-power point where its trim rows are within 1e-6 and its (relaxed) limits within
     :data:`LIMIT_TOLERANCE`, else the first such trim found; else the start.
     """
@@ -509,7 +517,7 @@ def _least_power(prob, cond, cons, variables, max_iter):
     if kept is not start and not np.max(np.abs(rows(kept)), initial=0.0) < 1e-6:
         kept, note = start, f"the trim kept: {note}"
     block.set_x(kept)
-    return before, power(kept), note
+    return before, power(kept), note, rows(kept)
 
 
 @dataclass
@@ -536,13 +544,10 @@ def _trim_condition(prob, vehicle, cond, tol, max_iter, separate, least_power=Fa
         target, target.model.get_design_vars(), cons, variables, tol, max_iter
     )
     powers = None
-    free = free_trim_variables(vehicle, cond)
-    if least_power and separate and free > 0 and np.max(np.abs(scaled), initial=0.0) < 1e-6:
-        before, after, note = _least_power(target, cond, cons, variables, max_iter)
+    trimmed = np.max(np.abs(scaled), initial=0.0) < 1e-6
+    if least_power and separate and trimmed and free_trim_variables(vehicle, cond) > 0:
+        before, after, note, scaled = _least_power(target, cond, cons, variables, max_iter)
         powers = (before * POWER_REF, after * POWER_REF, note)
-        scaled = _ScaledBlock(target, target.model.get_design_vars(), variables).values(
-            cons
-        ) - _ScaledBlock.scaled_bounds(cons, "equals")
     values = {}  # name -> (flat entries of this condition, their values): other conditions
     if separate:  # may share the array (e.g. one row per transition point)
         for name, flat in condition_layout(vehicle).trim_variables(cond):
