@@ -11,7 +11,10 @@ from lpc_mdo.vehicle import load_vehicle
 pytestmark = pytest.mark.integration
 
 
-@pytest.mark.parametrize(("n", "conditions"), [(4, 11), (12, 17)])
+@pytest.mark.parametrize(
+    ("n", "conditions"),
+    [(4, 11), pytest.param(12, 17, marks=pytest.mark.slow)],  # 12 rotors: 45 s, the slow tier
+)
 def test_example_layout_trims_every_condition(n, conditions):
     vehicle = load_vehicle(resources.files("lpc_mdo") / "data" / f"lpc_{n}_lift_rotors.toml")
     analysis = analyze_vehicle(vehicle, processes=2)  # the CI machine has two cores

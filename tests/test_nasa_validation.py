@@ -40,7 +40,7 @@ def test_the_shipped_file_is_what_its_script_writes(tmp_path):
     assert vehicle.condition("cruise").altitude == pytest.approx(3048.0)
 
 
-@pytest.mark.integration
+@pytest.mark.slow  # 90-105 s on the 2-core machine: the whole sizing, 5 steps of 15 trims
 def test_sized_to_nasas_mission_against_nasas_numbers():
     result = size_vehicle(load_vehicle(VEHICLE), processes=2)
     assert abs(result.final_soc - 0.0) <= 1e-3  # closed: the whole capacity used
