@@ -373,6 +373,7 @@ def _least_power(prob, cond, cons, variables, max_iter):
     targets = block.scaled_bounds(cons, "equals")
     lower, upper = block.scaled_bounds(limits, "lower"), block.scaled_bounds(limits, "upper")
     has_lower, has_upper = ~np.isnan(lower), ~np.isnan(upper)
+    count = int(has_lower.sum() + has_upper.sum())  # bounded limit entries
     bounds = (block.lower, block.upper)
 
     def evaluates(x):
@@ -389,7 +390,7 @@ def _least_power(prob, cond, cons, variables, max_iter):
     def margins(x):
         """Scaled limit margins (>= 0 where a limit holds), one per bounded entry."""
         if not evaluates(x):
-            return np.full(int(has_lower.sum() + has_upper.sum()), -failed)
+            return np.full(count, -failed)
         value = block.values(limits)
         return np.concatenate([(value - lower)[has_lower], (upper - value)[has_upper]])
 
@@ -420,12 +421,15 @@ def _least_power(prob, cond, cons, variables, max_iter):
 
     # The least margin each limit may have: 0, or where no trim meets the limits, the margin
     # of the trim of least excess over them.
-    floor = np.zeros(int(has_lower.sum() + has_upper.sum()))
+    floor = np.zeros(count)
+
+    def trimmed(x, tol=1e-6):
+        return np.max(np.abs(rows(x)), initial=0.0) < tol
 
     def feasible(x):
         return (
             evaluates(x)
-            and np.max(np.abs(rows(x)), initial=0.0) < 1e-6
+            and trimmed(x)
             and np.min(margins(x) - floor, initial=0.0) >= -LIMIT_TOLERANCE
         )
 
@@ -435,14 +439,13 @@ def _least_power(prob, cond, cons, variables, max_iter):
     start = block.x0.copy()
     before = power(start)
     kept, note, within_limits = start, "the trim kept: no trim within the limits found", True
+    start_feasible = feasible(start)
     try:
-        if feasible(start):
-            kept = start
-        else:
+        if not start_feasible:
             # The trim of least total excess over the limits: SLSQP on (x, s), minimizing the sum
             # of the slacks s >= 0 with margins(x) + s >= 0 and the trim rows as equalities
             # (an elastic phase one: linear in s, so each step is a well-posed QP).
-            n, m = start.size, int(has_lower.sum() + has_upper.sum())
+            n, m = start.size, count
             slack0 = np.maximum(-margins(start), 0.0)
 
             def excess(z):
@@ -483,12 +486,12 @@ def _least_power(prob, cond, cons, variables, max_iter):
                 x = start
             if feasible(x):
                 kept = x
-            elif np.max(np.abs(rows(x)), initial=0.0) < 1e-3:
-                # (the trim rows are made exact by the least-power solve from there)
-                # No trim within the limits from here: the least power within the least excess.
+            elif trimmed(x, tol=1e-3):
+                # No trim within the limits from here: the least power within the least excess
+                # (the least-power solve from there makes the trim rows exact).
                 floor = np.minimum(margins(x), 0.0) - LIMIT_TOLERANCE
                 kept, within_limits = x, False
-        if kept is not start or feasible(start):
+        if kept is not start or start_feasible:
             note = (
                 "the first trim within the limits kept: least power not reached"
                 if within_limits
@@ -514,7 +517,7 @@ def _least_power(prob, cond, cons, variables, max_iter):
                 note += f" ({sol.message})"
     except (ValueError, om.AnalysisError) as err:  # a model failure SLSQP did not back off from
         note = f"{'the trim' if kept is start else 'the first trim found'} kept ({err})"
-    if kept is not start and not np.max(np.abs(rows(kept)), initial=0.0) < 1e-6:
+    if kept is not start and not trimmed(kept):
         kept, note = start, f"the trim kept: {note}"
     block.set_x(kept)
     return before, power(kept), note, rows(kept)

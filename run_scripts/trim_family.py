@@ -23,6 +23,7 @@ import tempfile
 
 import numpy as np
 
+from lpc_mdo.groups.lpc import openmdao_units
 from lpc_mdo.problems import build_analysis_problem
 from lpc_mdo.trim import free_trim_variables, problem_vehicle, trim
 from lpc_mdo.vehicle import load_vehicle
@@ -36,7 +37,7 @@ def perturb_trim_variables(prob, fraction, seed):
     layout = condition_layout(vehicle)
     for cond in prob.model.condition_names:
         for name, flat in layout.trim_variables(cond):
-            units = vehicle.design_variables[name].units
+            units = openmdao_units(vehicle.design_variables[name].units)
             value = np.asarray(prob.get_val(name, units=units), dtype=float).copy()
             flat = np.atleast_1d(flat)
             value.reshape(-1)[flat] *= 1.0 + rng.uniform(-fraction, fraction, flat.size)
